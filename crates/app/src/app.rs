@@ -1,0 +1,273 @@
+//! The eframe app: wires input, the active tool, the editor and the 3D view together.
+//!
+//! Data flows one way: pointer samples go through the [`InputRouter`] to the tool or the
+//! camera; a finished gesture becomes one [`Op`] applied by the [`Editor`]; the view
+//! rebuilds its GPU arrays when the editor's revision changes.
+
+use std::cell::RefCell;
+use std::rc::Rc;
+use std::sync::Arc;
+
+use eframe::egui_wgpu;
+use egui::{Key, KeyboardShortcut, Modifiers};
+use sketchmesh_core::curve::{StrokePoint, process_stroke};
+use sketchmesh_core::document::{Editor, Op};
+
+use crate::camera::OrbitCamera;
+use crate::input::PointerSample;
+use crate::input::router::{InputRouter, Routed};
+use crate::panels;
+use crate::render::geometry::pressure_width;
+use crate::render::{SceneCallback, SceneGeometry, SceneRenderer, Uniforms, ViewOptions};
+use crate::tools::draw::DrawTool;
+use crate::tools::{ToolOutput, ViewCtx};
+
+/// How long a status message stays up, in seconds.
+const STATUS_SECONDS: f64 = 6.0;
+
+/// State shared with the page API (`window.sketchmesh`), which runs outside frames.
+pub struct Shared {
+    /// The document and its history.
+    pub editor: Editor,
+    /// The view's camera.
+    pub camera: OrbitCamera,
+    /// The graphics backend in use, for the page API and the help panel.
+    pub backend: String,
+}
+
+/// The Sketchmesh app.
+pub struct SketchApp {
+    shared: Rc<RefCell<Shared>>,
+    router: InputRouter,
+    tool: DrawTool,
+    samples: Vec<PointerSample>,
+    #[cfg(not(target_arch = "wasm32"))]
+    egui_pointer: crate::input::egui_pointer::EguiPointer,
+    /// Samples queued by the browser's pointer listeners.
+    pub web_samples: Rc<RefCell<std::collections::VecDeque<PointerSample>>>,
+    geometry: Arc<SceneGeometry>,
+    options: ViewOptions,
+    show_help: bool,
+    status: Option<(String, f64)>,
+    has_renderer: bool,
+}
+
+impl SketchApp {
+    /// Creates the app and installs the 3D renderer when wgpu is available.
+    pub fn new(cc: &eframe::CreationContext<'_>) -> Self {
+        let backend = cc.wgpu_render_state.as_ref().map_or_else(|| "none".to_owned(), backend_name);
+        if let Some(rs) = cc.wgpu_render_state.as_ref() {
+            SceneRenderer::install(rs);
+        }
+        Self::with_backend(backend, cc.wgpu_render_state.is_some())
+    }
+
+    /// Creates the app without graphics, for tests that drive input and tools.
+    pub fn with_backend(backend: String, has_renderer: bool) -> Self {
+        Self {
+            shared: Rc::new(RefCell::new(Shared {
+                editor: Editor::new(),
+                camera: OrbitCamera::default(),
+                backend,
+            })),
+            router: InputRouter::default(),
+            tool: DrawTool::default(),
+            samples: Vec::new(),
+            #[cfg(not(target_arch = "wasm32"))]
+            egui_pointer: Default::default(),
+            web_samples: Default::default(),
+            geometry: Arc::new(SceneGeometry::default()),
+            options: ViewOptions {
+                wireframe: false,
+                grid: true,
+            },
+            show_help: false,
+            status: None,
+            has_renderer,
+        }
+    }
+
+    /// The state the page API shares.
+    pub fn shared(&self) -> Rc<RefCell<Shared>> {
+        self.shared.clone()
+    }
+
+    /// Applies `op`, turning a refusal into a status message. Nothing changes on failure.
+    fn apply(&mut self, op: Op, now: f64) {
+        let result = self.shared.borrow_mut().editor.apply(op);
+        if let Err(e) = result {
+            self.status = Some((e.to_string(), now + STATUS_SECONDS));
+        }
+    }
+
+    fn shortcuts(&mut self, ctx: &egui::Context) {
+        if ctx.egui_wants_keyboard_input() {
+            return;
+        }
+        let now = ctx.input(|i| i.time);
+        let shortcut = |modifiers, key| KeyboardShortcut::new(modifiers, key);
+        let redo = ctx.input_mut(|i| {
+            i.consume_shortcut(&shortcut(Modifiers::COMMAND | Modifiers::SHIFT, Key::Z))
+                || i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::Y))
+        });
+        if redo {
+            self.apply(Op::Redo, now);
+        }
+        if ctx.input_mut(|i| i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::Z))) {
+            self.apply(Op::Undo, now);
+        }
+        let pressed = |key| ctx.input_mut(|i| i.consume_shortcut(&shortcut(Modifiers::NONE, key)));
+        if pressed(Key::F) {
+            self.frame_all();
+        }
+        if pressed(Key::R) || pressed(Key::Home) {
+            self.shared.borrow_mut().camera = OrbitCamera::default();
+        }
+        if pressed(Key::W) {
+            self.options.wireframe = !self.options.wireframe;
+        }
+        if pressed(Key::G) {
+            self.options.grid = !self.options.grid;
+        }
+        if pressed(Key::H) || pressed(Key::F1) {
+            self.show_help = !self.show_help;
+        }
+    }
+
+    /// Frames everything in the document, or resets the view when it is empty.
+    pub fn frame_all(&mut self) {
+        let mut shared = self.shared.borrow_mut();
+        match self.geometry.bounds {
+            Some((min, max)) => shared.camera.frame(min, max),
+            None => shared.camera = OrbitCamera::default(),
+        }
+    }
+
+    /// Routes this frame's pointer samples to the tool and the camera.
+    fn handle_pointer(&mut self, ctx: &egui::Context, viewport: egui::Rect) {
+        #[cfg(not(target_arch = "wasm32"))]
+        ctx.input(|i| self.egui_pointer.collect(i, &mut self.samples));
+        self.samples.extend(self.web_samples.borrow_mut().drain(..));
+        let now = ctx.input(|i| i.time);
+        let mut routed = Vec::new();
+        for sample in std::mem::take(&mut self.samples) {
+            let on_view = viewport.contains(sample.pos_in_screen)
+                && ctx.layer_id_at(sample.pos_in_screen).is_none_or(|l| l.order == egui::Order::Background);
+            routed.clear();
+            self.router.route(&sample, on_view, &mut routed);
+            for r in &routed {
+                match r {
+                    Routed::Nav(action) => self.shared.borrow_mut().camera.apply(*action, viewport.height().into()),
+                    Routed::Tool(event) => {
+                        let view = ViewCtx {
+                            camera: self.shared.borrow().camera.camera(),
+                            viewport,
+                        };
+                        if let ToolOutput::Commit(op) = self.tool.on_event(event, &view) {
+                            self.apply(op, now);
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    fn viewport_ui(&mut self, ui: &mut egui::Ui) {
+        let viewport = ui.max_rect();
+        let response = ui.allocate_rect(viewport, egui::Sense::hover());
+        self.handle_pointer(ui.ctx(), viewport);
+        if response.hovered() {
+            let (scroll, zoom) = ui.input(|i| (i.smooth_scroll_delta.y, i.zoom_delta()));
+            let mut shared = self.shared.borrow_mut();
+            if scroll != 0.0 {
+                shared.camera.wheel(scroll.into());
+            }
+            // egui also derives a zoom from touch pinches, which the router already handles.
+            if zoom != 1.0 && !self.router.is_touching() {
+                shared.camera.dolly(1.0 / f64::from(zoom));
+            }
+        }
+        let revision = self.shared.borrow().editor.revision();
+        if self.geometry.revision != revision {
+            self.geometry = Arc::new(SceneGeometry::build(self.shared.borrow().editor.document(), revision));
+        }
+        if self.has_renderer {
+            let camera = self.shared.borrow().camera.camera();
+            let aspect = f64::from(viewport.width() / viewport.height().max(1.0));
+            let callback = SceneCallback {
+                rect: viewport,
+                uniforms: Uniforms {
+                    clip_from_world: camera.clip_from_world(aspect).as_mat4().to_cols_array_2d(),
+                    eye: camera.eye.as_vec3().extend(1.0).to_array(),
+                    viewport: [0.0; 4],
+                },
+                geometry: self.geometry.clone(),
+                options: self.options,
+            };
+            ui.painter().add(egui_wgpu::Callback::new_paint_callback(viewport, callback));
+        }
+        self.live_stroke_ui(ui, viewport);
+        if self.shared.borrow().editor.document().is_empty() && self.tool.preview().is_none() {
+            ui.painter().text(
+                viewport.center_bottom() - egui::vec2(0.0, 48.0),
+                egui::Align2::CENTER_CENTER,
+                "Draw with a pen, a finger or the mouse · two fingers or right-drag to orbit",
+                egui::FontId::proportional(16.0),
+                egui::Color32::from_white_alpha(110),
+            );
+        }
+    }
+
+    /// Draws the stroke in progress, smoothed as it will be stored, with pressure widths.
+    fn live_stroke_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
+        let Some(raw) = self.tool.preview() else {
+            return;
+        };
+        let points = process_stroke(raw).unwrap_or_else(|_| raw.to_vec());
+        let to_screen = |p: &StrokePoint| viewport.min + egui::vec2(p.pos.x as f32, p.pos.y as f32);
+        let color = egui::Color32::from_rgb(242, 199, 82);
+        for pair in points.windows(2) {
+            let width = pressure_width((pair[0].pressure + pair[1].pressure) * 0.5) as f32;
+            ui.painter().line_segment([to_screen(&pair[0]), to_screen(&pair[1])], (width, color));
+            ui.painter().circle_filled(to_screen(&pair[1]), width * 0.5, color);
+        }
+    }
+}
+
+impl eframe::App for SketchApp {
+    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        let ctx = ui.ctx().clone();
+        self.shortcuts(&ctx);
+        let now = ctx.input(|i| i.time);
+        if self.status.as_ref().is_some_and(|(_, until)| *until < now) {
+            self.status = None;
+        }
+        let action = egui::Panel::top("toolbar")
+            .show(ui, |ui| {
+                let shared = self.shared.borrow();
+                panels::toolbar::toolbar_ui(ui, &shared.editor, &self.options, self.status.as_ref().map(|(s, _)| s.as_str()))
+            })
+            .inner;
+        match action {
+            Some(panels::toolbar::Action::Undo) => self.apply(Op::Undo, now),
+            Some(panels::toolbar::Action::Redo) => self.apply(Op::Redo, now),
+            Some(panels::toolbar::Action::FrameAll) => self.frame_all(),
+            Some(panels::toolbar::Action::ResetView) => self.shared.borrow_mut().camera = OrbitCamera::default(),
+            Some(panels::toolbar::Action::ToggleWireframe) => self.options.wireframe = !self.options.wireframe,
+            Some(panels::toolbar::Action::ToggleGrid) => self.options.grid = !self.options.grid,
+            Some(panels::toolbar::Action::ToggleHelp) => self.show_help = !self.show_help,
+            None => {}
+        }
+        egui::CentralPanel::no_frame().show(ui, |ui| self.viewport_ui(ui));
+        let backend = self.shared.borrow().backend.clone();
+        panels::help::help_ui(&ctx, &mut self.show_help, &backend, self.router.pen_seen());
+    }
+}
+
+fn backend_name(rs: &egui_wgpu::RenderState) -> String {
+    match rs.adapter.get_info().backend {
+        eframe::wgpu::Backend::BrowserWebGpu => "WebGPU".to_owned(),
+        eframe::wgpu::Backend::Gl => "WebGL2".to_owned(),
+        other => format!("{other:?}"),
+    }
+}

@@ -1,0 +1,160 @@
+//! The orbit camera: turns navigation gestures into a [`Camera`] for rendering and tools.
+//!
+//! The camera circles a target at a distance, with yaw about world +Y and a pitch kept
+//! short of the poles so "up" stays meaningful. Pan speed is scaled so that the point under
+//! the fingers follows them on the target's depth plane, as users expect from map apps.
+
+use glam::{DVec2, DVec3};
+use sketchmesh_core::camera::Camera;
+
+use crate::input::gestures::NavAction;
+
+/// Radians of orbit per point of drag.
+const ORBIT_SPEED: f64 = 0.008;
+/// Pitch limit, just short of straight up or down.
+const MAX_PITCH: f64 = 1.5;
+/// Wheel points per doubling of the distance.
+const WHEEL_POINTS_PER_DOUBLING: f64 = 400.0;
+
+/// A perspective camera orbiting a target.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OrbitCamera {
+    /// Point looked at and orbited around.
+    pub target: DVec3,
+    /// Distance from eye to target.
+    pub distance: f64,
+    /// Angle about world +Y, radians.
+    pub yaw: f64,
+    /// Elevation, radians, positive looks down from above.
+    pub pitch: f64,
+    /// Vertical field of view in degrees.
+    pub fov_y_deg: f64,
+}
+
+impl Default for OrbitCamera {
+    fn default() -> Self {
+        Self {
+            target: DVec3::ZERO,
+            distance: 6.0,
+            yaw: 0.0,
+            pitch: 0.0,
+            fov_y_deg: 45.0,
+        }
+    }
+}
+
+impl OrbitCamera {
+    /// The camera in the document's terms, as stored with every stroke.
+    pub fn camera(&self) -> Camera {
+        let offset = DVec3::new(
+            self.pitch.cos() * self.yaw.sin(),
+            self.pitch.sin(),
+            self.pitch.cos() * self.yaw.cos(),
+        ) * self.distance;
+        Camera {
+            eye: self.target + offset,
+            target: self.target,
+            up: DVec3::Y,
+            fov_y_deg: self.fov_y_deg,
+            ortho_height: None,
+        }
+    }
+
+    /// Applies one navigation action; `viewport_height` is in points.
+    pub fn apply(&mut self, action: NavAction, viewport_height: f64) {
+        match action {
+            NavAction::Orbit(d) => self.orbit(DVec2::new(d.x.into(), d.y.into())),
+            NavAction::Pan(d) => self.pan(DVec2::new(d.x.into(), d.y.into()), viewport_height),
+            NavAction::Zoom { factor } => self.dolly(factor.into()),
+        }
+    }
+
+    /// Turns by a drag delta in points: right drag turns the model right, down tilts it down.
+    pub fn orbit(&mut self, delta: DVec2) {
+        self.yaw -= delta.x * ORBIT_SPEED;
+        self.pitch = (self.pitch + delta.y * ORBIT_SPEED).clamp(-MAX_PITCH, MAX_PITCH);
+    }
+
+    /// Slides the view so the target plane follows a drag delta in points.
+    pub fn pan(&mut self, delta: DVec2, viewport_height: f64) {
+        let camera = self.camera();
+        let forward = camera.forward();
+        let right = forward.cross(DVec3::Y).normalize_or_zero();
+        let up = right.cross(forward);
+        let world_per_point = self.world_per_point(viewport_height);
+        self.target += (-right * delta.x + up * delta.y) * world_per_point;
+    }
+
+    /// Multiplies the distance by `factor` (below 1 comes closer).
+    pub fn dolly(&mut self, factor: f64) {
+        if factor.is_finite() && factor > 0.0 {
+            self.distance = (self.distance * factor).clamp(1e-3, 1e5);
+        }
+    }
+
+    /// Zooms for a wheel or trackpad scroll of `points` (positive scrolls up, comes closer).
+    pub fn wheel(&mut self, points: f64) {
+        self.dolly((-points / WHEEL_POINTS_PER_DOUBLING).exp2());
+    }
+
+    /// Frames the box `min..max` so it fills most of the view.
+    pub fn frame(&mut self, min: DVec3, max: DVec3) {
+        let radius = ((max - min).length() * 0.5).max(1e-3);
+        self.target = (min + max) * 0.5;
+        let half_fov = self.fov_y_deg.to_radians() * 0.5;
+        self.distance = radius / half_fov.sin() * 1.1;
+    }
+
+    /// World units per screen point at the target's depth.
+    pub fn world_per_point(&self, viewport_height: f64) -> f64 {
+        2.0 * self.distance * (self.fov_y_deg.to_radians() * 0.5).tan() / viewport_height.max(1.0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn default_camera_looks_down_minus_z() {
+        let c = OrbitCamera::default().camera();
+        assert!((c.eye - DVec3::new(0.0, 0.0, 6.0)).length() < 1e-12);
+        assert!((c.forward() - DVec3::NEG_Z).length() < 1e-12);
+    }
+
+    #[test]
+    fn pan_moves_the_target_under_the_finger() {
+        let mut cam = OrbitCamera::default();
+        let viewport = DVec2::new(800.0, 600.0);
+        let before = cam.camera();
+        let grabbed = before.screen_from_world(DVec3::ZERO, viewport).expect("visible");
+        cam.pan(DVec2::new(40.0, -25.0), viewport.y);
+        let after = cam.camera();
+        let moved = after.screen_from_world(DVec3::ZERO, viewport).expect("visible");
+        let shift = DVec2::new(moved.x - grabbed.x, moved.y - grabbed.y);
+        assert!((shift - DVec2::new(40.0, -25.0)).length() < 1e-6, "{shift}");
+    }
+
+    #[test]
+    fn orbit_keeps_distance_and_clamps_pitch() {
+        let mut cam = OrbitCamera::default();
+        cam.orbit(DVec2::new(123.0, 10_000.0));
+        let c = cam.camera();
+        assert!(((c.eye - c.target).length() - 6.0).abs() < 1e-9);
+        assert!(cam.pitch <= MAX_PITCH);
+    }
+
+    #[test]
+    fn wheel_up_comes_closer_and_frame_fits_the_box() {
+        let mut cam = OrbitCamera::default();
+        cam.wheel(400.0);
+        assert!((cam.distance - 3.0).abs() < 1e-9);
+        cam.frame(DVec3::splat(-1.0), DVec3::splat(1.0));
+        let c = cam.camera();
+        let viewport = DVec2::new(600.0, 600.0);
+        for corner in [DVec3::splat(-1.0), DVec3::splat(1.0), DVec3::new(1.0, -1.0, 1.0)] {
+            let p = c.screen_from_world(corner, viewport).expect("in front");
+            assert!(p.x > 0.0 && p.x < 600.0 && p.y > 0.0 && p.y < 600.0, "{p}");
+        }
+    }
+}

@@ -1,0 +1,343 @@
+//! Decides, per pointer, whether a sample feeds the active tool or the camera.
+//!
+//! The rules follow tablet sculpting apps and tldraw's draw tool:
+//! - mouse: left button uses the tool, right button orbits, middle button pans;
+//! - pen: always uses the tool; the first pen sample switches on palm rejection;
+//! - touch before any pen: one finger uses the tool, two fingers navigate
+//!   ([`TwoFingerDrag::Orbit`]); a second finger landing mid-stroke cancels that stroke,
+//!   since it was the start of a gesture, not a drawing;
+//! - touch after a pen: touches never draw; one finger orbits, two pan and pinch.
+//!
+//! After a two-finger gesture, the remaining finger does nothing until every finger has
+//! lifted, so lifting one finger a little early never leaves a stray stroke.
+
+use std::collections::BTreeMap;
+
+use egui::{Pos2, Vec2};
+
+use super::gestures::{NavAction, TwoFingerDrag, TwoFingerGesture};
+use super::{Phase, PointerKind, PointerSample, buttons};
+
+/// An input for the active tool.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ToolEvent {
+    /// A stroke starts.
+    Begin(PointerSample),
+    /// The stroke's pointer moved.
+    Move(PointerSample),
+    /// The stroke ends normally.
+    End(PointerSample),
+    /// The stroke is abandoned; the tool must leave no trace.
+    Cancel,
+}
+
+/// Where a sample went.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Routed {
+    /// To the active tool.
+    Tool(ToolEvent),
+    /// To the camera.
+    Nav(NavAction),
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Drag {
+    Tool,
+    Orbit,
+    Pan,
+}
+
+/// Routing state across frames.
+#[derive(Debug, Default)]
+pub struct InputRouter {
+    pen_seen: bool,
+    /// Active drags by pointer id, with the last position.
+    drags: BTreeMap<i64, (Drag, Pos2)>,
+    /// Touches down, by id, with the last position.
+    touches: BTreeMap<i64, Pos2>,
+    two_finger: Option<TwoFingerGesture>,
+    /// Set after a two-finger gesture until all fingers lift.
+    touches_spent: bool,
+}
+
+impl InputRouter {
+    /// Whether a pen has been seen, so touch only navigates.
+    pub fn pen_seen(&self) -> bool {
+        self.pen_seen
+    }
+
+    /// Whether any finger is on the screen.
+    pub fn is_touching(&self) -> bool {
+        !self.touches.is_empty()
+    }
+
+    /// Routes one sample. `starts_in_viewport` says whether a `Down` lands on the 3D view
+    /// rather than on a panel; samples of pointers that went down elsewhere are dropped.
+    pub fn route(&mut self, s: &PointerSample, starts_in_viewport: bool, out: &mut Vec<Routed>) {
+        if s.kind == PointerKind::Pen && !self.pen_seen {
+            self.pen_seen = true;
+            self.cancel_touch_strokes(out);
+        }
+        match s.kind {
+            PointerKind::Touch => self.route_touch(s, starts_in_viewport, out),
+            PointerKind::Mouse | PointerKind::Pen => self.route_button(s, starts_in_viewport, out),
+        }
+    }
+
+    fn route_button(&mut self, s: &PointerSample, starts_in_viewport: bool, out: &mut Vec<Routed>) {
+        match s.phase {
+            Phase::Down => {
+                if !starts_in_viewport || self.drags.contains_key(&s.id) {
+                    return;
+                }
+                let drag = if s.kind == PointerKind::Pen || s.buttons & buttons::PRIMARY != 0 {
+                    Drag::Tool
+                } else if s.buttons & buttons::SECONDARY != 0 {
+                    Drag::Orbit
+                } else {
+                    Drag::Pan
+                };
+                if drag == Drag::Tool && self.tool_busy() {
+                    return;
+                }
+                self.drags.insert(s.id, (drag, s.pos_in_screen));
+                if drag == Drag::Tool {
+                    out.push(Routed::Tool(ToolEvent::Begin(*s)));
+                }
+            }
+            Phase::Move => self.continue_drag(s, out),
+            Phase::Up | Phase::Cancel => self.end_drag(s, out),
+        }
+    }
+
+    fn route_touch(&mut self, s: &PointerSample, starts_in_viewport: bool, out: &mut Vec<Routed>) {
+        match s.phase {
+            Phase::Down => {
+                if !starts_in_viewport && self.touches.is_empty() {
+                    return;
+                }
+                self.touches.insert(s.id, s.pos_in_screen);
+                self.touch_down(s, out);
+            }
+            Phase::Move => {
+                if !self.touches.contains_key(&s.id) {
+                    return;
+                }
+                self.touches.insert(s.id, s.pos_in_screen);
+                if let Some(g) = self.two_finger.as_mut().filter(|g| g.follows(s.id)) {
+                    let mut actions = Vec::new();
+                    g.update(s.id, s.pos_in_screen, &mut actions);
+                    out.extend(actions.into_iter().map(Routed::Nav));
+                } else {
+                    self.continue_drag(s, out);
+                }
+            }
+            Phase::Up | Phase::Cancel => {
+                if self.touches.remove(&s.id).is_none() {
+                    return;
+                }
+                if self.two_finger.as_ref().is_some_and(|g| g.follows(s.id)) {
+                    self.two_finger = None;
+                }
+                self.end_drag(s, out);
+                if self.touches.is_empty() {
+                    self.touches_spent = false;
+                }
+            }
+        }
+    }
+
+    fn touch_down(&mut self, s: &PointerSample, out: &mut Vec<Routed>) {
+        if self.touches_spent {
+            return;
+        }
+        match self.touches.len() {
+            1 if self.pen_seen => {
+                self.drags.insert(s.id, (Drag::Orbit, s.pos_in_screen));
+            }
+            1 if !self.tool_busy() => {
+                self.drags.insert(s.id, (Drag::Tool, s.pos_in_screen));
+                out.push(Routed::Tool(ToolEvent::Begin(*s)));
+            }
+            2 => {
+                self.cancel_touch_strokes(out);
+                let touch_ids: Vec<i64> = self.touches.keys().copied().collect();
+                for id in &touch_ids {
+                    self.drags.remove(id);
+                }
+                let ids = [touch_ids[0], touch_ids[1]];
+                let positions = [self.touches[&ids[0]], self.touches[&ids[1]]];
+                let drag = if self.pen_seen {
+                    TwoFingerDrag::Pan
+                } else {
+                    TwoFingerDrag::Orbit
+                };
+                self.two_finger = Some(TwoFingerGesture::new(ids, positions, drag));
+                self.touches_spent = true;
+            }
+            _ => {}
+        }
+    }
+
+    fn continue_drag(&mut self, s: &PointerSample, out: &mut Vec<Routed>) {
+        let Some((drag, last)) = self.drags.get_mut(&s.id) else {
+            return;
+        };
+        let delta: Vec2 = s.pos_in_screen - *last;
+        *last = s.pos_in_screen;
+        out.push(match drag {
+            Drag::Tool => Routed::Tool(ToolEvent::Move(*s)),
+            Drag::Orbit => Routed::Nav(NavAction::Orbit(delta)),
+            Drag::Pan => Routed::Nav(NavAction::Pan(delta)),
+        });
+    }
+
+    fn end_drag(&mut self, s: &PointerSample, out: &mut Vec<Routed>) {
+        if let Some((Drag::Tool, _)) = self.drags.remove(&s.id) {
+            out.push(Routed::Tool(match s.phase {
+                Phase::Cancel => ToolEvent::Cancel,
+                _ => ToolEvent::End(*s),
+            }));
+        }
+    }
+
+    fn tool_busy(&self) -> bool {
+        self.drags.values().any(|(d, _)| *d == Drag::Tool)
+    }
+
+    /// A stroke begun by a finger is really the start of a gesture or a resting palm.
+    fn cancel_touch_strokes(&mut self, out: &mut Vec<Routed>) {
+        let touch_strokes: Vec<i64> = self
+            .drags
+            .iter()
+            .filter(|(id, (d, _))| *d == Drag::Tool && self.touches.contains_key(id))
+            .map(|(id, _)| *id)
+            .collect();
+        for id in touch_strokes {
+            self.drags.remove(&id);
+            out.push(Routed::Tool(ToolEvent::Cancel));
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use egui::pos2;
+
+    fn sample(id: i64, kind: PointerKind, phase: Phase, x: f32, y: f32) -> PointerSample {
+        PointerSample {
+            id,
+            phase,
+            pos_in_screen: pos2(x, y),
+            pressure: 0.5,
+            kind,
+            buttons: if matches!(phase, Phase::Up) { 0 } else { buttons::PRIMARY },
+            time: 0.0,
+        }
+    }
+
+    fn route_all(router: &mut InputRouter, samples: &[PointerSample]) -> Vec<Routed> {
+        let mut out = Vec::new();
+        for s in samples {
+            router.route(s, true, &mut out);
+        }
+        out
+    }
+
+    fn one_finger_drag(id: i64) -> Vec<PointerSample> {
+        let t = PointerKind::Touch;
+        vec![
+            sample(id, t, Phase::Down, 100.0, 100.0),
+            sample(id, t, Phase::Move, 150.0, 120.0),
+            sample(id, t, Phase::Up, 150.0, 120.0),
+        ]
+    }
+
+    #[test]
+    fn finger_draws_until_a_pen_is_seen_then_orbits() {
+        let mut router = InputRouter::default();
+        let out = route_all(&mut router, &one_finger_drag(1));
+        assert!(matches!(out[0], Routed::Tool(ToolEvent::Begin(_))));
+        assert!(matches!(out[2], Routed::Tool(ToolEvent::End(_))));
+
+        let pen = PointerKind::Pen;
+        route_all(
+            &mut router,
+            &[sample(9, pen, Phase::Down, 10.0, 10.0), sample(9, pen, Phase::Up, 10.0, 10.0)],
+        );
+        assert!(router.pen_seen());
+        let out = route_all(&mut router, &one_finger_drag(2));
+        assert!(out.iter().all(|r| !matches!(r, Routed::Tool(_))), "{out:?}");
+        assert_eq!(out, vec![Routed::Nav(NavAction::Orbit(egui::vec2(50.0, 20.0)))]);
+    }
+
+    #[test]
+    fn second_finger_cancels_the_stroke_and_navigates() {
+        let mut router = InputRouter::default();
+        let t = PointerKind::Touch;
+        let out = route_all(
+            &mut router,
+            &[
+                sample(1, t, Phase::Down, 100.0, 100.0),
+                sample(1, t, Phase::Move, 102.0, 100.0),
+                sample(2, t, Phase::Down, 200.0, 100.0),
+                sample(1, t, Phase::Move, 60.0, 100.0),
+                sample(2, t, Phase::Move, 240.0, 100.0),
+                sample(2, t, Phase::Up, 240.0, 100.0),
+                sample(1, t, Phase::Move, 10.0, 10.0),
+                sample(1, t, Phase::Up, 10.0, 10.0),
+            ],
+        );
+        assert!(out.contains(&Routed::Tool(ToolEvent::Cancel)));
+        assert!(out.iter().any(|r| matches!(r, Routed::Nav(NavAction::Zoom { .. }))));
+        // The finger left behind after the pinch neither draws nor ends a stroke.
+        let after_cancel = out.iter().skip_while(|r| **r != Routed::Tool(ToolEvent::Cancel)).skip(1);
+        assert!(after_cancel.into_iter().all(|r| matches!(r, Routed::Nav(_))));
+    }
+
+    #[test]
+    fn pen_arriving_cancels_a_palm_stroke() {
+        let mut router = InputRouter::default();
+        let out = route_all(
+            &mut router,
+            &[
+                sample(1, PointerKind::Touch, Phase::Down, 100.0, 100.0),
+                sample(5, PointerKind::Pen, Phase::Down, 300.0, 300.0),
+            ],
+        );
+        assert_eq!(out[0], Routed::Tool(ToolEvent::Begin(sample(1, PointerKind::Touch, Phase::Down, 100.0, 100.0))));
+        assert_eq!(out[1], Routed::Tool(ToolEvent::Cancel));
+        assert!(matches!(out[2], Routed::Tool(ToolEvent::Begin(s)) if s.kind == PointerKind::Pen));
+    }
+
+    #[test]
+    fn mouse_buttons_choose_tool_orbit_pan() {
+        let mut router = InputRouter::default();
+        let m = PointerKind::Mouse;
+        let mut right = sample(1, m, Phase::Down, 0.0, 0.0);
+        right.buttons = buttons::SECONDARY;
+        let mut middle = sample(1, m, Phase::Down, 0.0, 0.0);
+        middle.buttons = buttons::MIDDLE;
+        let out = route_all(
+            &mut router,
+            &[right, sample(1, m, Phase::Move, 5.0, 0.0), sample(1, m, Phase::Up, 5.0, 0.0)],
+        );
+        assert_eq!(out, vec![Routed::Nav(NavAction::Orbit(egui::vec2(5.0, 0.0)))]);
+        let out = route_all(
+            &mut router,
+            &[middle, sample(1, m, Phase::Move, 0.0, 7.0), sample(1, m, Phase::Up, 0.0, 7.0)],
+        );
+        assert_eq!(out, vec![Routed::Nav(NavAction::Pan(egui::vec2(0.0, 7.0)))]);
+    }
+
+    #[test]
+    fn press_on_a_panel_is_not_a_stroke() {
+        let mut router = InputRouter::default();
+        let mut out = Vec::new();
+        for s in one_finger_drag(3) {
+            router.route(&s, false, &mut out);
+        }
+        assert!(out.is_empty());
+    }
+}

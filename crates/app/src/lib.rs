@@ -1,0 +1,16 @@
+//! Sketchmesh's eframe app: wgpu rendering, camera, input, tools and panels.
+//!
+//! Algorithms live in `sketchmesh_core`; this crate only turns input into document
+//! operations and draws the result. It builds natively (`main.rs`) and for the web
+//! (`web.rs`, the `start` entry point the page calls).
+
+pub mod app;
+pub mod camera;
+pub mod input;
+pub mod panels;
+pub mod render;
+pub mod tools;
+#[cfg(target_arch = "wasm32")]
+pub mod web;
+
+pub use app::SketchApp;

@@ -1,0 +1,52 @@
+//! The help window: every shortcut and gesture in one place.
+
+/// Keyboard shortcuts, as shown.
+const SHORTCUTS: &[(&str, &str)] = &[
+    ("Ctrl+Z", "Undo"),
+    ("Ctrl+Shift+Z, Ctrl+Y", "Redo"),
+    ("F", "Frame everything"),
+    ("R, Home", "Reset the view"),
+    ("W", "Wireframe on/off"),
+    ("G", "Grid on/off"),
+    ("H, F1", "This help"),
+];
+
+/// Mouse and touch gestures, as shown.
+const GESTURES: &[(&str, &str)] = &[
+    ("Left drag, pen", "Draw"),
+    ("Right drag", "Orbit"),
+    ("Middle drag", "Pan"),
+    ("Wheel, trackpad pinch", "Zoom"),
+    ("One finger (no pen yet)", "Draw"),
+    ("Two fingers (no pen yet)", "Drag to orbit, pinch to zoom and pan"),
+    ("One finger (after a pen)", "Orbit; fingers never draw once a pen is seen"),
+    ("Two fingers (after a pen)", "Drag to pan, pinch to zoom"),
+];
+
+/// Shows the help window while `open` is set.
+pub fn help_ui(ctx: &egui::Context, open: &mut bool, backend: &str, pen_seen: bool) {
+    egui::Window::new("Help")
+        .open(open)
+        .collapsible(false)
+        .resizable(false)
+        .default_width(420.0)
+        .show(ctx, |ui| {
+            table_ui(ui, "shortcuts", "Keyboard", SHORTCUTS);
+            ui.add_space(8.0);
+            table_ui(ui, "gestures", "Mouse, pen and touch", GESTURES);
+            ui.add_space(8.0);
+            let palm = if pen_seen { "on (a pen was seen)" } else { "off until a pen is seen" };
+            ui.label(format!("Palm rejection: {palm}. Graphics: {backend}."));
+        });
+}
+
+fn table_ui(ui: &mut egui::Ui, id: &str, title: &str, rows: &[(&str, &str)]) {
+    ui.strong(title);
+    egui::Grid::new(id).num_columns(2).striped(true).show(ui, |ui| {
+        for (keys, what) in rows {
+            ui.monospace(*keys);
+            ui.label(*what);
+            ui.end_row();
+        }
+    });
+}

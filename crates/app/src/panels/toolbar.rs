@@ -1,0 +1,65 @@
+//! The toolbar: undo and redo for tablets (no keyboard there), view switches, status.
+
+use sketchmesh_core::document::Editor;
+
+use crate::render::ViewOptions;
+
+/// A toolbar button the user pressed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Action {
+    /// Undo the last operation.
+    Undo,
+    /// Redo the last undone operation.
+    Redo,
+    /// Frame everything.
+    FrameAll,
+    /// Back to the default view.
+    ResetView,
+    /// Wireframe on or off.
+    ToggleWireframe,
+    /// Ground grid on or off.
+    ToggleGrid,
+    /// Help window on or off.
+    ToggleHelp,
+}
+
+/// Minimum touch target, in points, so buttons are easy to hit with a finger.
+const TOUCH_TARGET: f32 = 36.0;
+
+/// Shows the toolbar; wraps onto more rows on narrow screens.
+pub fn toolbar_ui(ui: &mut egui::Ui, editor: &Editor, options: &ViewOptions, status: Option<&str>) -> Option<Action> {
+    let mut action = None;
+    ui.spacing_mut().interact_size.y = TOUCH_TARGET;
+    ui.spacing_mut().button_padding = egui::vec2(10.0, 6.0);
+    ui.horizontal_wrapped(|ui| {
+        ui.strong("Sketchmesh");
+        ui.separator();
+        let mut button = |ui: &mut egui::Ui, enabled: bool, label: &str, hint: &str, a: Action| {
+            let response = ui.add_enabled(enabled, egui::Button::new(label).min_size(egui::vec2(TOUCH_TARGET, TOUCH_TARGET)));
+            if response.on_hover_text(hint).clicked() {
+                action = Some(a);
+            }
+        };
+        button(ui, editor.can_undo(), "⟲ Undo", "Undo (Ctrl+Z)", Action::Undo);
+        button(ui, editor.can_redo(), "⟳ Redo", "Redo (Ctrl+Shift+Z or Ctrl+Y)", Action::Redo);
+        ui.separator();
+        button(ui, true, "Frame", "Frame everything (F)", Action::FrameAll);
+        button(ui, true, "Reset view", "Back to the front view (R)", Action::ResetView);
+        let wire = if options.wireframe { "Wireframe ✔" } else { "Wireframe" };
+        button(ui, true, wire, "Show mesh edges (W)", Action::ToggleWireframe);
+        let grid = if options.grid { "Grid ✔" } else { "Grid" };
+        button(ui, true, grid, "Show the ground grid (G)", Action::ToggleGrid);
+        button(ui, true, "?", "Shortcuts and gestures (H)", Action::ToggleHelp);
+        ui.separator();
+        let stats = editor.document().stats();
+        ui.label(format!(
+            "{} models · {} vertices · {} triangles · {} curves",
+            stats.models, stats.vertices, stats.triangles, stats.curves
+        ));
+        if let Some(status) = status {
+            ui.separator();
+            ui.colored_label(ui.visuals().warn_fg_color, status);
+        }
+    });
+    action
+}

@@ -1,0 +1,137 @@
+//! GPU-ready arrays built from the document, once per document revision.
+//!
+//! Kept free of wgpu so it can be tested natively and shared (in an `Arc`) between the UI
+//! thread and the paint callback. Nothing here runs per frame.
+
+use std::collections::HashSet;
+
+use bytemuck::{Pod, Zeroable};
+use glam::DVec3;
+use sketchmesh_core::document::Document;
+use sketchmesh_core::geometry::vertex_normals;
+
+/// A mesh vertex as the shaders read it.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Pod, Zeroable)]
+pub struct MeshVertex {
+    /// Position in world space.
+    pub pos: [f32; 3],
+    /// Unit normal.
+    pub normal: [f32; 3],
+}
+
+/// One segment of a thick curve: two end points with widths in points, and a colour.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Pod, Zeroable)]
+pub struct CurveSegment {
+    /// Start in world space.
+    pub p0: [f32; 3],
+    /// Width at the start, in points.
+    pub w0: f32,
+    /// End in world space.
+    pub p1: [f32; 3],
+    /// Width at the end, in points.
+    pub w1: f32,
+    /// Straight (not premultiplied) RGBA.
+    pub color: [f32; 4],
+}
+
+/// Ink colour of free sketches.
+pub const SKETCH_COLOR: [f32; 4] = [0.95, 0.78, 0.32, 1.0];
+/// Colour of smooth control curves (FiberMesh shows them blue).
+pub const SMOOTH_CURVE_COLOR: [f32; 4] = [0.25, 0.55, 1.0, 1.0];
+/// Colour of sharp control curves (red).
+pub const SHARP_CURVE_COLOR: [f32; 4] = [0.95, 0.25, 0.2, 1.0];
+/// Width of control curves in points.
+pub const CONTROL_CURVE_WIDTH: f32 = 3.0;
+
+/// Everything the scene pass draws that comes from the document.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct SceneGeometry {
+    /// The editor revision these arrays were built from.
+    pub revision: u64,
+    /// All models' vertices, concatenated.
+    pub vertices: Vec<MeshVertex>,
+    /// Triangle indices into `vertices`.
+    pub triangles: Vec<u32>,
+    /// Edge indices (pairs) for the wireframe.
+    pub edges: Vec<u32>,
+    /// Thick curve segments.
+    pub curves: Vec<CurveSegment>,
+    /// Bounds of everything drawn, for framing.
+    pub bounds: Option<(DVec3, DVec3)>,
+}
+
+impl SceneGeometry {
+    /// Builds the arrays for `doc` at `revision`.
+    pub fn build(doc: &Document, revision: u64) -> Self {
+        let mut scene = Self {
+            revision,
+            ..Self::default()
+        };
+        for model in &doc.models {
+            scene.add_mesh(model.mesh.positions(), model.mesh.triangle_indices(), &vertex_normals(&model.mesh));
+            for curve in &model.curves {
+                let color = if curve.sharp { SHARP_CURVE_COLOR } else { SMOOTH_CURVE_COLOR };
+                let widths = vec![f64::from(CONTROL_CURVE_WIDTH); curve.points.len()];
+                scene.add_polyline(&curve.points, &widths, curve.closed, color);
+            }
+        }
+        for sketch in &doc.sketches {
+            let widths: Vec<f64> = sketch.pressures.iter().map(|&p| pressure_width(p)).collect();
+            scene.add_polyline(&sketch.points, &widths, false, SKETCH_COLOR);
+        }
+        scene
+    }
+
+    fn add_mesh(&mut self, positions: &[DVec3], triangles: &[u32], normals: &[DVec3]) {
+        let base = self.vertices.len() as u32;
+        for (p, n) in positions.iter().zip(normals) {
+            self.vertices.push(MeshVertex {
+                pos: p.as_vec3().to_array(),
+                normal: n.as_vec3().to_array(),
+            });
+            self.grow_bounds(*p);
+        }
+        self.triangles.extend(triangles.iter().map(|i| base + i));
+        let mut seen = HashSet::new();
+        for tri in triangles.chunks_exact(3) {
+            for k in 0..3 {
+                let (a, b) = (tri[k], tri[(k + 1) % 3]);
+                if seen.insert((a.min(b), a.max(b))) {
+                    self.edges.extend([base + a, base + b]);
+                }
+            }
+        }
+    }
+
+    fn add_polyline(&mut self, points: &[DVec3], widths: &[f64], closed: bool, color: [f32; 4]) {
+        let n = points.len();
+        let n_segments = if closed && n > 2 { n } else { n.saturating_sub(1) };
+        for i in 0..n_segments {
+            let j = (i + 1) % n;
+            self.curves.push(CurveSegment {
+                p0: points[i].as_vec3().to_array(),
+                w0: widths[i] as f32,
+                p1: points[j].as_vec3().to_array(),
+                w1: widths[j] as f32,
+                color,
+            });
+        }
+        for p in points {
+            self.grow_bounds(*p);
+        }
+    }
+
+    fn grow_bounds(&mut self, p: DVec3) {
+        self.bounds = Some(match self.bounds {
+            None => (p, p),
+            Some((lo, hi)) => (lo.min(p), hi.max(p)),
+        });
+    }
+}
+
+/// Stroke width in points for a pen pressure, shared by the live stroke and stored sketches.
+pub fn pressure_width(pressure: f64) -> f64 {
+    1.5 + 6.0 * pressure.clamp(0.0, 1.0)
+}

@@ -1,0 +1,252 @@
+//! The 3D view: a custom wgpu pass inside egui, free of tools and UI.
+//!
+//! The scene is drawn in `prepare` into an offscreen target of our own (with 4× MSAA where
+//! the adapter supports it, and its own depth buffer), because eframe's web painter offers
+//! neither MSAA nor a depth buffer we could rely on; `paint` then composites that target
+//! into egui's pass over a background gradient. Buffers are re-uploaded only when the
+//! document revision changes; a frame otherwise writes one small uniform buffer.
+
+pub mod geometry;
+mod grid;
+mod pipelines;
+mod target;
+
+use std::sync::Arc;
+
+use bytemuck::{Pod, Zeroable};
+use eframe::egui_wgpu::{self, CallbackResources, CallbackTrait, ScreenDescriptor, wgpu};
+use eframe::wgpu::util::DeviceExt;
+
+pub use geometry::SceneGeometry;
+use pipelines::Pipelines;
+use target::SceneTarget;
+
+/// Per-frame shader constants (must match `Uniforms` in scene.wgsl).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Pod, Zeroable)]
+pub struct Uniforms {
+    /// World to clip space.
+    pub clip_from_world: [[f32; 4]; 4],
+    /// Eye position (w unused).
+    pub eye: [f32; 4],
+    /// Target width and height in pixels, pixels per point, unused.
+    pub viewport: [f32; 4],
+}
+
+/// What to draw besides the document.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ViewOptions {
+    /// Draw mesh edges.
+    pub wireframe: bool,
+    /// Draw the ground grid.
+    pub grid: bool,
+}
+
+/// GPU buffers holding one [`SceneGeometry`].
+struct GeometryBuffers {
+    revision: u64,
+    vertices: Option<wgpu::Buffer>,
+    triangles: Option<(wgpu::Buffer, u32)>,
+    edges: Option<(wgpu::Buffer, u32)>,
+    curves: Option<(wgpu::Buffer, u32)>,
+}
+
+/// GPU state of the 3D view, kept in egui's callback resources.
+pub struct SceneRenderer {
+    pipelines: Pipelines,
+    samples: u32,
+    uniforms: wgpu::Buffer,
+    scene_bind_group: wgpu::BindGroup,
+    blit_params: wgpu::Buffer,
+    sampler: wgpu::Sampler,
+    grid: (wgpu::Buffer, u32),
+    geometry: Option<GeometryBuffers>,
+    target: Option<SceneTarget>,
+}
+
+impl SceneRenderer {
+    /// Creates the renderer and registers it with egui's wgpu painter.
+    pub fn install(rs: &egui_wgpu::RenderState) {
+        let device = &rs.device;
+        let samples = msaa_samples(&rs.adapter);
+        let pipelines = Pipelines::new(device, samples, rs.target_format);
+        let uniforms = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("scene uniforms"),
+            size: size_of::<Uniforms>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let scene_bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("scene uniforms"),
+            layout: &pipelines.scene_layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: uniforms.as_entire_binding(),
+            }],
+        });
+        // A sRGB output would encode again what the scene already wrote gamma-encoded.
+        let flags: [f32; 4] = [if rs.target_format.is_srgb() { 1.0 } else { 0.0 }, 0.0, 0.0, 0.0];
+        let blit_params = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("blit params"),
+            contents: bytemuck::cast_slice(&flags),
+            usage: wgpu::BufferUsages::UNIFORM,
+        });
+        let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
+            label: Some("scene"),
+            ..Default::default()
+        });
+        let grid_vertices = grid::grid_lines();
+        let grid = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("grid"),
+            contents: bytemuck::cast_slice(&grid_vertices),
+            usage: wgpu::BufferUsages::VERTEX,
+        });
+        let renderer = Self {
+            pipelines,
+            samples,
+            uniforms,
+            scene_bind_group,
+            blit_params,
+            sampler,
+            grid: (grid, grid_vertices.len() as u32),
+            geometry: None,
+            target: None,
+        };
+        log::info!(
+            "3D view: {:?} backend, {samples}x MSAA, output {:?}",
+            rs.adapter.get_info().backend,
+            rs.target_format
+        );
+        rs.renderer.write().callback_resources.insert(renderer);
+    }
+
+    fn upload(&mut self, device: &wgpu::Device, scene: &SceneGeometry) {
+        if self.geometry.as_ref().is_some_and(|g| g.revision == scene.revision) {
+            return;
+        }
+        let vertex = wgpu::BufferUsages::VERTEX;
+        let index = wgpu::BufferUsages::INDEX;
+        self.geometry = Some(GeometryBuffers {
+            revision: scene.revision,
+            vertices: buffer(device, "mesh vertices", &scene.vertices, vertex).map(|(b, _)| b),
+            triangles: buffer(device, "mesh triangles", &scene.triangles, index),
+            edges: buffer(device, "mesh edges", &scene.edges, index),
+            curves: buffer(device, "curves", &scene.curves, vertex),
+        });
+    }
+
+    fn draw_scene(&self, pass: &mut wgpu::RenderPass<'_>, options: ViewOptions) {
+        pass.set_bind_group(0, &self.scene_bind_group, &[]);
+        let Some(g) = &self.geometry else {
+            return;
+        };
+        if let (Some(vertices), Some((triangles, n))) = (&g.vertices, &g.triangles) {
+            pass.set_pipeline(&self.pipelines.mesh);
+            pass.set_vertex_buffer(0, vertices.slice(..));
+            pass.set_index_buffer(triangles.slice(..), wgpu::IndexFormat::Uint32);
+            pass.draw_indexed(0..*n, 0, 0..1);
+            if let (true, Some((edges, n))) = (options.wireframe, &g.edges) {
+                pass.set_pipeline(&self.pipelines.wire);
+                pass.set_index_buffer(edges.slice(..), wgpu::IndexFormat::Uint32);
+                pass.draw_indexed(0..*n, 0, 0..1);
+            }
+        }
+        if options.grid {
+            pass.set_pipeline(&self.pipelines.grid);
+            pass.set_vertex_buffer(0, self.grid.0.slice(..));
+            pass.draw(0..self.grid.1, 0..1);
+        }
+        if let Some((curves, n)) = &g.curves {
+            pass.set_vertex_buffer(0, curves.slice(..));
+            for pipeline in [&self.pipelines.curve_hidden, &self.pipelines.curve_visible] {
+                pass.set_pipeline(pipeline);
+                pass.draw(0..6, 0..*n);
+            }
+        }
+    }
+}
+
+fn buffer<T: Pod>(device: &wgpu::Device, label: &str, data: &[T], usage: wgpu::BufferUsages) -> Option<(wgpu::Buffer, u32)> {
+    (!data.is_empty()).then(|| {
+        let b = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some(label),
+            contents: bytemuck::cast_slice(data),
+            usage,
+        });
+        (b, data.len() as u32)
+    })
+}
+
+/// 4× MSAA when both scene formats support it on this adapter, else none.
+fn msaa_samples(adapter: &wgpu::Adapter) -> u32 {
+    let supports = |format| adapter.get_texture_format_features(format).flags.sample_count_supported(4);
+    if supports(pipelines::SCENE_FORMAT) && supports(pipelines::DEPTH_FORMAT) {
+        4
+    } else {
+        1
+    }
+}
+
+/// One frame of the 3D view, handed to egui as a paint callback.
+pub struct SceneCallback {
+    /// The viewport rectangle in points.
+    pub rect: egui::Rect,
+    /// Shader constants for this frame (`viewport` is filled in by `prepare`).
+    pub uniforms: Uniforms,
+    /// The document's arrays (uploaded only when their revision changes).
+    pub geometry: Arc<SceneGeometry>,
+    /// Wireframe and grid switches.
+    pub options: ViewOptions,
+}
+
+impl CallbackTrait for SceneCallback {
+    fn prepare(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        screen: &ScreenDescriptor,
+        encoder: &mut wgpu::CommandEncoder,
+        resources: &mut CallbackResources,
+    ) -> Vec<wgpu::CommandBuffer> {
+        let Some(renderer) = resources.get_mut::<SceneRenderer>() else {
+            return Vec::new();
+        };
+        let ppp = screen.pixels_per_point;
+        let size = [
+            (self.rect.width() * ppp).round().max(1.0) as u32,
+            (self.rect.height() * ppp).round().max(1.0) as u32,
+        ];
+        renderer.upload(device, &self.geometry);
+        let mut uniforms = self.uniforms;
+        uniforms.viewport = [size[0] as f32, size[1] as f32, ppp, 0.0];
+        queue.write_buffer(&renderer.uniforms, 0, bytemuck::bytes_of(&uniforms));
+        SceneTarget::ensure(
+            &mut renderer.target,
+            device,
+            &renderer.pipelines,
+            renderer.samples,
+            size,
+            &renderer.sampler,
+            &renderer.blit_params,
+        );
+        let Some(target) = renderer.target.as_ref() else {
+            return Vec::new();
+        };
+        let mut pass = target.begin_pass(encoder);
+        renderer.draw_scene(&mut pass, self.options);
+        drop(pass);
+        Vec::new()
+    }
+
+    fn paint(&self, _info: egui::PaintCallbackInfo, pass: &mut wgpu::RenderPass<'static>, resources: &CallbackResources) {
+        let Some(renderer) = resources.get::<SceneRenderer>() else {
+            return;
+        };
+        let Some(target) = &renderer.target else {
+            return;
+        };
+        pass.set_pipeline(&renderer.pipelines.blit);
+        pass.set_bind_group(0, &target.blit_bind_group, &[]);
+        pass.draw(0..3, 0..1);
+    }
+}

@@ -1,0 +1,111 @@
+//! Web shell: the `start` entry point and the page API, `window.sketchmesh`.
+//!
+//! The page API lets pages embed and automate Sketchmesh (and lets the browser tests
+//! check real outcomes). Calls that fail throw a JavaScript `Error` with a plain sentence
+//! and leave the document as it was.
+
+use std::cell::RefCell;
+use std::rc::Rc;
+
+use js_sys::{Object, Reflect, Uint8Array};
+use wasm_bindgen::JsCast;
+use wasm_bindgen::prelude::*;
+
+use crate::app::{Shared, SketchApp};
+use crate::input::web_pointer::WebPointer;
+
+/// Starts Sketchmesh on the canvas with id `canvas_id`.
+#[wasm_bindgen]
+pub async fn start(canvas_id: String) -> Result<(), JsValue> {
+    let _ = eframe::WebLogger::init(log::LevelFilter::Info);
+    let document = web_sys::window()
+        .and_then(|w| w.document())
+        .ok_or_else(|| JsValue::from_str("No document to run in."))?;
+    let canvas = document
+        .get_element_by_id(&canvas_id)
+        .ok_or_else(|| JsValue::from_str(&format!("No element with id {canvas_id:?}.")))?
+        .dyn_into::<web_sys::HtmlCanvasElement>()?;
+    let listen_on = canvas.clone();
+    eframe::WebRunner::new()
+        .start(
+            canvas,
+            eframe::WebOptions::default(),
+            Box::new(move |cc| {
+                let app = SketchApp::new(cc);
+                let ctx = cc.egui_ctx.clone();
+                let pointer = WebPointer::listen(&listen_on, app.web_samples.clone(), move || ctx.request_repaint())
+                    .map_err(|e| format!("Could not listen to pointer events: {e:?}"))?;
+                // The listeners live as long as the page.
+                std::mem::forget(pointer);
+                install_page_api(app.shared(), cc.egui_ctx.clone())
+                    .map_err(|e| format!("Could not install window.sketchmesh: {e:?}"))?;
+                Ok(Box::new(app))
+            }),
+        )
+        .await
+}
+
+fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(), JsValue> {
+    let api = Object::new();
+    let set = |name: &str, f: JsValue| Reflect::set(&api, &JsValue::from_str(name), &f).map(|_| ());
+
+    let s = shared.clone();
+    set("stats", getter(move || json(&s.borrow().editor.document().stats())))?;
+    let s = shared.clone();
+    set("session", getter(move || Ok(JsValue::from_str(&s.borrow().editor.session_json()))))?;
+    let s = shared.clone();
+    set("camera", getter(move || json(&s.borrow().camera.camera())))?;
+    let s = shared.clone();
+    set("backend", getter(move || Ok(JsValue::from_str(&s.borrow().backend))))?;
+    let s = shared.clone();
+    set(
+        "exportGlb",
+        getter(move || Ok(Uint8Array::from(sketchmesh_core::io::write_glb(s.borrow().editor.document()).as_slice()).into())),
+    )?;
+    let (s, c) = (shared.clone(), ctx.clone());
+    set(
+        "replay",
+        Closure::<dyn Fn(String) -> Result<(), JsValue>>::new(move |session: String| {
+            let editor = sketchmesh_core::document::Editor::replay_json(&session).map_err(|e| js_error(&e.to_string()))?;
+            s.borrow_mut().editor = editor;
+            c.request_repaint();
+            Ok(())
+        })
+        .into_js_value(),
+    )?;
+    set(
+        "loadGlb",
+        Closure::<dyn Fn(JsValue) -> Result<(), JsValue>>::new(|_bytes: JsValue| {
+            Err(js_error("Importing glTF is not implemented yet."))
+        })
+        .into_js_value(),
+    )?;
+    for (name, op) in [("undo", sketchmesh_core::document::Op::Undo), ("redo", sketchmesh_core::document::Op::Redo)] {
+        let (s, c) = (shared.clone(), ctx.clone());
+        set(
+            name,
+            Closure::<dyn Fn() -> Result<(), JsValue>>::new(move || {
+                let result = s.borrow_mut().editor.apply(op.clone());
+                c.request_repaint();
+                result.map_err(|e| js_error(&e.to_string()))
+            })
+            .into_js_value(),
+        )?;
+    }
+    let window = web_sys::window().ok_or_else(|| JsValue::from_str("No window."))?;
+    Reflect::set(&window, &JsValue::from_str("sketchmesh"), &api)?;
+    Ok(())
+}
+
+fn getter(f: impl Fn() -> Result<JsValue, JsValue> + 'static) -> JsValue {
+    Closure::<dyn Fn() -> Result<JsValue, JsValue>>::new(f).into_js_value()
+}
+
+fn json(value: &impl serde::Serialize) -> Result<JsValue, JsValue> {
+    let text = serde_json::to_string(value).map_err(|e| js_error(&e.to_string()))?;
+    js_sys::JSON::parse(&text)
+}
+
+fn js_error(message: &str) -> JsValue {
+    js_sys::Error::new(message).into()
+}

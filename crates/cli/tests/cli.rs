@@ -1,0 +1,107 @@
+//! Runs the built `sketchmesh` binary on session files in a temporary directory.
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+const SESSION: &str = r#"{"format":"sketchmesh-session","version":1,"ops":[
+{"op":"stroke","viewport":[800.0,600.0],"camera":{"eye":[0.0,0.0,5.0],"target":[0.0,0.0,0.0],"up":[0.0,1.0,0.0],"fov_y_deg":45.0},"stroke":[[300.0,300.0,0.5],[400.0,280.0,0.6],[500.0,300.0,0.7]]},
+{"op":"stroke","viewport":[800.0,600.0],"camera":{"eye":[5.0,0.0,0.0],"target":[0.0,0.0,0.0],"up":[0.0,1.0,0.0],"fov_y_deg":45.0},"stroke":[[400.0,200.0,0.5],[400.0,400.0,0.5]]},
+{"op":"undo"},
+{"op":"redo"}
+]}
+"#;
+
+/// A fresh directory under the system temp dir, unique per test and process.
+fn temp_dir(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("sketchmesh-cli-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn sketchmesh(args: &[&std::ffi::OsStr]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_sketchmesh"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn replay_then_info() {
+    let dir = temp_dir("replay");
+    let session = dir.join("session.json");
+    let glb = dir.join("out.glb");
+    std::fs::write(&session, SESSION).unwrap();
+
+    let output = sketchmesh(&[
+        "replay".as_ref(),
+        session.as_os_str(),
+        "-o".as_ref(),
+        glb.as_os_str(),
+    ]);
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    assert_eq!(
+        output.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    assert!(
+        stdout.starts_with("Replayed 4 ops: 0 models, 0 vertices, 0 triangles, 2 curves"),
+        "{stdout}"
+    );
+    assert_eq!(stdout.lines().count(), 1);
+    let bytes = std::fs::read(&glb).unwrap();
+    assert!(bytes.starts_with(b"glTF"));
+
+    let output = sketchmesh(&["info".as_ref(), glb.as_os_str()]);
+    assert_eq!(
+        output.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let info: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+    assert_eq!(info["sketches"], 2);
+    assert_eq!(info["triangles"], 0);
+    assert_eq!(info["genus"], serde_json::Value::Null);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn refusals_exit_1_with_a_sentence() {
+    let dir = temp_dir("refusals");
+    let session = dir.join("bad.json");
+    let glb = dir.join("never.glb");
+    let bad = SESSION.replace(r#"{"op":"undo"}"#, r#"{"op":"frobnicate"}"#);
+    std::fs::write(&session, bad).unwrap();
+
+    let output = sketchmesh(&[
+        "replay".as_ref(),
+        session.as_os_str(),
+        "-o".as_ref(),
+        glb.as_os_str(),
+    ]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(
+        stderr.contains("op 2: unknown op \"frobnicate\""),
+        "{stderr}"
+    );
+    assert!(output.stdout.is_empty());
+    assert!(!glb.exists());
+
+    let not_glb = dir.join("not.glb");
+    std::fs::write(&not_glb, b"hello").unwrap();
+    let output = sketchmesh(&["info".as_ref(), not_glb.as_os_str()]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&output.stderr).contains("not valid glTF"));
+
+    let output = sketchmesh(&["frobnicate".as_ref()]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&output.stderr).contains("Usage"));
+
+    let output = sketchmesh(&["--help".as_ref()]);
+    assert_eq!(output.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&output.stdout).contains("sketchmesh replay"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -1,0 +1,17 @@
+//! The document (models and sketches) and the only way to change it: [`Op`]s applied by an
+//! [`Editor`], which keeps undo history and a replayable [`Session`] log.
+//!
+//! Every op builds the new state first and swaps it in only on success, so a refused op leaves
+//! the document, the history and the log untouched. Models and sketches sit behind `Arc`, so an
+//! undo snapshot is a copy of a few pointers and restores the exact previous state.
+
+mod editor;
+mod history;
+mod model;
+mod op;
+mod session;
+
+pub use editor::{CommandError, Editor};
+pub use model::{ControlCurve, Document, Model, SketchCurve, Stats};
+pub use op::{Op, StrokeInput};
+pub use session::{SESSION_FORMAT, SESSION_VERSION, Session, SessionError};

@@ -1,0 +1,361 @@
+//! Session files: the log of ops that rebuilds a document, as versioned JSON.
+//!
+//! The contract is written up in `docs/session-format.md`. Ops are parsed one by one so that
+//! every error names the op's index (zero-based position in `"ops"`); unknown ops and unknown
+//! fields are errors, never silently ignored.
+
+use serde_json::{Map, Value};
+
+use super::{CommandError, Editor, Op};
+
+/// The `"format"` value of a session file.
+pub const SESSION_FORMAT: &str = "sketchmesh-session";
+/// The session format version this build reads and writes.
+pub const SESSION_VERSION: u64 = 1;
+
+/// A replayable list of ops.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Session {
+    /// The ops, in the order they were applied.
+    pub ops: Vec<Op>,
+}
+
+/// Why a session could not be read or replayed.
+#[derive(Debug, thiserror::Error)]
+pub enum SessionError {
+    /// The text is not JSON at all.
+    #[error("The session is not valid JSON: {0}")]
+    Json(#[from] serde_json::Error),
+    /// The JSON is not a session object (wrong `"format"`, missing or unknown fields).
+    #[error("This is not a Sketchmesh session: {0}.")]
+    Format(String),
+    /// The session was written by an incompatible version.
+    #[error(
+        "The session has version {found}, but this Sketchmesh reads version {SESSION_VERSION}."
+    )]
+    Version {
+        /// The `"version"` value found, as JSON text.
+        found: String,
+    },
+    /// An op could not be parsed.
+    #[error("op {index}: {message}")]
+    Op {
+        /// Zero-based position of the op in `"ops"`.
+        index: usize,
+        /// What is wrong with it.
+        message: String,
+    },
+    /// An op parsed but was refused when replayed.
+    #[error("op {index}: {source}")]
+    Command {
+        /// Zero-based position of the op in `"ops"`.
+        index: usize,
+        /// Why the editor refused it.
+        source: CommandError,
+    },
+}
+
+impl Session {
+    /// The session as JSON: one op per line, so files diff well.
+    pub fn to_json(&self) -> String {
+        let mut json =
+            format!(r#"{{"format":"{SESSION_FORMAT}","version":{SESSION_VERSION},"ops":["#);
+        for (index, op) in self.ops.iter().enumerate() {
+            json.push_str(if index == 0 { "\n" } else { ",\n" });
+            json.push_str(&op_json(op));
+        }
+        if !self.ops.is_empty() {
+            json.push('\n');
+        }
+        json.push_str("]}\n");
+        json
+    }
+
+    /// Parses a session file.
+    pub fn from_json(json: &str) -> Result<Session, SessionError> {
+        let value: Value = serde_json::from_str(json)?;
+        Session::from_value(value)
+    }
+
+    /// Parses a session from a JSON value.
+    pub fn from_value(value: Value) -> Result<Session, SessionError> {
+        let Value::Object(mut root) = value else {
+            return Err(format_error("the top level is not a JSON object"));
+        };
+        match root.remove("format") {
+            Some(Value::String(format)) if format == SESSION_FORMAT => {}
+            Some(other) => {
+                return Err(format_error(&format!(
+                    "\"format\" is {other}, expected \"{SESSION_FORMAT}\""
+                )));
+            }
+            None => return Err(format_error("the \"format\" field is missing")),
+        }
+        match root.remove("version") {
+            Some(version) if version.as_u64() == Some(SESSION_VERSION) => {}
+            Some(version) => {
+                return Err(SessionError::Version {
+                    found: version.to_string(),
+                });
+            }
+            None => return Err(format_error("the \"version\" field is missing")),
+        }
+        let ops = match root.remove("ops") {
+            Some(Value::Array(ops)) => ops,
+            Some(_) => return Err(format_error("\"ops\" is not an array")),
+            None => return Err(format_error("the \"ops\" field is missing")),
+        };
+        if let Some(key) = root.keys().next() {
+            return Err(format_error(&format!(
+                "unknown field \"{key}\" at the top level"
+            )));
+        }
+        let ops = ops
+            .into_iter()
+            .enumerate()
+            .map(|(index, value)| {
+                parse_op(value).map_err(|message| SessionError::Op { index, message })
+            })
+            .collect::<Result<Vec<Op>, SessionError>>()?;
+        Ok(Session { ops })
+    }
+}
+
+impl Editor {
+    /// The ops applied so far as a [`Session`].
+    pub fn session(&self) -> Session {
+        Session {
+            ops: self.ops().to_vec(),
+        }
+    }
+
+    /// The ops applied so far as session JSON ([`Session::to_json`]).
+    pub fn session_json(&self) -> String {
+        self.session().to_json()
+    }
+
+    /// Applies every op of a session to a new editor; the first refused op is an error.
+    pub fn replay(session: &Session) -> Result<Editor, SessionError> {
+        let mut editor = Editor::new();
+        for (index, op) in session.ops.iter().enumerate() {
+            editor
+                .apply(op.clone())
+                .map_err(|source| SessionError::Command { index, source })?;
+        }
+        Ok(editor)
+    }
+
+    /// Parses session JSON and replays it.
+    pub fn replay_json(json: &str) -> Result<Editor, SessionError> {
+        Editor::replay(&Session::from_json(json)?)
+    }
+}
+
+fn format_error(message: &str) -> SessionError {
+    SessionError::Format(message.to_owned())
+}
+
+fn op_json(op: &Op) -> String {
+    // Serializing these plain structs cannot fail: every map key is a string and serde_json
+    // writes non-finite numbers as null (which a refused op never logs anyway).
+    serde_json::to_string(op).unwrap_or_else(|error| {
+        debug_assert!(false, "op serialization failed: {error}");
+        String::from("null")
+    })
+}
+
+/// Parses one op, with an error message fit to follow "op N: ".
+fn parse_op(value: Value) -> Result<Op, String> {
+    let Value::Object(object) = value else {
+        return Err(format!(
+            "expected an object such as {{\"op\": \"undo\"}}, found {value}"
+        ));
+    };
+    let name = match object.get("op") {
+        Some(Value::String(name)) => name.clone(),
+        Some(other) => return Err(format!("\"op\" must be a string, found {other}")),
+        None => return Err(String::from("the \"op\" field is missing")),
+    };
+    if !Op::NAMES.contains(&name.as_str()) {
+        return Err(format!(
+            "unknown op \"{name}\" (known ops: {})",
+            Op::NAMES.join(", ")
+        ));
+    }
+    check_unit_op_fields(&name, &object)?;
+    serde_json::from_value(Value::Object(object))
+        .map_err(|error| format!("in a \"{name}\" op: {error}"))
+}
+
+/// serde ignores extra fields of unit variants in internally tagged enums; refuse them here.
+fn check_unit_op_fields(name: &str, object: &Map<String, Value>) -> Result<(), String> {
+    let is_unit = matches!(name, "undo" | "redo");
+    match object.keys().find(|key| *key != "op") {
+        Some(key) if is_unit => Err(format!("unknown field \"{key}\" in a \"{name}\" op")),
+        _ => Ok(()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::camera::Camera;
+    use crate::document::StrokeInput;
+    use glam::DVec3;
+
+    /// The session example in docs/session-format.md (its last JSON block), so the docs
+    /// cannot drift from the implementation.
+    fn doc_example() -> String {
+        let doc = include_str!("../../../../docs/session-format.md");
+        let start = doc.rfind("```json\n").expect("the doc has a JSON example") + "```json\n".len();
+        let length = doc[start..].find("```").expect("the example block is closed");
+        doc[start..start + length].to_owned()
+    }
+
+    fn stroke_op(camera: Camera, stroke: Vec<[f64; 3]>) -> Op {
+        Op::Stroke(StrokeInput {
+            viewport: [800.0, 600.0],
+            camera,
+            stroke,
+        })
+    }
+
+    #[test]
+    fn doc_example_parses_replays_and_prints_back() {
+        let example = doc_example();
+        let session = Session::from_json(&example).unwrap();
+        assert_eq!(session.ops.len(), 4);
+        assert_eq!(session.ops[2], Op::Undo);
+        assert_eq!(session.to_json(), example);
+        let editor = Editor::replay(&session).unwrap();
+        assert_eq!(editor.document().sketches.len(), 2);
+        assert_eq!(editor.session_json(), example);
+        // The second stroke was drawn looking down −X, so it lies in the plane x = 0.
+        for point in &editor.document().sketches[1].points {
+            assert!(point.x.abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn empty_session() {
+        let json = Editor::new().session_json();
+        assert_eq!(
+            json,
+            "{\"format\":\"sketchmesh-session\",\"version\":1,\"ops\":[]}\n"
+        );
+        assert!(Editor::replay_json(&json).unwrap().document().is_empty());
+    }
+
+    #[test]
+    fn replay_is_exact_for_any_float() {
+        // Camera and pointer values as the app produces them: f32-derived coordinates and
+        // trigonometric noise, which need 17 significant digits to round-trip.
+        let angle = 0.7f64;
+        let camera = Camera {
+            eye: DVec3::new(
+                4.0 * angle.sin(),
+                1.234_567_890_123_456_7,
+                4.0 * angle.cos(),
+            ),
+            target: DVec3::new(1e-17, -0.1, 0.3),
+            up: DVec3::new(std::f64::consts::PI.sin(), 1.0, 0.0),
+            fov_y_deg: 45.0,
+            ortho_height: None,
+        };
+        let stroke: Vec<[f64; 3]> = (0..40)
+            .map(|k| {
+                let t = k as f64 * 0.37;
+                [
+                    f64::from(300.0f32 + 123.456f32 * (t as f32).cos()),
+                    f64::from(250.0f32 + 77.7f32 * (t as f32).sin()),
+                    f64::from(0.3f32 + 0.01f32 * k as f32),
+                ]
+            })
+            .collect();
+        let mut editor = Editor::new();
+        editor.apply(stroke_op(camera, stroke.clone())).unwrap();
+        editor.apply(stroke_op(Camera::default(), stroke)).unwrap();
+        editor.undo().unwrap();
+        let json = editor.session_json();
+        let replayed = Editor::replay_json(&json).unwrap();
+        // Needs serde_json's `float_roundtrip` feature: its default parser may be 1 ulp off.
+        assert!(
+            replayed.session() == editor.session(),
+            "the JSON must round-trip f64 exactly"
+        );
+        assert_eq!(replayed.document(), editor.document());
+        assert_eq!(replayed.can_redo(), editor.can_redo());
+        assert_eq!(replayed.session_json(), json);
+    }
+
+    #[test]
+    fn errors_name_the_op_index() {
+        let undo = r#"{"op":"undo"}"#;
+        let cases = [
+            (r#"{"op":"frobnicate"}"#, "op 1: unknown op \"frobnicate\""),
+            (
+                r#"{"op":"undo","extra":1}"#,
+                "op 1: unknown field \"extra\" in a \"undo\" op",
+            ),
+            (
+                r#"{"op":"stroke","viewport":[8,6],"camera":{"eye":[0,0,5],"target":[0,0,0],"up":[0,1,0],"fov_y_deg":45},"stroke":[],"speed":2}"#,
+                "op 1: in a \"stroke\" op: unknown field `speed`",
+            ),
+            (
+                r#"{"op":"stroke","viewport":[8,6],"camera":{"eye":[0,0,5],"target":[0,0,0],"up":[0,1,0],"fov_y_deg":45,"zoom":1},"stroke":[]}"#,
+                "op 1: in a \"stroke\" op: unknown field `zoom`",
+            ),
+            (r#"{"undo":true}"#, "op 1: the \"op\" field is missing"),
+            ("3", "op 1: expected an object"),
+        ];
+        for (op, expected) in cases {
+            let json =
+                format!(r#"{{"format":"sketchmesh-session","version":1,"ops":[{undo},{op}]}}"#);
+            let error = Session::from_json(&json).unwrap_err();
+            assert!(
+                matches!(error, SessionError::Op { index: 1, .. }),
+                "{error:?}"
+            );
+            let message = error.to_string();
+            assert!(message.starts_with(expected), "{message}");
+        }
+    }
+
+    #[test]
+    fn format_version_and_command_errors() {
+        let wrong_format = r#"{"format":"other","version":1,"ops":[]}"#;
+        assert!(matches!(
+            Session::from_json(wrong_format),
+            Err(SessionError::Format(_))
+        ));
+        let wrong_version = r#"{"format":"sketchmesh-session","version":2,"ops":[]}"#;
+        let error = Session::from_json(wrong_version).unwrap_err();
+        assert_eq!(
+            error.to_string(),
+            "The session has version 2, but this Sketchmesh reads version 1."
+        );
+        let extra = r#"{"format":"sketchmesh-session","version":1,"ops":[],"notes":""}"#;
+        assert_eq!(
+            Session::from_json(extra).unwrap_err().to_string(),
+            "This is not a Sketchmesh session: unknown field \"notes\" at the top level."
+        );
+        assert!(matches!(
+            Session::from_json("{"),
+            Err(SessionError::Json(_))
+        ));
+        assert!(matches!(
+            Session::from_json("[]"),
+            Err(SessionError::Format(_))
+        ));
+        let refused = r#"{"format":"sketchmesh-session","version":1,"ops":[{"op":"undo"}]}"#;
+        let error = Editor::replay_json(refused).unwrap_err();
+        assert!(matches!(
+            error,
+            SessionError::Command {
+                index: 0,
+                source: CommandError::NothingToUndo
+            }
+        ));
+        assert_eq!(error.to_string(), "op 0: Nothing to undo.");
+    }
+}

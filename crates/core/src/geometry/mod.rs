@@ -1,0 +1,15 @@
+//! Discrete differential geometry on a [`Mesh`](crate::mesh::Mesh): normals, areas,
+//! Laplacians and mean curvature.
+//!
+//! Everything reads positions and connectivity and returns new per-element data in `f64`;
+//! nothing here changes a mesh. Sign conventions follow Nealen et al. 2006 ("Laplacian Mesh
+//! Optimization"): the Laplacian is `δ_i = Σ_j w_ij (v_i - v_j)`, positive semi-definite, so on
+//! a convex surface `δ` points outward and `M⁻¹ L x = 2 H n` with `H > 0` (Meyer et al. 2003).
+
+mod area;
+mod laplacian;
+mod normals;
+
+pub use area::{enclosed_volume, face_area, mass_matrix, total_area, vertex_areas, vertex_areas_barycentric};
+pub use laplacian::{cotan_laplacian, mean_curvature, mean_curvature_normals, uniform_laplacian};
+pub use normals::{face_normal, face_normals, vertex_normals, vertex_normals_into};

@@ -1,0 +1,37 @@
+//! The `"sketchmesh"` node extras: control curves and sketches, in full f64 precision.
+
+use serde::{Deserialize, Serialize};
+
+/// Version of the `"sketchmesh"` extras object written by this build.
+pub const EXTRAS_VERSION: u32 = 1;
+
+/// The value of `extras` on a Sketchmesh node: `{"sketchmesh": {...}}`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub(crate) struct NodeExtras {
+    pub(crate) sketchmesh: SketchmeshExtras,
+}
+
+/// The `"sketchmesh"` object.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub(crate) struct SketchmeshExtras {
+    pub(crate) version: u32,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub(crate) curves: Vec<CurveExtras>,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub(crate) sketches: Vec<SketchExtras>,
+}
+
+/// One control curve of a model.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub(crate) struct CurveExtras {
+    pub(crate) closed: bool,
+    pub(crate) sharp: bool,
+    pub(crate) points: Vec<[f64; 3]>,
+}
+
+/// One sketch curve.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub(crate) struct SketchExtras {
+    pub(crate) points: Vec<[f64; 3]>,
+    pub(crate) pressures: Vec<f64>,
+}

@@ -1,0 +1,200 @@
+//! Building a [`Mesh`] from a [`TriSoup`] and back.
+//!
+//! Twins are found by sorting the half-edges on their undirected edge key, which is
+//! deterministic (the same soup always gives the same error) and needs no hash map. Each group
+//! of equal keys is an edge: one half-edge is a boundary edge, two opposite ones are twins, two
+//! in the same direction mean flipped orientation, and three or more are a non-manifold edge.
+
+use super::{INVALID, Mesh, MeshError, TriSoup};
+
+impl Mesh {
+    /// Builds the half-edge mesh of an oriented manifold soup.
+    ///
+    /// Fails on the first problem found: an index out of range, a triangle that repeats a
+    /// vertex, a non-finite position, an edge with more than two triangles, two triangles
+    /// with opposite orientations, a vertex whose triangles form several fans (a bowtie), or a
+    /// vertex used by no triangle.
+    pub fn from_soup(soup: &TriSoup) -> Result<Mesh, MeshError> {
+        let n_vertices = soup.positions.len();
+        check_triangles(soup)?;
+        if let Some(vertex) = soup.positions.iter().position(|p| !p.is_finite()) {
+            return Err(MeshError::NonFinitePosition { vertex: vertex as u32 });
+        }
+        let twin = match_twins(&soup.triangles)?;
+        let mut mesh = Mesh {
+            positions: soup.positions.clone(),
+            triangles: soup.triangles.clone(),
+            twin,
+            vertex_halfedge: vec![INVALID; n_vertices],
+        };
+        let n_outgoing = mesh.assign_vertex_halfedges();
+        if let Some(vertex) = mesh.vertex_halfedge.iter().position(|&h| h == INVALID) {
+            return Err(MeshError::IsolatedVertex { vertex: vertex as u32 });
+        }
+        for v in mesh.vertices() {
+            if mesh.outgoing_halfedges(v).count() != n_outgoing[v.index()] as usize {
+                return Err(MeshError::NonManifoldVertex { vertex: v.0 });
+            }
+        }
+        debug_assert_eq!(mesh.validate(), Ok(()));
+        Ok(mesh)
+    }
+
+    /// The positions and triangles, without connectivity.
+    pub fn to_soup(&self) -> TriSoup {
+        TriSoup { positions: self.positions.clone(), triangles: self.triangles.clone() }
+    }
+
+    /// Picks each vertex's half-edge (a boundary one when there is one) and returns how many
+    /// half-edges leave each vertex.
+    fn assign_vertex_halfedges(&mut self) -> Vec<u32> {
+        let mut n_outgoing = vec![0u32; self.n_vertices()];
+        for (h, &v) in self.triangles.as_flattened().iter().enumerate() {
+            let v = v as usize;
+            n_outgoing[v] += 1;
+            if self.vertex_halfedge[v] == INVALID || self.twin[h] == INVALID {
+                self.vertex_halfedge[v] = h as u32;
+            }
+        }
+        n_outgoing
+    }
+}
+
+fn check_triangles(soup: &TriSoup) -> Result<(), MeshError> {
+    let n_vertices = soup.positions.len();
+    for (face, t) in soup.triangles.iter().enumerate() {
+        let face = face as u32;
+        if let Some(&index) = t.iter().find(|&&i| i as usize >= n_vertices) {
+            return Err(MeshError::IndexOutOfRange { face, index, n_vertices });
+        }
+        if t[0] == t[1] || t[1] == t[2] || t[2] == t[0] {
+            return Err(MeshError::DegenerateTriangle { face });
+        }
+    }
+    Ok(())
+}
+
+/// Pairs each half-edge with its opposite, or marks it [`INVALID`] on the boundary.
+fn match_twins(triangles: &[[u32; 3]]) -> Result<Vec<u32>, MeshError> {
+    let corners = triangles.as_flattened();
+    let edge = |h: usize| -> (u32, u32) {
+        let next = if h % 3 == 2 { h - 2 } else { h + 1 };
+        (corners[h], corners[next])
+    };
+    let undirected_key = |h: usize| {
+        let (a, b) = edge(h);
+        (u64::from(a.min(b)) << 32) | u64::from(a.max(b))
+    };
+    let mut order: Vec<u32> = (0..corners.len() as u32).collect();
+    order.sort_unstable_by_key(|&h| (undirected_key(h as usize), h));
+
+    let mut twin = vec![INVALID; corners.len()];
+    for group in order.chunk_by(|&g, &h| undirected_key(g as usize) == undirected_key(h as usize)) {
+        match *group {
+            [_] => {}
+            [g, h] => {
+                let (a, b) = edge(g as usize);
+                if edge(h as usize) != (b, a) {
+                    return Err(MeshError::InconsistentOrientation { a, b });
+                }
+                twin[g as usize] = h;
+                twin[h as usize] = g;
+            }
+            _ => {
+                let (a, b) = edge(group[0] as usize);
+                return Err(MeshError::NonManifoldEdge { a: a.min(b), b: a.max(b) });
+            }
+        }
+    }
+    Ok(twin)
+}
+
+impl From<&Mesh> for TriSoup {
+    fn from(mesh: &Mesh) -> TriSoup {
+        mesh.to_soup()
+    }
+}
+
+impl TryFrom<&TriSoup> for Mesh {
+    type Error = MeshError;
+
+    fn try_from(soup: &TriSoup) -> Result<Mesh, MeshError> {
+        Mesh::from_soup(soup)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::{VertexId, primitives};
+    use glam::DVec3;
+
+    fn ids(indices: &[u32]) -> Vec<VertexId> {
+        indices.iter().map(|&i| VertexId(i)).collect()
+    }
+
+    fn soup(n_vertices: usize, triangles: &[[u32; 3]]) -> TriSoup {
+        let positions = (0..n_vertices).map(|i| DVec3::new(i as f64, (i * i) as f64, 0.5)).collect();
+        TriSoup { positions, triangles: triangles.to_vec() }
+    }
+
+    #[test]
+    fn round_trip_through_soup_is_exact() {
+        let mesh = primitives::torus(2.0, 0.5, 12, 8);
+        let again = Mesh::from_soup(&mesh.to_soup()).unwrap();
+        assert_eq!(again, mesh);
+    }
+
+    #[test]
+    fn rejects_an_edge_with_three_faces() {
+        // Three fins on the edge 0-1.
+        let err = Mesh::from_soup(&soup(5, &[[0, 1, 2], [1, 0, 3], [0, 1, 4]])).unwrap_err();
+        assert_eq!(err, MeshError::NonManifoldEdge { a: 0, b: 1 });
+    }
+
+    #[test]
+    fn rejects_a_bowtie_vertex() {
+        // Two triangles touching only at vertex 0.
+        let err = Mesh::from_soup(&soup(5, &[[0, 1, 2], [0, 3, 4]])).unwrap_err();
+        assert_eq!(err, MeshError::NonManifoldVertex { vertex: 0 });
+    }
+
+    #[test]
+    fn rejects_two_closed_fans_at_one_vertex() {
+        // Two tetrahedra glued at vertex 0: every edge is manifold, the vertex is not.
+        let tets = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3], [0, 5, 4], [0, 4, 6], [0, 6, 5], [4, 5, 6]];
+        let err = Mesh::from_soup(&soup(7, &tets)).unwrap_err();
+        assert_eq!(err, MeshError::NonManifoldVertex { vertex: 0 });
+    }
+
+    #[test]
+    fn rejects_out_of_range_degenerate_flipped_isolated_and_nan() {
+        let err = Mesh::from_soup(&soup(3, &[[0, 1, 3]])).unwrap_err();
+        assert_eq!(err, MeshError::IndexOutOfRange { face: 0, index: 3, n_vertices: 3 });
+        let err = Mesh::from_soup(&soup(3, &[[0, 1, 2], [0, 2, 2]])).unwrap_err();
+        assert_eq!(err, MeshError::DegenerateTriangle { face: 1 });
+        let err = Mesh::from_soup(&soup(4, &[[0, 1, 2], [0, 1, 3]])).unwrap_err();
+        assert_eq!(err, MeshError::InconsistentOrientation { a: 0, b: 1 });
+        let err = Mesh::from_soup(&soup(4, &[[0, 1, 2]])).unwrap_err();
+        assert_eq!(err, MeshError::IsolatedVertex { vertex: 3 });
+        let mut nan = soup(3, &[[0, 1, 2]]);
+        nan.positions[1].y = f64::NAN;
+        assert_eq!(Mesh::from_soup(&nan).unwrap_err(), MeshError::NonFinitePosition { vertex: 1 });
+    }
+
+    #[test]
+    fn errors_read_as_sentences() {
+        let err = MeshError::NonManifoldEdge { a: 3, b: 7 };
+        assert_eq!(err.to_string(), "The edge between vertices 3 and 7 is shared by more than two triangles.");
+    }
+
+    #[test]
+    fn single_triangle_and_empty_soup_build() {
+        let mesh = Mesh::from_soup(&soup(3, &[[0, 1, 2]])).unwrap();
+        assert_eq!((mesh.n_vertices(), mesh.n_edges(), mesh.n_faces()), (3, 3, 1));
+        assert_eq!(mesh.vertex_neighbors(VertexId(0)).collect::<Vec<_>>(), ids(&[1, 2]));
+        let empty = Mesh::from_soup(&TriSoup::default()).unwrap();
+        assert_eq!(empty.n_vertices(), 0);
+        assert!(empty.is_closed());
+    }
+}

@@ -1,0 +1,173 @@
+//! Sparse least-squares solves: factor once, solve many.
+//!
+//! As geometry-central pairs a one-off function with a stateful solver, this module offers
+//! [`solve_least_squares`] for a single solve and [`Prefactored`] for repeated solves with the
+//! same matrix (a drag re-solves every frame with new right-hand sides). Both minimise
+//! `||A x - b||²` with some unknowns fixed, through the normal equations and faer's sparse
+//! Cholesky; see [`prefactored`](Prefactored) for the method and its limits.
+
+mod normal;
+mod prefactored;
+mod sparse;
+
+use glam::DVec3;
+
+pub use prefactored::Prefactored;
+pub use sparse::{SparseMatrix, Triplets};
+
+/// Why a sparse solve failed.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SolveError {
+    /// A zero or negative pivot: some free unknowns are not determined by the equations.
+    #[error(
+        "The equations do not determine every free unknown (the system is not positive definite); \
+         fix at least one vertex in each connected part."
+    )]
+    NotPositiveDefinite,
+    /// A pivot vanished up to round-off: some free unknowns are determined only by noise.
+    #[error(
+        "The equations barely determine some free unknowns (the system is numerically singular); \
+         fix at least one vertex in each connected part."
+    )]
+    Singular,
+    /// An input has the wrong length.
+    #[error("The {what} has length {found}, but {expected} was expected.")]
+    DimensionMismatch {
+        /// Which input.
+        what: &'static str,
+        /// The length the system needs.
+        expected: usize,
+        /// The length given.
+        found: usize,
+    },
+    /// [`Prefactored::refactor_values`] got a matrix with another shape or pattern.
+    #[error("The matrix has a different sparsity pattern from the one that was factored.")]
+    PatternMismatch,
+    /// The matrix holds NaN or an infinity.
+    #[error("The matrix contains a value that is not a finite number.")]
+    NonFiniteValue,
+    /// faer could not factor for another reason (out of memory, index overflow).
+    #[error("The sparse factorization failed: {0}.")]
+    Factorization(String),
+}
+
+impl SolveError {
+    /// Whether the equations leave some free unknown undetermined (exactly or numerically):
+    /// [`SolveError::NotPositiveDefinite`] or [`SolveError::Singular`]. The usual fix is to fix
+    /// a vertex or add a soft constraint in each connected part.
+    pub fn is_underdetermined(&self) -> bool {
+        matches!(self, SolveError::NotPositiveDefinite | SolveError::Singular)
+    }
+}
+
+/// One-off: minimises `||A x - b||²` with `x[j] = fixed_values[j]` wherever `fixed[j]`.
+///
+/// `a` is `m x n`, `b` has length `m`, `fixed` and `fixed_values` length `n` (free entries of
+/// `fixed_values` are ignored). Returns all `n` unknowns. For repeated solves with the same
+/// matrix, keep a [`Prefactored`]. Errors are those of [`Prefactored::new`] and
+/// [`Prefactored::solve`].
+pub fn solve_least_squares(
+    a: &SparseMatrix,
+    b: &[DVec3],
+    fixed: &[bool],
+    fixed_values: &[DVec3],
+) -> Result<Vec<DVec3>, SolveError> {
+    let mut solver = Prefactored::new(a, fixed)?;
+    let mut x = vec![DVec3::ZERO; a.ncols()];
+    solver.solve(b, fixed_values, &mut x)?;
+    Ok(x)
+}
+
+#[cfg(test)]
+pub(crate) mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// Solves a small dense system by Gaussian elimination with partial pivoting.
+    pub(crate) fn dense_solve(mut m: Vec<Vec<f64>>, mut rhs: Vec<f64>) -> Vec<f64> {
+        let n = rhs.len();
+        for k in 0..n {
+            let pivot = (k..n).max_by(|&i, &j| m[i][k].abs().total_cmp(&m[j][k].abs())).unwrap();
+            m.swap(k, pivot);
+            rhs.swap(k, pivot);
+            for i in k + 1..n {
+                let factor = m[i][k] / m[k][k];
+                for j in k..n {
+                    m[i][j] -= factor * m[k][j];
+                }
+                rhs[i] -= factor * rhs[k];
+            }
+        }
+        let mut x = vec![0.0; n];
+        for k in (0..n).rev() {
+            x[k] = (rhs[k] - (k + 1..n).map(|j| m[k][j] * x[j]).sum::<f64>()) / m[k][k];
+        }
+        x
+    }
+
+    /// The constrained least-squares minimiser of one coordinate, by dense normal equations.
+    pub(crate) fn dense_least_squares(a: &[Vec<f64>], b: &[f64], fixed: &[bool], fixed_values: &[f64]) -> Vec<f64> {
+        let free: Vec<usize> = (0..fixed.len()).filter(|&j| !fixed[j]).collect();
+        let residual: Vec<f64> = a
+            .iter()
+            .zip(b)
+            .map(|(row, &b)| b - (0..fixed.len()).filter(|&j| fixed[j]).map(|j| row[j] * fixed_values[j]).sum::<f64>())
+            .collect();
+        let normal = free.iter().map(|&p| free.iter().map(|&q| a.iter().map(|r| r[p] * r[q]).sum()).collect()).collect();
+        let projected = free.iter().map(|&p| a.iter().zip(&residual).map(|(r, s)| r[p] * s).sum()).collect();
+        let x_free = dense_solve(normal, projected);
+        let mut x = fixed_values.to_vec();
+        for (&j, value) in free.iter().zip(x_free) {
+            x[j] = value;
+        }
+        x
+    }
+
+    /// A random sparse `m x n` system: a strong diagonal block keeps it well posed, plus
+    /// scattered off-diagonal entries.
+    pub(crate) fn random_system(m: usize, n: usize, entries: &[(usize, usize, f64)]) -> SparseMatrix {
+        let mut t = Triplets::new(m, n);
+        for j in 0..n.min(m) {
+            t.push(j, j, 4.0);
+        }
+        for &(r, c, v) in entries {
+            t.push(r % m, c % n, v);
+        }
+        t.build()
+    }
+
+    proptest! {
+        #[test]
+        fn least_squares_matches_dense_elimination(
+            extra_rows in 0usize..6,
+            entries in prop::collection::vec((0usize..40, 0usize..40, -1.0..1.0f64), 0..60),
+            fixed_mask in prop::collection::vec(prop::bool::weighted(0.3), 12),
+            values in prop::collection::vec(-5.0..5.0f64, 3 * 18 + 3 * 12),
+        ) {
+            let n = 12;
+            let m = n + extra_rows;
+            let a = random_system(m, n, &entries);
+            let b: Vec<DVec3> = (0..m).map(|i| DVec3::new(values[3 * i], values[3 * i + 1], values[3 * i + 2])).collect();
+            let fixed_values: Vec<DVec3> = (0..n).map(|j| DVec3::from_slice(&values[54 + 3 * j..])).collect();
+            let x = solve_least_squares(&a, &b, &fixed_mask, &fixed_values).unwrap();
+            for axis in 0..3 {
+                let b_axis: Vec<f64> = b.iter().map(|v| v[axis]).collect();
+                let fixed_axis: Vec<f64> = fixed_values.iter().map(|v| v[axis]).collect();
+                let expected = dense_least_squares(&a.to_dense(), &b_axis, &fixed_mask, &fixed_axis);
+                for j in 0..n {
+                    prop_assert!((x[j][axis] - expected[j]).abs() < 1e-9, "x[{j}][{axis}] = {} vs {}", x[j][axis], expected[j]);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn wrong_lengths_are_reported() {
+        let a = SparseMatrix::identity(3);
+        let err = solve_least_squares(&a, &[DVec3::ZERO; 2], &[false; 3], &[DVec3::ZERO; 3]).unwrap_err();
+        assert_eq!(err, SolveError::DimensionMismatch { what: "rhs", expected: 3, found: 2 });
+        assert_eq!(err.to_string(), "The rhs has length 2, but 3 was expected.");
+        let err = Prefactored::new(&a, &[false; 4]).unwrap_err();
+        assert_eq!(err, SolveError::DimensionMismatch { what: "fixed", expected: 3, found: 4 });
+    }
+}

@@ -1,0 +1,246 @@
+//! `cargo xtask bench`: criterion benches of `sketchmesh-core`, then page timings in headless
+//! Chromium (`tests/e2e/page-bench.mjs`), summarised as markdown in `target/bench-summary.md`.
+
+use std::fmt::Write as _;
+use std::fs;
+use std::path::Path;
+use std::process::Command;
+use std::time::SystemTime;
+
+use anyhow::{Context as _, bail};
+use serde_json::Value;
+
+use crate::build::{self, WebProfile};
+use crate::serve::StaticServer;
+use crate::setup::{self, Needs};
+use crate::{Steps, Workspace, cargo, format_size, run};
+
+/// Runs the benches and writes the summary.
+pub fn bench_command(workspace: &Workspace) -> anyhow::Result<()> {
+    let mut steps = Steps::default();
+    steps.step("setup", || setup::setup(workspace, Needs::ALL))?;
+    let started = SystemTime::now();
+    steps.step("cargo bench", || {
+        run(
+            "cargo bench",
+            cargo()
+                .current_dir(&workspace.root)
+                .args(["bench", "-p", "sketchmesh-core"]),
+        )
+    })?;
+    let mut summary = String::from("# Sketchmesh benchmarks\n\n## sketchmesh-core (criterion)\n\n");
+    summary += &criterion_table(&workspace.target_dir.join("criterion"), started)?;
+
+    let web = steps.step("build-web --release", || {
+        build::build_web(workspace, WebProfile::Release)
+    })?;
+    let server = steps.step("start server", || StaticServer::start(&workspace.dist(), 0))?;
+    let page = steps.step("page bench", || {
+        let out = Command::new("node")
+            .current_dir(&workspace.root)
+            .arg("tests/e2e/page-bench.mjs")
+            .env("SKETCHMESH_URL", server.url())
+            .env("SKETCHMESH_GPU", "webgl2")
+            .output()
+            .context("starting node tests/e2e/page-bench.mjs")?;
+        eprint!("{}", String::from_utf8_lossy(&out.stderr));
+        if !out.status.success() {
+            bail!("page-bench.mjs failed ({})", out.status);
+        }
+        let text = String::from_utf8_lossy(&out.stdout);
+        // The report is the last line; earlier lines are progress.
+        let last = text.lines().rev().find(|line| !line.trim().is_empty());
+        serde_json::from_str::<Value>(last.unwrap_or_default())
+            .with_context(|| format!("page-bench.mjs printed no JSON report:\n{text}"))
+    })?;
+    drop(server);
+    summary += "\n## Page (release wasm, no wasm-opt; headless Chromium)\n\n";
+    summary += &page_table(&page, web.wasm_gzip_size);
+
+    let file = workspace.target_dir.join("bench-summary.md");
+    fs::write(&file, &summary).with_context(|| format!("writing {}", file.display()))?;
+    println!("\n{summary}");
+    println!("xtask: written to {}", file.display());
+    steps.print_summary();
+    Ok(())
+}
+
+/// One markdown row per criterion benchmark measured since `since`.
+fn criterion_table(criterion: &Path, since: SystemTime) -> anyhow::Result<String> {
+    let mut rows = Vec::new();
+    let mut dirs = vec![criterion.to_path_buf()];
+    while let Some(dir) = dirs.pop() {
+        let Ok(entries) = fs::read_dir(&dir) else {
+            continue;
+        };
+        for entry in entries.flatten() {
+            let path = entry.path();
+            if !path.is_dir() {
+                continue;
+            }
+            if path.file_name().is_some_and(|name| name == "new") {
+                if let Some(row) = criterion_row(&path, since)? {
+                    rows.push(row);
+                }
+            } else {
+                dirs.push(path);
+            }
+        }
+    }
+    if rows.is_empty() {
+        bail!("no criterion results under {}", criterion.display());
+    }
+    rows.sort();
+    let mut table = String::from(
+        "| benchmark | mean | 95% interval of the mean | median |\n| --- | ---: | ---: | ---: |\n",
+    );
+    for row in rows {
+        table += &row;
+    }
+    Ok(table)
+}
+
+fn criterion_row(new: &Path, since: SystemTime) -> anyhow::Result<Option<String>> {
+    let estimates_file = new.join("estimates.json");
+    let fresh = estimates_file
+        .metadata()
+        .and_then(|meta| meta.modified())
+        .is_ok_and(|modified| modified >= since);
+    if !fresh {
+        return Ok(None);
+    }
+    let estimates = read_json(&estimates_file)?;
+    let id = read_json(&new.join("benchmark.json"))
+        .ok()
+        .and_then(|bench| bench["full_id"].as_str().map(str::to_owned))
+        .unwrap_or_else(|| new.parent().unwrap_or(new).display().to_string());
+    let ns = |pointer: &str| estimates.pointer(pointer).and_then(Value::as_f64);
+    let (Some(mean), Some(low), Some(high), Some(median)) = (
+        ns("/mean/point_estimate"),
+        ns("/mean/confidence_interval/lower_bound"),
+        ns("/mean/confidence_interval/upper_bound"),
+        ns("/median/point_estimate"),
+    ) else {
+        bail!("unexpected layout of {}", estimates_file.display());
+    };
+    Ok(Some(format!(
+        "| {id} | {} | {} .. {} | {} |\n",
+        format_ns(mean),
+        format_ns(low),
+        format_ns(high),
+        format_ns(median)
+    )))
+}
+
+fn read_json(file: &Path) -> anyhow::Result<Value> {
+    let text = fs::read_to_string(file).with_context(|| format!("reading {}", file.display()))?;
+    serde_json::from_str(&text).with_context(|| format!("parsing {}", file.display()))
+}
+
+fn format_ns(ns: f64) -> String {
+    if ns < 1e3 {
+        format!("{ns:.1} ns")
+    } else if ns < 1e6 {
+        format!("{:.2} µs", ns / 1e3)
+    } else if ns < 1e9 {
+        format!("{:.2} ms", ns / 1e6)
+    } else {
+        format!("{:.3} s", ns / 1e9)
+    }
+}
+
+/// The page-bench JSON report as a markdown table.
+fn page_table(page: &Value, wasm_gzip_size: u64) -> String {
+    let ms = |pointer: &str| {
+        page.pointer(pointer)
+            .and_then(Value::as_f64)
+            .map_or_else(|| "n/a".to_owned(), |ms| format!("{ms:.1} ms"))
+    };
+    let text = |pointer: &str| {
+        page.pointer(pointer).map_or_else(
+            || "n/a".to_owned(),
+            |value| value.to_string().replace('"', ""),
+        )
+    };
+    let mut table = String::from("| measure | value |\n| --- | ---: |\n");
+    let rows = [
+        ("wasm, gzip -9", format_size(wasm_gzip_size)),
+        ("GPU backend", text("/backend")),
+        ("time to interactive", ms("/time_to_interactive_ms")),
+        ("frames while stroking", text("/stroke/frames")),
+        ("frame time, mean", ms("/stroke/frame_ms/mean")),
+        ("frame time, median", ms("/stroke/frame_ms/p50")),
+        ("frame time, 95th percentile", ms("/stroke/frame_ms/p95")),
+        ("frame time, max", ms("/stroke/frame_ms/max")),
+    ];
+    for (name, value) in rows {
+        // Writing to a String cannot fail.
+        let _ = writeln!(table, "| {name} | {value} |");
+    }
+    table
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn temp_path(name: &str) -> std::path::PathBuf {
+        std::env::temp_dir().join(format!("xtask-bench-{}-{name}", std::process::id()))
+    }
+
+    #[test]
+    fn nanoseconds_pick_a_unit() {
+        assert_eq!(format_ns(512.0), "512.0 ns");
+        assert_eq!(format_ns(1_500.0), "1.50 µs");
+        assert_eq!(format_ns(2_250_000.0), "2.25 ms");
+        assert_eq!(format_ns(3.5e9), "3.500 s");
+    }
+
+    #[test]
+    fn criterion_results_become_rows() {
+        let root = temp_path("criterion");
+        let new = root.join("solve").join("factor").join("1000").join("new");
+        fs::create_dir_all(&new).unwrap();
+        let before = SystemTime::now() - std::time::Duration::from_secs(5);
+        fs::write(
+            new.join("estimates.json"),
+            r#"{"mean":{"confidence_interval":{"confidence_level":0.95,"lower_bound":1900.0,"upper_bound":2100.0},"point_estimate":2000.0,"standard_error":50.0},
+                "median":{"confidence_interval":{"confidence_level":0.95,"lower_bound":1.0,"upper_bound":2.0},"point_estimate":1950.0,"standard_error":1.0}}"#,
+        )
+        .unwrap();
+        fs::write(
+            new.join("benchmark.json"),
+            r#"{"group_id":"solve","function_id":"factor","value_str":"1000","full_id":"solve/factor/1000"}"#,
+        )
+        .unwrap();
+        let table = criterion_table(&root, before).unwrap();
+        assert!(
+            table.contains("| solve/factor/1000 | 2.00 µs | 1.90 µs .. 2.10 µs | 1.95 µs |"),
+            "{table}"
+        );
+        // Results older than the run are left out.
+        let later = SystemTime::now() + std::time::Duration::from_secs(60);
+        assert!(criterion_table(&root, later).is_err());
+        fs::remove_dir_all(&root).unwrap();
+    }
+
+    #[test]
+    fn page_report_becomes_a_table() {
+        let page: Value = serde_json::from_str(
+            r#"{"backend":"WebGL2","time_to_interactive_ms":1834.26,
+                "stroke":{"frames":60,"frame_ms":{"mean":16.7,"p50":16.6,"p95":18.0,"max":33.4}}}"#,
+        )
+        .unwrap();
+        let table = page_table(&page, 2_000_000);
+        assert!(table.contains("| GPU backend | WebGL2 |"), "{table}");
+        assert!(
+            table.contains("| time to interactive | 1834.3 ms |"),
+            "{table}"
+        );
+        assert!(
+            table.contains("| frame time, 95th percentile | 18.0 ms |"),
+            "{table}"
+        );
+        assert!(table.contains("| frames while stroking | 60 |"), "{table}");
+    }
+}

@@ -1,0 +1,247 @@
+//! `cargo xtask build-web`: wasm build of `sketchmesh-app`, JS bindings, static files, wasm-opt
+//! and precompressed `.gz` files, all into `dist/`.
+//!
+//! The bindings come from `wasm-bindgen-cli-support` linked into this binary, so their version is
+//! the one pinned in `Cargo.toml` (it must equal the `wasm-bindgen` in `Cargo.lock`). wasm-opt is
+//! the npm `binaryen` one: Debian's wasm-opt 108 writes modules that fail at start-up. wasm-opt
+//! takes minutes, so its output is cached in `target/web/wasm-opt/`, keyed by a hash of its input.
+
+use std::fs;
+use std::io::Write as _;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use anyhow::{Context as _, bail};
+use flate2::Compression;
+use flate2::write::GzEncoder;
+
+use crate::setup::{self, Needs};
+use crate::{Workspace, cargo, format_size, run};
+
+/// The wasm-bindgen `out_name`: `dist/sketchmesh_app.js` and `dist/sketchmesh_app_bg.wasm`.
+pub const OUT_NAME: &str = "sketchmesh_app";
+const PACKAGE: &str = "sketchmesh-app";
+const WASM_TARGET: &str = "wasm32-unknown-unknown";
+const WASM_OPT_ARGS: &[&str] = &["-Oz"];
+
+/// How to build the page.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum WebProfile {
+    /// `release` profile, no wasm-opt: quick, for tests.
+    Release,
+    /// `wasm-release` profile (opt-level z, fat LTO) plus `wasm-opt -Oz`: smallest, for serving.
+    Ship,
+}
+
+impl WebProfile {
+    fn cargo_profile(self) -> &'static str {
+        match self {
+            Self::Release => "release",
+            Self::Ship => "wasm-release",
+        }
+    }
+}
+
+/// What a web build produced.
+pub struct WebBuild {
+    /// `dist/sketchmesh_app_bg.wasm`.
+    pub wasm: PathBuf,
+    /// Size of the wasm after gzip -9, as served to browsers that accept gzip.
+    pub wasm_gzip_size: u64,
+}
+
+/// Builds the page into `dist/` (emptied first) and prints the sizes.
+pub fn build_web(workspace: &Workspace, profile: WebProfile) -> anyhow::Result<WebBuild> {
+    setup::setup(
+        workspace,
+        Needs {
+            wasm_target: true,
+            chromium: false,
+            npm: profile == WebProfile::Ship,
+        },
+    )?;
+    let index_html = workspace.root.join("index.html");
+    if !index_html.is_file() {
+        bail!(
+            "{} is missing: the page has no entry point",
+            index_html.display()
+        );
+    }
+
+    let cargo_profile = profile.cargo_profile();
+    run(
+        "building the wasm",
+        cargo()
+            .current_dir(&workspace.root)
+            .args(["build", "-p", PACKAGE, "--lib", "--target", WASM_TARGET])
+            .args(["--profile", cargo_profile]),
+    )?;
+    let cargo_wasm = workspace
+        .target_dir
+        .join(WASM_TARGET)
+        .join(cargo_profile)
+        .join(format!("{OUT_NAME}.wasm"));
+
+    let web_dir = workspace.target_dir.join("web");
+    let bindgen_dir = web_dir.join(cargo_profile);
+    recreate_dir(&bindgen_dir)?;
+    wasm_bindgen_cli_support::Bindgen::new()
+        .input_path(&cargo_wasm)
+        .web(true)?
+        .typescript(false)
+        // The library's default is `true`, which leaves `init()` without a default wasm URL.
+        .omit_default_module_path(false)
+        .out_name(OUT_NAME)
+        .generate(&bindgen_dir)
+        .with_context(|| format!("wasm-bindgen on {}", cargo_wasm.display()))?;
+    let bindgen_wasm = bindgen_dir.join(format!("{OUT_NAME}_bg.wasm"));
+
+    let dist = workspace.dist();
+    recreate_dir(&dist)?;
+    copy_dir(&bindgen_dir, &dist)?;
+    let wasm = dist.join(format!("{OUT_NAME}_bg.wasm"));
+    if profile == WebProfile::Ship {
+        let optimized = wasm_opt_cached(workspace, &bindgen_wasm, &web_dir.join("wasm-opt"))?;
+        fs::copy(&optimized, &wasm).context("copying the optimized wasm into dist/")?;
+    }
+    fs::copy(&index_html, dist.join("index.html")).context("copying index.html")?;
+    let static_dir = workspace.root.join("web");
+    if static_dir.is_dir() {
+        copy_dir(&static_dir, &dist)?;
+    }
+
+    let js = dist.join(format!("{OUT_NAME}.js"));
+    let wasm_gzip_size = gzip_next_to(&wasm)?;
+    let js_gzip_size = gzip_next_to(&js)?;
+    println!("xtask: web build ({cargo_profile}) in {}", dist.display());
+    println!("  cargo output  {}", format_size(file_size(&cargo_wasm)?));
+    println!("  wasm-bindgen  {}", format_size(file_size(&bindgen_wasm)?));
+    if profile == WebProfile::Ship {
+        println!("  wasm-opt -Oz  {}", format_size(file_size(&wasm)?));
+    }
+    println!("  wasm gzip -9  {}", format_size(wasm_gzip_size));
+    println!("  js            {}", format_size(file_size(&js)?));
+    println!("  js gzip -9    {}", format_size(js_gzip_size));
+    Ok(WebBuild {
+        wasm,
+        wasm_gzip_size,
+    })
+}
+
+/// Runs npm binaryen's `wasm-opt` on `input` unless `cache` already holds the output for the
+/// same input bytes; returns the optimized file.
+fn wasm_opt_cached(workspace: &Workspace, input: &Path, cache: &Path) -> anyhow::Result<PathBuf> {
+    let bytes = fs::read(input).with_context(|| format!("reading {}", input.display()))?;
+    let key = format!("{:016x} {}", fnv1a64(&bytes), WASM_OPT_ARGS.join(" "));
+    let key_file = cache.join("input-hash");
+    let output = cache.join(format!("{OUT_NAME}_bg.wasm"));
+    if output.is_file() && fs::read_to_string(&key_file).is_ok_and(|old| old == key) {
+        println!("xtask: wasm-opt skipped: input unchanged ({key})");
+        return Ok(output);
+    }
+    let wasm_opt = workspace.node_bin("wasm-opt");
+    if !wasm_opt.is_file() {
+        bail!(
+            "{} is missing (npm binaryen); run `cargo xtask setup`",
+            wasm_opt.display()
+        );
+    }
+    recreate_dir(cache)?;
+    println!(
+        "xtask: wasm-opt {} (takes a few minutes)",
+        WASM_OPT_ARGS.join(" ")
+    );
+    run(
+        "wasm-opt",
+        Command::new(&wasm_opt)
+            .args(WASM_OPT_ARGS)
+            .arg(input)
+            .arg("-o")
+            .arg(&output),
+    )?;
+    // Written last, so an interrupted wasm-opt is redone next time.
+    fs::write(&key_file, key).context("writing the wasm-opt cache key")?;
+    Ok(output)
+}
+
+/// 64-bit FNV-1a: a cache key, not a defence against collisions made on purpose.
+fn fnv1a64(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |hash, &byte| {
+        (hash ^ u64::from(byte)).wrapping_mul(0x0000_0100_0000_01b3)
+    })
+}
+
+/// Writes `<file>.gz` (gzip level 9) and returns its size.
+fn gzip_next_to(file: &Path) -> anyhow::Result<u64> {
+    let bytes = fs::read(file).with_context(|| format!("reading {}", file.display()))?;
+    let mut encoder = GzEncoder::new(Vec::new(), Compression::best());
+    encoder.write_all(&bytes)?;
+    let compressed = encoder.finish()?;
+    let mut gz_name = file.as_os_str().to_owned();
+    gz_name.push(".gz");
+    fs::write(&gz_name, &compressed)
+        .with_context(|| format!("writing {}", Path::new(&gz_name).display()))?;
+    Ok(compressed.len() as u64)
+}
+
+fn file_size(file: &Path) -> anyhow::Result<u64> {
+    Ok(fs::metadata(file)
+        .with_context(|| format!("reading the size of {}", file.display()))?
+        .len())
+}
+
+fn recreate_dir(dir: &Path) -> anyhow::Result<()> {
+    if dir.exists() {
+        fs::remove_dir_all(dir).with_context(|| format!("removing {}", dir.display()))?;
+    }
+    fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))
+}
+
+/// Copies the contents of `from` into `to`, recursively.
+fn copy_dir(from: &Path, to: &Path) -> anyhow::Result<()> {
+    fs::create_dir_all(to).with_context(|| format!("creating {}", to.display()))?;
+    for entry in fs::read_dir(from).with_context(|| format!("listing {}", from.display()))? {
+        let entry = entry?;
+        let target = to.join(entry.file_name());
+        if entry.file_type()?.is_dir() {
+            copy_dir(&entry.path(), &target)?;
+        } else {
+            fs::copy(entry.path(), &target)
+                .with_context(|| format!("copying {}", entry.path().display()))?;
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fnv1a64_matches_reference_values() {
+        // Published FNV-1a 64 test vectors.
+        assert_eq!(fnv1a64(b""), 0xcbf2_9ce4_8422_2325);
+        assert_eq!(fnv1a64(b"a"), 0xaf63_dc4c_8601_ec8c);
+        assert_eq!(fnv1a64(b"foobar"), 0x8594_4171_f739_67e8);
+    }
+
+    #[test]
+    fn gzip_round_trips() {
+        use std::io::Read as _;
+        let dir = std::env::temp_dir().join(format!("xtask-gzip-{}", std::process::id()));
+        recreate_dir(&dir).unwrap();
+        let file = dir.join("a.js");
+        let text = "export function start() {}\n".repeat(1000);
+        fs::write(&file, &text).unwrap();
+        let size = gzip_next_to(&file).unwrap();
+        let gz = fs::read(dir.join("a.js.gz")).unwrap();
+        assert_eq!(size, gz.len() as u64);
+        assert!(size < text.len() as u64 / 10);
+        let mut unpacked = String::new();
+        flate2::read::GzDecoder::new(&gz[..])
+            .read_to_string(&mut unpacked)
+            .unwrap();
+        assert_eq!(unpacked, text);
+        fs::remove_dir_all(&dir).unwrap();
+    }
+}

@@ -1,0 +1,152 @@
+//! `cargo xtask test`: every check CI runs (`.ci/run`), in order, stopping at the first failure.
+//!
+//! fmt, clippy, native tests, a `release` wasm build (no wasm-opt) with a size budget, the browser
+//! suite (`tests/e2e/run.mjs`) once on WebGL2 and once on WebGPU against an in-process server, and
+//! the Khronos glTF validator on every exported `.glb` (browser exports and a CLI replay).
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use anyhow::{Context as _, bail};
+
+use crate::build::{self, WebProfile};
+use crate::serve::StaticServer;
+use crate::setup::{self, Needs};
+use crate::{Steps, Workspace, cargo, format_size, run};
+
+/// Budget for the gzip-compressed `release` wasm (the shipped, wasm-opt'd one is smaller).
+const WASM_GZIP_BUDGET: u64 = 3_500_000;
+/// The session the CLI replays into `tests/out/replay.glb` for the validator.
+const REPLAY_FIXTURE: &str = "tests/fixtures/two-strokes-undo-redo.json";
+/// The GPU paths of the browser suite: `SKETCHMESH_GPU` values understood by `tests/e2e/lib.mjs`.
+pub const GPU_PASSES: [&str; 2] = ["webgl2", "webgpu"];
+
+/// Runs everything; prints a summary with the time of each step.
+pub fn test_command(workspace: &Workspace) -> anyhow::Result<()> {
+    let root = &workspace.root;
+    let mut steps = Steps::default();
+    steps.step("setup", || setup::setup(workspace, Needs::ALL))?;
+    steps.step("cargo fmt --check", || {
+        run(
+            "cargo fmt (run `cargo fmt --all` to fix)",
+            cargo().current_dir(root).args(["fmt", "--all", "--check"]),
+        )
+    })?;
+    steps.step("cargo clippy", || {
+        run(
+            "cargo clippy",
+            cargo().current_dir(root).args([
+                "clippy",
+                "--workspace",
+                "--all-targets",
+                "--",
+                "-D",
+                "warnings",
+            ]),
+        )
+    })?;
+    steps.step("cargo test", || {
+        run(
+            "cargo test",
+            cargo().current_dir(root).args(["test", "--workspace"]),
+        )
+    })?;
+    let web = steps.step("build-web --release", || {
+        build::build_web(workspace, WebProfile::Release)
+    })?;
+    steps.step("wasm size budget", || {
+        println!(
+            "xtask: {} is {} gzipped (budget {})",
+            web.wasm.display(),
+            format_size(web.wasm_gzip_size),
+            format_size(WASM_GZIP_BUDGET)
+        );
+        if web.wasm_gzip_size > WASM_GZIP_BUDGET {
+            bail!(
+                "the wasm is {} gzipped, over the {} budget",
+                format_size(web.wasm_gzip_size),
+                format_size(WASM_GZIP_BUDGET)
+            );
+        }
+        Ok(())
+    })?;
+
+    let out = workspace.tests().join("out");
+    if out.exists() {
+        fs::remove_dir_all(&out).with_context(|| format!("emptying {}", out.display()))?;
+    }
+    fs::create_dir_all(&out).with_context(|| format!("creating {}", out.display()))?;
+    let server = steps.step("start server", || StaticServer::start(&workspace.dist(), 0))?;
+    println!("xtask: serving dist/ at {}", server.url());
+    for gpu in GPU_PASSES {
+        steps.step(&format!("browser suite ({gpu})"), || {
+            run(
+                &format!("the browser suite on {gpu} (screenshots in tests/out/)"),
+                Command::new("node")
+                    .current_dir(root)
+                    .arg("tests/e2e/run.mjs")
+                    .env("SKETCHMESH_URL", server.url())
+                    .env("SKETCHMESH_GPU", gpu),
+            )
+        })?;
+    }
+    drop(server);
+
+    let replay_glb = out.join("replay.glb");
+    steps.step("cli replay", || {
+        run(
+            "replaying the session fixture with the CLI",
+            cargo()
+                .current_dir(root)
+                .args([
+                    "run",
+                    "-p",
+                    "sketchmesh-cli",
+                    "--",
+                    "replay",
+                    REPLAY_FIXTURE,
+                    "-o",
+                ])
+                .arg(&replay_glb),
+        )
+    })?;
+    steps.step("gltf-validator", || {
+        let mut files: Vec<PathBuf> = GPU_PASSES
+            .iter()
+            .map(|gpu| out.join(format!("{gpu}-export.glb")))
+            .collect();
+        files.push(replay_glb.clone());
+        // Also any other .glb the suite wrote.
+        for entry in fs::read_dir(&out)? {
+            let path = entry?.path();
+            if path.extension().is_some_and(|ext| ext == "glb") && !files.contains(&path) {
+                files.push(path);
+            }
+        }
+        validate_gltf(workspace, &files)
+    })?;
+
+    steps.print_summary();
+    println!("xtask: all checks passed");
+    Ok(())
+}
+
+/// Runs the Khronos glTF validator on `files`; any error or warning (or a missing file) fails.
+pub fn validate_gltf(workspace: &Workspace, files: &[PathBuf]) -> anyhow::Result<()> {
+    if let Some(missing) = files.iter().find(|file| !file.is_file()) {
+        bail!("{} was not written", missing.display());
+    }
+    let script = workspace.tests().join("validate-gltf.mjs");
+    run(
+        "gltf-validator",
+        Command::new("node")
+            .current_dir(&workspace.root)
+            .arg(&script)
+            .args(files.iter().map(|file| relative_to(file, &workspace.root))),
+    )
+}
+
+fn relative_to(path: &Path, base: &Path) -> PathBuf {
+    path.strip_prefix(base).unwrap_or(path).to_path_buf()
+}

@@ -1,0 +1,243 @@
+// Shared helpers for the browser suite and the page benchmark: Chromium launch flags per GPU path,
+// opening the app, synthetic pen and touch input over CDP, and screenshot pixel checks.
+//
+// Flags: /work/shared/toolchain.md §5. With the base flags Chromium has WebGL2 (SwiftShader) and no
+// WebGPU adapter, so eframe falls back to WebGL2. The WebGPU set gives a SwiftShader WebGPU adapter
+// whose canvas shows up in screenshots; all five flags are needed, and WebGL2 is gone with them.
+
+import { mkdirSync } from 'node:fs';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+import { chromium } from 'playwright-core';
+import pngjs from 'pngjs';
+
+export const CHROMIUM = '/usr/bin/chromium';
+export const BASE_FLAGS = [
+  '--no-sandbox',
+  '--disable-quic',
+  '--no-first-run',
+  '--disable-background-networking',
+  '--disable-component-update',
+  '--disable-sync',
+];
+export const GPU_FLAGS = {
+  webgl2: [],
+  webgpu: [
+    '--enable-unsafe-webgpu',
+    '--enable-features=Vulkan',
+    '--use-angle=vulkan',
+    '--use-vulkan=swiftshader',
+    '--disable-vulkan-fallback-to-gl-for-testing',
+  ],
+};
+// What `window.sketchmesh.backend()` must say on each path.
+export const EXPECTED_BACKEND = { webgl2: /^WebGL/i, webgpu: /^WebGPU/i };
+
+export const OUT_DIR = join(dirname(fileURLToPath(import.meta.url)), '..', 'out');
+
+/** The run's settings from the environment: SKETCHMESH_URL and SKETCHMESH_GPU (webgl2|webgpu). */
+export function settings() {
+  const url = process.env.SKETCHMESH_URL ?? 'http://127.0.0.1:8080/';
+  const gpu = process.env.SKETCHMESH_GPU ?? 'webgl2';
+  if (!(gpu in GPU_FLAGS)) {
+    throw new Error(`SKETCHMESH_GPU must be one of ${Object.keys(GPU_FLAGS).join(', ')}, got ${gpu}`);
+  }
+  mkdirSync(OUT_DIR, { recursive: true });
+  return { url, gpu };
+}
+
+export async function launch(gpu) {
+  return chromium.launch({
+    executablePath: CHROMIUM,
+    headless: true,
+    args: [...BASE_FLAGS, ...GPU_FLAGS[gpu]],
+  });
+}
+
+/** Console messages that are expected and harmless. */
+function isHarmless(gpu, text, url) {
+  // eframe asks for WebGPU first and logs this before falling back to WebGL2.
+  if (gpu === 'webgl2' && text.includes('No available adapters.')) return true;
+  if (/favicon/.test(url) && /404|Failed to load resource/.test(text)) return true;
+  return false;
+}
+
+/**
+ * Opens the app in a new context and waits until `window.sketchmesh` exists and a frame has been
+ * drawn. Returns `{ context, page, cdp, errors }`; `errors` collects console errors and uncaught
+ * exceptions (harmless ones filtered out) for the whole life of the page.
+ */
+export async function openApp(browser, url, gpu, { width = 1280, height = 720, deviceScaleFactor = 1 } = {}) {
+  const context = await browser.newContext({
+    viewport: { width, height },
+    deviceScaleFactor,
+    hasTouch: true,
+  });
+  const page = await context.newPage();
+  const errors = [];
+  page.on('console', (msg) => {
+    if (msg.type() !== 'error') return;
+    const where = msg.location()?.url ?? '';
+    if (!isHarmless(gpu, msg.text(), where)) errors.push(`console.error: ${msg.text()} (${where})`);
+  });
+  page.on('pageerror', (err) => errors.push(`uncaught: ${err.message}`));
+  page.on('crash', () => errors.push('the page crashed'));
+  const cdp = await context.newCDPSession(page);
+  const started = Date.now();
+  await page.goto(url, { waitUntil: 'load' });
+  try {
+    await page.waitForFunction(() => typeof window.sketchmesh?.stats === 'function', null, { timeout: 15_000 });
+  } catch {
+    const loading = await page.locator('#loading').textContent().catch(() => null);
+    throw new Error(
+      `window.sketchmesh did not appear within 15 s; page says ${JSON.stringify(loading)}; ` +
+        `errors: ${JSON.stringify(errors)}`,
+    );
+  }
+  await frames(page, 2);
+  return { context, page, cdp, errors, startupMs: Date.now() - started };
+}
+
+/** Waits for `n` animation frames in the page, then a short pause for the compositor. */
+export async function frames(page, n = 2, settleMs = 50) {
+  await page.evaluate(
+    (count) =>
+      new Promise((resolve) => {
+        const step = (left) => (left === 0 ? resolve() : requestAnimationFrame(() => step(left - 1)));
+        step(count);
+      }),
+    n,
+  );
+  if (settleMs > 0) await page.waitForTimeout(settleMs);
+}
+
+export const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
+
+/** Calls a `window.sketchmesh` method in the page. */
+export function api(page, method, ...args) {
+  return page.evaluate(([m, a]) => window.sketchmesh[m](...a), [method, args]);
+}
+
+export async function camera(page) {
+  return api(page, 'camera');
+}
+
+export function cameraDistance(cam) {
+  const d = cam.eye.map((e, i) => e - cam.target[i]);
+  return Math.hypot(...d);
+}
+
+/**
+ * A pen stroke through `points` ([{x, y, force}] in CSS px) via CDP, one event per `gapMs` so that
+ * the moves land in different frames (back-to-back events collapse into one egui frame).
+ */
+export async function penStroke(cdp, points, gapMs = 20) {
+  const pen = { pointerType: 'pen', button: 'left', tiltX: 15, tiltY: -10 };
+  const [first, ...rest] = points;
+  await cdp.send('Input.dispatchMouseEvent', {
+    type: 'mousePressed', x: first.x, y: first.y, buttons: 1, clickCount: 1, force: first.force, ...pen,
+  });
+  for (const p of rest) {
+    await sleep(gapMs);
+    await cdp.send('Input.dispatchMouseEvent', {
+      type: 'mouseMoved', x: p.x, y: p.y, buttons: 1, force: p.force, ...pen,
+    });
+  }
+  await sleep(gapMs);
+  const last = points[points.length - 1];
+  await cdp.send('Input.dispatchMouseEvent', {
+    type: 'mouseReleased', x: last.x, y: last.y, buttons: 0, clickCount: 1, force: 0, ...pen,
+  });
+}
+
+/**
+ * A touch gesture via CDP: `tracks` is one array of {x, y} per finger, all the same length; the
+ * fingers go down at their first points, move together step by step and lift at the end.
+ */
+export async function touchGesture(cdp, tracks, gapMs = 30) {
+  const at = (step) =>
+    tracks.map((track, id) => ({ x: track[step].x, y: track[step].y, id, radiusX: 8, radiusY: 8, force: 0.5 }));
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: at(0) });
+  for (let step = 1; step < tracks[0].length; step++) {
+    await sleep(gapMs);
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: at(step) });
+  }
+  await sleep(gapMs);
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+}
+
+/** `n + 1` evenly spaced points from `a` to `b`. */
+export function line(a, b, n) {
+  return Array.from({ length: n + 1 }, (_, i) => ({
+    x: a.x + ((b.x - a.x) * i) / n,
+    y: a.y + ((b.y - a.y) * i) / n,
+  }));
+}
+
+/** A page screenshot of the viewport in CSS pixels, decoded to `{ width, height, data }` (RGBA). */
+export async function screenshot(page, file, { scale = 'css' } = {}) {
+  const png = await page.screenshot({ path: file, scale });
+  return pngjs.PNG.sync.read(png);
+}
+
+/** Number of distinct colours (each channel quantised to 5 bits) in `image`. */
+export function distinctColours(image) {
+  const seen = new Set();
+  const { data } = image;
+  for (let i = 0; i < data.length; i += 4) {
+    seen.add(((data[i] >> 3) << 10) | ((data[i + 1] >> 3) << 5) | (data[i + 2] >> 3));
+  }
+  return seen.size;
+}
+
+/** The fraction of pixels that differ from the most common colour by more than `tolerance`. */
+export function nonBackgroundFraction(image, tolerance = 24) {
+  const counts = new Map();
+  const { data } = image;
+  for (let i = 0; i < data.length; i += 4) {
+    const key = (data[i] << 16) | (data[i + 1] << 8) | data[i + 2];
+    counts.set(key, (counts.get(key) ?? 0) + 1);
+  }
+  const background = [...counts.entries()].reduce((a, b) => (b[1] > a[1] ? b : a))[0];
+  const bg = [(background >> 16) & 255, (background >> 8) & 255, background & 255];
+  let other = 0;
+  for (let i = 0; i < data.length; i += 4) {
+    const diff = Math.abs(data[i] - bg[0]) + Math.abs(data[i + 1] - bg[1]) + Math.abs(data[i + 2] - bg[2]);
+    if (diff > tolerance) other++;
+  }
+  return other / (data.length / 4);
+}
+
+function pixelDiff(a, b, x, y) {
+  const i = (y * a.width + x) * 4;
+  return Math.abs(a.data[i] - b.data[i]) + Math.abs(a.data[i + 1] - b.data[i + 1]) + Math.abs(a.data[i + 2] - b.data[i + 2]);
+}
+
+/** The largest RGB difference (sum over channels) between `a` and `b` in a square around (x, y). */
+export function maxDiffNear(a, b, x, y, radius) {
+  let max = 0;
+  const cx = Math.round(x);
+  const cy = Math.round(y);
+  for (let py = Math.max(0, cy - radius); py <= Math.min(a.height - 1, cy + radius); py++) {
+    for (let px = Math.max(0, cx - radius); px <= Math.min(a.width - 1, cx + radius); px++) {
+      max = Math.max(max, pixelDiff(a, b, px, py));
+    }
+  }
+  return max;
+}
+
+/** The fraction of `points` near which `a` and `b` differ by more than `threshold`. */
+export function changedFraction(a, b, points, { radius = 3, threshold = 60 } = {}) {
+  const changed = points.filter((p) => maxDiffNear(a, b, p.x, p.y, radius) > threshold).length;
+  return changed / points.length;
+}
+
+/** The fraction of pixels in the whole image that differ by more than `threshold`. */
+export function imageChangedFraction(a, b, threshold = 60) {
+  let changed = 0;
+  for (let y = 0; y < a.height; y++) {
+    for (let x = 0; x < a.width; x++) if (pixelDiff(a, b, x, y) > threshold) changed++;
+  }
+  return changed / (a.width * a.height);
+}

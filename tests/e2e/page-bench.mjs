@@ -1,0 +1,83 @@
+// Page timings for `cargo xtask bench`: time to interactive, and frame times while a pen stroke is
+// drawn, from requestAnimationFrame timestamps inside the page. Prints one JSON line at the end.
+//
+//   SKETCHMESH_URL=http://127.0.0.1:8080/ SKETCHMESH_GPU=webgl2 node tests/e2e/page-bench.mjs
+//
+// Headless Chromium renders with SwiftShader on the CPU here, so absolute numbers are a floor
+// for real hardware rather than a prediction; compare runs on the same machine.
+
+import { api, launch, penStroke, settings, sleep } from './lib.mjs';
+
+const STROKE_POINTS = 90;
+const { url, gpu } = settings();
+
+const browser = await launch(gpu);
+try {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 720 }, hasTouch: true });
+  // Runs before the page's scripts: records every animation frame's timestamp (ms since navigation
+  // start) while recording, when `window.sketchmesh` appears, and the second animation frame after
+  // that (the app, which draws in its own animation frames, has drawn by then).
+  await context.addInitScript(() => {
+    const bench = { frames: [], recording: false, apiAt: null, interactiveAt: null, framesSinceApi: 0 };
+    window.__bench = bench;
+    const tick = (t) => {
+      if (bench.apiAt !== null && bench.interactiveAt === null && ++bench.framesSinceApi === 2) {
+        bench.interactiveAt = performance.now();
+      }
+      if (bench.apiAt === null && window.sketchmesh) bench.apiAt = performance.now();
+      if (bench.recording) bench.frames.push(t);
+      requestAnimationFrame(tick);
+    };
+    requestAnimationFrame(tick);
+  });
+  const page = await context.newPage();
+  const cdp = await context.newCDPSession(page);
+  await page.goto(url, { waitUntil: 'load' });
+  await page.waitForFunction(() => window.__bench.interactiveAt !== null, null, { timeout: 30_000, polling: 50 });
+  const backend = await api(page, 'backend');
+  await sleep(300);
+
+  const n = STROKE_POINTS;
+  const points = Array.from({ length: n + 1 }, (_, i) => {
+    const t = i / n;
+    const angle = 2 * Math.PI * 0.9 * t;
+    return { x: 660 + 180 * Math.cos(angle), y: 380 + 140 * Math.sin(angle), force: 0.3 + 0.5 * Math.sin(Math.PI * t) };
+  });
+  await page.evaluate(() => {
+    window.__bench.recording = true;
+  });
+  const strokeStarted = Date.now();
+  await penStroke(cdp, points, 16);
+  // Include the frames that commit the stroke.
+  await sleep(250);
+  const strokeMs = Date.now() - strokeStarted;
+  const timing = await page.evaluate(() => {
+    const b = window.__bench;
+    b.recording = false;
+    return { frames: b.frames, apiAt: b.apiAt, interactiveAt: b.interactiveAt };
+  });
+  const stats = await api(page, 'stats');
+
+  const deltas = timing.frames.slice(1).map((t, i) => t - timing.frames[i]);
+  const sorted = [...deltas].sort((a, b) => a - b);
+  const quantile = (q) => (sorted.length ? sorted[Math.min(sorted.length - 1, Math.floor(q * sorted.length))] : null);
+  const mean = deltas.length ? deltas.reduce((a, b) => a + b, 0) / deltas.length : null;
+  const round = (ms) => (ms === null || ms === undefined ? null : Math.round(ms * 10) / 10);
+  const report = {
+    url,
+    gpu,
+    backend,
+    api_ready_ms: round(timing.apiAt),
+    time_to_interactive_ms: round(timing.interactiveAt),
+    stroke: {
+      points: points.length,
+      wall_ms: strokeMs,
+      frames: timing.frames.length,
+      curves_after: stats.curves,
+      frame_ms: { mean: round(mean), p50: round(quantile(0.5)), p95: round(quantile(0.95)), max: round(sorted.at(-1)) },
+    },
+  };
+  console.log(JSON.stringify(report));
+} finally {
+  await browser.close();
+}

@@ -1,0 +1,307 @@
+// The Sketchmesh browser suite: drives the real page in headless Chromium with synthetic pen,
+// touch and keyboard input and checks outcomes through `window.sketchmesh` and screenshots.
+//
+//   SKETCHMESH_URL=http://127.0.0.1:8080/ SKETCHMESH_GPU=webgl2 node tests/e2e/run.mjs
+//
+// `cargo xtask test` runs it once per GPU path against its own server. Screenshots and the
+// exported .glb go to tests/out/<gpu>-*.{png,glb}. Cases run in order and share one page, as a
+// user session would; a failure is reported and the later cases still run. Exit code 1 if any
+// case failed.
+
+import assert from 'node:assert/strict';
+import { writeFileSync } from 'node:fs';
+import { join } from 'node:path';
+
+import {
+  EXPECTED_BACKEND, OUT_DIR, api, camera, cameraDistance, changedFraction, distinctColours, frames,
+  imageChangedFraction, launch, line, maxDiffNear, nonBackgroundFraction, openApp, penStroke, screenshot,
+  settings, touchGesture,
+} from './lib.mjs';
+
+const WATCHDOG_MS = 240_000;
+const { url, gpu } = settings();
+const out = (name) => join(OUT_DIR, `${gpu}-${name}`);
+
+// ---------------------------------------------------------------------------------------------
+// A tiny sequential runner.
+
+const cases = [];
+const test = (name, body) => cases.push({ name, body });
+
+async function runAll() {
+  let failed = 0;
+  console.log(`# Sketchmesh browser suite: ${gpu} against ${url}`);
+  for (const [index, { name, body }] of cases.entries()) {
+    const started = Date.now();
+    try {
+      await body();
+      console.log(`ok ${index + 1} - ${name} (${Date.now() - started} ms)`);
+    } catch (err) {
+      failed++;
+      console.log(`not ok ${index + 1} - ${name} (${Date.now() - started} ms)`);
+      console.log(String(err?.stack ?? err).replace(/^/gm, '    '));
+    }
+  }
+  console.log(`# ${gpu}: ${cases.length - failed} passed, ${failed} failed`);
+  return failed;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Geometry of the gestures, in CSS px of the 1280x720 viewport (the toolbar is at the top; the
+// 3D view fills the rest).
+
+const CENTRE = { x: 660, y: 380 };
+
+/** A pen loop around the centre (most of a circle), pressure rising and falling. */
+function penLoop() {
+  const n = 40;
+  return Array.from({ length: n + 1 }, (_, i) => {
+    const t = i / n;
+    const angle = 2 * Math.PI * 0.85 * t;
+    return {
+      x: CENTRE.x + 120 * Math.cos(angle),
+      y: CENTRE.y + 100 * Math.sin(angle),
+      force: 0.2 + 0.7 * Math.sin(Math.PI * t),
+    };
+  });
+}
+
+/** Pressures recorded for stroke `op` (samples are `[x, y, pressure]`). */
+function pressures(op) {
+  assert.ok(Array.isArray(op.stroke), `a stroke op has a "stroke" array: ${JSON.stringify(op).slice(0, 200)}`);
+  return op.stroke.map((sample) => sample[2]);
+}
+
+function lastStrokeOp(page) {
+  return page.evaluate(() => {
+    const session = JSON.parse(window.sketchmesh.session());
+    return { session, op: session.ops.filter((o) => o.op === 'stroke').at(-1) };
+  });
+}
+
+async function expectStats(page, expected, what) {
+  const stats = await api(page, 'stats');
+  assert.deepEqual(stats, expected, what);
+}
+
+/** Polls `probe` until `accept(value)` holds or `ms` pass; returns the last value. */
+async function until(probe, accept, ms = 3000) {
+  const deadline = Date.now() + ms;
+  let value = await probe();
+  while (!accept(value) && Date.now() < deadline) {
+    await new Promise((resolve) => setTimeout(resolve, 50));
+    value = await probe();
+  }
+  return value;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+const browser = await launch(gpu);
+const watchdog = setTimeout(() => {
+  console.log(`# watchdog: the suite took longer than ${WATCHDOG_MS / 1000} s`);
+  process.exit(2);
+}, WATCHDOG_MS);
+
+let app; // { page, cdp, errors, context }
+let loadShot;
+const penPath = penLoop();
+let beforePen;
+let afterPen;
+let statsBeforePen;
+
+test('loads without console errors; window.sketchmesh within 15 s; backend matches the GPU path', async () => {
+  app = await openApp(browser, url, gpu);
+  const backend = await api(app.page, 'backend');
+  console.log(`    backend ${backend}, started in ${app.startupMs} ms`);
+  assert.match(backend, EXPECTED_BACKEND[gpu], `backend() on the ${gpu} path`);
+  const stats = await api(app.page, 'stats');
+  assert.deepEqual(Object.keys(stats).sort(), ['curves', 'models', 'triangles', 'vertices']);
+  assert.equal(stats.curves, 0, 'a fresh page has no curves');
+  const session = JSON.parse(await api(app.page, 'session'));
+  assert.equal(session.format, 'sketchmesh-session');
+  assert.equal(session.version, 1);
+  assert.deepEqual(session.ops, []);
+  assert.deepEqual(app.errors, [], 'console errors while loading');
+});
+
+test('canvas is not blank: the view and the UI render', async () => {
+  loadShot = await screenshot(app.page, out('load.png'));
+  const colours = distinctColours(loadShot);
+  const foreground = nonBackgroundFraction(loadShot);
+  console.log(`    ${colours} distinct colours, ${(foreground * 100).toFixed(1)}% non-background pixels`);
+  assert.ok(colours >= 24, `only ${colours} distinct colours: the canvas looks blank`);
+  assert.ok(foreground > 0.005, `only ${(foreground * 100).toFixed(2)}% of pixels differ from the background`);
+  const box = await app.page.evaluate(() => {
+    const c = document.getElementById('sketchmesh_canvas').getBoundingClientRect();
+    return { x: c.x, y: c.y, width: c.width, height: c.height };
+  });
+  assert.deepEqual(box, { x: 0, y: 0, width: 1280, height: 720 }, 'the canvas fills the window');
+});
+
+test('touch pinch (two fingers moving apart) zooms in and draws nothing', async () => {
+  const before = await camera(app.page);
+  const statsBefore = await api(app.page, 'stats');
+  await touchGesture(app.cdp, [
+    line({ x: CENTRE.x - 60, y: CENTRE.y }, { x: CENTRE.x - 220, y: CENTRE.y }, 10),
+    line({ x: CENTRE.x + 60, y: CENTRE.y }, { x: CENTRE.x + 220, y: CENTRE.y }, 10),
+  ]);
+  await frames(app.page, 3);
+  const after = await camera(app.page);
+  const [d0, d1] = [cameraDistance(before), cameraDistance(after)];
+  console.log(`    camera distance ${d0.toFixed(3)} -> ${d1.toFixed(3)}`);
+  assert.ok(d1 < d0 * 0.95, `camera distance went ${d0} -> ${d1}; a pinch apart must zoom in`);
+  await expectStats(app.page, statsBefore, 'a pinch must not add a curve');
+});
+
+test('before any pen, a one-finger touch drag draws a curve', async () => {
+  const before = await api(app.page, 'stats');
+  const track = line({ x: CENTRE.x - 250, y: CENTRE.y + 180 }, { x: CENTRE.x + 250, y: CENTRE.y + 150 }, 16);
+  await touchGesture(app.cdp, [track]);
+  const after = await until(() => api(app.page, 'stats'), (s) => s.curves === before.curves + 1);
+  assert.equal(after.curves, before.curves + 1, 'one-finger touch with no pen seen adds one curve');
+  await screenshot(app.page, out('touch-draw.png'));
+});
+
+test('a pen stroke with pressure leaves ink, adds one curve and logs pressures', async () => {
+  await frames(app.page, 2);
+  statsBeforePen = await api(app.page, 'stats');
+  beforePen = await screenshot(app.page, out('pen-before.png'));
+  await penStroke(app.cdp, penPath);
+  const stats = await until(() => api(app.page, 'stats'), (s) => s.curves === statsBeforePen.curves + 1);
+  assert.equal(stats.curves, statsBeforePen.curves + 1, 'a pen stroke adds exactly one curve');
+  await frames(app.page, 3);
+  afterPen = await screenshot(app.page, out('pen-after.png'));
+  const inked = changedFraction(beforePen, afterPen, penPath);
+  console.log(`    ${(inked * 100).toFixed(0)}% of the path shows ink; stats ${JSON.stringify(stats)}`);
+  assert.ok(inked >= 0.6, `only ${(inked * 100).toFixed(0)}% of the stroke path changed on screen`);
+
+  const { op } = await lastStrokeOp(app.page);
+  assert.ok(op, 'session() has a stroke op');
+  const p = pressures(op);
+  assert.ok(p.length >= 10, `the stroke op has ${p.length} samples`);
+  const [lo, hi] = [Math.min(...p), Math.max(...p)];
+  console.log(`    ${p.length} samples, pressure ${lo.toFixed(2)}..${hi.toFixed(2)}`);
+  assert.ok(hi - lo > 0.2, `pen pressures should vary (sent 0.2..0.9), got ${lo}..${hi}`);
+  assert.ok(p.every((x) => x >= 0 && x <= 1), 'pressures lie in 0..1');
+});
+
+test('Ctrl+Z undoes the stroke (curves and pixels revert); Ctrl+Shift+Z redoes it', async () => {
+  await app.page.keyboard.press('Control+z');
+  let stats = await until(() => api(app.page, 'stats'), (s) => s.curves === statsBeforePen.curves);
+  const focused = await app.page.evaluate(() => document.activeElement?.id || document.activeElement?.tagName);
+  assert.deepEqual(stats, statsBeforePen, `Ctrl+Z restores the stats (focused element: ${focused})`);
+  await frames(app.page, 3);
+  const undone = await screenshot(app.page, out('undo.png'));
+  // Along the path, the undone frame matches the frame before the stroke (small tolerance for
+  // anti-aliasing), and differs from the inked one.
+  const reverted = penPath.filter((p) => maxDiffNear(beforePen, undone, p.x, p.y, 2) <= 30).length / penPath.length;
+  console.log(`    ${(reverted * 100).toFixed(0)}% of the path reverted`);
+  assert.ok(reverted >= 0.9, `only ${(reverted * 100).toFixed(0)}% of the stroke path reverted after undo`);
+  const whole = imageChangedFraction(beforePen, undone);
+  assert.ok(whole < 0.01, `${(whole * 100).toFixed(2)}% of the image differs from before the stroke`);
+
+  await app.page.keyboard.press('Control+Shift+Z');
+  stats = await until(() => api(app.page, 'stats'), (s) => s.curves === statsBeforePen.curves + 1);
+  assert.equal(stats.curves, statsBeforePen.curves + 1, 'Ctrl+Shift+Z redoes the stroke');
+  await frames(app.page, 3);
+  const redone = await screenshot(app.page, out('redo.png'));
+  const inked = changedFraction(beforePen, redone, penPath);
+  assert.ok(inked >= 0.6, `after redo only ${(inked * 100).toFixed(0)}% of the path shows ink`);
+});
+
+test('after a pen was seen, a one-finger touch drag orbits and does not draw (palm rejection)', async () => {
+  const before = await api(app.page, 'stats');
+  const cam0 = await camera(app.page);
+  await touchGesture(app.cdp, [line({ x: CENTRE.x - 150, y: CENTRE.y + 40 }, { x: CENTRE.x + 150, y: CENTRE.y }, 12)]);
+  await frames(app.page, 3);
+  await expectStats(app.page, before, 'a touch after a pen must not draw');
+  const cam1 = await camera(app.page);
+  const moved = Math.hypot(...cam1.eye.map((e, i) => e - cam0.eye[i]));
+  console.log(`    eye moved by ${moved.toFixed(3)}`);
+  assert.ok(moved > 1e-3, `the one-finger drag should orbit: eye ${cam0.eye} -> ${cam1.eye}`);
+  await screenshot(app.page, out('orbit.png'));
+});
+
+test('exportGlb() returns a GLB (glTF magic, version 2, consistent length)', async () => {
+  const bytes = Buffer.from(await app.page.evaluate(() => Array.from(window.sketchmesh.exportGlb())));
+  assert.ok(bytes.length >= 12, `only ${bytes.length} bytes`);
+  assert.equal(bytes.subarray(0, 4).toString('latin1'), 'glTF');
+  assert.equal(bytes.readUInt32LE(4), 2, 'GLB version');
+  assert.equal(bytes.readUInt32LE(8), bytes.length, 'GLB header length equals the byte count');
+  writeFileSync(out('export.glb'), bytes);
+  console.log(`    ${bytes.length} bytes -> ${out('export.glb')}`);
+});
+
+test('replay(session()) reproduces the stats; malformed JSON throws and changes nothing', async () => {
+  const stats = await api(app.page, 'stats');
+  const session = await api(app.page, 'session');
+  assert.ok(stats.curves >= 2, 'the session has strokes to replay');
+  await app.page.evaluate((s) => window.sketchmesh.replay(s), session);
+  await expectStats(app.page, stats, 'replaying the session rebuilds the same document');
+  assert.equal(await api(app.page, 'session'), session, 'the replayed session logs the same ops');
+
+  for (const bad of ['{"format":"sketchmesh-session","version":1,"ops":[', '{"format":"nope"}', '[1,2']) {
+    const message = await app.page.evaluate((s) => {
+      try {
+        window.sketchmesh.replay(s);
+        return null;
+      } catch (e) {
+        return e instanceof Error ? e.message : `non-Error: ${String(e)}`;
+      }
+    }, bad);
+    assert.ok(message, `replay(${JSON.stringify(bad)}) must throw`);
+    assert.ok(message.length > 5 && !message.startsWith('non-Error'), `a useful Error message, got ${message}`);
+    await expectStats(app.page, stats, 'a failed replay leaves the document unchanged');
+  }
+  const loadGlb = await app.page.evaluate(() => {
+    try {
+      window.sketchmesh.loadGlb(new Uint8Array([0x67, 0x6c, 0x54, 0x46]));
+      return null;
+    } catch (e) {
+      return e.message;
+    }
+  });
+  assert.match(loadGlb ?? '', /not implemented/i, 'loadGlb() says it is not implemented yet');
+});
+
+test('resize to 800x600: the canvas backing store follows and still renders', async () => {
+  await app.page.setViewportSize({ width: 800, height: 600 });
+  const size = await until(
+    () => app.page.evaluate(() => {
+      const c = document.getElementById('sketchmesh_canvas');
+      return { width: c.width, height: c.height, dpr: window.devicePixelRatio };
+    }),
+    (s) => s.width === 800 * s.dpr && s.height === 600 * s.dpr,
+  );
+  assert.equal(size.width, 800 * size.dpr, 'canvas.width follows the viewport');
+  assert.equal(size.height, 600 * size.dpr, 'canvas.height follows the viewport');
+  await frames(app.page, 3);
+  const shot = await screenshot(app.page, out('resize.png'));
+  assert.equal(shot.width, 800);
+  assert.ok(distinctColours(shot) >= 24, 'the resized canvas still renders');
+  assert.deepEqual(app.errors, [], 'console errors during the session');
+  await app.context.close();
+});
+
+test('deviceScaleFactor 2: the canvas backing store is twice the CSS size and renders', async () => {
+  const hi = await openApp(browser, url, gpu, { width: 640, height: 400, deviceScaleFactor: 2 });
+  const size = await until(
+    () => hi.page.evaluate(() => {
+      const c = document.getElementById('sketchmesh_canvas');
+      return { width: c.width, height: c.height, dpr: window.devicePixelRatio };
+    }),
+    (s) => s.width === 1280 && s.height === 800,
+  );
+  assert.deepEqual(size, { width: 1280, height: 800, dpr: 2 });
+  const shot = await screenshot(hi.page, out('dpr2.png'), { scale: 'device' });
+  assert.equal(shot.width, 1280);
+  assert.ok(distinctColours(shot) >= 24, 'the high-DPI canvas renders');
+  assert.deepEqual(hi.errors, [], 'console errors on the high-DPI page');
+  await hi.context.close();
+});
+
+const failed = await runAll();
+clearTimeout(watchdog);
+await browser.close();
+process.exit(failed === 0 ? 0 : 1);

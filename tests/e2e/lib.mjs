@@ -47,11 +47,17 @@ export function settings() {
   return { url, gpu };
 }
 
-export async function launch(gpu) {
+/**
+ * Launches headless Chromium for `gpu`. `deviceScaleFactor` > 1 also forces it on the browser:
+ * with only Playwright's emulated scale factor, headless Chromium reports `devicePixelRatio` 2 but a
+ * `devicePixelContentBoxSize` in CSS px, which eframe trusts for the canvas size.
+ */
+export async function launch(gpu, { deviceScaleFactor = 1 } = {}) {
+  const scale = deviceScaleFactor === 1 ? [] : [`--force-device-scale-factor=${deviceScaleFactor}`];
   return chromium.launch({
     executablePath: CHROMIUM,
     headless: true,
-    args: [...BASE_FLAGS, ...GPU_FLAGS[gpu]],
+    args: [...BASE_FLAGS, ...GPU_FLAGS[gpu], ...scale],
   });
 }
 

@@ -285,20 +285,24 @@ test('resize to 800x600: the canvas backing store follows and still renders', as
 });
 
 test('deviceScaleFactor 2: the canvas backing store is twice the CSS size and renders', async () => {
-  const hi = await openApp(browser, url, gpu, { width: 640, height: 400, deviceScaleFactor: 2 });
-  const size = await until(
-    () => hi.page.evaluate(() => {
-      const c = document.getElementById('sketchmesh_canvas');
-      return { width: c.width, height: c.height, dpr: window.devicePixelRatio };
-    }),
-    (s) => s.width === 1280 && s.height === 800,
-  );
-  assert.deepEqual(size, { width: 1280, height: 800, dpr: 2 });
-  const shot = await screenshot(hi.page, out('dpr2.png'), { scale: 'device' });
-  assert.equal(shot.width, 1280);
-  assert.ok(distinctColours(shot) >= 24, 'the high-DPI canvas renders');
-  assert.deepEqual(hi.errors, [], 'console errors on the high-DPI page');
-  await hi.context.close();
+  const hiBrowser = await launch(gpu, { deviceScaleFactor: 2 });
+  try {
+    const hi = await openApp(hiBrowser, url, gpu, { width: 640, height: 400, deviceScaleFactor: 2 });
+    const size = await until(
+      () => hi.page.evaluate(() => {
+        const c = document.getElementById('sketchmesh_canvas');
+        return { width: c.width, height: c.height, dpr: window.devicePixelRatio };
+      }),
+      (s) => s.width === 1280 && s.height === 800,
+    );
+    assert.deepEqual(size, { width: 1280, height: 800, dpr: 2 });
+    const shot = await screenshot(hi.page, out('dpr2.png'), { scale: 'device' });
+    assert.equal(shot.width, 1280);
+    assert.ok(distinctColours(shot) >= 24, 'the high-DPI canvas renders');
+    assert.deepEqual(hi.errors, [], 'console errors on the high-DPI page');
+  } finally {
+    await hiBrowser.close();
+  }
 });
 
 const failed = await runAll();

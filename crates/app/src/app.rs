@@ -163,7 +163,8 @@ impl SketchApp {
                             camera: self.shared.borrow().camera.camera(),
                             viewport,
                         };
-                        if let ToolOutput::Commit(op) = self.tool.on_event(event, &view) {
+                        let output = self.tool.on_event(event, &view, self.shared.borrow().editor.document());
+                        if let ToolOutput::Commit(op) = output {
                             self.apply(op, now);
                         }
                     }

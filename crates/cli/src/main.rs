@@ -3,6 +3,7 @@
 //! Arguments are matched by hand on the argument slice (as egui's xtask does); any refusal
 //! prints one sentence on stderr and exits with status 1.
 
+use std::io::Write as _;
 use std::path::Path;
 use std::process::ExitCode;
 
@@ -32,10 +33,7 @@ fn main() -> ExitCode {
 fn try_main(args: &[String]) -> anyhow::Result<()> {
     let args: Vec<&str> = args.iter().map(String::as_str).collect();
     match args.as_slice() {
-        [] | ["--help" | "-h" | "help"] => {
-            println!("{USAGE}");
-            Ok(())
-        }
+        [] | ["--help" | "-h" | "help"] => print_out(USAGE),
         ["replay", session, "-o", out] | ["replay", "-o", out, session] => {
             replay(Path::new(session), Path::new(out))
         }
@@ -53,7 +51,7 @@ fn replay(session_path: &Path, out_path: &Path) -> anyhow::Result<()> {
     std::fs::write(out_path, &bytes)
         .with_context(|| format!("Could not write {}", out_path.display()))?;
     let stats = editor.document().stats();
-    println!(
+    print_out(&format!(
         "Replayed {} ops: {} models, {} vertices, {} triangles, {} curves; wrote {} ({} bytes).",
         editor.ops().len(),
         stats.models,
@@ -62,8 +60,7 @@ fn replay(session_path: &Path, out_path: &Path) -> anyhow::Result<()> {
         stats.curves,
         out_path.display(),
         bytes.len()
-    );
-    Ok(())
+    ))
 }
 
 fn info(path: &Path) -> anyhow::Result<()> {
@@ -71,6 +68,13 @@ fn info(path: &Path) -> anyhow::Result<()> {
         std::fs::read(path).with_context(|| format!("Could not read {}", path.display()))?;
     let info = inspect_glb(&bytes)
         .with_context(|| format!("Could not read {} as glTF", path.display()))?;
-    println!("{}", serde_json::to_string_pretty(&info)?);
-    Ok(())
+    print_out(&serde_json::to_string_pretty(&info)?)
+}
+
+/// Prints a line on stdout; a closed pipe (`sketchmesh info x.glb | head`) is not an error.
+fn print_out(text: &str) -> anyhow::Result<()> {
+    match writeln!(std::io::stdout(), "{text}") {
+        Err(error) if error.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        result => result.context("Could not write to standard output"),
+    }
 }

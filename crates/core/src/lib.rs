@@ -8,6 +8,7 @@
 pub mod camera;
 pub mod curve;
 pub mod document;
+pub mod fibermesh;
 pub mod geometry;
 pub mod io;
 pub mod mesh;

@@ -27,9 +27,11 @@ Commands:
   setup                        Install the wasm target, Chromium and the npm test tools (idempotent)
   build-web [--release|--ship] Build the web page into dist/ (--release: fast, no wasm-opt;
                                --ship, the default: wasm-release profile + wasm-opt -Oz, cached)
-  serve [--port N]             Ship build, then serve dist/ on http://127.0.0.1:8080/ (or port N)
+  serve [--release] [--port N] Ship build (or --release build), then serve dist/ on
+                               http://127.0.0.1:8080/ (or port N)
   test                         fmt, clippy, native tests, wasm build, browser suite (WebGL2 and WebGPU),
                                glTF validation: everything CI runs
+  e2e                          Only the --release web build, the browser suite and glTF validation
   bench                        Criterion benches of sketchmesh-core plus page timings in Chromium;
                                summary in target/bench-summary.md
 ";
@@ -58,14 +60,9 @@ fn try_main() -> anyhow::Result<()> {
         ["build-web", "--release"] => {
             build::build_web(&workspace, build::WebProfile::Release).map(drop)
         }
-        ["serve"] => serve::serve_command(&workspace, serve::DEFAULT_PORT),
-        ["serve", "--port", port] => {
-            let port = port
-                .parse()
-                .with_context(|| format!("--port wants a number from 0 to 65535, got {port:?}"))?;
-            serve::serve_command(&workspace, port)
-        }
+        ["serve", options @ ..] => serve::serve_command(&workspace, options),
         ["test"] => test::test_command(&workspace),
+        ["e2e"] => test::e2e_command(&workspace),
         ["bench"] => bench::bench_command(&workspace),
         other => bail!("unknown arguments {other:?}\n\n{HELP}"),
     }

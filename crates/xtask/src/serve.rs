@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::thread::JoinHandle;
 
-use anyhow::{Context as _, anyhow};
+use anyhow::{Context as _, anyhow, bail};
 use tiny_http::{Header, Method, Request, Response, Server};
 
 use crate::Workspace;
@@ -19,13 +19,40 @@ use crate::build::{self, WebProfile};
 pub const DEFAULT_PORT: u16 = 8080;
 const WORKERS: usize = 4;
 
-/// Ship build, then serve `dist/` until interrupted.
-pub fn serve_command(workspace: &Workspace, port: u16) -> anyhow::Result<()> {
-    build::build_web(workspace, WebProfile::Ship)?;
+/// `serve [--release] [--port N]`: build (ship by default), then serve `dist/` until interrupted.
+pub fn serve_command(workspace: &Workspace, options: &[&str]) -> anyhow::Result<()> {
+    let (profile, port) = parse_options(options)?;
+    build::build_web(workspace, profile)?;
     let server = StaticServer::start(&workspace.dist(), port)?;
     println!("Serving Sketchmesh at {}", server.url());
     server.wait();
     Ok(())
+}
+
+fn parse_options(options: &[&str]) -> anyhow::Result<(WebProfile, u16)> {
+    let mut profile = WebProfile::Ship;
+    let mut port = DEFAULT_PORT;
+    let mut rest = options;
+    loop {
+        rest = match rest {
+            [] => return Ok((profile, port)),
+            ["--release", tail @ ..] => {
+                profile = WebProfile::Release;
+                tail
+            }
+            ["--ship", tail @ ..] => {
+                profile = WebProfile::Ship;
+                tail
+            }
+            ["--port", number, tail @ ..] => {
+                port = number.parse().with_context(|| {
+                    format!("--port wants a number from 0 to 65535, got {number:?}")
+                })?;
+                tail
+            }
+            [other, ..] => bail!("unknown serve option {other:?}; try --release or --port N"),
+        };
+    }
 }
 
 /// A static file server on `127.0.0.1`, answering on background threads; stops when dropped.
@@ -301,6 +328,18 @@ mod tests {
         assert_eq!(resolve(&root, "/sub"), None);
         assert_eq!(resolve(&root, "/%zz"), None);
         std::fs::remove_dir_all(root.parent().unwrap()).unwrap();
+    }
+
+    #[test]
+    fn serve_options_parse() {
+        assert_eq!(parse_options(&[]).unwrap(), (WebProfile::Ship, 8080));
+        assert_eq!(
+            parse_options(&["--port", "9000", "--release"]).unwrap(),
+            (WebProfile::Release, 9000)
+        );
+        assert!(parse_options(&["--port", "x"]).is_err());
+        assert!(parse_options(&["--port"]).is_err());
+        assert!(parse_options(&["--fast"]).is_err());
     }
 
     #[test]

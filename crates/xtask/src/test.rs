@@ -52,6 +52,26 @@ pub fn test_command(workspace: &Workspace) -> anyhow::Result<()> {
             cargo().current_dir(root).args(["test", "--workspace"]),
         )
     })?;
+    browser_checks(workspace, &mut steps)?;
+    steps.print_summary();
+    println!("xtask: all checks passed");
+    Ok(())
+}
+
+/// `cargo xtask e2e`: only the web build, the browser suite and the glTF validation.
+pub fn e2e_command(workspace: &Workspace) -> anyhow::Result<()> {
+    let mut steps = Steps::default();
+    steps.step("setup", || setup::setup(workspace, Needs::ALL))?;
+    browser_checks(workspace, &mut steps)?;
+    steps.print_summary();
+    println!("xtask: browser checks passed");
+    Ok(())
+}
+
+/// The web build with its size budget, the browser suite on each GPU path, and the glTF
+/// validator on the exports and on a CLI replay.
+fn browser_checks(workspace: &Workspace, steps: &mut Steps) -> anyhow::Result<()> {
+    let root = &workspace.root;
     let web = steps.step("build-web --release", || {
         build::build_web(workspace, WebProfile::Release)
     })?;
@@ -127,8 +147,6 @@ pub fn test_command(workspace: &Workspace) -> anyhow::Result<()> {
         validate_gltf(workspace, &files)
     })?;
 
-    steps.print_summary();
-    println!("xtask: all checks passed");
     Ok(())
 }
 

@@ -43,7 +43,7 @@ impl Pass<'_> {
         &self,
         label: &str,
         (vs, fs): (&str, &str),
-        buffers: &[wgpu::VertexBufferLayout<'_>],
+        buffers: &[Option<wgpu::VertexBufferLayout<'_>>],
         topology: wgpu::PrimitiveTopology,
         depth: (bool, wgpu::CompareFunction),
         blend: Option<wgpu::BlendState>,
@@ -120,13 +120,13 @@ impl Pipelines {
         let tri = wgpu::PrimitiveTopology::TriangleList;
         let lines = wgpu::PrimitiveTopology::LineList;
         let less = wgpu::CompareFunction::LessEqual;
-        let mesh_buffers = [MeshVertex::layout()];
-        let curve_buffers = [CurveSegment::layout()];
+        let mesh_buffers = [Some(MeshVertex::layout())];
+        let curve_buffers = [Some(CurveSegment::layout())];
         let (blit_layout, blit) = blit_pipeline(device, output);
         Self {
             mesh: pass.pipeline("mesh", ("vs_mesh", "fs_mesh"), &mesh_buffers, tri, (true, less), None),
             wire: pass.pipeline("wire", ("vs_wire", "fs_wire"), &mesh_buffers, lines, (false, less), premultiplied),
-            grid: pass.pipeline("grid", ("vs_line", "fs_line"), &[GridVertex::layout()], lines, (false, less), premultiplied),
+            grid: pass.pipeline("grid", ("vs_line", "fs_line"), &[Some(GridVertex::layout())], lines, (false, less), premultiplied),
             curve_hidden: pass.pipeline(
                 "curve hidden",
                 ("vs_curve", "fs_curve_hidden"),

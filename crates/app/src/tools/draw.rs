@@ -1,13 +1,14 @@
-//! The draw tool: one stroke in, one `stroke` operation out.
+//! The draw tool: one stroke in, one operation out.
 //!
-//! Two states, as tldraw's draw tool: `Idle` and `Drawing`. The stroke is kept in
+//! Two states, as tldraw's draw tool: `Idle` and `Drawing`. What the finished stroke means
+//! (a new shape or ink) is decided in core by [`op_for_stroke`]. The stroke is kept in
 //! viewport-relative screen points together with the camera it was drawn with, because
 //! that is what a session stores and what replays identically anywhere.
 
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::StrokePoint;
-use sketchmesh_core::document::{Op, StrokeInput};
+use sketchmesh_core::document::{Document, StrokeInput, op_for_stroke};
 
 use super::{ToolEvent, ToolOutput, ViewCtx};
 
@@ -30,7 +31,7 @@ pub enum DrawTool {
 
 impl DrawTool {
     /// Feeds one event; a finished stroke becomes a [`ToolOutput::Commit`].
-    pub fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx) -> ToolOutput {
+    pub fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
         match (std::mem::take(self), event) {
             (Self::Idle, ToolEvent::Begin(s)) => {
                 let size = view.viewport.size();
@@ -54,11 +55,12 @@ impl DrawTool {
                 if points.last().is_none_or(|last| last.pos != p.pos) {
                     points.push(p);
                 }
-                ToolOutput::Commit(Op::Stroke(StrokeInput {
+                let input = StrokeInput {
                     viewport: viewport.to_array(),
                     camera,
                     stroke: points.iter().map(|p| [p.pos.x, p.pos.y, p.pressure]).collect(),
-                }))
+                };
+                ToolOutput::Commit(op_for_stroke(doc, input))
             }
             (_, ToolEvent::Cancel) => ToolOutput::None,
             (state, _) => {
@@ -89,6 +91,7 @@ fn point(s: &crate::input::PointerSample, view: &ViewCtx) -> StrokePoint {
 mod tests {
     use super::*;
     use crate::input::{Phase, PointerKind, PointerSample};
+    use sketchmesh_core::document::Op;
     use egui::{Rect, pos2};
 
     fn pen(phase: Phase, x: f32, y: f32, pressure: f32) -> PointerSample {
@@ -114,10 +117,11 @@ mod tests {
     fn stroke_commits_viewport_relative_points_with_pressure() {
         let mut tool = DrawTool::default();
         let v = view();
-        assert_eq!(tool.on_event(&ToolEvent::Begin(pen(Phase::Down, 10.0, 50.0, 0.2)), &v), ToolOutput::None);
-        tool.on_event(&ToolEvent::Move(pen(Phase::Move, 20.0, 60.0, 0.6)), &v);
+        let doc = Document::default();
+        assert_eq!(tool.on_event(&ToolEvent::Begin(pen(Phase::Down, 10.0, 50.0, 0.2)), &v, &doc), ToolOutput::None);
+        tool.on_event(&ToolEvent::Move(pen(Phase::Move, 20.0, 60.0, 0.6)), &v, &doc);
         assert_eq!(tool.preview().map(<[_]>::len), Some(2));
-        let out = tool.on_event(&ToolEvent::End(pen(Phase::Up, 30.0, 70.0, 0.9)), &v);
+        let out = tool.on_event(&ToolEvent::End(pen(Phase::Up, 30.0, 70.0, 0.9)), &v, &doc);
         let ToolOutput::Commit(Op::Stroke(input)) = out else {
             panic!("expected a stroke, got {out:?}");
         };
@@ -131,10 +135,11 @@ mod tests {
     fn cancel_leaves_no_trace() {
         let mut tool = DrawTool::default();
         let v = view();
-        tool.on_event(&ToolEvent::Begin(pen(Phase::Down, 10.0, 50.0, 0.5)), &v);
-        assert_eq!(tool.on_event(&ToolEvent::Cancel, &v), ToolOutput::None);
+        let doc = Document::default();
+        tool.on_event(&ToolEvent::Begin(pen(Phase::Down, 10.0, 50.0, 0.5)), &v, &doc);
+        assert_eq!(tool.on_event(&ToolEvent::Cancel, &v, &doc), ToolOutput::None);
         assert!(tool.preview().is_none());
         // A stray end after a cancel commits nothing.
-        assert_eq!(tool.on_event(&ToolEvent::End(pen(Phase::Up, 1.0, 1.0, 0.5)), &v), ToolOutput::None);
+        assert_eq!(tool.on_event(&ToolEvent::End(pen(Phase::Up, 1.0, 1.0, 0.5)), &v, &doc), ToolOutput::None);
     }
 }

@@ -3,8 +3,9 @@
 use std::sync::Arc;
 
 use super::history::History;
-use super::{Document, Op, SketchCurve, StrokeInput};
+use super::{ControlCurve, Document, Model, Op, SketchCurve, StrokeInput};
 use crate::curve::{StrokeError, process_stroke};
+use crate::fibermesh::{CreateError, CreateParams, create_converged_from_stroke};
 
 /// Why an op was refused. The messages are sentences for the user.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -27,6 +28,9 @@ pub enum CommandError {
     /// Redo with an empty redo history.
     #[error("Nothing to redo.")]
     NothingToRedo,
+    /// A closed stroke did not become a shape.
+    #[error("{0}")]
+    Create(#[from] CreateError),
 }
 
 impl From<StrokeError> for CommandError {
@@ -63,6 +67,13 @@ impl Editor {
                 let sketch = place_stroke(input)?;
                 let mut next = self.document.clone();
                 next.sketches.push(Arc::new(sketch));
+                let before = std::mem::replace(&mut self.document, next);
+                self.history.record(before);
+            }
+            Op::Create(input) => {
+                let model = create_model(input)?;
+                let mut next = self.document.clone();
+                next.models.push(Arc::new(model));
                 let before = std::mem::replace(&mut self.document, next);
                 self.history.record(before);
             }
@@ -117,6 +128,27 @@ impl Editor {
     pub fn ops(&self) -> &[Op] {
         &self.log
     }
+}
+
+/// Inflates a closed stroke into a FiberMesh model whose outline stays on it as a smooth
+/// control curve; the optimization runs to convergence, so replay gives the same mesh.
+fn create_model(input: &StrokeInput) -> Result<Model, CommandError> {
+    let viewport = input.viewport_size();
+    if !viewport.is_finite() || viewport.min_element() <= 0.0 || !input.camera.is_valid() {
+        return Err(CommandError::BadView);
+    }
+    let params = CreateParams::default();
+    let (creation, _) = create_converged_from_stroke(&input.points(), &input.camera, viewport, &params)?;
+    let points = creation.curve_vertices.iter().map(|&v| creation.mesh.position(v)).collect();
+    Ok(Model {
+        curves: vec![ControlCurve {
+            points,
+            vertices: creation.curve_vertices,
+            closed: true,
+            sharp: false,
+        }],
+        mesh: creation.mesh,
+    })
 }
 
 /// Processes the stroke in screen space and projects each point onto the plane through the

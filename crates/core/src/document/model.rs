@@ -5,7 +5,7 @@ use std::sync::Arc;
 use glam::DVec3;
 use serde::Serialize;
 
-use crate::mesh::Mesh;
+use crate::mesh::{Mesh, VertexId};
 
 /// An ink stroke placed in 3D: the processed screen stroke projected onto a plane.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -21,6 +21,9 @@ pub struct SketchCurve {
 pub struct ControlCurve {
     /// Points in world space, in order.
     pub points: Vec<DVec3>,
+    /// The mesh vertices the curve runs through (a chain of mesh edges), in the order of
+    /// `points`; empty when the curve is not embedded in the mesh (for example imported).
+    pub vertices: Vec<VertexId>,
     /// Whether the last point connects back to the first.
     pub closed: bool,
     /// Whether the surface has a crease along the curve (instead of being smooth across it).

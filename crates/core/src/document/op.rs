@@ -12,6 +12,8 @@ use crate::curve::StrokePoint;
 pub enum Op {
     /// Draw a sketch stroke on the plane through the camera target facing the camera.
     Stroke(StrokeInput),
+    /// Inflate a closed stroke drawn on empty canvas into a new FiberMesh model.
+    Create(StrokeInput),
     /// Undo the last change.
     Undo,
     /// Redo the last undone change.
@@ -19,13 +21,15 @@ pub enum Op {
 }
 
 impl Op {
-    /// The `"op"` tag of every kind of op, as written in session files.
-    pub const NAMES: &'static [&'static str] = &["stroke", "undo", "redo"];
+    /// The `"op"` tag of every kind of op, as written in session files (in step with
+    /// [`Op::name`]; a test checks both against serde).
+    pub const NAMES: &'static [&'static str] = &["stroke", "create", "undo", "redo"];
 
     /// The `"op"` tag of this op.
     pub fn name(&self) -> &'static str {
         match self {
             Op::Stroke(_) => "stroke",
+            Op::Create(_) => "create",
             Op::Undo => "undo",
             Op::Redo => "redo",
         }
@@ -69,6 +73,11 @@ mod tests {
     fn names_match_serde_tags() {
         let ops = [
             Op::Stroke(StrokeInput {
+                viewport: [1.0, 1.0],
+                camera: Camera::default(),
+                stroke: Vec::new(),
+            }),
+            Op::Create(StrokeInput {
                 viewport: [1.0, 1.0],
                 camera: Camera::default(),
                 stroke: Vec::new(),

@@ -4,7 +4,7 @@
 //! every error names the op's index (zero-based position in `"ops"`); unknown ops and unknown
 //! fields are errors, never silently ignored.
 
-use serde_json::{Map, Value};
+use serde_json::Value;
 
 use super::{CommandError, Editor, Op};
 
@@ -182,17 +182,23 @@ fn parse_op(value: Value) -> Result<Op, String> {
             Op::NAMES.join(", ")
         ));
     }
-    check_unit_op_fields(&name, &object)?;
-    serde_json::from_value(Value::Object(object))
-        .map_err(|error| format!("in a \"{name}\" op: {error}"))
+    let other_field = object.keys().find(|key| *key != "op").cloned();
+    let op: Op = serde_json::from_value(Value::Object(object))
+        .map_err(|error| format!("in a \"{name}\" op: {error}"))?;
+    // serde ignores extra fields of unit variants in internally tagged enums; refuse them.
+    match other_field {
+        Some(key) if has_no_fields(&op) => {
+            Err(format!("unknown field \"{key}\" in a \"{name}\" op"))
+        }
+        _ => Ok(op),
+    }
 }
 
-/// serde ignores extra fields of unit variants in internally tagged enums; refuse them here.
-fn check_unit_op_fields(name: &str, object: &Map<String, Value>) -> Result<(), String> {
-    let is_unit = matches!(name, "undo" | "redo");
-    match object.keys().find(|key| *key != "op") {
-        Some(key) if is_unit => Err(format!("unknown field \"{key}\" in a \"{name}\" op")),
-        _ => Ok(()),
+/// Whether an op is just its `"op"` tag. No wildcard, so a new op must be sorted here.
+fn has_no_fields(op: &Op) -> bool {
+    match op {
+        Op::Stroke(_) | Op::Create(_) => false,
+        Op::Undo | Op::Redo => true,
     }
 }
 
@@ -208,7 +214,9 @@ mod tests {
     fn doc_example() -> String {
         let doc = include_str!("../../../../docs/session-format.md");
         let start = doc.rfind("```json\n").expect("the doc has a JSON example") + "```json\n".len();
-        let length = doc[start..].find("```").expect("the example block is closed");
+        let length = doc[start..]
+            .find("```")
+            .expect("the example block is closed");
         doc[start..start + length].to_owned()
     }
 

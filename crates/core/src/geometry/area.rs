@@ -96,9 +96,16 @@ mod tests {
     fn vertex_areas_sum_to_the_total_area() {
         for fixture in fixtures::all() {
             let total = total_area(&fixture.mesh);
-            for areas in [vertex_areas(&fixture.mesh), vertex_areas_barycentric(&fixture.mesh)] {
+            for areas in [
+                vertex_areas(&fixture.mesh),
+                vertex_areas_barycentric(&fixture.mesh),
+            ] {
                 let sum: f64 = areas.iter().sum();
-                assert!((sum - total).abs() < 1e-12 * total.max(1.0), "{}: {sum} vs {total}", fixture.name);
+                assert!(
+                    (sum - total).abs() < 1e-12 * total.max(1.0),
+                    "{}: {sum} vs {total}",
+                    fixture.name
+                );
                 assert!(areas.iter().all(|&a| a > 0.0), "{}", fixture.name);
             }
         }
@@ -106,12 +113,18 @@ mod tests {
 
     #[test]
     fn right_triangle_areas_are_known() {
-        let soup = TriSoup { positions: vec![DVec3::ZERO, DVec3::X, DVec3::Y], triangles: vec![[0, 1, 2]] };
+        let soup = TriSoup {
+            positions: vec![DVec3::ZERO, DVec3::X, DVec3::Y],
+            triangles: vec![[0, 1, 2]],
+        };
         let mesh = Mesh::from_soup(&soup).unwrap();
         assert_eq!(face_area(&mesh, FaceId(0)), 0.5);
         // Right angle at vertex 0: Voronoi regions are the squares to the hypotenuse midpoint.
         assert_eq!(vertex_areas(&mesh), vec![0.25, 0.125, 0.125]);
-        let obtuse = TriSoup { positions: vec![DVec3::ZERO, DVec3::X, DVec3::new(-1.0, 1.0, 0.0)], triangles: vec![[0, 1, 2]] };
+        let obtuse = TriSoup {
+            positions: vec![DVec3::ZERO, DVec3::X, DVec3::new(-1.0, 1.0, 0.0)],
+            triangles: vec![[0, 1, 2]],
+        };
         let mesh = Mesh::from_soup(&obtuse).unwrap();
         assert_eq!(vertex_areas(&mesh), vec![0.25, 0.125, 0.125]);
     }

@@ -27,7 +27,11 @@ fn half_cot_opposite(mesh: &Mesh, h: HalfedgeId) -> f64 {
     let u = mesh.position(mesh.tail(h)) - apex;
     let v = mesh.position(mesh.head(h)) - apex;
     let double_area = u.cross(v).length();
-    if double_area == 0.0 { 0.0 } else { 0.5 * u.dot(v) / double_area }
+    if double_area == 0.0 {
+        0.0
+    } else {
+        0.5 * u.dot(v) / double_area
+    }
 }
 
 fn halfedges(mesh: &Mesh) -> impl Iterator<Item = HalfedgeId> + use<> {
@@ -79,7 +83,17 @@ pub fn mean_curvature_normals(mesh: &Mesh) -> Vec<DVec3> {
         laplacian[j] -= difference;
     }
     let areas = vertex_areas(mesh);
-    laplacian.iter().zip(&areas).map(|(&lx, &area)| if area > 0.0 { lx / (2.0 * area) } else { DVec3::ZERO }).collect()
+    laplacian
+        .iter()
+        .zip(&areas)
+        .map(|(&lx, &area)| {
+            if area > 0.0 {
+                lx / (2.0 * area)
+            } else {
+                DVec3::ZERO
+            }
+        })
+        .collect()
 }
 
 /// Signed mean curvature `H` at every vertex: the mean curvature normal along the outward
@@ -89,7 +103,11 @@ pub fn mean_curvature_normals(mesh: &Mesh) -> Vec<DVec3> {
 /// flat patch but otherwise not a curvature.
 pub fn mean_curvature(mesh: &Mesh) -> Vec<f64> {
     let normals = vertex_normals(mesh);
-    mean_curvature_normals(mesh).iter().zip(&normals).map(|(hn, n)| hn.dot(*n)).collect()
+    mean_curvature_normals(mesh)
+        .iter()
+        .zip(&normals)
+        .map(|(hn, n)| hn.dot(*n))
+        .collect()
 }
 
 #[cfg(test)]
@@ -98,7 +116,9 @@ mod tests {
     use crate::mesh::{TriSoup, fixtures, primitives};
 
     fn interior_vertices(mesh: &Mesh) -> impl Iterator<Item = usize> + '_ {
-        mesh.vertices().filter(|&v| !mesh.is_boundary_vertex(v)).map(|v| v.index())
+        mesh.vertices()
+            .filter(|&v| !mesh.is_boundary_vertex(v))
+            .map(|v| v.index())
     }
 
     /// `L f` for a scalar function per vertex.
@@ -122,16 +142,30 @@ mod tests {
                     assert!((l.get(col, row) - value).abs() < 1e-14, "{}", fixture.name);
                 }
             }
-            assert!(uniform_laplacian(mesh).column(0).any(|(row, v)| row == 0 && v == 1.0));
+            assert!(
+                uniform_laplacian(mesh)
+                    .column(0)
+                    .any(|(row, v)| row == 0 && v == 1.0)
+            );
         }
     }
 
     #[test]
     fn cotan_weights_of_a_right_triangle() {
-        let soup = TriSoup { positions: vec![DVec3::ZERO, DVec3::X, DVec3::Y], triangles: vec![[0, 1, 2]] };
+        let soup = TriSoup {
+            positions: vec![DVec3::ZERO, DVec3::X, DVec3::Y],
+            triangles: vec![[0, 1, 2]],
+        };
         let l = cotan_laplacian(&Mesh::from_soup(&soup).unwrap());
         // Edge 1-2 faces the right angle (cot 0); the legs face 45 degree angles (cot 1).
-        assert_eq!(l.to_dense(), vec![vec![1.0, -0.5, -0.5], vec![-0.5, 0.5, 0.0], vec![-0.5, 0.0, 0.5]]);
+        assert_eq!(
+            l.to_dense(),
+            vec![
+                vec![1.0, -0.5, -0.5],
+                vec![-0.5, 0.5, 0.0],
+                vec![-0.5, 0.0, 0.5]
+            ]
+        );
     }
 
     #[test]
@@ -150,7 +184,10 @@ mod tests {
         }
         let f: Vec<f64> = mesh.positions().iter().map(|&p| linear(p)).collect();
         let cotan = apply(&cotan_laplacian(&mesh), &f);
-        assert!(interior.iter().all(|&i| cotan[i].abs() < 1e-12), "{cotan:?}");
+        assert!(
+            interior.iter().all(|&i| cotan[i].abs() < 1e-12),
+            "{cotan:?}"
+        );
         let curvature = mean_curvature(&mesh);
         assert!(curvature.iter().all(|h| h.abs() < 1e-12));
     }
@@ -163,11 +200,20 @@ mod tests {
         let mut previous_error = f64::INFINITY;
         for subdivisions in 2..=5 {
             let mesh = primitives::icosphere(radius, subdivisions);
-            let error = mean_curvature(&mesh).iter().map(|h| (h * radius - 1.0).abs()).fold(0.0, f64::max);
-            assert!(error < previous_error / 3.0, "subdivision {subdivisions}: error {error}, before {previous_error}");
+            let error = mean_curvature(&mesh)
+                .iter()
+                .map(|h| (h * radius - 1.0).abs())
+                .fold(0.0, f64::max);
+            assert!(
+                error < previous_error / 3.0,
+                "subdivision {subdivisions}: error {error}, before {previous_error}"
+            );
             previous_error = error;
         }
-        assert!(previous_error < 1e-5, "relative error {previous_error} at 5 subdivisions");
+        assert!(
+            previous_error < 1e-5,
+            "relative error {previous_error} at 5 subdivisions"
+        );
         let coarse = mean_curvature(&primitives::icosphere(radius, 1));
         assert!(coarse.iter().all(|h| (h * radius - 1.0).abs() < 1e-12));
     }
@@ -179,6 +225,11 @@ mod tests {
         let mesh = primitives::icosphere(1.0, 3);
         let mut delta = vec![DVec3::ZERO; mesh.n_vertices()];
         uniform_laplacian(&mesh).mul_dvec3(mesh.positions(), &mut delta);
-        assert!(delta.iter().zip(mesh.positions()).all(|(d, p)| d.dot(*p) > 0.0));
+        assert!(
+            delta
+                .iter()
+                .zip(mesh.positions())
+                .all(|(d, p)| d.dot(*p) > 0.0)
+        );
     }
 }

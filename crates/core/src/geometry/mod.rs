@@ -9,7 +9,11 @@
 mod area;
 mod laplacian;
 mod normals;
+mod raycast;
 
-pub use area::{enclosed_volume, face_area, mass_matrix, total_area, vertex_areas, vertex_areas_barycentric};
+pub use area::{
+    enclosed_volume, face_area, mass_matrix, total_area, vertex_areas, vertex_areas_barycentric,
+};
 pub use laplacian::{cotan_laplacian, mean_curvature, mean_curvature_normals, uniform_laplacian};
 pub use normals::{face_normal, face_normals, vertex_normals, vertex_normals_into};
+pub use raycast::{RayHit, raycast};

@@ -10,7 +10,7 @@ use glam::{DMat4, DVec3};
 use gltf::accessor::{DataType, Dimensions};
 use gltf::mesh::Mode;
 
-use super::base64;
+use base64::Engine as _;
 use super::extras::NodeExtras;
 use crate::mesh::TriSoup;
 
@@ -216,7 +216,9 @@ fn load_buffers(gltf: &gltf::Gltf) -> Result<Vec<Vec<u8>>, GltfError> {
                     let Some((_, payload)) = rest.split_once(";base64,") else {
                         return Err(GltfError::BadDataUri { index });
                     };
-                    base64::decode(payload).ok_or(GltfError::BadDataUri { index })?
+                    base64::engine::general_purpose::STANDARD
+                        .decode(payload)
+                        .map_err(|_| GltfError::BadDataUri { index })?
                 }
             };
             if data.len() < buffer.length() {

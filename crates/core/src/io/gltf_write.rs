@@ -379,6 +379,7 @@ mod tests {
                 DVec3::new(0.0, 1.0, 0.0),
                 DVec3::new(0.0, 0.0, 1.0),
             ],
+            vertices: Vec::new(),
             closed: true,
             sharp: false,
         };

@@ -129,6 +129,7 @@ mod tests {
                 mesh,
                 curves: vec![ControlCurve {
                     points: vec![DVec3::X, DVec3::Y],
+                    vertices: Vec::new(),
                     closed: false,
                     sharp: true,
                 }],

@@ -6,7 +6,6 @@
 //! user drew is lost. [`inspect_glb`] reads a .glb (or .gltf JSON with embedded `data:` URIs)
 //! and reports the topology of its triangles.
 
-mod base64;
 mod extras;
 mod gltf_read;
 mod gltf_write;

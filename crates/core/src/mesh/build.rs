@@ -18,7 +18,9 @@ impl Mesh {
         let n_vertices = soup.positions.len();
         check_triangles(soup)?;
         if let Some(vertex) = soup.positions.iter().position(|p| !p.is_finite()) {
-            return Err(MeshError::NonFinitePosition { vertex: vertex as u32 });
+            return Err(MeshError::NonFinitePosition {
+                vertex: vertex as u32,
+            });
         }
         let twin = match_twins(&soup.triangles)?;
         let mut mesh = Mesh {
@@ -29,7 +31,9 @@ impl Mesh {
         };
         let n_outgoing = mesh.assign_vertex_halfedges();
         if let Some(vertex) = mesh.vertex_halfedge.iter().position(|&h| h == INVALID) {
-            return Err(MeshError::IsolatedVertex { vertex: vertex as u32 });
+            return Err(MeshError::IsolatedVertex {
+                vertex: vertex as u32,
+            });
         }
         for v in mesh.vertices() {
             if mesh.outgoing_halfedges(v).count() != n_outgoing[v.index()] as usize {
@@ -42,7 +46,10 @@ impl Mesh {
 
     /// The positions and triangles, without connectivity.
     pub fn to_soup(&self) -> TriSoup {
-        TriSoup { positions: self.positions.clone(), triangles: self.triangles.clone() }
+        TriSoup {
+            positions: self.positions.clone(),
+            triangles: self.triangles.clone(),
+        }
     }
 
     /// Picks each vertex's half-edge (a boundary one when there is one) and returns how many
@@ -65,7 +72,11 @@ fn check_triangles(soup: &TriSoup) -> Result<(), MeshError> {
     for (face, t) in soup.triangles.iter().enumerate() {
         let face = face as u32;
         if let Some(&index) = t.iter().find(|&&i| i as usize >= n_vertices) {
-            return Err(MeshError::IndexOutOfRange { face, index, n_vertices });
+            return Err(MeshError::IndexOutOfRange {
+                face,
+                index,
+                n_vertices,
+            });
         }
         if t[0] == t[1] || t[1] == t[2] || t[2] == t[0] {
             return Err(MeshError::DegenerateTriangle { face });
@@ -102,7 +113,10 @@ fn match_twins(triangles: &[[u32; 3]]) -> Result<Vec<u32>, MeshError> {
             }
             _ => {
                 let (a, b) = edge(group[0] as usize);
-                return Err(MeshError::NonManifoldEdge { a: a.min(b), b: a.max(b) });
+                return Err(MeshError::NonManifoldEdge {
+                    a: a.min(b),
+                    b: a.max(b),
+                });
             }
         }
     }
@@ -134,8 +148,13 @@ mod tests {
     }
 
     fn soup(n_vertices: usize, triangles: &[[u32; 3]]) -> TriSoup {
-        let positions = (0..n_vertices).map(|i| DVec3::new(i as f64, (i * i) as f64, 0.5)).collect();
-        TriSoup { positions, triangles: triangles.to_vec() }
+        let positions = (0..n_vertices)
+            .map(|i| DVec3::new(i as f64, (i * i) as f64, 0.5))
+            .collect();
+        TriSoup {
+            positions,
+            triangles: triangles.to_vec(),
+        }
     }
 
     #[test]
@@ -162,7 +181,16 @@ mod tests {
     #[test]
     fn rejects_two_closed_fans_at_one_vertex() {
         // Two tetrahedra glued at vertex 0: every edge is manifold, the vertex is not.
-        let tets = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3], [0, 5, 4], [0, 4, 6], [0, 6, 5], [4, 5, 6]];
+        let tets = [
+            [0, 2, 1],
+            [0, 1, 3],
+            [0, 3, 2],
+            [1, 2, 3],
+            [0, 5, 4],
+            [0, 4, 6],
+            [0, 6, 5],
+            [4, 5, 6],
+        ];
         let err = Mesh::from_soup(&soup(7, &tets)).unwrap_err();
         assert_eq!(err, MeshError::NonManifoldVertex { vertex: 0 });
     }
@@ -170,7 +198,14 @@ mod tests {
     #[test]
     fn rejects_out_of_range_degenerate_flipped_isolated_and_nan() {
         let err = Mesh::from_soup(&soup(3, &[[0, 1, 3]])).unwrap_err();
-        assert_eq!(err, MeshError::IndexOutOfRange { face: 0, index: 3, n_vertices: 3 });
+        assert_eq!(
+            err,
+            MeshError::IndexOutOfRange {
+                face: 0,
+                index: 3,
+                n_vertices: 3
+            }
+        );
         let err = Mesh::from_soup(&soup(3, &[[0, 1, 2], [0, 2, 2]])).unwrap_err();
         assert_eq!(err, MeshError::DegenerateTriangle { face: 1 });
         let err = Mesh::from_soup(&soup(4, &[[0, 1, 2], [0, 1, 3]])).unwrap_err();
@@ -179,20 +214,32 @@ mod tests {
         assert_eq!(err, MeshError::IsolatedVertex { vertex: 3 });
         let mut nan = soup(3, &[[0, 1, 2]]);
         nan.positions[1].y = f64::NAN;
-        assert_eq!(Mesh::from_soup(&nan).unwrap_err(), MeshError::NonFinitePosition { vertex: 1 });
+        assert_eq!(
+            Mesh::from_soup(&nan).unwrap_err(),
+            MeshError::NonFinitePosition { vertex: 1 }
+        );
     }
 
     #[test]
     fn errors_read_as_sentences() {
         let err = MeshError::NonManifoldEdge { a: 3, b: 7 };
-        assert_eq!(err.to_string(), "The edge between vertices 3 and 7 is shared by more than two triangles.");
+        assert_eq!(
+            err.to_string(),
+            "The edge between vertices 3 and 7 is shared by more than two triangles."
+        );
     }
 
     #[test]
     fn single_triangle_and_empty_soup_build() {
         let mesh = Mesh::from_soup(&soup(3, &[[0, 1, 2]])).unwrap();
-        assert_eq!((mesh.n_vertices(), mesh.n_edges(), mesh.n_faces()), (3, 3, 1));
-        assert_eq!(mesh.vertex_neighbors(VertexId(0)).collect::<Vec<_>>(), ids(&[1, 2]));
+        assert_eq!(
+            (mesh.n_vertices(), mesh.n_edges(), mesh.n_faces()),
+            (3, 3, 1)
+        );
+        assert_eq!(
+            mesh.vertex_neighbors(VertexId(0)).collect::<Vec<_>>(),
+            ids(&[1, 2])
+        );
         let empty = Mesh::from_soup(&TriSoup::default()).unwrap();
         assert_eq!(empty.n_vertices(), 0);
         assert!(empty.is_closed());

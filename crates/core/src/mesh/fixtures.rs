@@ -22,7 +22,12 @@ pub struct Fixture {
 }
 
 fn fixture(name: &'static str, mesh: Mesh, is_closed: bool, genus: u32) -> Fixture {
-    Fixture { name, mesh, is_closed, genus }
+    Fixture {
+        name,
+        mesh,
+        is_closed,
+        genus,
+    }
 }
 
 /// Builds a fixture mesh from a soup known to be manifold.
@@ -35,7 +40,13 @@ fn from_soup(soup: TriSoup) -> Mesh {
 /// Removes the listed faces (and vertices left unused) from a mesh.
 fn without_faces(mesh: &Mesh, is_removed: impl Fn(usize) -> bool) -> Mesh {
     let mut soup = mesh.to_soup();
-    soup.triangles = soup.triangles.iter().enumerate().filter(|(f, _)| !is_removed(*f)).map(|(_, t)| *t).collect();
+    soup.triangles = soup
+        .triangles
+        .iter()
+        .enumerate()
+        .filter(|(f, _)| !is_removed(*f))
+        .map(|(_, t)| *t)
+        .collect();
     soup.remove_unreferenced_vertices();
     from_soup(soup)
 }
@@ -44,7 +55,10 @@ fn without_faces(mesh: &Mesh, is_removed: impl Fn(usize) -> bool) -> Mesh {
 pub fn closed_meshes() -> Vec<Fixture> {
     let mut two_spheres = primitives::icosphere(1.0, 1).to_soup();
     let mut second = primitives::icosphere(0.5, 1).to_soup();
-    second.positions.iter_mut().for_each(|p| *p += DVec3::new(3.0, 0.0, 0.0));
+    second
+        .positions
+        .iter_mut()
+        .for_each(|p| *p += DVec3::new(3.0, 0.0, 0.0));
     two_spheres.append(&second);
     vec![
         fixture("icosahedron", primitives::icosphere(1.0, 0), true, 0),
@@ -58,7 +72,10 @@ pub fn closed_meshes() -> Vec<Fixture> {
 
 /// Surfaces with boundary: grids, a single triangle, a sphere with a hole, an open tube.
 pub fn boundary_meshes() -> Vec<Fixture> {
-    let triangle = TriSoup { positions: vec![DVec3::ZERO, DVec3::X, DVec3::Y], triangles: vec![[0, 1, 2]] };
+    let triangle = TriSoup {
+        positions: vec![DVec3::ZERO, DVec3::X, DVec3::Y],
+        triangles: vec![[0, 1, 2]],
+    };
     let sphere = primitives::icosphere(1.0, 2);
     // Removing one ring of the torus (faces of segment 0 around the axis) leaves a tube.
     let n_minor = 8;
@@ -67,9 +84,24 @@ pub fn boundary_meshes() -> Vec<Fixture> {
         fixture("triangle", from_soup(triangle), false, 0),
         fixture("grid_square", primitives::grid(6, 6, 1.0), false, 0),
         fixture("grid_strip", primitives::grid(9, 2, 3.0), false, 0),
-        fixture("sphere_with_hole", without_faces(&sphere, |f| f < 4), false, 0),
-        fixture("open_tube", without_faces(&torus, |f| f < 2 * n_minor), false, 0),
-        fixture("torus_with_hole", without_faces(&torus, |f| f == 40), false, 1),
+        fixture(
+            "sphere_with_hole",
+            without_faces(&sphere, |f| f < 4),
+            false,
+            0,
+        ),
+        fixture(
+            "open_tube",
+            without_faces(&torus, |f| f < 2 * n_minor),
+            false,
+            0,
+        ),
+        fixture(
+            "torus_with_hole",
+            without_faces(&torus, |f| f == 40),
+            false,
+            1,
+        ),
     ]
 }
 
@@ -96,8 +128,18 @@ mod tests {
 
     #[test]
     fn open_tube_has_two_rims() {
-        let tube = boundary_meshes().into_iter().find(|f| f.name == "open_tube").unwrap();
+        let tube = boundary_meshes()
+            .into_iter()
+            .find(|f| f.name == "open_tube")
+            .unwrap();
         assert_eq!(tube.mesh.n_boundary_loops(), 2);
-        assert_eq!(tube.mesh.boundary_loops().iter().map(Vec::len).collect::<Vec<_>>(), vec![8, 8]);
+        assert_eq!(
+            tube.mesh
+                .boundary_loops()
+                .iter()
+                .map(Vec::len)
+                .collect::<Vec<_>>(),
+            vec![8, 8]
+        );
     }
 }

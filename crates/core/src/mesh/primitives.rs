@@ -16,7 +16,10 @@ use super::{Mesh, TriSoup};
 /// Builds a mesh from a soup the generator knows is manifold.
 fn mesh_from_valid_soup(soup: &TriSoup) -> Mesh {
     let result = Mesh::from_soup(soup);
-    debug_assert!(result.is_ok(), "generated soup is not a manifold: {result:?}");
+    debug_assert!(
+        result.is_ok(),
+        "generated soup is not a manifold: {result:?}"
+    );
     result.unwrap_or_default()
 }
 
@@ -29,7 +32,10 @@ fn icosahedron() -> TriSoup {
         (0.0, -1.0, phi), (0.0, 1.0, phi), (0.0, -1.0, -phi), (0.0, 1.0, -phi),
         (phi, 0.0, -1.0), (phi, 0.0, 1.0), (-phi, 0.0, -1.0), (-phi, 0.0, 1.0),
     ];
-    let positions = corners.iter().map(|&(x, y, z)| DVec3::new(x, y, z).normalize()).collect();
+    let positions = corners
+        .iter()
+        .map(|&(x, y, z)| DVec3::new(x, y, z).normalize())
+        .collect();
     #[rustfmt::skip]
     let triangles = vec![
         [0, 11, 5], [0, 5, 1], [0, 1, 7], [0, 7, 10], [0, 10, 11],
@@ -37,7 +43,10 @@ fn icosahedron() -> TriSoup {
         [3, 9, 4], [3, 4, 2], [3, 2, 6], [3, 6, 8], [3, 8, 9],
         [4, 9, 5], [2, 4, 11], [6, 2, 10], [8, 6, 7], [9, 8, 1],
     ];
-    TriSoup { positions, triangles }
+    TriSoup {
+        positions,
+        triangles,
+    }
 }
 
 /// Splits every triangle of a unit-sphere soup into four and pushes the new vertices onto
@@ -46,18 +55,23 @@ fn subdivide_on_sphere(soup: &TriSoup) -> TriSoup {
     let mut positions = soup.positions.clone();
     let mut midpoint_of_edge: HashMap<(u32, u32), u32> = HashMap::new();
     let mut midpoint = |a: u32, b: u32| -> u32 {
-        *midpoint_of_edge.entry((a.min(b), a.max(b))).or_insert_with(|| {
-            let p = (positions[a as usize] + positions[b as usize]).normalize();
-            positions.push(p);
-            positions.len() as u32 - 1
-        })
+        *midpoint_of_edge
+            .entry((a.min(b), a.max(b)))
+            .or_insert_with(|| {
+                let p = (positions[a as usize] + positions[b as usize]).normalize();
+                positions.push(p);
+                positions.len() as u32 - 1
+            })
     };
     let mut triangles = Vec::with_capacity(4 * soup.triangles.len());
     for &[a, b, c] in &soup.triangles {
         let (ab, bc, ca) = (midpoint(a, b), midpoint(b, c), midpoint(c, a));
         triangles.extend([[a, ab, ca], [b, bc, ab], [c, ca, bc], [ab, bc, ca]]);
     }
-    TriSoup { positions, triangles }
+    TriSoup {
+        positions,
+        triangles,
+    }
 }
 
 /// A sphere of `radius` at the origin: an icosahedron split `subdivisions` times.
@@ -93,11 +107,19 @@ pub fn grid(nx: usize, ny: usize, size: f64) -> Mesh {
     let mut triangles = Vec::with_capacity(2 * nx * ny);
     for j in 0..ny {
         for i in 0..nx {
-            let (a, b, c, d) = (index(i, j), index(i + 1, j), index(i + 1, j + 1), index(i, j + 1));
+            let (a, b, c, d) = (
+                index(i, j),
+                index(i + 1, j),
+                index(i + 1, j + 1),
+                index(i, j + 1),
+            );
             triangles.extend([[a, b, c], [a, c, d]]);
         }
     }
-    mesh_from_valid_soup(&TriSoup { positions, triangles })
+    mesh_from_valid_soup(&TriSoup {
+        positions,
+        triangles,
+    })
 }
 
 /// A torus around the z axis: tube centre at distance `major`, tube radius `minor`, with
@@ -118,11 +140,19 @@ pub fn torus(major: f64, minor: f64, n_major: usize, n_minor: usize) -> Mesh {
     for i in 0..n_major {
         for j in 0..n_minor {
             // d(position)/du x d(position)/dv points out of the tube, so this order is outward.
-            let (a, b, c, d) = (index(i, j), index(i + 1, j), index(i + 1, j + 1), index(i, j + 1));
+            let (a, b, c, d) = (
+                index(i, j),
+                index(i + 1, j),
+                index(i + 1, j + 1),
+                index(i, j + 1),
+            );
             triangles.extend([[a, b, c], [a, c, d]]);
         }
     }
-    mesh_from_valid_soup(&TriSoup { positions, triangles })
+    mesh_from_valid_soup(&TriSoup {
+        positions,
+        triangles,
+    })
 }
 
 /// An axis-aligned cube with side `size` centred on the origin: 8 vertices, 12 triangles.
@@ -145,7 +175,10 @@ pub fn cube(size: f64) -> Mesh {
         [0, 4, 6], [0, 6, 2], // -x
         [1, 3, 7], [1, 7, 5], // +x
     ];
-    mesh_from_valid_soup(&TriSoup { positions, triangles })
+    mesh_from_valid_soup(&TriSoup {
+        positions,
+        triangles,
+    })
 }
 
 #[cfg(test)]
@@ -164,19 +197,29 @@ mod tests {
         let mesh = torus(2.0, 0.5, 10, 7);
         assert_eq!((mesh.n_vertices(), mesh.n_faces()), (70, 140));
         let mesh = cube(2.0);
-        assert_eq!((mesh.n_vertices(), mesh.n_edges(), mesh.n_faces()), (8, 18, 12));
+        assert_eq!(
+            (mesh.n_vertices(), mesh.n_edges(), mesh.n_faces()),
+            (8, 18, 12)
+        );
     }
 
     #[test]
     fn icosphere_vertices_lie_on_the_sphere() {
         let mesh = icosphere(2.5, 3);
-        assert!(mesh.positions().iter().all(|p| (p.length() - 2.5).abs() < 1e-12));
+        assert!(
+            mesh.positions()
+                .iter()
+                .all(|p| (p.length() - 2.5).abs() < 1e-12)
+        );
     }
 
     #[test]
     fn grid_spans_its_size_and_torus_its_radii() {
         let (lo, hi) = grid(4, 2, 2.0).bounding_box().unwrap();
-        assert_eq!((lo, hi), (DVec3::new(-1.0, -0.5, 0.0), DVec3::new(1.0, 0.5, 0.0)));
+        assert_eq!(
+            (lo, hi),
+            (DVec3::new(-1.0, -0.5, 0.0), DVec3::new(1.0, 0.5, 0.0))
+        );
         let mesh = torus(3.0, 1.0, 24, 12);
         for p in mesh.positions() {
             let tube_centre = DVec3::new(p.x, p.y, 0.0).normalize() * 3.0;

@@ -21,7 +21,8 @@ impl TriSoup {
     pub fn append(&mut self, other: &TriSoup) {
         let offset = self.positions.len() as u32;
         self.positions.extend_from_slice(&other.positions);
-        self.triangles.extend(other.triangles.iter().map(|t| t.map(|i| i + offset)));
+        self.triangles
+            .extend(other.triangles.iter().map(|t| t.map(|i| i + offset)));
     }
 
     /// Drops vertices no triangle uses and renumbers the rest, keeping their order.
@@ -61,7 +62,10 @@ mod tests {
 
     #[test]
     fn append_offsets_indices() {
-        let tri = TriSoup { positions: vec![DVec3::X, DVec3::Y, DVec3::Z], triangles: vec![[0, 1, 2]] };
+        let tri = TriSoup {
+            positions: vec![DVec3::X, DVec3::Y, DVec3::Z],
+            triangles: vec![[0, 1, 2]],
+        };
         let mut both = tri.clone();
         both.append(&tri);
         assert_eq!(both.positions.len(), 6);

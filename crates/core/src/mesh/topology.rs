@@ -139,15 +139,24 @@ mod tests {
         assert_eq!(mesh.euler_characteristic(), 1);
         // Shoelace formula: positive signed area means counter-clockwise seen from +z.
         let p: Vec<DVec3> = loops[0].iter().map(|&v| mesh.position(v)).collect();
-        let twice_area: f64 = (0..p.len()).map(|i| p[i].truncate().perp_dot(p[(i + 1) % p.len()].truncate())).sum();
-        assert!((twice_area / 2.0 - 0.75).abs() < 1e-12, "area {}", twice_area / 2.0);
+        let twice_area: f64 = (0..p.len())
+            .map(|i| p[i].truncate().perp_dot(p[(i + 1) % p.len()].truncate()))
+            .sum();
+        assert!(
+            (twice_area / 2.0 - 0.75).abs() < 1e-12,
+            "area {}",
+            twice_area / 2.0
+        );
     }
 
     #[test]
     fn two_disjoint_spheres_are_two_components() {
         let mut soup = primitives::icosphere(1.0, 1).to_soup();
         let mut other = primitives::icosphere(0.5, 2).to_soup();
-        other.positions.iter_mut().for_each(|p| *p += DVec3::X * 5.0);
+        other
+            .positions
+            .iter_mut()
+            .for_each(|p| *p += DVec3::X * 5.0);
         soup.append(&other);
         let mesh = Mesh::from_soup(&soup).unwrap();
         assert_eq!(mesh.n_components(), 2);
@@ -173,15 +182,31 @@ mod tests {
     #[test]
     fn fixtures_report_their_tagged_topology() {
         for fixture in fixtures::all() {
-            assert_eq!(fixture.mesh.is_closed(), fixture.is_closed, "{}", fixture.name);
-            assert_eq!(fixture.mesh.genus(), Some(fixture.genus), "{}", fixture.name);
+            assert_eq!(
+                fixture.mesh.is_closed(),
+                fixture.is_closed,
+                "{}",
+                fixture.name
+            );
+            assert_eq!(
+                fixture.mesh.genus(),
+                Some(fixture.genus),
+                "{}",
+                fixture.name
+            );
         }
     }
 
     #[test]
     fn single_triangle_loop_is_its_corners() {
-        let soup = TriSoup { positions: vec![DVec3::ZERO, DVec3::X, DVec3::Y], triangles: vec![[0, 1, 2]] };
+        let soup = TriSoup {
+            positions: vec![DVec3::ZERO, DVec3::X, DVec3::Y],
+            triangles: vec![[0, 1, 2]],
+        };
         let mesh = Mesh::from_soup(&soup).unwrap();
-        assert_eq!(mesh.boundary_loops(), vec![vec![VertexId(0), VertexId(1), VertexId(2)]]);
+        assert_eq!(
+            mesh.boundary_loops(),
+            vec![vec![VertexId(0), VertexId(1), VertexId(2)]]
+        );
     }
 }

@@ -16,7 +16,9 @@ impl Mesh {
         self.validate_sizes()?;
         self.validate_triangles()?;
         if let Some(vertex) = self.positions.iter().position(|p| !p.is_finite()) {
-            return Err(MeshError::NonFinitePosition { vertex: vertex as u32 });
+            return Err(MeshError::NonFinitePosition {
+                vertex: vertex as u32,
+            });
         }
         self.validate_twins()?;
         self.validate_vertex_fans()
@@ -45,7 +47,11 @@ impl Mesh {
         for (face, t) in self.triangles.iter().enumerate() {
             let face = face as u32;
             if let Some(&index) = t.iter().find(|&&i| i as usize >= n_vertices) {
-                return Err(MeshError::IndexOutOfRange { face, index, n_vertices });
+                return Err(MeshError::IndexOutOfRange {
+                    face,
+                    index,
+                    n_vertices,
+                });
             }
             if t[0] == t[1] || t[1] == t[2] || t[2] == t[0] {
                 return Err(MeshError::DegenerateTriangle { face });
@@ -60,13 +66,22 @@ impl Mesh {
         for h in (0..n_halfedges).map(super::HalfedgeId) {
             let Some(t) = self.twin(h) else { continue };
             if t.0 >= n_halfedges || t == h {
-                return Err(broken(format!("half-edge {} has twin {}, which is not valid.", h.0, t.0)));
+                return Err(broken(format!(
+                    "half-edge {} has twin {}, which is not valid.",
+                    h.0, t.0
+                )));
             }
             if self.twin[t.index()] != h.0 {
-                return Err(broken(format!("half-edge {} is the twin of {}, but not the reverse.", t.0, h.0)));
+                return Err(broken(format!(
+                    "half-edge {} is the twin of {}, but not the reverse.",
+                    t.0, h.0
+                )));
             }
             if self.tail(t) != self.head(h) || self.head(t) != self.tail(h) {
-                return Err(broken(format!("half-edges {} and {} are twins but not opposite.", h.0, t.0)));
+                return Err(broken(format!(
+                    "half-edges {} and {} are twins but not opposite.",
+                    h.0, t.0
+                )));
             }
         }
         let mut directed: Vec<(u32, u32)> = (0..n_halfedges)
@@ -76,7 +91,9 @@ impl Mesh {
         directed.sort_unstable();
         if let Some(pair) = directed.windows(2).find(|pair| pair[0] == pair[1]) {
             let (a, b) = pair[0];
-            return Err(broken(format!("the edge from vertex {a} to {b} occurs twice.")));
+            return Err(broken(format!(
+                "the edge from vertex {a} to {b} occurs twice."
+            )));
         }
         Ok(())
     }
@@ -96,7 +113,10 @@ impl Mesh {
                 return Err(MeshError::IsolatedVertex { vertex: v.0 });
             }
             if h as usize >= self.n_halfedges() || self.tail(super::HalfedgeId(h)) != v {
-                return Err(broken(format!("the half-edge of vertex {} does not leave it.", v.0)));
+                return Err(broken(format!(
+                    "the half-edge of vertex {} does not leave it.",
+                    v.0
+                )));
             }
             if is_boundary[v.index()] && !self.is_boundary_vertex(v) {
                 return Err(broken(format!(
@@ -131,15 +151,24 @@ mod tests {
 
         let mut mesh = good.clone();
         mesh.twin[5] = mesh.twin[6];
-        assert!(matches!(mesh.validate(), Err(MeshError::InvalidConnectivity(_))));
+        assert!(matches!(
+            mesh.validate(),
+            Err(MeshError::InvalidConnectivity(_))
+        ));
 
         let mut mesh = good.clone();
         mesh.vertex_halfedge[3] = mesh.vertex_halfedge[4];
-        assert!(matches!(mesh.validate(), Err(MeshError::InvalidConnectivity(_))));
+        assert!(matches!(
+            mesh.validate(),
+            Err(MeshError::InvalidConnectivity(_))
+        ));
 
         let mut mesh = good.clone();
         mesh.positions_mut()[2].x = f64::INFINITY;
-        assert_eq!(mesh.validate(), Err(MeshError::NonFinitePosition { vertex: 2 }));
+        assert_eq!(
+            mesh.validate(),
+            Err(MeshError::NonFinitePosition { vertex: 2 })
+        );
 
         // Point a boundary vertex at one of its interior half-edges.
         let mut mesh = primitives::grid(2, 2, 1.0);
@@ -149,13 +178,22 @@ mod tests {
             .find(|&h| mesh.tail(h) == v && !mesh.is_boundary_halfedge(h))
             .unwrap();
         mesh.vertex_halfedge[v.index()] = interior.0;
-        assert!(matches!(mesh.validate(), Err(MeshError::InvalidConnectivity(_))));
+        assert!(matches!(
+            mesh.validate(),
+            Err(MeshError::InvalidConnectivity(_))
+        ));
     }
 
     /// A random subset of a mesh's faces, with unused vertices dropped.
     fn face_subset(mesh: &Mesh, keep: &[bool]) -> TriSoup {
         let mut soup = mesh.to_soup();
-        soup.triangles = soup.triangles.iter().zip(keep.iter().cycle()).filter(|(_, k)| **k).map(|(t, _)| *t).collect();
+        soup.triangles = soup
+            .triangles
+            .iter()
+            .zip(keep.iter().cycle())
+            .filter(|(_, k)| **k)
+            .map(|(t, _)| *t)
+            .collect();
         soup.remove_unreferenced_vertices();
         soup
     }

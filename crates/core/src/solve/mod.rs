@@ -8,12 +8,15 @@
 
 mod normal;
 mod prefactored;
+mod singular;
 mod sparse;
+mod triplets;
 
 use glam::DVec3;
 
 pub use prefactored::Prefactored;
-pub use sparse::{SparseMatrix, Triplets};
+pub use sparse::SparseMatrix;
+pub use triplets::Triplets;
 
 /// Why a sparse solve failed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -79,15 +82,20 @@ pub fn solve_least_squares(
 }
 
 #[cfg(test)]
+#[allow(clippy::needless_range_loop)]
 pub(crate) mod tests {
     use super::*;
+    use crate::geometry::uniform_laplacian;
+    use crate::mesh::{Mesh, primitives};
     use proptest::prelude::*;
 
     /// Solves a small dense system by Gaussian elimination with partial pivoting.
     pub(crate) fn dense_solve(mut m: Vec<Vec<f64>>, mut rhs: Vec<f64>) -> Vec<f64> {
         let n = rhs.len();
         for k in 0..n {
-            let pivot = (k..n).max_by(|&i, &j| m[i][k].abs().total_cmp(&m[j][k].abs())).unwrap();
+            let pivot = (k..n)
+                .max_by(|&i, &j| m[i][k].abs().total_cmp(&m[j][k].abs()))
+                .unwrap();
             m.swap(k, pivot);
             rhs.swap(k, pivot);
             for i in k + 1..n {
@@ -106,15 +114,35 @@ pub(crate) mod tests {
     }
 
     /// The constrained least-squares minimiser of one coordinate, by dense normal equations.
-    pub(crate) fn dense_least_squares(a: &[Vec<f64>], b: &[f64], fixed: &[bool], fixed_values: &[f64]) -> Vec<f64> {
+    pub(crate) fn dense_least_squares(
+        a: &[Vec<f64>],
+        b: &[f64],
+        fixed: &[bool],
+        fixed_values: &[f64],
+    ) -> Vec<f64> {
         let free: Vec<usize> = (0..fixed.len()).filter(|&j| !fixed[j]).collect();
         let residual: Vec<f64> = a
             .iter()
             .zip(b)
-            .map(|(row, &b)| b - (0..fixed.len()).filter(|&j| fixed[j]).map(|j| row[j] * fixed_values[j]).sum::<f64>())
+            .map(|(row, &b)| {
+                b - (0..fixed.len())
+                    .filter(|&j| fixed[j])
+                    .map(|j| row[j] * fixed_values[j])
+                    .sum::<f64>()
+            })
             .collect();
-        let normal = free.iter().map(|&p| free.iter().map(|&q| a.iter().map(|r| r[p] * r[q]).sum()).collect()).collect();
-        let projected = free.iter().map(|&p| a.iter().zip(&residual).map(|(r, s)| r[p] * s).sum()).collect();
+        let normal = free
+            .iter()
+            .map(|&p| {
+                free.iter()
+                    .map(|&q| a.iter().map(|r| r[p] * r[q]).sum())
+                    .collect()
+            })
+            .collect();
+        let projected = free
+            .iter()
+            .map(|&p| a.iter().zip(&residual).map(|(r, s)| r[p] * s).sum())
+            .collect();
         let x_free = dense_solve(normal, projected);
         let mut x = fixed_values.to_vec();
         for (&j, value) in free.iter().zip(x_free) {
@@ -125,7 +153,11 @@ pub(crate) mod tests {
 
     /// A random sparse `m x n` system: a strong diagonal block keeps it well posed, plus
     /// scattered off-diagonal entries.
-    pub(crate) fn random_system(m: usize, n: usize, entries: &[(usize, usize, f64)]) -> SparseMatrix {
+    pub(crate) fn random_system(
+        m: usize,
+        n: usize,
+        entries: &[(usize, usize, f64)],
+    ) -> SparseMatrix {
         let mut t = Triplets::new(m, n);
         for j in 0..n.min(m) {
             t.push(j, j, 4.0);
@@ -161,13 +193,89 @@ pub(crate) mod tests {
         }
     }
 
+    /// A FiberMesh-like system: a Laplacian block plus soft positional rows `w (x_c = p_c)`.
+    fn laplacian_with_soft_rows(
+        mesh: &Mesh,
+        every: usize,
+        weight: f64,
+    ) -> (SparseMatrix, Vec<DVec3>) {
+        let n = mesh.n_vertices();
+        let anchors: Vec<usize> = (0..n).step_by(every).collect();
+        let mut t = Triplets::new(n + anchors.len(), n);
+        t.push_matrix(&uniform_laplacian(mesh), 0, 0, 1.0);
+        let mut b = vec![DVec3::ZERO; n];
+        for (k, &v) in anchors.iter().enumerate() {
+            t.push(n + k, v, weight);
+            b.push(weight * (mesh.positions()[v] + DVec3::Z * 0.1));
+        }
+        (t.build(), b)
+    }
+
+    #[test]
+    fn soft_constraints_match_dense_least_squares() {
+        let mesh = primitives::icosphere(1.0, 1);
+        let (a, b) = laplacian_with_soft_rows(&mesh, 5, 2.0);
+        let n = mesh.n_vertices();
+        let mut fixed = vec![false; n];
+        fixed[3] = true;
+        let fixed_values = mesh.positions().to_vec();
+        let mut solver = Prefactored::new(&a, &fixed).unwrap();
+        let mut x = vec![DVec3::ZERO; n];
+        solver.solve(&b, &fixed_values, &mut x).unwrap();
+        let b_y: Vec<f64> = b.iter().map(|v| v.y).collect();
+        let fixed_y: Vec<f64> = fixed_values.iter().map(|v| v.y).collect();
+        let expected = dense_least_squares(&a.to_dense(), &b_y, &fixed, &fixed_y);
+        assert!(
+            x.iter()
+                .zip(&expected)
+                .all(|(x, e)| (x.y - e).abs() < 1e-10)
+        );
+    }
+
+    #[test]
+    fn large_system_satisfies_the_normal_equations() {
+        // Large enough for faer to pick its supernodal factorization (see `singular.rs`).
+        let mesh = primitives::grid(70, 70, 1.0);
+        let (a, b) = laplacian_with_soft_rows(&mesh, 37, 1.0);
+        let n = mesh.n_vertices();
+        let mut solver = Prefactored::new(&a, &vec![false; n]).unwrap();
+        let mut x = vec![DVec3::ZERO; n];
+        solver.solve(&b, &vec![DVec3::ZERO; n], &mut x).unwrap();
+        // Aᵀ (A x - b) = 0, computed column by column.
+        let mut ax = vec![DVec3::ZERO; a.nrows()];
+        a.mul_dvec3(&x, &mut ax);
+        let worst = (0..n)
+            .map(|col| {
+                a.column(col)
+                    .fold(DVec3::ZERO, |s, (row, v)| s + v * (ax[row] - b[row]))
+                    .length()
+            })
+            .fold(0.0, f64::max);
+        assert!(worst < 1e-9, "normal-equation residual {worst}");
+    }
+
     #[test]
     fn wrong_lengths_are_reported() {
         let a = SparseMatrix::identity(3);
-        let err = solve_least_squares(&a, &[DVec3::ZERO; 2], &[false; 3], &[DVec3::ZERO; 3]).unwrap_err();
-        assert_eq!(err, SolveError::DimensionMismatch { what: "rhs", expected: 3, found: 2 });
+        let err =
+            solve_least_squares(&a, &[DVec3::ZERO; 2], &[false; 3], &[DVec3::ZERO; 3]).unwrap_err();
+        assert_eq!(
+            err,
+            SolveError::DimensionMismatch {
+                what: "rhs",
+                expected: 3,
+                found: 2
+            }
+        );
         assert_eq!(err.to_string(), "The rhs has length 2, but 3 was expected.");
         let err = Prefactored::new(&a, &[false; 4]).unwrap_err();
-        assert_eq!(err, SolveError::DimensionMismatch { what: "fixed", expected: 3, found: 4 });
+        assert_eq!(
+            err,
+            SolveError::DimensionMismatch {
+                what: "fixed",
+                expected: 3,
+                found: 4
+            }
+        );
     }
 }

@@ -53,7 +53,10 @@ impl NormalSystem {
             row_ptr,
             row_entry_pos,
             row_entry_col,
-            normal: SparseColMat::new(SymbolicSparseColMat::new_checked(0, 0, vec![0], None, Vec::new()), Vec::new()),
+            normal: SparseColMat::new(
+                SymbolicSparseColMat::new_checked(0, 0, vec![0], None, Vec::new()),
+                Vec::new(),
+            ),
             scatter: vec![0.0; n_free as usize],
         };
         system.normal = system.symbolic_normal(a, n_free as usize);
@@ -87,17 +90,23 @@ impl NormalSystem {
     pub(crate) fn fill_values(&mut self, a: &SparseMatrix) {
         let a_values = a.values();
         for col in 0..a.ncols() {
-            let Some(fq) = self.free_index(col) else { continue };
+            let Some(fq) = self.free_index(col) else {
+                continue;
+            };
             for (row, a_row_col) in a.column(col) {
                 let entries = self.row_ptr[row] as usize..self.row_ptr[row + 1] as usize;
-                for (&pos, &other) in self.row_entry_pos[entries.clone()].iter().zip(&self.row_entry_col[entries]) {
+                for (&pos, &other) in self.row_entry_pos[entries.clone()]
+                    .iter()
+                    .zip(&self.row_entry_col[entries])
+                {
                     let fp = self.free_of_col[other as usize];
                     if fp != FIXED && fp as usize >= fq {
                         self.scatter[fp as usize] += a_row_col * a_values[pos as usize];
                     }
                 }
             }
-            let slots = self.normal.symbolic().col_ptr()[fq] as usize..self.normal.symbolic().col_ptr()[fq + 1] as usize;
+            let slots = self.normal.symbolic().col_ptr()[fq] as usize
+                ..self.normal.symbolic().col_ptr()[fq + 1] as usize;
             for slot in slots {
                 let fp = self.normal.symbolic().row_idx()[slot] as usize;
                 self.normal.val_mut()[slot] = std::mem::take(&mut self.scatter[fp]);
@@ -113,7 +122,9 @@ impl NormalSystem {
         // `last_seen[fp] == fq` marks free column fp as already in column fq.
         let mut last_seen = vec![FIXED; n_free];
         for col in 0..a.ncols() {
-            let Some(fq) = self.free_index(col) else { continue };
+            let Some(fq) = self.free_index(col) else {
+                continue;
+            };
             let start = row_idx.len();
             last_seen[fq] = fq as u32;
             row_idx.push(fq as u32);
@@ -131,7 +142,10 @@ impl NormalSystem {
             col_ptr.push(row_idx.len() as u32);
         }
         let values = vec![0.0; row_idx.len()];
-        SparseColMat::new(SymbolicSparseColMat::new_checked(n_free, n_free, col_ptr, None, row_idx), values)
+        SparseColMat::new(
+            SymbolicSparseColMat::new_checked(n_free, n_free, col_ptr, None, row_idx),
+            values,
+        )
     }
 }
 
@@ -160,20 +174,34 @@ fn row_view(a: &SparseMatrix) -> (Vec<u32>, Vec<u32>, Vec<u32>) {
 }
 
 #[cfg(test)]
+#[allow(clippy::needless_range_loop)]
 mod tests {
     use super::*;
     use crate::solve::Triplets;
 
     fn dense_normal(a: &[Vec<f64>], free: &[usize]) -> Vec<Vec<f64>> {
         free.iter()
-            .map(|&p| free.iter().map(|&q| a.iter().map(|row| row[p] * row[q]).sum()).collect())
+            .map(|&p| {
+                free.iter()
+                    .map(|&q| a.iter().map(|row| row[p] * row[q]).sum())
+                    .collect()
+            })
             .collect()
     }
 
     #[test]
     fn normal_matrix_matches_dense_product() {
         let mut t = Triplets::new(4, 4);
-        for (r, c, v) in [(0, 0, 1.0), (0, 1, 2.0), (1, 1, -1.0), (1, 3, 4.0), (2, 0, 3.0), (2, 2, 0.5), (3, 3, 2.0), (3, 1, 1.0)] {
+        for (r, c, v) in [
+            (0, 0, 1.0),
+            (0, 1, 2.0),
+            (1, 1, -1.0),
+            (1, 3, 4.0),
+            (2, 0, 3.0),
+            (2, 2, 0.5),
+            (3, 3, 2.0),
+            (3, 1, 1.0),
+        ] {
             t.push(r, c, v);
         }
         let a = t.build();
@@ -186,7 +214,11 @@ mod tests {
         let normal = system.normal();
         for i in 0..3 {
             for j in 0..3 {
-                let stored = normal.as_ref().get(i.max(j), i.min(j)).copied().unwrap_or(0.0);
+                let stored = normal
+                    .as_ref()
+                    .get(i.max(j), i.min(j))
+                    .copied()
+                    .unwrap_or(0.0);
                 assert_eq!(stored, expected[i][j], "entry ({i}, {j})");
             }
             assert_eq!(system.diagonal(i), expected[i][i]);
@@ -196,12 +228,21 @@ mod tests {
     #[test]
     fn refill_after_value_change_matches_fresh_build() {
         let mut t = Triplets::new(3, 3);
-        for (r, c, v) in [(0, 0, 1.0), (0, 1, -1.0), (1, 1, 1.0), (1, 2, -1.0), (2, 2, 1.0)] {
+        for (r, c, v) in [
+            (0, 0, 1.0),
+            (0, 1, -1.0),
+            (1, 1, 1.0),
+            (1, 2, -1.0),
+            (2, 2, 1.0),
+        ] {
             t.push(r, c, v);
         }
         let mut a = t.build();
         let mut system = NormalSystem::new(&a, &[false; 3]);
-        a.values_mut().iter_mut().enumerate().for_each(|(i, v)| *v *= 1.0 + i as f64);
+        a.values_mut()
+            .iter_mut()
+            .enumerate()
+            .for_each(|(i, v)| *v *= 1.0 + i as f64);
         system.fill_values(&a);
         let fresh = NormalSystem::new(&a, &[false; 3]);
         assert_eq!(system.normal().val(), fresh.normal().val());

@@ -8,7 +8,7 @@
 //! and z as three columns of one right-hand side.
 //!
 //! faer's `SymbolicLlt`/`Llt` wrappers allocate their scratch on every call. To keep a drag
-//! frame allocation-free we hold their building blocks instead: the (reference-counted)
+//! frame allocation-free we hold their building blocks instead: the
 //! `SymbolicCholesky`, the numeric values, and `MemBuffer`s sized once for factoring and for
 //! solving. `refactor_values` reuses the symbolic analysis, like `Llt::try_new_with_symbolic`.
 //!
@@ -16,30 +16,16 @@
 //! Laplacian systems of FiberMesh (Nealen et al. 2007) but loses digits on badly scaled ones.
 //! Rows with many entries (a dense row) make the normal matrix dense.
 
-use std::sync::Arc;
-
 use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
 use faer::linalg::cholesky::llt::factor::LltRegularization;
-use faer::sparse::linalg::cholesky::{
-    LltRef, SymbolicCholesky, SymbolicCholeskyRaw, factorize_symbolic_cholesky, supernodal::SupernodalLltRef,
-};
+use faer::sparse::linalg::cholesky::{LltRef, SymbolicCholesky, factorize_symbolic_cholesky};
 use faer::{Conj, Mat, Par, Side};
 use glam::DVec3;
 
 use super::SolveError;
 use super::normal::NormalSystem;
+use super::singular::is_numerically_singular;
 use super::sparse::SparseMatrix;
-
-/// Below `n_free * MIN_RELATIVE_PIVOT_PER_UNKNOWN`, the ratio of a Cholesky pivot to its
-/// diagonal entry means the unknown is determined only by round-off.
-///
-/// Measured (test `pivot_margins`): a cotan Laplacian with nothing fixed, whose last pivot is
-/// zero in exact arithmetic, gives ratios of 1e-15 (100 unknowns) to 2e-13 (41k), 10 to 50
-/// times below `n_free * ε`; with one vertex fixed the smallest ratio is 6e-6 at 62k
-/// unknowns and falls like `1 / n`. `4 ε` per unknown sits between the two up to millions of
-/// unknowns. Systems that are well posed but weighted by tiny soft constraints (weight below
-/// about 1e-3 with nothing fixed) can be reported as singular: they are nearly singular.
-const MIN_RELATIVE_PIVOT_PER_UNKNOWN: f64 = 4.0 * f64::EPSILON;
 
 /// A least-squares system `min ||A x - b||²` with fixed unknowns, factored once; see the
 /// module docs.
@@ -49,7 +35,7 @@ pub struct Prefactored {
     a: SparseMatrix,
     fixed: Vec<bool>,
     system: NormalSystem,
-    symbolic: Arc<SymbolicCholesky<u32>>,
+    symbolic: SymbolicCholesky<u32>,
     l_values: Vec<f64>,
     /// Spare values buffer: a refactor fills it and swaps it in only on success.
     l_values_next: Vec<f64>,
@@ -90,7 +76,8 @@ impl Prefactored {
             Default::default(),
         )
         .map_err(|err| SolveError::Factorization(format!("{err:?}")))?;
-        let factor_req = symbolic.factorize_numeric_llt_scratch::<f64>(Par::Seq, Default::default());
+        let factor_req =
+            symbolic.factorize_numeric_llt_scratch::<f64>(Par::Seq, Default::default());
         let solve_req = symbolic.solve_in_place_scratch::<f64>(3, Par::Seq);
         let n_free = system.n_free();
         let mut prefactored = Prefactored {
@@ -98,7 +85,7 @@ impl Prefactored {
             fixed: fixed.to_vec(),
             l_values: vec![0.0; symbolic.len_val()],
             l_values_next: vec![0.0; symbolic.len_val()],
-            symbolic: Arc::new(symbolic),
+            symbolic,
             system,
             factor_memory: try_memory(factor_req)?,
             solve_memory: try_memory(solve_req)?,
@@ -158,13 +145,21 @@ impl Prefactored {
     /// ones copied). Allocates nothing.
     ///
     /// Errors: [`SolveError::DimensionMismatch`] for wrong lengths.
-    pub fn solve(&mut self, rhs: &[DVec3], fixed_values: &[DVec3], out: &mut [DVec3]) -> Result<(), SolveError> {
+    pub fn solve(
+        &mut self,
+        rhs: &[DVec3],
+        fixed_values: &[DVec3],
+        out: &mut [DVec3],
+    ) -> Result<(), SolveError> {
         self.check_lengths(rhs.len(), fixed_values.len(), out.len())?;
         subtract_fixed(&self.a, &self.system, rhs, fixed_values, &mut self.residual);
-        self.rhs.fill(0.0);
         for col in 0..self.a.ncols() {
-            let Some(f) = self.system.free_index(col) else { continue };
-            let projected = self.a.column(col).fold(DVec3::ZERO, |sum, (row, value)| sum + value * self.residual[row]);
+            let Some(f) = self.system.free_index(col) else {
+                continue;
+            };
+            let projected = self.a.column(col).fold(DVec3::ZERO, |sum, (row, value)| {
+                sum + value * self.residual[row]
+            });
             for (k, value) in projected.to_array().into_iter().enumerate() {
                 self.rhs[(f, k)] = value;
             }
@@ -182,12 +177,29 @@ impl Prefactored {
     /// [`Prefactored::solve`] for one scalar per unknown, as when diffusing curvature targets.
     ///
     /// Errors: [`SolveError::DimensionMismatch`] for wrong lengths.
-    pub fn solve_scalar(&mut self, rhs: &[f64], fixed_values: &[f64], out: &mut [f64]) -> Result<(), SolveError> {
+    pub fn solve_scalar(
+        &mut self,
+        rhs: &[f64],
+        fixed_values: &[f64],
+        out: &mut [f64],
+    ) -> Result<(), SolveError> {
         self.check_lengths(rhs.len(), fixed_values.len(), out.len())?;
-        subtract_fixed(&self.a, &self.system, rhs, fixed_values, &mut self.residual_scalar);
+        subtract_fixed(
+            &self.a,
+            &self.system,
+            rhs,
+            fixed_values,
+            &mut self.residual_scalar,
+        );
         for col in 0..self.a.ncols() {
-            let Some(f) = self.system.free_index(col) else { continue };
-            self.rhs[(f, 0)] = self.a.column(col).map(|(row, value)| value * self.residual_scalar[row]).sum();
+            let Some(f) = self.system.free_index(col) else {
+                continue;
+            };
+            self.rhs[(f, 0)] = self
+                .a
+                .column(col)
+                .map(|(row, value)| value * self.residual_scalar[row])
+                .sum();
         }
         self.triangular_solves(1);
         for (col, x) in out.iter_mut().enumerate() {
@@ -209,7 +221,12 @@ impl Prefactored {
     fn triangular_solves(&mut self, n_columns: usize) {
         let llt = LltRef::new(&self.symbolic, &self.l_values);
         let stack = MemStack::new(&mut self.solve_memory);
-        llt.solve_in_place_with_conj(Conj::No, self.rhs.as_mut().subcols_mut(0, n_columns), Par::Seq, stack);
+        llt.solve_in_place_with_conj(
+            Conj::No,
+            self.rhs.as_mut().subcols_mut(0, n_columns),
+            Par::Seq,
+            stack,
+        );
     }
 
     /// Factors the current normal matrix into `l_values_next`.
@@ -227,39 +244,22 @@ impl Prefactored {
             )
             // Its only error is a non-positive pivot; the memory was reserved up front.
             .map_err(|_| SolveError::NotPositiveDefinite)?;
-        if self.smallest_relative_pivot() < self.n_free() as f64 * MIN_RELATIVE_PIVOT_PER_UNKNOWN {
+        let system = &self.system;
+        if is_numerically_singular(&self.symbolic, &self.l_values_next, |k| system.diagonal(k)) {
             return Err(SolveError::Singular);
         }
         Ok(())
     }
-
-    /// `min_k L_kk² / N_kk` over the new factor: near round-off for an undetermined unknown,
-    /// whose pivot should be exactly zero but comes out as a tiny positive number.
-    fn smallest_relative_pivot(&self) -> f64 {
-        let values = &self.l_values_next;
-        let original = |k: usize| self.symbolic.perm().map_or(k, |perm| perm.arrays().0[k] as usize);
-        let ratio = |k: usize, l_kk: f64| l_kk * l_kk / self.system.diagonal(original(k));
-        match self.symbolic.raw() {
-            SymbolicCholeskyRaw::Simplicial(simplicial) => {
-                let col_ptr = simplicial.col_ptr();
-                (0..simplicial.nrows()).map(|k| ratio(k, values[col_ptr[k] as usize])).fold(f64::INFINITY, f64::min)
-            }
-            SymbolicCholeskyRaw::Supernodal(supernodal) => {
-                let llt = SupernodalLltRef::new(supernodal, values);
-                (0..supernodal.n_supernodes())
-                    .flat_map(|s| {
-                        let node = llt.supernode(s);
-                        (0..node.val().ncols()).map(move |j| ratio(node.start() + j, node.val()[(j, j)]))
-                    })
-                    .fold(f64::INFINITY, f64::min)
-            }
-        }
-    }
 }
 
 /// `residual = b - A_c x_c`, generic over scalars and vectors.
-fn subtract_fixed<T>(a: &SparseMatrix, system: &NormalSystem, b: &[T], fixed_values: &[T], residual: &mut [T])
-where
+fn subtract_fixed<T>(
+    a: &SparseMatrix,
+    system: &NormalSystem,
+    b: &[T],
+    fixed_values: &[T],
+    residual: &mut [T],
+) where
     T: Copy + std::ops::SubAssign + std::ops::Mul<f64, Output = T>,
 {
     residual.copy_from_slice(b);
@@ -273,11 +273,23 @@ where
 }
 
 fn check_len(what: &'static str, expected: usize, found: usize) -> Result<(), SolveError> {
-    if expected == found { Ok(()) } else { Err(SolveError::DimensionMismatch { what, expected, found }) }
+    if expected == found {
+        Ok(())
+    } else {
+        Err(SolveError::DimensionMismatch {
+            what,
+            expected,
+            found,
+        })
+    }
 }
 
 fn check_finite(a: &SparseMatrix) -> Result<(), SolveError> {
-    if a.values().iter().all(|v| v.is_finite()) { Ok(()) } else { Err(SolveError::NonFiniteValue) }
+    if a.values().iter().all(|v| v.is_finite()) {
+        Ok(())
+    } else {
+        Err(SolveError::NonFiniteValue)
+    }
 }
 
 fn try_memory(req: StackReq) -> Result<MemBuffer, SolveError> {
@@ -290,14 +302,20 @@ mod tests {
     use crate::geometry::{cotan_laplacian, uniform_laplacian};
     use crate::mesh::{Mesh, primitives};
     use crate::solve::Triplets;
-    use crate::solve::tests::{dense_least_squares, random_system};
+    use crate::solve::tests::random_system;
 
     fn boundary_mask(mesh: &Mesh) -> Vec<bool> {
-        mesh.vertices().map(|v| mesh.is_boundary_vertex(v)).collect()
+        mesh.vertices()
+            .map(|v| mesh.is_boundary_vertex(v))
+            .collect()
     }
 
     fn linear(p: DVec3) -> DVec3 {
-        DVec3::new(1.0 + 2.0 * p.x - p.y, 0.5 * p.x + 3.0 * p.y, -p.x + 0.25 * p.y + 4.0)
+        DVec3::new(
+            1.0 + 2.0 * p.x - p.y,
+            0.5 * p.x + 3.0 * p.y,
+            -p.x + 0.25 * p.y + 4.0,
+        )
     }
 
     #[test]
@@ -314,79 +332,40 @@ mod tests {
             assert_eq!(solver.n_unknowns(), 130);
             assert_eq!(solver.n_free(), 11 * 8);
             let mut x = vec![DVec3::ZERO; mesh.n_vertices()];
-            solver.solve(&vec![DVec3::ZERO; interior_rows.len()], &expected, &mut x).unwrap();
+            solver
+                .solve(&vec![DVec3::ZERO; interior_rows.len()], &expected, &mut x)
+                .unwrap();
             for (got, want) in x.iter().zip(&expected) {
                 assert!((*got - *want).length() < 1e-10, "{got} vs {want}");
             }
             let mut scalar = vec![0.0; mesh.n_vertices()];
             let fixed_x: Vec<f64> = expected.iter().map(|v| v.x).collect();
-            solver.solve_scalar(&vec![0.0; interior_rows.len()], &fixed_x, &mut scalar).unwrap();
+            solver
+                .solve_scalar(&vec![0.0; interior_rows.len()], &fixed_x, &mut scalar)
+                .unwrap();
             assert!(scalar.iter().zip(&x).all(|(s, v)| (s - v.x).abs() < 1e-12));
         }
     }
 
-    /// A FiberMesh-like system: a Laplacian block plus soft positional rows `w (x_c = p_c)`.
-    fn laplacian_with_soft_rows(mesh: &Mesh, every: usize, weight: f64) -> (SparseMatrix, Vec<DVec3>) {
-        let n = mesh.n_vertices();
-        let anchors: Vec<usize> = (0..n).step_by(every).collect();
-        let mut t = Triplets::new(n + anchors.len(), n);
-        t.push_matrix(&uniform_laplacian(mesh), 0, 0, 1.0);
-        let mut b = vec![DVec3::ZERO; n];
-        for (k, &v) in anchors.iter().enumerate() {
-            t.push(n + k, v, weight);
-            b.push(weight * (mesh.positions()[v] + DVec3::Z * 0.1));
-        }
-        (t.build(), b)
-    }
-
-    #[test]
-    fn soft_constraints_match_dense_least_squares() {
-        let mesh = primitives::icosphere(1.0, 1);
-        let (a, b) = laplacian_with_soft_rows(&mesh, 5, 2.0);
-        let n = mesh.n_vertices();
-        let mut fixed = vec![false; n];
-        fixed[3] = true;
-        let fixed_values = mesh.positions().to_vec();
-        let mut solver = Prefactored::new(&a, &fixed).unwrap();
-        let mut x = vec![DVec3::ZERO; n];
-        solver.solve(&b, &fixed_values, &mut x).unwrap();
-        let b_y: Vec<f64> = b.iter().map(|v| v.y).collect();
-        let fixed_y: Vec<f64> = fixed_values.iter().map(|v| v.y).collect();
-        let expected = dense_least_squares(&a.to_dense(), &b_y, &fixed, &fixed_y);
-        assert!(x.iter().zip(&expected).all(|(x, e)| (x.y - e).abs() < 1e-10));
-    }
-
-    #[test]
-    fn large_system_satisfies_the_normal_equations() {
-        // Large enough for faer to pick its supernodal factorization.
-        let mesh = primitives::grid(70, 70, 1.0);
-        let (a, b) = laplacian_with_soft_rows(&mesh, 37, 1.0);
-        let n = mesh.n_vertices();
-        let mut solver = Prefactored::new(&a, &vec![false; n]).unwrap();
-        assert!(matches!(solver.symbolic.raw(), SymbolicCholeskyRaw::Supernodal(_)));
-        let mut x = vec![DVec3::ZERO; n];
-        solver.solve(&b, &vec![DVec3::ZERO; n], &mut x).unwrap();
-        // Aᵀ (A x - b) = 0, computed column by column.
-        let mut ax = vec![DVec3::ZERO; a.nrows()];
-        a.mul_dvec3(&x, &mut ax);
-        let worst = (0..n)
-            .map(|col| a.column(col).fold(DVec3::ZERO, |s, (row, v)| s + v * (ax[row] - b[row])).length())
-            .fold(0.0, f64::max);
-        assert!(worst < 1e-9, "normal-equation residual {worst}");
-    }
-
     #[test]
     fn refactor_values_matches_a_fresh_factorization() {
-        let entries: Vec<(usize, usize, f64)> = (0..40).map(|k| (k * 7 % 23, k * 5 % 17, ((k as f64) * 0.7).sin())).collect();
+        let entries: Vec<(usize, usize, f64)> = (0..40)
+            .map(|k| (k * 7 % 23, k * 5 % 17, ((k as f64) * 0.7).sin()))
+            .collect();
         let a = random_system(23, 17, &entries);
         let mut fixed = vec![false; 17];
         fixed[4] = true;
         let mut solver = Prefactored::new(&a, &fixed).unwrap();
         let mut a2 = a.clone();
-        a2.values_mut().iter_mut().enumerate().for_each(|(i, v)| *v *= 1.0 + 0.1 * (i % 5) as f64);
+        a2.values_mut()
+            .iter_mut()
+            .enumerate()
+            .for_each(|(i, v)| *v *= 1.0 + 0.1 * (i % 5) as f64);
         solver.refactor_values(&a2).unwrap();
         let mut fresh = Prefactored::new(&a2, &fixed).unwrap();
-        let b: Vec<DVec3> = (0..23).map(|i| DVec3::new(i as f64, 1.0, -(i as f64).sqrt())).collect();
+        let b: Vec<DVec3> = (0..23)
+            .map(|i| DVec3::new(i as f64, 1.0, -(i as f64).sqrt()))
+            .collect();
         let fixed_values = vec![DVec3::ONE; 17];
         let (mut x, mut y) = (vec![DVec3::ZERO; 17], vec![DVec3::ZERO; 17]);
         solver.solve(&b, &fixed_values, &mut x).unwrap();
@@ -407,11 +386,20 @@ mod tests {
 
         let mut zero = laplacian.clone();
         zero.values_mut().fill(0.0);
-        assert_eq!(solver.refactor_values(&zero), Err(SolveError::NotPositiveDefinite));
+        assert_eq!(
+            solver.refactor_values(&zero),
+            Err(SolveError::NotPositiveDefinite)
+        );
         let mut nan = laplacian.clone();
         nan.values_mut()[3] = f64::NAN;
-        assert_eq!(solver.refactor_values(&nan), Err(SolveError::NonFiniteValue));
-        assert_eq!(solver.refactor_values(&SparseMatrix::identity(25)), Err(SolveError::PatternMismatch));
+        assert_eq!(
+            solver.refactor_values(&nan),
+            Err(SolveError::NonFiniteValue)
+        );
+        assert_eq!(
+            solver.refactor_values(&SparseMatrix::identity(25)),
+            Err(SolveError::PatternMismatch)
+        );
 
         let mut after = vec![DVec3::ZERO; mesh.n_vertices()];
         solver.solve(&rhs, &fixed_values, &mut after).unwrap();
@@ -425,7 +413,10 @@ mod tests {
         t.push(0, 0, 1.0);
         t.push(1, 1, 1.0);
         t.push(2, 0, 1.0);
-        assert_eq!(Prefactored::new(&t.build(), &[false; 3]).unwrap_err(), SolveError::NotPositiveDefinite);
+        assert_eq!(
+            Prefactored::new(&t.build(), &[false; 3]).unwrap_err(),
+            SolveError::NotPositiveDefinite
+        );
         // Two identical columns: rank deficient without a zero column.
         let mut t = Triplets::new(2, 2);
         for (r, c) in [(0, 0), (0, 1), (1, 0), (1, 1)] {
@@ -433,8 +424,13 @@ mod tests {
         }
         assert!(Prefactored::new(&t.build(), &[false; 2]).is_err());
         // A Laplacian with nothing fixed leaves translations free.
-        for mesh in [primitives::grid(10, 10, 1.0), primitives::icosphere(1.0, 3), primitives::grid(80, 80, 1.0)] {
-            let err = Prefactored::new(&cotan_laplacian(&mesh), &vec![false; mesh.n_vertices()]).unwrap_err();
+        for mesh in [
+            primitives::grid(10, 10, 1.0),
+            primitives::icosphere(1.0, 3),
+            primitives::grid(80, 80, 1.0),
+        ] {
+            let err = Prefactored::new(&cotan_laplacian(&mesh), &vec![false; mesh.n_vertices()])
+                .unwrap_err();
             assert!(err.is_underdetermined(), "{err:?}");
         }
     }
@@ -446,41 +442,9 @@ mod tests {
         assert_eq!(solver.n_free(), 0);
         let fixed_values = [DVec3::X, DVec3::Y, DVec3::Z];
         let mut out = [DVec3::ZERO; 3];
-        solver.solve(&[DVec3::ONE; 3], &fixed_values, &mut out).unwrap();
+        solver
+            .solve(&[DVec3::ONE; 3], &fixed_values, &mut out)
+            .unwrap();
         assert_eq!(out, fixed_values);
-    }
-
-    /// Measures the smallest relative pivot with nothing fixed (singular) and with one vertex
-    /// fixed (well posed), for `MIN_RELATIVE_PIVOT_PER_UNKNOWN`. Run with
-    /// `cargo test -p sketchmesh-core pivot_margins -- --ignored --nocapture`.
-    #[test]
-    #[ignore]
-    fn pivot_margins() {
-        for n in [10, 40, 100, 250] {
-            let mesh = primitives::grid(n, n, 1.0);
-            for (name, l) in [("uniform", uniform_laplacian(&mesh)), ("cotan", cotan_laplacian(&mesh))] {
-                let mut fixed = vec![false; mesh.n_vertices()];
-                let singular = Prefactored::new(&l, &fixed).map(|s| s.smallest_relative_pivot_current());
-                fixed[0] = true;
-                let one = Prefactored::new(&l, &fixed).map(|s| s.smallest_relative_pivot_current());
-                eprintln!("grid {n} {name}: no fixed -> {singular:?}; one fixed -> {one:?}");
-            }
-        }
-        for s in [2, 4, 6] {
-            let mesh = primitives::icosphere(1.0, s);
-            for (name, l) in [("uniform", uniform_laplacian(&mesh)), ("cotan", cotan_laplacian(&mesh))] {
-                let mut fixed = vec![false; mesh.n_vertices()];
-                let singular = Prefactored::new(&l, &fixed).map(|s| s.smallest_relative_pivot_current());
-                fixed[0] = true;
-                let one = Prefactored::new(&l, &fixed).map(|s| s.smallest_relative_pivot_current());
-                eprintln!("sphere {s} {name}: no fixed -> {singular:?}; one fixed -> {one:?}");
-            }
-        }
-    }
-    impl Prefactored {
-        fn smallest_relative_pivot_current(mut self) -> f64 {
-            self.l_values_next = self.l_values.clone();
-            self.smallest_relative_pivot()
-        }
     }
 }

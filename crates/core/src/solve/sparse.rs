@@ -5,8 +5,10 @@
 //! [`crate::solve::Prefactored::refactor_values`] needs the pattern to stay the same when a
 //! weight happens to be zero.
 
-use faer::sparse::{SparseColMat, SparseColMatRef, SymbolicSparseColMat};
+use faer::sparse::{SparseColMat, SparseColMatRef};
 use glam::DVec3;
+
+use super::Triplets;
 
 /// A sparse `nrows x ncols` matrix in compressed sparse column form, rows sorted within each
 /// column, no duplicate entries.
@@ -16,6 +18,11 @@ pub struct SparseMatrix {
 }
 
 impl SparseMatrix {
+    /// Wraps a faer matrix (for results of faer's own algorithms).
+    pub fn from_faer(inner: SparseColMat<u32, f64>) -> SparseMatrix {
+        SparseMatrix { inner }
+    }
+
     /// The `n x n` identity.
     pub fn identity(n: usize) -> SparseMatrix {
         SparseMatrix::diagonal(&vec![1.0; n])
@@ -69,17 +76,24 @@ impl SparseMatrix {
     /// The stored `(row, value)` entries of one column.
     pub fn column(&self, col: usize) -> impl ExactSizeIterator<Item = (usize, f64)> + '_ {
         let range = self.col_ptr()[col] as usize..self.col_ptr()[col + 1] as usize;
-        self.row_indices()[range.clone()].iter().zip(&self.values()[range]).map(|(&r, &v)| (r as usize, v))
+        self.row_indices()[range.clone()]
+            .iter()
+            .zip(&self.values()[range])
+            .map(|(&r, &v)| (r as usize, v))
     }
 
     /// The entry at `(row, col)`, zero when not stored.
     pub fn get(&self, row: usize, col: usize) -> f64 {
-        self.column(col).find(|&(r, _)| r == row).map_or(0.0, |(_, v)| v)
+        self.column(col)
+            .find(|&(r, _)| r == row)
+            .map_or(0.0, |(_, v)| v)
     }
 
     /// Whether both matrices have the same shape and the same stored entries.
     pub fn has_same_pattern(&self, other: &SparseMatrix) -> bool {
-        self.nrows() == other.nrows() && self.col_ptr() == other.col_ptr() && self.row_indices() == other.row_indices()
+        self.nrows() == other.nrows()
+            && self.col_ptr() == other.col_ptr()
+            && self.row_indices() == other.row_indices()
     }
 
     /// The faer view, for faer's own algorithms.
@@ -92,7 +106,11 @@ impl SparseMatrix {
     /// # Panics
     /// When `x.len() != ncols` or `out.len() != nrows`.
     pub fn mul_vec(&self, x: &[f64], out: &mut [f64]) {
-        assert_eq!((x.len(), out.len()), (self.ncols(), self.nrows()), "mul_vec: wrong vector lengths");
+        assert_eq!(
+            (x.len(), out.len()),
+            (self.ncols(), self.nrows()),
+            "mul_vec: wrong vector lengths"
+        );
         out.fill(0.0);
         for (col, &x_col) in x.iter().enumerate() {
             for (row, value) in self.column(col) {
@@ -106,7 +124,11 @@ impl SparseMatrix {
     /// # Panics
     /// When `x.len() != ncols` or `out.len() != nrows`.
     pub fn mul_dvec3(&self, x: &[DVec3], out: &mut [DVec3]) {
-        assert_eq!((x.len(), out.len()), (self.ncols(), self.nrows()), "mul_dvec3: wrong vector lengths");
+        assert_eq!(
+            (x.len(), out.len()),
+            (self.ncols(), self.nrows()),
+            "mul_dvec3: wrong vector lengths"
+        );
         out.fill(DVec3::ZERO);
         for (col, &x_col) in x.iter().enumerate() {
             for (row, value) in self.column(col) {
@@ -141,7 +163,9 @@ impl SparseMatrix {
         let mut dense = vec![vec![0.0; self.ncols()]; self.nrows()];
         for col in 0..self.ncols() {
             for (row, value) in self.column(col) {
-                dense[row][col] = value;
+                if let Some(entry) = dense.get_mut(row).and_then(|r| r.get_mut(col)) {
+                    *entry = value;
+                }
             }
         }
         dense
@@ -150,118 +174,15 @@ impl SparseMatrix {
 
 impl PartialEq for SparseMatrix {
     fn eq(&self, other: &SparseMatrix) -> bool {
-        self.has_same_pattern(other) && self.ncols() == other.ncols() && self.values() == other.values()
-    }
-}
-
-/// Collects `(row, col, value)` entries in any order; [`Triplets::build`] sums duplicates.
-#[derive(Clone, Debug, Default)]
-pub struct Triplets {
-    nrows: usize,
-    ncols: usize,
-    entries: Vec<(u32, u32, f64)>,
-}
-
-impl Triplets {
-    /// An empty `nrows x ncols` builder.
-    pub fn new(nrows: usize, ncols: usize) -> Triplets {
-        Triplets { nrows, ncols, entries: Vec::new() }
-    }
-
-    /// An empty builder with room for `capacity` entries.
-    pub fn with_capacity(nrows: usize, ncols: usize, capacity: usize) -> Triplets {
-        Triplets { nrows, ncols, entries: Vec::with_capacity(capacity) }
-    }
-
-    /// Number of rows of the matrix being built.
-    pub fn nrows(&self) -> usize {
-        self.nrows
-    }
-
-    /// Number of columns of the matrix being built.
-    pub fn ncols(&self) -> usize {
-        self.ncols
-    }
-
-    /// Number of entries pushed so far (duplicates counted).
-    pub fn len(&self) -> usize {
-        self.entries.len()
-    }
-
-    /// Whether nothing was pushed.
-    pub fn is_empty(&self) -> bool {
-        self.entries.is_empty()
-    }
-
-    /// Adds `value` at `(row, col)`; entries at the same place are summed by `build`.
-    ///
-    /// # Panics
-    /// When `row >= nrows` or `col >= ncols`: that is a bug in the caller.
-    pub fn push(&mut self, row: usize, col: usize, value: f64) {
-        assert!(row < self.nrows && col < self.ncols, "triplet ({row}, {col}) outside {}x{}", self.nrows, self.ncols);
-        self.entries.push((row as u32, col as u32, value));
-    }
-
-    /// Adds `scale * matrix` with its top-left corner at `(row_offset, col_offset)`, for
-    /// stacking systems such as `[L; w I_c]`.
-    ///
-    /// # Panics
-    /// When the block does not fit.
-    pub fn push_matrix(&mut self, matrix: &SparseMatrix, row_offset: usize, col_offset: usize, scale: f64) {
-        for col in 0..matrix.ncols() {
-            for (row, value) in matrix.column(col) {
-                self.push(row_offset + row, col_offset + col, scale * value);
-            }
-        }
-    }
-
-    /// The compressed matrix; duplicates summed, explicit zeros kept.
-    pub fn build(&self) -> SparseMatrix {
-        let mut entries = self.entries.clone();
-        entries.sort_unstable_by_key(|&(row, col, _)| (col, row));
-        let mut col_ptr = vec![0u32; self.ncols + 1];
-        let mut row_idx = Vec::with_capacity(entries.len());
-        let mut values: Vec<f64> = Vec::with_capacity(entries.len());
-        let mut last = None;
-        for (row, col, value) in entries {
-            if last == Some((row, col)) {
-                if let Some(sum) = values.last_mut() {
-                    *sum += value;
-                }
-                continue;
-            }
-            last = Some((row, col));
-            col_ptr[col as usize + 1] += 1;
-            row_idx.push(row);
-            values.push(value);
-        }
-        for col in 0..self.ncols {
-            col_ptr[col + 1] += col_ptr[col];
-        }
-        let symbolic = SymbolicSparseColMat::new_checked(self.nrows, self.ncols, col_ptr, None, row_idx);
-        SparseMatrix { inner: SparseColMat::new(symbolic, values) }
+        self.has_same_pattern(other)
+            && self.ncols() == other.ncols()
+            && self.values() == other.values()
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn build_sums_duplicates_and_keeps_zeros() {
-        let mut t = Triplets::new(3, 2);
-        t.push(2, 1, 1.5);
-        t.push(0, 0, 1.0);
-        t.push(2, 1, 2.0);
-        t.push(1, 0, 0.0);
-        let m = t.build();
-        assert_eq!(m.nnz(), 3);
-        assert_eq!(m.col_ptr(), &[0, 2, 3]);
-        assert_eq!(m.row_indices(), &[0, 1, 2]);
-        assert_eq!(m.to_dense(), vec![vec![1.0, 0.0], vec![0.0, 0.0], vec![0.0, 3.5]]);
-        assert_eq!(m.get(2, 1), 3.5);
-        assert_eq!(m.get(2, 0), 0.0);
-    }
 
     #[test]
     fn products_match_dense_arithmetic() {
@@ -275,7 +196,10 @@ mod tests {
         assert_eq!(out, [-5.0, 7.5]);
         let mut out3 = [DVec3::ZERO; 2];
         m.mul_dvec3(&[DVec3::X, DVec3::Y, DVec3::Z], &mut out3);
-        assert_eq!(out3, [DVec3::new(1.0, 0.0, -2.0), DVec3::new(0.0, 3.0, 0.5)]);
+        assert_eq!(
+            out3,
+            [DVec3::new(1.0, 0.0, -2.0), DVec3::new(0.0, 3.0, 0.5)]
+        );
     }
 
     #[test]
@@ -284,10 +208,21 @@ mod tests {
         t.push_matrix(&SparseMatrix::identity(2), 0, 0, 1.0);
         t.push_matrix(&SparseMatrix::diagonal(&[2.0, 3.0]), 2, 0, 10.0);
         let m = t.build();
-        assert_eq!(m.to_dense(), vec![vec![1.0, 0.0], vec![0.0, 1.0], vec![20.0, 0.0], vec![0.0, 30.0]]);
+        assert_eq!(
+            m.to_dense(),
+            vec![
+                vec![1.0, 0.0],
+                vec![0.0, 1.0],
+                vec![20.0, 0.0],
+                vec![0.0, 30.0]
+            ]
+        );
         assert!(m.has_same_pattern(&m.clone()));
         let picked = m.select_rows(&[3, 0, 3]);
-        assert_eq!(picked.to_dense(), vec![vec![0.0, 30.0], vec![1.0, 0.0], vec![0.0, 30.0]]);
+        assert_eq!(
+            picked.to_dense(),
+            vec![vec![0.0, 30.0], vec![1.0, 0.0], vec![0.0, 30.0]]
+        );
         assert_eq!(m, m.clone());
     }
 }

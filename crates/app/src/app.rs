@@ -212,7 +212,7 @@ impl SketchApp {
             ui.painter().text(
                 viewport.center_bottom() - egui::vec2(0.0, 48.0),
                 egui::Align2::CENTER_CENTER,
-                "Draw with a pen, a finger or the mouse · two fingers or right-drag to orbit",
+                "Draw a closed outline to make a shape. Two fingers or right-drag orbit.",
                 egui::FontId::proportional(16.0),
                 egui::Color32::from_white_alpha(110),
             );
@@ -246,7 +246,8 @@ impl eframe::App for SketchApp {
         let action = egui::Panel::top("toolbar")
             .show(ui, |ui| {
                 let shared = self.shared.borrow();
-                panels::toolbar::toolbar_ui(ui, &shared.editor, &self.options, self.status.as_ref().map(|(s, _)| s.as_str()))
+                let status = self.status.as_ref().map(|(s, _)| s.as_str());
+                panels::toolbar::toolbar_ui(ui, &shared.editor, &mut self.options, &mut self.show_help, status)
             })
             .inner;
         match action {
@@ -254,9 +255,6 @@ impl eframe::App for SketchApp {
             Some(panels::toolbar::Action::Redo) => self.apply(Op::Redo, now),
             Some(panels::toolbar::Action::FrameAll) => self.frame_all(),
             Some(panels::toolbar::Action::ResetView) => self.shared.borrow_mut().camera = OrbitCamera::default(),
-            Some(panels::toolbar::Action::ToggleWireframe) => self.options.wireframe = !self.options.wireframe,
-            Some(panels::toolbar::Action::ToggleGrid) => self.options.grid = !self.options.grid,
-            Some(panels::toolbar::Action::ToggleHelp) => self.show_help = !self.show_help,
             None => {}
         }
         egui::CentralPanel::no_frame().show(ui, |ui| self.viewport_ui(ui));

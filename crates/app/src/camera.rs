@@ -37,7 +37,8 @@ impl Default for OrbitCamera {
             target: DVec3::ZERO,
             distance: 6.0,
             yaw: 0.0,
-            pitch: 0.0,
+            // A little from above, so the ground grid reads as a floor, not a line.
+            pitch: 0.3,
             fov_y_deg: 45.0,
         }
     }
@@ -116,10 +117,11 @@ mod tests {
     use super::*;
 
     #[test]
-    fn default_camera_looks_down_minus_z() {
+    fn default_camera_looks_at_the_origin_from_the_front_and_above() {
         let c = OrbitCamera::default().camera();
-        assert!((c.eye - DVec3::new(0.0, 0.0, 6.0)).length() < 1e-12);
-        assert!((c.forward() - DVec3::NEG_Z).length() < 1e-12);
+        assert!(((c.eye - c.target).length() - 6.0).abs() < 1e-12);
+        assert!(c.eye.y > 0.0 && c.eye.z > 0.0 && c.eye.x.abs() < 1e-12);
+        assert!((c.forward() - (c.target - c.eye).normalize()).length() < 1e-12);
     }
 
     #[test]

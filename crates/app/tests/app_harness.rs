@@ -7,10 +7,13 @@ use egui_kittest::Harness;
 use sketchmesh_app::SketchApp;
 
 fn harness() -> Harness<'static, SketchApp> {
-    Harness::builder()
+    let mut h = Harness::builder()
         .with_size(vec2(900.0, 600.0))
         .wgpu()
-        .build_eframe(|cc| SketchApp::new(cc))
+        .build_eframe(|cc| SketchApp::new(cc));
+    // The pointer's own cursor would differ between before and after.
+    h.set_render_cursor(false);
+    h
 }
 
 fn press(h: &Harness<'_, SketchApp>, pos: Pos2, button: PointerButton, pressed: bool) {
@@ -40,11 +43,14 @@ fn curves(h: &Harness<'_, SketchApp>) -> usize {
     h.state().shared().borrow().editor.document().stats().curves
 }
 
-/// Pixels whose colour differs noticeably between two renders.
+/// Rows taken by the toolbar, whose button states and counters change with the document.
+const TOOLBAR_ROWS: u32 = 80;
+
+/// Pixels of the 3D view whose colour differs noticeably between two renders.
 fn changed_pixels(a: &image::RgbaImage, b: &image::RgbaImage) -> usize {
-    a.pixels()
-        .zip(b.pixels())
-        .filter(|(p, q)| p.0.iter().zip(q.0.iter()).any(|(x, y)| x.abs_diff(*y) > 24))
+    a.enumerate_pixels()
+        .filter(|(_, y, _)| *y >= TOOLBAR_ROWS)
+        .filter(|(x, y, p)| p.0.iter().zip(b.get_pixel(*x, *y).0.iter()).any(|(u, v)| u.abs_diff(*v) > 24))
         .count()
 }
 
@@ -57,7 +63,7 @@ fn stroke_leaves_ink_and_undo_takes_it_away() {
     assert_eq!(curves(&h), 1, "one stroke, one curve");
     let with_stroke = h.render().expect("render");
     let inked = changed_pixels(&before, &with_stroke);
-    // A 400-point stroke at 3–5 points wide, plus the toolbar's counters changing.
+    // A 400-point stroke, 3–5 points wide.
     assert!(inked > 1000, "only {inked} pixels changed");
     // The ink is the sketch colour: warm yellow, somewhere along the drawn path.
     let mid = with_stroke.get_pixel(450, (310.0 + 40.0) as u32);
@@ -72,11 +78,48 @@ fn stroke_leaves_ink_and_undo_takes_it_away() {
     assert_eq!(curves(&h), 0);
     let undone = h.render().expect("render");
     let left = changed_pixels(&before, &undone);
-    assert!(left < inked / 20, "{left} pixels still differ after undo");
+    assert!(left == 0, "{left} pixels still differ after undo");
 
     h.key_press_modifiers(Modifiers::COMMAND | Modifiers::SHIFT, egui::Key::Z);
     h.run();
     assert_eq!(curves(&h), 1, "redo brings the stroke back");
+}
+
+/// Saves a render where a person can look at it (`target/tmp/*.png`).
+fn save(image: &image::RgbaImage, name: &str) {
+    let path = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("{name}.png"));
+    image.save(&path).expect("save render");
+}
+
+#[test]
+fn closed_stroke_becomes_a_lit_shape_with_its_curve() {
+    let mut h = harness();
+    h.run();
+    let center = pos2(450.0, 340.0);
+    h.event(Event::PointerMoved(center + vec2(150.0, 0.0)));
+    press(&h, center + vec2(150.0, 0.0), PointerButton::Primary, true);
+    h.step();
+    for i in 1..=60 {
+        let a = std::f32::consts::TAU * i as f32 / 60.0;
+        h.event(Event::PointerMoved(center + vec2(150.0 * a.cos(), 110.0 * a.sin())));
+        h.step();
+    }
+    press(&h, center + vec2(150.0, 0.0), PointerButton::Primary, false);
+    h.run();
+    let stats = h.state().shared().borrow().editor.document().stats();
+    assert_eq!((stats.models, stats.curves), (1, 1), "{stats:?}");
+    assert!(stats.vertices > 500, "{stats:?}");
+    let image = h.render().expect("render");
+    save(&image, "created-shape");
+    // The middle of the shape is lit clay: bright, warm, opaque (the background is dark blue-grey).
+    let p = image.get_pixel(center.x as u32, center.y as u32).0;
+    assert!(p[0] > 120 && p[0] >= p[2], "centre pixel {p:?}");
+    // The outline is drawn as a blue control curve on the silhouette.
+    let blue_on_rim = (-6..=6).any(|dx: i32| {
+        let q = image.get_pixel((center.x as i32 + 150 + dx) as u32, center.y as u32).0;
+        q[2] > 180 && q[2] > q[0] + 60
+    });
+    assert!(blue_on_rim, "no blue curve near the right end of the outline");
 }
 
 #[test]

@@ -36,9 +36,15 @@ fn bench_creation(c: &mut Criterion) {
     let mut group = c.benchmark_group("fibermesh_first_display");
     group.sample_size(10);
     for &n in &sizes {
-        let params = CreateParams { target_vertices: n, ..CreateParams::default() };
+        let params = CreateParams {
+            target_vertices: n,
+            ..CreateParams::default()
+        };
         group.bench_with_input(BenchmarkId::from_parameter(n), &params, |b, params| {
-            b.iter(|| create_from_stroke(black_box(&stroke), &camera, VIEWPORT, params).expect("stroke is fine"));
+            b.iter(|| {
+                create_from_stroke(black_box(&stroke), &camera, VIEWPORT, params)
+                    .expect("stroke is fine")
+            });
         });
     }
     group.finish();
@@ -46,20 +52,35 @@ fn bench_creation(c: &mut Criterion) {
     let mut group = c.benchmark_group("fibermesh_converged");
     group.sample_size(10);
     for &n in &sizes {
-        let params = CreateParams { target_vertices: n, ..CreateParams::default() };
+        let params = CreateParams {
+            target_vertices: n,
+            ..CreateParams::default()
+        };
         group.bench_with_input(BenchmarkId::from_parameter(n), &params, |b, params| {
-            b.iter(|| create_converged_from_stroke(black_box(&stroke), &camera, VIEWPORT, params).expect("stroke is fine"));
+            b.iter(|| {
+                create_converged_from_stroke(black_box(&stroke), &camera, VIEWPORT, params)
+                    .expect("stroke is fine")
+            });
         });
     }
     group.finish();
 
     let mut group = c.benchmark_group("fibermesh_iteration");
     for &n in &sizes {
-        let params = CreateParams { target_vertices: n, ..CreateParams::default() };
-        let mut creation = create_from_stroke(&stroke, &camera, VIEWPORT, &params).expect("stroke is fine");
+        let params = CreateParams {
+            target_vertices: n,
+            ..CreateParams::default()
+        };
+        let mut creation =
+            create_from_stroke(&stroke, &camera, VIEWPORT, &params).expect("stroke is fine");
         let n_vertices = creation.mesh.n_vertices();
         group.bench_function(BenchmarkId::from_parameter(n_vertices), |b| {
-            b.iter(|| creation.surface.iterate(creation.mesh.positions_mut()).expect("lengths match"));
+            b.iter(|| {
+                creation
+                    .surface
+                    .iterate(creation.mesh.positions_mut())
+                    .expect("lengths match")
+            });
         });
     }
     group.finish();

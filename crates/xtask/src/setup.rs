@@ -4,7 +4,7 @@
 //! on each run; a finished setup costs one `rustup` call and a few `stat`s.
 
 use std::path::Path;
-use std::process::Command;
+use std::process::{Command, Stdio};
 use std::time::SystemTime;
 
 use anyhow::{Context as _, bail};
@@ -76,13 +76,12 @@ fn ensure_wasm_target() -> anyhow::Result<()> {
 }
 
 fn ensure_chromium() -> anyhow::Result<()> {
-    let node_missing = output_of(Command::new("node").arg("--version")).is_none();
-    if Path::new(CHROMIUM).exists() && !node_missing {
-        return Ok(());
-    }
-    let mut packages: Vec<&str> = CHROMIUM_PACKAGES.to_vec();
-    if node_missing {
+    let mut packages = missing_packages();
+    if output_of(Command::new("node").arg("--version")).is_none() {
         packages.extend(["nodejs", "npm"]);
+    }
+    if packages.is_empty() {
+        return Ok(());
     }
     let is_root = output_of(Command::new("id").arg("-u")).is_some_and(|uid| uid.trim() == "0");
     let apt = |args: &[&str]| -> Command {
@@ -104,8 +103,8 @@ fn ensure_chromium() -> anyhow::Result<()> {
     };
     install().with_context(|| {
         format!(
-            "{CHROMIUM} or node is missing and could not be installed (needs root or password-less \
-             sudo). Install by hand: apt-get install -y {}",
+            "Chromium, its GPU emulation or node is missing and could not be installed (needs root \
+             or password-less sudo). Install by hand: apt-get install -y {}",
             packages.join(" ")
         )
     })?;
@@ -113,6 +112,35 @@ fn ensure_chromium() -> anyhow::Result<()> {
         bail!("installed the Chromium packages, but {CHROMIUM} is still missing");
     }
     Ok(())
+}
+
+/// The packages of [`CHROMIUM_PACKAGES`] that dpkg does not list as installed (without dpkg:
+/// all of them if Chromium is missing, else none).
+fn missing_packages() -> Vec<&'static str> {
+    // dpkg-query exits with 1 when some package is unknown to it; its list is still right.
+    let listed = Command::new("dpkg-query")
+        .args(["-W", "-f", "${db:Status-Abbrev} ${Package}\\n"])
+        .args(CHROMIUM_PACKAGES)
+        .stderr(Stdio::null())
+        .output();
+    match listed {
+        Ok(listed) => {
+            let listed = String::from_utf8_lossy(&listed.stdout);
+            let installed: Vec<&str> = listed
+                .lines()
+                .filter(|line| line.starts_with("ii"))
+                .filter_map(|line| line.split_whitespace().nth(1))
+                .collect();
+            CHROMIUM_PACKAGES
+                .iter()
+                .copied()
+                .filter(|package| !installed.contains(package))
+                .collect()
+        }
+        // Not a Debian system.
+        Err(_) if Path::new(CHROMIUM).exists() => Vec::new(),
+        Err(_) => CHROMIUM_PACKAGES.to_vec(),
+    }
 }
 
 fn ensure_npm_packages(tests: &Path) -> anyhow::Result<()> {

@@ -15,19 +15,19 @@ pub enum Action {
     FrameAll,
     /// Back to the default view.
     ResetView,
-    /// Wireframe on or off.
-    ToggleWireframe,
-    /// Ground grid on or off.
-    ToggleGrid,
-    /// Help window on or off.
-    ToggleHelp,
 }
 
 /// Minimum touch target, in points, so buttons are easy to hit with a finger.
 const TOUCH_TARGET: f32 = 36.0;
 
 /// Shows the toolbar; wraps onto more rows on narrow screens.
-pub fn toolbar_ui(ui: &mut egui::Ui, editor: &Editor, options: &ViewOptions, status: Option<&str>) -> Option<Action> {
+pub fn toolbar_ui(
+    ui: &mut egui::Ui,
+    editor: &Editor,
+    options: &mut ViewOptions,
+    show_help: &mut bool,
+    status: Option<&str>,
+) -> Option<Action> {
     let mut action = None;
     ui.spacing_mut().interact_size.y = TOUCH_TARGET;
     ui.spacing_mut().button_padding = egui::vec2(10.0, 6.0);
@@ -40,16 +40,14 @@ pub fn toolbar_ui(ui: &mut egui::Ui, editor: &Editor, options: &ViewOptions, sta
                 action = Some(a);
             }
         };
-        button(ui, editor.can_undo(), "⟲ Undo", "Undo (Ctrl+Z)", Action::Undo);
-        button(ui, editor.can_redo(), "⟳ Redo", "Redo (Ctrl+Shift+Z or Ctrl+Y)", Action::Redo);
+        button(ui, editor.can_undo(), "Undo", "Undo (Ctrl+Z)", Action::Undo);
+        button(ui, editor.can_redo(), "Redo", "Redo (Ctrl+Shift+Z or Ctrl+Y)", Action::Redo);
         ui.separator();
         button(ui, true, "Frame", "Frame everything (F)", Action::FrameAll);
         button(ui, true, "Reset view", "Back to the front view (R)", Action::ResetView);
-        let wire = if options.wireframe { "Wireframe ✔" } else { "Wireframe" };
-        button(ui, true, wire, "Show mesh edges (W)", Action::ToggleWireframe);
-        let grid = if options.grid { "Grid ✔" } else { "Grid" };
-        button(ui, true, grid, "Show the ground grid (G)", Action::ToggleGrid);
-        button(ui, true, "?", "Shortcuts and gestures (H)", Action::ToggleHelp);
+        ui.toggle_value(&mut options.wireframe, "Wireframe").on_hover_text("Show mesh edges (W)");
+        ui.toggle_value(&mut options.grid, "Grid").on_hover_text("Show the ground grid (G)");
+        ui.toggle_value(show_help, "Help").on_hover_text("Shortcuts and gestures (H)");
         ui.separator();
         let stats = editor.document().stats();
         ui.label(format!(

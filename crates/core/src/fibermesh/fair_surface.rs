@@ -1,49 +1,51 @@
 //! The fair surface defined by control curves (FiberMesh §3.3.2, Eqs. 3.6–3.10), as a
 //! stateful solver: factor once per topology and curve set, then iterate with
-//! back-substitutions only.
+//! back-substitutions only (the systems are in [`super::fair_systems`]).
 //!
 //! One iteration, with `L` the uniform Laplacian (`L v_i = v_i - mean_j v_j`) and the
-//! measures of [`super::measure`]:
-//! 1. (Eqs. 3.6, 3.8) smooth the Laplacian magnitudes `c'` and the current mean edge
-//!    lengths `e'`: `min ‖L_d c‖² + w_d ‖c - c'‖²`, the same for `e`. Both share one matrix
-//!    and one back-substitution (they are two columns of one right-hand side).
+//! measures of [`super::measure`] (normals `n`, area estimates `A`, magnitudes, lengths):
+//! 1. (Eqs. 3.6, 3.8) smooth the Laplacian magnitudes `c'` and the mean edge lengths `e'`:
+//!    `min ‖L_d c‖² + ‖c - c'‖²`, the same for `e`. Both share one matrix and one
+//!    back-substitution (they are two columns of one right-hand side).
 //! 2. (Eq. 3.9) target edge vectors `η_ij = (e_i + e_j)/2 · (v_i - v_j)/‖v_i - v_j‖` on the
 //!    edges with exactly one end on a curve (the set `B`).
-//! 3. (Eq. 3.10) positions: `min Σ ‖L v_i - A_i c_i n_i‖² + Σ_B w_e ‖v_i - v_j - η_ij‖²`
+//! 3. (Eq. 3.10) positions: `min Σ w_i² ‖L v_i - A_i c_i n_i‖² + Σ_B ‖v_i - v_j - η_ij‖²`
 //!    with curve vertices *fixed* (the thesis uses soft positional rows; fixed unknowns
-//!    keep the curve exactly on the surface, and moving a curve only changes the fixed
-//!    values, not the matrix).
+//!    keep the curve exactly on the surface, and moving a curve changes only the fixed
+//!    values, not the matrix). `w_i` is 2 on smooth curve vertices, 1 elsewhere
+//!    ([`super::fair_systems::SMOOTH_CURVE_WEIGHT`]).
 //!
-//! Magnitudes are state. The first iteration (and the first after
-//! [`FairSurface::remeasure`]) measures `c'` from the geometry; later iterations take `c'`
-//! as the smoothed `c` of the iteration before. Measuring every iteration, as a literal
-//! reading of "the current LM" suggests, made shapes deflate: the least-squares position
-//! solve realizes about 0.5–1% less integrated magnitude than it is asked for (mostly in
-//! the rows at the curve, which compete with the edge rows), so a circle's height fell
-//! from 1.04 to 0.70 in 20 iterations with the step stuck near 0.5% of the size, never
-//! converging. Carried magnitudes converge (step below 0.1% in about 10 iterations). The
-//! thesis' "first iteration: target magnitudes only on the curves" is replaced by a
-//! rotund seed whose measured magnitudes are meaningful everywhere (see [`super`]).
+//! Choices where the thesis is silent or where its literal reading misbehaved:
+//! - `c'` is *measured once*, in the first iteration (and the first after
+//!   [`FairSurface::remeasure`]), and kept. Re-measuring it every iteration, as "the
+//!   current LM" suggests, made every shape deflate: the least-squares position solve
+//!   realizes about 0.5–1% less integrated magnitude than asked for, so a circle's height
+//!   fell from 1.04 to 0.59 in 25 iterations with the step stuck near 0.5% of the size.
+//!   Carrying the smoothed `c` instead also runs away when the start is inconsistent. Kept
+//!   magnitudes give a contraction: the step falls below 0.1% of the size in 4 (circle)
+//!   to 10 (seven-armed star) iterations. The thesis' "first iteration: target magnitudes
+//!   only on the curves" is replaced by a rotund seed whose measured magnitudes are
+//!   meaningful everywhere (see [`super`]).
+//! - `e'` is re-measured every iteration, except that a curve vertex takes the mean length
+//!   of its *curve* edges, which are fixed (the thesis starts "using only the edge lengths
+//!   along the given boundary curve"). Measuring its spokes too fed the surface's growth
+//!   back into the spokes' targets and slowed convergence about threefold on round shapes.
 //!
 //! Smooth and sharp curves (the thesis leaves the difference unstated): a smooth curve
 //! vertex keeps its Laplacian row, so the surface must be smooth across it, and its
 //! magnitude takes part in the smoothing. A sharp curve vertex has *no* Laplacian row in
-//! the position system (positional, C⁰ constraint only), and in the magnitude smoothing it
-//! has no row and is left out of its neighbours' rows (`L_d`), so curvature does not
-//! diffuse across the crease. Changing a curve's kind changes the matrices: build a new
+//! the position system (a positional, C⁰ constraint only), and in the smoothing it has no
+//! row and is left out of its neighbours' rows (`L_d`), so curvature does not diffuse
+//! across the crease. Changing a curve's kind changes the matrices: build a new
 //! [`FairSurface`].
 
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
+use super::fair_systems::{self, DIFFUSION_WEIGHT, EDGE_WEIGHT};
 use super::measure::{Measures, Rings};
 use crate::mesh::{Mesh, VertexId};
-use crate::solve::{Prefactored, SolveError, Triplets};
-
-/// Weight of the rows `c_i = c'_i` against the smoothing rows `L_d c = 0` (thesis: 1).
-const DIFFUSION_WEIGHT: f64 = 1.0;
-/// Weight of the edge-vector rows against the Laplacian rows (thesis: 1).
-const EDGE_WEIGHT: f64 = 1.0;
+use crate::solve::{Prefactored, SolveError};
 
 /// How a control curve constrains the surface across it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -82,6 +84,9 @@ pub struct RunSummary {
 pub struct FairSurface {
     triangles: Vec<[u32; 3]>,
     rings: Rings,
+    /// Each vertex's neighbours along the curves it lies on.
+    curve_rings: Rings,
+    is_curve: Vec<bool>,
     /// Vertices with a Laplacian row in the position system (all but sharp curve vertices).
     laplacian_rows: Vec<u32>,
     /// The edges `B`, with their curve vertex first.
@@ -91,13 +96,14 @@ pub struct FairSurface {
     diffusion: Prefactored,
     placement: Prefactored,
     measures: Measures,
+    /// The magnitudes `c'`, measured once; see the module docs.
+    magnitudes: Vec<f64>,
+    /// Whether `magnitudes` holds a measurement.
+    has_magnitudes: bool,
     diffusion_rhs: Vec<DVec3>,
     zeros: Vec<DVec3>,
     /// Smoothed targets: x = Laplacian magnitude, y = mean edge length.
     targets: Vec<DVec3>,
-    /// Whether `targets` holds magnitudes to carry over (false until the first iteration
-    /// and after [`FairSurface::remeasure`]).
-    has_magnitudes: bool,
     placement_rhs: Vec<DVec3>,
     solved: Vec<DVec3>,
 }
@@ -112,6 +118,7 @@ impl FairSurface {
     pub fn new(mesh: &Mesh, curves: &[ControlCurve]) -> Result<FairSurface, SolveError> {
         let n = mesh.n_vertices();
         let (mut is_curve, mut is_sharp) = (vec![false; n], vec![false; n]);
+        let mut curve_edges = Vec::new();
         for curve in curves {
             for &v in &curve.vertices {
                 if v.index() >= n {
@@ -124,43 +131,47 @@ impl FairSurface {
                 is_curve[v.index()] = true;
                 is_sharp[v.index()] |= curve.kind == CurveKind::Sharp;
             }
-        }
-        let mut rings = Rings {
-            start: Vec::with_capacity(n + 1),
-            neighbors: Vec::with_capacity(6 * n),
-        };
-        rings.start.push(0);
-        for v in mesh.vertices() {
-            rings
-                .neighbors
-                .extend(mesh.vertex_neighbors(v).map(|u| u.0));
-            rings.start.push(rings.neighbors.len() as u32);
-        }
-        let laplacian_rows: Vec<u32> = (0..n as u32).filter(|&i| !is_sharp[i as usize]).collect();
-        let mut edge_rows = Vec::new();
-        for i in 0..n {
-            for &j in rings.ring(i) {
-                if is_curve[i] && !is_curve[j as usize] {
-                    edge_rows.push([i as u32, j]);
-                }
+            curve_edges.extend(curve.vertices.windows(2).map(|w| [w[0].0, w[1].0]));
+            if let (true, Some(first), Some(last)) = (
+                curve.is_closed,
+                curve.vertices.first(),
+                curve.vertices.last(),
+            ) {
+                curve_edges.push([last.0, first.0]);
             }
         }
-        let (diffusion, n_smoothing_rows) = factor_diffusion(&rings, &is_sharp)?;
-        let placement = factor_placement(&rings, &laplacian_rows, &edge_rows, &is_curve)?;
+        let rings = Rings::of_mesh(mesh);
+        let laplacian_rows: Vec<u32> = (0..n as u32).filter(|&i| !is_sharp[i as usize]).collect();
+        let mut edge_rows = Vec::new();
+        for i in (0..n).filter(|&i| is_curve[i]) {
+            edge_rows.extend(
+                rings
+                    .ring(i)
+                    .iter()
+                    .filter(|&&j| !is_curve[j as usize])
+                    .map(|&j| [i as u32, j]),
+            );
+        }
+        let (diffusion, n_smoothing_rows) = fair_systems::factor_diffusion(&rings, &is_sharp)?;
+        let placement =
+            fair_systems::factor_placement(&rings, &laplacian_rows, &edge_rows, &is_curve)?;
         let n_rows = laplacian_rows.len() + edge_rows.len();
         Ok(FairSurface {
             triangles: mesh.triangles().to_vec(),
+            curve_rings: Rings::from_edges(n, curve_edges),
             rings,
+            is_curve,
             laplacian_rows,
             edge_rows,
             n_smoothing_rows,
             diffusion,
             placement,
             measures: Measures::new(n),
+            magnitudes: vec![0.0; n],
+            has_magnitudes: false,
             diffusion_rhs: vec![DVec3::ZERO; n_smoothing_rows + n],
             zeros: vec![DVec3::ZERO; n],
             targets: vec![DVec3::ZERO; n],
-            has_magnitudes: false,
             placement_rhs: vec![DVec3::ZERO; n_rows],
             solved: vec![DVec3::ZERO; n],
         })
@@ -171,9 +182,9 @@ impl FairSurface {
         self.rings.len()
     }
 
-    /// Makes the next iteration measure the Laplacian magnitudes from the geometry again,
-    /// instead of carrying them over: for after an edit that should change the curvature
-    /// the surface aims for.
+    /// Makes the next iteration measure the Laplacian magnitudes from the geometry again
+    /// instead of keeping them: for after an edit that should change the curvature the
+    /// surface aims for.
     pub fn remeasure(&mut self) {
         self.has_magnitudes = false;
     }
@@ -194,23 +205,22 @@ impl FairSurface {
         }
         self.measures
             .update(&self.triangles, &self.rings, positions);
-        let m = &self.measures;
+        if !self.has_magnitudes {
+            self.magnitudes.copy_from_slice(&self.measures.magnitudes);
+            self.has_magnitudes = true;
+        }
         for i in 0..n {
-            // Magnitudes are state after the first measurement; see the module docs.
-            let magnitude = if self.has_magnitudes {
-                self.targets[i].x
-            } else {
-                m.magnitudes[i]
-            };
-            let current = DVec3::new(magnitude, m.edge_lengths[i], 0.0);
-            self.diffusion_rhs[self.n_smoothing_rows + i] = DIFFUSION_WEIGHT * current;
+            let length = self.current_length(i, positions);
+            self.diffusion_rhs[self.n_smoothing_rows + i] =
+                DIFFUSION_WEIGHT * DVec3::new(self.magnitudes[i], length, 0.0);
         }
         self.diffusion
             .solve(&self.diffusion_rhs, &self.zeros, &mut self.targets)?;
-        self.has_magnitudes = true;
+        let m = &self.measures;
         for (row, &i) in self.laplacian_rows.iter().enumerate() {
             let i = i as usize;
-            self.placement_rhs[row] = m.areas[i] * self.targets[i].x * m.normals[i];
+            let w = fair_systems::laplacian_weight(self.is_curve[i]);
+            self.placement_rhs[row] = w * m.areas[i] * self.targets[i].x * m.normals[i];
         }
         let offset = self.laplacian_rows.len();
         for (k, &[i, j]) in self.edge_rows.iter().enumerate() {
@@ -227,6 +237,19 @@ impl FairSurface {
             *p = q;
         }
         Ok(step)
+    }
+
+    /// `e'_i`: the mean length of the edges at `i`, or of its curve edges on a curve.
+    fn current_length(&self, i: usize, positions: &[DVec3]) -> f64 {
+        let along = self.curve_rings.ring(i);
+        if along.is_empty() {
+            return self.measures.edge_lengths[i];
+        }
+        along
+            .iter()
+            .map(|&j| positions[i].distance(positions[j as usize]))
+            .sum::<f64>()
+            / along.len() as f64
     }
 
     /// Iterates until no vertex moves more than `tolerance` times the bounding-box diagonal,
@@ -258,58 +281,4 @@ impl FairSurface {
         }
         Ok(summary)
     }
-}
-
-/// `[L_d; w_d I]`: smoothing rows for non-sharp vertices over their non-sharp neighbours,
-/// then identity rows. Returns the factored system and the number of smoothing rows.
-fn factor_diffusion(rings: &Rings, is_sharp: &[bool]) -> Result<(Prefactored, usize), SolveError> {
-    let n = rings.len();
-    let is_smooth = |j: &u32| !is_sharp[*j as usize];
-    let smoothing: Vec<usize> = (0..n)
-        .filter(|&i| !is_sharp[i] && rings.ring(i).iter().any(is_smooth))
-        .collect();
-    let n_rows = smoothing.len();
-    let mut triplets = Triplets::with_capacity(n_rows + n, n, 8 * n);
-    for (row, &i) in smoothing.iter().enumerate() {
-        let count = rings.ring(i).iter().filter(|j| is_smooth(j)).count() as f64;
-        triplets.push(row, i, 1.0);
-        for &j in rings.ring(i).iter().filter(|j| is_smooth(j)) {
-            triplets.push(row, j as usize, -1.0 / count);
-        }
-    }
-    for i in 0..n {
-        triplets.push(n_rows + i, i, DIFFUSION_WEIGHT);
-    }
-    Ok((
-        Prefactored::new(&triplets.build(), &vec![false; n])?,
-        n_rows,
-    ))
-}
-
-/// `[L rows of laplacian_rows; w_e (v_i - v_j) for B]` with curve vertices fixed.
-fn factor_placement(
-    rings: &Rings,
-    laplacian_rows: &[u32],
-    edge_rows: &[[u32; 2]],
-    is_curve: &[bool],
-) -> Result<Prefactored, SolveError> {
-    let n = rings.len();
-    let mut triplets = Triplets::with_capacity(
-        laplacian_rows.len() + edge_rows.len(),
-        n,
-        8 * n + 2 * edge_rows.len(),
-    );
-    for (row, &i) in laplacian_rows.iter().enumerate() {
-        let ring = rings.ring(i as usize);
-        triplets.push(row, i as usize, 1.0);
-        for &j in ring {
-            triplets.push(row, j as usize, -1.0 / ring.len() as f64);
-        }
-    }
-    let offset = laplacian_rows.len();
-    for (k, &[i, j]) in edge_rows.iter().enumerate() {
-        triplets.push(offset + k, i as usize, EDGE_WEIGHT);
-        triplets.push(offset + k, j as usize, -EDGE_WEIGHT);
-    }
-    Prefactored::new(&triplets.build(), is_curve)
 }

@@ -19,6 +19,8 @@
 
 use glam::DVec3;
 
+use crate::mesh::Mesh;
+
 /// The neighbours of every vertex in compressed rows.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Rings {
@@ -29,6 +31,43 @@ pub(crate) struct Rings {
 }
 
 impl Rings {
+    /// The one-rings of a mesh, counter-clockwise.
+    pub(crate) fn of_mesh(mesh: &Mesh) -> Rings {
+        let mut rings = Rings {
+            start: Vec::with_capacity(mesh.n_vertices() + 1),
+            neighbors: Vec::new(),
+        };
+        rings.start.push(0);
+        for v in mesh.vertices() {
+            rings
+                .neighbors
+                .extend(mesh.vertex_neighbors(v).map(|u| u.0));
+            rings.start.push(rings.neighbors.len() as u32);
+        }
+        rings
+    }
+
+    /// The rings of a graph on `n` vertices given by undirected edges.
+    pub(crate) fn from_edges(n: usize, edges: impl IntoIterator<Item = [u32; 2]>) -> Rings {
+        let mut directed: Vec<[u32; 2]> = edges
+            .into_iter()
+            .flat_map(|[a, b]| [[a, b], [b, a]])
+            .collect();
+        directed.sort_unstable();
+        directed.dedup();
+        let mut start = vec![0u32; n + 1];
+        for &[a, _] in &directed {
+            start[a as usize + 1] += 1;
+        }
+        for i in 0..n {
+            start[i + 1] += start[i];
+        }
+        Rings {
+            start,
+            neighbors: directed.iter().map(|&[_, b]| b).collect(),
+        }
+    }
+
     /// The ring of vertex `i`.
     pub(crate) fn ring(&self, i: usize) -> &[u32] {
         &self.neighbors[self.start[i] as usize..self.start[i + 1] as usize]
@@ -112,20 +151,15 @@ impl Measures {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::mesh::{Mesh, primitives};
+    use crate::mesh::primitives;
 
-    fn rings(mesh: &Mesh) -> Rings {
-        let mut rings = Rings {
-            start: vec![0],
-            neighbors: Vec::new(),
-        };
-        for v in mesh.vertices() {
-            rings
-                .neighbors
-                .extend(mesh.vertex_neighbors(v).map(|u| u.0));
-            rings.start.push(rings.neighbors.len() as u32);
-        }
-        rings
+    #[test]
+    fn rings_from_edges() {
+        let rings = Rings::from_edges(4, [[0, 1], [1, 2], [2, 0], [1, 0]]);
+        assert_eq!(rings.len(), 4);
+        assert_eq!(rings.ring(0), &[1, 2]);
+        assert_eq!(rings.ring(1), &[0, 2]);
+        assert!(rings.ring(3).is_empty());
     }
 
     #[test]
@@ -135,7 +169,7 @@ mod tests {
         let radius = 2.0;
         let mesh = primitives::icosphere(radius, 4);
         let mut m = Measures::new(mesh.n_vertices());
-        m.update(mesh.triangles(), &rings(&mesh), mesh.positions());
+        m.update(mesh.triangles(), &Rings::of_mesh(&mesh), mesh.positions());
         for (p, n) in mesh.positions().iter().zip(&m.normals) {
             assert!(n.dot(p.normalize()) > 0.999);
         }

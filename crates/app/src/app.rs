@@ -11,7 +11,7 @@ use std::sync::Arc;
 use eframe::egui_wgpu;
 use egui::{Key, KeyboardShortcut, Modifiers};
 use sketchmesh_core::curve::{StrokePoint, process_stroke};
-use sketchmesh_core::document::{Editor, Op};
+use sketchmesh_core::document::{Editor, Op, PendingCreate};
 
 use crate::camera::OrbitCamera;
 use crate::input::PointerSample;
@@ -46,6 +46,10 @@ pub struct SketchApp {
     /// Samples queued by the browser's pointer listeners.
     pub web_samples: Rc<RefCell<std::collections::VecDeque<PointerSample>>>,
     geometry: Arc<SceneGeometry>,
+    /// What `geometry` was built from: the editor revision and the pending iterations.
+    geometry_source: (u64, usize),
+    /// A shape being created, refined one iteration per frame before it is committed.
+    pending: Option<PendingCreate>,
     options: ViewOptions,
     show_help: bool,
     status: Option<(String, f64)>,
@@ -59,6 +63,8 @@ impl SketchApp {
         if let Some(rs) = cc.wgpu_render_state.as_ref() {
             SceneRenderer::install(rs);
         }
+        // The 3D view is dark; a light toolbar beside it would glare.
+        cc.egui_ctx.set_theme(egui::Theme::Dark);
         Self::with_backend(backend, cc.wgpu_render_state.is_some())
     }
 
@@ -77,6 +83,8 @@ impl SketchApp {
             egui_pointer: Default::default(),
             web_samples: Default::default(),
             geometry: Arc::new(SceneGeometry::default()),
+            geometry_source: (u64::MAX, 0),
+            pending: None,
             options: ViewOptions {
                 wireframe: false,
                 grid: true,
@@ -93,9 +101,39 @@ impl SketchApp {
     }
 
     /// Applies `op`, turning a refusal into a status message. Nothing changes on failure.
+    /// A creation starts refining instead, and shows at once; any other op first commits
+    /// a creation in progress, so ops stay in the order the user made them.
     fn apply(&mut self, op: Op, now: f64) {
-        let result = self.shared.borrow_mut().editor.apply(op);
+        self.commit_pending(now);
+        let result = match op {
+            Op::Create(input) => PendingCreate::start(input).map(|p| self.pending = Some(p)),
+            op => self.shared.borrow_mut().editor.apply(op),
+        };
         if let Err(e) = result {
+            self.status = Some((e.to_string(), now + STATUS_SECONDS));
+        }
+    }
+
+    /// Runs one more iteration of a creation in progress; commits it once converged.
+    fn refine_pending(&mut self, ctx: &egui::Context) {
+        let Some(pending) = self.pending.as_mut() else {
+            return;
+        };
+        match pending.step() {
+            Ok(false) => ctx.request_repaint(),
+            Ok(true) => self.commit_pending(ctx.input(|i| i.time)),
+            Err(e) => {
+                self.pending = None;
+                self.status = Some((e.to_string(), ctx.input(|i| i.time) + STATUS_SECONDS));
+            }
+        }
+    }
+
+    fn commit_pending(&mut self, now: f64) {
+        let Some(pending) = self.pending.take() else {
+            return;
+        };
+        if let Err(e) = self.shared.borrow_mut().editor.commit_create(pending) {
             self.status = Some((e.to_string(), now + STATUS_SECONDS));
         }
     }
@@ -188,9 +226,16 @@ impl SketchApp {
                 shared.camera.dolly(1.0 / f64::from(zoom));
             }
         }
-        let revision = self.shared.borrow().editor.revision();
-        if self.geometry.revision != revision {
-            self.geometry = Arc::new(SceneGeometry::build(self.shared.borrow().editor.document(), revision));
+        self.refine_pending(ui.ctx());
+        let source = (
+            self.shared.borrow().editor.revision(),
+            self.pending.as_ref().map_or(0, PendingCreate::iterations),
+        );
+        if self.geometry_source != source {
+            let pending = self.pending.as_ref().map(PendingCreate::model);
+            let generation = self.geometry.generation + 1;
+            self.geometry = Arc::new(SceneGeometry::build(self.shared.borrow().editor.document(), pending.as_ref(), generation));
+            self.geometry_source = source;
         }
         if self.has_renderer {
             let camera = self.shared.borrow().camera.camera();
@@ -208,7 +253,8 @@ impl SketchApp {
             ui.painter().add(egui_wgpu::Callback::new_paint_callback(viewport, callback));
         }
         self.live_stroke_ui(ui, viewport);
-        if self.shared.borrow().editor.document().is_empty() && self.tool.preview().is_none() {
+        let idle = self.tool.preview().is_none() && self.pending.is_none();
+        if self.shared.borrow().editor.document().is_empty() && idle {
             ui.painter().text(
                 viewport.center_bottom() - egui::vec2(0.0, 48.0),
                 egui::Align2::CENTER_CENTER,

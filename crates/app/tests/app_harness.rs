@@ -9,6 +9,8 @@ use sketchmesh_app::SketchApp;
 fn harness() -> Harness<'static, SketchApp> {
     let mut h = Harness::builder()
         .with_size(vec2(900.0, 600.0))
+        // A creation refines over about ten frames before it settles.
+        .with_max_steps(40)
         .wgpu()
         .build_eframe(|cc| SketchApp::new(cc));
     // The pointer's own cursor would differ between before and after.

@@ -591,21 +591,26 @@ fn survey() {
 #[ignore]
 fn timing_debug() {
     let camera = Camera::default();
-    let stroke = drawn(400, polar(150.0, &[(5, 0.3, 0.0)], 1.0, 0.0));
-    let t = std::time::Instant::now();
-    let params = CreateParams { target_vertices: 1500, ..CreateParams::default() };
-    let mut creation = create_from_stroke(&stroke, &camera, VIEWPORT, &params).unwrap();
-    eprintln!("create {:?}", t.elapsed());
-    let t = std::time::Instant::now();
-    let _ = FairSurface::new(&creation.mesh, &[creation.control_curve()]).unwrap();
-    eprintln!("fair surface new {:?}", t.elapsed());
-    let t = std::time::Instant::now();
-    creation.converge(10, 0.0).unwrap();
-    eprintln!("10 iterations {:?}", t.elapsed());
-    let t = std::time::Instant::now();
-    let _ = silhouette_error(&creation.mesh, &camera, &stroke);
-    eprintln!("silhouette {:?}", t.elapsed());
-    let t = std::time::Instant::now();
-    let _ = (min_angle_deg(&creation.mesh), min_neighbour_cosine(&creation.mesh), creation.mesh.validate());
-    eprintln!("checks {:?}", t.elapsed());
+    let stroke = drawn(400, polar(150.0, &[], 1.0, 0.0));
+    for n in [2000, 10000] {
+        let params = CreateParams {
+            target_vertices: n,
+            ..CreateParams::default()
+        };
+        let t = std::time::Instant::now();
+        let mut creation = create_from_stroke(&stroke, &camera, VIEWPORT, &params).unwrap();
+        let total = t.elapsed();
+        let t = std::time::Instant::now();
+        let mut surface = FairSurface::new(&creation.mesh, &[creation.control_curve()]).unwrap();
+        let factor = t.elapsed();
+        let t = std::time::Instant::now();
+        surface.iterate(creation.mesh.positions_mut()).unwrap();
+        let iteration = t.elapsed();
+        let t = std::time::Instant::now();
+        let _ = sketchmesh_core::mesh::Mesh::from_soup(&creation.mesh.to_soup()).unwrap();
+        let from_soup = t.elapsed();
+        eprintln!(
+            "{n}: create {total:?}, FairSurface::new {factor:?}, iterate {iteration:?}, from_soup {from_soup:?}"
+        );
+    }
 }

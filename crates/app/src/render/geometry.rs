@@ -7,7 +7,7 @@ use std::collections::HashSet;
 
 use bytemuck::{Pod, Zeroable};
 use glam::DVec3;
-use sketchmesh_core::document::Document;
+use sketchmesh_core::document::{Document, Model};
 use sketchmesh_core::geometry::vertex_normals;
 
 /// A mesh vertex as the shaders read it.
@@ -48,8 +48,8 @@ pub const CONTROL_CURVE_WIDTH: f32 = 3.0;
 /// Everything the scene pass draws that comes from the document.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct SceneGeometry {
-    /// The editor revision these arrays were built from.
-    pub revision: u64,
+    /// Changes with every rebuild, so the GPU side knows when to upload.
+    pub generation: u64,
     /// All models' vertices, concatenated.
     pub vertices: Vec<MeshVertex>,
     /// Triangle indices into `vertices`.
@@ -63,13 +63,13 @@ pub struct SceneGeometry {
 }
 
 impl SceneGeometry {
-    /// Builds the arrays for `doc` at `revision`.
-    pub fn build(doc: &Document, revision: u64) -> Self {
+    /// Builds the arrays for `doc` plus a model still being created, as `generation`.
+    pub fn build(doc: &Document, pending: Option<&Model>, generation: u64) -> Self {
         let mut scene = Self {
-            revision,
+            generation,
             ..Self::default()
         };
-        for model in &doc.models {
+        for model in doc.models.iter().map(|m| m.as_ref()).chain(pending) {
             scene.add_mesh(model.mesh.positions(), model.mesh.triangle_indices(), &vertex_normals(&model.mesh));
             for curve in &model.curves {
                 let color = if curve.sharp { SHARP_CURVE_COLOR } else { SMOOTH_CURVE_COLOR };

@@ -44,7 +44,7 @@ pub struct ViewOptions {
 
 /// GPU buffers holding one [`SceneGeometry`].
 struct GeometryBuffers {
-    revision: u64,
+    generation: u64,
     vertices: Option<wgpu::Buffer>,
     triangles: Option<(wgpu::Buffer, u32)>,
     edges: Option<(wgpu::Buffer, u32)>,
@@ -121,13 +121,13 @@ impl SceneRenderer {
     }
 
     fn upload(&mut self, device: &wgpu::Device, scene: &SceneGeometry) {
-        if self.geometry.as_ref().is_some_and(|g| g.revision == scene.revision) {
+        if self.geometry.as_ref().is_some_and(|g| g.generation == scene.generation) {
             return;
         }
         let vertex = wgpu::BufferUsages::VERTEX;
         let index = wgpu::BufferUsages::INDEX;
         self.geometry = Some(GeometryBuffers {
-            revision: scene.revision,
+            generation: scene.generation,
             vertices: buffer(device, "mesh vertices", &scene.vertices, vertex).map(|(b, _)| b),
             triangles: buffer(device, "mesh triangles", &scene.triangles, index),
             edges: buffer(device, "mesh edges", &scene.edges, index),
@@ -193,7 +193,7 @@ pub struct SceneCallback {
     pub rect: egui::Rect,
     /// Shader constants for this frame (`viewport` is filled in by `prepare`).
     pub uniforms: Uniforms,
-    /// The document's arrays (uploaded only when their revision changes).
+    /// The document's arrays (uploaded only when their generation changes).
     pub geometry: Arc<SceneGeometry>,
     /// Wireframe and grid switches.
     pub options: ViewOptions,

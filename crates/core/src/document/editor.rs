@@ -3,9 +3,9 @@
 use std::sync::Arc;
 
 use super::history::History;
-use super::{ControlCurve, Document, Model, Op, SketchCurve, StrokeInput};
+use super::{Document, Model, Op, PendingCreate, SketchCurve, StrokeInput};
 use crate::curve::{StrokeError, process_stroke};
-use crate::fibermesh::{CreateError, CreateParams, create_converged_from_stroke};
+use crate::fibermesh::CreateError;
 
 /// Why an op was refused. The messages are sentences for the user.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -71,11 +71,9 @@ impl Editor {
                 self.history.record(before);
             }
             Op::Create(input) => {
-                let model = create_model(input)?;
-                let mut next = self.document.clone();
-                next.models.push(Arc::new(model));
-                let before = std::mem::replace(&mut self.document, next);
-                self.history.record(before);
+                let mut pending = PendingCreate::start(input.clone())?;
+                pending.finish()?;
+                self.add_model(pending.model());
             }
             Op::Undo => {
                 if !self.history.undo(&mut self.document) {
@@ -91,6 +89,25 @@ impl Editor {
         self.log.push(op);
         self.revision += 1;
         Ok(())
+    }
+
+    /// Commits a creation the app refined over frames: finishes it (the same steps as
+    /// `apply` of its `create` op, so replay gives the same mesh) and logs the op.
+    ///
+    /// Errors: a failed solve; the document is unchanged then.
+    pub fn commit_create(&mut self, mut pending: PendingCreate) -> Result<(), CommandError> {
+        pending.finish()?;
+        self.add_model(pending.model());
+        self.log.push(Op::Create(pending.input().clone()));
+        self.revision += 1;
+        Ok(())
+    }
+
+    fn add_model(&mut self, model: Model) {
+        let mut next = self.document.clone();
+        next.models.push(Arc::new(model));
+        let before = std::mem::replace(&mut self.document, next);
+        self.history.record(before);
     }
 
     /// Undoes the last change; the same as `apply(Op::Undo)`.
@@ -128,27 +145,6 @@ impl Editor {
     pub fn ops(&self) -> &[Op] {
         &self.log
     }
-}
-
-/// Inflates a closed stroke into a FiberMesh model whose outline stays on it as a smooth
-/// control curve; the optimization runs to convergence, so replay gives the same mesh.
-fn create_model(input: &StrokeInput) -> Result<Model, CommandError> {
-    let viewport = input.viewport_size();
-    if !viewport.is_finite() || viewport.min_element() <= 0.0 || !input.camera.is_valid() {
-        return Err(CommandError::BadView);
-    }
-    let params = CreateParams::default();
-    let (creation, _) = create_converged_from_stroke(&input.points(), &input.camera, viewport, &params)?;
-    let points = creation.curve_vertices.iter().map(|&v| creation.mesh.position(v)).collect();
-    Ok(Model {
-        curves: vec![ControlCurve {
-            points,
-            vertices: creation.curve_vertices,
-            closed: true,
-            sharp: false,
-        }],
-        mesh: creation.mesh,
-    })
 }
 
 /// Processes the stroke in screen space and projects each point onto the plane through the

@@ -10,10 +10,12 @@ mod history;
 mod intent;
 mod model;
 mod op;
+mod pending;
 mod session;
 
 pub use editor::{CommandError, Editor};
 pub use intent::{CLOSE_TOLERANCE_PX, op_for_stroke, starts_on_model};
 pub use model::{ControlCurve, Document, Model, SketchCurve, Stats};
 pub use op::{Op, StrokeInput};
+pub use pending::PendingCreate;
 pub use session::{SESSION_FORMAT, SESSION_VERSION, Session, SessionError};

@@ -78,7 +78,12 @@ pub(crate) fn factor_placement(
         triplets.push(offset + k, i as usize, EDGE_WEIGHT);
         triplets.push(offset + k, j as usize, -EDGE_WEIGHT);
     }
-    Prefactored::new(&triplets.build(), is_curve)
+    let t = std::time::Instant::now();
+    let a = triplets.build();
+    let t1 = std::time::Instant::now();
+    let r = Prefactored::new(&a, is_curve)?;
+    if std::env::var("TIMING").is_ok() { eprintln!("placement build {:?} factor {:?} {:?}", t1 - t, t1.elapsed(), r); }
+    Ok(r)
 }
 
 #[cfg(test)]

@@ -167,8 +167,12 @@ pub fn create_from_stroke(
         .ok_or(CreateError::BadView)?;
     let spacing = spacing_for(&loop_on_plane, params.target_vertices);
     let boundary = outline::even_outline(&loop_on_plane, spacing)?;
+    let t0 = std::time::Instant::now();
     let planar = triangulate::triangulate(&boundary, spacing)?;
+    let t1 = std::time::Instant::now();
     let (mut mesh, curve_vertices) = inflate::inflate(&planar, &plane)?;
+    let t2 = std::time::Instant::now();
+    if std::env::var("TIMING").is_ok() { eprintln!("triangulate {:?} inflate {:?}", t1 - t0, t2 - t1); }
     let curve = ControlCurve {
         vertices: curve_vertices.clone(),
         is_closed: true,

@@ -59,7 +59,10 @@ pub struct SketchApp {
 impl SketchApp {
     /// Creates the app and installs the 3D renderer when wgpu is available.
     pub fn new(cc: &eframe::CreationContext<'_>) -> Self {
-        let backend = cc.wgpu_render_state.as_ref().map_or_else(|| "none".to_owned(), backend_name);
+        let backend = cc
+            .wgpu_render_state
+            .as_ref()
+            .map_or_else(|| "none".to_owned(), backend_name);
         if let Some(rs) = cc.wgpu_render_state.as_ref() {
             SceneRenderer::install(rs);
         }
@@ -190,18 +193,28 @@ impl SketchApp {
         let mut routed = Vec::new();
         for sample in std::mem::take(&mut self.samples) {
             let on_view = viewport.contains(sample.pos_in_screen)
-                && ctx.layer_id_at(sample.pos_in_screen).is_none_or(|l| l.order == egui::Order::Background);
+                && ctx
+                    .layer_id_at(sample.pos_in_screen)
+                    .is_none_or(|l| l.order == egui::Order::Background);
             routed.clear();
             self.router.route(&sample, on_view, &mut routed);
             for r in &routed {
                 match r {
-                    Routed::Nav(action) => self.shared.borrow_mut().camera.apply(*action, viewport.height().into()),
+                    Routed::Nav(action) => self
+                        .shared
+                        .borrow_mut()
+                        .camera
+                        .apply(*action, viewport.height().into()),
                     Routed::Tool(event) => {
                         let view = ViewCtx {
                             camera: self.shared.borrow().camera.camera(),
                             viewport,
                         };
-                        let output = self.tool.on_event(event, &view, self.shared.borrow().editor.document());
+                        let output = self.tool.on_event(
+                            event,
+                            &view,
+                            self.shared.borrow().editor.document(),
+                        );
                         if let ToolOutput::Commit(op) = output {
                             self.apply(op, now);
                         }
@@ -234,7 +247,11 @@ impl SketchApp {
         if self.geometry_source != source {
             let pending = self.pending.as_ref().map(PendingCreate::model);
             let generation = self.geometry.generation + 1;
-            self.geometry = Arc::new(SceneGeometry::build(self.shared.borrow().editor.document(), pending.as_ref(), generation));
+            self.geometry = Arc::new(SceneGeometry::build(
+                self.shared.borrow().editor.document(),
+                pending.as_ref(),
+                generation,
+            ));
             self.geometry_source = source;
         }
         if self.has_renderer {
@@ -250,7 +267,8 @@ impl SketchApp {
                 geometry: self.geometry.clone(),
                 options: self.options,
             };
-            ui.painter().add(egui_wgpu::Callback::new_paint_callback(viewport, callback));
+            ui.painter()
+                .add(egui_wgpu::Callback::new_paint_callback(viewport, callback));
         }
         self.live_stroke_ui(ui, viewport);
         let idle = self.tool.preview().is_none() && self.pending.is_none();
@@ -275,8 +293,10 @@ impl SketchApp {
         let color = egui::Color32::from_rgb(242, 199, 82);
         for pair in points.windows(2) {
             let width = pressure_width((pair[0].pressure + pair[1].pressure) * 0.5) as f32;
-            ui.painter().line_segment([to_screen(&pair[0]), to_screen(&pair[1])], (width, color));
-            ui.painter().circle_filled(to_screen(&pair[1]), width * 0.5, color);
+            ui.painter()
+                .line_segment([to_screen(&pair[0]), to_screen(&pair[1])], (width, color));
+            ui.painter()
+                .circle_filled(to_screen(&pair[1]), width * 0.5, color);
         }
     }
 }
@@ -293,14 +313,22 @@ impl eframe::App for SketchApp {
             .show(ui, |ui| {
                 let shared = self.shared.borrow();
                 let status = self.status.as_ref().map(|(s, _)| s.as_str());
-                panels::toolbar::toolbar_ui(ui, &shared.editor, &mut self.options, &mut self.show_help, status)
+                panels::toolbar::toolbar_ui(
+                    ui,
+                    &shared.editor,
+                    &mut self.options,
+                    &mut self.show_help,
+                    status,
+                )
             })
             .inner;
         match action {
             Some(panels::toolbar::Action::Undo) => self.apply(Op::Undo, now),
             Some(panels::toolbar::Action::Redo) => self.apply(Op::Redo, now),
             Some(panels::toolbar::Action::FrameAll) => self.frame_all(),
-            Some(panels::toolbar::Action::ResetView) => self.shared.borrow_mut().camera = OrbitCamera::default(),
+            Some(panels::toolbar::Action::ResetView) => {
+                self.shared.borrow_mut().camera = OrbitCamera::default()
+            }
             None => {}
         }
         egui::CentralPanel::no_frame().show(ui, |ui| self.viewport_ui(ui));

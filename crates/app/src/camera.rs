@@ -129,10 +129,14 @@ mod tests {
         let mut cam = OrbitCamera::default();
         let viewport = DVec2::new(800.0, 600.0);
         let before = cam.camera();
-        let grabbed = before.screen_from_world(DVec3::ZERO, viewport).expect("visible");
+        let grabbed = before
+            .screen_from_world(DVec3::ZERO, viewport)
+            .expect("visible");
         cam.pan(DVec2::new(40.0, -25.0), viewport.y);
         let after = cam.camera();
-        let moved = after.screen_from_world(DVec3::ZERO, viewport).expect("visible");
+        let moved = after
+            .screen_from_world(DVec3::ZERO, viewport)
+            .expect("visible");
         let shift = DVec2::new(moved.x - grabbed.x, moved.y - grabbed.y);
         assert!((shift - DVec2::new(40.0, -25.0)).length() < 1e-6, "{shift}");
     }
@@ -154,7 +158,11 @@ mod tests {
         cam.frame(DVec3::splat(-1.0), DVec3::splat(1.0));
         let c = cam.camera();
         let viewport = DVec2::new(600.0, 600.0);
-        for corner in [DVec3::splat(-1.0), DVec3::splat(1.0), DVec3::new(1.0, -1.0, 1.0)] {
+        for corner in [
+            DVec3::splat(-1.0),
+            DVec3::splat(1.0),
+            DVec3::new(1.0, -1.0, 1.0),
+        ] {
             let p = c.screen_from_world(corner, viewport).expect("in front");
             assert!(p.x > 0.0 && p.x < 600.0 && p.y > 0.0 && p.y < 600.0, "{p}");
         }

@@ -33,8 +33,10 @@ pub async fn start(canvas_id: String) -> Result<(), JsValue> {
             Box::new(move |cc| {
                 let app = SketchApp::new(cc);
                 let ctx = cc.egui_ctx.clone();
-                let pointer = WebPointer::listen(&listen_on, app.web_samples.clone(), move || ctx.request_repaint())
-                    .map_err(|e| format!("Could not listen to pointer events: {e:?}"))?;
+                let pointer = WebPointer::listen(&listen_on, app.web_samples.clone(), move || {
+                    ctx.request_repaint()
+                })
+                .map_err(|e| format!("Could not listen to pointer events: {e:?}"))?;
                 // The listeners live as long as the page.
                 std::mem::forget(pointer);
                 install_page_api(app.shared(), cc.egui_ctx.clone())
@@ -50,23 +52,38 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
     let set = |name: &str, f: JsValue| Reflect::set(&api, &JsValue::from_str(name), &f).map(|_| ());
 
     let s = shared.clone();
-    set("stats", getter(move || json(&s.borrow().editor.document().stats())))?;
+    set(
+        "stats",
+        getter(move || json(&s.borrow().editor.document().stats())),
+    )?;
     let s = shared.clone();
-    set("session", getter(move || Ok(JsValue::from_str(&s.borrow().editor.session_json()))))?;
+    set(
+        "session",
+        getter(move || Ok(JsValue::from_str(&s.borrow().editor.session_json()))),
+    )?;
     let s = shared.clone();
     set("camera", getter(move || json(&s.borrow().camera.camera())))?;
     let s = shared.clone();
-    set("backend", getter(move || Ok(JsValue::from_str(&s.borrow().backend))))?;
+    set(
+        "backend",
+        getter(move || Ok(JsValue::from_str(&s.borrow().backend))),
+    )?;
     let s = shared.clone();
     set(
         "exportGlb",
-        getter(move || Ok(Uint8Array::from(sketchmesh_core::io::write_glb(s.borrow().editor.document()).as_slice()).into())),
+        getter(move || {
+            Ok(Uint8Array::from(
+                sketchmesh_core::io::write_glb(s.borrow().editor.document()).as_slice(),
+            )
+            .into())
+        }),
     )?;
     let (s, c) = (shared.clone(), ctx.clone());
     set(
         "replay",
         Closure::<dyn Fn(String) -> Result<(), JsValue>>::new(move |session: String| {
-            let editor = sketchmesh_core::document::Editor::replay_json(&session).map_err(|e| js_error(&e.to_string()))?;
+            let editor = sketchmesh_core::document::Editor::replay_json(&session)
+                .map_err(|e| js_error(&e.to_string()))?;
             s.borrow_mut().editor = editor;
             c.request_repaint();
             Ok(())
@@ -80,7 +97,10 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
         })
         .into_js_value(),
     )?;
-    for (name, op) in [("undo", sketchmesh_core::document::Op::Undo), ("redo", sketchmesh_core::document::Op::Redo)] {
+    for (name, op) in [
+        ("undo", sketchmesh_core::document::Op::Undo),
+        ("redo", sketchmesh_core::document::Op::Redo),
+    ] {
         let (s, c) = (shared.clone(), ctx.clone());
         set(
             name,

@@ -52,7 +52,11 @@ const TOOLBAR_ROWS: u32 = 80;
 fn changed_pixels(a: &image::RgbaImage, b: &image::RgbaImage) -> usize {
     a.enumerate_pixels()
         .filter(|(_, y, _)| *y >= TOOLBAR_ROWS)
-        .filter(|(x, y, p)| p.0.iter().zip(b.get_pixel(*x, *y).0.iter()).any(|(u, v)| u.abs_diff(*v) > 24))
+        .filter(|(x, y, p)| {
+            p.0.iter()
+                .zip(b.get_pixel(*x, *y).0.iter())
+                .any(|(u, v)| u.abs_diff(*v) > 24)
+        })
         .count()
 }
 
@@ -61,7 +65,12 @@ fn stroke_leaves_ink_and_undo_takes_it_away() {
     let mut h = harness();
     h.run();
     let before = h.render().expect("render");
-    drag(&mut h, pos2(250.0, 300.0), pos2(650.0, 320.0), PointerButton::Primary);
+    drag(
+        &mut h,
+        pos2(250.0, 300.0),
+        pos2(650.0, 320.0),
+        PointerButton::Primary,
+    );
     assert_eq!(curves(&h), 1, "one stroke, one curve");
     let with_stroke = h.render().expect("render");
     let inked = changed_pixels(&before, &with_stroke);
@@ -73,7 +82,10 @@ fn stroke_leaves_ink_and_undo_takes_it_away() {
         let p = with_stroke.get_pixel(450, y).0;
         p[0] > 180 && p[1] > 140 && p[2] < 140
     });
-    assert!(ink_near_mid, "no ink near the stroke's middle (pixel there: {mid:?})");
+    assert!(
+        ink_near_mid,
+        "no ink near the stroke's middle (pixel there: {mid:?})"
+    );
 
     h.key_press_modifiers(Modifiers::COMMAND, egui::Key::Z);
     h.run();
@@ -103,7 +115,9 @@ fn closed_stroke_becomes_a_lit_shape_with_its_curve() {
     h.step();
     for i in 1..=60 {
         let a = std::f32::consts::TAU * i as f32 / 60.0;
-        h.event(Event::PointerMoved(center + vec2(150.0 * a.cos(), 110.0 * a.sin())));
+        h.event(Event::PointerMoved(
+            center + vec2(150.0 * a.cos(), 110.0 * a.sin()),
+        ));
         h.step();
     }
     press(&h, center + vec2(150.0, 0.0), PointerButton::Primary, false);
@@ -118,10 +132,15 @@ fn closed_stroke_becomes_a_lit_shape_with_its_curve() {
     assert!(p[0] > 120 && p[0] >= p[2], "centre pixel {p:?}");
     // The outline is drawn as a blue control curve on the silhouette.
     let blue_on_rim = (-6..=6).any(|dx: i32| {
-        let q = image.get_pixel((center.x as i32 + 150 + dx) as u32, center.y as u32).0;
+        let q = image
+            .get_pixel((center.x as i32 + 150 + dx) as u32, center.y as u32)
+            .0;
         q[2] > 180 && q[2] > q[0] + 60
     });
-    assert!(blue_on_rim, "no blue curve near the right end of the outline");
+    assert!(
+        blue_on_rim,
+        "no blue curve near the right end of the outline"
+    );
 }
 
 #[test]
@@ -129,8 +148,16 @@ fn right_drag_orbits_without_drawing() {
     let mut h = harness();
     h.run();
     let yaw_before = h.state().shared().borrow().camera.yaw;
-    drag(&mut h, pos2(300.0, 300.0), pos2(500.0, 300.0), PointerButton::Secondary);
+    drag(
+        &mut h,
+        pos2(300.0, 300.0),
+        pos2(500.0, 300.0),
+        PointerButton::Secondary,
+    );
     let yaw_after = h.state().shared().borrow().camera.yaw;
-    assert!((yaw_after - yaw_before).abs() > 0.5, "yaw {yaw_before} -> {yaw_after}");
+    assert!(
+        (yaw_after - yaw_before).abs() > 0.5,
+        "yaw {yaw_before} -> {yaw_after}"
+    );
     assert_eq!(curves(&h), 0);
 }

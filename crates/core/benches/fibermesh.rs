@@ -1,9 +1,9 @@
 //! FiberMesh creation from a circle-like stroke at 2k, 10k and 40k vertices: time to the
-//! first display ([`create_from_stroke`]: outline, triangulation, seed, both factorizations
-//! and one iteration), time to convergence, and one iteration at 10k vertices (targets:
-//! under 50 ms to first display and under 300 ms to convergence at 10k in the browser,
-//! which runs about 2-3x slower than native; one iteration under 8 ms natively). Results go
-//! in BENCHMARKS.md. Run with
+//! first display ([`seed_from_stroke`]: outline, triangulation, seed), to the first
+//! optimized mesh ([`create_from_stroke`]: the seed plus both factorizations and one
+//! iteration), to convergence, and one iteration (targets: under 50 ms to first display and
+//! under 300 ms to convergence at 10k in the browser, which runs about 2-3x slower than
+//! native; one iteration at 10k under 8 ms natively). Results go in BENCHMARKS.md. Run with
 //! `cargo bench -p sketchmesh-core --bench fibermesh -- --warm-up-time 1 --measurement-time 3`.
 
 use std::hint::black_box;
@@ -12,7 +12,9 @@ use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::StrokePoint;
-use sketchmesh_core::fibermesh::{CreateParams, create_converged_from_stroke, create_from_stroke};
+use sketchmesh_core::fibermesh::{
+    CreateParams, create_converged_from_stroke, create_from_stroke, seed_from_stroke,
+};
 
 const VIEWPORT: DVec2 = DVec2::new(1280.0, 720.0);
 
@@ -34,6 +36,22 @@ fn bench_creation(c: &mut Criterion) {
     let sizes = [2_000, 10_000, 40_000];
 
     let mut group = c.benchmark_group("fibermesh_first_display");
+    group.sample_size(10);
+    for &n in &sizes {
+        let params = CreateParams {
+            target_vertices: n,
+            ..CreateParams::default()
+        };
+        group.bench_with_input(BenchmarkId::from_parameter(n), &params, |b, params| {
+            b.iter(|| {
+                seed_from_stroke(black_box(&stroke), &camera, VIEWPORT, params)
+                    .expect("stroke is fine")
+            });
+        });
+    }
+    group.finish();
+
+    let mut group = c.benchmark_group("fibermesh_first_iteration");
     group.sample_size(10);
     for &n in &sizes {
         let params = CreateParams {

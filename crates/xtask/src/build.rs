@@ -146,19 +146,28 @@ fn wasm_opt_cached(workspace: &Workspace, input: &Path, cache: &Path) -> anyhow:
             wasm_opt.display()
         );
     }
-    recreate_dir(cache)?;
+    fs::create_dir_all(cache).with_context(|| format!("creating {}", cache.display()))?;
+    // Another xtask may be optimizing at the same time: remove the key first, write to a file of
+    // our own, then rename it into place, so the cache never pairs a key with a partial file.
+    let _ = fs::remove_file(&key_file);
+    let partial = cache.join(format!("{OUT_NAME}_bg.wasm.{}.partial", std::process::id()));
     println!(
         "xtask: wasm-opt {} (takes a few minutes)",
         WASM_OPT_ARGS.join(" ")
     );
-    run(
+    let optimized = run(
         "wasm-opt",
         Command::new(&wasm_opt)
             .args(WASM_OPT_ARGS)
             .arg(input)
             .arg("-o")
-            .arg(&output),
-    )?;
+            .arg(&partial),
+    );
+    if optimized.is_err() {
+        let _ = fs::remove_file(&partial);
+    }
+    optimized?;
+    fs::rename(&partial, &output).context("moving the wasm-opt output into the cache")?;
     // Written last, so an interrupted wasm-opt is redone next time.
     fs::write(&key_file, key).context("writing the wasm-opt cache key")?;
     Ok(output)

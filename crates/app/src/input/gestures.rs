@@ -196,7 +196,11 @@ mod tests {
 
     #[test]
     fn unknown_touch_is_ignored() {
-        let mut g = TwoFingerGesture::new([1, 2], [pos2(0.0, 0.0), pos2(50.0, 0.0)], TwoFingerDrag::Pan);
+        let mut g = TwoFingerGesture::new(
+            [1, 2],
+            [pos2(0.0, 0.0), pos2(50.0, 0.0)],
+            TwoFingerDrag::Pan,
+        );
         let mut out = Vec::new();
         g.update(7, pos2(500.0, 500.0), &mut out);
         assert!(out.is_empty());

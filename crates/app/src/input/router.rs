@@ -232,7 +232,11 @@ mod tests {
             pos_in_screen: pos2(x, y),
             pressure: 0.5,
             kind,
-            buttons: if matches!(phase, Phase::Up) { 0 } else { buttons::PRIMARY },
+            buttons: if matches!(phase, Phase::Up) {
+                0
+            } else {
+                buttons::PRIMARY
+            },
             time: 0.0,
         }
     }
@@ -264,12 +268,18 @@ mod tests {
         let pen = PointerKind::Pen;
         route_all(
             &mut router,
-            &[sample(9, pen, Phase::Down, 10.0, 10.0), sample(9, pen, Phase::Up, 10.0, 10.0)],
+            &[
+                sample(9, pen, Phase::Down, 10.0, 10.0),
+                sample(9, pen, Phase::Up, 10.0, 10.0),
+            ],
         );
         assert!(router.pen_seen());
         let out = route_all(&mut router, &one_finger_drag(2));
         assert!(out.iter().all(|r| !matches!(r, Routed::Tool(_))), "{out:?}");
-        assert_eq!(out, vec![Routed::Nav(NavAction::Orbit(egui::vec2(50.0, 20.0)))]);
+        assert_eq!(
+            out,
+            vec![Routed::Nav(NavAction::Orbit(egui::vec2(50.0, 20.0)))]
+        );
     }
 
     #[test]
@@ -290,10 +300,20 @@ mod tests {
             ],
         );
         assert!(out.contains(&Routed::Tool(ToolEvent::Cancel)));
-        assert!(out.iter().any(|r| matches!(r, Routed::Nav(NavAction::Zoom { .. }))));
+        assert!(
+            out.iter()
+                .any(|r| matches!(r, Routed::Nav(NavAction::Zoom { .. })))
+        );
         // The finger left behind after the pinch neither draws nor ends a stroke.
-        let after_cancel = out.iter().skip_while(|r| **r != Routed::Tool(ToolEvent::Cancel)).skip(1);
-        assert!(after_cancel.into_iter().all(|r| matches!(r, Routed::Nav(_))));
+        let after_cancel = out
+            .iter()
+            .skip_while(|r| **r != Routed::Tool(ToolEvent::Cancel))
+            .skip(1);
+        assert!(
+            after_cancel
+                .into_iter()
+                .all(|r| matches!(r, Routed::Nav(_)))
+        );
     }
 
     #[test]
@@ -306,7 +326,16 @@ mod tests {
                 sample(5, PointerKind::Pen, Phase::Down, 300.0, 300.0),
             ],
         );
-        assert_eq!(out[0], Routed::Tool(ToolEvent::Begin(sample(1, PointerKind::Touch, Phase::Down, 100.0, 100.0))));
+        assert_eq!(
+            out[0],
+            Routed::Tool(ToolEvent::Begin(sample(
+                1,
+                PointerKind::Touch,
+                Phase::Down,
+                100.0,
+                100.0
+            )))
+        );
         assert_eq!(out[1], Routed::Tool(ToolEvent::Cancel));
         assert!(matches!(out[2], Routed::Tool(ToolEvent::Begin(s)) if s.kind == PointerKind::Pen));
     }
@@ -321,12 +350,23 @@ mod tests {
         middle.buttons = buttons::MIDDLE;
         let out = route_all(
             &mut router,
-            &[right, sample(1, m, Phase::Move, 5.0, 0.0), sample(1, m, Phase::Up, 5.0, 0.0)],
+            &[
+                right,
+                sample(1, m, Phase::Move, 5.0, 0.0),
+                sample(1, m, Phase::Up, 5.0, 0.0),
+            ],
         );
-        assert_eq!(out, vec![Routed::Nav(NavAction::Orbit(egui::vec2(5.0, 0.0)))]);
+        assert_eq!(
+            out,
+            vec![Routed::Nav(NavAction::Orbit(egui::vec2(5.0, 0.0)))]
+        );
         let out = route_all(
             &mut router,
-            &[middle, sample(1, m, Phase::Move, 0.0, 7.0), sample(1, m, Phase::Up, 0.0, 7.0)],
+            &[
+                middle,
+                sample(1, m, Phase::Move, 0.0, 7.0),
+                sample(1, m, Phase::Up, 0.0, 7.0),
+            ],
         );
         assert_eq!(out, vec![Routed::Nav(NavAction::Pan(egui::vec2(0.0, 7.0)))]);
     }

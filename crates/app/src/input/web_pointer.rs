@@ -37,30 +37,32 @@ impl WebPointer {
             ("pointercancel", Phase::Cancel),
         ] {
             let (queue, wake, target) = (queue.clone(), wake.clone(), canvas.clone());
-            let closure = Closure::<dyn FnMut(web_sys::PointerEvent)>::new(move |e: web_sys::PointerEvent| {
-                if phase == Phase::Down {
-                    // Keep receiving this pointer's moves when it leaves the canvas.
-                    let _ = target.set_pointer_capture(e.pointer_id());
-                }
-                let origin = target.get_bounding_client_rect();
-                let mut queue = queue.borrow_mut();
-                if phase == Phase::Move {
-                    let coalesced = e.get_coalesced_events();
-                    if coalesced.length() > 1 {
-                        for event in coalesced.iter() {
-                            if let Ok(event) = event.dyn_into::<web_sys::PointerEvent>() {
-                                queue.push_back(sample(&event, phase, &origin));
-                            }
-                        }
-                        drop(queue);
-                        wake();
-                        return;
+            let closure = Closure::<dyn FnMut(web_sys::PointerEvent)>::new(
+                move |e: web_sys::PointerEvent| {
+                    if phase == Phase::Down {
+                        // Keep receiving this pointer's moves when it leaves the canvas.
+                        let _ = target.set_pointer_capture(e.pointer_id());
                     }
-                }
-                queue.push_back(sample(&e, phase, &origin));
-                drop(queue);
-                wake();
-            });
+                    let origin = target.get_bounding_client_rect();
+                    let mut queue = queue.borrow_mut();
+                    if phase == Phase::Move {
+                        let coalesced = e.get_coalesced_events();
+                        if coalesced.length() > 1 {
+                            for event in coalesced.iter() {
+                                if let Ok(event) = event.dyn_into::<web_sys::PointerEvent>() {
+                                    queue.push_back(sample(&event, phase, &origin));
+                                }
+                            }
+                            drop(queue);
+                            wake();
+                            return;
+                        }
+                    }
+                    queue.push_back(sample(&e, phase, &origin));
+                    drop(queue);
+                    wake();
+                },
+            );
             canvas.add_event_listener_with_callback(name, closure.as_ref().unchecked_ref())?;
             listeners.push(closure);
         }

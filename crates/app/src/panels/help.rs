@@ -18,8 +18,14 @@ const GESTURES: &[(&str, &str)] = &[
     ("Middle drag", "Pan"),
     ("Wheel, trackpad pinch", "Zoom"),
     ("One finger (no pen yet)", "Draw"),
-    ("Two fingers (no pen yet)", "Drag to orbit, pinch to zoom and pan"),
-    ("One finger (after a pen)", "Orbit; fingers never draw once a pen is seen"),
+    (
+        "Two fingers (no pen yet)",
+        "Drag to orbit, pinch to zoom and pan",
+    ),
+    (
+        "One finger (after a pen)",
+        "Orbit; fingers never draw once a pen is seen",
+    ),
     ("Two fingers (after a pen)", "Drag to pan, pinch to zoom"),
 ];
 
@@ -35,18 +41,25 @@ pub fn help_ui(ctx: &egui::Context, open: &mut bool, backend: &str, pen_seen: bo
             ui.add_space(8.0);
             table_ui(ui, "gestures", "Mouse, pen and touch", GESTURES);
             ui.add_space(8.0);
-            let palm = if pen_seen { "on (a pen was seen)" } else { "off until a pen is seen" };
+            let palm = if pen_seen {
+                "on (a pen was seen)"
+            } else {
+                "off until a pen is seen"
+            };
             ui.label(format!("Palm rejection: {palm}. Graphics: {backend}."));
         });
 }
 
 fn table_ui(ui: &mut egui::Ui, id: &str, title: &str, rows: &[(&str, &str)]) {
     ui.strong(title);
-    egui::Grid::new(id).num_columns(2).striped(true).show(ui, |ui| {
-        for (keys, what) in rows {
-            ui.monospace(*keys);
-            ui.label(*what);
-            ui.end_row();
-        }
-    });
+    egui::Grid::new(id)
+        .num_columns(2)
+        .striped(true)
+        .show(ui, |ui| {
+            for (keys, what) in rows {
+                ui.monospace(*keys);
+                ui.label(*what);
+                ui.end_row();
+            }
+        });
 }

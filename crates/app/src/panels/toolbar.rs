@@ -35,19 +35,37 @@ pub fn toolbar_ui(
         ui.strong("Sketchmesh");
         ui.separator();
         let mut button = |ui: &mut egui::Ui, enabled: bool, label: &str, hint: &str, a: Action| {
-            let response = ui.add_enabled(enabled, egui::Button::new(label).min_size(egui::vec2(TOUCH_TARGET, TOUCH_TARGET)));
+            let response = ui.add_enabled(
+                enabled,
+                egui::Button::new(label).min_size(egui::vec2(TOUCH_TARGET, TOUCH_TARGET)),
+            );
             if response.on_hover_text(hint).clicked() {
                 action = Some(a);
             }
         };
         button(ui, editor.can_undo(), "Undo", "Undo (Ctrl+Z)", Action::Undo);
-        button(ui, editor.can_redo(), "Redo", "Redo (Ctrl+Shift+Z or Ctrl+Y)", Action::Redo);
+        button(
+            ui,
+            editor.can_redo(),
+            "Redo",
+            "Redo (Ctrl+Shift+Z or Ctrl+Y)",
+            Action::Redo,
+        );
         ui.separator();
         button(ui, true, "Frame", "Frame everything (F)", Action::FrameAll);
-        button(ui, true, "Reset view", "Back to the front view (R)", Action::ResetView);
-        ui.toggle_value(&mut options.wireframe, "Wireframe").on_hover_text("Show mesh edges (W)");
-        ui.toggle_value(&mut options.grid, "Grid").on_hover_text("Show the ground grid (G)");
-        ui.toggle_value(show_help, "Help").on_hover_text("Shortcuts and gestures (H)");
+        button(
+            ui,
+            true,
+            "Reset view",
+            "Back to the front view (R)",
+            Action::ResetView,
+        );
+        ui.toggle_value(&mut options.wireframe, "Wireframe")
+            .on_hover_text("Show mesh edges (W)");
+        ui.toggle_value(&mut options.grid, "Grid")
+            .on_hover_text("Show the ground grid (G)");
+        ui.toggle_value(show_help, "Help")
+            .on_hover_text("Shortcuts and gestures (H)");
         ui.separator();
         let stats = editor.document().stats();
         ui.label(format!(

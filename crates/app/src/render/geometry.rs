@@ -70,15 +70,27 @@ impl SceneGeometry {
             ..Self::default()
         };
         for model in doc.models.iter().map(|m| m.as_ref()).chain(pending) {
-            scene.add_mesh(model.mesh.positions(), model.mesh.triangle_indices(), &vertex_normals(&model.mesh));
+            scene.add_mesh(
+                model.mesh.positions(),
+                model.mesh.triangle_indices(),
+                &vertex_normals(&model.mesh),
+            );
             for curve in &model.curves {
-                let color = if curve.sharp { SHARP_CURVE_COLOR } else { SMOOTH_CURVE_COLOR };
+                let color = if curve.sharp {
+                    SHARP_CURVE_COLOR
+                } else {
+                    SMOOTH_CURVE_COLOR
+                };
                 let widths = vec![f64::from(CONTROL_CURVE_WIDTH); curve.points.len()];
                 scene.add_polyline(&curve.points, &widths, curve.closed, color);
             }
         }
         for sketch in &doc.sketches {
-            let widths: Vec<f64> = sketch.pressures.iter().map(|&p| pressure_width(p)).collect();
+            let widths: Vec<f64> = sketch
+                .pressures
+                .iter()
+                .map(|&p| pressure_width(p))
+                .collect();
             scene.add_polyline(&sketch.points, &widths, false, SKETCH_COLOR);
         }
         scene
@@ -107,7 +119,11 @@ impl SceneGeometry {
 
     fn add_polyline(&mut self, points: &[DVec3], widths: &[f64], closed: bool, color: [f32; 4]) {
         let n = points.len();
-        let n_segments = if closed && n > 2 { n } else { n.saturating_sub(1) };
+        let n_segments = if closed && n > 2 {
+            n
+        } else {
+            n.saturating_sub(1)
+        };
         for i in 0..n_segments {
             let j = (i + 1) % n;
             self.curves.push(CurveSegment {

@@ -29,10 +29,22 @@ pub fn grid_lines() -> Vec<GridVertex> {
             ([0.7, 0.72, 0.78, a], [0.7, 0.72, 0.78, a])
         };
         // Lines parallel to X at z = t (the z = 0 one is the X axis), then parallel to Z.
-        out.push(GridVertex { pos: [-e, 0.0, t], color: x_axis });
-        out.push(GridVertex { pos: [e, 0.0, t], color: x_axis });
-        out.push(GridVertex { pos: [t, 0.0, -e], color: z_axis });
-        out.push(GridVertex { pos: [t, 0.0, e], color: z_axis });
+        out.push(GridVertex {
+            pos: [-e, 0.0, t],
+            color: x_axis,
+        });
+        out.push(GridVertex {
+            pos: [e, 0.0, t],
+            color: x_axis,
+        });
+        out.push(GridVertex {
+            pos: [t, 0.0, -e],
+            color: z_axis,
+        });
+        out.push(GridVertex {
+            pos: [t, 0.0, e],
+            color: z_axis,
+        });
     }
     out
 }

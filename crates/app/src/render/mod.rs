@@ -85,7 +85,12 @@ impl SceneRenderer {
             }],
         });
         // A sRGB output would encode again what the scene already wrote gamma-encoded.
-        let flags: [f32; 4] = [if rs.target_format.is_srgb() { 1.0 } else { 0.0 }, 0.0, 0.0, 0.0];
+        let flags: [f32; 4] = [
+            if rs.target_format.is_srgb() { 1.0 } else { 0.0 },
+            0.0,
+            0.0,
+            0.0,
+        ];
         let blit_params = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("blit params"),
             contents: bytemuck::cast_slice(&flags),
@@ -121,7 +126,11 @@ impl SceneRenderer {
     }
 
     fn upload(&mut self, device: &wgpu::Device, scene: &SceneGeometry) {
-        if self.geometry.as_ref().is_some_and(|g| g.generation == scene.generation) {
+        if self
+            .geometry
+            .as_ref()
+            .is_some_and(|g| g.generation == scene.generation)
+        {
             return;
         }
         let vertex = wgpu::BufferUsages::VERTEX;
@@ -166,7 +175,12 @@ impl SceneRenderer {
     }
 }
 
-fn buffer<T: Pod>(device: &wgpu::Device, label: &str, data: &[T], usage: wgpu::BufferUsages) -> Option<(wgpu::Buffer, u32)> {
+fn buffer<T: Pod>(
+    device: &wgpu::Device,
+    label: &str,
+    data: &[T],
+    usage: wgpu::BufferUsages,
+) -> Option<(wgpu::Buffer, u32)> {
     (!data.is_empty()).then(|| {
         let b = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some(label),
@@ -179,7 +193,12 @@ fn buffer<T: Pod>(device: &wgpu::Device, label: &str, data: &[T], usage: wgpu::B
 
 /// 4× MSAA when both scene formats support it on this adapter, else none.
 fn msaa_samples(adapter: &wgpu::Adapter) -> u32 {
-    let supports = |format| adapter.get_texture_format_features(format).flags.sample_count_supported(4);
+    let supports = |format| {
+        adapter
+            .get_texture_format_features(format)
+            .flags
+            .sample_count_supported(4)
+    };
     if supports(pipelines::SCENE_FORMAT) && supports(pipelines::DEPTH_FORMAT) {
         4
     } else {
@@ -238,7 +257,12 @@ impl CallbackTrait for SceneCallback {
         Vec::new()
     }
 
-    fn paint(&self, _info: egui::PaintCallbackInfo, pass: &mut wgpu::RenderPass<'static>, resources: &CallbackResources) {
+    fn paint(
+        &self,
+        _info: egui::PaintCallbackInfo,
+        pass: &mut wgpu::RenderPass<'static>,
+        resources: &CallbackResources,
+    ) {
         let Some(renderer) = resources.get::<SceneRenderer>() else {
             return;
         };

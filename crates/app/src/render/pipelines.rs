@@ -48,43 +48,44 @@ impl Pass<'_> {
         depth: (bool, wgpu::CompareFunction),
         blend: Option<wgpu::BlendState>,
     ) -> wgpu::RenderPipeline {
-        self.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some(label),
-            layout: Some(self.layout),
-            vertex: wgpu::VertexState {
-                module: self.module,
-                entry_point: Some(vs),
-                compilation_options: Default::default(),
-                buffers,
-            },
-            primitive: wgpu::PrimitiveState {
-                topology,
-                ..Default::default()
-            },
-            depth_stencil: Some(wgpu::DepthStencilState {
-                format: DEPTH_FORMAT,
-                depth_write_enabled: Some(depth.0),
-                depth_compare: Some(depth.1),
-                stencil: Default::default(),
-                bias: Default::default(),
-            }),
-            multisample: wgpu::MultisampleState {
-                count: self.samples,
-                ..Default::default()
-            },
-            fragment: Some(wgpu::FragmentState {
-                module: self.module,
-                entry_point: Some(fs),
-                compilation_options: Default::default(),
-                targets: &[Some(wgpu::ColorTargetState {
-                    format: SCENE_FORMAT,
-                    blend,
-                    write_mask: wgpu::ColorWrites::ALL,
-                })],
-            }),
-            multiview_mask: None,
-            cache: None,
-        })
+        self.device
+            .create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some(label),
+                layout: Some(self.layout),
+                vertex: wgpu::VertexState {
+                    module: self.module,
+                    entry_point: Some(vs),
+                    compilation_options: Default::default(),
+                    buffers,
+                },
+                primitive: wgpu::PrimitiveState {
+                    topology,
+                    ..Default::default()
+                },
+                depth_stencil: Some(wgpu::DepthStencilState {
+                    format: DEPTH_FORMAT,
+                    depth_write_enabled: Some(depth.0),
+                    depth_compare: Some(depth.1),
+                    stencil: Default::default(),
+                    bias: Default::default(),
+                }),
+                multisample: wgpu::MultisampleState {
+                    count: self.samples,
+                    ..Default::default()
+                },
+                fragment: Some(wgpu::FragmentState {
+                    module: self.module,
+                    entry_point: Some(fs),
+                    compilation_options: Default::default(),
+                    targets: &[Some(wgpu::ColorTargetState {
+                        format: SCENE_FORMAT,
+                        blend,
+                        write_mask: wgpu::ColorWrites::ALL,
+                    })],
+                }),
+                multiview_mask: None,
+                cache: None,
+            })
     }
 }
 
@@ -124,9 +125,30 @@ impl Pipelines {
         let curve_buffers = [Some(CurveSegment::layout())];
         let (blit_layout, blit) = blit_pipeline(device, output);
         Self {
-            mesh: pass.pipeline("mesh", ("vs_mesh", "fs_mesh"), &mesh_buffers, tri, (true, less), None),
-            wire: pass.pipeline("wire", ("vs_wire", "fs_wire"), &mesh_buffers, lines, (false, less), premultiplied),
-            grid: pass.pipeline("grid", ("vs_line", "fs_line"), &[Some(GridVertex::layout())], lines, (false, less), premultiplied),
+            mesh: pass.pipeline(
+                "mesh",
+                ("vs_mesh", "fs_mesh"),
+                &mesh_buffers,
+                tri,
+                (true, less),
+                None,
+            ),
+            wire: pass.pipeline(
+                "wire",
+                ("vs_wire", "fs_wire"),
+                &mesh_buffers,
+                lines,
+                (false, less),
+                premultiplied,
+            ),
+            grid: pass.pipeline(
+                "grid",
+                ("vs_line", "fs_line"),
+                &[Some(GridVertex::layout())],
+                lines,
+                (false, less),
+                premultiplied,
+            ),
             curve_hidden: pass.pipeline(
                 "curve hidden",
                 ("vs_curve", "fs_curve_hidden"),
@@ -150,7 +172,10 @@ impl Pipelines {
     }
 }
 
-fn blit_pipeline(device: &wgpu::Device, output: wgpu::TextureFormat) -> (wgpu::BindGroupLayout, wgpu::RenderPipeline) {
+fn blit_pipeline(
+    device: &wgpu::Device,
+    output: wgpu::TextureFormat,
+) -> (wgpu::BindGroupLayout, wgpu::RenderPipeline) {
     let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
         label: Some("blit"),
         entries: &[
@@ -217,7 +242,8 @@ fn blit_pipeline(device: &wgpu::Device, output: wgpu::TextureFormat) -> (wgpu::B
 }
 
 impl MeshVertex {
-    const ATTRIBUTES: [wgpu::VertexAttribute; 2] = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3];
+    const ATTRIBUTES: [wgpu::VertexAttribute; 2] =
+        wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3];
 
     fn layout() -> wgpu::VertexBufferLayout<'static> {
         wgpu::VertexBufferLayout {
@@ -243,7 +269,8 @@ impl CurveSegment {
 }
 
 impl GridVertex {
-    const ATTRIBUTES: [wgpu::VertexAttribute; 2] = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x4];
+    const ATTRIBUTES: [wgpu::VertexAttribute; 2] =
+        wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x4];
 
     fn layout() -> wgpu::VertexBufferLayout<'static> {
         wgpu::VertexBufferLayout {

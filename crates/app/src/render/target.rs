@@ -28,7 +28,14 @@ impl SceneTarget {
         blit_params: &wgpu::Buffer,
     ) {
         if slot.as_ref().is_none_or(|t| t.size != size) {
-            *slot = Some(Self::new(device, pipelines, samples, size, sampler, blit_params));
+            *slot = Some(Self::new(
+                device,
+                pipelines,
+                samples,
+                size,
+                sampler,
+                blit_params,
+            ));
         }
     }
 
@@ -59,8 +66,14 @@ impl SceneTarget {
                 .create_view(&Default::default())
         };
         let attachment = wgpu::TextureUsages::RENDER_ATTACHMENT;
-        let resolved = texture("scene colour", SCENE_FORMAT, 1, attachment | wgpu::TextureUsages::TEXTURE_BINDING);
-        let msaa = (samples > 1).then(|| texture("scene colour msaa", SCENE_FORMAT, samples, attachment));
+        let resolved = texture(
+            "scene colour",
+            SCENE_FORMAT,
+            1,
+            attachment | wgpu::TextureUsages::TEXTURE_BINDING,
+        );
+        let msaa =
+            (samples > 1).then(|| texture("scene colour msaa", SCENE_FORMAT, samples, attachment));
         let depth = texture("scene depth", DEPTH_FORMAT, samples, attachment);
         let blit_bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("blit"),

@@ -42,15 +42,33 @@ impl DrawTool {
                 };
                 ToolOutput::None
             }
-            (Self::Drawing { mut points, camera, viewport }, ToolEvent::Move(s)) => {
+            (
+                Self::Drawing {
+                    mut points,
+                    camera,
+                    viewport,
+                },
+                ToolEvent::Move(s),
+            ) => {
                 let p = point(s, view);
                 if points.last().is_none_or(|last| last.pos != p.pos) {
                     points.push(p);
                 }
-                *self = Self::Drawing { points, camera, viewport };
+                *self = Self::Drawing {
+                    points,
+                    camera,
+                    viewport,
+                };
                 ToolOutput::None
             }
-            (Self::Drawing { mut points, camera, viewport }, ToolEvent::End(s)) => {
+            (
+                Self::Drawing {
+                    mut points,
+                    camera,
+                    viewport,
+                },
+                ToolEvent::End(s),
+            ) => {
                 let p = point(s, view);
                 if points.last().is_none_or(|last| last.pos != p.pos) {
                     points.push(p);
@@ -58,7 +76,10 @@ impl DrawTool {
                 let input = StrokeInput {
                     viewport: viewport.to_array(),
                     camera,
-                    stroke: points.iter().map(|p| [p.pos.x, p.pos.y, p.pressure]).collect(),
+                    stroke: points
+                        .iter()
+                        .map(|p| [p.pos.x, p.pos.y, p.pressure])
+                        .collect(),
                 };
                 ToolOutput::Commit(op_for_stroke(doc, input))
             }
@@ -91,8 +112,8 @@ fn point(s: &crate::input::PointerSample, view: &ViewCtx) -> StrokePoint {
 mod tests {
     use super::*;
     use crate::input::{Phase, PointerKind, PointerSample};
-    use sketchmesh_core::document::Op;
     use egui::{Rect, pos2};
+    use sketchmesh_core::document::Op;
 
     fn pen(phase: Phase, x: f32, y: f32, pressure: f32) -> PointerSample {
         PointerSample {
@@ -118,8 +139,19 @@ mod tests {
         let mut tool = DrawTool::default();
         let v = view();
         let doc = Document::default();
-        assert_eq!(tool.on_event(&ToolEvent::Begin(pen(Phase::Down, 10.0, 50.0, 0.2)), &v, &doc), ToolOutput::None);
-        tool.on_event(&ToolEvent::Move(pen(Phase::Move, 20.0, 60.0, 0.6)), &v, &doc);
+        assert_eq!(
+            tool.on_event(
+                &ToolEvent::Begin(pen(Phase::Down, 10.0, 50.0, 0.2)),
+                &v,
+                &doc
+            ),
+            ToolOutput::None
+        );
+        tool.on_event(
+            &ToolEvent::Move(pen(Phase::Move, 20.0, 60.0, 0.6)),
+            &v,
+            &doc,
+        );
         assert_eq!(tool.preview().map(<[_]>::len), Some(2));
         let out = tool.on_event(&ToolEvent::End(pen(Phase::Up, 30.0, 70.0, 0.9)), &v, &doc);
         let ToolOutput::Commit(Op::Stroke(input)) = out else {
@@ -136,10 +168,20 @@ mod tests {
         let mut tool = DrawTool::default();
         let v = view();
         let doc = Document::default();
-        tool.on_event(&ToolEvent::Begin(pen(Phase::Down, 10.0, 50.0, 0.5)), &v, &doc);
-        assert_eq!(tool.on_event(&ToolEvent::Cancel, &v, &doc), ToolOutput::None);
+        tool.on_event(
+            &ToolEvent::Begin(pen(Phase::Down, 10.0, 50.0, 0.5)),
+            &v,
+            &doc,
+        );
+        assert_eq!(
+            tool.on_event(&ToolEvent::Cancel, &v, &doc),
+            ToolOutput::None
+        );
         assert!(tool.preview().is_none());
         // A stray end after a cancel commits nothing.
-        assert_eq!(tool.on_event(&ToolEvent::End(pen(Phase::Up, 1.0, 1.0, 0.5)), &v, &doc), ToolOutput::None);
+        assert_eq!(
+            tool.on_event(&ToolEvent::End(pen(Phase::Up, 1.0, 1.0, 0.5)), &v, &doc),
+            ToolOutput::None
+        );
     }
 }

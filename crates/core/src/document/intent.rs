@@ -29,8 +29,12 @@ pub fn starts_on_model(doc: &Document, input: &StrokeInput) -> bool {
     let Some(&[x, y, _]) = input.stroke.first() else {
         return false;
     };
-    let (origin, dir) = input.camera.ray_in_world(DVec2::new(x, y), input.viewport_size());
-    doc.models.iter().any(|m| raycast(&m.mesh, origin, dir).is_some())
+    let (origin, dir) = input
+        .camera
+        .ray_in_world(DVec2::new(x, y), input.viewport_size());
+    doc.models
+        .iter()
+        .any(|m| raycast(&m.mesh, origin, dir).is_some())
 }
 
 #[cfg(test)]
@@ -46,7 +50,11 @@ mod tests {
             stroke: (0..=n)
                 .map(|i| {
                     let a = turns * std::f64::consts::TAU * i as f64 / n as f64;
-                    [center.x + radius * a.cos(), center.y + radius * a.sin(), 0.5]
+                    [
+                        center.x + radius * a.cos(),
+                        center.y + radius * a.sin(),
+                        0.5,
+                    ]
                 })
                 .collect(),
         }
@@ -55,8 +63,14 @@ mod tests {
     #[test]
     fn closed_stroke_on_empty_canvas_creates_and_open_stroke_inks() {
         let doc = Document::default();
-        assert!(matches!(op_for_stroke(&doc, circle(DVec2::new(400.0, 300.0), 120.0, 1.0)), Op::Create(_)));
-        assert!(matches!(op_for_stroke(&doc, circle(DVec2::new(400.0, 300.0), 120.0, 0.5)), Op::Stroke(_)));
+        assert!(matches!(
+            op_for_stroke(&doc, circle(DVec2::new(400.0, 300.0), 120.0, 1.0)),
+            Op::Create(_)
+        ));
+        assert!(matches!(
+            op_for_stroke(&doc, circle(DVec2::new(400.0, 300.0), 120.0, 0.5)),
+            Op::Stroke(_)
+        ));
     }
 
     #[test]
@@ -67,7 +81,13 @@ mod tests {
             .expect("creation");
         let doc = editor.document();
         // Starts at (470, 300): on the model. Beside it, at (700, 300): empty canvas.
-        assert!(matches!(op_for_stroke(doc, circle(DVec2::new(400.0, 300.0), 70.0, 1.0)), Op::Stroke(_)));
-        assert!(matches!(op_for_stroke(doc, circle(DVec2::new(690.0, 300.0), 60.0, 1.0)), Op::Create(_)));
+        assert!(matches!(
+            op_for_stroke(doc, circle(DVec2::new(400.0, 300.0), 70.0, 1.0)),
+            Op::Stroke(_)
+        ));
+        assert!(matches!(
+            op_for_stroke(doc, circle(DVec2::new(690.0, 300.0), 60.0, 1.0)),
+            Op::Create(_)
+        ));
     }
 }

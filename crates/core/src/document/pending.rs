@@ -59,7 +59,8 @@ impl PendingCreate {
             .iterate(self.creation.mesh.positions_mut())
             .map_err(|e| CommandError::Create(crate::fibermesh::CreateError::Solve(e)))?;
         self.iterations += 1;
-        self.converged = moved <= self.params.tolerance * diagonal || self.iterations >= self.params.max_iterations;
+        self.converged = moved <= self.params.tolerance * diagonal
+            || self.iterations >= self.params.max_iterations;
         Ok(self.converged)
     }
 
@@ -130,7 +131,10 @@ mod tests {
         while !pending.step().expect("step") {
             frames += 1;
         }
-        assert!(frames >= 1, "the first display is not the converged surface");
+        assert!(
+            frames >= 1,
+            "the first display is not the converged surface"
+        );
         assert_ne!(&first, pending.mesh());
         let mut progressive = Editor::new();
         progressive.commit_create(pending).expect("commit");

@@ -282,3 +282,73 @@ impl FairSurface {
         Ok(summary)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::primitives;
+
+    fn cap_curve(mesh: &Mesh, kind: CurveKind) -> ControlCurve {
+        let vertices = mesh
+            .vertices()
+            .filter(|&v| mesh.position(v).z.abs() < 0.3)
+            .collect();
+        ControlCurve {
+            vertices,
+            is_closed: false,
+            kind,
+        }
+    }
+
+    #[test]
+    fn curve_vertices_stay_put_and_nothing_allocates_or_breaks() {
+        let mut mesh = primitives::icosphere(1.0, 3);
+        for kind in [CurveKind::Smooth, CurveKind::Sharp] {
+            let curve = cap_curve(&mesh, kind);
+            let mut surface = FairSurface::new(&mesh, std::slice::from_ref(&curve)).unwrap();
+            assert_eq!(surface.n_vertices(), mesh.n_vertices());
+            let before = mesh.positions().to_vec();
+            let summary = surface.run(mesh.positions_mut(), 20, 1e-4).unwrap();
+            assert!(summary.iterations >= 1 && summary.last_step.is_finite());
+            for &v in &curve.vertices {
+                assert_eq!(mesh.position(v), before[v.index()]);
+            }
+            mesh.validate().unwrap();
+        }
+    }
+
+    #[test]
+    fn bad_inputs_are_errors() {
+        let mut mesh = primitives::icosphere(1.0, 1);
+        let n = mesh.n_vertices();
+        let outside = ControlCurve {
+            vertices: vec![VertexId(n as u32)],
+            is_closed: false,
+            kind: CurveKind::Smooth,
+        };
+        assert_eq!(
+            FairSurface::new(&mesh, &[outside]).unwrap_err(),
+            SolveError::DimensionMismatch {
+                what: "curve vertex index",
+                expected: n,
+                found: n
+            }
+        );
+        // With no curve nothing holds the surface in place.
+        assert!(
+            FairSurface::new(&mesh, &[])
+                .unwrap_err()
+                .is_underdetermined()
+        );
+        let mut surface = FairSurface::new(&mesh, &[cap_curve(&mesh, CurveKind::Smooth)]).unwrap();
+        let err = surface.iterate(&mut mesh.positions_mut()[1..]).unwrap_err();
+        assert_eq!(
+            err,
+            SolveError::DimensionMismatch {
+                what: "positions",
+                expected: n,
+                found: n - 1
+            }
+        );
+    }
+}

@@ -28,10 +28,15 @@
 //!    special first iteration.
 //! 4. **Fair surface** ([`FairSurface`], Eqs. 3.6–3.10, `fair_surface.rs`): two
 //!    prefactored systems, iterated with back-substitutions only; curve vertices are
-//!    fixed unknowns, so the curve stays exactly on the surface. [`create_from_stroke`]
-//!    returns after one iteration (the first display); [`Creation::converge`] or
-//!    [`create_converged_from_stroke`] iterate on. Measured: 4–10 iterations to a step
-//!    below 0.1% of the size (thesis: 5–10).
+//!    fixed unknowns, so the curve stays exactly on the surface. Measured: 4–10
+//!    iterations to a step below 0.1% of the size (thesis: 5–10).
+//!
+//! Progressive display: [`seed_from_stroke`] stops after step 3 and costs no
+//! factorization (the seed is already rotund), so it is the first frame;
+//! [`SeedShape::into_creation`] factors both systems and runs one iteration (the costly
+//! part, about 5× the seed at 10k vertices), and [`Creation::converge`] or repeated
+//! [`FairSurface::iterate`] calls refine over the next frames. [`create_from_stroke`] and
+//! [`create_converged_from_stroke`] chain them.
 //!
 //! Sign conventions: `L v_i = v_i - mean_j v_j` (as in [`crate::geometry`]) and outward
 //! normals, so Laplacian magnitudes are positive on convex parts (`measure.rs`).
@@ -40,7 +45,7 @@
 //! mean-curvature normal, as in the thesis); the Laplacian magnitudes are measured once on
 //! the seed and kept, so the seed decides how fat a shape gets (a long strip ends about
 //! as tall as wide); where an outline is about one spacing `h` wide (tips of thin arms,
-//! narrow necks) front and back meet at a visible angle (up to about 80° at 1500
+//! narrow necks) front and back meet at a visible angle (up to about 95° at 1500
 //! vertices) instead of rounding off.
 
 mod fair_surface;
@@ -114,6 +119,51 @@ pub enum CreateError {
     Mesh(MeshError),
 }
 
+/// The first display of a new shape: connectivity and seed, before any factorization.
+#[derive(Clone, Debug)]
+pub struct SeedShape {
+    /// The closed mesh with the seed geometry (already rotund; a circle gives a sphere).
+    pub mesh: Mesh,
+    /// The control curve's vertices: a closed chain in stroke order.
+    pub curve_vertices: Vec<VertexId>,
+    /// The plane the stroke was drawn on.
+    pub plane: DrawingPlane,
+}
+
+impl SeedShape {
+    /// The control curve as the optimization sees it (a closed smooth curve).
+    pub fn control_curve(&self) -> ControlCurve {
+        ControlCurve {
+            vertices: self.curve_vertices.clone(),
+            is_closed: true,
+            kind: CurveKind::Smooth,
+        }
+    }
+
+    /// Factors the fair-surface systems and runs one iteration.
+    ///
+    /// Errors: [`CreateError::Solve`] if a factorization fails (a bug for a seed built by
+    /// [`seed_from_stroke`]).
+    pub fn into_creation(self) -> Result<Creation, CreateError> {
+        let mut surface =
+            FairSurface::new(&self.mesh, &[self.control_curve()]).map_err(CreateError::Solve)?;
+        let SeedShape {
+            mut mesh,
+            curve_vertices,
+            plane,
+        } = self;
+        surface
+            .iterate(mesh.positions_mut())
+            .map_err(CreateError::Solve)?;
+        Ok(Creation {
+            mesh,
+            curve_vertices,
+            surface,
+            plane,
+        })
+    }
+}
+
 /// A new shape: its mesh, its control curve and the optimization to continue.
 #[derive(Debug)]
 pub struct Creation {
@@ -151,8 +201,33 @@ impl Creation {
     }
 }
 
-/// Builds a shape from a closed stroke drawn in `camera`'s view (`viewport` in CSS px) and
-/// runs one optimization iteration: the fast first display. See the module docs.
+/// The fast first display of a closed stroke drawn in `camera`'s view (`viewport` in CSS
+/// px): outline, connectivity and seed, with no factorization. See the module docs.
+///
+/// Errors: the stroke's problems as sentences ([`CreateError`]).
+pub fn seed_from_stroke(
+    stroke: &[StrokePoint],
+    camera: &Camera,
+    viewport: DVec2,
+    params: &CreateParams,
+) -> Result<SeedShape, CreateError> {
+    let plane = DrawingPlane::facing(camera).ok_or(CreateError::BadView)?;
+    let loop_in_screen = outline::closed_loop_in_screen(stroke, params.close_tolerance_px)?;
+    let loop_on_plane = outline::loop_on_plane(&loop_in_screen, camera, viewport, &plane)
+        .ok_or(CreateError::BadView)?;
+    let spacing = spacing_for(&loop_on_plane, params.target_vertices);
+    let boundary = outline::even_outline(&loop_on_plane, spacing)?;
+    let planar = triangulate::triangulate(&boundary, spacing)?;
+    let (mesh, curve_vertices) = inflate::inflate(&planar, &plane)?;
+    Ok(SeedShape {
+        mesh,
+        curve_vertices,
+        plane,
+    })
+}
+
+/// Builds a shape from a closed stroke: [`seed_from_stroke`], then
+/// [`SeedShape::into_creation`] (both factorizations and one iteration).
 ///
 /// Errors: the stroke's problems as sentences ([`CreateError`]).
 pub fn create_from_stroke(
@@ -161,37 +236,12 @@ pub fn create_from_stroke(
     viewport: DVec2,
     params: &CreateParams,
 ) -> Result<Creation, CreateError> {
-    let plane = DrawingPlane::facing(camera).ok_or(CreateError::BadView)?;
-    let loop_in_screen = outline::closed_loop_in_screen(stroke, params.close_tolerance_px)?;
-    let loop_on_plane = outline::loop_on_plane(&loop_in_screen, camera, viewport, &plane)
-        .ok_or(CreateError::BadView)?;
-    let spacing = spacing_for(&loop_on_plane, params.target_vertices);
-    let boundary = outline::even_outline(&loop_on_plane, spacing)?;
-    let t0 = std::time::Instant::now();
-    let planar = triangulate::triangulate(&boundary, spacing)?;
-    let t1 = std::time::Instant::now();
-    let (mut mesh, curve_vertices) = inflate::inflate(&planar, &plane)?;
-    let t2 = std::time::Instant::now();
-    if std::env::var("TIMING").is_ok() { eprintln!("triangulate {:?} inflate {:?}", t1 - t0, t2 - t1); }
-    let curve = ControlCurve {
-        vertices: curve_vertices.clone(),
-        is_closed: true,
-        kind: CurveKind::Smooth,
-    };
-    let mut surface = FairSurface::new(&mesh, &[curve]).map_err(CreateError::Solve)?;
-    surface
-        .iterate(mesh.positions_mut())
-        .map_err(CreateError::Solve)?;
-    Ok(Creation {
-        mesh,
-        curve_vertices,
-        surface,
-        plane,
-    })
+    seed_from_stroke(stroke, camera, viewport, params)?.into_creation()
 }
 
 /// [`create_from_stroke`], then iterates to convergence with `params.max_iterations` and
-/// `params.tolerance`; returns the creation and what the iterations did.
+/// `params.tolerance` (counting the first iteration); returns the creation and what the
+/// iterations did.
 ///
 /// Errors: those of [`create_from_stroke`].
 pub fn create_converged_from_stroke(

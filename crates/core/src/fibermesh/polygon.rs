@@ -71,21 +71,11 @@ pub(crate) fn crossing(a0: DVec2, a1: DVec2, b0: DVec2, b1: DVec2) -> Option<f64
     let is_on = |o: f64, p: DVec2, q0: DVec2, q1: DVec2| {
         o == 0.0 && p.cmpge(q0.min(q1)).all() && p.cmple(q0.max(q1)).all()
     };
-    [
-        (o1, b0, a0, a1, true),
-        (o2, b1, a0, a1, true),
-        (o3, a0, b0, b1, false),
-        (o4, a1, b0, b1, false),
-    ]
-    .into_iter()
-    .find(|&(o, p, q0, q1, _)| is_on(o, p, q0, q1))
-    .map(|(_, p, _, _, on_a)| {
-        if on_a {
-            along_a(p)
-        } else {
-            along_a(p).clamp(0.0, 1.0)
-        }
-    })
+    // An end of one segment on the other; `along_a` of an end of `a` is 0 or 1.
+    [(o1, b0, a0, a1), (o2, b1, a0, a1), (o3, a0, b0, b1), (o4, a1, b0, b1)]
+        .into_iter()
+        .find(|&(o, p, q0, q1)| is_on(o, p, q0, q1))
+        .map(|(_, p, _, _)| along_a(p))
 }
 
 /// Distance from `p` to the segment `a b`.

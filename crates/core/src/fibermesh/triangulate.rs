@@ -13,7 +13,7 @@
 //! - a *chord*, an interior edge between two outline vertices, would be shared by four
 //!   triangles after stitching (and pin the surface flat), so each chord gets its midpoint
 //!   as a new interior vertex and the triangulation is rebuilt;
-//! - [`RELAX_ROUNDS`] rounds of Laplacian relaxation of the interior vertices (a vertex
+//! - [`RELAX_ROUNDS`] round(s) of Laplacian relaxation of the interior vertices (a vertex
 //!   moves only if it stays clear of the outline), each followed by a new Delaunay
 //!   triangulation, even out the band along the outline.
 
@@ -27,11 +27,12 @@ use super::polygon::{self, SegmentGrid};
 const CLEARANCE: f64 = 0.6;
 /// Relaxed vertices must stay this many spacings away from the outline.
 const MIN_RELAXED_CLEARANCE: f64 = 0.35;
-/// Rounds of relaxation followed by re-triangulation.
-const RELAX_ROUNDS: usize = 2;
+/// Rounds of relaxation followed by re-triangulation (a second round changed the smallest
+/// angles of the optimized meshes by under a degree and cost another triangulation).
+const RELAX_ROUNDS: usize = 1;
 /// Fraction of the step to the neighbours' centroid taken per round.
 const RELAX_STEP: f64 = 0.6;
-/// Chord splitting gives up after this many rebuilds.
+/// Chord splitting gives up after this many rounds.
 const MAX_CHORD_ROUNDS: usize = 6;
 
 /// A triangulated planar region: the outline's vertices first, in order, then the interior.
@@ -116,15 +117,31 @@ fn lattice_points(outline: &[DVec2], spacing: f64, grid: &SegmentGrid) -> Vec<DV
     points
 }
 
+type Cdt = ConstrainedDelaunayTriangulation<Point2<f64>>;
+
 /// Constrained Delaunay triangulation of the outline and interior points, keeping the
-/// triangles inside; splits chords (adding interior points) until there are none.
+/// triangles inside; splits chords (inserting their midpoints as interior points, which
+/// spade does incrementally) until there are none.
 fn triangulate_without_chords(
     outline: &[DVec2],
     interior: &mut Vec<DVec2>,
 ) -> Result<Vec<[u32; 3]>, CreateError> {
     let n = outline.len();
+    let vertices: Vec<Point2<f64>> = outline
+        .iter()
+        .chain(interior.iter())
+        .map(|p| Point2::new(p.x, p.y))
+        .collect();
+    let n_vertices = vertices.len();
+    let edges: Vec<[usize; 2]> = (0..n).map(|i| [i, (i + 1) % n]).collect();
+    let mut has_conflict = false;
+    let mut cdt = Cdt::try_bulk_load_cdt(vertices, edges, |_| has_conflict = true)
+        .map_err(|_| CreateError::TooThin)?;
+    if has_conflict || cdt.num_vertices() != n_vertices {
+        return Err(CreateError::TooThin);
+    }
     for _ in 0..MAX_CHORD_ROUNDS {
-        let triangles = inside_triangles(outline, interior)?;
+        let triangles = inside_triangles(&cdt, outline, interior);
         let mut chords: Vec<(u32, u32)> = Vec::new();
         for t in &triangles {
             for k in 0..3 {
@@ -140,34 +157,24 @@ fn triangulate_without_chords(
         }
         chords.sort_unstable();
         chords.dedup();
-        interior.extend(
-            chords
-                .iter()
-                .map(|&(a, b)| 0.5 * (outline[a as usize] + outline[b as usize])),
-        );
+        for (a, b) in chords {
+            let midpoint = 0.5 * (outline[a as usize] + outline[b as usize]);
+            let handle = cdt
+                .insert(Point2::new(midpoint.x, midpoint.y))
+                .map_err(|_| CreateError::TooThin)?;
+            // A new vertex gets the next index; anything else means spade merged it.
+            if handle.index() != n + interior.len() {
+                return Err(CreateError::TooThin);
+            }
+            interior.push(midpoint);
+        }
     }
     Err(CreateError::TooThin)
 }
 
 /// The CDT's triangles inside the outline, counter-clockwise, indexed outline first.
-fn inside_triangles(outline: &[DVec2], interior: &[DVec2]) -> Result<Vec<[u32; 3]>, CreateError> {
+fn inside_triangles(cdt: &Cdt, outline: &[DVec2], interior: &[DVec2]) -> Vec<[u32; 3]> {
     let n = outline.len();
-    let vertices: Vec<Point2<f64>> = outline
-        .iter()
-        .chain(interior)
-        .map(|p| Point2::new(p.x, p.y))
-        .collect();
-    let n_vertices = vertices.len();
-    let edges: Vec<[usize; 2]> = (0..n).map(|i| [i, (i + 1) % n]).collect();
-    let mut has_conflict = false;
-    let cdt =
-        ConstrainedDelaunayTriangulation::<Point2<f64>>::try_bulk_load_cdt(vertices, edges, |_| {
-            has_conflict = true;
-        })
-        .map_err(|_| CreateError::TooThin)?;
-    if has_conflict || cdt.num_vertices() != n_vertices {
-        return Err(CreateError::TooThin);
-    }
     let point = |i: u32| {
         if (i as usize) < n {
             outline[i as usize]
@@ -178,9 +185,7 @@ fn inside_triangles(outline: &[DVec2], interior: &[DVec2]) -> Result<Vec<[u32; 3
     let mut triangles = Vec::with_capacity(cdt.num_inner_faces());
     for face in cdt.inner_faces() {
         let [a, b, c] = face.vertices().map(|v| v.fix().index() as u32);
-        let is_inside = c as usize >= n
-            || b as usize >= n
-            || a as usize >= n
+        let is_inside = a.max(b).max(c) as usize >= n
             || polygon::contains(outline, (point(a) + point(b) + point(c)) / 3.0);
         if !is_inside {
             continue;
@@ -188,7 +193,7 @@ fn inside_triangles(outline: &[DVec2], interior: &[DVec2]) -> Result<Vec<[u32; 3
         let is_ccw = (point(b) - point(a)).perp_dot(point(c) - point(a)) > 0.0;
         triangles.push(if is_ccw { [a, b, c] } else { [a, c, b] });
     }
-    Ok(triangles)
+    triangles
 }
 
 /// One Jacobi round of damped Laplacian relaxation of the interior points; a point moves

@@ -27,26 +27,9 @@ impl SceneTarget {
         sampler: &wgpu::Sampler,
         blit_params: &wgpu::Buffer,
     ) {
-        if slot.as_ref().is_none_or(|t| t.size != size) {
-            *slot = Some(Self::new(
-                device,
-                pipelines,
-                samples,
-                size,
-                sampler,
-                blit_params,
-            ));
+        if slot.as_ref().is_some_and(|t| t.size == size) {
+            return;
         }
-    }
-
-    fn new(
-        device: &wgpu::Device,
-        pipelines: &Pipelines,
-        samples: u32,
-        size: [u32; 2],
-        sampler: &wgpu::Sampler,
-        blit_params: &wgpu::Buffer,
-    ) -> Self {
         let texture = |label, format, samples, usage| {
             device
                 .create_texture(&wgpu::TextureDescriptor {
@@ -93,13 +76,13 @@ impl SceneTarget {
                 },
             ],
         });
-        Self {
+        *slot = Some(Self {
             size,
             msaa,
             resolved,
             depth,
             blit_bind_group,
-        }
+        });
     }
 
     /// Begins the scene pass: colour cleared to transparent, depth to far.

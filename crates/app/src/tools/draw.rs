@@ -32,47 +32,34 @@ pub enum DrawTool {
 impl DrawTool {
     /// Feeds one event; a finished stroke becomes a [`ToolOutput::Commit`].
     pub fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
-        match (std::mem::take(self), event) {
-            (Self::Idle, ToolEvent::Begin(s)) => {
-                let size = view.viewport.size();
-                *self = Self::Drawing {
-                    points: vec![point(s, view)],
-                    camera: view.camera,
-                    viewport: DVec2::new(size.x.into(), size.y.into()),
-                };
+        match event {
+            ToolEvent::Begin(s) => {
+                if matches!(self, Self::Idle) {
+                    let size = view.viewport.size();
+                    *self = Self::Drawing {
+                        points: vec![point(s, view)],
+                        camera: view.camera,
+                        viewport: DVec2::new(size.x.into(), size.y.into()),
+                    };
+                }
                 ToolOutput::None
             }
-            (
-                Self::Drawing {
+            ToolEvent::Move(s) => {
+                if let Self::Drawing { points, .. } = self {
+                    push_distinct(points, point(s, view));
+                }
+                ToolOutput::None
+            }
+            ToolEvent::End(s) => {
+                let Self::Drawing {
                     mut points,
                     camera,
                     viewport,
-                },
-                ToolEvent::Move(s),
-            ) => {
-                let p = point(s, view);
-                if points.last().is_none_or(|last| last.pos != p.pos) {
-                    points.push(p);
-                }
-                *self = Self::Drawing {
-                    points,
-                    camera,
-                    viewport,
+                } = std::mem::take(self)
+                else {
+                    return ToolOutput::None;
                 };
-                ToolOutput::None
-            }
-            (
-                Self::Drawing {
-                    mut points,
-                    camera,
-                    viewport,
-                },
-                ToolEvent::End(s),
-            ) => {
-                let p = point(s, view);
-                if points.last().is_none_or(|last| last.pos != p.pos) {
-                    points.push(p);
-                }
+                push_distinct(&mut points, point(s, view));
                 let input = StrokeInput {
                     viewport: viewport.to_array(),
                     camera,
@@ -83,9 +70,8 @@ impl DrawTool {
                 };
                 ToolOutput::Commit(op_for_stroke(doc, input))
             }
-            (_, ToolEvent::Cancel) => ToolOutput::None,
-            (state, _) => {
-                *self = state;
+            ToolEvent::Cancel => {
+                *self = Self::Idle;
                 ToolOutput::None
             }
         }
@@ -97,6 +83,13 @@ impl DrawTool {
             Self::Drawing { points, .. } => Some(points),
             Self::Idle => None,
         }
+    }
+}
+
+/// Appends `p` unless it repeats the last point (pointer events often do).
+fn push_distinct(points: &mut Vec<StrokePoint>, p: StrokePoint) {
+    if points.last().is_none_or(|last| last.pos != p.pos) {
+        points.push(p);
     }
 }
 

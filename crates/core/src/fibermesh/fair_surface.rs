@@ -5,8 +5,8 @@
 //! One iteration, with `L` the uniform Laplacian (`L v_i = v_i - mean_j v_j`) and the
 //! measures of [`super::measure`] (normals `n`, area estimates `A`, magnitudes, lengths):
 //! 1. (Eqs. 3.6, 3.8) smooth the Laplacian magnitudes `c'` and the mean edge lengths `e'`:
-//!    `min ‖L_d c‖² + ‖c - c'‖²`, the same for `e`. Both share one matrix and one
-//!    back-substitution (they are two columns of one right-hand side).
+//!    `min ‖L_d c‖² + ‖c - c'‖²`, the same for `e`, with one shared matrix. Since `c'` is
+//!    measured once (below), `c` is too, and an iteration back-substitutes for `e` only.
 //! 2. (Eq. 3.9) target edge vectors `η_ij = (e_i + e_j)/2 · (v_i - v_j)/‖v_i - v_j‖` on the
 //!    edges with exactly one end on a curve (the set `B`).
 //! 3. (Eq. 3.10) positions: `min Σ w_i² ‖L v_i - A_i c_i n_i‖² + Σ_B ‖v_i - v_j - η_ij‖²`
@@ -40,32 +40,12 @@
 //! [`FairSurface`].
 
 use glam::DVec3;
-use serde::{Deserialize, Serialize};
 
+use super::control_curve::{ControlCurve, CurveKind};
 use super::fair_systems::{self, DIFFUSION_WEIGHT, EDGE_WEIGHT};
 use super::measure::{Measures, Rings};
-use crate::mesh::{Mesh, VertexId};
+use crate::mesh::Mesh;
 use crate::solve::{Prefactored, SolveError};
-
-/// How a control curve constrains the surface across it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
-pub enum CurveKind {
-    /// The surface passes through the curve and is smooth across it (drawn blue).
-    Smooth,
-    /// The surface passes through the curve with a crease along it (drawn red).
-    Sharp,
-}
-
-/// A chain of mesh vertices the surface passes through.
-#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
-pub struct ControlCurve {
-    /// The chain, in order.
-    pub vertices: Vec<VertexId>,
-    /// Whether the last vertex connects back to the first.
-    pub is_closed: bool,
-    /// Smooth or sharp.
-    pub kind: CurveKind,
-}
 
 /// What [`FairSurface::run`] did.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -96,14 +76,14 @@ pub struct FairSurface {
     diffusion: Prefactored,
     placement: Prefactored,
     measures: Measures,
-    /// The magnitudes `c'`, measured once; see the module docs.
-    magnitudes: Vec<f64>,
-    /// Whether `magnitudes` holds a measurement.
+    /// The smoothed magnitudes `c`, from `c'` measured once; see the module docs.
+    target_magnitudes: Vec<f64>,
+    /// Whether `target_magnitudes` holds a measurement.
     has_magnitudes: bool,
-    diffusion_rhs: Vec<DVec3>,
-    zeros: Vec<DVec3>,
-    /// Smoothed targets: x = Laplacian magnitude, y = mean edge length.
-    targets: Vec<DVec3>,
+    /// The smoothed mean edge lengths `e` of the current iteration.
+    target_lengths: Vec<f64>,
+    diffusion_rhs: Vec<f64>,
+    zeros: Vec<f64>,
     placement_rhs: Vec<DVec3>,
     solved: Vec<DVec3>,
 }
@@ -167,11 +147,11 @@ impl FairSurface {
             diffusion,
             placement,
             measures: Measures::new(n),
-            magnitudes: vec![0.0; n],
+            target_magnitudes: vec![0.0; n],
             has_magnitudes: false,
-            diffusion_rhs: vec![DVec3::ZERO; n_smoothing_rows + n],
-            zeros: vec![DVec3::ZERO; n],
-            targets: vec![DVec3::ZERO; n],
+            target_lengths: vec![0.0; n],
+            diffusion_rhs: vec![0.0; n_smoothing_rows + n],
+            zeros: vec![0.0; n],
             placement_rhs: vec![DVec3::ZERO; n_rows],
             solved: vec![DVec3::ZERO; n],
         })
@@ -205,27 +185,35 @@ impl FairSurface {
         }
         self.measures
             .update(&self.triangles, &self.rings, positions);
+        // The magnitudes are measured and smoothed once; the lengths every iteration.
         if !self.has_magnitudes {
-            self.magnitudes.copy_from_slice(&self.measures.magnitudes);
+            let rows = &mut self.diffusion_rhs[self.n_smoothing_rows..];
+            for (row, &magnitude) in rows.iter_mut().zip(&self.measures.magnitudes) {
+                *row = DIFFUSION_WEIGHT * magnitude;
+            }
+            self.diffusion.solve_scalar(
+                &self.diffusion_rhs,
+                &self.zeros,
+                &mut self.target_magnitudes,
+            )?;
             self.has_magnitudes = true;
         }
         for i in 0..n {
-            let length = self.current_length(i, positions);
             self.diffusion_rhs[self.n_smoothing_rows + i] =
-                DIFFUSION_WEIGHT * DVec3::new(self.magnitudes[i], length, 0.0);
+                DIFFUSION_WEIGHT * self.current_length(i, positions);
         }
         self.diffusion
-            .solve(&self.diffusion_rhs, &self.zeros, &mut self.targets)?;
+            .solve_scalar(&self.diffusion_rhs, &self.zeros, &mut self.target_lengths)?;
         let m = &self.measures;
         for (row, &i) in self.laplacian_rows.iter().enumerate() {
             let i = i as usize;
             let w = fair_systems::laplacian_weight(self.is_curve[i]);
-            self.placement_rhs[row] = w * m.areas[i] * self.targets[i].x * m.normals[i];
+            self.placement_rhs[row] = w * m.areas[i] * self.target_magnitudes[i] * m.normals[i];
         }
         let offset = self.laplacian_rows.len();
         for (k, &[i, j]) in self.edge_rows.iter().enumerate() {
             let (i, j) = (i as usize, j as usize);
-            let length = 0.5 * (self.targets[i].y + self.targets[j].y);
+            let length = 0.5 * (self.target_lengths[i] + self.target_lengths[j]);
             let direction = (positions[i] - positions[j]).normalize_or_zero();
             self.placement_rhs[offset + k] = EDGE_WEIGHT * length * direction;
         }
@@ -286,7 +274,7 @@ impl FairSurface {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::mesh::primitives;
+    use crate::mesh::{VertexId, primitives};
 
     fn cap_curve(mesh: &Mesh, kind: CurveKind) -> ControlCurve {
         let vertices = mesh

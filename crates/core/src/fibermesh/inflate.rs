@@ -27,7 +27,7 @@ use faer::{Mat, Side};
 use glam::DVec2;
 
 use super::CreateError;
-use super::outline::DrawingPlane;
+use super::plane::DrawingPlane;
 use super::triangulate::PlanarMesh;
 use crate::mesh::{Mesh, TriSoup, VertexId};
 use crate::solve::SolveError;

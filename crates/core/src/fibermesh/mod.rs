@@ -48,18 +48,23 @@
 //! narrow necks) front and back meet at a visible angle (up to about 95° at 1500
 //! vertices) instead of rounding off.
 
+mod control_curve;
 mod fair_surface;
 mod fair_systems;
 mod inflate;
 mod measure;
 mod outline;
+mod plane;
 mod polygon;
+mod segment_grid;
 mod triangulate;
 
 use glam::DVec2;
 
-pub use fair_surface::{ControlCurve, CurveKind, FairSurface, RunSummary};
-pub use outline::{DrawingPlane, FINE_SPACING_PX, MAX_OVERSHOOT, MIN_AREA_PX2, MIN_ROUNDNESS};
+pub use control_curve::{ControlCurve, CurveKind};
+pub use fair_surface::{FairSurface, RunSummary};
+pub use outline::{FINE_SPACING_PX, MAX_OVERSHOOT, MIN_AREA_PX2, MIN_ROUNDNESS};
+pub use plane::DrawingPlane;
 
 use crate::camera::Camera;
 use crate::curve::{StrokeError, StrokePoint};

@@ -10,10 +10,12 @@
 //! Screen to plane is a similarity (the plane faces the camera), so lengths and areas
 //! measured in pixels and in plane units differ by one scale factor.
 
-use glam::{DVec2, DVec3};
+use glam::DVec2;
 
 use super::CreateError;
-use super::polygon::{self, SegmentGrid};
+use super::plane::DrawingPlane;
+use super::polygon;
+use super::segment_grid::SegmentGrid;
 use crate::camera::Camera;
 use crate::curve::{StrokePoint, is_closed_loop, resample, smooth_closed, validate_stroke};
 
@@ -29,57 +31,6 @@ pub const MIN_ROUNDNESS: f64 = 0.02;
 /// Taubin smoothing passes on the outline at the mesh spacing (FiberMesh §3.3.3 smooths
 /// the resampled stroke once by midpoints; Taubin's filter does not shrink it).
 const OUTLINE_SMOOTHING: usize = 2;
-
-/// The plane a creation stroke is drawn on: through the camera target, facing the camera.
-///
-/// Its frame is right-handed: `right` and `up` are the screen's directions, `normal` points
-/// towards the camera, so a counter-clockwise polygon in plane coordinates is
-/// counter-clockwise on the screen (with y up).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct DrawingPlane {
-    /// A point on the plane (the camera target).
-    pub origin: DVec3,
-    /// Unit direction of the plane's x axis: the screen's right.
-    pub right: DVec3,
-    /// Unit direction of the plane's y axis: the screen's up.
-    pub up: DVec3,
-    /// Unit normal, towards the camera.
-    pub normal: DVec3,
-}
-
-impl DrawingPlane {
-    /// The plane through `camera.target` facing the camera; `None` for an invalid camera.
-    pub fn facing(camera: &Camera) -> Option<DrawingPlane> {
-        if !camera.is_valid() {
-            return None;
-        }
-        let forward = camera.forward();
-        let right = forward.cross(camera.up).normalize();
-        let up = right.cross(forward);
-        Some(DrawingPlane {
-            origin: camera.target,
-            right,
-            up,
-            normal: -forward,
-        })
-    }
-
-    /// Plane coordinates of a world point (its projection onto the plane).
-    pub fn plane_from_world(&self, p: DVec3) -> DVec2 {
-        let d = p - self.origin;
-        DVec2::new(d.dot(self.right), d.dot(self.up))
-    }
-
-    /// The world point at plane coordinates `p`, `height` along the normal.
-    pub fn world_from_plane(&self, p: DVec2, height: f64) -> DVec3 {
-        self.origin + p.x * self.right + p.y * self.up + height * self.normal
-    }
-
-    /// Signed distance of a world point from the plane, positive towards the camera.
-    pub fn height(&self, p: DVec3) -> f64 {
-        (p - self.origin).dot(self.normal)
-    }
-}
 
 /// The closed loop a stroke outlines, in screen px, without repeating the first point.
 ///
@@ -293,19 +244,6 @@ mod tests {
             closed_loop_in_screen(&sliver, 40.0),
             Err(CreateError::NoArea)
         );
-    }
-
-    #[test]
-    fn plane_frame_matches_the_screen() {
-        let camera = Camera::default();
-        let plane = DrawingPlane::facing(&camera).unwrap();
-        assert!((plane.normal - DVec3::Z).length() < 1e-15);
-        assert!(
-            (plane.right - DVec3::X).length() < 1e-15 && (plane.up - DVec3::Y).length() < 1e-15
-        );
-        let p = plane.world_from_plane(DVec2::new(0.5, -0.25), 0.1);
-        assert!((plane.plane_from_world(p) - DVec2::new(0.5, -0.25)).length() < 1e-15);
-        assert!((plane.height(p) - 0.1).abs() < 1e-15);
     }
 
     #[test]

@@ -21,7 +21,8 @@ use glam::DVec2;
 use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
 
 use super::CreateError;
-use super::polygon::{self, SegmentGrid};
+use super::polygon;
+use super::segment_grid::SegmentGrid;
 
 /// Lattice points closer than this many spacings to the outline are dropped.
 const CLEARANCE: f64 = 0.6;

@@ -10,9 +10,9 @@ use glam::{DMat4, DVec3};
 use gltf::accessor::{DataType, Dimensions};
 use gltf::mesh::Mode;
 
-use base64::Engine as _;
 use super::extras::NodeExtras;
 use crate::mesh::TriSoup;
+use base64::Engine as _;
 
 /// Why a glTF file could not be read.
 #[derive(Debug, thiserror::Error)]

@@ -104,10 +104,8 @@ const watchdog = setTimeout(() => {
 }, WATCHDOG_MS);
 
 let app; // { page, cdp, errors, context }
-let loadShot;
 const penPath = penLoop();
 let beforePen;
-let afterPen;
 let statsBeforePen;
 
 test('loads without console errors; window.sketchmesh within 15 s; backend matches the GPU path', async () => {
@@ -126,9 +124,9 @@ test('loads without console errors; window.sketchmesh within 15 s; backend match
 });
 
 test('canvas is not blank: the view and the UI render', async () => {
-  loadShot = await screenshot(app.page, out('load.png'));
-  const colours = distinctColours(loadShot);
-  const foreground = nonBackgroundFraction(loadShot);
+  const shot = await screenshot(app.page, out('load.png'));
+  const colours = distinctColours(shot);
+  const foreground = nonBackgroundFraction(shot);
   console.log(`    ${colours} distinct colours, ${(foreground * 100).toFixed(1)}% non-background pixels`);
   assert.ok(colours >= 24, `only ${colours} distinct colours: the canvas looks blank`);
   assert.ok(foreground > 0.005, `only ${(foreground * 100).toFixed(2)}% of pixels differ from the background`);
@@ -171,7 +169,7 @@ test('a pen stroke with pressure leaves ink, adds one curve and logs pressures',
   const stats = await until(() => api(app.page, 'stats'), (s) => s.curves === statsBeforePen.curves + 1);
   assert.equal(stats.curves, statsBeforePen.curves + 1, 'a pen stroke adds exactly one curve');
   await frames(app.page, 3);
-  afterPen = await screenshot(app.page, out('pen-after.png'));
+  const afterPen = await screenshot(app.page, out('pen-after.png'));
   const inked = changedFraction(beforePen, afterPen, penPath);
   console.log(`    ${(inked * 100).toFixed(0)}% of the path shows ink; stats ${JSON.stringify(stats)}`);
   assert.ok(inked >= 0.6, `only ${(inked * 100).toFixed(0)}% of the stroke path changed on screen`);

@@ -245,7 +245,7 @@ impl SketchApp {
             self.pending.as_ref().map_or(0, PendingCreate::iterations),
         );
         if self.geometry_source != source {
-            let pending = self.pending.as_ref().map(PendingCreate::model);
+            let pending = self.pending.as_ref().and_then(PendingCreate::model);
             let generation = self.geometry.generation + 1;
             self.geometry = Arc::new(SceneGeometry::build(
                 self.shared.borrow().editor.document(),

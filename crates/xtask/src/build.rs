@@ -235,6 +235,58 @@ mod tests {
     }
 
     #[test]
+    fn wasm_opt_runs_once_per_input() {
+        let root = std::env::temp_dir().join(format!("xtask-wasm-opt-{}", std::process::id()));
+        recreate_dir(&root).unwrap();
+        let workspace = Workspace {
+            root: root.clone(),
+            target_dir: root.join("target"),
+        };
+        // A stand-in wasm-opt that logs each call and copies its input (`-Oz IN -o OUT`).
+        let bin = workspace.node_bin("wasm-opt");
+        fs::create_dir_all(bin.parent().unwrap()).unwrap();
+        let calls = root.join("calls.log");
+        fs::write(
+            &bin,
+            format!(
+                "#!/bin/sh\necho \"$@\" >> '{}'\ncp \"$2\" \"$4\"\n",
+                calls.display()
+            ),
+        )
+        .unwrap();
+        Command::new("chmod").arg("+x").arg(&bin).status().unwrap();
+        let input = root.join("in.wasm");
+        let cache = root.join("target").join("cache");
+        let count_calls = || {
+            fs::read_to_string(&calls)
+                .unwrap_or_default()
+                .lines()
+                .count()
+        };
+
+        fs::write(&input, b"\0asm first").unwrap();
+        let out = wasm_opt_cached(&workspace, &input, &cache).unwrap();
+        assert_eq!(fs::read(&out).unwrap(), b"\0asm first");
+        assert_eq!(count_calls(), 1);
+        wasm_opt_cached(&workspace, &input, &cache).unwrap();
+        assert_eq!(count_calls(), 1, "same input: cached");
+        fs::write(&input, b"\0asm second").unwrap();
+        let out = wasm_opt_cached(&workspace, &input, &cache).unwrap();
+        assert_eq!(fs::read(&out).unwrap(), b"\0asm second");
+        assert_eq!(count_calls(), 2, "new input: optimized again");
+        let leftovers: Vec<_> = fs::read_dir(&cache)
+            .unwrap()
+            .map(|entry| entry.unwrap().file_name())
+            .collect();
+        assert_eq!(
+            leftovers.len(),
+            2,
+            "only the output and its key: {leftovers:?}"
+        );
+        fs::remove_dir_all(&root).unwrap();
+    }
+
+    #[test]
     fn gzip_round_trips() {
         use std::io::Read as _;
         let dir = std::env::temp_dir().join(format!("xtask-gzip-{}", std::process::id()));

@@ -71,9 +71,8 @@ impl Editor {
                 self.history.record(before);
             }
             Op::Create(input) => {
-                let mut pending = PendingCreate::start(input.clone())?;
-                pending.finish()?;
-                self.add_model(pending.model());
+                let (_, model) = PendingCreate::start(input.clone())?.finish()?;
+                self.add_model(model);
             }
             Op::Undo => {
                 if !self.history.undo(&mut self.document) {
@@ -95,10 +94,10 @@ impl Editor {
     /// `apply` of its `create` op, so replay gives the same mesh) and logs the op.
     ///
     /// Errors: a failed solve; the document is unchanged then.
-    pub fn commit_create(&mut self, mut pending: PendingCreate) -> Result<(), CommandError> {
-        pending.finish()?;
-        self.add_model(pending.model());
-        self.log.push(Op::Create(pending.input().clone()));
+    pub fn commit_create(&mut self, pending: PendingCreate) -> Result<(), CommandError> {
+        let (input, model) = pending.finish()?;
+        self.add_model(model);
+        self.log.push(Op::Create(input));
         self.revision += 1;
         Ok(())
     }

@@ -1,26 +1,42 @@
 //! A creation in progress: FiberMesh's surface appears at once and refines over frames.
 //!
-//! The first display is the mesh after one optimization iteration; each [`PendingCreate::step`]
-//! runs one more, so the app can show every intermediate surface and never block for more
-//! than one iteration. [`Editor::apply`](super::Editor::apply) of a `create` op runs the very
+//! The first display is the seed shape (no factorization yet, already rotund); the first
+//! [`PendingCreate::step`] factors the two fair-surface systems and runs one iteration, and
+//! each later step runs one more, so the app shows every intermediate surface and blocks
+//! for at most one factorization or one iteration per frame. [`Editor::apply`](super::Editor::apply) of a `create` op runs the very
 //! same steps to convergence, so a committed creation and its replay are bit-identical.
 
 use super::{CommandError, ControlCurve, Model, StrokeInput};
-use crate::fibermesh::{CreateParams, Creation, create_from_stroke};
-use crate::mesh::Mesh;
+use crate::fibermesh::{CreateError, CreateParams, Creation, SeedShape, seed_from_stroke};
+use crate::mesh::{Mesh, VertexId};
+use crate::solve::SolveError;
+
+/// The error of a creation whose factorization already failed.
+fn failed() -> CommandError {
+    CommandError::Create(CreateError::Solve(SolveError::NotPositiveDefinite))
+}
+
+/// Where a creation is: seeded, or factored and iterating.
+#[derive(Debug)]
+enum Stage {
+    Seed(SeedShape),
+    Optimizing(Creation),
+    /// The factorization failed; the step that saw it reported the error.
+    Failed,
+}
 
 /// A closed stroke being inflated.
 #[derive(Debug)]
 pub struct PendingCreate {
     input: StrokeInput,
-    creation: Creation,
+    stage: Stage,
     params: CreateParams,
     iterations: usize,
     converged: bool,
 }
 
 impl PendingCreate {
-    /// Meshes the stroke and runs the first iteration.
+    /// Meshes the stroke and builds the seed shape, cheaply: no factorization yet.
     ///
     /// Errors: the stroke's problems as sentences, see [`CommandError`].
     pub fn start(input: StrokeInput) -> Result<Self, CommandError> {
@@ -29,69 +45,83 @@ impl PendingCreate {
             return Err(CommandError::BadView);
         }
         let params = CreateParams::default();
-        let creation = create_from_stroke(&input.points(), &input.camera, viewport, &params)?;
+        let seed = seed_from_stroke(&input.points(), &input.camera, viewport, &params)?;
         Ok(Self {
             input,
-            creation,
+            stage: Stage::Seed(seed),
             params,
-            iterations: 1,
-            converged: params.max_iterations <= 1,
+            iterations: 0,
+            converged: false,
         })
     }
 
-    /// Runs one more iteration unless converged; returns whether it has converged: no
-    /// vertex moved more than the tolerance times the bounding-box diagonal, or the
-    /// iteration cap was reached.
+    /// Factors and iterates once (first step) or iterates once more, unless converged;
+    /// returns whether it has converged: no vertex moved more than the tolerance times the
+    /// bounding-box diagonal, or the iteration cap was reached.
     ///
     /// Errors: a failed solve, as [`CommandError::Create`].
     pub fn step(&mut self) -> Result<bool, CommandError> {
         if self.converged {
             return Ok(true);
         }
-        let diagonal = self
-            .creation
+        if matches!(self.stage, Stage::Seed(_)) {
+            if let Stage::Seed(seed) = std::mem::replace(&mut self.stage, Stage::Failed) {
+                self.stage = Stage::Optimizing(seed.into_creation()?);
+            }
+            self.iterations = 1;
+            self.converged = self.params.max_iterations <= 1;
+            return Ok(self.converged);
+        }
+        let Stage::Optimizing(creation) = &mut self.stage else {
+            return Err(failed());
+        };
+        let diagonal = creation
             .mesh
             .bounding_box()
             .map_or(0.0, |(lo, hi)| lo.distance(hi));
-        let moved = self
-            .creation
+        let moved = creation
             .surface
-            .iterate(self.creation.mesh.positions_mut())
-            .map_err(|e| CommandError::Create(crate::fibermesh::CreateError::Solve(e)))?;
+            .iterate(creation.mesh.positions_mut())
+            .map_err(|e| CommandError::Create(CreateError::Solve(e)))?;
         self.iterations += 1;
         self.converged = moved <= self.params.tolerance * diagonal
             || self.iterations >= self.params.max_iterations;
         Ok(self.converged)
     }
 
-    /// Steps until converged.
+    /// Steps until converged and returns the model.
     ///
     /// Errors: those of [`PendingCreate::step`].
-    pub fn finish(&mut self) -> Result<(), CommandError> {
+    pub fn finish(mut self) -> Result<(StrokeInput, Model), CommandError> {
         while !self.step()? {}
-        Ok(())
+        let model = self.model().ok_or_else(failed)?;
+        Ok((self.input, model))
     }
 
-    /// The surface as it is now, for display.
-    pub fn mesh(&self) -> &Mesh {
-        &self.creation.mesh
+    /// The surface as it is now, for display; `None` after a failed factorization.
+    pub fn mesh(&self) -> Option<&Mesh> {
+        self.parts().map(|(mesh, _)| mesh)
     }
 
-    /// Iterations run so far.
+    fn parts(&self) -> Option<(&Mesh, &[VertexId])> {
+        match &self.stage {
+            Stage::Seed(seed) => Some((&seed.mesh, &seed.curve_vertices)),
+            Stage::Optimizing(c) => Some((&c.mesh, &c.curve_vertices)),
+            Stage::Failed => None,
+        }
+    }
+
+    /// Steps run so far (the first one factors): changes whenever the surface does.
     pub fn iterations(&self) -> usize {
         self.iterations
     }
 
-    /// The op this creation answers.
-    pub fn input(&self) -> &StrokeInput {
-        &self.input
-    }
-
-    /// The model in its current state, its outline as a smooth control curve.
-    pub fn model(&self) -> Model {
-        let mesh = self.creation.mesh.clone();
-        let vertices = self.creation.curve_vertices.clone();
-        Model {
+    /// The model in its current state, its outline as a smooth control curve; `None`
+    /// after a failed factorization.
+    pub fn model(&self) -> Option<Model> {
+        let (mesh, vertices) = self.parts()?;
+        let (mesh, vertices) = (mesh.clone(), vertices.to_vec());
+        Some(Model {
             curves: vec![ControlCurve {
                 points: vertices.iter().map(|&v| mesh.position(v)).collect(),
                 vertices,
@@ -99,7 +129,7 @@ impl PendingCreate {
                 sharp: false,
             }],
             mesh,
-        }
+        })
     }
 }
 
@@ -126,7 +156,7 @@ mod tests {
     #[test]
     fn refining_over_frames_then_committing_equals_applying_the_op() {
         let mut pending = PendingCreate::start(ellipse()).expect("start");
-        let first = pending.mesh().clone();
+        let first = pending.mesh().expect("seed").clone();
         let mut frames = 0;
         while !pending.step().expect("step") {
             frames += 1;
@@ -135,7 +165,7 @@ mod tests {
             frames >= 1,
             "the first display is not the converged surface"
         );
-        assert_ne!(&first, pending.mesh());
+        assert_ne!(Some(&first), pending.mesh());
         let mut progressive = Editor::new();
         progressive.commit_create(pending).expect("commit");
         let mut direct = Editor::new();

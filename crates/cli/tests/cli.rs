@@ -1,5 +1,7 @@
 //! Runs the built `sketchmesh` binary on session files in a temporary directory.
 
+#![allow(clippy::unwrap_used)] // A panic is a test failure with a location.
+
 use std::path::PathBuf;
 use std::process::{Command, Output};
 

@@ -2,6 +2,8 @@
 //! manifolds whose silhouette follows the stroke; a circle becomes a round, symmetric,
 //! non-planar shape, unlike the least-squares mesh; sharp curves crease.
 
+#![allow(clippy::unwrap_used)] // A panic is a test failure with a location.
+
 use std::f64::consts::{PI, TAU};
 
 use glam::{DVec2, DVec3};

@@ -19,8 +19,8 @@ fn failed() -> CommandError {
 /// Where a creation is: seeded, or factored and iterating.
 #[derive(Debug)]
 enum Stage {
-    Seed(SeedShape),
-    Optimizing(Creation),
+    Seed(Box<SeedShape>),
+    Optimizing(Box<Creation>),
     /// The factorization failed; the step that saw it reported the error.
     Failed,
 }
@@ -48,7 +48,7 @@ impl PendingCreate {
         let seed = seed_from_stroke(&input.points(), &input.camera, viewport, &params)?;
         Ok(Self {
             input,
-            stage: Stage::Seed(seed),
+            stage: Stage::Seed(Box::new(seed)),
             params,
             iterations: 0,
             converged: false,
@@ -66,7 +66,7 @@ impl PendingCreate {
         }
         if matches!(self.stage, Stage::Seed(_)) {
             if let Stage::Seed(seed) = std::mem::replace(&mut self.stage, Stage::Failed) {
-                self.stage = Stage::Optimizing(seed.into_creation()?);
+                self.stage = Stage::Optimizing(Box::new(seed.into_creation()?));
             }
             self.iterations = 1;
             self.converged = self.params.max_iterations <= 1;

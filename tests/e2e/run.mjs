@@ -303,6 +303,48 @@ test('deviceScaleFactor 2: the canvas backing store is twice the CSS size and re
   }
 });
 
+test('a closed pen outline becomes a lit 3D shape with its blue curve; undo removes it; export validates', async () => {
+  const fresh = await openApp(browser, url, gpu);
+  try {
+    const centre = { x: 640, y: 400 };
+    const outline = Array.from({ length: 61 }, (_, i) => {
+      const a = (2 * Math.PI * i) / 60;
+      return { x: centre.x + 170 * Math.cos(a), y: centre.y + 120 * Math.sin(a), force: 0.6 };
+    });
+    const before = await screenshot(fresh.page, out('create-before.png'));
+    await penStroke(fresh.cdp, outline);
+    const released = Date.now();
+    const stats = await until(() => api(fresh.page, 'stats'), (s) => s.models === 1, 15_000);
+    const settled = Date.now() - released;
+    assert.equal(stats.models, 1, 'a closed outline on empty canvas creates one model');
+    assert.equal(stats.curves, 1, 'its outline stays on it as one control curve');
+    assert.ok(stats.vertices > 1000 && stats.triangles === 2 * stats.vertices - 4, `closed genus-0 mesh: ${JSON.stringify(stats)}`);
+    console.log(`    created ${stats.vertices} vertices; converged and committed ${settled} ms after release`);
+    await frames(fresh.page, 3);
+    const after = await screenshot(fresh.page, out('create.png'));
+    const px = (img, x, y) => Array.from(img.data.slice((y * img.width + x) * 4, (y * img.width + x) * 4 + 3));
+    const [r, g, b] = px(after, centre.x, centre.y);
+    assert.ok(r > 120 && r >= b, `the shape's middle is lit clay, got rgb(${r}, ${g}, ${b})`);
+    const rim = [-4, -2, 0, 2, 4].map((d) => px(after, centre.x + 170 + d, centre.y));
+    assert.ok(rim.some(([r2, , b2]) => b2 > 170 && b2 > r2 + 50), `a blue curve on the outline, got ${JSON.stringify(rim)}`);
+    const session = JSON.parse(await api(fresh.page, 'session'));
+    assert.equal(session.ops.at(-1).op, 'create', 'the session logs a create op');
+
+    const glb = await fresh.page.evaluate(() => Array.from(window.sketchmesh.exportGlb()));
+    writeFileSync(out('create-export.glb'), Buffer.from(glb));
+
+    await fresh.page.keyboard.press('Control+z');
+    const undone = await until(() => api(fresh.page, 'stats'), (s) => s.models === 0);
+    assert.deepEqual(undone, { models: 0, vertices: 0, triangles: 0, curves: 0 }, 'undo removes the shape');
+    await frames(fresh.page, 3);
+    const reverted = await screenshot(fresh.page, out('create-undone.png'));
+    assert.ok(imageChangedFraction(before, reverted) < 0.01, 'the view looks as before the shape');
+    assert.deepEqual(fresh.errors, [], 'console errors while creating');
+  } finally {
+    await fresh.context.close();
+  }
+});
+
 const failed = await runAll();
 clearTimeout(watchdog);
 await browser.close();

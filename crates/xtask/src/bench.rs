@@ -79,7 +79,7 @@ fn criterion_table(criterion: &Path, since: SystemTime) -> anyhow::Result<String
                 continue;
             }
             if path.file_name().is_some_and(|name| name == "new") {
-                if let Some(row) = criterion_row(&path, since)? {
+                if let Some(row) = criterion_row(criterion, &path, since)? {
                     rows.push(row);
                 }
             } else {
@@ -90,7 +90,13 @@ fn criterion_table(criterion: &Path, since: SystemTime) -> anyhow::Result<String
     if rows.is_empty() {
         bail!("no criterion results under {}", criterion.display());
     }
-    rows.sort();
+    // Numeric parameters in numeric order: factor/1024 before factor/10000.
+    rows.sort_by_cached_key(|row| {
+        let id = row.split('|').nth(1).unwrap_or_default().trim();
+        id.split('/')
+            .map(|part| (part.parse::<u64>().ok(), part.to_owned()))
+            .collect::<Vec<_>>()
+    });
     let mut table = String::from(
         "| benchmark | mean | 95% interval of the mean | median |\n| --- | ---: | ---: | ---: |\n",
     );
@@ -100,7 +106,11 @@ fn criterion_table(criterion: &Path, since: SystemTime) -> anyhow::Result<String
     Ok(table)
 }
 
-fn criterion_row(new: &Path, since: SystemTime) -> anyhow::Result<Option<String>> {
+fn criterion_row(
+    criterion: &Path,
+    new: &Path,
+    since: SystemTime,
+) -> anyhow::Result<Option<String>> {
     let estimates_file = new.join("estimates.json");
     let fresh = estimates_file
         .metadata()
@@ -113,7 +123,13 @@ fn criterion_row(new: &Path, since: SystemTime) -> anyhow::Result<Option<String>
     let id = read_json(&new.join("benchmark.json"))
         .ok()
         .and_then(|bench| bench["full_id"].as_str().map(str::to_owned))
-        .unwrap_or_else(|| new.parent().unwrap_or(new).display().to_string());
+        .unwrap_or_else(|| {
+            let dir = new.parent().unwrap_or(new);
+            dir.strip_prefix(criterion)
+                .unwrap_or(dir)
+                .display()
+                .to_string()
+        });
     let ns = |pointer: &str| estimates.pointer(pointer).and_then(Value::as_f64);
     let (Some(mean), Some(low), Some(high), Some(median)) = (
         ns("/mean/point_estimate"),
@@ -199,9 +215,17 @@ mod tests {
     #[test]
     fn criterion_results_become_rows() {
         let root = temp_path("criterion");
+        let before = SystemTime::now() - std::time::Duration::from_secs(5);
+        let small = root.join("solve").join("factor").join("200").join("new");
+        fs::create_dir_all(&small).unwrap();
+        fs::write(
+            small.join("estimates.json"),
+            r#"{"mean":{"confidence_interval":{"lower_bound":1.0,"upper_bound":3.0},"point_estimate":2.0},
+                "median":{"point_estimate":2.0}}"#,
+        )
+        .unwrap();
         let new = root.join("solve").join("factor").join("1000").join("new");
         fs::create_dir_all(&new).unwrap();
-        let before = SystemTime::now() - std::time::Duration::from_secs(5);
         fs::write(
             new.join("estimates.json"),
             r#"{"mean":{"confidence_interval":{"confidence_level":0.95,"lower_bound":1900.0,"upper_bound":2100.0},"point_estimate":2000.0,"standard_error":50.0},
@@ -218,6 +242,9 @@ mod tests {
             table.contains("| solve/factor/1000 | 2.00 µs | 1.90 µs .. 2.10 µs | 1.95 µs |"),
             "{table}"
         );
+        let small = table.find("| solve/factor/200 |").unwrap();
+        let large = table.find("solve/factor/1000 ").unwrap();
+        assert!(small < large, "numeric order: {table}");
         // Results older than the run are left out.
         let later = SystemTime::now() + std::time::Duration::from_secs(60);
         assert!(criterion_table(&root, later).is_err());

@@ -1,50 +1,29 @@
-//! The ground grid on the y = 0 plane, fading towards its rim.
+//! The ground grid on the y = 0 plane: one large quad whose fragment shader draws the lines.
+//!
+//! Line primitives would be simpler, but grid lines run behind the eye, and SwiftShader
+//! (headless Chromium's GPU) drops lines that cross the eye plane instead of clipping them;
+//! triangles are clipped correctly everywhere. A procedural grid is also antialiased and
+//! fades out with distance, instead of ending at a hard edge.
 
 use bytemuck::{Pod, Zeroable};
 
-/// A coloured line vertex.
+/// A vertex of the grid quad.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Pod, Zeroable)]
 pub struct GridVertex {
     /// Position in world space.
     pub pos: [f32; 3],
-    /// Straight RGBA.
-    pub color: [f32; 4],
 }
 
-/// Half the grid's extent in world units.
-const HALF_EXTENT: i32 = 10;
+/// Half the grid's extent in world units; the shader fades the lines out well before it.
+const HALF_EXTENT: f32 = 40.0;
 
-/// Line-list vertices of the grid: unit cells, brighter every fifth line, red X and blue Z axes.
-pub fn grid_lines() -> Vec<GridVertex> {
-    let mut out = Vec::new();
-    let e = HALF_EXTENT as f32;
-    for i in -HALF_EXTENT..=HALF_EXTENT {
-        let t = i as f32;
-        let fade = 1.0 - (t.abs() / e) * 0.7;
-        let (x_axis, z_axis) = if i == 0 {
-            ([0.85, 0.3, 0.3, 0.8], [0.3, 0.5, 0.9, 0.8])
-        } else {
-            let a = if i % 5 == 0 { 0.35 } else { 0.18 } * fade;
-            ([0.7, 0.72, 0.78, a], [0.7, 0.72, 0.78, a])
-        };
-        // Lines parallel to X at z = t (the z = 0 one is the X axis), then parallel to Z.
-        out.push(GridVertex {
-            pos: [-e, 0.0, t],
-            color: x_axis,
-        });
-        out.push(GridVertex {
-            pos: [e, 0.0, t],
-            color: x_axis,
-        });
-        out.push(GridVertex {
-            pos: [t, 0.0, -e],
-            color: z_axis,
-        });
-        out.push(GridVertex {
-            pos: [t, 0.0, e],
-            color: z_axis,
-        });
-    }
-    out
+/// The quad as two triangles.
+pub fn grid_quad() -> Vec<GridVertex> {
+    let e = HALF_EXTENT;
+    let corners = [[-e, 0.0, -e], [e, 0.0, -e], [e, 0.0, e], [-e, 0.0, e]];
+    [0, 1, 2, 0, 2, 3]
+        .iter()
+        .map(|&i| GridVertex { pos: corners[i] })
+        .collect()
 }

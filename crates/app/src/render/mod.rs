@@ -100,7 +100,7 @@ impl SceneRenderer {
             label: Some("scene"),
             ..Default::default()
         });
-        let grid_vertices = grid::grid_lines();
+        let grid_vertices = grid::grid_quad();
         let grid = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("grid"),
             contents: bytemuck::cast_slice(&grid_vertices),

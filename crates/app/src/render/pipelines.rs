@@ -20,7 +20,7 @@ pub struct Pipelines {
     pub mesh: wgpu::RenderPipeline,
     /// Mesh edges.
     pub wire: wgpu::RenderPipeline,
-    /// Ground grid lines.
+    /// Ground grid (a procedural quad).
     pub grid: wgpu::RenderPipeline,
     /// Curve parts hidden behind surfaces, dimmed.
     pub curve_hidden: wgpu::RenderPipeline,
@@ -143,9 +143,9 @@ impl Pipelines {
             ),
             grid: pass.pipeline(
                 "grid",
-                ("vs_line", "fs_line"),
+                ("vs_grid", "fs_grid"),
                 &[Some(GridVertex::layout())],
-                lines,
+                tri,
                 (false, less),
                 premultiplied,
             ),
@@ -269,8 +269,7 @@ impl CurveSegment {
 }
 
 impl GridVertex {
-    const ATTRIBUTES: [wgpu::VertexAttribute; 2] =
-        wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x4];
+    const ATTRIBUTES: [wgpu::VertexAttribute; 1] = wgpu::vertex_attr_array![0 => Float32x3];
 
     fn layout() -> wgpu::VertexBufferLayout<'static> {
         wgpu::VertexBufferLayout {

@@ -68,24 +68,50 @@ fn fs_wire() -> @location(0) vec4<f32> {
     return vec4<f32>(0.12, 0.13, 0.16, 1.0) * 0.6;
 }
 
-// ---- grid -----------------------------------------------------------------------------
+// ---- grid: a quad on y = 0 whose lines are computed per fragment ----------------------
 
-struct LineOut {
+struct GridOut {
     @builtin(position) clip: vec4<f32>,
-    @location(0) color: vec4<f32>,
+    @location(0) world: vec3<f32>,
 };
 
 @vertex
-fn vs_line(@location(0) pos: vec3<f32>, @location(1) color: vec4<f32>) -> LineOut {
-    var out: LineOut;
+fn vs_grid(@location(0) pos: vec3<f32>) -> GridOut {
+    var out: GridOut;
     out.clip = u.clip_from_world * vec4<f32>(pos, 1.0);
-    out.color = color;
+    out.world = pos;
     return out;
 }
 
+// Coverage (0..1) of lines every `spacing` units, about one pixel wide.
+fn grid_lines(coord: vec2<f32>, spacing: f32) -> f32 {
+    let c = coord / spacing;
+    let width = fwidth(c);
+    let distance = abs(fract(c - 0.5) - 0.5) / max(width, vec2<f32>(1e-6));
+    return 1.0 - min(min(distance.x, distance.y), 1.0);
+}
+
 @fragment
-fn fs_line(in: LineOut) -> @location(0) vec4<f32> {
-    return vec4<f32>(in.color.rgb * in.color.a, in.color.a);
+fn fs_grid(in: GridOut) -> @location(0) vec4<f32> {
+    let coord = in.world.xz;
+    let fade = 1.0 - smoothstep(6.0, 22.0, length(coord));
+    let minor = grid_lines(coord, 1.0) * 0.16;
+    let major = grid_lines(coord, 5.0) * 0.32;
+    var color = vec3<f32>(0.7, 0.72, 0.78);
+    var alpha = max(minor, major);
+    // The X axis (z = 0) in red and the Z axis (x = 0) in blue.
+    let width = fwidth(coord);
+    let on_x_axis = 1.0 - min(abs(coord.y) / max(width.y, 1e-6), 1.0);
+    let on_z_axis = 1.0 - min(abs(coord.x) / max(width.x, 1e-6), 1.0);
+    if (on_x_axis > 0.0) {
+        color = vec3<f32>(0.85, 0.3, 0.3);
+        alpha = max(alpha, on_x_axis * 0.8);
+    } else if (on_z_axis > 0.0) {
+        color = vec3<f32>(0.3, 0.5, 0.9);
+        alpha = max(alpha, on_z_axis * 0.8);
+    }
+    let a = alpha * fade;
+    return vec4<f32>(color * a, a);
 }
 
 // ---- curves: each instance is one segment, expanded to a screen-space quad ------------

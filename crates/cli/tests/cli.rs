@@ -107,3 +107,59 @@ fn refusals_exit_1_with_a_sentence() {
     assert!(String::from_utf8_lossy(&output.stdout).contains("sketchmesh replay"));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// A session whose one op inflates a closed outline (an ellipse, 48 samples).
+fn create_session() -> String {
+    let stroke: Vec<String> = (0..=48)
+        .map(|i| {
+            let a = std::f64::consts::TAU * f64::from(i) / 48.0;
+            format!(
+                "[{},{},0.5]",
+                400.0 + 150.0 * a.cos(),
+                300.0 + 100.0 * a.sin()
+            )
+        })
+        .collect();
+    format!(
+        r#"{{"format":"sketchmesh-session","version":1,"ops":[
+{{"op":"create","viewport":[800.0,600.0],"camera":{{"eye":[0.0,1.0,5.0],"target":[0.0,0.0,0.0],"up":[0.0,1.0,0.0],"fov_y_deg":45.0}},"stroke":[{}]}}
+]}}"#,
+        stroke.join(",")
+    )
+}
+
+#[test]
+fn a_created_shape_replays_to_the_same_closed_genus_0_mesh() {
+    let dir = temp_dir("create");
+    let session = dir.join("create.json");
+    std::fs::write(&session, create_session()).unwrap();
+    let replay = |name: &str| {
+        let glb = dir.join(name);
+        let output = sketchmesh(&[
+            "replay".as_ref(),
+            session.as_os_str(),
+            "-o".as_ref(),
+            glb.as_os_str(),
+        ]);
+        assert_eq!(
+            output.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&output.stderr)
+        );
+        (glb.clone(), std::fs::read(&glb).unwrap())
+    };
+    let (glb, first) = replay("first.glb");
+    let (_, second) = replay("second.glb");
+    assert_eq!(first, second, "replay is deterministic to the byte");
+
+    let output = sketchmesh(&["info".as_ref(), glb.as_os_str()]);
+    assert_eq!(output.status.code(), Some(0));
+    let info: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+    assert!(info["vertices"].as_u64().unwrap() > 1000, "{info}");
+    assert_eq!(info["closed"], true, "{info}");
+    assert_eq!(info["manifold"], true, "{info}");
+    assert_eq!(info["genus"], 0, "{info}");
+    assert_eq!(info["components"], 1, "{info}");
+    assert_eq!(info["control_curves"], 1, "{info}");
+}

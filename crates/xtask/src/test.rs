@@ -52,7 +52,10 @@ pub fn test_command(workspace: &Workspace) -> anyhow::Result<()> {
             cargo().current_dir(root).args(["test", "--workspace"]),
         )
     })?;
-    browser_checks(workspace, &mut steps)?;
+    // `cargo test` built the CLI with the whole workspace's features; `cargo run -p` would
+    // rebuild the core with the CLI's own feature set, which takes minutes from cold.
+    let cli = workspace.target_dir.join("debug").join("sketchmesh");
+    browser_checks(workspace, &mut steps, Some(&cli))?;
     steps.print_summary();
     println!("xtask: all checks passed");
     Ok(())
@@ -62,15 +65,20 @@ pub fn test_command(workspace: &Workspace) -> anyhow::Result<()> {
 pub fn e2e_command(workspace: &Workspace) -> anyhow::Result<()> {
     let mut steps = Steps::default();
     steps.step("setup", || setup::setup(workspace, Needs::ALL))?;
-    browser_checks(workspace, &mut steps)?;
+    browser_checks(workspace, &mut steps, None)?;
     steps.print_summary();
     println!("xtask: browser checks passed");
     Ok(())
 }
 
 /// The web build with its size budget, the browser suite on each GPU path, and the glTF
-/// validator on the exports and on a CLI replay.
-fn browser_checks(workspace: &Workspace, steps: &mut Steps) -> anyhow::Result<()> {
+/// validator on the exports and on a CLI replay (with the `cli` binary when given, else
+/// through `cargo run`).
+fn browser_checks(
+    workspace: &Workspace,
+    steps: &mut Steps,
+    cli: Option<&Path>,
+) -> anyhow::Result<()> {
     let root = &workspace.root;
     let web = steps.step("build-web --release", || {
         build::build_web(workspace, WebProfile::Release)
@@ -115,21 +123,19 @@ fn browser_checks(workspace: &Workspace, steps: &mut Steps) -> anyhow::Result<()
 
     let replay_glb = out.join("replay.glb");
     steps.step("cli replay", || {
-        run(
-            "replaying the session fixture with the CLI",
-            cargo()
-                .current_dir(root)
-                .args([
-                    "run",
-                    "-p",
-                    "sketchmesh-cli",
-                    "--",
-                    "replay",
-                    REPLAY_FIXTURE,
-                    "-o",
-                ])
-                .arg(&replay_glb),
-        )
+        let mut command = match cli {
+            Some(binary) => Command::new(binary),
+            None => {
+                let mut c = cargo();
+                c.args(["run", "-p", "sketchmesh-cli", "--"]);
+                c
+            }
+        };
+        command
+            .current_dir(root)
+            .args(["replay", REPLAY_FIXTURE, "-o"])
+            .arg(&replay_glb);
+        run("replaying the session fixture with the CLI", &mut command)
     })?;
     steps.step("gltf-validator", || {
         let mut files: Vec<PathBuf> = GPU_PASSES

@@ -16,7 +16,7 @@ impl Mesh {
     /// vertex used by no triangle.
     pub fn from_soup(soup: &TriSoup) -> Result<Mesh, MeshError> {
         let n_vertices = soup.positions.len();
-        check_triangles(soup)?;
+        check_triangles(&soup.triangles, soup.positions.len())?;
         if let Some(vertex) = soup.positions.iter().position(|p| !p.is_finite()) {
             return Err(MeshError::NonFinitePosition {
                 vertex: vertex as u32,
@@ -67,9 +67,9 @@ impl Mesh {
     }
 }
 
-fn check_triangles(soup: &TriSoup) -> Result<(), MeshError> {
-    let n_vertices = soup.positions.len();
-    for (face, t) in soup.triangles.iter().enumerate() {
+/// Every index in range and no triangle with a repeated corner; shared with `validate`.
+pub(super) fn check_triangles(triangles: &[[u32; 3]], n_vertices: usize) -> Result<(), MeshError> {
+    for (face, t) in triangles.iter().enumerate() {
         let face = face as u32;
         if let Some(&index) = t.iter().find(|&&i| i as usize >= n_vertices) {
             return Err(MeshError::IndexOutOfRange {

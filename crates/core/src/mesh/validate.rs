@@ -43,21 +43,7 @@ impl Mesh {
     }
 
     fn validate_triangles(&self) -> Result<(), MeshError> {
-        let n_vertices = self.n_vertices();
-        for (face, t) in self.triangles.iter().enumerate() {
-            let face = face as u32;
-            if let Some(&index) = t.iter().find(|&&i| i as usize >= n_vertices) {
-                return Err(MeshError::IndexOutOfRange {
-                    face,
-                    index,
-                    n_vertices,
-                });
-            }
-            if t[0] == t[1] || t[1] == t[2] || t[2] == t[0] {
-                return Err(MeshError::DegenerateTriangle { face });
-            }
-        }
-        Ok(())
+        super::build::check_triangles(&self.triangles, self.n_vertices())
     }
 
     /// Twins pair opposite half-edges, and no directed edge occurs twice.

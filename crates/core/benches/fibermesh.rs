@@ -13,7 +13,7 @@ use glam::DVec2;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::fibermesh::{
-    CreateParams, create_converged_from_stroke, create_from_stroke, seed_from_stroke,
+    CreateError, CreateParams, create_converged_from_stroke, create_from_stroke, seed_from_stroke,
 };
 
 const VIEWPORT: DVec2 = DVec2::new(1280.0, 720.0);
@@ -30,58 +30,41 @@ fn circle_like_stroke() -> Vec<StrokePoint> {
         .collect()
 }
 
+/// One group timing `create` at each target vertex count.
+fn bench_sizes(
+    c: &mut Criterion,
+    name: &str,
+    sizes: &[usize],
+    create: impl Fn(&CreateParams) -> Result<(), CreateError>,
+) {
+    let mut group = c.benchmark_group(name);
+    group.sample_size(10);
+    for &n in sizes {
+        let params = CreateParams {
+            target_vertices: n,
+            ..CreateParams::default()
+        };
+        group.bench_with_input(BenchmarkId::from_parameter(n), &params, |b, params| {
+            b.iter(|| create(params).expect("stroke is fine"));
+        });
+    }
+    group.finish();
+}
+
 fn bench_creation(c: &mut Criterion) {
     let stroke = circle_like_stroke();
     let camera = Camera::default();
     let sizes = [2_000, 10_000, 40_000];
 
-    let mut group = c.benchmark_group("fibermesh_first_display");
-    group.sample_size(10);
-    for &n in &sizes {
-        let params = CreateParams {
-            target_vertices: n,
-            ..CreateParams::default()
-        };
-        group.bench_with_input(BenchmarkId::from_parameter(n), &params, |b, params| {
-            b.iter(|| {
-                seed_from_stroke(black_box(&stroke), &camera, VIEWPORT, params)
-                    .expect("stroke is fine")
-            });
-        });
-    }
-    group.finish();
-
-    let mut group = c.benchmark_group("fibermesh_first_iteration");
-    group.sample_size(10);
-    for &n in &sizes {
-        let params = CreateParams {
-            target_vertices: n,
-            ..CreateParams::default()
-        };
-        group.bench_with_input(BenchmarkId::from_parameter(n), &params, |b, params| {
-            b.iter(|| {
-                create_from_stroke(black_box(&stroke), &camera, VIEWPORT, params)
-                    .expect("stroke is fine")
-            });
-        });
-    }
-    group.finish();
-
-    let mut group = c.benchmark_group("fibermesh_converged");
-    group.sample_size(10);
-    for &n in &sizes {
-        let params = CreateParams {
-            target_vertices: n,
-            ..CreateParams::default()
-        };
-        group.bench_with_input(BenchmarkId::from_parameter(n), &params, |b, params| {
-            b.iter(|| {
-                create_converged_from_stroke(black_box(&stroke), &camera, VIEWPORT, params)
-                    .expect("stroke is fine")
-            });
-        });
-    }
-    group.finish();
+    bench_sizes(c, "fibermesh_first_display", &sizes, |params| {
+        seed_from_stroke(black_box(&stroke), &camera, VIEWPORT, params).map(drop)
+    });
+    bench_sizes(c, "fibermesh_first_iteration", &sizes, |params| {
+        create_from_stroke(black_box(&stroke), &camera, VIEWPORT, params).map(drop)
+    });
+    bench_sizes(c, "fibermesh_converged", &sizes, |params| {
+        create_converged_from_stroke(black_box(&stroke), &camera, VIEWPORT, params).map(drop)
+    });
 
     let mut group = c.benchmark_group("fibermesh_iteration");
     for &n in &sizes {

@@ -3,9 +3,10 @@
 use std::sync::Arc;
 
 use super::history::History;
-use super::{Document, Model, Op, PendingCreate, SketchCurve, StrokeInput};
+use super::{Document, ImportInput, Model, Op, PendingCreate, SketchCurve, StrokeInput};
 use crate::curve::{StrokeError, process_stroke};
 use crate::fibermesh::CreateError;
+use crate::io::{GltfError, ImportFile, ImportLimits, Imported, import_gltf};
 
 /// Why an op was refused. The messages are sentences for the user.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -31,6 +32,15 @@ pub enum CommandError {
     /// A closed stroke did not become a shape.
     #[error("{0}")]
     Create(#[from] CreateError),
+    /// An import op names a file whose contents were not loaded.
+    #[error("The contents of {0} are not in the session; replay it next to that file.")]
+    FileNotLoaded(String),
+    /// An import op has no files.
+    #[error("The import has no file.")]
+    NoFile,
+    /// A file could not be imported.
+    #[error("{0}")]
+    Import(#[from] GltfError),
 }
 
 impl From<StrokeError> for CommandError {
@@ -73,6 +83,18 @@ impl Editor {
             Op::Create(input) => {
                 let (_, model) = PendingCreate::start(input.clone())?.finish()?;
                 self.add_model(model);
+            }
+            Op::Import(input) => {
+                let imported = import_files(input)?;
+                let mut next = self.document.clone();
+                next.models
+                    .extend(imported.models.into_iter().map(Arc::new));
+                next.sketches
+                    .extend(imported.sketches.into_iter().map(Arc::new));
+                next.point_clouds
+                    .extend(imported.point_clouds.into_iter().map(Arc::new));
+                let before = std::mem::replace(&mut self.document, next);
+                self.history.record(before);
             }
             Op::Undo => {
                 if !self.history.undo(&mut self.document) {
@@ -167,6 +189,23 @@ fn place_stroke(input: &StrokeInput) -> Result<SketchCurve, CommandError> {
         sketch.pressures.push(point.pressure);
     }
     Ok(sketch)
+}
+
+/// Imports the files of an import op with the default limits.
+fn import_files(input: &ImportInput) -> Result<Imported, CommandError> {
+    let files = input
+        .files
+        .iter()
+        .map(|file| match &file.data {
+            Some(data) => Ok(ImportFile {
+                name: &file.name,
+                bytes: data.as_slice(),
+            }),
+            None => Err(CommandError::FileNotLoaded(file.name.clone())),
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let (main, others) = files.split_first().ok_or(CommandError::NoFile)?;
+    Ok(import_gltf(main, others, &ImportLimits::default())?)
 }
 
 #[cfg(test)]

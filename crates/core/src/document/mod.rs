@@ -5,6 +5,7 @@
 //! the document, the history and the log untouched. Models and sketches sit behind `Arc`, so an
 //! undo snapshot is a copy of a few pointers and restores the exact previous state.
 
+mod appearance;
 mod editor;
 mod history;
 mod intent;
@@ -13,9 +14,10 @@ mod op;
 mod pending;
 mod session;
 
+pub use appearance::{AlphaMode, Appearance, Image, Material, Texture, positions_hash};
 pub use editor::{CommandError, Editor};
 pub use intent::{CLOSE_TOLERANCE_PX, op_for_stroke, starts_on_model};
-pub use model::{ControlCurve, Document, Model, SketchCurve, Stats};
-pub use op::{Op, StrokeInput};
+pub use model::{ControlCurve, Document, Model, PointCloud, SketchCurve, Stats};
+pub use op::{FileInput, ImportInput, Op, StrokeInput};
 pub use pending::PendingCreate;
 pub use session::{SESSION_FORMAT, SESSION_VERSION, Session, SessionError};

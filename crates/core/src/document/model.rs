@@ -5,6 +5,7 @@ use std::sync::Arc;
 use glam::DVec3;
 use serde::Serialize;
 
+use super::Appearance;
 use crate::mesh::{Mesh, VertexId};
 
 /// An ink stroke placed in 3D: the processed screen stroke projected onto a plane.
@@ -37,6 +38,19 @@ pub struct Model {
     pub mesh: Mesh,
     /// Control curves on the surface.
     pub curves: Vec<ControlCurve>,
+    /// The name it had in an imported file.
+    pub name: Option<String>,
+    /// How it looked in an imported file; `None` for models made here.
+    pub appearance: Option<Arc<Appearance>>,
+}
+
+/// Points imported from a file (a scan, say): shown, kept and exported as they are.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct PointCloud {
+    /// Positions in world space.
+    pub positions: Vec<DVec3>,
+    /// RGBA colour per point, if the file had colours.
+    pub colors: Option<Vec<[f32; 4]>>,
 }
 
 /// Everything the user has made. Cheap to clone: a clone shares every model and sketch.
@@ -46,6 +60,8 @@ pub struct Document {
     pub models: Vec<Arc<Model>>,
     /// Free sketch curves, in creation order.
     pub sketches: Vec<Arc<SketchCurve>>,
+    /// Imported point sets.
+    pub point_clouds: Vec<Arc<PointCloud>>,
 }
 
 /// Counts shown in the app's status line and printed by the CLI.
@@ -77,9 +93,9 @@ impl Document {
         stats
     }
 
-    /// Whether there are no models and no sketches.
+    /// Whether there are no models, sketches or points.
     pub fn is_empty(&self) -> bool {
-        self.models.is_empty() && self.sketches.is_empty()
+        self.models.is_empty() && self.sketches.is_empty() && self.point_clouds.is_empty()
     }
 }
 
@@ -93,10 +109,12 @@ mod tests {
         let model = Model {
             mesh: primitives::icosphere(1.0, 1),
             curves: vec![ControlCurve::default(), ControlCurve::default()],
+            ..Model::default()
         };
         let document = Document {
             models: vec![Arc::new(model.clone()), Arc::new(model)],
             sketches: vec![Arc::new(SketchCurve::default())],
+            ..Document::default()
         };
         let stats = document.stats();
         assert_eq!(

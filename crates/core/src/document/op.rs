@@ -1,5 +1,7 @@
 //! Session operations: the serializable inputs that change a document.
 
+use std::sync::Arc;
+
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
 
@@ -14,6 +16,8 @@ pub enum Op {
     Stroke(StrokeInput),
     /// Inflate a closed stroke drawn on empty canvas into a new FiberMesh model.
     Create(StrokeInput),
+    /// Add the models, sketches and points of a glTF file.
+    Import(ImportInput),
     /// Undo the last change.
     Undo,
     /// Redo the last undone change.
@@ -23,16 +27,73 @@ pub enum Op {
 impl Op {
     /// The `"op"` tag of every kind of op, as written in session files (in step with
     /// [`Op::name`]; a test checks both against serde).
-    pub const NAMES: &'static [&'static str] = &["stroke", "create", "undo", "redo"];
+    pub const NAMES: &'static [&'static str] = &["stroke", "create", "import", "undo", "redo"];
 
     /// The `"op"` tag of this op.
     pub fn name(&self) -> &'static str {
         match self {
             Op::Stroke(_) => "stroke",
             Op::Create(_) => "create",
+            Op::Import(_) => "import",
             Op::Undo => "undo",
             Op::Redo => "redo",
         }
+    }
+}
+
+/// The files of an import: the .glb or .gltf first, then the files it refers to.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ImportInput {
+    /// The files, main file first.
+    pub files: Vec<FileInput>,
+}
+
+/// One file of an import: its name and, once loaded, its bytes (base64 in JSON).
+///
+/// Sessions written by the app carry the bytes, so they replay anywhere; a hand-written
+/// session may give only the name, and `sketchmesh replay` reads the file next to the session.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FileInput {
+    /// The file name.
+    pub name: String,
+    /// The contents; `None` until loaded.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        with = "base64_bytes"
+    )]
+    pub data: Option<Arc<Vec<u8>>>,
+}
+
+/// Bytes as a standard base64 string.
+mod base64_bytes {
+    use std::sync::Arc;
+
+    use base64::Engine as _;
+    use serde::{Deserialize as _, Deserializer, Serializer};
+
+    #[allow(clippy::ref_option)] // serde's `with` passes `&Option<T>`.
+    pub(super) fn serialize<S: Serializer>(
+        bytes: &Option<Arc<Vec<u8>>>,
+        serializer: S,
+    ) -> Result<S::Ok, S::Error> {
+        match bytes {
+            Some(bytes) => serializer
+                .serialize_str(&base64::engine::general_purpose::STANDARD.encode(bytes.as_slice())),
+            None => serializer.serialize_none(),
+        }
+    }
+
+    pub(super) fn deserialize<'de, D: Deserializer<'de>>(
+        deserializer: D,
+    ) -> Result<Option<Arc<Vec<u8>>>, D::Error> {
+        let text = String::deserialize(deserializer)?;
+        base64::engine::general_purpose::STANDARD
+            .decode(text)
+            .map(|bytes| Some(Arc::new(bytes)))
+            .map_err(serde::de::Error::custom)
     }
 }
 
@@ -82,6 +143,12 @@ mod tests {
                 camera: Camera::default(),
                 stroke: Vec::new(),
             }),
+            Op::Import(ImportInput {
+                files: vec![FileInput {
+                    name: String::from("a.glb"),
+                    data: Some(Arc::new(vec![1, 2, 3])),
+                }],
+            }),
             Op::Undo,
             Op::Redo,
         ];
@@ -91,6 +158,32 @@ mod tests {
             assert_eq!(value["op"], *name);
             assert_eq!(op.name(), *name);
         }
+    }
+
+    #[test]
+    fn import_json_carries_bytes_as_base64() {
+        let op = Op::Import(ImportInput {
+            files: vec![
+                FileInput {
+                    name: String::from("a.gltf"),
+                    data: Some(Arc::new(b"{}".to_vec())),
+                },
+                FileInput {
+                    name: String::from("a.bin"),
+                    data: None,
+                },
+            ],
+        });
+        let json = serde_json::to_string(&op).unwrap();
+        assert_eq!(
+            json,
+            r#"{"op":"import","files":[{"name":"a.gltf","data":"e30="},{"name":"a.bin"}]}"#
+        );
+        assert_eq!(serde_json::from_str::<Op>(&json).unwrap(), op);
+        assert!(
+            serde_json::from_str::<Op>(r#"{"op":"import","files":[{"name":"a","data":"!"}]}"#)
+                .is_err()
+        );
     }
 
     #[test]

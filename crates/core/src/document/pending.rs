@@ -129,6 +129,7 @@ impl PendingCreate {
                 sharp: false,
             }],
             mesh,
+            ..Model::default()
         })
     }
 }

@@ -7,7 +7,7 @@
 //! reaches the primitive-restart value 65535, else `u32`; the material is written only if a
 //! triangle primitive uses it. An empty document gives a valid file with one empty scene.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap};
 
 use glam::{DVec3, Vec3};
 use gltf::json;
@@ -16,8 +16,12 @@ use serde_json::value::RawValue;
 
 use super::EXTRAS_VERSION;
 use super::extras::{CurveExtras, NodeExtras, SketchExtras, SketchmeshExtras};
-use crate::document::{Document, Model, SketchCurve};
+use crate::document::{Document, Image, Model, PointCloud, SketchCurve};
 use crate::geometry::vertex_normals;
+use crate::mesh::Mesh;
+
+/// The name of the material of models made here, by which import recognizes them.
+pub(super) const CLAY_MATERIAL_NAME: &str = "Sketchmesh clay";
 
 /// Encodes the document as a .glb file; see the module docs for the layout.
 pub fn write_glb(doc: &Document) -> Vec<u8> {
@@ -29,60 +33,129 @@ pub fn write_glb(doc: &Document) -> Vec<u8> {
     if !doc.sketches.is_empty() {
         nodes.push(writer.sketch_node(&doc.sketches));
     }
+    for (index, points) in doc.point_clouds.iter().enumerate() {
+        nodes.push(writer.point_cloud_node(index, points));
+    }
     writer.finish(nodes)
 }
 
 #[derive(Default)]
-struct Writer {
-    root: json::Root,
+pub(super) struct Writer {
+    pub(super) root: json::Root,
     bin: Vec<u8>,
     material: Option<json::Index<json::Material>>,
+    /// Images already written, by the address of their shared bytes.
+    pub(super) images: HashMap<*const Image, json::Index<json::Image>>,
 }
 
 impl Writer {
     fn model_node(&mut self, index: usize, model: &Model) -> json::Index<json::Node> {
         let mesh = &model.mesh;
+        let name = model
+            .name
+            .clone()
+            .unwrap_or_else(|| format!("model {index}"));
+        let appearance = model.appearance.as_deref().filter(|a| a.fits(mesh));
         let mesh_index = (mesh.n_faces() > 0).then(|| {
-            let positions: Vec<Vec3> = mesh.positions().iter().map(|p| p.as_vec3()).collect();
-            let normals: Vec<Vec3> = vertex_normals(mesh).into_iter().map(unit_f32).collect();
-            let mut attributes = BTreeMap::new();
-            attributes.insert(
-                Valid(json::mesh::Semantic::Positions),
-                self.positions(&positions),
-            );
-            attributes.insert(
-                Valid(json::mesh::Semantic::Normals),
-                self.vec3s(&normals, None),
-            );
-            let primitive = json::mesh::Primitive {
-                attributes,
-                extensions: None,
-                extras: None,
-                indices: Some(self.indices(mesh.triangle_indices(), mesh.n_vertices())),
-                material: Some(self.material()),
-                mode: Valid(json::mesh::Mode::Triangles),
-                targets: None,
+            let primitives = match appearance {
+                Some(appearance) => self.imported_primitives(mesh, appearance),
+                None => vec![self.clay_primitive(mesh)],
             };
-            self.mesh(format!("model {index}"), vec![primitive])
+            self.mesh(name.clone(), primitives)
         });
-        let curves = model
-            .curves
-            .iter()
-            .map(|curve| CurveExtras {
-                closed: curve.closed,
-                sharp: curve.sharp,
-                points: curve.points.iter().map(|p| p.to_array()).collect(),
+        // Imported models without curves stay foreign files' models: no Sketchmesh extras,
+        // so importing the export again keeps their look.
+        let extras = (appearance.is_none() || !model.curves.is_empty()).then(|| {
+            let curves = model
+                .curves
+                .iter()
+                .map(|curve| CurveExtras {
+                    closed: curve.closed,
+                    sharp: curve.sharp,
+                    points: curve.points.iter().map(|p| p.to_array()).collect(),
+                })
+                .collect();
+            extras(SketchmeshExtras {
+                version: EXTRAS_VERSION,
+                curves,
+                sketches: Vec::new(),
             })
-            .collect();
-        let extras = extras(SketchmeshExtras {
-            version: EXTRAS_VERSION,
-            curves,
-            sketches: Vec::new(),
         });
         self.root.push(json::Node {
             mesh: mesh_index,
-            name: Some(format!("model {index}")),
-            extras,
+            name: Some(name),
+            extras: extras.flatten(),
+            ..Default::default()
+        })
+    }
+
+    /// A model made here: welded vertices, smooth normals, the clay material.
+    fn clay_primitive(&mut self, mesh: &Mesh) -> json::mesh::Primitive {
+        let (positions, normals) = f32_positions_and_normals(mesh);
+        let mut attributes = BTreeMap::new();
+        attributes.insert(
+            Valid(json::mesh::Semantic::Positions),
+            self.positions(&positions),
+        );
+        attributes.insert(
+            Valid(json::mesh::Semantic::Normals),
+            self.vec3s(&normals, None),
+        );
+        let material = self.material();
+        self.triangle_primitive(
+            attributes,
+            mesh.triangle_indices(),
+            positions.len(),
+            Some(material),
+        )
+    }
+
+    /// A triangle primitive over the given attributes.
+    pub(super) fn triangle_primitive(
+        &mut self,
+        attributes: BTreeMap<
+            json::validation::Checked<json::mesh::Semantic>,
+            json::Index<json::Accessor>,
+        >,
+        indices: &[u32],
+        n_vertices: usize,
+        material: Option<json::Index<json::Material>>,
+    ) -> json::mesh::Primitive {
+        json::mesh::Primitive {
+            attributes,
+            extensions: None,
+            extras: None,
+            indices: Some(self.indices(indices, n_vertices)),
+            material,
+            mode: Valid(json::mesh::Mode::Triangles),
+            targets: None,
+        }
+    }
+
+    fn point_cloud_node(&mut self, index: usize, points: &PointCloud) -> json::Index<json::Node> {
+        let positions: Vec<Vec3> = points.positions.iter().map(|p| p.as_vec3()).collect();
+        let mut attributes = BTreeMap::new();
+        attributes.insert(
+            Valid(json::mesh::Semantic::Positions),
+            self.positions(&positions),
+        );
+        if let Some(colors) = &points.colors {
+            attributes.insert(Valid(json::mesh::Semantic::Colors(0)), self.floats(colors));
+        }
+        let primitive = json::mesh::Primitive {
+            attributes,
+            extensions: None,
+            extras: None,
+            indices: None,
+            material: None,
+            mode: Valid(json::mesh::Mode::Points),
+            targets: None,
+        };
+        let name = format!("points {index}");
+        let mesh = (!positions.is_empty()).then(|| self.mesh(name.clone(), vec![primitive]));
+        self.root.push(json::Node {
+            mesh,
+            name: Some(name),
             ..Default::default()
         })
     }
@@ -131,7 +204,7 @@ impl Writer {
         })
     }
 
-    fn mesh(
+    pub(super) fn mesh(
         &mut self,
         name: String,
         primitives: Vec<json::mesh::Primitive>,
@@ -145,12 +218,12 @@ impl Writer {
         })
     }
 
-    fn material(&mut self) -> json::Index<json::Material> {
+    pub(super) fn material(&mut self) -> json::Index<json::Material> {
         if let Some(material) = self.material {
             return material;
         }
         let material = self.root.push(json::Material {
-            name: Some(String::from("Sketchmesh clay")),
+            name: Some(String::from(CLAY_MATERIAL_NAME)),
             // Open surfaces are common while modeling; show their back faces too.
             double_sided: true,
             pbr_metallic_roughness: json::material::PbrMetallicRoughness {
@@ -166,13 +239,13 @@ impl Writer {
     }
 
     /// A POSITION accessor, with `min` and `max` of the written `f32` values.
-    fn positions(&mut self, values: &[Vec3]) -> json::Index<json::Accessor> {
+    pub(super) fn positions(&mut self, values: &[Vec3]) -> json::Index<json::Accessor> {
         let min = values.iter().fold(Vec3::INFINITY, |lo, &p| lo.min(p));
         let max = values.iter().fold(Vec3::NEG_INFINITY, |hi, &p| hi.max(p));
         self.vec3s(values, Some((min, max)))
     }
 
-    fn vec3s(
+    pub(super) fn vec3s(
         &mut self,
         values: &[Vec3],
         bounds: Option<(Vec3, Vec3)>,
@@ -183,7 +256,7 @@ impl Writer {
                 bytes.extend_from_slice(&component.to_le_bytes());
             }
         }
-        let view = self.view(&bytes, json::buffer::Target::ArrayBuffer);
+        let view = self.view(&bytes, Some(json::buffer::Target::ArrayBuffer));
         let (min, max) = match bounds {
             Some((min, max)) => (Some(f32_array(min)), Some(f32_array(max))),
             None => (None, None),
@@ -210,7 +283,7 @@ impl Writer {
             let bytes: Vec<u8> = indices.iter().flat_map(|&i| i.to_le_bytes()).collect();
             (bytes, json::accessor::ComponentType::U32)
         };
-        let view = self.view(&bytes, json::buffer::Target::ElementArrayBuffer);
+        let view = self.view(&bytes, Some(json::buffer::Target::ElementArrayBuffer));
         self.accessor(
             view,
             indices.len(),
@@ -246,11 +319,38 @@ impl Writer {
         })
     }
 
-    /// Appends `bytes` to the BIN chunk as a new buffer view, padded to 4 bytes.
-    fn view(
+    /// VEC2 or VEC4 float attributes (UVs, colours), without bounds.
+    pub(super) fn floats<const N: usize>(
+        &mut self,
+        values: &[[f32; N]],
+    ) -> json::Index<json::Accessor> {
+        let bytes: Vec<u8> = values
+            .iter()
+            .flatten()
+            .flat_map(|c| c.to_le_bytes())
+            .collect();
+        let view = self.view(&bytes, Some(json::buffer::Target::ArrayBuffer));
+        let type_ = if N == 2 {
+            json::accessor::Type::Vec2
+        } else {
+            json::accessor::Type::Vec4
+        };
+        self.accessor(
+            view,
+            values.len(),
+            json::accessor::ComponentType::F32,
+            type_,
+            None,
+            None,
+        )
+    }
+
+    /// Appends `bytes` to the BIN chunk as a new buffer view, padded to 4 bytes (images have
+    /// no target).
+    pub(super) fn view(
         &mut self,
         bytes: &[u8],
-        target: json::buffer::Target,
+        target: Option<json::buffer::Target>,
     ) -> json::Index<json::buffer::View> {
         let offset = self.bin.len();
         self.bin.extend_from_slice(bytes);
@@ -261,7 +361,7 @@ impl Writer {
             byte_offset: Some(USize64::from(offset)),
             byte_stride: None,
             name: None,
-            target: Some(Valid(target)),
+            target: target.map(Valid),
             extensions: None,
             extras: None,
         })
@@ -327,6 +427,18 @@ fn f32_array(v: Vec3) -> serde_json::Value {
     serde_json::Value::from(v.to_array().map(f64::from).to_vec())
 }
 
+/// Positions as written (`f32`) and unit normals computed from exactly those positions, so a
+/// file imported and exported again gets the same normals, bit for bit.
+pub(super) fn f32_positions_and_normals(mesh: &Mesh) -> (Vec<Vec3>, Vec<Vec3>) {
+    let positions: Vec<Vec3> = mesh.positions().iter().map(|p| p.as_vec3()).collect();
+    let mut rounded = mesh.clone();
+    for (p, q) in rounded.positions_mut().iter_mut().zip(&positions) {
+        *p = q.as_dvec3();
+    }
+    let normals = vertex_normals(&rounded).into_iter().map(unit_f32).collect();
+    (positions, normals)
+}
+
 /// A normal as a unit `f32` vector; a degenerate normal (a vertex whose faces have no area)
 /// becomes +Z, because glTF requires unit length.
 fn unit_f32(normal: DVec3) -> Vec3 {
@@ -387,11 +499,13 @@ mod tests {
             models: vec![Arc::new(Model {
                 mesh: primitives::icosphere(1.0, 1),
                 curves: vec![curve],
+                ..Model::default()
             })],
             sketches: vec![Arc::new(SketchCurve {
                 points: vec![DVec3::new(0.1, 0.2, 0.3), DVec3::new(0.4, 0.5, 0.6)],
                 pressures: vec![0.25, 0.75],
             })],
+            ..Document::default()
         }
     }
 
@@ -470,7 +584,11 @@ mod tests {
         assert_eq!(json["scenes"], serde_json::json!([{}]));
         assert!(json.get("buffers").is_none() && json.get("materials").is_none());
         // (gltf-json itself cannot read a scene without "nodes"; our reader can.)
-        assert!(crate::io::inspect_glb(&glb).is_ok());
+        let file = crate::io::ImportFile {
+            name: "empty.glb",
+            bytes: &glb,
+        };
+        assert!(crate::io::inspect_gltf(&file, &[]).is_ok());
     }
 
     #[test]
@@ -480,9 +598,9 @@ mod tests {
         let document = Document {
             models: vec![Arc::new(Model {
                 mesh,
-                curves: Vec::new(),
+                ..Model::default()
             })],
-            sketches: Vec::new(),
+            ..Document::default()
         };
         let (json, _) = unpack(&write_glb(&document));
         let primitive = &json["meshes"][0]["primitives"][0];

@@ -1,11 +1,14 @@
 //! `inspect_glb`: what a glTF file contains, as topology a modeler cares about.
 
-use std::collections::HashMap;
-
 use glam::DVec3;
 use serde::Serialize;
 
-use super::gltf_read::{GltfError, read_scene};
+use super::error::GltfError;
+use super::import::{ImportFile, ImportLimits};
+use super::parse::parse;
+use super::resources::load_buffers;
+use super::scene::read_nodes;
+use super::weld::weld;
 use crate::mesh::{Mesh, TriSoup};
 
 /// Summary of a glTF file's default scene (printed as JSON by `sketchmesh info`).
@@ -34,18 +37,36 @@ pub struct Info {
     pub sketches: usize,
 }
 
-/// Reads a .glb (or .gltf JSON with embedded data) and summarizes its default scene: all
-/// triangle primitives with node transforms applied, vertices welded by exact position.
+/// Reads a .glb or .gltf (with the files given alongside) and summarizes its default scene:
+/// all triangle primitives with node transforms applied, vertices welded by exact position.
 ///
 /// Errors on anything that is not readable glTF, and never panics on bad input.
-pub fn inspect_glb(bytes: &[u8]) -> Result<Info, GltfError> {
-    let contents = read_scene(bytes)?;
-    let soup = weld(&contents.soup);
+pub fn inspect_gltf(main: &ImportFile, others: &[ImportFile]) -> Result<Info, GltfError> {
+    let limits = ImportLimits::default();
+    let parsed = parse(main.bytes, &limits)?;
+    let buffers = load_buffers(&parsed.document, parsed.blob, others)?;
+    let nodes = read_nodes(&parsed.document, &buffers, &limits)?;
+    let mut soup = TriSoup::default();
+    for node in &nodes {
+        soup.append(&TriSoup {
+            positions: node.surface.positions.clone(),
+            triangles: node.surface.triangles.clone(),
+        });
+    }
+    let (positions, welded_of) = weld(&soup.positions);
+    soup.positions = positions;
+    for i in soup.triangles.iter_mut().flatten() {
+        *i = welded_of[*i as usize];
+    }
+    soup.remove_unreferenced_vertices();
     let mesh = (!soup.triangles.is_empty())
         .then(|| Mesh::from_soup(&soup).ok())
         .flatten();
     let bounds = bounding_box(&soup.positions);
-    let extras = contents.extras.iter().map(|extras| &extras.sketchmesh);
+    let extras = nodes
+        .iter()
+        .filter_map(|node| node.extras.as_ref())
+        .map(|extras| &extras.sketchmesh);
     Ok(Info {
         vertices: soup.positions.len(),
         triangles: soup.triangles.len(),
@@ -58,30 +79,6 @@ pub fn inspect_glb(bytes: &[u8]) -> Result<Info, GltfError> {
         control_curves: extras.clone().map(|e| e.curves.len()).sum(),
         sketches: extras.map(|e| e.sketches.len()).sum(),
     })
-}
-
-/// Merges vertices with bit-identical positions (−0 equals +0) and drops vertices no
-/// triangle uses. Triangle order and count are kept.
-fn weld(soup: &TriSoup) -> TriSoup {
-    let mut welded = TriSoup::default();
-    let mut index_of: HashMap<[u64; 3], u32> = HashMap::new();
-    let mut new_index = |p: DVec3, welded: &mut TriSoup| {
-        // Adding +0.0 turns −0.0 into +0.0 and leaves everything else alone.
-        let key = (p + DVec3::ZERO).to_array().map(f64::to_bits);
-        *index_of.entry(key).or_insert_with(|| {
-            welded.positions.push(p);
-            (welded.positions.len() - 1) as u32
-        })
-    };
-    for triangle in &soup.triangles {
-        let mut out = [0; 3];
-        for (slot, &i) in out.iter_mut().zip(triangle) {
-            let p = soup.positions[i as usize];
-            *slot = new_index(p, &mut welded);
-        }
-        welded.triangles.push(out);
-    }
-    welded
 }
 
 fn bounding_box(positions: &[DVec3]) -> Option<(DVec3, DVec3)> {
@@ -123,6 +120,16 @@ mod tests {
     use crate::mesh::primitives;
     use std::sync::Arc;
 
+    fn inspect(bytes: &[u8]) -> Result<Info, GltfError> {
+        inspect_gltf(
+            &ImportFile {
+                name: "test.glb",
+                bytes,
+            },
+            &[],
+        )
+    }
+
     fn document_with(mesh: Mesh) -> Document {
         Document {
             models: vec![Arc::new(Model {
@@ -133,18 +140,20 @@ mod tests {
                     closed: false,
                     sharp: true,
                 }],
+                ..Model::default()
             })],
             sketches: vec![Arc::new(SketchCurve {
                 points: vec![DVec3::ZERO, DVec3::ONE, DVec3::Z],
                 pressures: vec![0.5; 3],
             })],
+            ..Document::default()
         }
     }
 
     #[test]
     fn icosphere_round_trip() {
         let glb = write_glb(&document_with(primitives::icosphere(2.0, 2)));
-        let info = inspect_glb(&glb).unwrap();
+        let info = inspect(&glb).unwrap();
         assert_eq!(info.vertices, 162);
         assert_eq!(info.triangles, 320);
         assert_eq!(info.components, 1);
@@ -160,7 +169,7 @@ mod tests {
 
     #[test]
     fn torus_has_genus_one() {
-        let info = inspect_glb(&write_glb(&document_with(primitives::torus(
+        let info = inspect(&write_glb(&document_with(primitives::torus(
             2.0, 0.5, 24, 12,
         ))))
         .unwrap();
@@ -171,7 +180,7 @@ mod tests {
 
     #[test]
     fn empty_document() {
-        let info = inspect_glb(&write_glb(&Document::default())).unwrap();
+        let info = inspect(&write_glb(&Document::default())).unwrap();
         let json = serde_json::to_string(&info).unwrap();
         assert_eq!(
             json,
@@ -194,7 +203,7 @@ mod tests {
     #[test]
     fn gltf_json_with_data_uri_and_transform() {
         let info =
-            inspect_glb(triangle_gltf(r#"{"mesh":0,"translation":[0,0,5]}"#).as_bytes()).unwrap();
+            inspect(triangle_gltf(r#"{"mesh":0,"translation":[0,0,5]}"#).as_bytes()).unwrap();
         assert_eq!((info.vertices, info.triangles, info.components), (3, 1, 1));
         assert!(info.manifold && !info.closed);
         assert_eq!(info.genus, Some(0));
@@ -202,69 +211,52 @@ mod tests {
         assert_eq!(info.bbox_max, Some([1.0, 1.0, 5.0]));
         // Two instances of the mesh under one parent weld into nothing new.
         let twice = triangle_gltf(r#"{"children":[1,2]},{"mesh":0},{"mesh":0}"#);
-        let info = inspect_glb(twice.as_bytes()).unwrap();
+        let info = inspect(twice.as_bytes()).unwrap();
         assert_eq!((info.vertices, info.triangles), (3, 2));
         assert!(!info.manifold);
         assert_eq!(info.genus, None);
         // A cycle in the node graph is refused, not followed forever.
         let cycle = triangle_gltf(r#"{"children":[1]},{"children":[0]}"#);
         assert!(matches!(
-            inspect_glb(cycle.as_bytes()),
+            inspect(cycle.as_bytes()),
             Err(GltfError::NodeReachedTwice { .. })
         ));
         let external = triangle_gltf(r#"{"mesh":0}"#).replace(
             "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA",
             "triangle.bin",
         );
-        let error = inspect_glb(external.as_bytes()).unwrap_err();
+        let error = inspect(external.as_bytes()).unwrap_err();
         assert!(
-            error.to_string().contains("external file \"triangle.bin\""),
+            error
+                .to_string()
+                .contains("\"triangle.bin\", which was not given"),
             "{error}"
         );
-    }
-
-    #[test]
-    fn weld_merges_exact_positions_only() {
-        let soup = TriSoup {
-            positions: vec![
-                DVec3::ZERO,
-                DVec3::X,
-                DVec3::Y,
-                DVec3::new(-0.0, 0.0, 0.0),
-                DVec3::Y,
-                DVec3::new(1.0, 1.0, 1e-300),
-            ],
-            triangles: vec![[0, 1, 2], [3, 4, 5]],
-        };
-        let welded = weld(&soup);
-        assert_eq!(welded.positions.len(), 4);
-        assert_eq!(welded.triangles, vec![[0, 1, 2], [0, 2, 3]]);
-        assert_eq!(count_components(&welded), 1);
     }
 
     #[test]
     fn bad_input_is_an_error_not_a_panic() {
         let glb = write_glb(&document_with(primitives::icosphere(1.0, 1)));
         for length in (0..glb.len()).step_by(7) {
-            let _ = inspect_glb(&glb[..length]);
+            let _ = inspect(&glb[..length]);
         }
-        assert!(inspect_glb(&glb[..glb.len() - 4]).is_err());
+        assert!(inspect(&glb[..glb.len() - 4]).is_err());
         // Flip bytes all over the file, one at a time.
         let mut corrupted = glb.clone();
         for at in (0..glb.len()).step_by(5) {
             corrupted[at] ^= 0xA5;
-            let _ = inspect_glb(&corrupted);
+            let _ = inspect(&corrupted);
             corrupted[at] = glb[at];
         }
         // Headers claiming lengths that do not fit.
         let mut header = glb[..12].to_vec();
         header[8..12].copy_from_slice(&4u32.to_le_bytes());
-        assert!(inspect_glb(&header).is_err());
-        assert!(inspect_glb(b"glTF").is_err());
-        assert!(inspect_glb(b"").is_err());
-        assert!(inspect_glb(b"{}").is_err());
+        assert!(inspect(&header).is_err());
+        assert!(inspect(b"glTF").is_err());
+        assert!(inspect(b"").is_err());
+        assert!(inspect(b"{}").is_err());
         // An accessor past the end of its buffer.
         let short = triangle_gltf(r#"{"mesh":0}"#).replace(r#""count":3"#, r#""count":4"#);
-        assert!(inspect_glb(short.as_bytes()).is_err());
+        assert!(inspect(short.as_bytes()).is_err());
     }
 }

@@ -1,17 +1,27 @@
-//! glTF 2.0 binary (.glb) export and inspection.
+//! glTF 2.0 import, export and inspection.
 //!
-//! [`write_glb`] writes one node per model (positions, normals, indices, one PBR material)
-//! and one node holding every sketch as a line strip; control curves and sketches also go in
-//! node `extras` under `"sketchmesh"` (documented in `docs/gltf-extras.md`), so nothing the
-//! user drew is lost. [`inspect_glb`] reads a .glb (or .gltf JSON with embedded `data:` URIs)
-//! and reports the topology of its triangles.
+//! [`import_gltf`] reads .glb and .gltf files (with their .bin and images given alongside)
+//! into models, sketches and point clouds, defensively: every problem is a [`GltfError`]
+//! sentence, nothing panics and nothing is fetched. [`write_glb`] writes one node per model
+//! (positions, normals, indices, materials), sketches as line strips and point clouds as
+//! points; control curves and sketches also go in node `extras` under `"sketchmesh"`
+//! (documented in `docs/gltf-extras.md`), so nothing the user drew is lost and a file written
+//! here imports with its curves editable. [`inspect_gltf`] reports a file's topology.
 
+mod accessor;
+mod appearance_write;
+mod error;
 mod extras;
-mod gltf_read;
 mod gltf_write;
+mod import;
 mod info;
+mod parse;
+mod resources;
+mod scene;
+mod weld;
 
+pub use error::GltfError;
 pub use extras::EXTRAS_VERSION;
-pub use gltf_read::GltfError;
 pub use gltf_write::write_glb;
-pub use info::{Info, inspect_glb};
+pub use import::{ImportFile, ImportLimits, Imported, import_gltf};
+pub use info::{Info, inspect_gltf};

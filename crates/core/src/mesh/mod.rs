@@ -24,6 +24,7 @@ mod build;
 pub mod fixtures;
 mod halfedge;
 pub mod primitives;
+mod repair;
 mod soup;
 mod topology;
 mod validate;
@@ -32,6 +33,7 @@ use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
 pub use halfedge::OutgoingHalfedges;
+pub use repair::{RepairReport, Repaired, make_manifold};
 pub use soup::TriSoup;
 
 /// Marks a missing half-edge: the twin of a boundary half-edge.

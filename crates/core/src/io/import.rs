@@ -1,0 +1,407 @@
+//! Importing a glTF file as Sketchmesh models, sketches and point clouds.
+//!
+//! Each node instance with triangles becomes one model: its primitives are merged, vertices
+//! with the same position are welded (glTF splits them at UV and normal seams, editing needs
+//! them joined), and the result is made manifold ([`crate::mesh::make_manifold`]) when it is
+//! not already. What the file said about the look (normals, UVs, colours, materials) is kept
+//! per triangle corner in an [`Appearance`] so export can write it back. Line primitives
+//! become sketches and point primitives point clouds. Nodes written by Sketchmesh bring back
+//! their control curves (attached to the mesh vertices they run through) and their sketches
+//! with pen pressure, from the node extras.
+
+use std::borrow::Cow;
+use std::collections::HashMap;
+use std::sync::Arc;
+
+use glam::DVec3;
+
+use super::error::GltfError;
+use super::gltf_write::CLAY_MATERIAL_NAME;
+use super::parse::parse;
+use super::resources::{load_buffers, resolve};
+use super::scene::{NodeGeometry, Surface, read_nodes};
+use super::weld::weld;
+use crate::document::{
+    AlphaMode, Appearance, ControlCurve, Image, Material, Model, PointCloud, SketchCurve, Texture,
+    positions_hash,
+};
+use crate::mesh::{Mesh, TriSoup, VertexId, make_manifold};
+
+/// Pen pressure given to imported line primitives (the pressure of a mouse stroke).
+const LINE_PRESSURE: f64 = 0.5;
+
+/// Limits that protect the page from files too large to edit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ImportLimits {
+    /// Largest file accepted, in bytes.
+    pub max_file_bytes: usize,
+    /// Most vertices over all node instances.
+    pub max_vertices: usize,
+    /// Most triangles over all node instances.
+    pub max_triangles: usize,
+}
+
+impl Default for ImportLimits {
+    /// 512 MiB, 10 M vertices, 20 M triangles.
+    fn default() -> Self {
+        Self {
+            max_file_bytes: 512 << 20,
+            max_vertices: 10_000_000,
+            max_triangles: 20_000_000,
+        }
+    }
+}
+
+/// A file given to the importer: its name (for matching URIs) and bytes.
+#[derive(Clone, Copy, Debug)]
+pub struct ImportFile<'a> {
+    /// The file name, as picked or dropped.
+    pub name: &'a str,
+    /// Its contents.
+    pub bytes: &'a [u8],
+}
+
+/// What a file brought in.
+#[derive(Clone, Debug, Default)]
+pub struct Imported {
+    /// One model per node instance with triangles.
+    pub models: Vec<Model>,
+    /// Line primitives, and Sketchmesh sketches.
+    pub sketches: Vec<SketchCurve>,
+    /// Point primitives.
+    pub point_clouds: Vec<PointCloud>,
+    /// Things the user may want to know (repairs made, textures left behind), as sentences.
+    pub notes: Vec<String>,
+}
+
+/// Imports the default scene of `main` (.glb or .gltf); `others` are the files given with it
+/// (a .gltf's .bin and images). Never fetches anything and never panics on bad input.
+///
+/// Errors: anything unreadable, inconsistent or over `limits`, as one sentence.
+pub fn import_gltf(
+    main: &ImportFile,
+    others: &[ImportFile],
+    limits: &ImportLimits,
+) -> Result<Imported, GltfError> {
+    let parsed = parse(main.bytes, limits)?;
+    let buffers = load_buffers(&parsed.document, parsed.blob, others)?;
+    let nodes = read_nodes(&parsed.document, &buffers, limits)?;
+    let mut materials = MaterialCache::new(&parsed.document, &buffers, others);
+    let mut imported = Imported::default();
+    for node in nodes {
+        add_node(node, &mut materials, &mut imported)?;
+    }
+    imported.notes.append(&mut materials.notes);
+    if imported.models.is_empty()
+        && imported.sketches.is_empty()
+        && imported.point_clouds.is_empty()
+    {
+        return Err(GltfError::NothingToImport);
+    }
+    Ok(imported)
+}
+
+fn add_node(
+    node: NodeGeometry,
+    materials: &mut MaterialCache,
+    imported: &mut Imported,
+) -> Result<(), GltfError> {
+    let NodeGeometry {
+        name,
+        extras,
+        surface,
+        lines,
+        points,
+    } = node;
+    let extras = extras.map(|extras| extras.sketchmesh);
+    match &extras {
+        // A Sketchmesh node's line strips are its sketches, kept exactly in the extras.
+        Some(extras) if !extras.sketches.is_empty() => {
+            imported
+                .sketches
+                .extend(extras.sketches.iter().map(|sketch| SketchCurve {
+                    points: sketch.points.iter().map(|&p| DVec3::from(p)).collect(),
+                    pressures: sketch.pressures.clone(),
+                }));
+        }
+        _ => imported
+            .sketches
+            .extend(
+                lines
+                    .into_iter()
+                    .filter(|l| l.len() >= 2)
+                    .map(|points| SketchCurve {
+                        pressures: vec![LINE_PRESSURE; points.len()],
+                        points,
+                    }),
+            ),
+    }
+    imported
+        .point_clouds
+        .extend(points.into_iter().map(|points| PointCloud {
+            positions: points.positions,
+            colors: points.colors,
+        }));
+    if surface.triangles.is_empty() {
+        return Ok(());
+    }
+    let model_name = name.clone().unwrap_or_else(|| String::from("unnamed node"));
+    let is_sketchmesh = extras.is_some();
+    let (mesh, face_source) = weld_and_repair(&surface, &model_name, &mut imported.notes)?;
+    let curves = extras
+        .map(|extras| attach_curves(&mesh, &extras.curves))
+        .unwrap_or_default();
+    let is_clay = is_sketchmesh
+        && !surface.has_uvs
+        && !surface.has_colors
+        && surface.face_materials.iter().all(|&m| {
+            m.and_then(|m| materials.get(m))
+                .is_some_and(|m| m.name.as_deref() == Some(CLAY_MATERIAL_NAME))
+        });
+    let appearance =
+        (!is_clay).then(|| Arc::new(appearance(&mesh, &surface, &face_source, materials)));
+    imported.models.push(Model {
+        mesh,
+        curves,
+        name: if is_clay { None } else { name },
+        appearance,
+    });
+    Ok(())
+}
+
+/// Welds equal positions and makes the surface manifold. Returns the mesh and, per mesh
+/// face, the surface triangle it came from and whether it was flipped.
+fn weld_and_repair(
+    surface: &Surface,
+    name: &str,
+    notes: &mut Vec<String>,
+) -> Result<(Mesh, Vec<(u32, bool)>), GltfError> {
+    let (positions, welded_of) = weld(&surface.positions);
+    let welded = TriSoup {
+        positions,
+        triangles: surface
+            .triangles
+            .iter()
+            .map(|t| t.map(|i| welded_of[i as usize]))
+            .collect(),
+    };
+    let mut clean = welded.clone();
+    clean.remove_unreferenced_vertices();
+    if let Ok(mesh) = Mesh::from_soup(&clean) {
+        let identity = (0..mesh.n_faces() as u32).map(|f| (f, false)).collect();
+        return Ok((mesh, identity));
+    }
+    let repaired = make_manifold(&welded).map_err(|error| {
+        GltfError::Parse(format!(
+            "the triangles of {name} cannot be repaired: {error}"
+        ))
+    })?;
+    let report = repaired.report;
+    notes.push(format!(
+        "{name} was not a clean manifold surface: dropped {} degenerate and {} duplicate triangles, turned {} triangles, split {} vertices and detached {} triangles.",
+        report.degenerate, report.duplicates, report.flipped, report.split_vertices, report.detached
+    ));
+    Ok((repaired.mesh, repaired.face_source))
+}
+
+/// Control curves from the extras, attached to the mesh vertices they pass through when
+/// every point is a vertex (compared at the `f32` precision the file stores positions in).
+fn attach_curves(mesh: &Mesh, curves: &[super::extras::CurveExtras]) -> Vec<ControlCurve> {
+    let key = |p: DVec3| p.as_vec3().to_array().map(f32::to_bits);
+    let mut vertex_at: HashMap<[u32; 3], VertexId> = HashMap::with_capacity(mesh.n_vertices());
+    for v in mesh.vertices() {
+        vertex_at.entry(key(mesh.position(v))).or_insert(v);
+    }
+    curves
+        .iter()
+        .map(|curve| {
+            let points: Vec<DVec3> = curve.points.iter().map(|&p| DVec3::from(p)).collect();
+            let vertices: Option<Vec<VertexId>> = points
+                .iter()
+                .map(|&p| vertex_at.get(&key(p)).copied())
+                .collect();
+            ControlCurve {
+                points,
+                vertices: vertices.unwrap_or_default(),
+                closed: curve.closed,
+                sharp: curve.sharp,
+            }
+        })
+        .collect()
+}
+
+/// Per-corner attributes and materials of the mesh faces, from the surface they came from.
+fn appearance(
+    mesh: &Mesh,
+    surface: &Surface,
+    face_source: &[(u32, bool)],
+    materials: &mut MaterialCache,
+) -> Appearance {
+    // The surface vertex behind each corner of the mesh, in mesh corner order.
+    let corner_sources: Vec<u32> = face_source
+        .iter()
+        .flat_map(|&(source, flipped)| {
+            let t = surface.triangles[source as usize];
+            if flipped { [t[0], t[2], t[1]] } else { t }
+        })
+        .collect();
+    fn per_corner<T: Copy>(has: bool, values: &[T], corner_sources: &[u32]) -> Option<Vec<T>> {
+        has.then(|| corner_sources.iter().map(|&v| values[v as usize]).collect())
+    }
+    let mut model_materials = Vec::new();
+    let mut local_of: HashMap<usize, u32> = HashMap::new();
+    let face_materials = face_source
+        .iter()
+        .map(|&(source, _)| {
+            let gltf_index = surface.face_materials[source as usize]?;
+            let material = materials.get(gltf_index)?;
+            Some(*local_of.entry(gltf_index).or_insert_with(|| {
+                model_materials.push(material);
+                (model_materials.len() - 1) as u32
+            }))
+        })
+        .collect();
+    Appearance {
+        triangles: mesh.triangles().to_vec(),
+        positions_hash: positions_hash(mesh),
+        normals: per_corner(surface.has_normals, &surface.normals, &corner_sources),
+        uvs: per_corner(surface.has_uvs, &surface.uvs, &corner_sources),
+        colors: per_corner(surface.has_colors, &surface.colors, &corner_sources),
+        face_materials,
+        materials: model_materials,
+    }
+}
+
+/// glTF materials converted once each, with their images shared between models.
+struct MaterialCache<'d, 'a> {
+    document: &'d gltf::Document,
+    buffers: &'d [Cow<'a, [u8]>],
+    files: &'d [ImportFile<'a>],
+    converted: HashMap<usize, Option<Material>>,
+    images: HashMap<usize, Option<Arc<Image>>>,
+    notes: Vec<String>,
+}
+
+impl<'d, 'a> MaterialCache<'d, 'a> {
+    fn new(
+        document: &'d gltf::Document,
+        buffers: &'d [Cow<'a, [u8]>],
+        files: &'d [ImportFile<'a>],
+    ) -> Self {
+        Self {
+            document,
+            buffers,
+            files,
+            converted: HashMap::new(),
+            images: HashMap::new(),
+            notes: Vec::new(),
+        }
+    }
+
+    fn get(&mut self, index: usize) -> Option<Material> {
+        if let Some(material) = self.converted.get(&index) {
+            return material.clone();
+        }
+        let material = self
+            .document
+            .materials()
+            .nth(index)
+            .map(|material| self.convert(&material));
+        self.converted.insert(index, material.clone());
+        material
+    }
+
+    fn convert(&mut self, material: &gltf::Material) -> Material {
+        let pbr = material.pbr_metallic_roughness();
+        let base_color_texture = pbr
+            .base_color_texture()
+            .filter(|info| info.tex_coord() == 0)
+            .and_then(|info| self.texture(&info.texture()));
+        Material {
+            name: material.name().map(String::from),
+            base_color: pbr.base_color_factor(),
+            base_color_texture,
+            metallic: pbr.metallic_factor(),
+            roughness: pbr.roughness_factor(),
+            emissive: material.emissive_factor(),
+            double_sided: material.double_sided(),
+            alpha_mode: match material.alpha_mode() {
+                gltf::material::AlphaMode::Opaque => AlphaMode::Opaque,
+                gltf::material::AlphaMode::Mask => {
+                    AlphaMode::Mask(material.alpha_cutoff().unwrap_or(0.5))
+                }
+                gltf::material::AlphaMode::Blend => AlphaMode::Blend,
+            },
+        }
+    }
+
+    fn texture(&mut self, texture: &gltf::Texture) -> Option<Texture> {
+        let image = texture.source();
+        let index = image.index();
+        let image = match self.images.get(&index) {
+            Some(image) => image.clone(),
+            None => {
+                let loaded = self.image(&image);
+                self.images.insert(index, loaded.clone());
+                loaded
+            }
+        }?;
+        let sampler = texture.sampler();
+        Some(Texture {
+            image,
+            mag_filter: sampler.mag_filter().map(|f| f.as_gl_enum()),
+            min_filter: sampler.min_filter().map(|f| f.as_gl_enum()),
+            wrap: [sampler.wrap_s().as_gl_enum(), sampler.wrap_t().as_gl_enum()],
+        })
+    }
+
+    /// A PNG or JPEG image's bytes; other formats and missing files are left behind with a
+    /// note (the model still imports).
+    fn image(&mut self, image: &gltf::Image) -> Option<Arc<Image>> {
+        let index = image.index();
+        let (bytes, mime_type) = match image.source() {
+            gltf::image::Source::View { view, mime_type } => {
+                let buffer = self.buffers.get(view.buffer().index())?;
+                let end = view.offset().checked_add(view.length())?;
+                (
+                    buffer.get(view.offset()..end)?.to_vec(),
+                    mime_type.to_owned(),
+                )
+            }
+            gltf::image::Source::Uri { uri, mime_type } => {
+                match resolve(uri, "Image", index, self.files) {
+                    Ok(bytes) => (
+                        bytes.into_owned(),
+                        mime_type.map_or_else(|| mime_from_uri(uri), String::from),
+                    ),
+                    Err(error) => {
+                        self.notes
+                            .push(format!("{error} The model imports without that texture."));
+                        return None;
+                    }
+                }
+            }
+        };
+        if !matches!(mime_type.as_str(), "image/png" | "image/jpeg") {
+            self.notes.push(format!(
+                "Image {index} is {mime_type}, which Sketchmesh does not carry; the model imports without it."
+            ));
+            return None;
+        }
+        Some(Arc::new(Image { mime_type, bytes }))
+    }
+}
+
+fn mime_from_uri(uri: &str) -> String {
+    let lower = uri.to_ascii_lowercase();
+    if lower.ends_with(".png") || lower.starts_with("data:image/png") {
+        String::from("image/png")
+    } else if lower.ends_with(".jpg")
+        || lower.ends_with(".jpeg")
+        || lower.starts_with("data:image/jpeg")
+    {
+        String::from("image/jpeg")
+    } else {
+        String::from("an unknown image type")
+    }
+}

@@ -163,3 +163,76 @@ fn a_created_shape_replays_to_the_same_closed_genus_0_mesh() {
     assert_eq!(info["components"], 1, "{info}");
     assert_eq!(info["control_curves"], 1, "{info}");
 }
+
+#[test]
+fn convert_round_trips_and_sessions_import_files_beside_them() {
+    let dir = temp_dir("convert");
+    let session = dir.join("create.json");
+    std::fs::write(&session, create_session()).unwrap();
+    let created = dir.join("created.glb");
+    let output = sketchmesh(&[
+        "replay".as_ref(),
+        session.as_os_str(),
+        "-o".as_ref(),
+        created.as_os_str(),
+    ]);
+    assert_eq!(output.status.code(), Some(0));
+    let converted = dir.join("converted.glb");
+    let output = sketchmesh(&[
+        "convert".as_ref(),
+        created.as_os_str(),
+        "-o".as_ref(),
+        converted.as_os_str(),
+    ]);
+    assert_eq!(
+        output.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    assert_eq!(
+        std::fs::read(&converted).unwrap(),
+        std::fs::read(&created).unwrap(),
+        "importing a Sketchmesh file and exporting it again changes nothing"
+    );
+    // A session that imports that file by name, then undoes and redoes the import.
+    let import_session = dir.join("import.json");
+    std::fs::write(
+        &import_session,
+        r#"{"format":"sketchmesh-session","version":1,"ops":[
+{"op":"import","files":[{"name":"created.glb"}]},{"op":"undo"},{"op":"redo"}]}"#,
+    )
+    .unwrap();
+    let replayed = dir.join("replayed.glb");
+    let output = sketchmesh(&[
+        "replay".as_ref(),
+        import_session.as_os_str(),
+        "-o".as_ref(),
+        replayed.as_os_str(),
+    ]);
+    assert_eq!(
+        output.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    assert_eq!(
+        std::fs::read(&replayed).unwrap(),
+        std::fs::read(&created).unwrap()
+    );
+    // Refusals: exit 1 and one sentence naming the problem.
+    let broken = dir.join("broken.glb");
+    let mut bytes = std::fs::read(&created).unwrap();
+    bytes.truncate(bytes.len() / 2);
+    std::fs::write(&broken, bytes).unwrap();
+    let output = sketchmesh(&[
+        "convert".as_ref(),
+        broken.as_os_str(),
+        "-o".as_ref(),
+        dir.join("never.glb").as_os_str(),
+    ]);
+    assert_eq!(output.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains("not valid glTF"), "{stderr}");
+    assert!(!dir.join("never.glb").exists());
+}

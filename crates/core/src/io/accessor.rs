@@ -6,17 +6,16 @@
 //! counts of accessors without data (which could claim 2^31 zeros) are capped by the caller,
 //! so a hostile file cannot make the reader allocate more than its own size allows.
 
-use std::borrow::Cow;
-
 use gltf::accessor::DataType;
 
 use super::error::GltfError;
+use super::resources::Buffers;
 
 /// Reads an accessor as `N` components per element, converted to `f64` (normalized integers
 /// mapped to 0..1 or −1..1 as the spec says). `max_count` caps the element count.
 pub(crate) fn read_f64<const N: usize>(
     accessor: &gltf::Accessor,
-    buffers: &[Cow<[u8]>],
+    buffers: &Buffers,
     max_count: usize,
 ) -> Result<Vec<[f64; N]>, GltfError> {
     let index = accessor.index();
@@ -49,7 +48,7 @@ pub(crate) fn read_f64<const N: usize>(
 /// Reads a SCALAR accessor of unsigned integers (indices).
 pub(crate) fn read_u32(
     accessor: &gltf::Accessor,
-    buffers: &[Cow<[u8]>],
+    buffers: &Buffers,
     max_count: usize,
 ) -> Result<Vec<u32>, GltfError> {
     let index = accessor.index();
@@ -69,7 +68,7 @@ pub(crate) fn read_u32(
 /// Dense data (or zeros without a buffer view), then sparse substitution.
 fn read<T: Copy>(
     accessor: &gltf::Accessor,
-    buffers: &[Cow<[u8]>],
+    buffers: &Buffers,
     max_count: usize,
     element_size: usize,
     decode: impl Fn(&[u8]) -> T,
@@ -132,13 +131,15 @@ fn read<T: Copy>(
 fn view_bytes<'b>(
     view: &gltf::buffer::View,
     offset: usize,
-    buffers: &'b [Cow<[u8]>],
+    buffers: &'b Buffers,
     accessor: usize,
 ) -> Result<&'b [u8], GltfError> {
     let out_of_bounds = GltfError::AccessorOutOfBounds { index: accessor };
-    let buffer = buffers
-        .get(view.buffer().index())
-        .ok_or(out_of_bounds.clone())?;
+    let buffer = match buffers.get(view.buffer().index()) {
+        Some(Ok(buffer)) => buffer,
+        Some(Err(error)) => return Err(error.clone()),
+        None => return Err(out_of_bounds),
+    };
     let end = view
         .offset()
         .checked_add(view.length())

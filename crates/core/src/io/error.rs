@@ -48,14 +48,11 @@ pub enum GltfError {
         /// The buffer.
         index: usize,
     },
-    /// A buffer holds fewer bytes than its `byteLength` (or the GLB has no BIN chunk).
-    #[error("Buffer {index} is shorter than its declared length of {length} bytes.")]
-    BufferTooShort {
-        /// The buffer.
-        index: usize,
-        /// Its declared `byteLength`.
-        length: usize,
-    },
+    /// The file declares embedded binary data (a buffer without URI) but has none.
+    #[error(
+        "The file declares geometry data but contains none (a buffer without a URI outside a .glb)."
+    )]
+    NoBinaryData,
     /// An accessor or its buffer view reaches past the end of the data.
     #[error("Accessor {index} reads past the end of its buffer.")]
     AccessorOutOfBounds {

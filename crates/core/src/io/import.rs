@@ -9,7 +9,6 @@
 //! their control curves (attached to the mesh vertices they run through) and their sketches
 //! with pen pressure, from the node extras.
 
-use std::borrow::Cow;
 use std::collections::HashMap;
 use std::sync::Arc;
 
@@ -18,7 +17,7 @@ use glam::DVec3;
 use super::error::GltfError;
 use super::gltf_write::CLAY_MATERIAL_NAME;
 use super::parse::parse;
-use super::resources::{load_buffers, resolve};
+use super::resources::{Buffers, load_buffers, resolve};
 use super::scene::{NodeGeometry, Surface, read_nodes};
 use super::weld::weld;
 use crate::document::{
@@ -84,7 +83,7 @@ pub fn import_gltf(
     limits: &ImportLimits,
 ) -> Result<Imported, GltfError> {
     let parsed = parse(main.bytes, limits)?;
-    let buffers = load_buffers(&parsed.document, parsed.blob, others)?;
+    let buffers = load_buffers(&parsed.document, parsed.blob, others);
     let nodes = read_nodes(&parsed.document, &buffers, limits)?;
     let mut materials = MaterialCache::new(&parsed.document, &buffers, others);
     let mut imported = Imported::default();
@@ -275,7 +274,7 @@ fn appearance(
 /// glTF materials converted once each, with their images shared between models.
 struct MaterialCache<'d, 'a> {
     document: &'d gltf::Document,
-    buffers: &'d [Cow<'a, [u8]>],
+    buffers: &'d Buffers<'a>,
     files: &'d [ImportFile<'a>],
     converted: HashMap<usize, Option<Material>>,
     images: HashMap<usize, Option<Arc<Image>>>,
@@ -285,7 +284,7 @@ struct MaterialCache<'d, 'a> {
 impl<'d, 'a> MaterialCache<'d, 'a> {
     fn new(
         document: &'d gltf::Document,
-        buffers: &'d [Cow<'a, [u8]>],
+        buffers: &'d Buffers<'a>,
         files: &'d [ImportFile<'a>],
     ) -> Self {
         Self {
@@ -336,6 +335,16 @@ impl<'d, 'a> MaterialCache<'d, 'a> {
     }
 
     fn texture(&mut self, texture: &gltf::Texture) -> Option<Texture> {
+        // A texture whose image comes from an extension (WebP, KTX2) has no valid source.
+        let source = self
+            .document
+            .as_json()
+            .textures
+            .get(texture.index())?
+            .source;
+        if source.value() >= self.document.images().len() {
+            return None;
+        }
         let image = texture.source();
         let index = image.index();
         let image = match self.images.get(&index) {
@@ -361,7 +370,7 @@ impl<'d, 'a> MaterialCache<'d, 'a> {
         let index = image.index();
         let (bytes, mime_type) = match image.source() {
             gltf::image::Source::View { view, mime_type } => {
-                let buffer = self.buffers.get(view.buffer().index())?;
+                let buffer = self.buffers.get(view.buffer().index())?.as_ref().ok()?;
                 let end = view.offset().checked_add(view.length())?;
                 (
                     buffer.get(view.offset()..end)?.to_vec(),

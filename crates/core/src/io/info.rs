@@ -44,7 +44,7 @@ pub struct Info {
 pub fn inspect_gltf(main: &ImportFile, others: &[ImportFile]) -> Result<Info, GltfError> {
     let limits = ImportLimits::default();
     let parsed = parse(main.bytes, &limits)?;
-    let buffers = load_buffers(&parsed.document, parsed.blob, others)?;
+    let buffers = load_buffers(&parsed.document, parsed.blob, others);
     let nodes = read_nodes(&parsed.document, &buffers, &limits)?;
     let mut soup = TriSoup::default();
     for node in &nodes {

@@ -25,3 +25,4 @@ pub use extras::EXTRAS_VERSION;
 pub use gltf_write::write_glb;
 pub use import::{ImportFile, ImportLimits, Imported, import_gltf};
 pub use info::{Info, inspect_gltf};
+pub use resources::referenced_files;

@@ -45,16 +45,20 @@ pub(crate) fn parse<'a>(bytes: &'a [u8], limits: &ImportLimits) -> Result<Parsed
         });
     }
     let (json, blob) = if bytes.starts_with(b"glTF") {
-        check_glb_header(bytes)?;
-        let glb = gltf::binary::Glb::from_slice(bytes).map_err(parse_error)?;
-        (glb.json, glb.bin)
+        split_glb(bytes)?
     } else {
-        (Cow::Borrowed(bytes), None)
+        (bytes, None)
     };
-    let mut value: serde_json::Value = serde_json::from_slice(&json).map_err(parse_error)?;
+    let mut value: serde_json::Value = serde_json::from_slice(json).map_err(parse_error)?;
     check_version(&value)?;
     check_required_extensions(&mut value)?;
     supply_scene_nodes(&mut value);
+    integral_floats_to_integers(&mut value);
+    // Animations move nothing in a modeller, and gltf-json refuses valid ones (a channel
+    // target without a node), so they are dropped before deserializing.
+    if let Some(object) = value.as_object_mut() {
+        object.remove("animations");
+    }
     let root: gltf::json::Root = serde_json::from_value(value).map_err(parse_error)?;
     check_position_references(&root)?;
     validate(&root)?;
@@ -68,15 +72,15 @@ fn parse_error(error: impl std::fmt::Display) -> GltfError {
     GltfError::Parse(error.to_string())
 }
 
-/// Refuses GLB headers that would make the `gltf` crate subtract past zero, and versions
-/// other than 2 with a sentence of their own.
-fn check_glb_header(bytes: &[u8]) -> Result<(), GltfError> {
-    let word = |k: usize| {
+/// Splits a GLB into its JSON chunk and BIN chunk (if any), checking every length; unknown
+/// chunks and trailing bytes after the declared length are ignored, as the spec allows.
+fn split_glb(bytes: &[u8]) -> Result<(&[u8], Option<Cow<'_, [u8]>>), GltfError> {
+    let word = |at: usize| {
         bytes
-            .get(4 * k..4 * k + 4)
+            .get(at..at + 4)
             .map(|w| u32::from_le_bytes([w[0], w[1], w[2], w[3]]) as usize)
     };
-    let (Some(version), Some(length)) = (word(1), word(2)) else {
+    let (Some(version), Some(length)) = (word(4), word(8)) else {
         return Err(parse_error("the GLB header is truncated"));
     };
     if version != 2 {
@@ -88,7 +92,32 @@ fn check_glb_header(bytes: &[u8]) -> Result<(), GltfError> {
             bytes.len()
         )));
     }
-    Ok(())
+    let mut chunks = Vec::new();
+    let mut at = 12;
+    while at + 8 <= length {
+        let (Some(chunk_length), Some(kind)) = (word(at), bytes.get(at + 4..at + 8)) else {
+            break;
+        };
+        let start = at + 8;
+        let Some(data) = start
+            .checked_add(chunk_length)
+            .filter(|&end| end <= length)
+            .map(|end| &bytes[start..end])
+        else {
+            return Err(parse_error("a GLB chunk reaches past the end of the file"));
+        };
+        chunks.push((kind, data));
+        at = start + chunk_length.next_multiple_of(4);
+    }
+    let json = match chunks.first() {
+        Some((kind, data)) if *kind == b"JSON" => *data,
+        _ => return Err(parse_error("the GLB file does not start with a JSON chunk")),
+    };
+    let bin = chunks
+        .get(1)
+        .filter(|(kind, _)| *kind == b"BIN\0")
+        .map(|(_, data)| Cow::Borrowed(*data));
+    Ok((json, bin))
 }
 
 fn check_version(value: &serde_json::Value) -> Result<(), GltfError> {
@@ -165,12 +194,33 @@ fn check_position_references(root: &gltf::json::Root) -> Result<(), GltfError> {
     Ok(())
 }
 
+/// JSON writers that print `1.0` where glTF wants an integer are common; serde refuses them,
+/// so whole-number floats become integers (float fields read integers just as well).
+fn integral_floats_to_integers(value: &mut serde_json::Value) {
+    match value {
+        serde_json::Value::Number(number) => {
+            if let Some(float) = number.as_f64()
+                && !number.is_i64()
+                && !number.is_u64()
+                && float.fract() == 0.0
+                && float.abs() < 9.0e15
+            {
+                *number = serde_json::Number::from(float as i64);
+            }
+        }
+        serde_json::Value::Array(items) => items.iter_mut().for_each(integral_floats_to_integers),
+        serde_json::Value::Object(map) => map.values_mut().for_each(integral_floats_to_integers),
+        _ => {}
+    }
+}
+
 /// Runs the schema validation and refuses on the first error that matters.
 fn validate(root: &gltf::json::Root) -> Result<(), GltfError> {
+    let used_accessors = accessors_used_by_meshes(root);
     let mut first_error = None;
     root.validate(root, gltf::json::Path::new, &mut |path, error| {
         let path = path();
-        if first_error.is_none() && !is_tolerated(path.as_str(), &error) {
+        if first_error.is_none() && !is_tolerated(path.as_str(), &error, &used_accessors) {
             first_error = Some(format!("{} is {error}", path.as_str()));
         }
     });
@@ -180,8 +230,44 @@ fn validate(root: &gltf::json::Root) -> Result<(), GltfError> {
     }
 }
 
-/// Missing or malformed POSITION bounds: the reader computes its own.
-fn is_tolerated(path: &str, error: &ValidationError) -> bool {
-    matches!(error, ValidationError::Missing | ValidationError::Invalid)
-        && (path.ends_with("POSITION\"].min") || path.ends_with("POSITION\"].max"))
+/// Errors the importer can live with, because the wrappers it calls never touch them:
+/// missing or malformed POSITION bounds (the reader computes its own), accessors without a
+/// buffer view (all zeros, as the spec says), textures whose image comes from an extension
+/// (the texture is skipped), primitives without POSITION (skipped), and unknown types on accessors no mesh reads.
+fn is_tolerated(path: &str, error: &ValidationError, used_accessors: &[bool]) -> bool {
+    let is_missing_or_invalid =
+        matches!(error, ValidationError::Missing | ValidationError::Invalid);
+    let unused_accessor = path
+        .strip_prefix("accessors[")
+        .and_then(|rest| rest.split_once(']'))
+        .and_then(|(index, _)| index.parse::<usize>().ok())
+        .is_some_and(|index| !used_accessors.get(index).copied().unwrap_or(true));
+    is_missing_or_invalid
+        && (path.ends_with("POSITION\"].min")
+            || path.ends_with("POSITION\"].max")
+            || (path.starts_with("accessors[") && path.ends_with("].bufferView"))
+            || (path.starts_with("textures[") && path.ends_with("].source"))
+            || path.ends_with("attributes[\"POSITION\"]")
+            || unused_accessor)
+}
+
+/// Which accessors mesh primitives refer to (attributes, indices, morph targets).
+fn accessors_used_by_meshes(root: &gltf::json::Root) -> Vec<bool> {
+    let mut used = vec![false; root.accessors.len()];
+    let mut mark = |index: usize| {
+        if let Some(slot) = used.get_mut(index) {
+            *slot = true;
+        }
+    };
+    for primitive in root.meshes.iter().flat_map(|mesh| &mesh.primitives) {
+        primitive.attributes.values().for_each(|a| mark(a.value()));
+        primitive.indices.iter().for_each(|a| mark(a.value()));
+        for target in primitive.targets.iter().flatten() {
+            [&target.positions, &target.normals, &target.tangents]
+                .into_iter()
+                .flatten()
+                .for_each(|a| mark(a.value()));
+        }
+    }
+    used
 }

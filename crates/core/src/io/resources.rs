@@ -16,13 +16,14 @@ pub(crate) fn resolve<'a>(
     files: &[ImportFile<'a>],
 ) -> Result<Cow<'a, [u8]>, GltfError> {
     if let Some(rest) = uri.strip_prefix("data:") {
-        let Some((_, payload)) = rest.split_once(";base64,") else {
-            return Err(GltfError::BadDataUri { index });
+        return match (rest.split_once(";base64,"), rest.split_once(',')) {
+            (Some((_, payload)), _) => base64::engine::general_purpose::STANDARD
+                .decode(payload)
+                .map(Cow::Owned)
+                .map_err(|_| GltfError::BadDataUri { index }),
+            (None, Some((_, payload))) => Ok(Cow::Owned(percent_decode(payload))),
+            (None, None) => Err(GltfError::BadDataUri { index }),
         };
-        return base64::engine::general_purpose::STANDARD
-            .decode(payload)
-            .map(Cow::Owned)
-            .map_err(|_| GltfError::BadDataUri { index });
     }
     let error = |remote: bool| {
         let uri = uri.to_owned();
@@ -35,7 +36,7 @@ pub(crate) fn resolve<'a>(
     if uri.contains("://") || uri.starts_with('/') {
         return Err(error(true));
     }
-    let decoded = percent_decode(uri);
+    let decoded = String::from_utf8_lossy(&percent_decode(uri)).into_owned();
     let wanted = file_name(&decoded);
     files
         .iter()
@@ -44,28 +45,46 @@ pub(crate) fn resolve<'a>(
         .ok_or_else(|| error(false))
 }
 
-/// Loads every buffer, checking each against its declared length.
+/// The files a .gltf or .glb refers to (buffers and images outside the file, URIs decoded),
+/// so a command-line tool can read them from beside it. Unreadable input gives none.
+pub fn referenced_files(main: &[u8]) -> Vec<String> {
+    let json = if main.starts_with(b"glTF") {
+        match gltf::binary::Glb::from_slice(main) {
+            Ok(glb) => glb.json.into_owned(),
+            Err(_) => return Vec::new(),
+        }
+    } else {
+        main.to_vec()
+    };
+    let Ok(value) = serde_json::from_slice::<serde_json::Value>(&json) else {
+        return Vec::new();
+    };
+    ["buffers", "images"]
+        .iter()
+        .filter_map(|key| value.get(key)?.as_array())
+        .flatten()
+        .filter_map(|entry| entry.get("uri")?.as_str())
+        .filter(|uri| !uri.starts_with("data:") && !uri.contains("://"))
+        .map(|uri| String::from_utf8_lossy(&percent_decode(uri)).into_owned())
+        .collect()
+}
+
+/// Each buffer's bytes, or why they are not available. A buffer that cannot be loaded is an
+/// error only if an accessor that the import needs reads from it.
+pub(crate) type Buffers<'a> = Vec<Result<Cow<'a, [u8]>, GltfError>>;
+
+/// Loads every buffer (see [`Buffers`]).
 pub(crate) fn load_buffers<'a>(
     document: &gltf::Document,
     blob: Option<Cow<'a, [u8]>>,
     files: &[ImportFile<'a>],
-) -> Result<Vec<Cow<'a, [u8]>>, GltfError> {
+) -> Buffers<'a> {
     let mut blob = blob;
     document
         .buffers()
-        .map(|buffer| {
-            let index = buffer.index();
-            let data = match buffer.source() {
-                gltf::buffer::Source::Bin => blob.take().unwrap_or_default(),
-                gltf::buffer::Source::Uri(uri) => resolve(uri, "Buffer", index, files)?,
-            };
-            if data.len() < buffer.length() {
-                return Err(GltfError::BufferTooShort {
-                    index,
-                    length: buffer.length(),
-                });
-            }
-            Ok(data)
+        .map(|buffer| match buffer.source() {
+            gltf::buffer::Source::Bin => blob.take().ok_or(GltfError::NoBinaryData),
+            gltf::buffer::Source::Uri(uri) => resolve(uri, "Buffer", buffer.index(), files),
         })
         .collect()
 }
@@ -76,7 +95,7 @@ fn file_name(path: &str) -> &str {
 }
 
 /// Decodes `%XX` escapes (URIs in glTF are percent-encoded); invalid escapes stay as they are.
-fn percent_decode(uri: &str) -> String {
+fn percent_decode(uri: &str) -> Vec<u8> {
     let bytes = uri.as_bytes();
     let mut out = Vec::with_capacity(bytes.len());
     let mut k = 0;
@@ -96,7 +115,7 @@ fn percent_decode(uri: &str) -> String {
             }
         }
     }
-    String::from_utf8_lossy(&out).into_owned()
+    out
 }
 
 #[cfg(test)]
@@ -140,6 +159,14 @@ mod tests {
             resolve("data:text/plain,hello", "Buffer", 0, &files),
             Err(GltfError::BadDataUri { .. })
         ));
-        assert_eq!(percent_decode("a%2Fb%zz%4"), "a/b%zz%4");
+        assert_eq!(percent_decode("a%2Fb%zz%4"), b"a/b%zz%4");
+        assert_eq!(
+            resolve("data:application/gltf-buffer,%01A", "Buffer", 0, &[]).unwrap(),
+            &[1u8, b'A'][..]
+        );
+        let gltf =
+            br#"{"buffers":[{"uri":"a%20b.bin"},{"uri":"data:,x"}],"images":[{"uri":"t.png"}]}"#;
+        assert_eq!(referenced_files(gltf), vec!["a b.bin", "t.png"]);
+        assert!(referenced_files(b"glTF").is_empty());
     }
 }

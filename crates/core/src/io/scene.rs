@@ -4,8 +4,6 @@
 //! would produce (instancing can make a small file describe a huge scene), refuses scenes
 //! over the limits, and only then reads data.
 
-use std::borrow::Cow;
-
 use glam::{DMat3, DMat4, DVec3};
 use gltf::mesh::Mode;
 
@@ -13,6 +11,7 @@ use super::accessor::{read_f64, read_u32};
 use super::error::GltfError;
 use super::extras::NodeExtras;
 use super::import::ImportLimits;
+use super::resources::Buffers;
 
 /// The triangles of one node instance with their per-vertex attributes (before welding).
 #[derive(Clone, Debug, Default)]
@@ -62,7 +61,7 @@ pub(crate) struct NodeGeometry {
 /// Reads every node instance of the default scene (or the first scene).
 pub(crate) fn read_nodes(
     document: &gltf::Document,
-    buffers: &[Cow<[u8]>],
+    buffers: &Buffers,
     limits: &ImportLimits,
 ) -> Result<Vec<NodeGeometry>, GltfError> {
     let instances = node_instances(document)?;
@@ -133,7 +132,7 @@ fn check_limits(instances: &[(gltf::Node, DMat4)], limits: &ImportLimits) -> Res
 fn read_node(
     node: &gltf::Node,
     world_from_node: DMat4,
-    buffers: &[Cow<[u8]>],
+    buffers: &Buffers,
     limits: &ImportLimits,
 ) -> Result<NodeGeometry, GltfError> {
     let mut geometry = NodeGeometry {
@@ -266,7 +265,7 @@ fn assemble_triangles(mode: Mode, indices: &[u32], is_mirrored: bool) -> Vec<[u3
 fn append_surface(
     surface: &mut Surface,
     primitive: &gltf::Primitive,
-    buffers: &[Cow<[u8]>],
+    buffers: &Buffers,
     transform: &Transform,
     positions: Vec<DVec3>,
     triangles: Vec<[u32; 3]>,
@@ -332,7 +331,7 @@ fn append_surface(
 /// COLOR_0 as RGBA, if present (RGB gets alpha 1).
 fn read_colors(
     primitive: &gltf::Primitive,
-    buffers: &[Cow<[u8]>],
+    buffers: &Buffers,
     n: usize,
 ) -> Result<Option<Vec<[f32; 4]>>, GltfError> {
     let Some(colors) = primitive.get(&gltf::Semantic::Colors(0)) else {

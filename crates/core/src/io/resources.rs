@@ -156,7 +156,7 @@ mod tests {
             Err(GltfError::RemoteUri { .. })
         ));
         assert!(matches!(
-            resolve("data:text/plain,hello", "Buffer", 0, &files),
+            resolve("data:text/plain;base64,@@", "Buffer", 0, &files),
             Err(GltfError::BadDataUri { .. })
         ));
         assert_eq!(percent_decode("a%2Fb%zz%4"), b"a/b%zz%4");

@@ -1,5 +1,6 @@
-// Page timings for `cargo xtask bench`: time to interactive, and frame times while a pen stroke is
-// drawn, from requestAnimationFrame timestamps inside the page. Prints one JSON line at the end.
+// Page timings for `cargo xtask bench`: time to interactive and frame times while a pen stroke is
+// drawn (from requestAnimationFrame timestamps inside the page), and the import of a 1 M-triangle
+// .glb. Prints one JSON line at the end.
 //
 //   SKETCHMESH_URL=http://127.0.0.1:8080/ SKETCHMESH_GPU=webgl2 node tests/e2e/page-bench.mjs
 //
@@ -58,6 +59,67 @@ try {
   });
   const stats = await api(page, 'stats');
 
+  // Import of a 1 M-triangle .glb (a 708 x 708 grid, built in the page) through loadGlb: the
+  // parse, weld and manifold check, timed inside the page.
+  const imported = await page.evaluate((n) => {
+    const nv = (n + 1) * (n + 1);
+    const positions = new Float32Array(nv * 3);
+    for (let j = 0; j <= n; j++) {
+      for (let i = 0; i <= n; i++) {
+        const k = 3 * (j * (n + 1) + i);
+        positions[k] = i / n;
+        positions[k + 1] = j / n;
+        positions[k + 2] = 0.05 * Math.sin(10 * i / n) * Math.cos(7 * j / n);
+      }
+    }
+    const indices = new Uint32Array(6 * n * n);
+    let t = 0;
+    for (let j = 0; j < n; j++) {
+      for (let i = 0; i < n; i++) {
+        const a = j * (n + 1) + i;
+        indices.set([a, a + 1, a + n + 2, a, a + n + 2, a + n + 1], t);
+        t += 6;
+      }
+    }
+    const bin = new Uint8Array(positions.byteLength + indices.byteLength);
+    bin.set(new Uint8Array(positions.buffer), 0);
+    bin.set(new Uint8Array(indices.buffer), positions.byteLength);
+    const json = JSON.stringify({
+      asset: { version: '2.0' }, scene: 0, scenes: [{ nodes: [0] }], nodes: [{ mesh: 0 }],
+      meshes: [{ primitives: [{ attributes: { POSITION: 0 }, indices: 1 }] }],
+      accessors: [
+        { bufferView: 0, componentType: 5126, count: nv, type: 'VEC3', min: [0, 0, -0.05], max: [1, 1, 0.05] },
+        { bufferView: 1, componentType: 5125, count: indices.length, type: 'SCALAR' },
+      ],
+      bufferViews: [
+        { buffer: 0, byteLength: positions.byteLength },
+        { buffer: 0, byteOffset: positions.byteLength, byteLength: indices.byteLength },
+      ],
+      buffers: [{ byteLength: bin.byteLength }],
+    });
+    let jsonBytes = new TextEncoder().encode(json);
+    const padded = new Uint8Array(Math.ceil(jsonBytes.length / 4) * 4).fill(32);
+    padded.set(jsonBytes);
+    jsonBytes = padded;
+    const total = 12 + 8 + jsonBytes.length + 8 + bin.length;
+    const glb = new Uint8Array(total);
+    const view = new DataView(glb.buffer);
+    view.setUint32(0, 0x46546c67, true);
+    view.setUint32(4, 2, true);
+    view.setUint32(8, total, true);
+    view.setUint32(12, jsonBytes.length, true);
+    view.setUint32(16, 0x4e4f534a, true);
+    glb.set(jsonBytes, 20);
+    view.setUint32(20 + jsonBytes.length, bin.length, true);
+    view.setUint32(24 + jsonBytes.length, 0x004e4942, true);
+    glb.set(bin, 28 + jsonBytes.length);
+    window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
+    const started = performance.now();
+    window.sketchmesh.loadGlb(glb, 'grid.glb');
+    const ms = performance.now() - started;
+    return { ms, bytes: glb.length, triangles: window.sketchmesh.stats().triangles };
+  }, 708);
+
   const deltas = timing.frames.slice(1).map((t, i) => t - timing.frames[i]);
   const sorted = [...deltas].sort((a, b) => a - b);
   const quantile = (q) => (sorted.length ? sorted[Math.min(sorted.length - 1, Math.floor(q * sorted.length))] : null);
@@ -76,6 +138,7 @@ try {
       curves_after: stats.curves,
       frame_ms: { mean: round(mean), p50: round(quantile(0.5)), p95: round(quantile(0.95)), max: round(sorted.at(-1)) },
     },
+    import_glb: { triangles: imported.triangles, bytes: imported.bytes, ms: round(imported.ms) },
   };
   console.log(JSON.stringify(report));
 } finally {

@@ -9,8 +9,9 @@
 // case failed.
 
 import assert from 'node:assert/strict';
-import { writeFileSync } from 'node:fs';
-import { join } from 'node:path';
+import { existsSync, readFileSync, writeFileSync } from 'node:fs';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
 
 import {
   EXPECTED_BACKEND, OUT_DIR, api, camera, cameraDistance, changedFraction, distinctColours, frames,
@@ -260,7 +261,8 @@ test('replay(session()) reproduces the stats; malformed JSON throws and changes 
       return e.message;
     }
   });
-  assert.match(loadGlb ?? '', /not implemented/i, 'loadGlb() says it is not implemented yet');
+  assert.match(loadGlb ?? '', /^The file is not valid glTF: the GLB header is truncated\.$/, 'a truncated GLB is refused');
+  await expectStats(app.page, stats, 'a refused import leaves the document unchanged');
 });
 
 test('resize to 800x600: the canvas backing store follows and still renders', async () => {
@@ -340,6 +342,72 @@ test('a closed pen outline becomes a lit 3D shape with its blue curve; undo remo
     const reverted = await screenshot(fresh.page, out('create-undone.png'));
     assert.ok(imageChangedFraction(before, reverted) < 0.01, 'the view looks as before the shape');
     assert.deepEqual(fresh.errors, [], 'console errors while creating');
+  } finally {
+    await fresh.context.close();
+  }
+});
+
+test('a dropped .glb imports and is framed; Export downloads a valid file; bad files change nothing', async () => {
+  const spotPath = join(dirname(fileURLToPath(import.meta.url)), '..', '..', '..', 'shared', 'testdata', 'meshes', 'spot.glb');
+  assert.ok(existsSync(spotPath), `the shared test data is missing: ${spotPath} (this case needs Keenan Crane's spot.glb)`);
+  const spot = Array.from(readFileSync(spotPath));
+  const fresh = await openApp(browser, url, gpu);
+  try {
+    const before = await screenshot(fresh.page, out('import-before.png'));
+    const dropped = Date.now();
+    await fresh.page.evaluate(async (bytes) => {
+      const transfer = new DataTransfer();
+      transfer.items.add(new File([new Uint8Array(bytes)], 'spot.glb', { type: 'model/gltf-binary' }));
+      const canvas = document.getElementById('sketchmesh_canvas');
+      for (const type of ['dragenter', 'dragover', 'drop']) {
+        canvas.dispatchEvent(new DragEvent(type, { dataTransfer: transfer, bubbles: true, cancelable: true }));
+      }
+    }, spot);
+    const stats = await until(() => api(fresh.page, 'stats'), (s) => s.models === 1, 10_000);
+    console.log(`    imported ${stats.triangles} triangles ${Date.now() - dropped} ms after the drop (including polling)`);
+    assert.deepEqual(stats, { models: 1, vertices: 2930, triangles: 5856, curves: 0 }, 'spot.glb has 2,930 vertices and 5,856 triangles');
+    await frames(fresh.page, 4);
+    const shot = await screenshot(fresh.page, out('import.png'));
+    assert.ok(imageChangedFraction(before, shot) > 0.05, 'the imported cow is framed and visible');
+    const session = JSON.parse(await api(fresh.page, 'session'));
+    assert.equal(session.ops.at(-1).op, 'import');
+    assert.equal(session.ops.at(-1).files[0].name, 'spot.glb');
+
+    const [download] = await Promise.all([
+      fresh.page.waitForEvent('download', { timeout: 10_000 }),
+      fresh.page.keyboard.press('Control+s'),
+    ]);
+    assert.match(download.suggestedFilename(), /^sketchmesh-\d{8}-\d{4}\.glb$/);
+    await download.saveAs(out('download.glb'));
+    const downloaded = readFileSync(out('download.glb'));
+    // The toolbar's Export button (at its place in the 1280 px wide toolbar) does the same.
+    const [clicked] = await Promise.all([
+      fresh.page.waitForEvent('download', { timeout: 10_000 }),
+      fresh.page.mouse.click(196, 20),
+    ]);
+    await clicked.saveAs(out('download-button.glb'));
+    assert.ok(readFileSync(out('download-button.glb')).equals(downloaded), 'the Export button downloads the same file');
+    assert.ok(downloaded.subarray(0, 4).equals(Buffer.from('glTF')), 'the download is a .glb');
+
+    // The same bytes through the page API, into a fresh document, give the same model.
+    const reloaded = await fresh.page.evaluate((bytes) => {
+      window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
+      window.sketchmesh.loadGlb(new Uint8Array(bytes), 'again.glb');
+      return window.sketchmesh.stats();
+    }, Array.from(downloaded));
+    assert.deepEqual(reloaded, stats, 'an export imports back to the same model');
+
+    const refusal = await fresh.page.evaluate(() => {
+      try {
+        window.sketchmesh.loadGlb(new Uint8Array([103, 108, 84, 70, 2, 0, 0, 0, 9, 9, 9, 9]), 'broken.glb');
+        return null;
+      } catch (err) {
+        return String(err.message);
+      }
+    });
+    assert.match(refusal ?? '', /^The file is not valid glTF: .*\.$/, 'a broken file is refused with a sentence');
+    assert.deepEqual(await api(fresh.page, 'stats'), stats, 'and the document is unchanged');
+    assert.deepEqual(fresh.errors, [], 'console errors while importing');
   } finally {
     await fresh.context.close();
   }

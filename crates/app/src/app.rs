@@ -11,9 +11,10 @@ use std::sync::Arc;
 use eframe::egui_wgpu;
 use egui::{Key, KeyboardShortcut, Modifiers};
 use sketchmesh_core::curve::{StrokePoint, process_stroke};
-use sketchmesh_core::document::{Editor, Op, PendingCreate};
+use sketchmesh_core::document::{Editor, ImportInput, Op, PendingCreate};
 
 use crate::camera::OrbitCamera;
+use crate::files::{self, ImportQueue};
 use crate::input::PointerSample;
 use crate::input::router::{InputRouter, Routed};
 use crate::panels;
@@ -33,6 +34,8 @@ pub struct Shared {
     pub camera: OrbitCamera,
     /// The graphics backend in use, for the page API and the help panel.
     pub backend: String,
+    /// Files waiting to be imported.
+    pub imports: ImportQueue,
 }
 
 /// The Sketchmesh app.
@@ -54,6 +57,10 @@ pub struct SketchApp {
     show_help: bool,
     status: Option<(String, f64)>,
     has_renderer: bool,
+    /// An import announced this frame, parsed in the next one.
+    announced_import: Option<ImportInput>,
+    /// Frame the view once the geometry has been rebuilt (after an import).
+    frame_after_rebuild: bool,
 }
 
 impl SketchApp {
@@ -78,6 +85,7 @@ impl SketchApp {
                 editor: Editor::new(),
                 camera: OrbitCamera::default(),
                 backend,
+                imports: ImportQueue::default(),
             })),
             router: InputRouter::default(),
             tool: DrawTool::default(),
@@ -95,6 +103,8 @@ impl SketchApp {
             show_help: false,
             status: None,
             has_renderer,
+            announced_import: None,
+            frame_after_rebuild: false,
         }
     }
 
@@ -113,7 +123,7 @@ impl SketchApp {
             op => self.shared.borrow_mut().editor.apply(op),
         };
         if let Err(e) = result {
-            self.status = Some((e.to_string(), now + STATUS_SECONDS));
+            self.set_status(e.to_string(), now);
         }
     }
 
@@ -136,9 +146,67 @@ impl SketchApp {
         let Some(pending) = self.pending.take() else {
             return;
         };
-        if let Err(e) = self.shared.borrow_mut().editor.commit_create(pending) {
-            self.status = Some((e.to_string(), now + STATUS_SECONDS));
+        let result = self.shared.borrow_mut().editor.commit_create(pending);
+        if let Err(e) = result {
+            self.set_status(e.to_string(), now);
         }
+    }
+
+    fn set_status(&mut self, message: String, now: f64) {
+        self.status = Some((message, now + STATUS_SECONDS));
+    }
+
+    /// Imports files in two frames: this frame says what is being imported, the next one
+    /// parses (the page cannot repaint while the parser runs).
+    fn run_imports(&mut self, ctx: &egui::Context) {
+        let now = ctx.input(|i| i.time);
+        let dropped = ctx.input(|i| i.raw.dropped_files.clone());
+        let imports = self.shared.borrow().imports.clone();
+        files::accept_dropped(dropped, &imports, ctx);
+        if let Some(input) = self.announced_import.take() {
+            let name = input.files[0].name.clone();
+            self.status = None;
+            self.apply(Op::Import(input), now);
+            if self.status.is_none() {
+                self.set_status(format!("Imported {name}."), now);
+                self.frame_after_rebuild = true;
+            }
+        }
+        if let Some(input) = imports.borrow_mut().pop_front() {
+            let bytes: usize = input
+                .files
+                .iter()
+                .filter_map(|f| f.data.as_ref())
+                .map(|d| d.len())
+                .sum();
+            self.set_status(
+                format!(
+                    "Importing {} ({:.1} MB)…",
+                    input.files[0].name,
+                    bytes as f64 / 1e6
+                ),
+                now,
+            );
+            self.announced_import = Some(input);
+            ctx.request_repaint();
+        }
+    }
+
+    fn import_files(&mut self, ctx: &egui::Context) {
+        let imports = self.shared.borrow().imports.clone();
+        if let Err(message) = files::pick_files(&imports, ctx) {
+            self.set_status(message, ctx.input(|i| i.time));
+        }
+    }
+
+    fn export(&mut self, now: f64) {
+        self.commit_pending(now);
+        let bytes = sketchmesh_core::io::write_glb(self.shared.borrow().editor.document());
+        let message = match files::download(&bytes) {
+            Ok(name) => format!("Exported {name} ({:.1} MB).", bytes.len() as f64 / 1e6),
+            Err(error) => format!("Could not export: {error}"),
+        };
+        self.set_status(message, now);
     }
 
     fn shortcuts(&mut self, ctx: &egui::Context) {
@@ -156,6 +224,16 @@ impl SketchApp {
         }
         if ctx.input_mut(|i| i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::Z))) {
             self.apply(Op::Undo, now);
+        }
+        if ctx.input_mut(|i| i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::O))) {
+            self.import_files(ctx);
+        }
+        let export = ctx.input_mut(|i| {
+            i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::S))
+                || i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::E))
+        });
+        if export {
+            self.export(now);
         }
         let pressed = |key| ctx.input_mut(|i| i.consume_shortcut(&shortcut(Modifiers::NONE, key)));
         if pressed(Key::F) {
@@ -253,6 +331,9 @@ impl SketchApp {
                 generation,
             ));
             self.geometry_source = source;
+            if std::mem::take(&mut self.frame_after_rebuild) {
+                self.frame_all();
+            }
         }
         if self.has_renderer {
             let camera = self.shared.borrow().camera.camera();
@@ -305,6 +386,7 @@ impl eframe::App for SketchApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         let ctx = ui.ctx().clone();
         self.shortcuts(&ctx);
+        self.run_imports(&ctx);
         let now = ctx.input(|i| i.time);
         if self.status.as_ref().is_some_and(|(_, until)| *until < now) {
             self.status = None;
@@ -329,6 +411,8 @@ impl eframe::App for SketchApp {
             Some(panels::toolbar::Action::ResetView) => {
                 self.shared.borrow_mut().camera = OrbitCamera::default()
             }
+            Some(panels::toolbar::Action::Import) => self.import_files(&ctx),
+            Some(panels::toolbar::Action::Export) => self.export(now),
             None => {}
         }
         egui::CentralPanel::no_frame().show(ui, |ui| self.viewport_ui(ui));

@@ -6,6 +6,7 @@
 
 pub mod app;
 pub mod camera;
+pub mod files;
 pub mod input;
 pub mod panels;
 pub mod render;

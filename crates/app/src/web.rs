@@ -90,11 +90,22 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
         })
         .into_js_value(),
     )?;
+    let (s, c) = (shared.clone(), ctx.clone());
     set(
         "loadGlb",
-        Closure::<dyn Fn(JsValue) -> Result<(), JsValue>>::new(|_bytes: JsValue| {
-            Err(js_error("Importing glTF is not implemented yet."))
-        })
+        Closure::<dyn Fn(Uint8Array, Option<String>) -> Result<(), JsValue>>::new(
+            move |bytes: Uint8Array, name: Option<String>| {
+                let name = name.unwrap_or_else(|| String::from("loaded.glb"));
+                let input = crate::files::import_input(vec![(name, bytes.to_vec())])
+                    .ok_or_else(|| js_error("The file name must end in .glb or .gltf."))?;
+                let result = s
+                    .borrow_mut()
+                    .editor
+                    .apply(sketchmesh_core::document::Op::Import(input));
+                c.request_repaint();
+                result.map_err(|e| js_error(&e.to_string()))
+            },
+        )
         .into_js_value(),
     )?;
     for (name, op) in [

@@ -188,6 +188,8 @@ fn page_table(page: &Value, wasm_gzip_size: u64) -> String {
         ("frame time, median", ms("/stroke/frame_ms/p50")),
         ("frame time, 95th percentile", ms("/stroke/frame_ms/p95")),
         ("frame time, max", ms("/stroke/frame_ms/max")),
+        ("import .glb, triangles", text("/import_glb/triangles")),
+        ("import .glb, time in page", ms("/import_glb/ms")),
     ];
     for (name, value) in rows {
         // Writing to a String cannot fail.
@@ -255,7 +257,8 @@ mod tests {
     fn page_report_becomes_a_table() {
         let page: Value = serde_json::from_str(
             r#"{"backend":"WebGL2","time_to_interactive_ms":1834.26,
-                "stroke":{"frames":60,"frame_ms":{"mean":16.7,"p50":16.6,"p95":18.0,"max":33.4}}}"#,
+                "stroke":{"frames":60,"frame_ms":{"mean":16.7,"p50":16.6,"p95":18.0,"max":33.4}},
+                "import_glb":{"triangles":1002528,"ms":912.34}}"#,
         )
         .unwrap();
         let table = page_table(&page, 2_000_000);
@@ -269,5 +272,9 @@ mod tests {
             "{table}"
         );
         assert!(table.contains("| frames while stroking | 60 |"), "{table}");
+        assert!(
+            table.contains("| import .glb, time in page | 912.3 ms |"),
+            "{table}"
+        );
     }
 }

@@ -3,13 +3,15 @@
 //!
 //! `setup` installs what the other commands need, `build-web` builds the wasm page into `dist/`,
 //! `serve` ships it on <http://127.0.0.1:8080/>, `test` runs every check CI runs (`.ci/run`), and
-//! `bench` runs the criterion benches plus a page timing in headless Chromium.
+//! `bench` runs the criterion benches plus a page timing in headless Chromium, and `fuzz`
+//! fuzzes the glTF importer.
 
 // Tests may unwrap: a panic is a test failure with a location.
 #![cfg_attr(test, allow(clippy::unwrap_used))]
 
 mod bench;
 mod build;
+mod fuzz;
 mod serve;
 mod setup;
 mod test;
@@ -34,6 +36,7 @@ Commands:
   e2e                          Only the --release web build, the browser suite and glTF validation
   bench                        Criterion benches of sketchmesh-core plus page timings in Chromium;
                                summary in target/bench-summary.md
+  fuzz [--seconds N]           Fuzz the glTF importer with cargo-fuzz for N seconds (default 60)
 ";
 
 fn main() {
@@ -64,6 +67,7 @@ fn try_main() -> anyhow::Result<()> {
         ["test"] => test::test_command(&workspace),
         ["e2e"] => test::e2e_command(&workspace),
         ["bench"] => bench::bench_command(&workspace),
+        ["fuzz", options @ ..] => fuzz::fuzz_command(&workspace, options),
         other => bail!("unknown arguments {other:?}\n\n{HELP}"),
     }
 }

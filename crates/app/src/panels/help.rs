@@ -2,6 +2,8 @@
 
 /// Keyboard shortcuts, as shown.
 const SHORTCUTS: &[(&str, &str)] = &[
+    ("Ctrl+O", "Import glTF (or drop files on the page)"),
+    ("Ctrl+S, Ctrl+E", "Export .glb"),
     ("Ctrl+Z", "Undo"),
     ("Ctrl+Shift+Z, Ctrl+Y", "Redo"),
     ("F", "Frame everything"),

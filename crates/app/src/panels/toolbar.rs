@@ -1,4 +1,5 @@
-//! The toolbar: undo and redo for tablets (no keyboard there), view switches, status.
+//! The toolbar: import and export, undo and redo for tablets (no keyboard there), view
+//! switches, status.
 
 use sketchmesh_core::document::Editor;
 
@@ -15,6 +16,10 @@ pub enum Action {
     FrameAll,
     /// Back to the default view.
     ResetView,
+    /// Pick glTF files to import.
+    Import,
+    /// Download the document as .glb.
+    Export,
 }
 
 /// Minimum touch target, in points, so buttons are easy to hit with a finger.
@@ -43,6 +48,21 @@ pub fn toolbar_ui(
                 action = Some(a);
             }
         };
+        button(
+            ui,
+            true,
+            "Import",
+            "Import a .glb or .gltf file (Ctrl+O), or drop one on the page",
+            Action::Import,
+        );
+        button(
+            ui,
+            !editor.document().is_empty(),
+            "Export",
+            "Download everything as .glb (Ctrl+S)",
+            Action::Export,
+        );
+        ui.separator();
         button(ui, editor.can_undo(), "Undo", "Undo (Ctrl+Z)", Action::Undo);
         button(
             ui,

@@ -42,6 +42,10 @@ pub const SKETCH_COLOR: [f32; 4] = [0.95, 0.78, 0.32, 1.0];
 pub const SMOOTH_CURVE_COLOR: [f32; 4] = [0.25, 0.55, 1.0, 1.0];
 /// Colour of sharp control curves (red).
 pub const SHARP_CURVE_COLOR: [f32; 4] = [0.95, 0.25, 0.2, 1.0];
+/// Colour of imported points.
+pub const POINT_COLOR: [f32; 4] = [0.75, 0.85, 0.95, 1.0];
+/// Size of imported points in points.
+pub const POINT_SIZE: f32 = 3.0;
 /// Width of control curves in points.
 pub const CONTROL_CURVE_WIDTH: f32 = 3.0;
 
@@ -93,6 +97,9 @@ impl SceneGeometry {
                 .collect();
             scene.add_polyline(&sketch.points, &widths, false, SKETCH_COLOR);
         }
+        for cloud in &doc.point_clouds {
+            scene.add_points(&cloud.positions, cloud.colors.as_deref());
+        }
         scene
     }
 
@@ -135,6 +142,24 @@ impl SceneGeometry {
             });
         }
         for p in points {
+            self.grow_bounds(*p);
+        }
+    }
+
+    /// Points as zero-length segments, which the curve shader draws as squares.
+    fn add_points(&mut self, positions: &[DVec3], colors: Option<&[[f32; 4]]>) {
+        for (k, p) in positions.iter().enumerate() {
+            let p32 = p.as_vec3().to_array();
+            self.curves.push(CurveSegment {
+                p0: p32,
+                w0: POINT_SIZE,
+                p1: p32,
+                w1: POINT_SIZE,
+                color: colors
+                    .and_then(|c| c.get(k))
+                    .copied()
+                    .unwrap_or(POINT_COLOR),
+            });
             self.grow_bounds(*p);
         }
     }

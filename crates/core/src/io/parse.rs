@@ -72,9 +72,12 @@ fn parse_error(error: impl std::fmt::Display) -> GltfError {
     GltfError::Parse(error.to_string())
 }
 
+/// A GLB's JSON chunk and its BIN chunk, if any.
+type GlbChunks<'a> = (&'a [u8], Option<Cow<'a, [u8]>>);
+
 /// Splits a GLB into its JSON chunk and BIN chunk (if any), checking every length; unknown
 /// chunks and trailing bytes after the declared length are ignored, as the spec allows.
-fn split_glb(bytes: &[u8]) -> Result<(&[u8], Option<Cow<'_, [u8]>>), GltfError> {
+fn split_glb(bytes: &[u8]) -> Result<GlbChunks<'_>, GltfError> {
     let word = |at: usize| {
         bytes
             .get(at..at + 4)

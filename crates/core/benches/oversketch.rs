@@ -1,0 +1,64 @@
+//! Over-sketch handle matching: [`match_stroke`] of a 200-point stroke against 10
+//! silhouettes of 500 points each, once with every silhouette within reach of the stroke's
+//! ends (the worst case: nested wavy loops) and once with the silhouettes spread over the
+//! screen so that only one is near (the usual case). The whole over-sketch must stay under
+//! 40 ms natively, so matching should take a few ms at most. Results go in BENCHMARKS.md.
+//! Run with `cargo bench -p sketchmesh-core --bench oversketch -- --warm-up-time 1 --measurement-time 3`.
+
+use std::hint::black_box;
+
+use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use glam::DVec2;
+use sketchmesh_core::oversketch::{MatchParams, match_stroke};
+
+const SILHOUETTE_POINTS: usize = 500;
+
+/// A closed wavy loop of `SILHOUETTE_POINTS` points (first point repeated at the end).
+fn wavy_loop(center: DVec2, radius: f64, phase: f64) -> Vec<DVec2> {
+    (0..=SILHOUETTE_POINTS)
+        .map(|k| {
+            let t =
+                std::f64::consts::TAU * (k % SILHOUETTE_POINTS) as f64 / SILHOUETTE_POINTS as f64;
+            let r = radius * (1.0 + 0.05 * (5.0 * t + phase).sin());
+            center + r * DVec2::from_angle(t)
+        })
+        .collect()
+}
+
+/// A 200-point, slightly wobbly stroke over the right side of a loop about `center`.
+fn stroke(center: DVec2) -> Vec<DVec2> {
+    (0..200)
+        .map(|k| {
+            let t = (-35.0 + 70.0 * k as f64 / 199.0).to_radians();
+            let wobble = 0.5 * (0.9 * k as f64).sin();
+            center + (190.0 + wobble) * DVec2::from_angle(t)
+        })
+        .collect()
+}
+
+fn bench_match(c: &mut Criterion) {
+    let center = DVec2::new(640.0, 360.0);
+    let nested: Vec<Vec<DVec2>> = (0..10)
+        .map(|k| wavy_loop(center, 140.0 + 8.0 * k as f64, 0.3 * k as f64))
+        .collect();
+    let spread: Vec<Vec<DVec2>> = (0..10)
+        .map(|k| {
+            let cell = DVec2::new((k % 5) as f64 * 500.0, (k / 5) as f64 * 500.0);
+            wavy_loop(center + cell, 170.0, 0.3 * k as f64)
+        })
+        .collect();
+    let stroke = stroke(center);
+    let params = MatchParams::default();
+
+    let mut group = c.benchmark_group("oversketch_match");
+    for (name, silhouettes) in [("nested", &nested), ("spread", &spread)] {
+        let slices: Vec<&[DVec2]> = silhouettes.iter().map(Vec::as_slice).collect();
+        group.bench_with_input(BenchmarkId::from_parameter(name), &slices, |b, slices| {
+            b.iter(|| match_stroke(black_box(&stroke), black_box(slices), &params));
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench_match);
+criterion_main!(benches);

@@ -1,0 +1,302 @@
+//! Handle estimation: which part of which silhouette a stroke redraws (SilSketch, Nealen's
+//! dissertation §5.4.2).
+//!
+//! Every candidate handle is a silhouette segment whose ends lie near the stroke's ends. Its
+//! cost is `c = w_near Prox_near + w_far Prox_far + w_shape R` and its score
+//! `1 / (1 + c)²` (Eq. 5.7): the `Prox` terms are the smaller and larger distance between
+//! corresponding ends (px), `R` the turning-angle misfit of stroke and segment after the
+//! optimal rotation (rad², see [`super::turning`]). Like the thesis we sample the segment's
+//! start and length (`β`, `α`) instead of sweeping them exactly: ends every `h ≈ l / 40` px
+//! within `max_distance_px` of the stroke's ends, segment lengths within a factor
+//! `max_scale` of the stroke's length `l`, both directions of travel, and on closed
+//! silhouettes both ways round. Candidates are scored in order of their proximity cost,
+//! which bounds the total from below, so the shape term is evaluated only for the few that
+//! could still win. The winner's ends are then refined by a pattern search down to `h / 8`.
+//!
+//! The thesis leaves the weights and the sample density open; ours are in
+//! [`MatchParams::default`]. A limitation: a stroke redraws one contiguous piece of one
+//! silhouette; strokes that span two silhouettes match only one of them.
+
+use glam::DVec2;
+
+use super::polyline::{cumulative_lengths, simplify_stroke};
+use super::scoring::{Scorer, search};
+use super::track::Track;
+use super::turning::TurningSummary;
+
+/// Weights and limits of [`match_stroke`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MatchParams {
+    /// Both stroke ends must lie within this distance (px) of the handle's ends, or the
+    /// silhouette is not a candidate.
+    pub max_distance_px: f64,
+    /// A match whose farther end is more than this (px) from the stroke is not confident.
+    pub confident_distance_px: f64,
+    /// Cost per px of the nearer end's distance (`w₁` of Eq. 5.7).
+    pub weight_near: f64,
+    /// Cost per px of the farther end's distance (`w₂` of Eq. 5.7).
+    pub weight_far: f64,
+    /// Cost per rad² of turning-angle misfit (`w₃` of Eq. 5.7).
+    pub weight_shape: f64,
+    /// The handle's arclength lies within `[l / max_scale, l · max_scale]` for a stroke of
+    /// length `l`.
+    pub max_scale: f64,
+    /// A match is confident only if its score is at least this many times the score of the
+    /// best distinct alternative (another silhouette, or a non-overlapping handle).
+    pub min_score_ratio: f64,
+    /// Douglas–Peucker tolerance (px) of the silhouette delegates whose turning angles are
+    /// compared.
+    pub silhouette_tolerance_px: f64,
+}
+
+impl Default for MatchParams {
+    fn default() -> Self {
+        MatchParams {
+            max_distance_px: 80.0,
+            confident_distance_px: 40.0,
+            weight_near: 0.04,
+            weight_far: 0.06,
+            weight_shape: 4.0,
+            max_scale: 3.0,
+            min_score_ratio: 1.3,
+            silhouette_tolerance_px: 1.5,
+        }
+    }
+}
+
+/// The handle a stroke redraws.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Match {
+    /// Index of the silhouette in the slice given to [`match_stroke`].
+    pub silhouette: usize,
+    /// Fractional point index (`i + t` lies between points `i` and `i + 1`) of the handle
+    /// end that the stroke's first point redraws.
+    pub start: f64,
+    /// Fractional point index of the handle end that the stroke's last point redraws. The
+    /// handle runs from `start` to `end`, backwards along the silhouette when
+    /// `start > end`; on a closed silhouette indices past `n − 1` wrap round (see
+    /// [`super::handle_points`]).
+    pub end: f64,
+    /// `1 / (1 + cost)²` in `(0, 1]` (Eq. 5.7); 1 is a perfect fit at zero distance.
+    pub score: f64,
+    /// False when the match is a guess: its far end is more than
+    /// [`MatchParams::confident_distance_px`] away, or a distinct alternative scores within
+    /// [`MatchParams::min_score_ratio`] of it.
+    pub confident: bool,
+}
+
+/// A candidate handle: silhouette `track` on arclength `lo..hi` (unrolled; `hi > lo`),
+/// travelled from `hi` to `lo` by the stroke when `reversed`.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Segment {
+    pub(super) track: usize,
+    pub(super) lo: f64,
+    pub(super) hi: f64,
+    pub(super) reversed: bool,
+}
+
+/// The stroke as matching sees it.
+pub(super) struct Target {
+    pub(super) first: DVec2,
+    pub(super) last: DVec2,
+    pub(super) length: f64,
+    pub(super) forward: TurningSummary,
+    pub(super) backward: TurningSummary,
+}
+
+/// Finds the handle that `stroke` (screen px, in drawing order) redraws among
+/// `silhouettes` (screen polylines; a closed one repeats its first point at the end).
+///
+/// Returns `None` when no silhouette has a segment of fitting length with both ends within
+/// [`MatchParams::max_distance_px`] of the stroke's ends, or when the stroke has zero
+/// length. The stroke is simplified with [`simplify_stroke`] for the shape comparison.
+pub fn match_stroke(
+    stroke: &[DVec2],
+    silhouettes: &[&[DVec2]],
+    params: &MatchParams,
+) -> Option<Match> {
+    let target = Target::new(stroke)?;
+    let tracks: Vec<Option<Track>> = silhouettes.iter().map(|s| Track::new(s)).collect();
+    let spacing = (target.length / 40.0).clamp(1.0, 8.0);
+
+    let mut candidates = Vec::new();
+    let mut summaries = vec![None; tracks.len()];
+    for (index, track) in tracks.iter().enumerate() {
+        let Some(track) = track else { continue };
+        let count = candidates.len();
+        push_candidates(index, track, &target, spacing, params, &mut candidates);
+        if candidates.len() > count {
+            summaries[index] = Some(track.turning_summary(params.silhouette_tolerance_px));
+        }
+    }
+    candidates.sort_unstable_by(|a, b| a.1.total_cmp(&b.1));
+
+    let scorer = Scorer {
+        tracks: &tracks,
+        summaries: &summaries,
+        target: &target,
+        params,
+    };
+    let (best, second) = search(&candidates, &scorer)?;
+    let (best, best_cost) = scorer.refine(best, spacing);
+
+    let track = tracks[best.track].as_ref()?;
+    let (first, last) = scorer.ends(best);
+    let score = 1.0 / (1.0 + best_cost).powi(2);
+    let far = target
+        .first
+        .distance(track.position(first))
+        .max(target.last.distance(track.position(last)));
+    let distinct = second.is_none_or(|cost| score >= params.min_score_ratio / (1.0 + cost).powi(2));
+    Some(Match {
+        silhouette: best.track,
+        start: track.index(first),
+        end: track.index(last),
+        score,
+        confident: distinct && far <= params.confident_distance_px,
+    })
+}
+
+impl Target {
+    fn new(stroke: &[DVec2]) -> Option<Self> {
+        let simple = simplify_stroke(stroke);
+        let cumulative = cumulative_lengths(&simple);
+        let length = *cumulative.last()?;
+        if length <= 0.0 {
+            return None;
+        }
+        let reversed: Vec<DVec2> = simple.iter().rev().copied().collect();
+        let reversed_cumulative = cumulative_lengths(&reversed);
+        Some(Target {
+            first: *stroke.first()?,
+            last: *stroke.last()?,
+            length,
+            forward: TurningSummary::new(&simple, &cumulative).normalized(),
+            backward: TurningSummary::new(&reversed, &reversed_cumulative).normalized(),
+        })
+    }
+}
+
+/// Adds every sampled segment of `track` whose ends lie near the stroke's ends, with its
+/// proximity cost.
+fn push_candidates(
+    index: usize,
+    track: &Track,
+    target: &Target,
+    spacing: f64,
+    params: &MatchParams,
+    out: &mut Vec<(Segment, f64)>,
+) {
+    let samples = track.samples(spacing);
+    let near = |p: DVec2| -> Vec<(f64, f64)> {
+        samples
+            .iter()
+            .map(|&(s, q)| (s, q.distance(p)))
+            .filter(|&(_, d)| d <= params.max_distance_px)
+            .collect()
+    };
+    let (near_first, near_last) = (near(target.first), near(target.last));
+    let (shortest, longest) = (
+        target.length / params.max_scale,
+        target.length * params.max_scale,
+    );
+    let length = track.length();
+    for &(a, distance_a) in &near_first {
+        for &(b, distance_b) in &near_last {
+            let cost = proximity_cost(distance_a, distance_b, params);
+            // The stroke's first point at `a`, its last at `b`.
+            let mut push = |lo: f64, hi: f64, reversed: bool| {
+                if (shortest..=longest).contains(&(hi - lo)) {
+                    let segment = Segment {
+                        track: index,
+                        lo,
+                        hi,
+                        reversed,
+                    };
+                    out.push((segment, cost));
+                }
+            };
+            if track.is_closed() {
+                push(a, if b > a { b } else { b + length }, false);
+                push(b, if a > b { a } else { a + length }, true);
+            } else if a < b {
+                push(a, b, false);
+            } else if b < a {
+                push(b, a, true);
+            }
+        }
+    }
+}
+
+/// `w_near Prox_near + w_far Prox_far` for the distances of the two corresponding ends.
+pub(super) fn proximity_cost(distance_a: f64, distance_b: f64, params: &MatchParams) -> f64 {
+    params.weight_near * distance_a.min(distance_b) + params.weight_far * distance_a.max(distance_b)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// An open wavy curve, 2 px per segment.
+    fn wavy() -> Vec<DVec2> {
+        (0..=400)
+            .map(|i| {
+                let x = 2.0 * i as f64;
+                DVec2::new(x, 300.0 + 30.0 * (x / 60.0).sin())
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_copy_of_a_piece_matches_that_piece_exactly() {
+        let silhouette = wavy();
+        let piece = &silhouette[100..=300];
+        let params = MatchParams::default();
+        let found = match_stroke(piece, &[&silhouette], &params).expect("match");
+        assert!(found.confident && found.score > 0.9, "{found:?}");
+        assert!((found.start - 100.0).abs() < 0.25 && (found.end - 300.0).abs() < 0.25);
+        // Drawn backwards, the same piece with the ends swapped.
+        let reversed: Vec<DVec2> = piece.iter().rev().copied().collect();
+        let found = match_stroke(&reversed, &[&silhouette], &params).expect("match");
+        assert!(found.confident && found.score > 0.9, "{found:?}");
+        assert!((found.start - 300.0).abs() < 0.25 && (found.end - 100.0).abs() < 0.25);
+    }
+
+    #[test]
+    fn degenerate_input_matches_nothing() {
+        let silhouette = wavy();
+        let params = MatchParams::default();
+        let dot = [DVec2::new(200.0, 300.0); 5];
+        assert_eq!(match_stroke(&dot, &[&silhouette], &params), None);
+        assert_eq!(match_stroke(&[], &[&silhouette], &params), None);
+        assert_eq!(match_stroke(&silhouette[10..50], &[], &params), None);
+        // Silhouettes of one point or of zero length are skipped, not matched.
+        let point = [DVec2::new(40.0, 300.0)];
+        let found = match_stroke(&silhouette[10..50], &[&point, &dot, &silhouette], &params);
+        assert_eq!(found.map(|m| m.silhouette), Some(2));
+    }
+
+    #[test]
+    fn handles_far_longer_or_shorter_than_the_stroke_are_not_candidates() {
+        // A 60 px stroke over the top of a U with 200 px legs: every handle whose ends
+        // lie within 40 px of the stroke's ends is at least 380 px long, 6 times the stroke.
+        let u = [
+            DVec2::new(0.0, 0.0),
+            DVec2::new(0.0, 200.0),
+            DVec2::new(60.0, 200.0),
+            DVec2::new(60.0, 0.0),
+        ];
+        let stroke = [DVec2::new(0.0, -5.0), DVec2::new(60.0, -5.0)];
+        let params = MatchParams {
+            max_distance_px: 40.0,
+            ..MatchParams::default()
+        };
+        assert_eq!(match_stroke(&stroke, &[&u], &params), None);
+        let wide = MatchParams {
+            max_scale: 8.0,
+            ..params
+        };
+        let found = match_stroke(&stroke, &[&u], &wide).expect("match");
+        assert!(found.start < 1.0 && found.end > 2.0, "{found:?}");
+    }
+}

@@ -1,0 +1,28 @@
+//! Automatic over-sketching, the screen-space half: which silhouette piece a stroke
+//! redraws, where its points go, and which vertices may move.
+//!
+//! After SilSketch (Nealen, Sorkine, Alexa and Cohen-Or 2005; Nealen's dissertation ch. 5)
+//! and SEED (Bao and Howard 2014). The steps, each working on plain screen polylines
+//! (CSS px, y down), independent of how silhouettes are extracted:
+//! 1. [`simplify_stroke`]: resampling and Douglas–Peucker (§5.4).
+//! 2. [`match_stroke`]: the handle, by proximity of the ends and similarity of
+//!    turning-angle summaries under sampled scale and shift (§5.4.2, Eqs. 5.3–5.7), with a
+//!    `confident` flag instead of a silent guess; [`handle_points`] cuts it out.
+//! 3. [`map_to_stroke`] and [`blend_ends`]: targets by relative arclength, blended into the
+//!    untouched silhouette at the ends (SEED Eqs. 4–7); [`map_point_to_stroke`] for
+//!    points beside the handle (§5.4.3).
+//! 4. [`roi_from_displacements`]: the ROI grown within a union of spheres (§5.4.4).
+
+mod mapping;
+mod matching;
+mod polyline;
+mod roi;
+mod scoring;
+mod track;
+mod turning;
+
+pub use mapping::{BLEND_WIDTH, blend_ends, blend_weight, map_point_to_stroke, map_to_stroke};
+pub use matching::{Match, MatchParams, match_stroke};
+pub use polyline::{STROKE_SPACING_PX, STROKE_TOLERANCE_PX, simplify_stroke};
+pub use roi::{ROI_RADIUS_FACTOR, roi_from_displacements};
+pub use track::{CLOSED_TOLERANCE_PX, handle_points};

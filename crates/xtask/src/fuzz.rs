@@ -6,6 +6,7 @@
 //! are there, and grows in `target/fuzz-corpus/`; crashes land in `fuzz/artifacts/`.
 
 use std::path::Path;
+use std::process::Command;
 
 use anyhow::{Context as _, bail};
 
@@ -20,10 +21,10 @@ pub fn fuzz_command(workspace: &Workspace, options: &[&str]) -> anyhow::Result<(
             .with_context(|| format!("--seconds {n}: not a number"))?,
         other => bail!("unknown fuzz options {other:?}; use --seconds N"),
     };
-    if output_of(cargo().args(["+nightly", "--version"])).is_none() {
+    if output_of(nightly_cargo().arg("--version")).is_none() {
         bail!("cargo fuzz needs a nightly toolchain: run `rustup toolchain install nightly`");
     }
-    if output_of(cargo().args(["fuzz", "--version"])).is_none() {
+    if output_of(nightly_cargo().args(["fuzz", "--version"])).is_none() {
         run(
             "installing cargo-fuzz",
             cargo().args(["install", "cargo-fuzz", "--locked"]),
@@ -43,9 +44,9 @@ pub fn fuzz_command(workspace: &Workspace, options: &[&str]) -> anyhow::Result<(
     }
     run(
         "cargo fuzz",
-        cargo()
+        nightly_cargo()
             .current_dir(workspace.root.join("fuzz"))
-            .args(["+nightly", "fuzz", "run", "import_gltf"])
+            .args(["fuzz", "run", "import_gltf"])
             .arg(&corpus)
             .arg("--")
             .arg(format!("-max_total_time={seconds}"))
@@ -54,6 +55,13 @@ pub fn fuzz_command(workspace: &Workspace, options: &[&str]) -> anyhow::Result<(
     )?;
     println!("xtask: the importer survived {seconds} s of fuzzing");
     Ok(())
+}
+
+/// The nightly toolchain's cargo, through rustup (the cargo running the xtask is stable).
+fn nightly_cargo() -> Command {
+    let mut command = Command::new("rustup");
+    command.args(["run", "nightly", "cargo"]);
+    command
 }
 
 /// Copies every .gltf/.glb under `from` into `to`; returns how many.

@@ -153,7 +153,7 @@ fn add_node(
     let is_clay = is_sketchmesh
         && !surface.has_uvs
         && !surface.has_colors
-        && surface.face_materials.iter().all(|&m| {
+        && distinct(&surface.face_materials).into_iter().all(|m| {
             m.and_then(|m| materials.get(m))
                 .is_some_and(|m| m.name.as_deref() == Some(CLAY_MATERIAL_NAME))
         });
@@ -168,6 +168,17 @@ fn add_node(
     Ok(())
 }
 
+/// The distinct values of a list with few distinct values (per-face materials), in order.
+fn distinct<T: Copy + PartialEq>(values: &[T]) -> Vec<T> {
+    let mut seen = Vec::new();
+    for &value in values {
+        if seen.last() != Some(&value) && !seen.contains(&value) {
+            seen.push(value);
+        }
+    }
+    seen
+}
+
 /// Welds equal positions and makes the surface manifold. Returns the mesh and, per mesh
 /// face, the surface triangle it came from and whether it was flipped.
 fn weld_and_repair(
@@ -176,7 +187,7 @@ fn weld_and_repair(
     notes: &mut Vec<String>,
 ) -> Result<(Mesh, Vec<(u32, bool)>), GltfError> {
     let (positions, welded_of) = weld(&surface.positions);
-    let welded = TriSoup {
+    let mut welded = TriSoup {
         positions,
         triangles: surface
             .triangles
@@ -184,9 +195,8 @@ fn weld_and_repair(
             .map(|t| t.map(|i| welded_of[i as usize]))
             .collect(),
     };
-    let mut clean = welded.clone();
-    clean.remove_unreferenced_vertices();
-    if let Ok(mesh) = Mesh::from_soup(&clean) {
+    welded.remove_unreferenced_vertices();
+    if let Ok(mesh) = Mesh::from_soup(&welded) {
         let identity = (0..mesh.n_faces() as u32).map(|f| (f, false)).collect();
         return Ok((mesh, identity));
     }
@@ -206,6 +216,9 @@ fn weld_and_repair(
 /// Control curves from the extras, attached to the mesh vertices they pass through when
 /// every point is a vertex (compared at the `f32` precision the file stores positions in).
 fn attach_curves(mesh: &Mesh, curves: &[super::extras::CurveExtras]) -> Vec<ControlCurve> {
+    if curves.is_empty() {
+        return Vec::new();
+    }
     let key = |p: DVec3| p.as_vec3().to_array().map(f32::to_bits);
     let mut vertex_at: HashMap<[u32; 3], VertexId> = HashMap::with_capacity(mesh.n_vertices());
     for v in mesh.vertices() {

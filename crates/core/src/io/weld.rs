@@ -1,14 +1,15 @@
 //! Welding vertices with bit-identical positions.
 
-use std::collections::HashMap;
-
 use glam::DVec3;
+use rustc_hash::FxHashMap;
 
 /// Merges positions that are bit-identical (−0 equals +0), keeping first-appearance order.
 /// Returns the distinct positions and, for each input position, its index among them.
 pub(crate) fn weld(positions: &[DVec3]) -> (Vec<DVec3>, Vec<u32>) {
     let mut distinct = Vec::new();
-    let mut index_of: HashMap<[u64; 3], u32> = HashMap::with_capacity(positions.len());
+    // Keys are exact bit patterns from the file, so a fast non-cryptographic hash is fine.
+    let mut index_of: FxHashMap<[u64; 3], u32> =
+        FxHashMap::with_capacity_and_hasher(positions.len(), Default::default());
     let welded_of = positions
         .iter()
         .map(|&p| {

@@ -1,7 +1,8 @@
 //! Building a [`Mesh`] from a [`TriSoup`] and back.
 //!
-//! Twins are found by sorting the half-edges on their undirected edge key, which is
-//! deterministic (the same soup always gives the same error) and needs no hash map. Each group
+//! Twins are found by grouping the half-edges on their undirected edge (a counting sort on
+//! the lower vertex), which is deterministic (the same soup always gives the same error),
+//! linear and needs no hash map. Each group
 //! of equal keys is an edge: one half-edge is a boundary edge, two opposite ones are twins, two
 //! in the same direction mean flipped orientation, and three or more are a non-manifold edge.
 
@@ -88,39 +89,81 @@ pub(super) fn check_triangles(triangles: &[[u32; 3]], n_vertices: usize) -> Resu
 /// Pairs each half-edge with its opposite, or marks it [`INVALID`] on the boundary.
 fn match_twins(triangles: &[[u32; 3]]) -> Result<Vec<u32>, MeshError> {
     let corners = triangles.as_flattened();
-    let edge = |h: usize| -> (u32, u32) {
-        let next = if h % 3 == 2 { h - 2 } else { h + 1 };
-        (corners[h], corners[next])
-    };
-    let undirected_key = |h: usize| {
-        let (a, b) = edge(h);
-        (u64::from(a.min(b)) << 32) | u64::from(a.max(b))
-    };
-    let mut order: Vec<u32> = (0..corners.len() as u32).collect();
-    order.sort_unstable_by_key(|&h| (undirected_key(h as usize), h));
-
     let mut twin = vec![INVALID; corners.len()];
-    for group in order.chunk_by(|&g, &h| undirected_key(g as usize) == undirected_key(h as usize)) {
+    let mut error = None;
+    for_each_edge(triangles, |group| {
+        if error.is_some() {
+            return;
+        }
         match *group {
             [_] => {}
             [g, h] => {
-                let (a, b) = edge(g as usize);
-                if edge(h as usize) != (b, a) {
-                    return Err(MeshError::InconsistentOrientation { a, b });
+                let (a, b) = half_edge(corners, g as usize);
+                if half_edge(corners, h as usize) != (b, a) {
+                    error = Some(MeshError::InconsistentOrientation { a, b });
                 }
                 twin[g as usize] = h;
                 twin[h as usize] = g;
             }
             _ => {
-                let (a, b) = edge(group[0] as usize);
-                return Err(MeshError::NonManifoldEdge {
+                let (a, b) = half_edge(corners, group[0] as usize);
+                error = Some(MeshError::NonManifoldEdge {
                     a: a.min(b),
                     b: a.max(b),
                 });
             }
         }
+    });
+    match error {
+        Some(error) => Err(error),
+        None => Ok(twin),
     }
-    Ok(twin)
+}
+
+/// Tail and head of half-edge `h`.
+pub(super) fn half_edge(corners: &[u32], h: usize) -> (u32, u32) {
+    let next = if h % 3 == 2 { h - 2 } else { h + 1 };
+    (corners[h], corners[next])
+}
+
+/// Calls `f` with each group of half-edges that share an undirected edge, in order of the
+/// edge's (lower, higher) vertex and, within a group, of half-edge index: deterministic, so
+/// the same soup always reports the same problem first.
+///
+/// Half-edges are bucketed by their lower vertex with a counting sort (linear time, no hash
+/// map), and each small bucket is sorted by the higher vertex.
+pub(super) fn for_each_edge(triangles: &[[u32; 3]], mut f: impl FnMut(&[u32])) {
+    let corners = triangles.as_flattened();
+    let n_vertices = corners.iter().max().map_or(0, |&v| v as usize + 1);
+    let lower = |h: usize| {
+        let (a, b) = half_edge(corners, h);
+        a.min(b)
+    };
+    let higher = |h: usize| {
+        let (a, b) = half_edge(corners, h);
+        a.max(b)
+    };
+    let mut start = vec![0u32; n_vertices + 1];
+    for h in 0..corners.len() {
+        start[lower(h) as usize + 1] += 1;
+    }
+    for v in 0..n_vertices {
+        start[v + 1] += start[v];
+    }
+    let mut fill = start.clone();
+    let mut bucketed = vec![0u32; corners.len()];
+    for h in 0..corners.len() {
+        let slot = &mut fill[lower(h) as usize];
+        bucketed[*slot as usize] = h as u32;
+        *slot += 1;
+    }
+    for v in 0..n_vertices {
+        let bucket = &mut bucketed[start[v] as usize..start[v + 1] as usize];
+        bucket.sort_unstable_by_key(|&h| (higher(h as usize), h));
+        for group in bucket.chunk_by(|&g, &h| higher(g as usize) == higher(h as usize)) {
+            f(group);
+        }
+    }
 }
 
 impl From<&Mesh> for TriSoup {

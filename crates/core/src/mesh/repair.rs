@@ -16,6 +16,7 @@
 
 use std::collections::{HashSet, VecDeque};
 
+use super::build::for_each_edge;
 use super::{Mesh, MeshError, TriSoup};
 
 const NONE: u32 = u32::MAX;
@@ -157,21 +158,13 @@ fn clean_faces(soup: &TriSoup, report: &mut RepairReport) -> Result<Vec<u32>, Me
 /// For each corner (half-edge `3 f + k`, from corner `k` to `k + 1`), the other half-edge on
 /// its edge when exactly two share the edge, else [`NONE`].
 fn pair_edges(triangles: &[[u32; 3]]) -> Vec<u32> {
-    let corners = triangles.as_flattened();
-    let key = |h: usize| {
-        let next = if h % 3 == 2 { h - 2 } else { h + 1 };
-        let (a, b) = (corners[h], corners[next]);
-        (u64::from(a.min(b)) << 32) | u64::from(a.max(b))
-    };
-    let mut order: Vec<u32> = (0..corners.len() as u32).collect();
-    order.sort_unstable_by_key(|&h| (key(h as usize), h));
-    let mut partner = vec![NONE; corners.len()];
-    for group in order.chunk_by(|&g, &h| key(g as usize) == key(h as usize)) {
+    let mut partner = vec![NONE; 3 * triangles.len()];
+    for_each_edge(triangles, |group| {
         if let [g, h] = *group {
             partner[g as usize] = h;
             partner[h as usize] = g;
         }
-    }
+    });
     partner
 }
 

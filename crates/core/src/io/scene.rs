@@ -20,15 +20,15 @@ pub(crate) struct Surface {
     pub(crate) positions: Vec<DVec3>,
     /// Triangles, wound so that mirroring transforms keep them facing out.
     pub(crate) triangles: Vec<[u32; 3]>,
-    /// World-space unit normals, one per vertex; meaningful only if `has_normals`.
+    /// World-space unit normals, one per vertex while `has_normals`; empty otherwise.
     pub(crate) normals: Vec<[f32; 3]>,
     /// Whether every triangle primitive had normals.
     pub(crate) has_normals: bool,
-    /// TEXCOORD_0 per vertex (zeros where a primitive had none).
+    /// TEXCOORD_0 per vertex (zeros where a primitive had none) once any primitive has it.
     pub(crate) uvs: Vec<[f32; 2]>,
     /// Whether any primitive had TEXCOORD_0.
     pub(crate) has_uvs: bool,
-    /// COLOR_0 per vertex as RGBA (white where a primitive had none).
+    /// COLOR_0 per vertex as RGBA (white where a primitive had none) once any has it.
     pub(crate) colors: Vec<[f32; 4]>,
     /// Whether any primitive had COLOR_0.
     pub(crate) has_colors: bool,
@@ -271,52 +271,53 @@ fn append_surface(
     triangles: Vec<[u32; 3]>,
 ) -> Result<(), GltfError> {
     let n = positions.len();
-    let offset = surface.positions.len() as u32;
+    let before = surface.positions.len();
+    let offset = before as u32;
     let attribute = |semantic: gltf::Semantic| primitive.get(&semantic);
+    // Normals count only if every primitive has them; drop them at the first that has none.
     match attribute(gltf::Semantic::Normals) {
-        Some(normals) => {
-            surface
-                .normals
-                .extend(read_f64::<3>(&normals, buffers, n)?.into_iter().map(|n| {
-                    let n = transform.normal_matrix * DVec3::from(n);
-                    n.normalize_or_zero().as_vec3().to_array()
-                }))
+        Some(normals) if surface.has_normals => {
+            let normals = read_f64::<3>(&normals, buffers, n)?;
+            check_count(normals.len(), n, "NORMAL")?;
+            surface.normals.extend(normals.into_iter().map(|n| {
+                let n = transform.normal_matrix * DVec3::from(n);
+                n.normalize_or_zero().as_vec3().to_array()
+            }));
         }
+        Some(_) => {}
         None => {
             surface.has_normals = false;
-            surface.normals.resize(surface.normals.len() + n, [0.0; 3]);
+            surface.normals = Vec::new();
         }
     }
-    match attribute(gltf::Semantic::TexCoords(0)) {
-        Some(uvs) => {
-            surface.has_uvs = true;
-            surface.uvs.extend(
-                read_f64::<2>(&uvs, buffers, n)?
-                    .into_iter()
-                    .map(|uv| uv.map(|c| c as f32)),
-            );
-        }
-        None => surface.uvs.resize(surface.uvs.len() + n, [0.0; 2]),
-    }
-    match read_colors(primitive, buffers, n)? {
-        Some(colors) => {
-            surface.has_colors = true;
-            surface.colors.extend(colors);
-        }
-        None => surface.colors.resize(surface.colors.len() + n, [1.0; 4]),
-    }
-    // Attribute accessors may be shorter than POSITION only in broken files.
-    for (length, name) in [
-        (surface.normals.len(), "NORMAL"),
-        (surface.uvs.len(), "TEXCOORD_0"),
-        (surface.colors.len(), "COLOR_0"),
-    ] {
-        if length != surface.positions.len() + n {
-            return Err(GltfError::Parse(format!(
-                "a primitive's {name} count differs from its POSITION count"
-            )));
-        }
-    }
+    let uvs = match attribute(gltf::Semantic::TexCoords(0)) {
+        Some(uvs) => Some(
+            read_f64::<2>(&uvs, buffers, n)?
+                .into_iter()
+                .map(|uv| uv.map(|c| c as f32))
+                .collect(),
+        ),
+        None => None,
+    };
+    append_optional(
+        &mut surface.uvs,
+        &mut surface.has_uvs,
+        uvs,
+        before,
+        n,
+        [0.0; 2],
+        "TEXCOORD_0",
+    )?;
+    let colors = read_colors(primitive, buffers, n)?;
+    append_optional(
+        &mut surface.colors,
+        &mut surface.has_colors,
+        colors,
+        before,
+        n,
+        [1.0; 4],
+        "COLOR_0",
+    )?;
     surface.positions.extend(positions);
     let material = primitive.material().index();
     surface
@@ -326,6 +327,41 @@ fn append_surface(
         .triangles
         .extend(triangles.into_iter().map(|t| t.map(|i| i + offset)));
     Ok(())
+}
+
+/// Appends a primitive's values of an attribute that some primitives may lack: nothing is
+/// stored until one has it, then earlier and later vertices without it get `default`.
+fn append_optional<T: Copy>(
+    values: &mut Vec<T>,
+    has: &mut bool,
+    read: Option<Vec<T>>,
+    before: usize,
+    n: usize,
+    default: T,
+    name: &str,
+) -> Result<(), GltfError> {
+    match read {
+        Some(read) => {
+            check_count(read.len(), n, name)?;
+            values.resize(before, default);
+            values.extend(read);
+            *has = true;
+        }
+        None if *has => values.resize(before + n, default),
+        None => {}
+    }
+    Ok(())
+}
+
+/// Attribute accessors may differ from POSITION in length only in broken files.
+fn check_count(count: usize, n: usize, name: &str) -> Result<(), GltfError> {
+    if count == n {
+        Ok(())
+    } else {
+        Err(GltfError::Parse(format!(
+            "a primitive's {name} count differs from its POSITION count"
+        )))
+    }
 }
 
 /// COLOR_0 as RGBA, if present (RGB gets alpha 1).

@@ -12,4 +12,5 @@ pub mod fibermesh;
 pub mod geometry;
 pub mod io;
 pub mod mesh;
+pub mod silhouette;
 pub mod solve;

@@ -13,4 +13,5 @@ pub mod geometry;
 pub mod io;
 pub mod mesh;
 pub mod oversketch;
+pub mod silhouette;
 pub mod solve;

@@ -7,6 +7,7 @@
 //! a convex surface `δ` points outward and `M⁻¹ L x = 2 H n` with `H > 0` (Meyer et al. 2003).
 
 mod area;
+mod bvh;
 mod laplacian;
 mod normals;
 mod raycast;
@@ -14,6 +15,7 @@ mod raycast;
 pub use area::{
     enclosed_volume, face_area, mass_matrix, total_area, vertex_areas, vertex_areas_barycentric,
 };
+pub use bvh::Bvh;
 pub use laplacian::{cotan_laplacian, mean_curvature, mean_curvature_normals, uniform_laplacian};
 pub use normals::{face_normal, face_normals, vertex_normals, vertex_normals_into};
 pub use raycast::{RayHit, raycast};

@@ -2,8 +2,8 @@
 //!
 //! A linear scan over the triangles with the Möller–Trumbore test. It runs once per
 //! gesture (to decide whether a stroke starts on a model), not per frame, so a scan of a
-//! few hundred thousand triangles is cheap enough; a BVH belongs here when silhouette
-//! picking needs many rays per frame.
+//! few hundred thousand triangles is cheap enough; [`Bvh`](super::Bvh) answers the many rays
+//! per frame of silhouette visibility, and this scan is its reference in tests.
 
 use glam::DVec3;
 
@@ -40,7 +40,7 @@ pub fn raycast(mesh: &Mesh, origin: DVec3, dir: DVec3) -> Option<RayHit> {
 }
 
 /// Möller–Trumbore: `(t, u, v)` with the hit at `a + u (b − a) + v (c − a)`.
-fn intersect_triangle(
+pub(crate) fn intersect_triangle(
     origin: DVec3,
     dir: DVec3,
     a: DVec3,

@@ -33,7 +33,7 @@ pub(crate) type ConstraintRow = Vec<(usize, f64)>;
 #[derive(Clone, Debug)]
 pub(crate) struct ExactConstraints {
     rows: Vec<ConstraintRow>,
-    /// `Z` by unknown: `green[j * k + m]` is `(N⁻¹ Cᵀ)[j, m]` (zero for fixed unknowns).
+    /// `Z` by column: `green[m * n + j]` is `(N⁻¹ Cᵀ)[j, m]` (zero for fixed unknowns).
     green: Vec<f64>,
     /// Lower Cholesky factor of `S`, row-major `k × k`.
     schur_factor: Vec<f64>,
@@ -59,17 +59,15 @@ impl ExactConstraints {
             }
         }
         solver.solve_normal_columns(columns.as_mut())?;
-        let mut green = vec![0.0; n * k];
-        for j in 0..n {
-            for m in 0..k {
-                green[j * k + m] = columns[(j, m)];
-            }
+        let mut green = Vec::with_capacity(n * k);
+        for m in 0..k {
+            green.extend((0..n).map(|j| columns[(j, m)]));
         }
         let mut schur = vec![0.0; k * k];
         for (m, row) in rows.iter().enumerate() {
             for &(j, c) in row {
                 for l in 0..k {
-                    schur[m * k + l] += c * green[j * k + l];
+                    schur[m * k + l] += c * green[l * n + j];
                 }
             }
         }
@@ -107,10 +105,11 @@ impl ExactConstraints {
             let sum: DVec3 = (m + 1..k).map(|p| l[p * k + m] * self.lambda[p]).sum();
             self.lambda[m] = (self.lambda[m] - sum) / l[m * k + m];
         }
-        for (j, xj) in x.iter_mut().enumerate() {
-            let z = &self.green[j * k..(j + 1) * k];
-            let correction: DVec3 = z.iter().zip(&self.lambda).map(|(&z, &l)| z * l).sum();
-            *xj -= correction;
+        let n = x.len();
+        for (z, &lambda) in self.green.chunks_exact(n).zip(&self.lambda) {
+            for (xj, &zj) in x.iter_mut().zip(z) {
+                *xj -= zj * lambda;
+            }
         }
     }
 }

@@ -15,7 +15,7 @@ use super::exact_handles::{ConstraintRow, ExactConstraints};
 use super::handle::HandlePoint;
 use super::params::{EditParams, HandleFit, Rotations};
 use super::region::Region;
-use super::rotation::best_rotation;
+use super::rotation::{best_rotation, refine_rotation};
 use crate::mesh::{Mesh, VertexId};
 use crate::solve::{Prefactored, SolveError, Triplets};
 
@@ -305,7 +305,7 @@ impl LaplacianEdit {
                 let edge = x - self.rest_local[j] - self.displacement[j];
                 m + outer(edge * w, rest_edge)
             });
-            self.rotations[i] = best_rotation(covariance);
+            self.rotations[i] = refine_rotation(covariance, self.rotations[i]);
         }
     }
 }

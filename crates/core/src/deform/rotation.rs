@@ -50,6 +50,58 @@ pub(crate) fn best_rotation(m: DMat3) -> DMat3 {
     outer(u1, v1) + outer(u2, v2) + outer(u3, v3) * det_v
 }
 
+/// [`best_rotation`] warm-started from a nearby rotation `start`, as in the ARAP local step,
+/// where each vertex's rotation changes little between iterations.
+///
+/// Newton's method on `f(ω) = tr((R exp[ω]ₓ)ᵀ M)`: with `S = Rᵀ M`, the gradient at `ω = 0`
+/// is the axial vector of `S - Sᵀ` and the Hessian `-(tr(S) I - sym(S))`, so a step solves
+/// a 3x3 system. It converges quadratically from a good start; when the Hessian is not
+/// clearly definite (a start far off, or a rank-1 covariance) or a step is large, this falls
+/// back to the SVD route.
+pub(crate) fn refine_rotation(m: DMat3, start: DMat3) -> DMat3 {
+    let mut r = start;
+    for _ in 0..MAX_NEWTON_STEPS {
+        let s = r.transpose() * m;
+        let gradient = DVec3::new(
+            s.y_axis.z - s.z_axis.y,
+            s.z_axis.x - s.x_axis.z,
+            s.x_axis.y - s.y_axis.x,
+        );
+        let symmetric = (s + s.transpose()) * 0.5;
+        let trace = s.x_axis.x + s.y_axis.y + s.z_axis.z;
+        let hessian = DMat3::from_diagonal(DVec3::splat(trace)) - symmetric;
+        if !is_clearly_positive_definite(hessian, trace) {
+            return best_rotation(m);
+        }
+        let step = hessian.inverse() * gradient;
+        let angle = step.length();
+        if angle.is_nan() || angle >= MAX_NEWTON_ANGLE {
+            return best_rotation(m);
+        }
+        if angle <= NEWTON_TOLERANCE {
+            break;
+        }
+        r *= DMat3::from_axis_angle(step / angle, angle);
+    }
+    r
+}
+
+/// Newton steps before giving up on convergence (quadratic: 2 or 3 from a warm start).
+const MAX_NEWTON_STEPS: usize = 4;
+/// A Newton step longer than this (radians) means the start was far off.
+const MAX_NEWTON_ANGLE: f64 = 0.5;
+/// Steps below this angle (radians) end the iteration.
+const NEWTON_TOLERANCE: f64 = 1e-12;
+
+/// Whether the symmetric `h` is positive definite with its smallest pivot above `1e-6 scale`.
+fn is_clearly_positive_definite(h: DMat3, scale: f64) -> bool {
+    let floor = 1e-6 * scale.abs();
+    let minor1 = h.x_axis.x;
+    let minor2 = h.x_axis.x * h.y_axis.y - h.x_axis.y * h.y_axis.x;
+    // Leading minors over their predecessors are the Cholesky pivots.
+    minor1 > floor && minor2 > floor * minor1 && h.determinant() > floor * minor2
+}
+
 /// `a bᵀ`.
 fn outer(a: DVec3, b: DVec3) -> DMat3 {
     DMat3::from_cols(a * b.x, a * b.y, a * b.z)
@@ -193,6 +245,31 @@ mod tests {
         for seed in 0..2000 {
             assert!(score(best) >= score(rotation(seed)) - 1e-12);
         }
+    }
+
+    #[test]
+    fn warm_starts_converge_to_the_same_rotation() {
+        let rest = points(5, 6);
+        let flat: Vec<DVec3> = rest.iter().map(|p| DVec3::new(p.x, p.y, 0.0)).collect();
+        for seed in 0..50 {
+            let r = rotation(seed);
+            for shape in [&rest, &flat] {
+                // Deformed by the rotation and a small shear, so the optimum is not exact.
+                let deformed: Vec<DVec3> = shape
+                    .iter()
+                    .map(|&p| r * (p + 0.1 * p.y * DVec3::X))
+                    .collect();
+                let m = covariance(&deformed, shape);
+                let nearby = r * DMat3::from_axis_angle(DVec3::new(1.0, 2.0, 2.0) / 3.0, 0.3);
+                assert_rotation_close(refine_rotation(m, nearby), best_rotation(m), 1e-10);
+                // A start on the far side still gives the optimum (by the fallback).
+                let far = r * DMat3::from_rotation_x(3.0);
+                assert_rotation_close(refine_rotation(m, far), best_rotation(m), 1e-10);
+            }
+        }
+        // The identity stays exactly the identity for an undeformed ring.
+        let m = covariance(&rest, &rest);
+        assert_eq!(refine_rotation(m, DMat3::IDENTITY), DMat3::IDENTITY);
     }
 
     #[test]

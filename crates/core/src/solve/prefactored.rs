@@ -226,9 +226,10 @@ impl Prefactored {
         check_len("columns", self.a.ncols(), columns.nrows())?;
         let n_columns = columns.ncols();
         let mut free = Mat::<f64>::zeros(self.n_free(), n_columns);
-        for col in 0..self.a.ncols() {
-            if let Some(f) = self.system.free_index(col) {
-                for k in 0..n_columns {
+        // Column by column: both matrices are column-major.
+        for k in 0..n_columns {
+            for col in 0..self.a.ncols() {
+                if let Some(f) = self.system.free_index(col) {
                     free[(f, k)] = columns[(col, k)];
                 }
             }
@@ -243,10 +244,9 @@ impl Prefactored {
             Par::Seq,
             MemStack::new(&mut memory),
         );
-        for col in 0..self.a.ncols() {
-            let f = self.system.free_index(col);
-            for k in 0..n_columns {
-                columns[(col, k)] = f.map_or(0.0, |f| free[(f, k)]);
+        for k in 0..n_columns {
+            for col in 0..self.a.ncols() {
+                columns[(col, k)] = self.system.free_index(col).map_or(0.0, |f| free[(f, k)]);
             }
         }
         Ok(())

@@ -10,57 +10,15 @@
 use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
-use glam::{DMat3, DVec3};
-use sketchmesh_core::deform::{EditParams, HandleFit, HandlePoint, LaplacianEdit, Rotations};
-use sketchmesh_core::mesh::{HalfedgeId, Mesh, primitives};
+use glam::DVec3;
+use sketchmesh_core::deform::{EditParams, HandleFit, LaplacianEdit, Rotations};
 
-/// The pole of the cap.
-const POLE: DVec3 = DVec3::Z;
-/// Chord radius of the cap ROI: `(1 - cos θ) / 2` of the sphere, about 12% or 5k vertices.
-const ROI_RADIUS: f64 = 0.7;
-/// Chord radius of the handle curve's extent around the pole.
-const HANDLE_RADIUS: f64 = 0.45;
-/// The handle curve lies in the plane `y = PLANE_Y`, off the icosphere's symmetry planes so
-/// that no vertex lies on it.
-const PLANE_Y: f64 = 0.0123;
-
-/// The cap ROI and handles at the edge crossings of the plane `y = PLANE_Y` near the pole.
-fn oversketch_edit(mesh: &Mesh) -> (Vec<bool>, Vec<HandlePoint>) {
-    let p = mesh.positions();
-    let roi = p
-        .iter()
-        .map(|&q| (q - POLE).length() < ROI_RADIUS)
-        .collect();
-    let handles = (0..mesh.n_halfedges() as u32)
-        .map(HalfedgeId)
-        .filter_map(|h| {
-            let (a, b) = (mesh.tail(h), mesh.head(h));
-            let (pa, pb) = (p[a.index()], p[b.index()]);
-            // Each edge once: from its lower end to its upper end.
-            let crosses = pa.y < PLANE_Y && pb.y > PLANE_Y;
-            let is_near = (0.5 * (pa + pb) - POLE).length() < HANDLE_RADIUS;
-            (crosses && is_near)
-                .then(|| HandlePoint::on_edge(a, b, (PLANE_Y - pa.y) / (pb.y - pa.y)))
-        })
-        .collect();
-    (roi, handles)
-}
-
-/// Targets: the handle curve pushed outward and turned a little, like a redrawn silhouette.
-fn targets(mesh: &Mesh, handles: &[HandlePoint]) -> Vec<DVec3> {
-    let turn = DMat3::from_rotation_y(0.2);
-    handles
-        .iter()
-        .map(|h| {
-            let q = h.position(mesh.positions());
-            let bulge = 0.15 * (1.0 - ((q - POLE).length() / HANDLE_RADIUS).powi(2));
-            turn * q + q.normalize() * bulge
-        })
-        .collect()
-}
+#[path = "common/oversketch.rs"]
+mod oversketch;
+use oversketch::{oversketch_edit, sphere, targets};
 
 fn bench_deform(c: &mut Criterion) {
-    let mesh = primitives::icosphere(1.0, 6);
+    let mesh = sphere();
     let (roi, handles) = oversketch_edit(&mesh);
     let targets = targets(&mesh, &handles);
     let n_roi = roi.iter().filter(|&&r| r).count();

@@ -4,9 +4,16 @@
 //! constrains such a point as the combination `(1 - λ) v_i + λ v_j = v̂_ij` of its edge's
 //! vertices; a point inside a triangle uses its two free barycentric coordinates. A
 //! [`HandlePoint`] stores up to three vertices with weights that sum to one.
+//!
+//! An edit sorts its handles by how they enter the system: soft rows, fixed vertices (exact
+//! handles at a vertex) or hard constraints (exact handles inside an edge or face).
 
 use glam::DVec3;
 
+use super::DeformError;
+use super::exact_handles::ConstraintRow;
+use super::params::HandleFit;
+use super::region::Region;
 use crate::mesh::{FaceId, Mesh, VertexId};
 
 /// A point on the mesh that a deformation moves to a target: `Σ weights[k] · x[vertices[k]]`.
@@ -95,6 +102,59 @@ impl HandlePoint {
         self.weights.iter().all(|w| w.is_finite())
             && (self.weights.iter().sum::<f64>() - 1.0).abs() <= 1e-9
     }
+}
+
+/// The handle sets of one edit, by how they enter the system.
+#[derive(Default)]
+pub(crate) struct HandleSplit {
+    /// Soft rows: handle index, rest value, local terms.
+    pub(crate) soft: Vec<(usize, DVec3, ConstraintRow)>,
+    /// Exact vertex handles: local index, handle index.
+    pub(crate) fixed: Vec<(usize, usize)>,
+    /// Exact rows: handle index, rest value, local terms.
+    pub(crate) exact: Vec<(usize, DVec3, ConstraintRow)>,
+}
+
+/// Sorts handles into soft rows, fixed vertices and exact rows, checking each.
+pub(crate) fn split_handles(
+    mesh: &Mesh,
+    region: &Region,
+    handles: &[HandlePoint],
+    fit: HandleFit,
+) -> Result<HandleSplit, DeformError> {
+    let mut split = HandleSplit::default();
+    let mut is_fixed_by_handle = vec![false; region.n_roi()];
+    for (index, handle) in handles.iter().enumerate() {
+        let is_valid = handle.is_affine()
+            && handle
+                .vertices()
+                .iter()
+                .all(|v| v.index() < mesh.n_vertices());
+        if !is_valid {
+            return Err(DeformError::InvalidHandle { index });
+        }
+        let outside = DeformError::HandleOutsideRoi { index };
+        let mut terms = ConstraintRow::new();
+        for (v, w) in handle.terms() {
+            terms.push((region.local(v).ok_or(outside.clone())?, w));
+        }
+        if terms.iter().all(|&(j, _)| j >= region.n_roi()) {
+            return Err(outside);
+        }
+        let rest = handle.position(mesh.positions());
+        match (fit, handle.as_vertex()) {
+            (HandleFit::Soft { .. }, _) => split.soft.push((index, rest, terms)),
+            (HandleFit::Exact, Some(_)) => {
+                let local = terms[0].0;
+                if std::mem::replace(&mut is_fixed_by_handle[local], true) {
+                    return Err(DeformError::ConflictingHandles { index });
+                }
+                split.fixed.push((local, index));
+            }
+            (HandleFit::Exact, None) => split.exact.push((index, rest, terms)),
+        }
+    }
+    Ok(split)
 }
 
 #[cfg(test)]

@@ -11,8 +11,8 @@ use glam::{DMat3, DQuat, DVec3};
 
 use super::DeformError;
 use super::cotan_weights::OneRingWeights;
-use super::exact_handles::{ConstraintRow, ExactConstraints};
-use super::handle::HandlePoint;
+use super::exact_handles::ExactConstraints;
+use super::handle::{HandlePoint, split_handles};
 use super::params::{EditParams, HandleFit, Rotations};
 use super::region::Region;
 use super::rotation::{best_rotation, refine_rotation};
@@ -55,17 +55,6 @@ pub struct LaplacianEdit {
     displacement: Vec<DVec3>,
     /// Rotation of each row vertex.
     rotations: Vec<DMat3>,
-}
-
-/// The handle sets of one edit, by how they enter the system.
-#[derive(Default)]
-struct HandleSplit {
-    /// Soft rows: handle index, rest value, local terms.
-    soft: Vec<(usize, DVec3, ConstraintRow)>,
-    /// Exact vertex handles: local index, handle index.
-    fixed: Vec<(usize, usize)>,
-    /// Exact rows: handle index, rest value, local terms.
-    exact: Vec<(usize, DVec3, ConstraintRow)>,
 }
 
 impl LaplacianEdit {
@@ -312,48 +301,6 @@ impl LaplacianEdit {
 
 fn outer(a: DVec3, b: DVec3) -> DMat3 {
     DMat3::from_cols(a * b.x, a * b.y, a * b.z)
-}
-
-/// Sorts handles into soft rows, fixed vertices and exact rows, checking each.
-fn split_handles(
-    mesh: &Mesh,
-    region: &Region,
-    handles: &[HandlePoint],
-    fit: HandleFit,
-) -> Result<HandleSplit, DeformError> {
-    let mut split = HandleSplit::default();
-    let mut is_fixed_by_handle = vec![false; region.n_roi()];
-    for (index, handle) in handles.iter().enumerate() {
-        let is_valid = handle.is_affine()
-            && handle
-                .vertices()
-                .iter()
-                .all(|v| v.index() < mesh.n_vertices());
-        if !is_valid {
-            return Err(DeformError::InvalidHandle { index });
-        }
-        let outside = DeformError::HandleOutsideRoi { index };
-        let mut terms = ConstraintRow::new();
-        for (v, w) in handle.terms() {
-            terms.push((region.local(v).ok_or(outside.clone())?, w));
-        }
-        if terms.iter().all(|&(j, _)| j >= region.n_roi()) {
-            return Err(outside);
-        }
-        let rest = handle.position(mesh.positions());
-        match (fit, handle.as_vertex()) {
-            (HandleFit::Soft { .. }, _) => split.soft.push((index, rest, terms)),
-            (HandleFit::Exact, Some(_)) => {
-                let local = terms[0].0;
-                if std::mem::replace(&mut is_fixed_by_handle[local], true) {
-                    return Err(DeformError::ConflictingHandles { index });
-                }
-                split.fixed.push((local, index));
-            }
-            (HandleFit::Exact, None) => split.exact.push((index, rest, terms)),
-        }
-    }
-    Ok(split)
 }
 
 fn check_len(what: &'static str, expected: usize, found: usize) -> Result<(), SolveError> {

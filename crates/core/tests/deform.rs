@@ -513,6 +513,7 @@ fn bumps_turn_with_a_bent_tube_only_with_rotations() {
     };
     let linear = worst_tilt(LINEAR);
     let arap = worst_tilt(ARAP);
+    // Measured: 5.9 degrees with rotations, 64.5 without.
     assert!(arap < 10.0, "ARAP tilt {arap}");
     assert!(
         linear > 20.0 && linear > 3.0 * arap,

@@ -7,6 +7,7 @@
 
 pub mod camera;
 pub mod curve;
+pub mod deform;
 pub mod document;
 pub mod fibermesh;
 pub mod geometry;

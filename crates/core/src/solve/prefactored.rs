@@ -19,7 +19,7 @@
 use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
 use faer::linalg::cholesky::llt::factor::LltRegularization;
 use faer::sparse::linalg::cholesky::{LltRef, SymbolicCholesky, factorize_symbolic_cholesky};
-use faer::{Conj, Mat, Par, Side};
+use faer::{Conj, Mat, MatMut, Par, Side};
 use glam::DVec3;
 
 use super::SolveError;
@@ -207,6 +207,47 @@ impl Prefactored {
                 Some(f) => self.rhs[(f, 0)],
                 None => fixed_values[col],
             };
+        }
+        Ok(())
+    }
+
+    /// Solves the normal equations themselves, `(A_fᵀ A_f) Y = R`, for several right-hand
+    /// sides at once: `columns` has one row per unknown (`n`) and any number of columns. On
+    /// input the rows of free unknowns hold `R`; on output they hold `Y`, and the rows of fixed
+    /// unknowns are zero. These are the Green's functions a constrained solve needs (the
+    /// Schur complement of extra equality constraints, as in `deform`'s exact handles).
+    ///
+    /// Unlike [`Prefactored::solve`] this allocates (scratch for all columns), so call it when
+    /// setting up, not per frame.
+    ///
+    /// Errors: [`SolveError::DimensionMismatch`] when `columns` does not have `n` rows, and
+    /// [`SolveError::Factorization`] when the scratch memory cannot be reserved.
+    pub fn solve_normal_columns(&mut self, mut columns: MatMut<'_, f64>) -> Result<(), SolveError> {
+        check_len("columns", self.a.ncols(), columns.nrows())?;
+        let n_columns = columns.ncols();
+        let mut free = Mat::<f64>::zeros(self.n_free(), n_columns);
+        // Column by column: both matrices are column-major.
+        for k in 0..n_columns {
+            for col in 0..self.a.ncols() {
+                if let Some(f) = self.system.free_index(col) {
+                    free[(f, k)] = columns[(col, k)];
+                }
+            }
+        }
+        let mut memory = try_memory(
+            self.symbolic
+                .solve_in_place_scratch::<f64>(n_columns, Par::Seq),
+        )?;
+        LltRef::new(&self.symbolic, &self.l_values).solve_in_place_with_conj(
+            Conj::No,
+            free.as_mut(),
+            Par::Seq,
+            MemStack::new(&mut memory),
+        );
+        for k in 0..n_columns {
+            for col in 0..self.a.ncols() {
+                columns[(col, k)] = self.system.free_index(col).map_or(0.0, |f| free[(f, k)]);
+            }
         }
         Ok(())
     }
@@ -433,6 +474,41 @@ mod tests {
                 .unwrap_err();
             assert!(err.is_underdetermined(), "{err:?}");
         }
+    }
+
+    #[test]
+    fn normal_columns_invert_the_normal_matrix() {
+        let entries: Vec<(usize, usize, f64)> = (0..30)
+            .map(|k| (k * 5 % 19, k * 3 % 11, ((k as f64) * 1.3).cos()))
+            .collect();
+        let a = random_system(19, 11, &entries);
+        let mut fixed = vec![false; 11];
+        fixed[2] = true;
+        fixed[7] = true;
+        let mut solver = Prefactored::new(&a, &fixed).unwrap();
+        let free: Vec<usize> = (0..11).filter(|&j| !fixed[j]).collect();
+        let dense = a.to_dense();
+        let normal = |p: usize, q: usize| dense.iter().map(|r| r[p] * r[q]).sum::<f64>();
+        // Each column is a unit vector on a free unknown, plus junk on fixed rows.
+        let mut columns = Mat::<f64>::zeros(11, free.len());
+        for (k, &j) in free.iter().enumerate() {
+            columns[(j, k)] = 1.0;
+            columns[(2, k)] = 5.0;
+        }
+        solver.solve_normal_columns(columns.as_mut()).unwrap();
+        for (k, &j) in free.iter().enumerate() {
+            assert_eq!(columns[(2, k)], 0.0);
+            assert_eq!(columns[(7, k)], 0.0);
+            for &p in &free {
+                let nz: f64 = free.iter().map(|&q| normal(p, q) * columns[(q, k)]).sum();
+                let expected = if p == j { 1.0 } else { 0.0 };
+                assert!((nz - expected).abs() < 1e-12, "(N Y)[{p}, {k}] = {nz}");
+            }
+        }
+        assert!(matches!(
+            solver.solve_normal_columns(Mat::<f64>::zeros(10, 2).as_mut()),
+            Err(SolveError::DimensionMismatch { .. })
+        ));
     }
 
     #[test]

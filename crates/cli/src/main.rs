@@ -61,20 +61,8 @@ fn replay(session_path: &Path, out_path: &Path) -> anyhow::Result<()> {
     )?;
     let editor = Editor::replay(&session)
         .with_context(|| format!("Could not replay {}", session_path.display()))?;
-    let bytes = write_glb(editor.document());
-    std::fs::write(out_path, &bytes)
-        .with_context(|| format!("Could not write {}", out_path.display()))?;
-    let stats = editor.document().stats();
-    print_out(&format!(
-        "Replayed {} ops: {} models, {} vertices, {} triangles, {} curves; wrote {} ({} bytes).",
-        editor.ops().len(),
-        stats.models,
-        stats.vertices,
-        stats.triangles,
-        stats.curves,
-        out_path.display(),
-        bytes.len()
-    ))
+    let what = format!("Replayed {} ops", editor.ops().len());
+    write_document(&editor, out_path, &what)
 }
 
 /// Fills in the contents of import files the session names without carrying them.
@@ -125,13 +113,18 @@ fn convert(in_path: &Path, out_path: &Path) -> anyhow::Result<()> {
     editor
         .apply(Op::Import(ImportInput { files }))
         .with_context(|| format!("Could not import {}", in_path.display()))?;
+    let what = format!("Converted {}", in_path.display());
+    write_document(&editor, out_path, &what)
+}
+
+/// Writes the document as .glb and prints one line saying what is in it.
+fn write_document(editor: &Editor, out_path: &Path, what: &str) -> anyhow::Result<()> {
     let bytes = write_glb(editor.document());
     std::fs::write(out_path, &bytes)
         .with_context(|| format!("Could not write {}", out_path.display()))?;
     let stats = editor.document().stats();
     print_out(&format!(
-        "Converted {}: {} models, {} vertices, {} triangles, {} curves; wrote {} ({} bytes).",
-        in_path.display(),
+        "{what}: {} models, {} vertices, {} triangles, {} curves; wrote {} ({} bytes).",
         stats.models,
         stats.vertices,
         stats.triangles,

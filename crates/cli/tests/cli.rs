@@ -164,32 +164,31 @@ fn a_created_shape_replays_to_the_same_closed_genus_0_mesh() {
     assert_eq!(info["control_curves"], 1, "{info}");
 }
 
+/// Runs `sketchmesh COMMAND INPUT -o OUTPUT` and expects success.
+fn succeed(command: &str, input: &std::path::Path, output: &std::path::Path) {
+    let run = sketchmesh(&[
+        command.as_ref(),
+        input.as_os_str(),
+        "-o".as_ref(),
+        output.as_os_str(),
+    ]);
+    assert_eq!(
+        run.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+}
+
 #[test]
 fn convert_round_trips_and_sessions_import_files_beside_them() {
     let dir = temp_dir("convert");
     let session = dir.join("create.json");
     std::fs::write(&session, create_session()).unwrap();
     let created = dir.join("created.glb");
-    let output = sketchmesh(&[
-        "replay".as_ref(),
-        session.as_os_str(),
-        "-o".as_ref(),
-        created.as_os_str(),
-    ]);
-    assert_eq!(output.status.code(), Some(0));
+    succeed("replay", &session, &created);
     let converted = dir.join("converted.glb");
-    let output = sketchmesh(&[
-        "convert".as_ref(),
-        created.as_os_str(),
-        "-o".as_ref(),
-        converted.as_os_str(),
-    ]);
-    assert_eq!(
-        output.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    succeed("convert", &created, &converted);
     assert_eq!(
         std::fs::read(&converted).unwrap(),
         std::fs::read(&created).unwrap(),
@@ -204,18 +203,7 @@ fn convert_round_trips_and_sessions_import_files_beside_them() {
     )
     .unwrap();
     let replayed = dir.join("replayed.glb");
-    let output = sketchmesh(&[
-        "replay".as_ref(),
-        import_session.as_os_str(),
-        "-o".as_ref(),
-        replayed.as_os_str(),
-    ]);
-    assert_eq!(
-        output.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    succeed("replay", &import_session, &replayed);
     assert_eq!(
         std::fs::read(&replayed).unwrap(),
         std::fs::read(&created).unwrap()

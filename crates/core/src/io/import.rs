@@ -108,7 +108,7 @@ fn add_node(
     let NodeGeometry {
         name,
         extras,
-        surface,
+        mut surface,
         lines,
         points,
     } = node;
@@ -146,7 +146,7 @@ fn add_node(
     }
     let model_name = name.clone().unwrap_or_else(|| String::from("unnamed node"));
     let is_sketchmesh = extras.is_some();
-    let (mesh, face_source) = weld_and_repair(&surface, &model_name, &mut imported.notes)?;
+    let (mesh, face_source) = weld_and_repair(&mut surface, &model_name, &mut imported.notes)?;
     let curves = extras
         .map(|extras| attach_curves(&mesh, &extras.curves))
         .unwrap_or_default();
@@ -179,14 +179,17 @@ fn distinct<T: Copy + PartialEq>(values: &[T]) -> Vec<T> {
     seen
 }
 
-/// Welds equal positions and makes the surface manifold. Returns the mesh and, per mesh
-/// face, the surface triangle it came from and whether it was flipped.
+/// Welds equal positions (consuming `surface.positions`) and makes the surface manifold.
+/// Returns the mesh and, per mesh face, the surface triangle it came from and whether it was
+/// flipped.
 fn weld_and_repair(
-    surface: &Surface,
+    surface: &mut Surface,
     name: &str,
     notes: &mut Vec<String>,
 ) -> Result<(Mesh, Vec<(u32, bool)>), GltfError> {
     let (positions, welded_of) = weld(&surface.positions);
+    // The welded copy is all that is needed from here on; free the original early.
+    surface.positions = Vec::new();
     let mut welded = TriSoup {
         positions,
         triangles: surface

@@ -4,7 +4,7 @@
 
 #![allow(clippy::unwrap_used)] // A panic is a test failure with a location.
 
-use std::f64::consts::PI;
+use std::f64::consts::{PI, TAU};
 use std::sync::Arc;
 
 use glam::{DVec2, DVec3};
@@ -326,6 +326,28 @@ fn far_strokes_are_refused_and_change_nothing() {
     assert_eq!(*editor.document(), document);
     assert_eq!(editor.ops().len(), 1);
     assert!(!editor.can_redo());
+    // A stroke whose ends lie 60 px off the outline (within reach of matching, beyond the
+    // 40 px of a confident match) is a guess, refused too.
+    let outline = longest_outline(&mesh, &camera);
+    let centre = outline.iter().sum::<DVec2>() / outline.len() as f64;
+    let offset: Vec<DVec2> = pushed_stroke(&outline, DVec2::X, 15, 0.0)
+        .iter()
+        .map(|&p| p + (p - centre).normalize() * 60.0)
+        .collect();
+    assert_eq!(
+        oversketch(&mesh, &camera, VIEWPORT, &offset),
+        Err(OversketchError::LowConfidence)
+    );
+    assert_eq!(
+        preview_handle(&mesh, &camera, VIEWPORT, &offset).map(|(_, is_confident)| is_confident),
+        Some(false)
+    );
+    assert_eq!(
+        editor.apply(oversketch_op(&offset)),
+        Err(CommandError::Oversketch(OversketchError::LowConfidence))
+    );
+    assert_eq!(*editor.document(), document);
+    assert_eq!(editor.ops().len(), 1);
     // An empty document refuses too.
     assert!(Editor::new().apply(oversketch_op(&far)).is_err());
 }
@@ -408,4 +430,41 @@ fn roi_is_bounded_by_the_displacements() {
         small.roi_size,
         large.roi_size
     );
+}
+
+#[test]
+fn control_curves_follow_their_vertices() {
+    // A created model keeps its outline as a control curve through mesh vertices; seen from
+    // the camera it was drawn with, that outline is the silhouette.
+    let circle: Vec<[f64; 3]> = (0..=120)
+        .map(|k| {
+            let a = TAU * k as f64 / 120.0;
+            [500.0 + 180.0 * a.cos(), 500.0 + 180.0 * a.sin(), 0.5]
+        })
+        .collect();
+    let mut editor = Editor::new();
+    editor
+        .apply(Op::Create(StrokeInput {
+            viewport: VIEWPORT.to_array(),
+            camera: Camera::default(),
+            stroke: circle,
+        }))
+        .unwrap();
+    let before = editor.document().models[0].clone();
+    assert!(!before.curves.is_empty() && !before.curves[0].vertices.is_empty());
+    let outline = longest_outline(&before.mesh, &Camera::default());
+    let stroke = pushed_stroke(&outline, DVec2::X, 25, 30.0);
+    editor.apply(oversketch_op(&stroke)).unwrap();
+    let after = &editor.document().models[0];
+    let positions = after.mesh.positions();
+    for curve in &after.curves {
+        let expected: Vec<DVec3> = curve
+            .vertices
+            .iter()
+            .map(|v| positions[v.index()])
+            .collect();
+        assert_eq!(curve.points, expected);
+    }
+    assert_ne!(after.curves[0].points, before.curves[0].points);
+    assert_eq!(after.curves[0].vertices, before.curves[0].vertices);
 }

@@ -92,12 +92,46 @@ pub fn oversketch(
         return Err(OversketchError::LowConfidence);
     }
     let handle_screen: Vec<DVec2> = found.points.iter().map(|p| p.screen).collect();
-    let mapped = map_to_stroke(&handle_screen, &found.stroke);
+    let (handles, targets) = handle_targets(mesh, camera, viewport, &found, &handle_screen);
+    let displaced: Vec<(VertexId, f64)> = handles
+        .iter()
+        .zip(&targets)
+        .flat_map(|(handle, target)| {
+            let displacement = target.distance(handle.position(mesh.positions()));
+            let [a, b, _] = handle.vertices();
+            [(a, displacement), (b, displacement)]
+        })
+        .collect();
+    let roi = roi_from_displacements(mesh, &displaced, ROI_RADIUS_FACTOR);
+    let roi_size = roi.iter().filter(|&&r| r).count();
+    let mut edit = LaplacianEdit::new(mesh, &roi, &handles, EditParams::default())?;
+    let mut positions = vec![DVec3::ZERO; mesh.n_vertices()];
+    edit.deform(&targets, &mut positions)
+        .map_err(DeformError::from)?;
+    Ok(Oversketched {
+        positions,
+        handle: handle_screen,
+        roi_size,
+        score: found.score,
+    })
+}
+
+/// The handle points (inside their edges) and their targets: the stroke point at the same
+/// relative arclength, blended at the ends, at the handle point's depth.
+fn handle_targets(
+    mesh: &Mesh,
+    camera: &Camera,
+    viewport: DVec2,
+    found: &Found,
+    handle_screen: &[DVec2],
+) -> (Vec<HandlePoint>, Vec<DVec3>) {
+    let mapped = map_to_stroke(handle_screen, &found.stroke);
     let worlds: Vec<DVec3> = found
         .points
         .iter()
         .map(|p| mesh.position(p.edge[0]).lerp(mesh.position(p.edge[1]), p.t))
         .collect();
+    // Unsmoothed: where each world point is drawn now.
     let projected: Vec<DVec2> = worlds
         .iter()
         .zip(&found.points)
@@ -111,35 +145,20 @@ pub fn oversketch(
         projected[0].distance(mapped[0]),
         projected[projected.len() - 1].distance(mapped[mapped.len() - 1]),
     ];
-    let weights = blend_weights(&handle_screen, gaps);
+    let weights = blend_weights(handle_screen, gaps);
     let forward = camera.forward();
-
-    let mut handles = Vec::with_capacity(found.points.len());
-    let mut targets = Vec::with_capacity(found.points.len());
-    let mut displaced: Vec<(VertexId, f64)> = Vec::with_capacity(2 * found.points.len());
-    for (k, point) in found.points.iter().enumerate() {
-        let [a, b] = point.edge;
-        let world = worlds[k];
-        let target_screen = projected[k].lerp(mapped[k], weights[k]);
-        let target = unproject_at_depth(camera, viewport, target_screen, world, forward);
-        let displacement = target.distance(world);
-        handles.push(HandlePoint::on_edge(a, b, point.t));
-        targets.push(target);
-        displaced.push((a, displacement));
-        displaced.push((b, displacement));
-    }
-    let roi = roi_from_displacements(mesh, &displaced, ROI_RADIUS_FACTOR);
-    let roi_size = roi.iter().filter(|&&r| r).count();
-    let mut edit = LaplacianEdit::new(mesh, &roi, &handles, EditParams::default())?;
-    let mut positions = vec![DVec3::ZERO; mesh.n_vertices()];
-    edit.deform(&targets, &mut positions)
-        .map_err(DeformError::from)?;
-    Ok(Oversketched {
-        positions,
-        handle: handle_screen,
-        roi_size,
-        score: found.score,
-    })
+    let handles = found
+        .points
+        .iter()
+        .map(|p| HandlePoint::on_edge(p.edge[0], p.edge[1], p.t))
+        .collect();
+    let targets = (0..worlds.len())
+        .map(|k| {
+            let target_screen = projected[k].lerp(mapped[k], weights[k]);
+            unproject_at_depth(camera, viewport, target_screen, worlds[k], forward)
+        })
+        .collect();
+    (handles, targets)
 }
 
 /// The silhouette piece that [`oversketch`] would move for `stroke`, on screen (CSS px), and

@@ -3,13 +3,21 @@
 //! ends (the worst case: nested wavy loops) and once with the silhouettes spread over the
 //! screen so that only one is near (the usual case). The whole over-sketch must stay under
 //! 40 ms natively, so matching should take a few ms at most. Results go in BENCHMARKS.md.
+//!
+//! `oversketch_whole` times the whole [`oversketch`] call (BVH, silhouettes, matching,
+//! ROI, factorization and the ARAP edit) on a 40,962-vertex icosphere, with a stroke
+//! pushing a sixth of the outline out by up to 40 px.
 //! Run with `cargo bench -p sketchmesh-core --bench oversketch -- --warm-up-time 1 --measurement-time 3`.
 
 use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use glam::DVec2;
-use sketchmesh_core::oversketch::{MatchParams, match_stroke};
+use sketchmesh_core::camera::Camera;
+use sketchmesh_core::geometry::Bvh;
+use sketchmesh_core::mesh::primitives;
+use sketchmesh_core::oversketch::{MatchParams, match_stroke, oversketch};
+use sketchmesh_core::silhouette::silhouettes;
 
 const SILHOUETTE_POINTS: usize = 500;
 
@@ -60,5 +68,76 @@ fn bench_match(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench_match);
+/// The part of the longest silhouette within 60 degrees of the rightmost point, pushed
+/// outward by up to `push` px (`push · sin(π u)`, so it starts and ends on the outline).
+fn pushed_outline_stroke(
+    mesh: &sketchmesh_core::mesh::Mesh,
+    viewport: DVec2,
+    push: f64,
+) -> Vec<DVec2> {
+    let camera = Camera::default();
+    let bvh = Bvh::new(mesh);
+    let curves = silhouettes(mesh, &bvh, &camera, viewport);
+    let Some(outline) = curves
+        .iter()
+        .max_by(|a, b| a.screen_length().total_cmp(&b.screen_length()))
+    else {
+        return Vec::new();
+    };
+    let centre = 0.5 * viewport;
+    let piece: Vec<DVec2> = outline
+        .points
+        .iter()
+        .map(|p| p.screen)
+        .filter(|p| (*p - centre).x > 0.5 * (*p - centre).length())
+        .collect();
+    let mut piece = piece;
+    piece.sort_by(|a, b| a.y.total_cmp(&b.y));
+    let last = (piece.len().max(2) - 1) as f64;
+    piece
+        .iter()
+        .enumerate()
+        .map(|(k, &p)| {
+            let u = k as f64 / last;
+            p + (p - centre).normalize() * push * (std::f64::consts::PI * u).sin()
+        })
+        .collect()
+}
+
+/// A torus about z (radii 1 and 0.4) with bumps of height 0.03 along the tube normal, 24
+/// around the axis and 8 around the tube, as in `tests/oversketch_pipeline.rs`.
+fn bumpy_torus(n_major: usize, n_minor: usize) -> sketchmesh_core::mesh::Mesh {
+    let mut mesh = primitives::torus(1.0, 0.4, n_major, n_minor);
+    for p in mesh.positions_mut() {
+        let u = p.y.atan2(p.x);
+        let centre = glam::DVec3::new(u.cos(), u.sin(), 0.0);
+        let normal = (*p - centre).normalize();
+        let v = normal.z.atan2(normal.truncate().dot(centre.truncate()));
+        *p += normal * 0.03 * ((24.0 * u).cos() * (8.0 * v).cos()).max(0.0).powi(2);
+    }
+    mesh
+}
+
+fn bench_whole(c: &mut Criterion) {
+    let viewport = DVec2::new(1000.0, 1000.0);
+    let camera = Camera::default();
+    let mut group = c.benchmark_group("oversketch_whole");
+    group.sample_size(20);
+    for (name, mesh) in [
+        ("icosphere_40962", primitives::icosphere(1.0, 6)),
+        ("bumpy_torus_36864", bumpy_torus(384, 96)),
+    ] {
+        let stroke = pushed_outline_stroke(&mesh, viewport, 40.0);
+        group.bench_function(name, |b| {
+            b.iter(|| {
+                let result = oversketch(black_box(&mesh), &camera, viewport, black_box(&stroke));
+                assert!(result.is_ok(), "{result:?}");
+                result
+            });
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench_match, bench_whole);
 criterion_main!(benches);

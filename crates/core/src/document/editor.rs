@@ -7,6 +7,7 @@ use super::{Document, ImportInput, Model, Op, PendingCreate, SketchCurve, Stroke
 use crate::curve::{StrokeError, process_stroke};
 use crate::fibermesh::CreateError;
 use crate::io::{GltfError, ImportFile, ImportLimits, Imported, import_gltf};
+use crate::oversketch::{OversketchError, Oversketched, oversketch};
 
 /// Why an op was refused. The messages are sentences for the user.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -41,6 +42,9 @@ pub enum CommandError {
     /// A file could not be imported.
     #[error("{0}")]
     Import(#[from] GltfError),
+    /// An over-sketch was refused.
+    #[error("{0}")]
+    Oversketch(#[from] OversketchError),
 }
 
 impl From<StrokeError> for CommandError {
@@ -93,6 +97,13 @@ impl Editor {
                     .extend(imported.sketches.into_iter().map(Arc::new));
                 next.point_clouds
                     .extend(imported.point_clouds.into_iter().map(Arc::new));
+                let before = std::mem::replace(&mut self.document, next);
+                self.history.record(before);
+            }
+            Op::Oversketch(input) => {
+                let (index, model) = oversketch_document(&self.document, input)?;
+                let mut next = self.document.clone();
+                next.models[index] = Arc::new(model);
                 let before = std::mem::replace(&mut self.document, next);
                 self.history.record(before);
             }
@@ -189,6 +200,72 @@ fn place_stroke(input: &StrokeInput) -> Result<SketchCurve, CommandError> {
         sketch.pressures.push(point.pressure);
     }
     Ok(sketch)
+}
+
+/// Over-sketches the model whose outline the stroke matches best (highest match score
+/// among the models that accept it), returning its index and its new version: new
+/// positions, and control curves embedded in the mesh following their vertices.
+///
+/// Errors: [`CommandError::BadView`], [`CommandError::StrokeTooShort`],
+/// [`CommandError::StrokeNotFinite`], or the most telling refusal over all models
+/// (a failed edit, then a doubtful match, then no match).
+fn oversketch_document(
+    document: &Document,
+    input: &StrokeInput,
+) -> Result<(usize, Model), CommandError> {
+    let viewport = input.viewport_size();
+    let viewport_ok = viewport.is_finite() && viewport.x > 0.0 && viewport.y > 0.0;
+    if !viewport_ok || !input.camera.is_valid() {
+        return Err(CommandError::BadView);
+    }
+    if input.stroke.iter().flatten().any(|x| !x.is_finite()) {
+        return Err(CommandError::StrokeNotFinite);
+    }
+    let stroke: Vec<glam::DVec2> = input.points().iter().map(|p| p.pos).collect();
+    if stroke.len() < 2 {
+        return Err(CommandError::StrokeTooShort);
+    }
+    let mut best: Option<(usize, Oversketched)> = None;
+    let mut refusal = OversketchError::NoMatch;
+    for (index, model) in document.models.iter().enumerate() {
+        match oversketch(&model.mesh, &input.camera, viewport, &stroke) {
+            Ok(result) => {
+                if best.as_ref().is_none_or(|(_, b)| result.score > b.score) {
+                    best = Some((index, result));
+                }
+            }
+            Err(error) => {
+                if refusal_rank(&error) > refusal_rank(&refusal) {
+                    refusal = error;
+                }
+            }
+        }
+    }
+    let (index, result) = best.ok_or(refusal)?;
+    let mut model = Model::clone(&document.models[index]);
+    model
+        .mesh
+        .positions_mut()
+        .copy_from_slice(&result.positions);
+    for curve in &mut model.curves {
+        if !curve.vertices.is_empty() {
+            curve.points = curve
+                .vertices
+                .iter()
+                .map(|&v| result.positions[v.index()])
+                .collect();
+        }
+    }
+    Ok((index, model))
+}
+
+/// How much a refusal tells the user: a failed edit, then a doubtful match, then none.
+fn refusal_rank(error: &OversketchError) -> u8 {
+    match error {
+        OversketchError::NoMatch => 0,
+        OversketchError::LowConfidence => 1,
+        OversketchError::Deform(_) => 2,
+    }
 }
 
 /// Imports the files of an import op with the default limits.

@@ -18,6 +18,9 @@ pub enum Op {
     Create(StrokeInput),
     /// Add the models, sketches and points of a glTF file.
     Import(ImportInput),
+    /// Redraw part of a model's outline: the silhouette piece the stroke matches moves onto
+    /// it and the surface around follows (see [`crate::oversketch::oversketch`]).
+    Oversketch(StrokeInput),
     /// Undo the last change.
     Undo,
     /// Redo the last undone change.
@@ -27,7 +30,8 @@ pub enum Op {
 impl Op {
     /// The `"op"` tag of every kind of op, as written in session files (in step with
     /// [`Op::name`]; a test checks both against serde).
-    pub const NAMES: &'static [&'static str] = &["stroke", "create", "import", "undo", "redo"];
+    pub const NAMES: &'static [&'static str] =
+        &["stroke", "create", "import", "oversketch", "undo", "redo"];
 
     /// The `"op"` tag of this op.
     pub fn name(&self) -> &'static str {
@@ -35,6 +39,7 @@ impl Op {
             Op::Stroke(_) => "stroke",
             Op::Create(_) => "create",
             Op::Import(_) => "import",
+            Op::Oversketch(_) => "oversketch",
             Op::Undo => "undo",
             Op::Redo => "redo",
         }
@@ -148,6 +153,11 @@ mod tests {
                     name: String::from("a.glb"),
                     data: Some(Arc::new(vec![1, 2, 3])),
                 }],
+            }),
+            Op::Oversketch(StrokeInput {
+                viewport: [1.0, 1.0],
+                camera: Camera::default(),
+                stroke: Vec::new(),
             }),
             Op::Undo,
             Op::Redo,

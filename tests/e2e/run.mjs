@@ -413,6 +413,54 @@ test('a dropped .glb imports and is framed; Export downloads a valid file; bad f
   }
 });
 
+test('over-sketch mode: a stroke beyond a shape\'s outline pulls the outline to it; undo restores it', async () => {
+  const fresh = await openApp(browser, url, gpu);
+  try {
+    const c = { x: 640, y: 400 };
+    const outline = Array.from({ length: 61 }, (_, i) => {
+      const a = (2 * Math.PI * i) / 60;
+      return { x: c.x + 170 * Math.cos(a), y: c.y + 120 * Math.sin(a), force: 0.6 };
+    });
+    await penStroke(fresh.cdp, outline);
+    const created = await until(() => api(fresh.page, 'stats'), (s) => s.models === 1, 15_000);
+    assert.equal(created.models, 1, 'the outline made a shape');
+    await frames(fresh.page, 3);
+    const before = await screenshot(fresh.page, out('oversketch-before.png'));
+    await fresh.page.keyboard.press('o');
+    // From the outline at -60 degrees to +60 degrees, bulging 40 px out at 0 degrees.
+    const stroke = Array.from({ length: 41 }, (_, i) => {
+      const a = (-Math.PI / 3) + (2 * Math.PI / 3) * (i / 40);
+      const bulge = 40 * Math.cos(1.5 * a) ** 2;
+      return { x: c.x + (170 + bulge) * Math.cos(a), y: c.y + (120 + bulge) * Math.sin(a), force: 0.5 };
+    });
+    const released = Date.now();
+    await penStroke(fresh.cdp, stroke);
+    const session = await until(
+      () => api(fresh.page, 'session').then((json) => JSON.parse(json)),
+      (sess) => sess.ops.at(-1)?.op === 'oversketch',
+      10_000,
+    );
+    console.log(`    over-sketch applied ${Date.now() - released} ms after release (including polling)`);
+    assert.equal(session.ops.at(-1).op, 'oversketch', 'the stroke became an oversketch op');
+    assert.deepEqual(await api(fresh.page, 'stats'), created, 'same vertices and triangles, only moved');
+    await frames(fresh.page, 3);
+    const after = await screenshot(fresh.page, out('oversketch.png'));
+    const px = (img, x, y) => Array.from(img.data.slice((y * img.width + x) * 4, (y * img.width + x) * 4 + 3));
+    const probe = { x: c.x + 170 + 22, y: c.y };
+    const [r0] = px(before, probe.x, probe.y);
+    const [r1, g1, b1] = px(after, probe.x, probe.y);
+    assert.ok(r0 < 100, `outside the original outline is background, got red ${r0}`);
+    assert.ok(r1 > 120 && r1 >= b1, `the outline moved out to the stroke: clay at ${probe.x}, got rgb(${r1}, ${g1}, ${b1})`);
+    await fresh.page.keyboard.press('Control+z');
+    await frames(fresh.page, 3);
+    const undone = await screenshot(fresh.page, out('oversketch-undone.png'));
+    assert.ok(imageChangedFraction(before, undone) < 0.01, 'undo restores the shape');
+    assert.deepEqual(fresh.errors, [], 'console errors while over-sketching');
+  } finally {
+    await fresh.context.close();
+  }
+});
+
 const failed = await runAll();
 clearTimeout(watchdog);
 await browser.close();

@@ -21,6 +21,7 @@ use crate::panels;
 use crate::render::geometry::pressure_width;
 use crate::render::{SceneCallback, SceneGeometry, SceneRenderer, Uniforms, ViewOptions};
 use crate::tools::draw::DrawTool;
+use crate::tools::oversketch::OversketchTool;
 use crate::tools::{ToolOutput, ViewCtx};
 
 /// How long a status message stays up, in seconds.
@@ -43,6 +44,9 @@ pub struct SketchApp {
     shared: Rc<RefCell<Shared>>,
     router: InputRouter,
     tool: DrawTool,
+    oversketch: OversketchTool,
+    /// Which tool strokes go to (toolbar toggle, key O).
+    is_oversketching: bool,
     samples: Vec<PointerSample>,
     #[cfg(not(target_arch = "wasm32"))]
     egui_pointer: crate::input::egui_pointer::EguiPointer,
@@ -89,6 +93,8 @@ impl SketchApp {
             })),
             router: InputRouter::default(),
             tool: DrawTool::default(),
+            oversketch: OversketchTool::default(),
+            is_oversketching: false,
             samples: Vec::new(),
             #[cfg(not(target_arch = "wasm32"))]
             egui_pointer: Default::default(),
@@ -242,6 +248,9 @@ impl SketchApp {
         if pressed(Key::R) || pressed(Key::Home) {
             self.shared.borrow_mut().camera = OrbitCamera::default();
         }
+        if pressed(Key::O) {
+            self.is_oversketching = !self.is_oversketching;
+        }
         if pressed(Key::W) {
             self.options.wireframe = !self.options.wireframe;
         }
@@ -288,11 +297,15 @@ impl SketchApp {
                             camera: self.shared.borrow().camera.camera(),
                             viewport,
                         };
-                        let output = self.tool.on_event(
-                            event,
-                            &view,
-                            self.shared.borrow().editor.document(),
-                        );
+                        let output = {
+                            let shared = self.shared.borrow();
+                            let doc = shared.editor.document();
+                            if self.is_oversketching {
+                                self.oversketch.on_event(event, &view, doc)
+                            } else {
+                                self.tool.on_event(event, &view, doc)
+                            }
+                        };
                         if let ToolOutput::Commit(op) = output {
                             self.apply(op, now);
                         }
@@ -352,7 +365,7 @@ impl SketchApp {
                 .add(egui_wgpu::Callback::new_paint_callback(viewport, callback));
         }
         self.live_stroke_ui(ui, viewport);
-        let idle = self.tool.preview().is_none() && self.pending.is_none();
+        let idle = self.stroke_preview().is_none() && self.pending.is_none();
         if self.shared.borrow().editor.document().is_empty() && idle {
             ui.painter().text(
                 viewport.center_bottom() - egui::vec2(0.0, 48.0),
@@ -364,9 +377,38 @@ impl SketchApp {
         }
     }
 
+    /// The stroke in progress of the active tool.
+    fn stroke_preview(&self) -> Option<&[StrokePoint]> {
+        if self.is_oversketching {
+            self.oversketch.preview()
+        } else {
+            self.tool.preview()
+        }
+    }
+
+    /// Highlights the silhouette piece an over-sketch stroke would replace.
+    fn handle_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
+        let Some(handle) = self.oversketch.handle().filter(|_| self.is_oversketching) else {
+            return;
+        };
+        let color = if handle.confident {
+            egui::Color32::from_rgb(90, 220, 120)
+        } else {
+            egui::Color32::from_rgb(240, 150, 60)
+        };
+        let points: Vec<egui::Pos2> = handle
+            .points
+            .iter()
+            .map(|p| viewport.min + egui::vec2(p.x as f32, p.y as f32))
+            .collect();
+        ui.painter()
+            .add(egui::Shape::line(points, egui::Stroke::new(4.0, color)));
+    }
+
     /// Draws the stroke in progress, smoothed as it will be stored, with pressure widths.
     fn live_stroke_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
-        let Some(raw) = self.tool.preview() else {
+        self.handle_ui(ui, viewport);
+        let Some(raw) = self.stroke_preview() else {
             return;
         };
         let points = process_stroke(raw).unwrap_or_else(|_| raw.to_vec());
@@ -399,6 +441,7 @@ impl eframe::App for SketchApp {
                     ui,
                     &shared.editor,
                     &mut self.options,
+                    &mut self.is_oversketching,
                     &mut self.show_help,
                     status,
                 )

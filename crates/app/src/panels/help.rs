@@ -8,6 +8,10 @@ const SHORTCUTS: &[(&str, &str)] = &[
     ("Ctrl+Shift+Z, Ctrl+Y", "Redo"),
     ("F", "Frame everything"),
     ("R, Home", "Reset the view"),
+    (
+        "O",
+        "Over-sketch mode on/off: a stroke near an outline redraws it",
+    ),
     ("W", "Wireframe on/off"),
     ("G", "Grid on/off"),
     ("H, F1", "This help"),

@@ -30,6 +30,7 @@ pub fn toolbar_ui(
     ui: &mut egui::Ui,
     editor: &Editor,
     options: &mut ViewOptions,
+    is_oversketching: &mut bool,
     show_help: &mut bool,
     status: Option<&str>,
 ) -> Option<Action> {
@@ -80,6 +81,10 @@ pub fn toolbar_ui(
             "Back to the front view (R)",
             Action::ResetView,
         );
+        ui.toggle_value(is_oversketching, "Over-sketch")
+            .on_hover_text(
+                "Strokes redraw a model's outline (O); off: strokes make shapes and ink",
+            );
         ui.toggle_value(&mut options.wireframe, "Wireframe")
             .on_hover_text("Show mesh edges (W)");
         ui.toggle_value(&mut options.grid, "Grid")

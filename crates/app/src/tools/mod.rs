@@ -4,6 +4,7 @@
 //! undo step and every edit replays from the session.
 
 pub mod draw;
+pub mod oversketch;
 
 use egui::Rect;
 use sketchmesh_core::camera::Camera;

@@ -7,7 +7,11 @@
 // Headless Chromium renders with SwiftShader on the CPU here, so absolute numbers are a floor
 // for real hardware rather than a prediction; compare runs on the same machine.
 
+import { readFileSync } from 'node:fs';
+
 import { api, launch, penStroke, settings, sleep } from './lib.mjs';
+
+const round = (ms) => (ms === null || ms === undefined ? null : Math.round(ms * 10) / 10);
 
 const STROKE_POINTS = 90;
 const { url, gpu } = settings();
@@ -120,11 +124,52 @@ try {
     return { ms, bytes: glb.length, triangles: window.sketchmesh.stats().triangles };
   }, 708);
 
+  // Curve pulls on FiberMesh shapes of 10k and 40k vertices (written by `cargo xtask bench`,
+  // paths in SKETCHMESH_PULL_FIXTURES): the app times pointer-down (grab), every drag frame
+  // (curve deformation + regional surface update) and the release (the committed op).
+  const pulls = [];
+  for (const path of (process.env.SKETCHMESH_PULL_FIXTURES ?? '').split(',').filter(Boolean)) {
+    const bytes = [...readFileSync(path)];
+    const vertices = await page.evaluate((data) => {
+      window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
+      window.sketchmesh.loadGlb(new Uint8Array(data), 'fixture.glb');
+      window.sketchmesh.pullTimings();
+      return window.sketchmesh.stats().vertices;
+    }, bytes);
+    await sleep(300);
+    await page.keyboard.press('p');
+    // The fixture's outline is an ellipse 260 x 170 px around the view's centre; grab its right end.
+    const box = await page.evaluate(() => {
+      const c = document.getElementById('sketchmesh_canvas').getBoundingClientRect();
+      return { width: c.width, height: c.height };
+    });
+    const toolbar = 44;
+    const grab = { x: box.width / 2 + 260, y: toolbar + (box.height - toolbar) / 2 };
+    const pen = { pointerType: 'pen', button: 'left', force: 0.5 };
+    await cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', x: grab.x, y: grab.y, buttons: 1, clickCount: 1, ...pen });
+    for (let i = 1; i <= 60; i++) {
+      await sleep(16);
+      await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', x: grab.x + 1.5 * i, y: grab.y - 0.5 * i, buttons: 1, ...pen });
+    }
+    await sleep(50);
+    await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', x: grab.x + 90, y: grab.y - 30, buttons: 0, clickCount: 1, ...pen });
+    await page.waitForFunction(() => JSON.parse(window.sketchmesh.session()).ops.at(-1)?.op === 'pull', null, { timeout: 30_000, polling: 50 })
+      .catch(() => {});
+    const t = await api(page, 'pullTimings');
+    const stats = (list) => {
+      const sorted = [...list].sort((a, b) => a - b);
+      const at = (q) => (sorted.length ? sorted[Math.min(sorted.length - 1, Math.floor(q * sorted.length))] : null);
+      const mean = sorted.length ? sorted.reduce((a, b) => a + b, 0) / sorted.length : null;
+      return { n: sorted.length, mean: round(mean), p50: round(at(0.5)), p95: round(at(0.95)), max: round(sorted.at(-1) ?? null) };
+    };
+    pulls.push({ vertices, grab_ms: round(t.grab_ms.at(-1) ?? null), frame_ms: stats(t.frame_ms), release_ms: round(t.commit_ms.at(-1) ?? null) });
+    console.error(`pull at ${vertices} vertices: ${JSON.stringify(pulls.at(-1))}`);
+  }
+
   const deltas = timing.frames.slice(1).map((t, i) => t - timing.frames[i]);
   const sorted = [...deltas].sort((a, b) => a - b);
   const quantile = (q) => (sorted.length ? sorted[Math.min(sorted.length - 1, Math.floor(q * sorted.length))] : null);
   const mean = deltas.length ? deltas.reduce((a, b) => a + b, 0) / deltas.length : null;
-  const round = (ms) => (ms === null || ms === undefined ? null : Math.round(ms * 10) / 10);
   const report = {
     url,
     gpu,
@@ -139,6 +184,7 @@ try {
       frame_ms: { mean: round(mean), p50: round(quantile(0.5)), p95: round(quantile(0.95)), max: round(sorted.at(-1)) },
     },
     import_glb: { triangles: imported.triangles, bytes: imported.bytes, ms: round(imported.ms) },
+    pulls,
   };
   console.log(JSON.stringify(report));
 } finally {

@@ -16,7 +16,7 @@ import { fileURLToPath } from 'node:url';
 import {
   EXPECTED_BACKEND, OUT_DIR, api, camera, cameraDistance, changedFraction, distinctColours, frames,
   imageChangedFraction, launch, line, maxDiffNear, nonBackgroundFraction, openApp, penStroke, screenshot,
-  settings, touchGesture,
+  settings, sleep, touchGesture,
 } from './lib.mjs';
 
 const WATCHDOG_MS = 240_000;
@@ -456,6 +456,94 @@ test('over-sketch mode: a stroke beyond a shape\'s outline pulls the outline to 
     const undone = await screenshot(fresh.page, out('oversketch-undone.png'));
     assert.ok(imageChangedFraction(before, undone) < 0.01, 'undo restores the shape');
     assert.deepEqual(fresh.errors, [], 'console errors while over-sketching');
+  } finally {
+    await fresh.context.close();
+  }
+});
+
+test('curve tools with the pen: pull (live preview), add a curve, make it sharp, rub, erase; undo restores', async () => {
+  const fresh = await openApp(browser, url, gpu);
+  try {
+    const c = { x: 640, y: 400 };
+    const outline = Array.from({ length: 61 }, (_, i) => {
+      const a = (2 * Math.PI * i) / 60;
+      return { x: c.x + 170 * Math.cos(a), y: c.y + 120 * Math.sin(a), force: 0.6 };
+    });
+    await penStroke(fresh.cdp, outline);
+    const lastOp = () => api(fresh.page, 'session').then((json) => JSON.parse(json).ops.at(-1) ?? {});
+    const waitOp = async (name, ms = 15_000) => {
+      const op = await until(lastOp, (o) => o.op === name, ms);
+      assert.equal(op.op, name, `the gesture became a "${name}" op`);
+      return op;
+    };
+    await waitOp('create');
+    await frames(fresh.page, 3);
+    const before = await screenshot(fresh.page, out('curves-before.png'));
+    const px = (img, x, y) => Array.from(img.data.slice((y * img.width + x) * 4, (y * img.width + x) * 4 + 3));
+    const isClay = ([r, , b]) => r > 120 && r >= b;
+
+    // Pull the outline's rightmost point 80 px out; look at the live preview before release.
+    await fresh.page.keyboard.press('p');
+    const pen = { pointerType: 'pen', button: 'left' };
+    const send = (type, x, y, buttons) =>
+      fresh.cdp.send('Input.dispatchMouseEvent', { type, x, y, buttons, clickCount: 1, force: 0.5, ...pen });
+    await send('mousePressed', c.x + 170, c.y, 1);
+    for (let i = 1; i <= 16; i++) {
+      await sleep(25);
+      await send('mouseMoved', c.x + 170 + 5 * i, c.y, 1);
+    }
+    await frames(fresh.page, 4);
+    const dragging = await screenshot(fresh.page, out('curves-pull-live.png'));
+    assert.ok(isClay(px(dragging, c.x + 215, c.y)), `the live preview follows the pen: rgb(${px(dragging, c.x + 215, c.y)})`);
+    await send('mouseReleased', c.x + 250, c.y, 0);
+    const released = Date.now();
+    const pull = await waitOp('pull');
+    console.log(`    pull committed ${Date.now() - released} ms after release (including polling)`);
+    assert.equal(pull.stroke[0][0], c.x + 170, 'the pull starts where the curve was grabbed');
+    await frames(fresh.page, 3);
+    const pulled = await screenshot(fresh.page, out('curves-pull.png'));
+    assert.ok(!isClay(px(before, c.x + 225, c.y)), 'outside the original outline is background');
+    assert.ok(isClay(px(pulled, c.x + 225, c.y)), `the outline followed the pull: rgb(${px(pulled, c.x + 225, c.y)})`);
+
+    // Sketch mode: an open stroke starting on the shape adds a curve.
+    await fresh.page.keyboard.press('s');
+    const across = line({ x: c.x - 90, y: c.y + 10 }, { x: c.x + 90, y: c.y + 10 }, 30).map((p) => ({ ...p, force: 0.5 }));
+    await penStroke(fresh.cdp, across);
+    await waitOp('add_curve');
+    assert.equal((await api(fresh.page, 'stats')).curves, 2, 'the shape has a second curve');
+
+    // Type tool: along the new curve, it turns sharp (drawn red).
+    await fresh.page.keyboard.press('t');
+    await penStroke(fresh.cdp, across);
+    const retype = await waitOp('set_curve_type');
+    assert.equal(retype.sharp, true, 'a smooth curve toggles to sharp');
+    await frames(fresh.page, 3);
+    const sharp = await screenshot(fresh.page, out('curves-sharp.png'));
+    const reds = across.filter((p) => {
+      const [r, g, b] = px(sharp, Math.round(p.x), Math.round(p.y));
+      return r > 170 && g < 120 && b < 120;
+    }).length;
+    assert.ok(reds > across.length / 2, `the sharp curve is drawn red (${reds}/${across.length} samples)`);
+
+    // Rub back and forth over it, then erase it.
+    await fresh.page.keyboard.press('u');
+    const rub = [...across, ...[...across].reverse(), ...across];
+    await penStroke(fresh.cdp, rub, 10);
+    await waitOp('rub');
+    await fresh.page.keyboard.press('e');
+    await penStroke(fresh.cdp, across);
+    await waitOp('erase');
+    assert.equal((await api(fresh.page, 'stats')).curves, 1, 'erasing removed the added curve');
+
+    // Five undos restore the creation exactly.
+    for (let i = 0; i < 5; i++) {
+      await fresh.page.keyboard.press('Control+z');
+      await frames(fresh.page, 2);
+    }
+    await frames(fresh.page, 3);
+    const undone = await screenshot(fresh.page, out('curves-undone.png'));
+    assert.ok(imageChangedFraction(before, undone) < 0.01, 'undo restores the created shape');
+    assert.deepEqual(fresh.errors, [], 'console errors while editing curves');
   } finally {
     await fresh.context.close();
   }

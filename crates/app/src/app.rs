@@ -14,15 +14,14 @@ use sketchmesh_core::curve::{StrokePoint, process_stroke};
 use sketchmesh_core::document::{Editor, ImportInput, Op, PendingCreate};
 
 use crate::camera::OrbitCamera;
+use crate::clock;
 use crate::files::{self, ImportQueue};
 use crate::input::PointerSample;
 use crate::input::router::{InputRouter, Routed};
 use crate::panels;
 use crate::render::geometry::pressure_width;
 use crate::render::{SceneCallback, SceneGeometry, SceneRenderer, Uniforms, ViewOptions};
-use crate::tools::draw::DrawTool;
-use crate::tools::oversketch::OversketchTool;
-use crate::tools::{ToolOutput, ViewCtx};
+use crate::tools::{Mode, ToolEvent, ToolOutput, ToolSet, ViewCtx};
 
 /// How long a status message stays up, in seconds.
 const STATUS_SECONDS: f64 = 6.0;
@@ -37,16 +36,16 @@ pub struct Shared {
     pub backend: String,
     /// Files waiting to be imported.
     pub imports: ImportQueue,
+    /// Recent pull frame costs, for the page benchmark.
+    pub timings: clock::Timings,
 }
 
 /// The Sketchmesh app.
 pub struct SketchApp {
     shared: Rc<RefCell<Shared>>,
     router: InputRouter,
-    tool: DrawTool,
-    oversketch: OversketchTool,
-    /// Which tool strokes go to (toolbar toggle, key O).
-    is_oversketching: bool,
+    /// The tools and the active mode.
+    tools: ToolSet,
     samples: Vec<PointerSample>,
     #[cfg(not(target_arch = "wasm32"))]
     egui_pointer: crate::input::egui_pointer::EguiPointer,
@@ -55,6 +54,10 @@ pub struct SketchApp {
     geometry: Arc<SceneGeometry>,
     /// What `geometry` was built from: the editor revision and the pending iterations.
     geometry_source: (u64, usize),
+    /// Whether `geometry` shows a pull preview (and must be rebuilt when it ends).
+    shows_pull: bool,
+    /// Normals of the pull preview, reused between frames.
+    pull_normals: Vec<glam::DVec3>,
     /// A shape being created, refined one iteration per frame before it is committed.
     pending: Option<PendingCreate>,
     options: ViewOptions,
@@ -90,17 +93,18 @@ impl SketchApp {
                 camera: OrbitCamera::default(),
                 backend,
                 imports: ImportQueue::default(),
+                timings: clock::Timings::default(),
             })),
             router: InputRouter::default(),
-            tool: DrawTool::default(),
-            oversketch: OversketchTool::default(),
-            is_oversketching: false,
+            tools: ToolSet::default(),
             samples: Vec::new(),
             #[cfg(not(target_arch = "wasm32"))]
             egui_pointer: Default::default(),
             web_samples: Default::default(),
             geometry: Arc::new(SceneGeometry::default()),
             geometry_source: (u64::MAX, 0),
+            shows_pull: false,
+            pull_normals: Vec::new(),
             pending: None,
             options: ViewOptions {
                 wireframe: false,
@@ -124,10 +128,16 @@ impl SketchApp {
     /// a creation in progress, so ops stay in the order the user made them.
     fn apply(&mut self, op: Op, now: f64) {
         self.commit_pending(now);
+        let started = clock::now_ms();
+        let is_pull = matches!(op, Op::Pull(_));
         let result = match op {
             Op::Create(input) => PendingCreate::start(input).map(|p| self.pending = Some(p)),
             op => self.shared.borrow_mut().editor.apply(op),
         };
+        if is_pull {
+            let ms = clock::now_ms() - started;
+            clock::Timings::record(&mut self.shared.borrow_mut().timings.commit_ms, ms);
+        }
         if let Err(e) = result {
             self.set_status(e.to_string(), now);
         }
@@ -156,6 +166,38 @@ impl SketchApp {
         if let Err(e) = result {
             self.set_status(e.to_string(), now);
         }
+    }
+
+    /// Lets a pull in progress follow the pointer, timing it for the page API.
+    fn tick_tools(&mut self, ctx: &egui::Context) {
+        let started = clock::now_ms();
+        let output = self.tools.tick();
+        if self.tools.live_pull().is_some() {
+            let ms = clock::now_ms() - started;
+            clock::Timings::record(&mut self.shared.borrow_mut().timings.frame_ms, ms);
+            ctx.request_repaint();
+        }
+        self.take_output(output, ctx.input(|i| i.time));
+    }
+
+    /// Applies what a tool produced.
+    fn take_output(&mut self, output: ToolOutput, now: f64) {
+        match output {
+            ToolOutput::None => {}
+            ToolOutput::Commit(op) => self.apply(op, now),
+            ToolOutput::CommitAll(ops) => {
+                for op in ops {
+                    self.apply(op, now);
+                }
+            }
+            ToolOutput::Refused(message) => self.set_status(message, now),
+        }
+    }
+
+    /// Switches the tool mode (toolbar, keys).
+    fn set_mode(&mut self, mode: Mode, now: f64) {
+        let dropped = self.tools.set_mode(mode);
+        self.take_output(dropped, now);
     }
 
     fn set_status(&mut self, message: String, now: f64) {
@@ -248,8 +290,10 @@ impl SketchApp {
         if pressed(Key::R) || pressed(Key::Home) {
             self.shared.borrow_mut().camera = OrbitCamera::default();
         }
-        if pressed(Key::O) {
-            self.is_oversketching = !self.is_oversketching;
+        for mode in Mode::ALL {
+            if pressed(mode.key()) {
+                self.set_mode(mode, now);
+            }
         }
         if pressed(Key::W) {
             self.options.wireframe = !self.options.wireframe;
@@ -297,18 +341,20 @@ impl SketchApp {
                             camera: self.shared.borrow().camera.camera(),
                             viewport,
                         };
+                        let started = clock::now_ms();
                         let output = {
                             let shared = self.shared.borrow();
-                            let doc = shared.editor.document();
-                            if self.is_oversketching {
-                                self.oversketch.on_event(event, &view, doc)
-                            } else {
-                                self.tool.on_event(event, &view, doc)
-                            }
+                            self.tools.on_event(event, &view, shared.editor.document())
                         };
-                        if let ToolOutput::Commit(op) = output {
-                            self.apply(op, now);
+                        if matches!(event, ToolEvent::Begin(_)) && self.tools.live_pull().is_some()
+                        {
+                            let ms = clock::now_ms() - started;
+                            clock::Timings::record(
+                                &mut self.shared.borrow_mut().timings.grab_ms,
+                                ms,
+                            );
                         }
+                        self.take_output(output, now);
                     }
                 }
             }
@@ -319,6 +365,7 @@ impl SketchApp {
         let viewport = ui.max_rect();
         let response = ui.allocate_rect(viewport, egui::Sense::hover());
         self.handle_pointer(ui.ctx(), viewport);
+        self.tick_tools(ui.ctx());
         if response.hovered() {
             let (scroll, zoom) = ui.input(|i| (i.smooth_scroll_delta.y, i.zoom_delta()));
             let mut shared = self.shared.borrow_mut();
@@ -331,23 +378,7 @@ impl SketchApp {
             }
         }
         self.refine_pending(ui.ctx());
-        let source = (
-            self.shared.borrow().editor.revision(),
-            self.pending.as_ref().map_or(0, PendingCreate::iterations),
-        );
-        if self.geometry_source != source {
-            let pending = self.pending.as_ref().and_then(PendingCreate::model);
-            let generation = self.geometry.generation + 1;
-            self.geometry = Arc::new(SceneGeometry::build(
-                self.shared.borrow().editor.document(),
-                pending.as_ref(),
-                generation,
-            ));
-            self.geometry_source = source;
-            if std::mem::take(&mut self.frame_after_rebuild) {
-                self.frame_all();
-            }
-        }
+        self.update_geometry();
         if self.has_renderer {
             let camera = self.shared.borrow().camera.camera();
             let aspect = f64::from(viewport.width() / viewport.height().max(1.0));
@@ -377,18 +408,54 @@ impl SketchApp {
         }
     }
 
+    /// Rebuilds the GPU arrays when the document or a creation in progress changed, and
+    /// moves the pulled model's vertices in place while a pull is previewed.
+    fn update_geometry(&mut self) {
+        let pull_ended = self.shows_pull && self.tools.live_pull().is_none();
+        if pull_ended {
+            self.geometry_source = (u64::MAX, 0);
+            self.shows_pull = false;
+        }
+        let source = (
+            self.shared.borrow().editor.revision(),
+            self.pending.as_ref().map_or(0, PendingCreate::iterations),
+        );
+        if self.geometry_source != source {
+            let pending = self.pending.as_ref().and_then(PendingCreate::model);
+            let generation = self.geometry.generation + 1;
+            self.geometry = Arc::new(SceneGeometry::build(
+                self.shared.borrow().editor.document(),
+                pending.as_ref(),
+                generation,
+            ));
+            self.geometry_source = source;
+            if std::mem::take(&mut self.frame_after_rebuild) {
+                self.frame_all();
+            }
+        }
+        if let Some(session) = self.tools.live_pull() {
+            let shared = self.shared.borrow();
+            let index = session.model_index();
+            if let Some(model) = shared.editor.document().models.get(index) {
+                Arc::make_mut(&mut self.geometry).move_model(
+                    index,
+                    model,
+                    session.positions(),
+                    &mut self.pull_normals,
+                );
+                self.shows_pull = true;
+            }
+        }
+    }
+
     /// The stroke in progress of the active tool.
     fn stroke_preview(&self) -> Option<&[StrokePoint]> {
-        if self.is_oversketching {
-            self.oversketch.preview()
-        } else {
-            self.tool.preview()
-        }
+        self.tools.preview()
     }
 
     /// Highlights the silhouette piece an over-sketch stroke would replace.
     fn handle_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
-        let Some(handle) = self.oversketch.handle().filter(|_| self.is_oversketching) else {
+        let Some(handle) = self.tools.handle() else {
             return;
         };
         let color = if handle.confident {
@@ -408,19 +475,33 @@ impl SketchApp {
     /// Draws the stroke in progress, smoothed as it will be stored, with pressure widths.
     fn live_stroke_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
         self.handle_ui(ui, viewport);
-        let Some(raw) = self.stroke_preview() else {
-            return;
-        };
-        let points = process_stroke(raw).unwrap_or_else(|_| raw.to_vec());
-        let to_screen = |p: &StrokePoint| viewport.min + egui::vec2(p.pos.x as f32, p.pos.y as f32);
-        let color = egui::Color32::from_rgb(242, 199, 82);
-        for pair in points.windows(2) {
-            let width = pressure_width((pair[0].pressure + pair[1].pressure) * 0.5) as f32;
-            ui.painter()
-                .line_segment([to_screen(&pair[0]), to_screen(&pair[1])], (width, color));
-            ui.painter()
-                .circle_filled(to_screen(&pair[1]), width * 0.5, color);
+        if let Some((points, what)) = self.tools.waiting() {
+            // A stroke waiting for its confirming tap: shown dimmer, with what a tap does.
+            stroke_ui(ui, viewport, points, egui::Color32::from_rgb(120, 200, 255));
+            ui.painter().text(
+                viewport.center_top() + egui::vec2(0.0, 28.0),
+                egui::Align2::CENTER_CENTER,
+                what,
+                egui::FontId::proportional(16.0),
+                egui::Color32::from_white_alpha(200),
+            );
         }
+        if let Some(raw) = self.stroke_preview() {
+            stroke_ui(ui, viewport, raw, egui::Color32::from_rgb(242, 199, 82));
+        }
+    }
+}
+
+/// Draws a stroke, smoothed as it will be stored, with pressure widths.
+fn stroke_ui(ui: &egui::Ui, viewport: egui::Rect, raw: &[StrokePoint], color: egui::Color32) {
+    let points = process_stroke(raw).unwrap_or_else(|_| raw.to_vec());
+    let to_screen = |p: &StrokePoint| viewport.min + egui::vec2(p.pos.x as f32, p.pos.y as f32);
+    for pair in points.windows(2) {
+        let width = pressure_width((pair[0].pressure + pair[1].pressure) * 0.5) as f32;
+        ui.painter()
+            .line_segment([to_screen(&pair[0]), to_screen(&pair[1])], (width, color));
+        ui.painter()
+            .circle_filled(to_screen(&pair[1]), width * 0.5, color);
     }
 }
 
@@ -441,7 +522,7 @@ impl eframe::App for SketchApp {
                     ui,
                     &shared.editor,
                     &mut self.options,
-                    &mut self.is_oversketching,
+                    self.tools.mode(),
                     &mut self.show_help,
                     status,
                 )
@@ -456,6 +537,7 @@ impl eframe::App for SketchApp {
             }
             Some(panels::toolbar::Action::Import) => self.import_files(&ctx),
             Some(panels::toolbar::Action::Export) => self.export(now),
+            Some(panels::toolbar::Action::Mode(mode)) => self.set_mode(mode, now),
             None => {}
         }
         egui::CentralPanel::no_frame().show(ui, |ui| self.viewport_ui(ui));

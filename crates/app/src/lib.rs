@@ -6,6 +6,7 @@
 
 pub mod app;
 pub mod camera;
+pub mod clock;
 pub mod files;
 pub mod input;
 pub mod panels;

@@ -78,6 +78,11 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
             .into())
         }),
     )?;
+    let s = shared.clone();
+    set(
+        "pullTimings",
+        getter(move || json(&s.borrow_mut().timings.take())),
+    )?;
     let (s, c) = (shared.clone(), ctx.clone());
     set(
         "replay",

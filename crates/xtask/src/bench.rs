@@ -34,6 +34,7 @@ pub fn bench_command(workspace: &Workspace) -> anyhow::Result<()> {
     let web = steps.step("build-web --release", || {
         build::build_web(workspace, WebProfile::Release)
     })?;
+    let fixtures = steps.step("pull fixtures", || pull_fixtures(workspace))?;
     let server = steps.step("start server", || StaticServer::start(&workspace.dist(), 0))?;
     let page = steps.step("page bench", || {
         let out = Command::new("node")
@@ -41,6 +42,7 @@ pub fn bench_command(workspace: &Workspace) -> anyhow::Result<()> {
             .arg("tests/e2e/page-bench.mjs")
             .env("SKETCHMESH_URL", server.url())
             .env("SKETCHMESH_GPU", "webgl2")
+            .env("SKETCHMESH_PULL_FIXTURES", &fixtures)
             .output()
             .context("starting node tests/e2e/page-bench.mjs")?;
         eprint!("{}", String::from_utf8_lossy(&out.stderr));
@@ -165,6 +167,37 @@ fn format_ns(ns: f64) -> String {
     }
 }
 
+/// Vertex counts of the shapes whose curves the page bench pulls.
+const PULL_SIZES: [usize; 2] = [10_000, 40_000];
+
+/// Writes FiberMesh shapes of [`PULL_SIZES`] vertices as .glb files (the page makes shapes
+/// at its default resolution only); returns their paths, comma-separated.
+fn pull_fixtures(workspace: &Workspace) -> anyhow::Result<String> {
+    let dir = workspace.target_dir.join("bench-fixtures");
+    fs::create_dir_all(&dir).with_context(|| format!("creating {}", dir.display()))?;
+    let mut paths = Vec::new();
+    for size in PULL_SIZES {
+        let path = dir.join(format!("fibermesh-{size}.glb"));
+        run(
+            "fibermesh_glb example",
+            cargo().current_dir(&workspace.root).args([
+                "run",
+                "--release",
+                "-q",
+                "-p",
+                "sketchmesh-core",
+                "--example",
+                "fibermesh_glb",
+                "--",
+                &size.to_string(),
+                &path.to_string_lossy(),
+            ]),
+        )?;
+        paths.push(path.to_string_lossy().into_owned());
+    }
+    Ok(paths.join(","))
+}
+
 /// The page-bench JSON report as a markdown table.
 fn page_table(page: &Value, wasm_gzip_size: u64) -> String {
     let ms = |pointer: &str| {
@@ -191,6 +224,39 @@ fn page_table(page: &Value, wasm_gzip_size: u64) -> String {
         ("import .glb, triangles", text("/import_glb/triangles")),
         ("import .glb, time in page", ms("/import_glb/ms")),
     ];
+    let pulls = page.pointer("/pulls").and_then(Value::as_array);
+    let pull_rows = pulls.into_iter().flatten().flat_map(|pull| {
+        let vertices = pull
+            .pointer("/vertices")
+            .map_or(0, |v| v.as_u64().unwrap_or(0));
+        let ms = |pointer: &str| {
+            pull.pointer(pointer)
+                .and_then(Value::as_f64)
+                .map_or_else(|| "n/a".to_owned(), |ms| format!("{ms:.1} ms"))
+        };
+        [
+            (
+                format!("pull at {vertices} vertices, frame mean"),
+                ms("/frame_ms/mean"),
+            ),
+            (
+                format!("pull at {vertices} vertices, frame 95th percentile"),
+                ms("/frame_ms/p95"),
+            ),
+            (
+                format!("pull at {vertices} vertices, grab (pointer-down)"),
+                ms("/grab_ms"),
+            ),
+            (
+                format!("pull at {vertices} vertices, release to committed"),
+                ms("/release_ms"),
+            ),
+        ]
+    });
+    let rows = rows
+        .into_iter()
+        .map(|(name, value)| (name.to_owned(), value))
+        .chain(pull_rows);
     for (name, value) in rows {
         // Writing to a String cannot fail.
         let _ = writeln!(table, "| {name} | {value} |");

@@ -4,6 +4,7 @@
 use sketchmesh_core::document::Editor;
 
 use crate::render::ViewOptions;
+use crate::tools::Mode;
 
 /// A toolbar button the user pressed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -20,6 +21,8 @@ pub enum Action {
     Import,
     /// Download the document as .glb.
     Export,
+    /// Switch to a tool.
+    Mode(Mode),
 }
 
 /// Minimum touch target, in points, so buttons are easy to hit with a finger.
@@ -30,7 +33,7 @@ pub fn toolbar_ui(
     ui: &mut egui::Ui,
     editor: &Editor,
     options: &mut ViewOptions,
-    is_oversketching: &mut bool,
+    mode: Mode,
     show_help: &mut bool,
     status: Option<&str>,
 ) -> Option<Action> {
@@ -73,6 +76,15 @@ pub fn toolbar_ui(
             Action::Redo,
         );
         ui.separator();
+        for m in Mode::ALL {
+            let button = egui::Button::selectable(m == mode, m.label())
+                .min_size(egui::vec2(TOUCH_TARGET, TOUCH_TARGET));
+            let hint = format!("{} ({})", m.hint(), m.key().name());
+            if ui.add(button).on_hover_text(hint).clicked() {
+                action = Some(Action::Mode(m));
+            }
+        }
+        ui.separator();
         button(ui, true, "Frame", "Frame everything (F)", Action::FrameAll);
         button(
             ui,
@@ -81,10 +93,6 @@ pub fn toolbar_ui(
             "Back to the front view (R)",
             Action::ResetView,
         );
-        ui.toggle_value(is_oversketching, "Over-sketch")
-            .on_hover_text(
-                "Strokes redraw a model's outline (O); off: strokes make shapes and ink",
-            );
         ui.toggle_value(&mut options.wireframe, "Wireframe")
             .on_hover_text("Show mesh edges (W)");
         ui.toggle_value(&mut options.grid, "Grid")

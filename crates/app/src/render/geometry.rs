@@ -1,14 +1,16 @@
 //! GPU-ready arrays built from the document, once per document revision.
 //!
 //! Kept free of wgpu so it can be tested natively and shared (in an `Arc`) between the UI
-//! thread and the paint callback. Nothing here runs per frame.
+//! thread and the paint callback. Only [`SceneGeometry::move_model`] runs per frame (during
+//! a curve pull): it rewrites one model's vertices and curves in place, allocating nothing.
 
 use std::collections::HashSet;
+use std::ops::Range;
 
 use bytemuck::{Pod, Zeroable};
 use glam::DVec3;
 use sketchmesh_core::document::{Document, Model};
-use sketchmesh_core::geometry::vertex_normals;
+use sketchmesh_core::geometry::{vertex_normals, vertex_normals_of};
 
 /// A mesh vertex as the shaders read it.
 #[repr(C)]
@@ -49,11 +51,25 @@ pub const POINT_SIZE: f32 = 3.0;
 /// Width of control curves in points.
 pub const CONTROL_CURVE_WIDTH: f32 = 3.0;
 
+/// Where one model's data sit in a [`SceneGeometry`].
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ModelRange {
+    /// Its mesh vertices.
+    pub vertices: Range<usize>,
+    /// Its control curves' segments.
+    pub curves: Range<usize>,
+}
+
 /// Everything the scene pass draws that comes from the document.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct SceneGeometry {
     /// Changes with every rebuild, so the GPU side knows when to upload.
     pub generation: u64,
+    /// Changes with every [`SceneGeometry::move_model`], so the GPU side rewrites the vertex
+    /// and curve buffers in place.
+    pub motion: u64,
+    /// Where each model's vertices and curve segments are, in document order.
+    pub model_ranges: Vec<ModelRange>,
     /// All models' vertices, concatenated.
     pub vertices: Vec<MeshVertex>,
     /// Triangle indices into `vertices`.
@@ -74,6 +90,7 @@ impl SceneGeometry {
             ..Self::default()
         };
         for model in doc.models.iter().map(|m| m.as_ref()).chain(pending) {
+            let (vertices, curves) = (scene.vertices.len(), scene.curves.len());
             scene.add_mesh(
                 model.mesh.positions(),
                 model.mesh.triangle_indices(),
@@ -88,6 +105,10 @@ impl SceneGeometry {
                 let widths = vec![f64::from(CONTROL_CURVE_WIDTH); curve.points.len()];
                 scene.add_polyline(&curve.points, &widths, curve.closed, color);
             }
+            scene.model_ranges.push(ModelRange {
+                vertices: vertices..scene.vertices.len(),
+                curves: curves..scene.curves.len(),
+            });
         }
         for sketch in &doc.sketches {
             let widths: Vec<f64> = sketch
@@ -101,6 +122,53 @@ impl SceneGeometry {
             scene.add_points(&cloud.positions, cloud.colors.as_deref());
         }
         scene
+    }
+
+    /// Shows `model` (the model at `index` in the document this was built from) with its
+    /// vertices at `positions`: rewrites its vertices, normals and control curves in place.
+    /// `normals` is scratch space the caller keeps between frames.
+    pub fn move_model(
+        &mut self,
+        index: usize,
+        model: &Model,
+        positions: &[DVec3],
+        normals: &mut Vec<DVec3>,
+    ) {
+        let Some(range) = self.model_ranges.get(index).cloned() else {
+            return;
+        };
+        if range.vertices.len() != positions.len() {
+            return;
+        }
+        vertex_normals_of(model.mesh.triangles(), positions, normals);
+        for ((vertex, p), n) in self.vertices[range.vertices]
+            .iter_mut()
+            .zip(positions)
+            .zip(normals.iter())
+        {
+            vertex.pos = p.as_vec3().to_array();
+            vertex.normal = n.as_vec3().to_array();
+        }
+        let mut segments = self.curves[range.curves].iter_mut();
+        for curve in &model.curves {
+            let n = curve.points.len();
+            let n_segments = if curve.closed && n > 2 {
+                n
+            } else {
+                n.saturating_sub(1)
+            };
+            let at = |k: usize| match curve.vertices.get(k % n) {
+                Some(v) => positions[v.index()],
+                None => curve.points[k % n],
+            };
+            for k in 0..n_segments {
+                if let Some(segment) = segments.next() {
+                    segment.p0 = at(k).as_vec3().to_array();
+                    segment.p1 = at(k + 1).as_vec3().to_array();
+                }
+            }
+        }
+        self.motion += 1;
     }
 
     fn add_mesh(&mut self, positions: &[DVec3], triangles: &[u32], normals: &[DVec3]) {

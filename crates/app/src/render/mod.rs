@@ -45,6 +45,8 @@ pub struct ViewOptions {
 /// GPU buffers holding one [`SceneGeometry`].
 struct GeometryBuffers {
     generation: u64,
+    /// The [`SceneGeometry::motion`] last written.
+    motion: u64,
     vertices: Option<wgpu::Buffer>,
     triangles: Option<(wgpu::Buffer, u32)>,
     edges: Option<(wgpu::Buffer, u32)>,
@@ -125,18 +127,29 @@ impl SceneRenderer {
         rs.renderer.write().callback_resources.insert(renderer);
     }
 
-    fn upload(&mut self, device: &wgpu::Device, scene: &SceneGeometry) {
-        if self
+    fn upload(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, scene: &SceneGeometry) {
+        if let Some(g) = self
             .geometry
-            .as_ref()
-            .is_some_and(|g| g.generation == scene.generation)
+            .as_mut()
+            .filter(|g| g.generation == scene.generation)
         {
+            // Same arrays, moved vertices (a pull in progress): rewrite in place.
+            if g.motion != scene.motion {
+                g.motion = scene.motion;
+                if let Some(vertices) = &g.vertices {
+                    queue.write_buffer(vertices, 0, bytemuck::cast_slice(&scene.vertices));
+                }
+                if let Some((curves, _)) = &g.curves {
+                    queue.write_buffer(curves, 0, bytemuck::cast_slice(&scene.curves));
+                }
+            }
             return;
         }
-        let vertex = wgpu::BufferUsages::VERTEX;
+        let vertex = wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST;
         let index = wgpu::BufferUsages::INDEX;
         self.geometry = Some(GeometryBuffers {
             generation: scene.generation,
+            motion: scene.motion,
             vertices: buffer(device, "mesh vertices", &scene.vertices, vertex).map(|(b, _)| b),
             triangles: buffer(device, "mesh triangles", &scene.triangles, index),
             edges: buffer(device, "mesh edges", &scene.edges, index),
@@ -235,7 +248,7 @@ impl CallbackTrait for SceneCallback {
             (self.rect.width() * ppp).round().max(1.0) as u32,
             (self.rect.height() * ppp).round().max(1.0) as u32,
         ];
-        renderer.upload(device, &self.geometry);
+        renderer.upload(device, queue, &self.geometry);
         let mut uniforms = self.uniforms;
         uniforms.viewport = [size[0] as f32, size[1] as f32, ppp, 0.0];
         queue.write_buffer(&renderer.uniforms, 0, bytemuck::bytes_of(&uniforms));

@@ -30,8 +30,18 @@ pub enum DrawTool {
 }
 
 impl DrawTool {
-    /// Feeds one event; a finished stroke becomes a [`ToolOutput::Commit`].
+    /// Feeds one event; a finished stroke becomes a [`ToolOutput::Commit`] of what it means
+    /// in the sketch tool ([`op_for_stroke`]).
     pub fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
+        match self.capture(event, view) {
+            Some(input) => ToolOutput::Commit(op_for_stroke(doc, input)),
+            None => ToolOutput::None,
+        }
+    }
+
+    /// Feeds one event; returns the stroke when it is finished. Tools that give a stroke
+    /// another meaning (over-sketch, erase, …) start from this.
+    pub fn capture(&mut self, event: &ToolEvent, view: &ViewCtx) -> Option<StrokeInput> {
         match event {
             ToolEvent::Begin(s) => {
                 if matches!(self, Self::Idle) {
@@ -42,13 +52,13 @@ impl DrawTool {
                         viewport: DVec2::new(size.x.into(), size.y.into()),
                     };
                 }
-                ToolOutput::None
+                None
             }
             ToolEvent::Move(s) => {
                 if let Self::Drawing { points, .. } = self {
                     push_distinct(points, point(s, view));
                 }
-                ToolOutput::None
+                None
             }
             ToolEvent::End(s) => {
                 let Self::Drawing {
@@ -57,22 +67,21 @@ impl DrawTool {
                     viewport,
                 } = std::mem::take(self)
                 else {
-                    return ToolOutput::None;
+                    return None;
                 };
                 push_distinct(&mut points, point(s, view));
-                let input = StrokeInput {
+                Some(StrokeInput {
                     viewport: viewport.to_array(),
                     camera,
                     stroke: points
                         .iter()
                         .map(|p| [p.pos.x, p.pos.y, p.pressure])
                         .collect(),
-                };
-                ToolOutput::Commit(op_for_stroke(doc, input))
+                })
             }
             ToolEvent::Cancel => {
                 *self = Self::Idle;
-                ToolOutput::None
+                None
             }
         }
     }
@@ -93,7 +102,8 @@ fn push_distinct(points: &mut Vec<StrokePoint>, p: StrokePoint) {
     }
 }
 
-fn point(s: &crate::input::PointerSample, view: &ViewCtx) -> StrokePoint {
+/// A pointer sample in viewport-relative points, with its pressure.
+pub fn point(s: &crate::input::PointerSample, view: &ViewCtx) -> StrokePoint {
     let local = s.pos_in_screen - view.viewport.min;
     StrokePoint {
         pos: DVec2::new(local.x.into(), local.y.into()),

@@ -1,16 +1,28 @@
 //! Tools: small state machines that turn [`ToolEvent`]s into document operations.
 //!
 //! A tool never touches a mesh; it emits an [`Op`] for the editor, so one gesture is one
-//! undo step and every edit replays from the session.
+//! undo step and every edit replays from the session. [`ToolSet`] holds one tool per
+//! [`Mode`] (FiberMesh's five tools plus over-sketch) and routes events to the active one.
 
+pub mod curve_stroke;
 pub mod draw;
+pub mod mode;
 pub mod oversketch;
+pub mod pull;
+pub mod sketch;
 
 use egui::Rect;
 use sketchmesh_core::camera::Camera;
-use sketchmesh_core::document::Op;
+use sketchmesh_core::curve::StrokePoint;
+use sketchmesh_core::document::{Document, Op, PullSession};
 
 pub use crate::input::router::ToolEvent;
+pub use mode::Mode;
+
+use curve_stroke::CurveStrokeTool;
+use oversketch::{HandlePreview, OversketchTool};
+use pull::PullTool;
+use sketch::SketchTool;
 
 /// What a tool needs to know about the view it acts in.
 #[derive(Clone, Copy, Debug)]
@@ -28,4 +40,89 @@ pub enum ToolOutput {
     None,
     /// Apply this operation as one undoable step.
     Commit(Op),
+    /// Apply these operations in order, one undoable step each.
+    CommitAll(Vec<Op>),
+    /// The gesture did nothing; tell the user why.
+    Refused(String),
+}
+
+/// Every tool, and which one gets the events.
+#[derive(Debug, Default)]
+pub struct ToolSet {
+    mode: Mode,
+    sketch: SketchTool,
+    pull: PullTool,
+    curve_stroke: CurveStrokeTool,
+    oversketch: OversketchTool,
+}
+
+impl ToolSet {
+    /// The active mode.
+    pub fn mode(&self) -> Mode {
+        self.mode
+    }
+
+    /// Switches tools; a gesture in progress is dropped, a stroke waiting for a tap stays
+    /// ink (returned for committing).
+    pub fn set_mode(&mut self, mode: Mode) -> ToolOutput {
+        if mode == self.mode {
+            return ToolOutput::None;
+        }
+        let dropped = self.cancel();
+        self.mode = mode;
+        dropped
+    }
+
+    /// Drops any gesture in progress; see [`ToolSet::set_mode`].
+    pub fn cancel(&mut self) -> ToolOutput {
+        self.pull.cancel();
+        self.curve_stroke.cancel();
+        self.oversketch.cancel();
+        self.sketch.cancel()
+    }
+
+    /// Feeds one event to the active tool.
+    pub fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
+        match self.mode {
+            Mode::Sketch => self.sketch.on_event(event, view, doc),
+            Mode::Pull => self.pull.on_event(event, view, doc),
+            Mode::Erase | Mode::CurveType | Mode::Rub => {
+                self.curve_stroke.on_event(self.mode, event, view, doc)
+            }
+            Mode::Oversketch => self.oversketch.on_event(event, view, doc),
+        }
+    }
+
+    /// Once per frame: lets a pull follow the pointer.
+    pub fn tick(&mut self) -> ToolOutput {
+        self.pull.tick()
+    }
+
+    /// The stroke in progress of the active tool, for live display.
+    pub fn preview(&self) -> Option<&[StrokePoint]> {
+        match self.mode {
+            Mode::Sketch => self.sketch.preview(),
+            Mode::Pull => None,
+            Mode::Erase | Mode::CurveType | Mode::Rub => self.curve_stroke.preview(),
+            Mode::Oversketch => self.oversketch.preview(),
+        }
+    }
+
+    /// A sketch stroke waiting for a confirming tap, shown until then.
+    pub fn waiting(&self) -> Option<(&[StrokePoint], &'static str)> {
+        self.sketch.waiting()
+    }
+
+    /// The pull in progress, whose preview replaces its model's vertices.
+    pub fn live_pull(&self) -> Option<&PullSession> {
+        self.pull.session()
+    }
+
+    /// The silhouette piece an over-sketch stroke would replace.
+    pub fn handle(&self) -> Option<&HandlePreview> {
+        match self.mode {
+            Mode::Oversketch => self.oversketch.handle(),
+            _ => None,
+        }
+    }
 }

@@ -35,7 +35,7 @@ pub struct OversketchTool {
 impl OversketchTool {
     /// Feeds one event; a finished stroke becomes an `oversketch` op.
     pub fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
-        let output = self.stroke.on_event(event, view, doc);
+        let finished = self.stroke.capture(event, view);
         match event {
             ToolEvent::Move(_) => {
                 self.samples_since_preview += 1;
@@ -50,12 +50,14 @@ impl OversketchTool {
             }
             ToolEvent::Begin(_) => {}
         }
-        match output {
-            ToolOutput::Commit(Op::Stroke(input) | Op::Create(input)) => {
-                ToolOutput::Commit(Op::Oversketch(input))
-            }
-            other => other,
-        }
+        finished.map_or(ToolOutput::None, |input| {
+            ToolOutput::Commit(Op::Oversketch(input))
+        })
+    }
+
+    /// Drops the stroke in progress.
+    pub fn cancel(&mut self) {
+        *self = Self::default();
     }
 
     /// The stroke in progress, as the draw tool shows it.

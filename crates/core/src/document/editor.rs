@@ -2,12 +2,17 @@
 
 use std::sync::Arc;
 
+use super::curve_edit;
 use super::history::History;
 use super::{Document, ImportInput, Model, Op, PendingCreate, SketchCurve, StrokeInput};
 use crate::curve::{StrokeError, process_stroke};
 use crate::fibermesh::CreateError;
+use crate::fibermesh::add_curve::AddCurveError;
+use crate::fibermesh::curve_pull::PullError;
 use crate::io::{GltfError, ImportFile, ImportLimits, Imported, import_gltf};
+use crate::mesh::remesh::RemeshError;
 use crate::oversketch::{OversketchError, Oversketched, oversketch};
+use crate::solve::SolveError;
 
 /// Why an op was refused. The messages are sentences for the user.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -45,6 +50,27 @@ pub enum CommandError {
     /// An over-sketch was refused.
     #[error("{0}")]
     Oversketch(#[from] OversketchError),
+    /// A curve tool started where no visible control curve is.
+    #[error("No control curve there: start on a curve (the blue and red lines on a shape).")]
+    NoCurveHere,
+    /// A curve was drawn where no model with control curves is.
+    #[error("Draw the curve on a shape made here; imported models are edited with over-sketch.")]
+    NotOnModel,
+    /// An erase would leave a shape with no curve to hold it.
+    #[error("That would erase the last curve holding the shape; a shape needs at least one.")]
+    LastCurve,
+    /// A curve could not be pulled.
+    #[error("{0}")]
+    Pull(#[from] PullError),
+    /// A curve could not be put on the surface.
+    #[error("{0}")]
+    AddCurve(#[from] AddCurveError),
+    /// The surface could not be remeshed after a curve edit.
+    #[error("{0}")]
+    Remesh(#[from] RemeshError),
+    /// The surface could not be re-optimized through its curves.
+    #[error("The surface could not be re-optimized: {0}")]
+    Surface(SolveError),
 }
 
 impl From<StrokeError> for CommandError {
@@ -101,12 +127,17 @@ impl Editor {
                 self.history.record(before);
             }
             Op::Oversketch(input) => {
-                let (index, model) = oversketch_document(&self.document, input)?;
-                let mut next = self.document.clone();
-                next.models[index] = Arc::new(model);
-                let before = std::mem::replace(&mut self.document, next);
-                self.history.record(before);
+                self.replace_model(oversketch_document(&self.document, input)?);
             }
+            Op::Pull(input) => self.replace_model(curve_edit::pull_op(&self.document, input)?),
+            Op::AddCurve(input) => {
+                self.replace_model(curve_edit::add_curve_op(&self.document, input)?);
+            }
+            Op::Erase(input) => self.replace_model(curve_edit::erase_op(&self.document, input)?),
+            Op::SetCurveType(input) => {
+                self.replace_model(curve_edit::set_curve_type_op(&self.document, input)?);
+            }
+            Op::Rub(input) => self.replace_model(curve_edit::rub_op(&self.document, input)?),
             Op::Undo => {
                 if !self.history.undo(&mut self.document) {
                     return Err(CommandError::NothingToUndo);
@@ -133,6 +164,14 @@ impl Editor {
         self.log.push(Op::Create(input));
         self.revision += 1;
         Ok(())
+    }
+
+    /// Records the current document and puts `model` at `index`.
+    fn replace_model(&mut self, (index, model): (usize, Model)) {
+        let mut next = self.document.clone();
+        next.models[index] = Arc::new(model);
+        let before = std::mem::replace(&mut self.document, next);
+        self.history.record(before);
     }
 
     fn add_model(&mut self, model: Model) {

@@ -1,40 +1,95 @@
-//! What a finished stroke means: a new shape, or ink.
+//! What a finished stroke means: a new shape, a curve on a shape, or ink.
 //!
-//! FiberMesh's sketch tool reads intent from the stroke itself: a closed stroke drawn on
-//! empty canvas creates a shape; a stroke that starts on a model is not a creation (later
-//! issues make it a curve on that model); anything else stays as ink on the drawing plane.
+//! FiberMesh's sketch tool reads intent from the stroke itself (thesis §3.2.1, Fig. 3.4): a
+//! closed stroke drawn on empty canvas creates a shape; a stroke that starts on a shape with
+//! control curves adds a curve to it (a closed one after a confirming tap); a stroke from
+//! beside a shape across it adds a cross-section loop after a confirming tap (the gesture the
+//! thesis uses to get a handle for fatness). Without the tap those two stay ink, so nothing
+//! the user drew is lost. Anything else is ink on the drawing plane.
 
 use glam::DVec2;
 
-use super::{Document, Op, StrokeInput};
+use super::{AddCurveInput, Document, Model, Op, StrokeInput};
 use crate::curve::is_closed_loop;
 use crate::geometry::raycast;
 
 /// How far apart, in CSS px, a stroke's ends may be for it to read as closed.
 pub const CLOSE_TOLERANCE_PX: f64 = 40.0;
 
-/// The op a finished sketch stroke stands for in `doc`.
+/// The op a finished sketch stroke stands for in `doc`. An op for which [`needs_tap`] holds
+/// is to be applied only if a tap follows; otherwise the stroke is ink.
 pub fn op_for_stroke(doc: &Document, input: StrokeInput) -> Op {
     let points = input.points();
     let closed = is_closed_loop(&points, CLOSE_TOLERANCE_PX);
-    if closed && !starts_on_model(doc, &input) {
+    let on_curved = |sample: Option<&[f64; 3]>| {
+        sample.is_some_and(|&[x, y, _]| hits_model(doc, &input, DVec2::new(x, y), has_curves))
+    };
+    let starts_on_curved = on_curved(input.stroke.first());
+    let ends_on_curved = on_curved(input.stroke.last());
+    let crosses_curved = || {
+        input.stroke[1..input.stroke.len().saturating_sub(1)]
+            .iter()
+            .any(|s| on_curved(Some(s)))
+    };
+    if starts_on_curved {
+        Op::AddCurve(curve_input(input, closed, false))
+    } else if closed && !starts_on_model(doc, &input) {
         Op::Create(input)
+    } else if !closed && !ends_on_curved && input.stroke.len() > 2 && crosses_curved() {
+        Op::AddCurve(curve_input(input, false, true))
     } else {
         Op::Stroke(input)
     }
 }
 
+/// Whether `op` (from [`op_for_stroke`]) waits for a confirming tap: a closed curve or a
+/// cross-section.
+pub fn needs_tap(op: &Op) -> bool {
+    matches!(op, Op::AddCurve(input) if input.closed || input.cross_section)
+}
+
+/// The ink op for a stroke whose confirming tap did not come.
+pub fn ink_instead(op: Op) -> Op {
+    match op {
+        Op::AddCurve(input) => Op::Stroke(StrokeInput::of_add_curve(&input)),
+        other => other,
+    }
+}
+
 /// Whether the stroke's first point lies over a model in the stroke's view.
 pub fn starts_on_model(doc: &Document, input: &StrokeInput) -> bool {
-    let Some(&[x, y, _]) = input.stroke.first() else {
-        return false;
-    };
-    let (origin, dir) = input
-        .camera
-        .ray_in_world(DVec2::new(x, y), input.viewport_size());
+    input
+        .stroke
+        .first()
+        .is_some_and(|&[x, y, _]| hits_model(doc, input, DVec2::new(x, y), |_| true))
+}
+
+/// Whether the view ray through `screen` hits a model for which `accept` holds.
+fn hits_model(
+    doc: &Document,
+    input: &StrokeInput,
+    screen: DVec2,
+    accept: impl Fn(&Model) -> bool,
+) -> bool {
+    let (origin, dir) = input.camera.ray_in_world(screen, input.viewport_size());
     doc.models
         .iter()
-        .any(|m| raycast(&m.mesh, origin, dir).is_some())
+        .any(|m| accept(m) && raycast(&m.mesh, origin, dir).is_some())
+}
+
+/// Whether a model's shape is held by control curves embedded in its mesh.
+fn has_curves(model: &Model) -> bool {
+    model.curves.iter().any(|c| c.vertices.len() >= 2)
+}
+
+fn curve_input(input: StrokeInput, closed: bool, cross_section: bool) -> AddCurveInput {
+    AddCurveInput {
+        viewport: input.viewport,
+        camera: input.camera,
+        stroke: input.stroke,
+        closed,
+        cross_section,
+    }
 }
 
 #[cfg(test)]
@@ -74,17 +129,41 @@ mod tests {
     }
 
     #[test]
+    fn strokes_on_a_shape_add_curves() {
+        let mut editor = crate::document::Editor::new();
+        editor
+            .apply(Op::Create(circle(DVec2::new(400.0, 300.0), 150.0, 1.0)))
+            .expect("creation");
+        let doc = editor.document();
+        // Open, starting on the model: an open curve, applied at once.
+        let open = op_for_stroke(doc, circle(DVec2::new(400.0, 300.0), 70.0, 0.5));
+        assert!(matches!(&open, Op::AddCurve(c) if !c.closed && !c.cross_section));
+        assert!(!needs_tap(&open));
+        // From beside the model across it: a cross-section, waiting for a tap.
+        let across = StrokeInput {
+            stroke: (0..=40)
+                .map(|i| [200.0 + 10.0 * f64::from(i), 300.0, 0.5])
+                .collect(),
+            ..circle(DVec2::ZERO, 1.0, 1.0)
+        };
+        let cross = op_for_stroke(doc, across.clone());
+        assert!(matches!(&cross, Op::AddCurve(c) if c.cross_section));
+        assert!(needs_tap(&cross));
+        assert_eq!(ink_instead(cross), Op::Stroke(across));
+    }
+
+    #[test]
     fn closed_stroke_starting_on_a_model_is_not_a_creation() {
         let mut editor = crate::document::Editor::new();
         editor
             .apply(Op::Create(circle(DVec2::new(400.0, 300.0), 150.0, 1.0)))
             .expect("creation");
         let doc = editor.document();
-        // Starts at (470, 300): on the model. Beside it, at (700, 300): empty canvas.
-        assert!(matches!(
-            op_for_stroke(doc, circle(DVec2::new(400.0, 300.0), 70.0, 1.0)),
-            Op::Stroke(_)
-        ));
+        // Starts at (470, 300): on the model, so a closed curve after a tap. Beside it, at
+        // (700, 300): empty canvas.
+        let on_model = op_for_stroke(doc, circle(DVec2::new(400.0, 300.0), 70.0, 1.0));
+        assert!(matches!(&on_model, Op::AddCurve(c) if c.closed));
+        assert!(needs_tap(&on_model));
         assert!(matches!(
             op_for_stroke(doc, circle(DVec2::new(690.0, 300.0), 60.0, 1.0)),
             Op::Create(_)

@@ -6,6 +6,7 @@
 //! undo snapshot is a copy of a few pointers and restores the exact previous state.
 
 mod appearance;
+mod curve_edit;
 mod editor;
 mod history;
 mod intent;
@@ -15,9 +16,10 @@ mod pending;
 mod session;
 
 pub use appearance::{AlphaMode, Appearance, Image, Material, Texture, positions_hash};
+pub use curve_edit::{CURVE_PICK_RADIUS_PX, PullSession, curve_type_toggle};
 pub use editor::{CommandError, Editor};
-pub use intent::{CLOSE_TOLERANCE_PX, op_for_stroke, starts_on_model};
+pub use intent::{CLOSE_TOLERANCE_PX, ink_instead, needs_tap, op_for_stroke, starts_on_model};
 pub use model::{ControlCurve, Document, Model, PointCloud, SketchCurve, Stats};
-pub use op::{FileInput, ImportInput, Op, StrokeInput};
+pub use op::{AddCurveInput, CurveTypeInput, FileInput, ImportInput, Op, StrokeInput};
 pub use pending::PendingCreate;
 pub use session::{SESSION_FORMAT, SESSION_VERSION, Session, SessionError};

@@ -21,6 +21,19 @@ pub enum Op {
     /// Redraw part of a model's outline: the silhouette piece the stroke matches moves onto
     /// it and the surface around follows (see [`crate::oversketch::oversketch`]).
     Oversketch(StrokeInput),
+    /// Drag a point of a control curve (FiberMesh deform tool): the first sample is where the
+    /// curve was grabbed, the last where it was released; the curve peels and the surface
+    /// follows.
+    Pull(StrokeInput),
+    /// Put a new smooth control curve on a model: the stroke drawn on it (open), a closed
+    /// stroke on it, or a stroke across it (a cross-section loop).
+    AddCurve(AddCurveInput),
+    /// Remove the parts of control curves the stroke passes over; the surface re-optimizes.
+    Erase(StrokeInput),
+    /// Make the parts of control curves the stroke passes over sharp or smooth.
+    SetCurveType(CurveTypeInput),
+    /// Smooth the control curves near the stroke; each back-and-forth pass smooths more.
+    Rub(StrokeInput),
     /// Undo the last change.
     Undo,
     /// Redo the last undone change.
@@ -30,8 +43,19 @@ pub enum Op {
 impl Op {
     /// The `"op"` tag of every kind of op, as written in session files (in step with
     /// [`Op::name`]; a test checks both against serde).
-    pub const NAMES: &'static [&'static str] =
-        &["stroke", "create", "import", "oversketch", "undo", "redo"];
+    pub const NAMES: &'static [&'static str] = &[
+        "stroke",
+        "create",
+        "import",
+        "oversketch",
+        "pull",
+        "add_curve",
+        "erase",
+        "set_curve_type",
+        "rub",
+        "undo",
+        "redo",
+    ];
 
     /// The `"op"` tag of this op.
     pub fn name(&self) -> &'static str {
@@ -40,10 +64,47 @@ impl Op {
             Op::Create(_) => "create",
             Op::Import(_) => "import",
             Op::Oversketch(_) => "oversketch",
+            Op::Pull(_) => "pull",
+            Op::AddCurve(_) => "add_curve",
+            Op::Erase(_) => "erase",
+            Op::SetCurveType(_) => "set_curve_type",
+            Op::Rub(_) => "rub",
             Op::Undo => "undo",
             Op::Redo => "redo",
         }
     }
+}
+
+/// An `add_curve` op: the stroke and which kind of curve it makes.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AddCurveInput {
+    /// Viewport size `[width, height]` in CSS px.
+    pub viewport: [f64; 2],
+    /// The camera the stroke was drawn with.
+    pub camera: Camera,
+    /// Raw samples `[x, y, pressure]`, as in [`StrokeInput`].
+    pub stroke: Vec<[f64; 3]>,
+    /// A closed stroke on the surface (confirmed by a tap) makes a closed curve.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub closed: bool,
+    /// A stroke across the model (confirmed by a tap) makes a cross-section loop.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub cross_section: bool,
+}
+
+/// A `set_curve_type` op: the stroke along the curves and the type they get.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CurveTypeInput {
+    /// Viewport size `[width, height]` in CSS px.
+    pub viewport: [f64; 2],
+    /// The camera the stroke was drawn with.
+    pub camera: Camera,
+    /// Raw samples `[x, y, pressure]`, as in [`StrokeInput`].
+    pub stroke: Vec<[f64; 3]>,
+    /// `true`: the curves crease the surface; `false`: the surface is smooth across them.
+    pub sharp: bool,
 }
 
 /// The files of an import: the .glb or .gltf first, then the files it refers to.
@@ -117,6 +178,24 @@ pub struct StrokeInput {
 }
 
 impl StrokeInput {
+    /// The stroke part of an `add_curve` op.
+    pub fn of_add_curve(input: &AddCurveInput) -> StrokeInput {
+        StrokeInput {
+            viewport: input.viewport,
+            camera: input.camera,
+            stroke: input.stroke.clone(),
+        }
+    }
+
+    /// The stroke part of a `set_curve_type` op.
+    pub fn of_curve_type(input: &CurveTypeInput) -> StrokeInput {
+        StrokeInput {
+            viewport: input.viewport,
+            camera: input.camera,
+            stroke: input.stroke.clone(),
+        }
+    }
+
     /// The samples as [`StrokePoint`]s.
     pub fn points(&self) -> Vec<StrokePoint> {
         self.stroke
@@ -134,6 +213,14 @@ impl StrokeInput {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn stroke() -> StrokeInput {
+        StrokeInput {
+            viewport: [1.0, 1.0],
+            camera: Camera::default(),
+            stroke: Vec::new(),
+        }
+    }
 
     #[test]
     fn names_match_serde_tags() {
@@ -154,11 +241,23 @@ mod tests {
                     data: Some(Arc::new(vec![1, 2, 3])),
                 }],
             }),
-            Op::Oversketch(StrokeInput {
+            Op::Oversketch(stroke()),
+            Op::Pull(stroke()),
+            Op::AddCurve(AddCurveInput {
                 viewport: [1.0, 1.0],
                 camera: Camera::default(),
                 stroke: Vec::new(),
+                closed: true,
+                cross_section: false,
             }),
+            Op::Erase(stroke()),
+            Op::SetCurveType(CurveTypeInput {
+                viewport: [1.0, 1.0],
+                camera: Camera::default(),
+                stroke: Vec::new(),
+                sharp: true,
+            }),
+            Op::Rub(stroke()),
             Op::Undo,
             Op::Redo,
         ];

@@ -197,7 +197,15 @@ fn parse_op(value: Value) -> Result<Op, String> {
 /// Whether an op is just its `"op"` tag. No wildcard, so a new op must be sorted here.
 fn has_no_fields(op: &Op) -> bool {
     match op {
-        Op::Stroke(_) | Op::Create(_) | Op::Import(_) | Op::Oversketch(_) => false,
+        Op::Stroke(_)
+        | Op::Create(_)
+        | Op::Import(_)
+        | Op::Oversketch(_)
+        | Op::Pull(_)
+        | Op::AddCurve(_)
+        | Op::Erase(_)
+        | Op::SetCurveType(_)
+        | Op::Rub(_) => false,
         Op::Undo | Op::Redo => true,
     }
 }

@@ -34,17 +34,25 @@
 //! Smooth and sharp curves (the thesis leaves the difference unstated): a smooth curve
 //! vertex keeps its Laplacian row, so the surface must be smooth across it, and its
 //! magnitude takes part in the smoothing. A sharp curve vertex has *no* Laplacian row in
-//! the position system (a positional, C⁰ constraint only), and in the smoothing it has no
-//! row and is left out of its neighbours' rows (`L_d`), so curvature does not diffuse
-//! across the crease. Changing a curve's kind changes the matrices: build a new
-//! [`FairSurface`].
+//! the position system (a positional, C⁰ constraint only), no edge-vector rows `B` (they
+//! hold the spokes' directions from one iteration to the next, which kept the surface
+//! wrapping round the curve), and in the smoothing it has no row and is left out of its
+//! neighbours' rows (`L_d`), so curvature does not diffuse across the crease. The surface
+//! within [`SHARP_BAND`] of a sharp curve aims for zero magnitude (see there). Changing a
+//! curve's kind changes the matrices: build a new [`FairSurface`].
+//!
+//! Local edits: [`FairSurface::new_regional`] solves a region only, the rest held, and
+//! [`FairSurface::new_relaxing`] interpolates the target magnitudes of some vertices from
+//! around them instead of measuring them (after an erase, the bump the erased curve held
+//! gives way).
 
 use glam::DVec3;
 
 use super::control_curve::{ControlCurve, CurveKind};
 use super::fair_systems::{self, DIFFUSION_WEIGHT, EDGE_WEIGHT};
 use super::measure::{Measures, Rings};
-use crate::mesh::Mesh;
+use super::region::region_around;
+use crate::mesh::{Mesh, VertexId};
 use crate::solve::{Prefactored, SolveError};
 
 /// What [`FairSurface::run`] did.
@@ -60,14 +68,26 @@ pub struct RunSummary {
 }
 
 /// The prefactored fair-surface optimization of one mesh and curve set; see the module docs.
+///
+/// It may cover only a region of the mesh ([`FairSurface::new_regional`]): the unknowns are
+/// then the region's vertices, framed by two fixed rings of their neighbours (the first
+/// ring completes the region's Laplacians, the second completes the first ring's measures),
+/// and everything is indexed locally; positions still come and go as whole-mesh arrays.
 #[derive(Debug)]
 pub struct FairSurface {
+    /// Number of vertices of the whole mesh.
+    n_mesh_vertices: usize,
+    /// The mesh vertex of each local vertex (the identity for a whole-mesh surface).
+    mesh_vertex: Vec<u32>,
+    /// Whether a local vertex is in the region being solved (not the fixed frame).
+    is_region: Vec<bool>,
     triangles: Vec<[u32; 3]>,
     rings: Rings,
     /// Each vertex's neighbours along the curves it lies on.
     curve_rings: Rings,
     is_curve: Vec<bool>,
-    /// Vertices with a Laplacian row in the position system (all but sharp curve vertices).
+    /// Vertices with a Laplacian row in the position system (region vertices but sharp
+    /// curve vertices).
     laplacian_rows: Vec<u32>,
     /// The edges `B`, with their curve vertex first.
     edge_rows: Vec<[u32; 2]>,
@@ -76,15 +96,19 @@ pub struct FairSurface {
     diffusion: Prefactored,
     placement: Prefactored,
     measures: Measures,
+    /// Vertices near sharp curves, whose target magnitude is zero (see [`SHARP_BAND`]).
+    is_flat: Vec<bool>,
     /// The smoothed magnitudes `c`, from `c'` measured once; see the module docs.
     target_magnitudes: Vec<f64>,
     /// Whether `target_magnitudes` holds a measurement.
     has_magnitudes: bool,
+    /// The current mean edge lengths `e'` (the fixed frame's values in the smoothing).
+    current_lengths: Vec<f64>,
     /// The smoothed mean edge lengths `e` of the current iteration.
     target_lengths: Vec<f64>,
     diffusion_rhs: Vec<f64>,
-    zeros: Vec<f64>,
     placement_rhs: Vec<DVec3>,
+    local_positions: Vec<DVec3>,
     solved: Vec<DVec3>,
 }
 
@@ -96,48 +120,161 @@ impl FairSurface {
     /// factorization errors of [`Prefactored::new`] (for example when no curve touches some
     /// connected part, which then floats free).
     pub fn new(mesh: &Mesh, curves: &[ControlCurve]) -> Result<FairSurface, SolveError> {
+        Self::new_relaxing(mesh, curves, &[])
+    }
+
+    /// [`FairSurface::new`] whose target magnitudes at the vertices with `relax[v]` are
+    /// not measured but interpolated from around (the diffusion has no data rows there): for
+    /// after a curve was erased or changed type, where the curvature the old constraint
+    /// forced should give way. An empty `relax` relaxes nothing.
+    ///
+    /// Errors: those of [`FairSurface::new`].
+    pub fn new_relaxing(
+        mesh: &Mesh,
+        curves: &[ControlCurve],
+        relax: &[bool],
+    ) -> Result<FairSurface, SolveError> {
+        let mesh_vertex: Vec<u32> = (0..mesh.n_vertices() as u32).collect();
+        Self::build(mesh, curves, mesh_vertex, mesh.n_vertices(), relax)
+    }
+
+    /// [`FairSurface::new_relaxing`] solving only the vertices with `region[v]`, every other
+    /// vertex held where it is: for a local edit, whose cost then follows the region, not the
+    /// mesh, and which leaves the rest of the shape exactly as it was.
+    ///
+    /// Errors: those of [`FairSurface::new`], and [`SolveError::DimensionMismatch`] when
+    /// `region` does not have one entry per vertex.
+    pub fn new_regional(
+        mesh: &Mesh,
+        curves: &[ControlCurve],
+        region: &[bool],
+        relax: &[bool],
+    ) -> Result<FairSurface, SolveError> {
         let n = mesh.n_vertices();
+        if region.len() != n {
+            return Err(SolveError::DimensionMismatch {
+                what: "region",
+                expected: n,
+                found: region.len(),
+            });
+        }
+        let mut order: Vec<u32> = (0..n as u32).filter(|&v| region[v as usize]).collect();
+        let n_region = order.len();
+        let mut is_local = region.to_vec();
+        let mut frontier = 0..n_region;
+        for _ring in 0..2 {
+            let start = order.len();
+            for k in frontier {
+                for w in mesh.vertex_neighbors(VertexId(order[k])) {
+                    if !is_local[w.index()] {
+                        is_local[w.index()] = true;
+                        order.push(w.0);
+                    }
+                }
+            }
+            frontier = start..order.len();
+        }
+        Self::build(mesh, curves, order, n_region, relax)
+    }
+
+    /// Assembles and factors the systems over the local vertices `mesh_vertex`, of which the
+    /// first `n_region` are solved for (see the struct docs), relaxing the magnitudes at the
+    /// mesh vertices with `relax[v]` and near sharp curves.
+    fn build(
+        mesh: &Mesh,
+        curves: &[ControlCurve],
+        mesh_vertex: Vec<u32>,
+        n_region: usize,
+        relax: &[bool],
+    ) -> Result<FairSurface, SolveError> {
+        let n_mesh = mesh.n_vertices();
+        let n = mesh_vertex.len();
+        let mut local = vec![u32::MAX; n_mesh];
+        for (k, &v) in mesh_vertex.iter().enumerate() {
+            local[v as usize] = k as u32;
+        }
+        let is_region: Vec<bool> = (0..n).map(|k| k < n_region).collect();
         let (mut is_curve, mut is_sharp) = (vec![false; n], vec![false; n]);
         let mut curve_edges = Vec::new();
         for curve in curves {
             for &v in &curve.vertices {
-                if v.index() >= n {
+                if v.index() >= n_mesh {
                     return Err(SolveError::DimensionMismatch {
                         what: "curve vertex index",
-                        expected: n,
+                        expected: n_mesh,
                         found: v.index(),
                     });
                 }
-                is_curve[v.index()] = true;
-                is_sharp[v.index()] |= curve.kind == CurveKind::Sharp;
+                if let Some(&k) = local.get(v.index()).filter(|&&k| k != u32::MAX) {
+                    is_curve[k as usize] = true;
+                    is_sharp[k as usize] |= curve.kind == CurveKind::Sharp;
+                }
             }
-            curve_edges.extend(curve.vertices.windows(2).map(|w| [w[0].0, w[1].0]));
-            if let (true, Some(first), Some(last)) = (
-                curve.is_closed,
-                curve.vertices.first(),
-                curve.vertices.last(),
-            ) {
-                curve_edges.push([last.0, first.0]);
-            }
+            let closing = curve
+                .is_closed
+                .then(|| curve.vertices.last().zip(curve.vertices.first()))
+                .flatten()
+                .map(|(&a, &b)| [a, b]);
+            let edges = curve
+                .vertices
+                .windows(2)
+                .map(|w| [w[0], w[1]])
+                .chain(closing);
+            curve_edges.extend(edges.filter_map(|[a, b]| {
+                let (a, b) = (local[a.index()], local[b.index()]);
+                (a != u32::MAX && b != u32::MAX).then_some([a, b])
+            }));
         }
-        let rings = Rings::of_mesh(mesh);
-        let laplacian_rows: Vec<u32> = (0..n as u32).filter(|&i| !is_sharp[i as usize]).collect();
+        let rings = local_rings(mesh, &mesh_vertex, &local);
+        let triangles: Vec<[u32; 3]> = mesh
+            .triangles()
+            .iter()
+            .map(|t| t.map(|v| local[v as usize]))
+            .filter(|t| t.iter().all(|&k| k != u32::MAX))
+            .collect();
+        let laplacian_rows: Vec<u32> = (0..n_region as u32)
+            .filter(|&i| !is_sharp[i as usize])
+            .collect();
         let mut edge_rows = Vec::new();
-        for i in (0..n).filter(|&i| is_curve[i]) {
+        for i in (0..n).filter(|&i| is_curve[i] && !is_sharp[i]) {
             edge_rows.extend(
                 rings
                     .ring(i)
                     .iter()
-                    .filter(|&&j| !is_curve[j as usize])
+                    .filter(|&&j| !is_curve[j as usize] && is_region[j as usize])
                     .map(|&j| [i as u32, j]),
             );
         }
-        let (diffusion, n_smoothing_rows) = fair_systems::factor_diffusion(&rings, &is_sharp)?;
-        let placement =
-            fair_systems::factor_placement(&rings, &laplacian_rows, &edge_rows, &is_curve)?;
+        let is_frame: Vec<bool> = is_region.iter().map(|&r| !r).collect();
+        let near_sharp = near_sharp_curves(mesh, curves);
+        let is_flat: Vec<bool> = mesh_vertex
+            .iter()
+            .map(|&v| near_sharp[v as usize])
+            .collect();
+        // Flat targets are data too; sharp vertices take no part in the smoothing, so they
+        // keep their own.
+        let has_data: Vec<bool> = (0..n)
+            .map(|k| {
+                let relaxed = relax.get(mesh_vertex[k] as usize).copied().unwrap_or(false);
+                is_sharp[k] || is_flat[k] || !relaxed
+            })
+            .collect();
+        let (diffusion, n_smoothing_rows) =
+            fair_systems::factor_diffusion(&rings, &is_sharp, &is_region, &has_data, &is_frame)?;
+        let is_fixed: Vec<bool> = (0..n).map(|i| is_curve[i] || is_frame[i]).collect();
+        let placement = fair_systems::factor_placement(
+            &rings,
+            &laplacian_rows,
+            &edge_rows,
+            &is_curve,
+            &is_fixed,
+        )?;
         let n_rows = laplacian_rows.len() + edge_rows.len();
         Ok(FairSurface {
-            triangles: mesh.triangles().to_vec(),
+            n_mesh_vertices: n_mesh,
+            mesh_vertex,
+            is_region,
+            triangles,
             curve_rings: Rings::from_edges(n, curve_edges),
             rings,
             is_curve,
@@ -147,19 +284,21 @@ impl FairSurface {
             diffusion,
             placement,
             measures: Measures::new(n),
+            is_flat,
             target_magnitudes: vec![0.0; n],
             has_magnitudes: false,
+            current_lengths: vec![0.0; n],
             target_lengths: vec![0.0; n],
             diffusion_rhs: vec![0.0; n_smoothing_rows + n],
-            zeros: vec![0.0; n],
             placement_rhs: vec![DVec3::ZERO; n_rows],
+            local_positions: vec![DVec3::ZERO; n],
             solved: vec![DVec3::ZERO; n],
         })
     }
 
-    /// Number of vertices the surface was built for.
+    /// Number of vertices of the mesh the surface was built for.
     pub fn n_vertices(&self) -> usize {
-        self.rings.len()
+        self.n_mesh_vertices
     }
 
     /// Makes the next iteration measure the Laplacian magnitudes from the geometry again
@@ -169,41 +308,43 @@ impl FairSurface {
         self.has_magnitudes = false;
     }
 
+    /// Measures the Laplacian magnitudes the surface aims for on `positions` (a whole-mesh
+    /// array), instead of on the positions of the first iteration: for an edit that moved
+    /// curves, whose surface should keep the curvature it had before.
+    ///
+    /// Errors: [`SolveError::DimensionMismatch`] when `positions` has the wrong length.
+    pub fn measure_magnitudes(&mut self, positions: &[DVec3]) -> Result<(), SolveError> {
+        self.gather(positions)?;
+        self.measures
+            .update(&self.triangles, &self.rings, &self.local_positions);
+        self.smooth_magnitudes()
+    }
+
     /// One iteration (see the module docs) with back-substitutions only; allocates nothing.
-    /// Curve vertices keep the positions they have in `positions`. Returns the largest
-    /// vertex displacement (absolute).
+    /// Curve vertices, and every vertex outside the region of a regional surface, keep the
+    /// positions they have in `positions`. Returns the largest vertex displacement
+    /// (absolute).
     ///
     /// Errors: [`SolveError::DimensionMismatch`] when `positions` has the wrong length.
     pub fn iterate(&mut self, positions: &mut [DVec3]) -> Result<f64, SolveError> {
-        let n = self.n_vertices();
-        if positions.len() != n {
-            return Err(SolveError::DimensionMismatch {
-                what: "positions",
-                expected: n,
-                found: positions.len(),
-            });
-        }
+        self.gather(positions)?;
+        let n = self.mesh_vertex.len();
         self.measures
-            .update(&self.triangles, &self.rings, positions);
+            .update(&self.triangles, &self.rings, &self.local_positions);
         // The magnitudes are measured and smoothed once; the lengths every iteration.
         if !self.has_magnitudes {
-            let rows = &mut self.diffusion_rhs[self.n_smoothing_rows..];
-            for (row, &magnitude) in rows.iter_mut().zip(&self.measures.magnitudes) {
-                *row = DIFFUSION_WEIGHT * magnitude;
-            }
-            self.diffusion.solve_scalar(
-                &self.diffusion_rhs,
-                &self.zeros,
-                &mut self.target_magnitudes,
-            )?;
-            self.has_magnitudes = true;
+            self.smooth_magnitudes()?;
         }
         for i in 0..n {
+            self.current_lengths[i] = self.current_length(i);
             self.diffusion_rhs[self.n_smoothing_rows + i] =
-                DIFFUSION_WEIGHT * self.current_length(i, positions);
+                DIFFUSION_WEIGHT * self.current_lengths[i];
         }
-        self.diffusion
-            .solve_scalar(&self.diffusion_rhs, &self.zeros, &mut self.target_lengths)?;
+        self.diffusion.solve_scalar(
+            &self.diffusion_rhs,
+            &self.current_lengths,
+            &mut self.target_lengths,
+        )?;
         let m = &self.measures;
         for (row, &i) in self.laplacian_rows.iter().enumerate() {
             let i = i as usize;
@@ -211,24 +352,64 @@ impl FairSurface {
             self.placement_rhs[row] = w * m.areas[i] * self.target_magnitudes[i] * m.normals[i];
         }
         let offset = self.laplacian_rows.len();
+        let local = &self.local_positions;
         for (k, &[i, j]) in self.edge_rows.iter().enumerate() {
             let (i, j) = (i as usize, j as usize);
             let length = 0.5 * (self.target_lengths[i] + self.target_lengths[j]);
-            let direction = (positions[i] - positions[j]).normalize_or_zero();
+            let direction = (local[i] - local[j]).normalize_or_zero();
             self.placement_rhs[offset + k] = EDGE_WEIGHT * length * direction;
         }
         self.placement
-            .solve(&self.placement_rhs, positions, &mut self.solved)?;
+            .solve(&self.placement_rhs, &self.local_positions, &mut self.solved)?;
         let mut step = 0.0f64;
-        for (p, &q) in positions.iter_mut().zip(&self.solved) {
-            step = step.max(p.distance(q));
-            *p = q;
+        for (k, &q) in self.solved.iter().enumerate() {
+            if self.is_region[k] {
+                let p = &mut positions[self.mesh_vertex[k] as usize];
+                step = step.max(p.distance(q));
+                *p = q;
+            }
         }
         Ok(step)
     }
 
+    /// Copies the local vertices' positions out of the whole-mesh array `positions`.
+    fn gather(&mut self, positions: &[DVec3]) -> Result<(), SolveError> {
+        if positions.len() != self.n_mesh_vertices {
+            return Err(SolveError::DimensionMismatch {
+                what: "positions",
+                expected: self.n_mesh_vertices,
+                found: positions.len(),
+            });
+        }
+        for (p, &v) in self.local_positions.iter_mut().zip(&self.mesh_vertex) {
+            *p = positions[v as usize];
+        }
+        Ok(())
+    }
+
+    /// Smooths the magnitudes just measured into the targets `c` (Eq. 3.6).
+    fn smooth_magnitudes(&mut self) -> Result<(), SolveError> {
+        let rows = &mut self.diffusion_rhs[self.n_smoothing_rows..];
+        let measured = self.measures.magnitudes.iter().zip(&self.is_flat);
+        for (row, (&magnitude, &is_flat)) in rows.iter_mut().zip(measured) {
+            *row = if is_flat {
+                0.0
+            } else {
+                DIFFUSION_WEIGHT * magnitude
+            };
+        }
+        self.diffusion.solve_scalar(
+            &self.diffusion_rhs,
+            &self.measures.magnitudes,
+            &mut self.target_magnitudes,
+        )?;
+        self.has_magnitudes = true;
+        Ok(())
+    }
+
     /// `e'_i`: the mean length of the edges at `i`, or of its curve edges on a curve.
-    fn current_length(&self, i: usize, positions: &[DVec3]) -> f64 {
+    fn current_length(&self, i: usize) -> f64 {
+        let positions = &self.local_positions;
         let along = self.curve_rings.ring(i);
         if along.is_empty() {
             return self.measures.edge_lengths[i];
@@ -269,6 +450,46 @@ impl FairSurface {
         }
         Ok(summary)
     }
+}
+
+/// How far from a sharp curve (as a fraction of the bounding-box diagonal) the surface aims
+/// for zero magnitude. Measured next to a sharp curve, the magnitude is that of the surface
+/// wrapping smoothly around it, which a kept magnitude would keep wrapping; FiberMesh's
+/// magnitudes, re-measured and smoothed every iteration, flatten there instead until the
+/// sides meet at a crease. Flat targets in a band get that crease directly.
+pub const SHARP_BAND: f64 = 0.025;
+
+/// The mesh vertices within [`SHARP_BAND`] of a sharp curve, themselves included.
+fn near_sharp_curves(mesh: &Mesh, curves: &[ControlCurve]) -> Vec<bool> {
+    let sharp: Vec<u32> = curves
+        .iter()
+        .filter(|c| c.kind == CurveKind::Sharp)
+        .flat_map(|c| c.vertices.iter().map(|v| v.0))
+        .collect();
+    if sharp.is_empty() {
+        return vec![false; mesh.n_vertices()];
+    }
+    let diagonal = mesh.bounding_box().map_or(0.0, |(lo, hi)| lo.distance(hi));
+    region_around(mesh, &sharp, SHARP_BAND * diagonal)
+}
+
+/// The one-rings of the local vertices `mesh_vertex` in local indices (`local` maps mesh
+/// vertices to them, `u32::MAX` outside), keeping only local neighbours.
+fn local_rings(mesh: &Mesh, mesh_vertex: &[u32], local: &[u32]) -> Rings {
+    let mut rings = Rings {
+        start: Vec::with_capacity(mesh_vertex.len() + 1),
+        neighbors: Vec::new(),
+    };
+    rings.start.push(0);
+    for &v in mesh_vertex {
+        rings.neighbors.extend(
+            mesh.vertex_neighbors(VertexId(v))
+                .map(|w| local[w.index()])
+                .filter(|&k| k != u32::MAX),
+        );
+        rings.start.push(rings.neighbors.len() as u32);
+    }
+    rings
 }
 
 #[cfg(test)]

@@ -14,8 +14,10 @@ pub(crate) const EDGE_WEIGHT: f64 = 1.0;
 /// with 2 at 75° (thinner arms still reach about 95°); with 10 the interior folds.
 pub(crate) const SMOOTH_CURVE_WEIGHT: f64 = 2.0;
 
-/// `[L_d; w_d I]`: a smoothing row for each non-sharp vertex over its non-sharp neighbours
-/// (so nothing diffuses across a sharp curve), then identity rows. Returns the factored
+/// `[L_d; w_d I]`: a smoothing row for each non-sharp vertex with `has_rows` over its
+/// non-sharp neighbours (so nothing diffuses across a sharp curve), then identity rows,
+/// left empty where not `has_data` (those targets are interpolated from around). Unknowns
+/// with `fixed` hold given values (the frame of a regional solve). Returns the factored
 /// system and the number of smoothing rows.
 ///
 /// Errors: those of [`Prefactored::new`] (none for a valid mesh: the identity rows make
@@ -23,11 +25,14 @@ pub(crate) const SMOOTH_CURVE_WEIGHT: f64 = 2.0;
 pub(crate) fn factor_diffusion(
     rings: &Rings,
     is_sharp: &[bool],
+    has_rows: &[bool],
+    has_data: &[bool],
+    fixed: &[bool],
 ) -> Result<(Prefactored, usize), SolveError> {
     let n = rings.len();
     let is_smooth = |j: &&u32| !is_sharp[**j as usize];
     let smoothing: Vec<usize> = (0..n)
-        .filter(|&i| !is_sharp[i] && rings.ring(i).iter().any(|j| is_smooth(&j)))
+        .filter(|&i| has_rows[i] && !is_sharp[i] && rings.ring(i).iter().any(|j| is_smooth(&j)))
         .collect();
     let n_rows = smoothing.len();
     let mut triplets = Triplets::with_capacity(n_rows + n, n, 8 * n);
@@ -38,13 +43,10 @@ pub(crate) fn factor_diffusion(
             triplets.push(row, j as usize, -1.0 / count);
         }
     }
-    for i in 0..n {
+    for i in (0..n).filter(|&i| has_data[i]) {
         triplets.push(n_rows + i, i, DIFFUSION_WEIGHT);
     }
-    Ok((
-        Prefactored::new(&triplets.build(), &vec![false; n])?,
-        n_rows,
-    ))
+    Ok((Prefactored::new(&triplets.build(), fixed)?, n_rows))
 }
 
 /// The weight of vertex `i`'s Laplacian row in the position system.
@@ -52,7 +54,8 @@ pub(crate) fn laplacian_weight(is_curve: bool) -> f64 {
     if is_curve { SMOOTH_CURVE_WEIGHT } else { 1.0 }
 }
 
-/// `[w_i L rows of laplacian_rows; w_e (v_i - v_j) for B]` with curve vertices fixed.
+/// `[w_i L rows of laplacian_rows; w_e (v_i - v_j) for B]` with the `fixed` vertices (the
+/// curves, and the frame of a regional solve) given.
 ///
 /// Errors: those of [`Prefactored::new`], for example when a connected part has no curve
 /// vertex.
@@ -61,6 +64,7 @@ pub(crate) fn factor_placement(
     laplacian_rows: &[u32],
     edge_rows: &[[u32; 2]],
     is_curve: &[bool],
+    fixed: &[bool],
 ) -> Result<Prefactored, SolveError> {
     let n = rings.len();
     let n_rows = laplacian_rows.len() + edge_rows.len();
@@ -78,7 +82,7 @@ pub(crate) fn factor_placement(
         triplets.push(offset + k, i as usize, EDGE_WEIGHT);
         triplets.push(offset + k, j as usize, -EDGE_WEIGHT);
     }
-    Prefactored::new(&triplets.build(), is_curve)
+    Prefactored::new(&triplets.build(), fixed)
 }
 
 #[cfg(test)]
@@ -93,7 +97,9 @@ mod tests {
         let rings = Rings::of_mesh(&mesh);
         let n = mesh.n_vertices();
         // No sharp vertices: a constant is its own smoothing.
-        let (mut solver, n_rows) = factor_diffusion(&rings, &vec![false; n]).unwrap();
+        let all = vec![true; n];
+        let none = vec![false; n];
+        let (mut solver, n_rows) = factor_diffusion(&rings, &none, &all, &all, &none).unwrap();
         assert_eq!(n_rows, n);
         let mut rhs = vec![DVec3::ZERO; 2 * n];
         rhs[n..].fill(DVec3::new(2.0, 3.0, 0.0));
@@ -106,7 +112,7 @@ mod tests {
         // A sharp vertex keeps exactly its own value: it has only its identity row.
         let mut is_sharp = vec![false; n];
         is_sharp[0] = true;
-        let (mut solver, n_rows) = factor_diffusion(&rings, &is_sharp).unwrap();
+        let (mut solver, n_rows) = factor_diffusion(&rings, &is_sharp, &all, &all, &none).unwrap();
         assert_eq!(n_rows, n - 1);
         let mut rhs = vec![DVec3::ZERO; n_rows + n];
         rhs[n_rows] = DVec3::X * 5.0;

@@ -19,8 +19,6 @@
 
 use glam::DVec3;
 
-use crate::mesh::Mesh;
-
 /// The neighbours of every vertex in compressed rows.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Rings {
@@ -32,7 +30,8 @@ pub(crate) struct Rings {
 
 impl Rings {
     /// The one-rings of a mesh, counter-clockwise.
-    pub(crate) fn of_mesh(mesh: &Mesh) -> Rings {
+    #[cfg(test)]
+    pub(crate) fn of_mesh(mesh: &crate::mesh::Mesh) -> Rings {
         let mut rings = Rings {
             start: Vec::with_capacity(mesh.n_vertices() + 1),
             neighbors: Vec::new(),

@@ -48,7 +48,10 @@
 //! narrow necks) front and back meet at a visible angle (up to about 95° at 1500
 //! vertices) instead of rounding off.
 
+pub mod add_curve;
 mod control_curve;
+pub mod curve_pull;
+pub mod curve_tools;
 mod fair_surface;
 mod fair_systems;
 mod inflate;
@@ -56,6 +59,7 @@ mod measure;
 mod outline;
 mod plane;
 mod polygon;
+mod region;
 mod segment_grid;
 mod triangulate;
 
@@ -65,6 +69,7 @@ pub use control_curve::{ControlCurve, CurveKind};
 pub use fair_surface::{FairSurface, RunSummary};
 pub use outline::{FINE_SPACING_PX, MAX_OVERSHOOT, MIN_AREA_PX2, MIN_ROUNDNESS};
 pub use plane::DrawingPlane;
+pub use region::region_around;
 
 use crate::camera::Camera;
 use crate::curve::{StrokeError, StrokePoint};

@@ -17,5 +17,7 @@ pub use area::{
 };
 pub use bvh::Bvh;
 pub use laplacian::{cotan_laplacian, mean_curvature, mean_curvature_normals, uniform_laplacian};
-pub use normals::{face_normal, face_normals, vertex_normals, vertex_normals_into};
+pub use normals::{
+    face_normal, face_normals, vertex_normals, vertex_normals_into, vertex_normals_of,
+};
 pub use raycast::{RayHit, raycast};

@@ -36,12 +36,19 @@ pub fn vertex_normals(mesh: &Mesh) -> Vec<DVec3> {
 /// [`vertex_normals`] into a reused buffer, resized to the vertex count: after the first
 /// frame it allocates nothing.
 pub fn vertex_normals_into(mesh: &Mesh, out: &mut Vec<DVec3>) {
+    vertex_normals_of(mesh.triangles(), mesh.positions(), out);
+}
+
+/// [`vertex_normals_into`] for positions that are not (yet) a mesh's, such as a live
+/// preview of a deformation: `triangles` index into `positions`.
+pub fn vertex_normals_of(triangles: &[[u32; 3]], positions: &[DVec3], out: &mut Vec<DVec3>) {
     out.clear();
-    out.resize(mesh.n_vertices(), DVec3::ZERO);
-    for f in mesh.faces() {
-        let weighted = face_cross(mesh, f);
-        for v in mesh.face_vertices(f) {
-            out[v.index()] += weighted;
+    out.resize(positions.len(), DVec3::ZERO);
+    for &[a, b, c] in triangles {
+        let [pa, pb, pc] = [a, b, c].map(|v| positions[v as usize]);
+        let weighted = (pb - pa).cross(pc - pa);
+        for v in [a, b, c] {
+            out[v as usize] += weighted;
         }
     }
     for n in out.iter_mut() {

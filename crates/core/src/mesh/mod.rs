@@ -24,6 +24,7 @@ mod build;
 pub mod fixtures;
 mod halfedge;
 pub mod primitives;
+pub mod remesh;
 mod repair;
 mod soup;
 mod topology;

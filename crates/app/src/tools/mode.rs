@@ -1,0 +1,72 @@
+//! The tool modes: FiberMesh's five tools (sketch, deform, erase, type change, rub;
+//! thesis §3.2) and over-sketch, with their toolbar labels and keys.
+
+use egui::Key;
+
+/// Which tool pointer gestures go to.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Mode {
+    /// Draw shapes (closed strokes on empty canvas), curves on shapes, and ink.
+    #[default]
+    Sketch,
+    /// Grab a control curve and drag it; the shape follows.
+    Pull,
+    /// Drag along control curves to remove them.
+    Erase,
+    /// Drag along control curves to switch them between smooth and sharp.
+    CurveType,
+    /// Rub back and forth near a control curve to smooth it.
+    Rub,
+    /// Redraw part of a model's outline.
+    Oversketch,
+}
+
+impl Mode {
+    /// Every mode, in toolbar order.
+    pub const ALL: [Mode; 6] = [
+        Mode::Sketch,
+        Mode::Pull,
+        Mode::Erase,
+        Mode::CurveType,
+        Mode::Rub,
+        Mode::Oversketch,
+    ];
+
+    /// The toolbar label.
+    pub fn label(self) -> &'static str {
+        match self {
+            Mode::Sketch => "Sketch",
+            Mode::Pull => "Pull",
+            Mode::Erase => "Erase",
+            Mode::CurveType => "Sharp/smooth",
+            Mode::Rub => "Rub",
+            Mode::Oversketch => "Over-sketch",
+        }
+    }
+
+    /// The key that selects it (without modifiers).
+    pub fn key(self) -> Key {
+        match self {
+            Mode::Sketch => Key::S,
+            Mode::Pull => Key::P,
+            Mode::Erase => Key::E,
+            Mode::CurveType => Key::T,
+            Mode::Rub => Key::U,
+            Mode::Oversketch => Key::O,
+        }
+    }
+
+    /// What it does, for tooltips and the help window.
+    pub fn hint(self) -> &'static str {
+        match self {
+            Mode::Sketch => {
+                "Closed outline on empty canvas: a shape. On a shape: a curve (closed ones and strokes across a shape: tap to confirm)."
+            }
+            Mode::Pull => "Grab a control curve and drag it; the shape follows",
+            Mode::Erase => "Drag along control curves to remove them",
+            Mode::CurveType => "Drag along control curves to switch smooth (blue) and sharp (red)",
+            Mode::Rub => "Rub back and forth near a control curve to smooth it",
+            Mode::Oversketch => "Draw near an outline where you want it to be",
+        }
+    }
+}

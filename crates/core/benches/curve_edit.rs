@@ -1,0 +1,101 @@
+//! FiberMesh curve editing (issue 4) on created shapes of about 10k and 40k vertices: a pull
+//! of the outline's rightmost point by a fifth of the shape's width. Times the grab
+//! (`PullSession::start`: curve network, regional factorization), one drag frame
+//! (`PullSession::drag`: curve deformation and one back-substitution of the region), and
+//! the committed `pull` op at release (deformation, regional settle, remesh, settle).
+//! Targets: a drag frame under 16 ms at 10k and under 33 ms at 40k in the browser; release
+//! under 250 ms at 10k. Run with
+//! `cargo bench -p sketchmesh-core --bench curve_edit -- --warm-up-time 1 --measurement-time 3`.
+
+use std::hint::black_box;
+use std::sync::Arc;
+
+use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use glam::DVec2;
+use sketchmesh_core::camera::Camera;
+use sketchmesh_core::document::{Editor, FileInput, ImportInput, Op, PullSession, StrokeInput};
+use sketchmesh_core::io::write_glb;
+
+#[path = "common/fibermesh_shape.rs"]
+mod fibermesh_shape;
+use fibermesh_shape::{HALF_AXES, VIEWPORT, ellipse_document};
+
+/// An editor holding one created ellipse of about `n` vertices, imported from its .glb as
+/// the page bench does.
+fn shape(n: usize) -> Editor {
+    let document = ellipse_document(n).expect("the ellipse inflates");
+    let mut editor = Editor::new();
+    editor
+        .apply(Op::Import(ImportInput {
+            files: vec![FileInput {
+                name: "ellipse.glb".to_owned(),
+                data: Some(Arc::new(write_glb(&document))),
+            }],
+        }))
+        .expect("the export imports");
+    editor
+}
+
+/// The drag from the outline's rightmost point, `steps` samples, 50 px right in all.
+fn drag(steps: usize) -> StrokeInput {
+    let start = VIEWPORT / 2.0 + DVec2::new(HALF_AXES.x, 0.0);
+    StrokeInput {
+        viewport: VIEWPORT.to_array(),
+        camera: Camera::default(),
+        stroke: (0..=steps)
+            .map(|i| {
+                let p = start + DVec2::X * 50.0 * i as f64 / steps as f64;
+                [p.x, p.y, 0.5]
+            })
+            .collect(),
+    }
+}
+
+fn bench_curve_edit(c: &mut Criterion) {
+    let mut group = c.benchmark_group("pull");
+    group.sample_size(10);
+    for n in [10_000, 40_000] {
+        let editor = shape(n);
+        let vertices = editor.document().stats().vertices;
+        let grab = StrokeInput {
+            stroke: drag(1).stroke[..1].to_vec(),
+            ..drag(1)
+        };
+        group.bench_with_input(BenchmarkId::new("grab", vertices), &editor, |b, editor| {
+            b.iter(|| {
+                PullSession::start(editor.document(), black_box(grab.clone())).expect("grab")
+            });
+        });
+        let samples = drag(40).stroke;
+        group.bench_with_input(
+            BenchmarkId::new("drag_frame", vertices),
+            &editor,
+            |b, editor| {
+                let mut session =
+                    PullSession::start(editor.document(), grab.clone()).expect("grab");
+                // Pull most of the way first, so that frames measure a grown peel and region.
+                for &sample in &samples[1..30] {
+                    session.drag(sample).expect("drag");
+                }
+                let mut k = 30;
+                b.iter(|| {
+                    session.drag(samples[k]).expect("drag");
+                    k = if k + 1 < samples.len() { k + 1 } else { 30 };
+                });
+            },
+        );
+        if n <= 10_000 {
+            group.bench_with_input(
+                BenchmarkId::new("release", vertices),
+                &editor,
+                |b, editor| {
+                    b.iter(|| editor.clone().apply(Op::Pull(drag(40))).expect("pull"));
+                },
+            );
+        }
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench_curve_edit);
+criterion_main!(benches);

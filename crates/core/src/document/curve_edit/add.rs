@@ -1,0 +1,102 @@
+//! Adding a control curve (thesis §3.2.1, Fig. 3.4): the stroke becomes an edge chain on the
+//! model it was drawn on, the mesh is remeshed around it, and the surface settles.
+
+use glam::DVec2;
+
+use super::settle::remesh_and_settle;
+use super::{bounding_diagonal, has_curves, replaced, screen_stroke, solver_curves};
+use crate::document::{AddCurveInput, CommandError, Document, Model, StrokeInput};
+use crate::fibermesh::add_curve::{CurveShape, add_curve};
+use crate::fibermesh::{ControlCurve, CurveKind};
+use crate::geometry::Bvh;
+use crate::mesh::VertexId;
+
+/// How far from a new curve (as a fraction of the model's size) the surface settles after
+/// the remesh: the curve lies on the surface, so only the new vertices need to find it.
+const ADD_REGION: f64 = 0.1;
+
+/// Applies an `add_curve` op: returns the index of the model that got the curve and its
+/// new version. The new curve is smooth, as the thesis' newly painted curves are.
+///
+/// The model is the one the stroke crosses in most samples (a cross-section stroke starts
+/// and ends off the model, so its ends cannot decide).
+///
+/// Errors: the stroke's; [`CommandError::NotOnModel`] when no model with curves is under the
+/// stroke; [`CommandError::AddCurve`] when the curve cannot be placed; remesher and solver
+/// failures.
+pub fn add_curve_op(doc: &Document, input: &AddCurveInput) -> Result<(usize, Model), CommandError> {
+    let stroke_input = StrokeInput::of_add_curve(input);
+    let stroke = screen_stroke(&stroke_input, 2)?;
+    let index = model_under(doc, &stroke_input, &stroke).ok_or(CommandError::NotOnModel)?;
+    let model = &doc.models[index];
+    let shape = match (input.closed, input.cross_section) {
+        (_, true) => CurveShape::CrossSection,
+        (true, false) => CurveShape::Closed,
+        (false, false) => CurveShape::Open,
+    };
+    let embedded = add_curve(
+        &model.mesh,
+        &input.camera,
+        stroke_input.viewport_size(),
+        &stroke,
+        shape,
+    )?;
+    let mut curves = solver_curves(model);
+    for &(a, b, new) in &embedded.split_edges {
+        for curve in &mut curves {
+            insert_on_edge(curve, a, b, new);
+        }
+    }
+    curves.push(ControlCurve {
+        vertices: embedded.chain.iter().map(|&v| VertexId(v)).collect(),
+        is_closed: embedded.closed,
+        kind: CurveKind::Smooth,
+    });
+    let mut changed = vec![false; curves.len()];
+    changed[curves.len() - 1] = true;
+    let radius = ADD_REGION * bounding_diagonal(&model.mesh);
+    let (mesh, curves) = remesh_and_settle(&embedded.mesh, &curves, &changed, radius)?;
+    Ok((index, replaced(model, mesh, &curves)))
+}
+
+/// Inserts `new` between consecutive vertices `a` and `b` of `curve` (either order,
+/// including the closing edge), where an embedding split that curve edge.
+fn insert_on_edge(curve: &mut ControlCurve, a: u32, b: u32, new: u32) {
+    let n = curve.vertices.len();
+    let n_edges = if curve.is_closed {
+        n
+    } else {
+        n.saturating_sub(1)
+    };
+    let is_edge = |k: usize| {
+        let (p, q) = (curve.vertices[k].0, curve.vertices[(k + 1) % n].0);
+        (p, q) == (a, b) || (p, q) == (b, a)
+    };
+    if let Some(k) = (0..n_edges).find(|&k| is_edge(k)) {
+        curve.vertices.insert(k + 1, VertexId(new));
+    }
+}
+
+/// The model with curves that most stroke samples hit, if any sample hits one.
+fn model_under(doc: &Document, input: &StrokeInput, stroke: &[DVec2]) -> Option<usize> {
+    let viewport = input.viewport_size();
+    let rays: Vec<_> = stroke
+        .iter()
+        .map(|&s| input.camera.ray_in_world(s, viewport))
+        .collect();
+    doc.models
+        .iter()
+        .enumerate()
+        .filter(|(_, model)| has_curves(model))
+        .map(|(index, model)| {
+            let bvh = Bvh::new(&model.mesh);
+            let hits = rays
+                .iter()
+                .filter(|&&(origin, dir)| bvh.raycast(&model.mesh, origin, dir).is_some())
+                .count();
+            (hits, index)
+        })
+        .filter(|&(hits, _)| hits > 0)
+        .max()
+        .map(|(_, index)| index)
+}

@@ -1,0 +1,231 @@
+//! The deform tool (thesis §3.2.2): grab a curve point, drag it parallel to the screen; the
+//! curve peels and the surface follows.
+//!
+//! The committed op ([`pull_op`]) deforms the curves for the release point, re-optimizes
+//! the whole surface with a fresh factorization and remeshes. While the pointer is down the
+//! app shows a [`PullSession`] instead: the curve deformation is the same (it depends on
+//! the target only), but the surface is solved only in a region around the grabbed point,
+//! factored once at pointer-down, with every other vertex held: at 40k vertices one
+//! back-substitution of the whole mesh costs ~34 ms in wasm, too slow for 30 fps.
+
+use std::sync::Arc;
+
+use glam::{DVec2, DVec3};
+
+use super::settle::{Change, remesh_and_settle, settle};
+use super::{
+    CurvePick, bounding_diagonal, pick_curve_vertex, replaced, screen_stroke, solver_curves,
+};
+use crate::camera::Camera;
+use crate::document::{CommandError, Document, Model, Op, StrokeInput};
+use crate::fibermesh::curve_pull::{CurveNetwork, CurvePull, PullParams};
+use crate::fibermesh::{ControlCurve, FairSurface, region_around};
+
+/// The region solved while dragging reaches this many peel radii from the grabbed point.
+const REGION_PER_PEEL: f64 = 2.5;
+
+/// The smallest region, as a fraction of the model's bounding-box diagonal.
+const MIN_REGION: f64 = 0.25;
+
+/// Surface iterations per drag frame.
+const ITERATIONS_PER_FRAME: usize = 1;
+
+/// Applies a `pull` op: returns the index of the pulled model and its new version.
+///
+/// Errors: the stroke's, [`CommandError::NoCurveHere`] when the first sample is not over a
+/// visible curve point, and failures of the deformation, remesher or solver.
+pub fn pull_op(doc: &Document, input: &StrokeInput) -> Result<(usize, Model), CommandError> {
+    let stroke = screen_stroke(input, 1)?;
+    let pick = pick_curve_vertex(doc, input, stroke[0])?;
+    let model = &doc.models[pick.model];
+    let curves = solver_curves(model);
+    let (mut pull, node_vertices) = curve_pull(model, &curves, pick)?;
+    let Some(&release) = stroke.last() else {
+        return Err(CommandError::StrokeTooShort);
+    };
+    let target = drag_target(input, model.mesh.position(pick.vertex), release)?;
+    let mut nodes = vec![DVec3::ZERO; node_vertices.len()];
+    let peel = pull.pull_to(target, &mut nodes)?;
+    let mut mesh = model.mesh.clone();
+    for (&v, &p) in node_vertices.iter().zip(&nodes) {
+        mesh.positions_mut()[v as usize] = p;
+    }
+    let change = Change {
+        around: &[pick.vertex.0],
+        radius: region_radius(&model.mesh, peel.radius),
+    };
+    settle(&mut mesh, &curves, model.mesh.positions(), change, false)?;
+    let moved: Vec<bool> = curves
+        .iter()
+        .map(|c| {
+            c.vertices
+                .iter()
+                .any(|&v| mesh.position(v) != model.mesh.position(v))
+        })
+        .collect();
+    let (mesh, curves) = remesh_and_settle(&mesh, &curves, &moved, change.radius)?;
+    Ok((pick.model, replaced(model, mesh, &curves)))
+}
+
+/// A pull in progress: the live preview of a `pull` op while the pointer is down.
+#[derive(Debug)]
+pub struct PullSession {
+    input: StrokeInput,
+    model_index: usize,
+    model: Arc<Model>,
+    curves: Vec<ControlCurve>,
+    grabbed: DVec3,
+    grabbed_vertex: u32,
+    pull: CurvePull,
+    /// The mesh vertex of each node of the curve network.
+    node_vertices: Vec<u32>,
+    nodes: Vec<DVec3>,
+    positions: Vec<DVec3>,
+    surface: FairSurface,
+    region_radius: f64,
+}
+
+impl PullSession {
+    /// Starts a pull where `input`'s first sample is: on the nearest visible curve point.
+    ///
+    /// Errors: [`CommandError::NoCurveHere`] and the stroke's errors, as [`pull_op`].
+    pub fn start(doc: &Document, input: StrokeInput) -> Result<PullSession, CommandError> {
+        let stroke = screen_stroke(&input, 1)?;
+        let pick = pick_curve_vertex(doc, &input, stroke[0])?;
+        let model = Arc::clone(&doc.models[pick.model]);
+        let curves = solver_curves(&model);
+        let (pull, node_vertices) = curve_pull(&model, &curves, pick)?;
+        let radius = region_radius(&model.mesh, 0.0);
+        let surface = regional_surface(&model, &curves, pick.vertex.0, radius)?;
+        Ok(PullSession {
+            input,
+            model_index: pick.model,
+            grabbed: model.mesh.position(pick.vertex),
+            grabbed_vertex: pick.vertex.0,
+            curves,
+            nodes: vec![DVec3::ZERO; node_vertices.len()],
+            positions: model.mesh.positions().to_vec(),
+            model,
+            pull,
+            node_vertices,
+            surface,
+            region_radius: radius,
+        })
+    }
+
+    /// Moves the grabbed point under the pointer sample `[x, y, pressure]`: deforms the
+    /// curves and lets the surface region follow by one back-substitution.
+    ///
+    /// Errors: a sample that does not project into the scene, or a failed solve; the
+    /// session stays as it was.
+    pub fn drag(&mut self, sample: [f64; 3]) -> Result<(), CommandError> {
+        let screen = DVec2::new(sample[0], sample[1]);
+        let target = drag_target(&self.input, self.grabbed, screen)?;
+        let peel = self.pull.pull_to(target, &mut self.nodes)?;
+        let needed = region_radius(&self.model.mesh, peel.radius);
+        if needed > self.region_radius {
+            // Grown with room to spare, so that a drag refactors a few times, not every frame.
+            self.region_radius = 1.5 * needed;
+            self.surface = regional_surface(
+                &self.model,
+                &self.curves,
+                self.grabbed_vertex,
+                self.region_radius,
+            )?;
+        }
+        for (&v, &p) in self.node_vertices.iter().zip(&self.nodes) {
+            self.positions[v as usize] = p;
+        }
+        for _ in 0..ITERATIONS_PER_FRAME {
+            self.surface
+                .iterate(&mut self.positions)
+                .map_err(CommandError::Surface)?;
+        }
+        self.input.stroke.push(sample);
+        Ok(())
+    }
+
+    /// The index of the model being pulled.
+    pub fn model_index(&self) -> usize {
+        self.model_index
+    }
+
+    /// The previewed positions of the pulled model's vertices.
+    pub fn positions(&self) -> &[DVec3] {
+        &self.positions
+    }
+
+    /// The op to commit on release: the drag path from the grab to the last sample.
+    pub fn finish(self) -> Op {
+        Op::Pull(self.input)
+    }
+}
+
+/// How far from the grabbed point (along the surface) a pull with a peel of `peel_radius`
+/// moves the surface: [`REGION_PER_PEEL`] peel radii, at least [`MIN_REGION`] of the
+/// model's size.
+fn region_radius(mesh: &crate::mesh::Mesh, peel_radius: f64) -> f64 {
+    (REGION_PER_PEEL * peel_radius).max(MIN_REGION * bounding_diagonal(mesh))
+}
+
+/// A pull of `model`'s curve network grabbed at `pick`, and the mesh vertex of each node.
+fn curve_pull(
+    model: &Model,
+    curves: &[ControlCurve],
+    pick: CurvePick,
+) -> Result<(CurvePull, Vec<u32>), CommandError> {
+    let chains: Vec<Vec<u32>> = curves
+        .iter()
+        .map(|c| c.vertices.iter().map(|v| v.0).collect())
+        .collect();
+    let chain_refs: Vec<(&[u32], bool)> = chains
+        .iter()
+        .zip(curves)
+        .map(|(chain, curve)| (chain.as_slice(), curve.is_closed))
+        .collect();
+    let network = CurveNetwork::new(model.mesh.positions(), &chain_refs);
+    let node = network
+        .node_of(pick.vertex.0)
+        .ok_or(CommandError::NoCurveHere)?;
+    let node_vertices = (0..network.n_nodes())
+        .map(|node| network.mesh_vertex(node))
+        .collect();
+    let pull = CurvePull::new(network, node, PullParams::default());
+    Ok((pull, node_vertices))
+}
+
+/// The fair surface of `model` solved only within `radius` (along mesh edges) of `grabbed`,
+/// aiming for the magnitudes the model has now.
+fn regional_surface(
+    model: &Model,
+    curves: &[ControlCurve],
+    grabbed: u32,
+    radius: f64,
+) -> Result<FairSurface, CommandError> {
+    let free = region_around(&model.mesh, &[grabbed], radius);
+    let mut surface = FairSurface::new_regional(&model.mesh, curves, &free, &[])
+        .map_err(CommandError::Surface)?;
+    surface
+        .measure_magnitudes(model.mesh.positions())
+        .map_err(CommandError::Surface)?;
+    Ok(surface)
+}
+
+/// Where the grabbed point goes for a pointer at `screen`: on the plane through its rest
+/// position `grabbed` facing the camera (the thesis: "always parallel to the screen").
+fn drag_target(input: &StrokeInput, grabbed: DVec3, screen: DVec2) -> Result<DVec3, CommandError> {
+    plane_point(&input.camera, input.viewport_size(), grabbed, screen).ok_or(CommandError::BadView)
+}
+
+/// The point under `screen` on the plane through `on_plane` facing `camera`.
+fn plane_point(camera: &Camera, viewport: DVec2, on_plane: DVec3, screen: DVec2) -> Option<DVec3> {
+    let (origin, dir) = camera.ray_in_world(screen, viewport);
+    let normal = camera.forward();
+    let facing = dir.dot(normal);
+    if !screen.is_finite() || facing.abs() < 1e-12 {
+        return None;
+    }
+    let t = (on_plane - origin).dot(normal) / facing;
+    let point = origin + t * dir;
+    point.is_finite().then_some(point)
+}

@@ -1,0 +1,229 @@
+//! Adding a control curve (FiberMesh, Nealen's thesis §3.2.1, Fig. 3.4): a stroke drawn
+//! over a shape becomes a chain of mesh edges, the new control curve.
+//!
+//! The curve is the intersection of the surface with the surface swept by the view rays
+//! through the stroke, so it looks, from where it was drawn, exactly like the stroke.
+//! Two methods compute it:
+//! - **Open and closed curves** (`walk.rs`) lie on the visible surface. The stroke is
+//!   resampled at about the edge length on screen and each sample cast onto the
+//!   front-most triangle ([`Bvh`]); between consecutive samples the walk follows the plane
+//!   through both that contains the view ray, splitting each crossed edge. It is local
+//!   (it touches only the triangles under the stroke) and exact (its vertices lie on the
+//!   swept planes, up to snapping, and on the input surface), and since it moves across
+//!   shared edges it cannot jump to another part of the shape the way projecting every
+//!   point separately can.
+//! - **Cross sections** (`level_set.rs`) also run around the back, which no ray reaches,
+//!   so they are the zero set of the signed screen distance to the stroke, cut into the
+//!   mesh edge by edge and traced into loops; the loop nearest the stroke's visible hits
+//!   is the curve.
+//!
+//! Both split edges rather than remeshing, so every input vertex keeps its index and
+//! position and other control curves can follow the splits ([`Embedded::split_edges`]).
+//! Crossings near a vertex snap onto it, so the result has no slivers thinner than a few
+//! percent of an edge; callers remesh around the new curve anyway.
+//!
+//! Limits: a stroke that runs off the shape ends the open curve there (the first run of
+//! hits is kept, also when it jumps over a silhouette onto a part behind); a cross section
+//! through a part of the shape behind the eye is not on the swept surface there; of several
+//! loops a cross section cuts (two legs), only the nearest to the stroke becomes the curve,
+//! though the others are split into the mesh too. Runs in O(stroke samples · edge crossings)
+//! for open and closed curves and O(vertices · stroke segments) for cross sections, plus
+//! building the BVH and the output mesh.
+
+mod level_set;
+mod project;
+mod tri_list;
+mod walk;
+
+use glam::{DVec2, DVec3};
+
+use crate::camera::Camera;
+use crate::geometry::Bvh;
+use crate::mesh::Mesh;
+use crate::oversketch::simplify_stroke;
+use project::{Projector, SurfacePoint};
+use tri_list::TriList;
+
+/// What kind of curve a stroke makes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CurveShape {
+    /// An open curve on the visible surface, where the stroke first runs over the shape.
+    Open,
+    /// A closed loop on the visible surface; the whole stroke must lie over the shape.
+    Closed,
+    /// A closed loop around the shape, front and back, cut by a stroke drawn across it
+    /// from beside it to beside it.
+    CrossSection,
+}
+
+/// A curve embedded in a mesh.
+#[derive(Clone, Debug)]
+pub struct Embedded {
+    /// The mesh with the curve embedded: every vertex of the input keeps its index and
+    /// position; new vertices are appended.
+    pub mesh: Mesh,
+    /// The new curve's vertices in stroke order, consecutive ones joined by mesh edges (and
+    /// last→first when `closed`).
+    pub chain: Vec<u32>,
+    /// Whether the curve is a closed loop.
+    pub closed: bool,
+    /// Every edge split, in order: (a, b, new) means the edge a–b (of the mesh at that
+    /// moment) got vertex `new` between a and b. Callers replay this list to insert `new`
+    /// into other curves that ran along a–b.
+    pub split_edges: Vec<(u32, u32, u32)>,
+}
+
+/// Why a stroke did not become a curve. The messages are sentences for the user.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum AddCurveError {
+    /// No two consecutive stroke samples hit the shape.
+    #[error("Draw the curve on the shape: the stroke misses it.")]
+    Misses,
+    /// Part of a closed stroke misses the shape or jumps between parts of it.
+    #[error("A closed curve must lie on the visible surface.")]
+    ClosedOffSurface,
+    /// A cross-section stroke starts or ends on the shape, or never crosses it, or its
+    /// cut holds no closed loop.
+    #[error("That stroke does not cross the shape from side to side.")]
+    DoesNotCross,
+    /// The walk along the stroke lost its way, or the result is not a valid mesh.
+    #[error("The curve could not be placed on the surface.")]
+    NotPlaced,
+}
+
+/// Embeds the curve that `stroke` (screen points in CSS px, y down, in a `viewport` of
+/// `[width, height]` px seen through `camera`) draws on `mesh`. See the module docs.
+///
+/// Errors: [`AddCurveError`], as sentences for the user.
+pub fn add_curve(
+    mesh: &Mesh,
+    camera: &Camera,
+    viewport: DVec2,
+    stroke: &[DVec2],
+    shape: CurveShape,
+) -> Result<Embedded, AddCurveError> {
+    let projector = Projector {
+        mesh,
+        bvh: Bvh::new(mesh),
+        camera,
+        viewport,
+    };
+    let mut tri = TriList::new(mesh);
+    let chain = match shape {
+        CurveShape::Open => {
+            let run = first_run(&projector, stroke)?;
+            walk::walk(&mut tri, &run, false)
+        }
+        CurveShape::Closed => {
+            let samples = closed_samples(&projector, stroke)?;
+            walk::walk(&mut tri, &samples, true)
+        }
+        CurveShape::CrossSection => cross_section(&projector, &mut tri, stroke)?,
+    };
+    let chain = chain.ok_or(AddCurveError::NotPlaced)?;
+    let closed = shape != CurveShape::Open;
+    if chain.len() < if closed { 3 } else { 2 } {
+        return Err(AddCurveError::NotPlaced);
+    }
+    let split_edges = std::mem::take(&mut tri.splits);
+    let mesh = tri.into_mesh().map_err(|_| AddCurveError::NotPlaced)?;
+    Ok(Embedded {
+        mesh,
+        chain,
+        closed,
+        split_edges,
+    })
+}
+
+/// The first run of consecutive samples on one sheet of the surface (at least two),
+/// reaching out to the edge of the visible surface where the stroke runs off it.
+fn first_run(projector: &Projector, stroke: &[DVec2]) -> Result<Vec<SurfacePoint>, AddCurveError> {
+    let samples = projector.samples(stroke).ok_or(AddCurveError::Misses)?;
+    let begin = samples
+        .iter()
+        .position(|(_, hit)| hit.is_some())
+        .ok_or(AddCurveError::Misses)?;
+    let mut run: Vec<SurfacePoint> = Vec::new();
+    let mut end = samples.len();
+    for (i, &(_, hit)) in samples.iter().enumerate().skip(begin) {
+        match (hit, run.last()) {
+            (Some(s), Some(last)) if !projector.is_continuous(last, &s) => break,
+            (Some(s), _) => run.push(s),
+            (None, _) => {
+                end = i;
+                break;
+            }
+        }
+    }
+    let edge = |inside: usize, outside: usize| {
+        projector.edge_of_surface(samples[inside].0, samples[outside].0)
+    };
+    if begin > 0 {
+        run.splice(0..0, edge(begin, begin - 1));
+    }
+    if end < samples.len() {
+        run.extend(edge(end - 1, end));
+    }
+    if run.len() < 2 {
+        return Err(AddCurveError::Misses);
+    }
+    Ok(run)
+}
+
+/// The samples of a closed stroke, as a loop (the last is not the first again); every one
+/// must hit, on one sheet.
+fn closed_samples(
+    projector: &Projector,
+    stroke: &[DVec2],
+) -> Result<Vec<SurfacePoint>, AddCurveError> {
+    let mut looped = stroke.to_vec();
+    looped.extend(stroke.first());
+    let samples = projector.samples(&looped).ok_or(AddCurveError::Misses)?;
+    let mut samples: Vec<SurfacePoint> = samples
+        .into_iter()
+        .map(|(_, hit)| hit)
+        .collect::<Option<_>>()
+        .ok_or(AddCurveError::ClosedOffSurface)?;
+    samples.pop();
+    let n = samples.len();
+    let is_continuous = (0..n).all(|i| projector.is_continuous(&samples[i], &samples[(i + 1) % n]));
+    if n < 3 || !is_continuous {
+        return Err(AddCurveError::ClosedOffSurface);
+    }
+    Ok(samples)
+}
+
+/// A cross section: checks that the stroke runs from beside the shape across it, then
+/// embeds the loop of the cut nearest to its hits.
+fn cross_section(
+    projector: &Projector,
+    tri: &mut TriList,
+    stroke: &[DVec2],
+) -> Result<Option<Vec<u32>>, AddCurveError> {
+    let (Some(&first), Some(&last)) = (stroke.first(), stroke.last()) else {
+        return Err(AddCurveError::DoesNotCross);
+    };
+    let samples = projector
+        .samples(stroke)
+        .ok_or(AddCurveError::DoesNotCross)?;
+    let hits: Vec<DVec3> = samples
+        .iter()
+        .filter_map(|(_, hit)| hit.map(|s| s.point))
+        .collect();
+    let ends_miss = projector.cast(first).is_none() && projector.cast(last).is_none();
+    let polyline = simplify_stroke(stroke);
+    if hits.is_empty() || !ends_miss || polyline.len() < 2 {
+        return Err(AddCurveError::DoesNotCross);
+    }
+    let distances = level_set::screen_distances(
+        &tri.positions,
+        projector.camera,
+        projector.viewport,
+        &polyline,
+    );
+    let curve = level_set::cross_section(tri, &distances, &hits);
+    curve.map(Some).ok_or(AddCurveError::DoesNotCross)
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,248 @@
+//! The plane walk of open and closed curves: between two consecutive surface samples the
+//! curve is the mesh's cut with the plane through both that contains the view ray, traced
+//! triangle by triangle from the vertex the walk stands on.
+//!
+//! Every edge crossing becomes a vertex (a split, or an existing vertex when the crossing
+//! is within [`SNAP_CROSSING`] of it). Samples are not inserted: where a sample falls
+//! inside a triangle the walk turns onto the next segment's plane there, so the curve
+//! bends inside the triangle and its vertices lie exactly on the swept planes. Only the
+//! curve's two ends become vertices of their own.
+
+use glam::DVec3;
+use rustc_hash::FxHashSet;
+
+use super::project::SurfacePoint;
+use super::tri_list::TriList;
+
+/// Crossings this close to an edge's end (fraction of the edge) snap onto that vertex,
+/// which avoids slivers and moves the curve off its plane by at most this fraction.
+const SNAP_CROSSING: f64 = 0.02;
+/// Barycentric snap of the curve's ends onto a corner or an edge of their triangle.
+const SNAP_END: f64 = 0.1;
+/// Walk steps per stroke segment before the walk counts as lost.
+const MAX_STEPS_PER_SEGMENT: usize = 64;
+
+/// The curve's vertices in stroke order (for a closed curve, not repeating the first), or
+/// `None` if the walk lost its way (a stroke over a fold or a silhouette).
+pub(super) fn walk(
+    tri: &mut TriList,
+    samples: &[SurfacePoint],
+    is_closed: bool,
+) -> Option<Vec<u32>> {
+    let first = samples.first()?;
+    let n_segments = if is_closed {
+        samples.len()
+    } else {
+        samples.len() - 1
+    };
+    let start = tri.insert_point(first.face, first.barycentric, SNAP_END);
+    let start_point = tri.positions[start as usize];
+    // Where segment k ends; a closed curve's last segment ends on its first vertex.
+    let end_of = |k: usize| samples.get(k + 1).map_or(start_point, |s| s.point);
+    let cut_of = |k: usize| Cut::new(samples[k].point, end_of(k), samples[k].ray_dir);
+    let mut chain = Chain::new(start);
+    let (mut at, mut k) = (start, 0);
+    for _ in 0..MAX_STEPS_PER_SEGMENT * n_segments {
+        let is_closing = is_closed && k + 1 == n_segments;
+        if is_closing && (at == start || tri.fan(at).iter().any(|&(_, [_, b, _])| b == start)) {
+            return Some(chain.into_closed());
+        }
+        let mut cut = cut_of(k)?;
+        let mut from = tri.positions[at as usize];
+        let mut exit = exit_from_vertex(tri, at, &cut)?;
+        // Segments ending before the exit end inside its triangle: turn there.
+        while cut.progress(from, end_of(k)) < cut.progress(from, exit.point) {
+            let end = end_of(k);
+            if k + 1 == n_segments {
+                if !is_closed {
+                    let bary = barycentric(tri.triangle_positions(exit.face), end);
+                    chain.push(tri.insert_point(exit.face, bary, SNAP_END));
+                    return Some(chain.vertices);
+                }
+                if tri.triangle(exit.face).contains(&start) {
+                    return Some(chain.into_closed());
+                }
+                break;
+            }
+            k += 1;
+            (cut, from) = (cut_of(k)?, end);
+            exit = match exit_from_point(tri, exit.face, from, &cut) {
+                Some(exit) => exit,
+                None => {
+                    from = tri.positions[at as usize];
+                    exit_from_vertex(tri, at, &cut)?
+                }
+            };
+        }
+        at = match exit.crossing {
+            Crossing::Vertex(v) => v,
+            Crossing::Edge(a, b, t) => {
+                let m = tri.split_edge(a, b, t);
+                chain.on_split(a, b, m);
+                m
+            }
+        };
+        chain.push(at);
+    }
+    None
+}
+
+/// The cut of one stroke segment: the plane through its two surface points that contains
+/// the view ray (for a perspective camera, the plane through the eye and both points).
+struct Cut {
+    origin: DVec3,
+    /// Unit normal.
+    normal: DVec3,
+    /// Unit direction from the segment's start to its end.
+    dir: DVec3,
+}
+
+impl Cut {
+    /// `None` for a segment of zero length or one along the view ray.
+    fn new(from: DVec3, to: DVec3, ray_dir: DVec3) -> Option<Self> {
+        let along = to - from;
+        let normal = along.cross(ray_dir).try_normalize()?;
+        Some(Self {
+            origin: from,
+            normal,
+            dir: along.try_normalize()?,
+        })
+    }
+
+    fn side(&self, p: DVec3) -> f64 {
+        self.normal.dot(p - self.origin)
+    }
+
+    /// How far `p` lies ahead of `from` along the segment.
+    fn progress(&self, from: DVec3, p: DVec3) -> f64 {
+        self.dir.dot(p - from)
+    }
+}
+
+/// Where the walk leaves a triangle: through a vertex or across an edge at `a + t (b − a)`.
+#[derive(Clone, Copy, Debug)]
+enum Crossing {
+    Vertex(u32),
+    Edge(u32, u32, f64),
+}
+
+#[derive(Clone, Copy, Debug)]
+struct Exit {
+    face: u32,
+    crossing: Crossing,
+    point: DVec3,
+}
+
+/// Where the cut crosses the edge `b`–`c`, snapped onto an end within [`SNAP_CROSSING`].
+fn edge_crossing(tri: &TriList, face: u32, b: u32, c: u32, cut: &Cut) -> Option<Exit> {
+    let (pb, pc) = (tri.positions[b as usize], tri.positions[c as usize]);
+    let (sb, sc) = (cut.side(pb), cut.side(pc));
+    if sb == sc || (sb > 0.0) == (sc > 0.0) && sb != 0.0 && sc != 0.0 {
+        return None;
+    }
+    let t = sb / (sb - sc);
+    let (crossing, point) = if t < SNAP_CROSSING {
+        (Crossing::Vertex(b), pb)
+    } else if t > 1.0 - SNAP_CROSSING {
+        (Crossing::Vertex(c), pc)
+    } else {
+        (Crossing::Edge(b, c, t), pb.lerp(pc, t))
+    };
+    Some(Exit {
+        face,
+        crossing,
+        point,
+    })
+}
+
+/// The next crossing from vertex `v`: on the far edges of its fan (treating `v` as on the
+/// cut), the one best aligned with the segment's direction.
+fn exit_from_vertex(tri: &TriList, v: u32, cut: &Cut) -> Option<Exit> {
+    let from = tri.positions[v as usize];
+    let alignment = |exit: &Exit| {
+        let offset = exit.point - from;
+        cut.dir.dot(offset) / offset.length()
+    };
+    tri.fan(v)
+        .into_iter()
+        .filter_map(|(face, [_, b, c])| edge_crossing(tri, face, b, c, cut))
+        .map(|exit| (alignment(&exit), exit))
+        .filter(|(alignment, _)| *alignment > 0.0)
+        .max_by(|x, y| x.0.total_cmp(&y.0))
+        .map(|(_, exit)| exit)
+}
+
+/// Where the cut leaves triangle `face` ahead of `from`, a point on the cut in (or just
+/// before) the triangle.
+fn exit_from_point(tri: &TriList, face: u32, from: DVec3, cut: &Cut) -> Option<Exit> {
+    let [a, b, c] = tri.triangle(face);
+    [(a, b), (b, c), (c, a)]
+        .into_iter()
+        .filter_map(|(p, q)| edge_crossing(tri, face, p, q, cut))
+        .map(|exit| (cut.progress(from, exit.point), exit))
+        .filter(|(progress, _)| *progress > 0.0)
+        .max_by(|x, y| x.0.total_cmp(&y.0))
+        .map(|(_, exit)| exit)
+}
+
+/// Barycentric coordinates of `p` projected onto the triangle's plane.
+fn barycentric([a, b, c]: [DVec3; 3], p: DVec3) -> DVec3 {
+    let (ab, ac, ap) = (b - a, c - a, p - a);
+    let (d00, d01, d11) = (ab.dot(ab), ab.dot(ac), ac.dot(ac));
+    let (d20, d21) = (ap.dot(ab), ap.dot(ac));
+    let denominator = d00 * d11 - d01 * d01;
+    let v = (d11 * d20 - d01 * d21) / denominator;
+    let w = (d00 * d21 - d01 * d20) / denominator;
+    DVec3::new(1.0 - v - w, v, w)
+}
+
+/// The curve as it grows: its vertices and its edges, so that a later split of one of
+/// its own edges (a stroke crossing itself) inserts the new vertex into it.
+struct Chain {
+    vertices: Vec<u32>,
+    edges: FxHashSet<(u32, u32)>,
+}
+
+fn edge_key(a: u32, b: u32) -> (u32, u32) {
+    (a.min(b), a.max(b))
+}
+
+impl Chain {
+    fn new(start: u32) -> Self {
+        Self {
+            vertices: vec![start],
+            edges: FxHashSet::default(),
+        }
+    }
+
+    /// Appends `v` unless the walk stayed on the last vertex.
+    fn push(&mut self, v: u32) {
+        let Some(&last) = self.vertices.last() else {
+            return;
+        };
+        if last != v {
+            self.edges.insert(edge_key(last, v));
+            self.vertices.push(v);
+        }
+    }
+
+    /// Puts `m` between `a` and `b` if they are consecutive on the chain.
+    fn on_split(&mut self, a: u32, b: u32, m: u32) {
+        if !self.edges.remove(&edge_key(a, b)) {
+            return;
+        }
+        let is_edge = |w: &[u32]| edge_key(w[0], w[1]) == edge_key(a, b);
+        if let Some(i) = self.vertices.windows(2).position(is_edge) {
+            self.vertices.insert(i + 1, m);
+            self.edges.extend([edge_key(a, m), edge_key(m, b)]);
+        }
+    }
+
+    /// The vertices of a closed curve, without repeating the first at the end.
+    fn into_closed(mut self) -> Vec<u32> {
+        if self.vertices.len() > 1 && self.vertices.first() == self.vertices.last() {
+            self.vertices.pop();
+        }
+        self.vertices
+    }
+}

@@ -1,0 +1,90 @@
+//! The part of a surface near some vertices, measured along its edges: where a local edit
+//! may move the surface (the region a pull preview solves, see
+//! [`super::FairSurface::new_regional`]).
+
+use std::cmp::Reverse;
+use std::collections::BinaryHeap;
+
+use crate::mesh::{Mesh, VertexId};
+
+/// The vertices within `radius` of `seeds` along mesh edges (Dijkstra over edge lengths),
+/// as a mask with one entry per vertex. Seeds outside the mesh are ignored.
+pub fn region_around(mesh: &Mesh, seeds: &[u32], radius: f64) -> Vec<bool> {
+    let distance = distances_within(mesh.n_vertices(), seeds, radius, |v| {
+        let p = mesh.position(VertexId(v));
+        mesh.vertex_neighbors(VertexId(v))
+            .map(move |w| (w.0, p.distance(mesh.position(w))))
+    });
+    distance.iter().map(|d| d.is_finite()).collect()
+}
+
+/// Shortest-path distances from `seeds` over a graph on `n` nodes whose edges from a node
+/// `neighbours` lists with their lengths, up to `radius`; infinite beyond it.
+pub(crate) fn distances_within<I: Iterator<Item = (u32, f64)>>(
+    n: usize,
+    seeds: &[u32],
+    radius: f64,
+    neighbours: impl Fn(u32) -> I,
+) -> Vec<f64> {
+    let mut distance = vec![f64::INFINITY; n];
+    let mut queue = BinaryHeap::new();
+    for &s in seeds.iter().filter(|&&s| (s as usize) < n) {
+        distance[s as usize] = 0.0;
+        queue.push(Reverse((Ordered(0.0), s)));
+    }
+    while let Some(Reverse((Ordered(d), v))) = queue.pop() {
+        if d > distance[v as usize] {
+            continue;
+        }
+        for (w, length) in neighbours(v) {
+            let through = d + length;
+            if through <= radius && through < distance[w as usize] {
+                distance[w as usize] = through;
+                queue.push(Reverse((Ordered(through), w)));
+            }
+        }
+    }
+    distance
+}
+
+/// A finite distance with the total order the heap needs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Ordered(f64);
+
+impl Eq for Ordered {}
+
+impl PartialOrd for Ordered {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Ordered {
+    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
+        self.0.total_cmp(&other.0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::primitives;
+
+    #[test]
+    fn region_grows_with_the_radius_and_holds_the_seed() {
+        let mesh = primitives::icosphere(1.0, 3);
+        let count = |r: f64| region_around(&mesh, &[0], r).iter().filter(|&&x| x).count();
+        assert_eq!(count(0.0), 1);
+        let (small, large) = (count(0.3), count(1.0));
+        assert!(1 < small && small < large && large < mesh.n_vertices());
+        assert_eq!(count(10.0), mesh.n_vertices());
+        // Every vertex in the region is within the radius in space as well.
+        let p = mesh.position(VertexId(0));
+        let region = region_around(&mesh, &[0], 0.3);
+        assert!(
+            mesh.vertices()
+                .filter(|v| region[v.index()])
+                .all(|v| mesh.position(v).distance(p) <= 0.3 + 1e-12)
+        );
+    }
+}

@@ -38,6 +38,7 @@ pub fn toolbar_ui(
     status: Option<&str>,
 ) -> Option<Action> {
     let mut action = None;
+    let mut picked_mode = None;
     ui.spacing_mut().interact_size.y = TOUCH_TARGET;
     ui.spacing_mut().button_padding = egui::vec2(10.0, 6.0);
     ui.horizontal_wrapped(|ui| {
@@ -81,7 +82,7 @@ pub fn toolbar_ui(
                 .min_size(egui::vec2(TOUCH_TARGET, TOUCH_TARGET));
             let hint = format!("{} ({})", m.hint(), m.key().name());
             if ui.add(button).on_hover_text(hint).clicked() {
-                action = Some(Action::Mode(m));
+                picked_mode = Some(m);
             }
         }
         ui.separator();
@@ -110,5 +111,5 @@ pub fn toolbar_ui(
             ui.colored_label(ui.visuals().warn_fg_color, status);
         }
     });
-    action
+    action.or(picked_mode.map(Action::Mode))
 }

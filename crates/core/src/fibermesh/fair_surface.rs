@@ -42,9 +42,8 @@
 //! curve's kind changes the matrices: build a new [`FairSurface`].
 //!
 //! Local edits: [`FairSurface::new_regional`] solves a region only, the rest held, and
-//! [`FairSurface::new_relaxing`] interpolates the target magnitudes of some vertices from
-//! around them instead of measuring them (after an erase, the bump the erased curve held
-//! gives way).
+//! [`FairSurface::new_relaxing`] gives some vertices the typical magnitude of the rest
+//! instead of their own (after an erase, the bump the erased curve held gives way).
 
 use glam::DVec3;
 
@@ -98,6 +97,8 @@ pub struct FairSurface {
     measures: Measures,
     /// Vertices near sharp curves, whose target magnitude is zero (see [`SHARP_BAND`]).
     is_flat: Vec<bool>,
+    /// Vertices whose target magnitude is the typical one of the rest, not their own.
+    is_relaxed: Vec<bool>,
     /// The smoothed magnitudes `c`, from `c'` measured once; see the module docs.
     target_magnitudes: Vec<f64>,
     /// Whether `target_magnitudes` holds a measurement.
@@ -123,10 +124,10 @@ impl FairSurface {
         Self::new_relaxing(mesh, curves, &[])
     }
 
-    /// [`FairSurface::new`] whose target magnitudes at the vertices with `relax[v]` are
-    /// not measured but interpolated from around (the diffusion has no data rows there): for
-    /// after a curve was erased or changed type, where the curvature the old constraint
-    /// forced should give way. An empty `relax` relaxes nothing.
+    /// [`FairSurface::new`] whose target magnitudes at the vertices with `relax[v]` are not
+    /// their own but the median of the others': for after a curve was erased or changed
+    /// type, where the curvature the old constraint forced should give way. An empty `relax`
+    /// relaxes nothing.
     ///
     /// Errors: those of [`FairSurface::new`].
     pub fn new_relaxing(
@@ -251,16 +252,12 @@ impl FairSurface {
             .iter()
             .map(|&v| near_sharp[v as usize])
             .collect();
-        // Flat targets are data too; sharp vertices take no part in the smoothing, so they
-        // keep their own.
-        let has_data: Vec<bool> = (0..n)
-            .map(|k| {
-                let relaxed = relax.get(mesh_vertex[k] as usize).copied().unwrap_or(false);
-                is_sharp[k] || is_flat[k] || !relaxed
-            })
+        let is_relaxed: Vec<bool> = mesh_vertex
+            .iter()
+            .map(|&v| relax.get(v as usize).copied().unwrap_or(false))
             .collect();
         let (diffusion, n_smoothing_rows) =
-            fair_systems::factor_diffusion(&rings, &is_sharp, &is_region, &has_data, &is_frame)?;
+            fair_systems::factor_diffusion(&rings, &is_sharp, &is_region, &is_frame)?;
         let is_fixed: Vec<bool> = (0..n).map(|i| is_curve[i] || is_frame[i]).collect();
         let placement = fair_systems::factor_placement(
             &rings,
@@ -285,6 +282,7 @@ impl FairSurface {
             placement,
             measures: Measures::new(n),
             is_flat,
+            is_relaxed,
             target_magnitudes: vec![0.0; n],
             has_magnitudes: false,
             current_lengths: vec![0.0; n],
@@ -387,16 +385,34 @@ impl FairSurface {
         Ok(())
     }
 
+    /// The median magnitude just measured over the vertices that keep theirs, for the
+    /// relaxed ones: robust to the spikes an irregular tessellation gives the uniform
+    /// Laplacian (interpolating from the region's rim instead spread those).
+    fn typical_magnitude(&self) -> f64 {
+        let mut kept: Vec<f64> = (0..self.is_relaxed.len())
+            .filter(|&i| !self.is_relaxed[i] && !self.is_flat[i])
+            .map(|i| self.measures.magnitudes[i])
+            .collect();
+        if kept.is_empty() {
+            return 0.0;
+        }
+        let middle = kept.len() / 2;
+        *kept.select_nth_unstable_by(middle, f64::total_cmp).1
+    }
+
     /// Smooths the magnitudes just measured into the targets `c` (Eq. 3.6).
     fn smooth_magnitudes(&mut self) -> Result<(), SolveError> {
+        let typical = self.typical_magnitude();
         let rows = &mut self.diffusion_rhs[self.n_smoothing_rows..];
-        let measured = self.measures.magnitudes.iter().zip(&self.is_flat);
-        for (row, (&magnitude, &is_flat)) in rows.iter_mut().zip(measured) {
-            *row = if is_flat {
+        for (i, row) in rows.iter_mut().enumerate() {
+            let magnitude = if self.is_flat[i] {
                 0.0
+            } else if self.is_relaxed[i] {
+                typical
             } else {
-                DIFFUSION_WEIGHT * magnitude
+                self.measures.magnitudes[i]
             };
+            *row = DIFFUSION_WEIGHT * magnitude;
         }
         self.diffusion.solve_scalar(
             &self.diffusion_rhs,

@@ -15,10 +15,9 @@ pub(crate) const EDGE_WEIGHT: f64 = 1.0;
 pub(crate) const SMOOTH_CURVE_WEIGHT: f64 = 2.0;
 
 /// `[L_d; w_d I]`: a smoothing row for each non-sharp vertex with `has_rows` over its
-/// non-sharp neighbours (so nothing diffuses across a sharp curve), then identity rows,
-/// left empty where not `has_data` (those targets are interpolated from around). Unknowns
-/// with `fixed` hold given values (the frame of a regional solve). Returns the factored
-/// system and the number of smoothing rows.
+/// non-sharp neighbours (so nothing diffuses across a sharp curve), then identity rows.
+/// Unknowns with `fixed` hold given values (the frame of a regional solve). Returns the
+/// factored system and the number of smoothing rows.
 ///
 /// Errors: those of [`Prefactored::new`] (none for a valid mesh: the identity rows make
 /// the system positive definite).
@@ -26,7 +25,6 @@ pub(crate) fn factor_diffusion(
     rings: &Rings,
     is_sharp: &[bool],
     has_rows: &[bool],
-    has_data: &[bool],
     fixed: &[bool],
 ) -> Result<(Prefactored, usize), SolveError> {
     let n = rings.len();
@@ -43,7 +41,7 @@ pub(crate) fn factor_diffusion(
             triplets.push(row, j as usize, -1.0 / count);
         }
     }
-    for i in (0..n).filter(|&i| has_data[i]) {
+    for i in 0..n {
         triplets.push(n_rows + i, i, DIFFUSION_WEIGHT);
     }
     Ok((Prefactored::new(&triplets.build(), fixed)?, n_rows))
@@ -99,7 +97,7 @@ mod tests {
         // No sharp vertices: a constant is its own smoothing.
         let all = vec![true; n];
         let none = vec![false; n];
-        let (mut solver, n_rows) = factor_diffusion(&rings, &none, &all, &all, &none).unwrap();
+        let (mut solver, n_rows) = factor_diffusion(&rings, &none, &all, &none).unwrap();
         assert_eq!(n_rows, n);
         let mut rhs = vec![DVec3::ZERO; 2 * n];
         rhs[n..].fill(DVec3::new(2.0, 3.0, 0.0));
@@ -112,7 +110,7 @@ mod tests {
         // A sharp vertex keeps exactly its own value: it has only its identity row.
         let mut is_sharp = vec![false; n];
         is_sharp[0] = true;
-        let (mut solver, n_rows) = factor_diffusion(&rings, &is_sharp, &all, &all, &none).unwrap();
+        let (mut solver, n_rows) = factor_diffusion(&rings, &is_sharp, &all, &none).unwrap();
         assert_eq!(n_rows, n - 1);
         let mut rhs = vec![DVec3::ZERO; n_rows + n];
         rhs[n_rows] = DVec3::X * 5.0;

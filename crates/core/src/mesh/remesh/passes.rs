@@ -1,0 +1,427 @@
+//! The four passes of one remeshing iteration and the checks that keep each edit safe.
+//!
+//! Every edit is checked locally before it is made, so a pass never has to undo one: the
+//! link condition and valences guard the topology, normals and a triangle quality measure
+//! guard the geometry. Scratch buffers live in [`Remesher`] and grow only with the mesh.
+
+use std::collections::BinaryHeap;
+
+use glam::DVec3;
+
+use super::chains::{ChainNetwork, Role};
+use super::editable::EditableMesh;
+
+/// Least cosine between a changed triangle's normal and its normal before the edit (60°):
+/// larger turns fold the surface or change its shape more than remeshing should.
+const MIN_NORMAL_COS: f64 = 0.5;
+
+/// Triangles of lower quality ([`quality_sq`], unsquared) count as near-degenerate; an edit
+/// may create one only in place of a worse one.
+const MIN_QUALITY: f64 = 0.05;
+
+/// Least cosine of the turn at a boundary vertex that may be collapsed away (about 25°):
+/// sharper boundary corners are features and stay.
+const BOUNDARY_CORNER_COS: f64 = 0.9;
+
+/// Least valence after any edit, so no vertex is left on a spike or a flat fold.
+const MIN_VALENCE: u32 = 3;
+
+/// Fraction of the way to the tangential centroid moved per relaxation sweep: all of it, as
+/// Gauss–Seidel sweeps of the uniform Laplacian do not overshoot.
+const RELAXATION_STEP: f64 = 1.0;
+
+/// Relaxation sweeps per iteration; the next iteration's sweep continues the smoothing.
+const RELAXATION_SWEEPS: usize = 1;
+
+/// Twice the area vector of a triangle (its unnormalized normal).
+fn area_vector([a, b, c]: [DVec3; 3]) -> DVec3 {
+    (b - a).cross(c - a)
+}
+
+/// The square of `4√3 · area / (sum of squared edges)`, which is 1 for an equilateral
+/// triangle and 0 for a degenerate one. Scale-free, and squared to need no square root:
+/// these checks run for every triangle an edit or a relaxation move touches.
+fn quality_sq([a, b, c]: [DVec3; 3], area_vector: DVec3) -> f64 {
+    let sum_sq = a.distance_squared(b) + b.distance_squared(c) + c.distance_squared(a);
+    if sum_sq > 0.0 {
+        12.0 * area_vector.length_squared() / (sum_sq * sum_sq)
+    } else {
+        0.0
+    }
+}
+
+/// Whether the angle between two (unnormalized) normals is below `acos(MIN_NORMAL_COS)`.
+fn turns_little(normal: DVec3, reference: DVec3) -> bool {
+    let dot = normal.dot(reference);
+    dot > 0.0
+        && dot * dot
+            >= MIN_NORMAL_COS
+                * MIN_NORMAL_COS
+                * normal.length_squared()
+                * reference.length_squared()
+}
+
+/// Running verdict over the triangles an edit changes: no normal turns too far, and each new
+/// triangle is decent or better than the one it replaces.
+#[derive(Clone, Copy)]
+struct EditCheck {
+    is_ok: bool,
+}
+
+impl EditCheck {
+    fn new() -> EditCheck {
+        EditCheck { is_ok: true }
+    }
+
+    /// Adds one triangle changing from `old` to `new` corners; its new normal is also
+    /// compared with `other_normals` (of the other triangles the edit replaces).
+    fn add(&mut self, old: [DVec3; 3], new: [DVec3; 3], other_normals: &[DVec3]) {
+        if !self.is_ok {
+            return;
+        }
+        let (old_normal, new_normal) = (area_vector(old), area_vector(new));
+        let new_quality_sq = quality_sq(new, new_normal);
+        // The old quality only matters, and is only computed, for a poor new triangle.
+        self.is_ok = turns_little(new_normal, old_normal)
+            && other_normals.iter().all(|&n| turns_little(new_normal, n))
+            && (new_quality_sq >= MIN_QUALITY * MIN_QUALITY
+                || new_quality_sq > quality_sq(old, old_normal));
+    }
+
+    fn is_ok(&self) -> bool {
+        self.is_ok
+    }
+}
+
+/// An edge waiting for a split, ordered by length.
+#[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+struct LongEdge {
+    length_sq_bits: u64,
+    a: u32,
+    b: u32,
+}
+
+/// The mesh, its chains and the edge length bounds of one remesh.
+pub(super) struct Remesher {
+    pub(super) mesh: EditableMesh,
+    pub(super) chains: ChainNetwork,
+    /// Squared length above which edges split (`(4/3 L)²`).
+    high_sq: f64,
+    /// Squared length below which edges collapse (`(4/5 L)²`).
+    low_sq: f64,
+    /// Per-vertex marks for the link condition, equal to `stamp` when marked.
+    marks: Vec<u32>,
+    stamp: u32,
+    /// Per-vertex valences during the flip pass.
+    valences: Vec<u32>,
+    /// Edges waiting for a split, longest on top.
+    long_edges: BinaryHeap<LongEdge>,
+}
+
+impl Remesher {
+    pub(super) fn new(mesh: EditableMesh, chains: ChainNetwork, target_edge: f64) -> Remesher {
+        Remesher {
+            mesh,
+            chains,
+            high_sq: (4.0 / 3.0 * target_edge).powi(2),
+            low_sq: (4.0 / 5.0 * target_edge).powi(2),
+            marks: Vec::new(),
+            stamp: 0,
+            valences: Vec::new(),
+            long_edges: BinaryHeap::new(),
+        }
+    }
+
+    /// One Botsch–Kobbelt iteration.
+    pub(super) fn iterate(&mut self) {
+        self.split_long_edges();
+        debug_assert!(self.mesh.is_consistent(), "split broke the mesh");
+        self.collapse_short_edges();
+        debug_assert!(self.mesh.is_consistent(), "collapse broke the mesh");
+        self.equalize_valences();
+        debug_assert!(self.mesh.is_consistent(), "flip broke the mesh");
+        for _ in 0..RELAXATION_SWEEPS {
+            self.relax_tangentially();
+        }
+    }
+
+    fn edge_length_sq(&self, h: u32) -> f64 {
+        let m = &self.mesh;
+        m.position(m.tail(h))
+            .distance_squared(m.position(m.head(h)))
+    }
+
+    /// Splits every edge longer than `4/3 L`, longest first, at its midpoint or, on a chain,
+    /// halfway along the input curve.
+    ///
+    /// Longest first is Rivara's longest-edge bisection: the new edges of a split are shorter
+    /// than the split edge, so the pass ends. In index order, the medians a split creates
+    /// may split before the longer sides and cascade into ever more slivers.
+    fn split_long_edges(&mut self) {
+        let mut queue = std::mem::take(&mut self.long_edges);
+        queue.clear();
+        for h in 0..self.mesh.n_halfedge_slots() {
+            let is_first = self.mesh.twin(h).is_none_or(|t| h < t);
+            if self.mesh.is_live_halfedge(h) && is_first {
+                self.queue_if_long(&mut queue, self.mesh.tail(h), self.mesh.head(h));
+            }
+        }
+        while let Some(LongEdge { a, b, .. }) = queue.pop() {
+            // Other splits may have replaced the edge; its length cannot have changed.
+            let Some(h) = self.mesh.find_halfedge(a, b) else {
+                continue;
+            };
+            let p = self
+                .chains
+                .split_point(a, b)
+                .unwrap_or_else(|| self.mesh.position(a).midpoint(self.mesh.position(b)));
+            let m = self.mesh.split(h, p);
+            self.chains.insert_split(a, b, m);
+            self.mesh
+                .for_each_neighbor(m, |w| self.queue_if_long(&mut queue, m, w));
+        }
+        self.long_edges = queue;
+    }
+
+    fn queue_if_long(&self, queue: &mut BinaryHeap<LongEdge>, a: u32, b: u32) {
+        let length_sq = self
+            .mesh
+            .position(a)
+            .distance_squared(self.mesh.position(b));
+        if length_sq > self.high_sq {
+            // Non-negative floats order as their bit patterns do.
+            queue.push(LongEdge {
+                length_sq_bits: length_sq.to_bits(),
+                a,
+                b,
+            });
+        }
+    }
+
+    /// Collapses edges shorter than `4/5 L` where the chains, the boundary, the topology and
+    /// the geometry allow it; the removed vertex goes, the kept one stays put.
+    fn collapse_short_edges(&mut self) {
+        self.marks.resize(self.mesh.n_vertex_slots() as usize, 0);
+        for h in 0..self.mesh.n_halfedge_slots() {
+            if !self.mesh.is_live_halfedge(h) || self.edge_length_sq(h) >= self.low_sq {
+                continue;
+            }
+            let (u, v) = (self.mesh.tail(h), self.mesh.head(h));
+            // Prefer removing a free vertex: it carries no constraint.
+            let order = if self.chains.is_on_chain(u) && !self.chains.is_on_chain(v) {
+                [(v, u), (u, v)]
+            } else {
+                [(u, v), (v, u)]
+            };
+            if let Some(&(r, _)) = order.iter().find(|&&(r, k)| self.is_collapse_ok(h, r, k)) {
+                let role = self.chains.role(r);
+                self.mesh.collapse(h, r);
+                if let Role::Interior(node) = role {
+                    self.chains.remove(node);
+                }
+            }
+        }
+    }
+
+    /// Whether `r` may disappear into `k` along the edge of `h`.
+    fn is_collapse_ok(&mut self, h: u32, r: u32, k: u32) -> bool {
+        let is_boundary_edge = self.mesh.twin(h).is_none();
+        let may_go = match self.chains.role(r) {
+            Role::Free => true,
+            Role::Interior(node) => self.chains.can_collapse_onto(node, k),
+            Role::Pinned => false,
+        };
+        // Boundary vertices slide only along the boundary, and corners stay.
+        let keeps_boundary =
+            !self.mesh.is_boundary_vertex(r) || (is_boundary_edge && !self.is_boundary_corner(r));
+        // Cheapest and most often failing first: a collapse at the target length usually
+        // fails for an edge that would get too long.
+        may_go
+            && keeps_boundary
+            && self.are_new_edges_short(r, k)
+            && self.are_valences_ok_after_collapse(h, r, k)
+            && self.is_link_condition_ok(r, k, if is_boundary_edge { 1 } else { 2 })
+            && self.is_collapse_geometry_ok(r, k)
+    }
+
+    fn is_boundary_corner(&self, v: u32) -> bool {
+        let m = &self.mesh;
+        let mut outgoing = m.outgoing(v);
+        let Some(first) = outgoing.next() else {
+            return true;
+        };
+        let last = outgoing.last().unwrap_or(first);
+        let p = m.position(v);
+        let after = m.position(m.head(first));
+        let before = m.position(m.opposite(last));
+        let turn = (p - before)
+            .normalize_or_zero()
+            .dot((after - p).normalize_or_zero());
+        turn < BOUNDARY_CORNER_COS
+    }
+
+    fn are_valences_ok_after_collapse(&self, h: u32, r: u32, k: u32) -> bool {
+        let m = &self.mesh;
+        let valence = |v: u32| m.valence(v) as u32;
+        let opposite_ok = |g: u32| valence(m.opposite(g)) > MIN_VALENCE;
+        let n_faces_lost = 1 + u32::from(m.twin(h).is_some());
+        let merged = valence(r) + valence(k);
+        opposite_ok(h)
+            && m.twin(h).is_none_or(opposite_ok)
+            && merged >= MIN_VALENCE + 2 + n_faces_lost
+    }
+
+    /// The link condition: `r` and `k` share exactly the neighbours opposite their edge, so
+    /// the collapse pinches nothing and keeps the topology.
+    fn is_link_condition_ok(&mut self, r: u32, k: u32, n_opposite: usize) -> bool {
+        self.stamp = self.stamp.wrapping_add(1);
+        if self.stamp == 0 {
+            self.marks.fill(0);
+            self.stamp = 1;
+        }
+        let (stamp, marks) = (self.stamp, &mut self.marks);
+        self.mesh
+            .for_each_neighbor(r, |w| marks[w as usize] = stamp);
+        let mut n_common = 0;
+        self.mesh.for_each_neighbor(k, |w| {
+            n_common += usize::from(self.marks[w as usize] == stamp);
+        });
+        n_common == n_opposite
+    }
+
+    /// Whether no edge longer than `4/3 L` appears when `r` joins `k`.
+    fn are_new_edges_short(&self, r: u32, k: u32) -> bool {
+        let m = &self.mesh;
+        let p_k = m.position(k);
+        let mut is_short = true;
+        m.for_each_neighbor(r, |w| {
+            is_short &= m.position(w).distance_squared(p_k) <= self.high_sq;
+        });
+        is_short
+    }
+
+    /// Whether `r`'s remaining triangles, moved onto `k`, neither turn too far nor degenerate.
+    fn is_collapse_geometry_ok(&self, r: u32, k: u32) -> bool {
+        let m = &self.mesh;
+        let (p_r, p_k) = (m.position(r), m.position(k));
+        let mut check = EditCheck::new();
+        for g in m.outgoing(r) {
+            let (x, y) = (m.head(g), m.opposite(g));
+            if x != k && y != k {
+                let (p_x, p_y) = (m.position(x), m.position(y));
+                check.add([p_r, p_x, p_y], [p_k, p_x, p_y], &[]);
+            }
+        }
+        check.is_ok()
+    }
+
+    /// Flips interior edges off the chains where that brings the valences of the four
+    /// vertices closer to 6 (4 on the boundary).
+    fn equalize_valences(&mut self) {
+        let m = &self.mesh;
+        self.valences.clear();
+        self.valences.extend((0..m.n_vertex_slots()).map(|v| {
+            if m.is_live_vertex(v) {
+                m.valence(v) as u32
+            } else {
+                0
+            }
+        }));
+        for h in 0..self.mesh.n_halfedge_slots() {
+            if self.is_flip_ok(h) {
+                let m = &mut self.mesh;
+                let Some(t) = m.twin(h) else { continue };
+                let (a, b, c, d) = (m.tail(h), m.head(h), m.opposite(h), m.opposite(t));
+                m.flip(h);
+                for (v, delta) in [(a, -1), (b, -1), (c, 1), (d, 1)] {
+                    self.valences[v as usize] =
+                        self.valences[v as usize].saturating_add_signed(delta);
+                }
+            }
+        }
+    }
+
+    fn target_valence(&self, v: u32) -> i64 {
+        if self.mesh.is_boundary_vertex(v) {
+            4
+        } else {
+            6
+        }
+    }
+
+    fn is_flip_ok(&self, h: u32) -> bool {
+        let m = &self.mesh;
+        let Some(t) = m.twin(h) else { return false };
+        if h > t || !m.is_live_halfedge(h) {
+            return false;
+        }
+        let (a, b, c, d) = (m.tail(h), m.head(h), m.opposite(h), m.opposite(t));
+        let valence = |v: u32| i64::from(self.valences[v as usize]);
+        let deviation = |v: u32, change: i64| (valence(v) + change - self.target_valence(v)).abs();
+        let before: i64 = [a, b, c, d].iter().map(|&v| deviation(v, 0)).sum();
+        let after = deviation(a, -1) + deviation(b, -1) + deviation(c, 1) + deviation(d, 1);
+        after < before
+            && valence(a) > i64::from(MIN_VALENCE)
+            && valence(b) > i64::from(MIN_VALENCE)
+            && c != d
+            && !self.chains.is_chain_edge(a, b)
+            && !m.is_neighbor(c, d)
+            && self.is_flip_geometry_ok([a, b, c, d].map(|v| m.position(v)))
+    }
+
+    /// Faces `(a, b, c)`, `(b, a, d)` become `(a, d, c)`, `(b, c, d)`: each new normal stays
+    /// near both old ones (which also rejects a non-convex quad), and no sliver appears.
+    fn is_flip_geometry_ok(&self, [a, b, c, d]: [DVec3; 4]) -> bool {
+        let (left, right) = ([a, b, c], [b, a, d]);
+        let mut check = EditCheck::new();
+        check.add(left, [a, d, c], &[area_vector(right)]);
+        check.add(right, [b, c, d], &[area_vector(left)]);
+        check.is_ok()
+    }
+
+    /// Moves every free interior vertex part of the way to the centroid of its one-ring,
+    /// within its tangent plane, unless that would fold or degrade one of its triangles.
+    fn relax_tangentially(&mut self) {
+        for v in 0..self.mesh.n_vertex_slots() {
+            if !self.mesh.is_live_vertex(v)
+                || self.mesh.is_boundary_vertex(v)
+                || self.chains.is_on_chain(v)
+            {
+                continue;
+            }
+            let Some(q) = self.relaxed_position(v) else {
+                continue;
+            };
+            if self.is_move_ok(v, q) {
+                self.mesh.positions[v as usize] = q;
+            }
+        }
+    }
+
+    fn relaxed_position(&self, v: u32) -> Option<DVec3> {
+        let m = &self.mesh;
+        let p = m.position(v);
+        let (mut sum, mut normal, mut n) = (DVec3::ZERO, DVec3::ZERO, 0.0);
+        for g in m.outgoing(v) {
+            let (x, y) = (m.position(m.head(g)), m.position(m.opposite(g)));
+            sum += x;
+            normal += (x - p).cross(y - p);
+            n += 1.0;
+        }
+        let normal = normal.try_normalize()?;
+        let step = sum / n - p;
+        let q = p + RELAXATION_STEP * (step - normal * normal.dot(step));
+        q.is_finite().then_some(q)
+    }
+
+    fn is_move_ok(&self, v: u32, q: DVec3) -> bool {
+        let m = &self.mesh;
+        let p = m.position(v);
+        let mut check = EditCheck::new();
+        for g in m.outgoing(v) {
+            let (x, y) = (m.position(m.head(g)), m.position(m.opposite(g)));
+            check.add([p, x, y], [q, x, y], &[]);
+        }
+        check.is_ok()
+    }
+}

@@ -8,8 +8,9 @@
 // for real hardware rather than a prediction; compare runs on the same machine.
 
 import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
 
-import { api, launch, penStroke, settings, sleep } from './lib.mjs';
+import { OUT_DIR, api, launch, penStroke, screenshot, settings, sleep } from './lib.mjs';
 
 const round = (ms) => (ms === null || ms === undefined ? null : Math.round(ms * 10) / 10);
 
@@ -128,6 +129,10 @@ try {
   // paths in SKETCHMESH_PULL_FIXTURES): the app times pointer-down (grab), every drag frame
   // (curve deformation + regional surface update) and the release (the committed op).
   const pulls = [];
+  // A fresh page: the sections above leave their strokes and imports behind.
+  await page.reload();
+  await page.waitForFunction(() => window.sketchmesh !== undefined, null, { timeout: 30_000 });
+  await sleep(1000);
   for (const path of (process.env.SKETCHMESH_PULL_FIXTURES ?? '').split(',').filter(Boolean)) {
     const bytes = [...readFileSync(path)];
     const vertices = await page.evaluate((data) => {
@@ -137,14 +142,28 @@ try {
       return window.sketchmesh.stats().vertices;
     }, bytes);
     await sleep(300);
+    // The import framed the view; back to the default camera the fixture was drawn with.
+    await page.keyboard.press('r');
     await page.keyboard.press('p');
-    // The fixture's outline is an ellipse 260 x 170 px around the view's centre; grab its right end.
-    const box = await page.evaluate(() => {
-      const c = document.getElementById('sketchmesh_canvas').getBoundingClientRect();
-      return { width: c.width, height: c.height };
-    });
-    const toolbar = 44;
-    const grab = { x: box.width / 2 + 260, y: toolbar + (box.height - toolbar) / 2 };
+    await sleep(100);
+    // Grab the outline (drawn blue) at its rightmost visible pixel, once the page has drawn
+    // the import (egui repaints on input).
+    for (let i = 0; i < 3; i++) {
+      await page.mouse.move(5 + i, 715);
+      await sleep(150);
+    }
+    const shot = await screenshot(page, join(OUT_DIR, `bench-pull-${vertices}.png`));
+    let grab = null;
+    for (let y = 60; y < shot.height; y++) {
+      for (let x = shot.width - 1; x > (grab?.x ?? 0); x--) {
+        const [r, g, b] = shot.data.slice((y * shot.width + x) * 4, (y * shot.width + x) * 4 + 3);
+        if (b > 200 && g > 110 && r < 110) {
+          grab = { x: x - 2, y };
+          break;
+        }
+      }
+    }
+    if (!grab) throw new Error(`no blue outline in the ${vertices}-vertex fixture's view`);
     const pen = { pointerType: 'pen', button: 'left', force: 0.5 };
     await cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', x: grab.x, y: grab.y, buttons: 1, clickCount: 1, ...pen });
     for (let i = 1; i <= 60; i++) {

@@ -15,8 +15,11 @@ use crate::serve::StaticServer;
 use crate::setup::{self, Needs};
 use crate::{Steps, Workspace, cargo, format_size, run};
 
-/// Budget for the gzip-compressed `release` wasm (the shipped, wasm-opt'd one is smaller).
-const WASM_GZIP_BUDGET: u64 = 3_500_000;
+/// Budget for the gzip-compressed `release` wasm. The shipped build (`wasm-release`
+/// profile, `wasm-opt -Oz`) is about three quarters of it (2.49 MB when this was 3.19 MB),
+/// so this keeps the download near 3 MB; measuring the shipped build itself would add
+/// about ten minutes to every CI run.
+const WASM_GZIP_BUDGET: u64 = 4_000_000;
 /// The session the CLI replays into `tests/out/replay.glb` for the validator.
 const REPLAY_FIXTURE: &str = "tests/fixtures/two-strokes-undo-redo.json";
 /// The GPU paths of the browser suite: `SKETCHMESH_GPU` values understood by `tests/e2e/lib.mjs`.

@@ -253,17 +253,7 @@ fn oversketch_document(
     input: &StrokeInput,
 ) -> Result<(usize, Model), CommandError> {
     let viewport = input.viewport_size();
-    let viewport_ok = viewport.is_finite() && viewport.x > 0.0 && viewport.y > 0.0;
-    if !viewport_ok || !input.camera.is_valid() {
-        return Err(CommandError::BadView);
-    }
-    if input.stroke.iter().flatten().any(|x| !x.is_finite()) {
-        return Err(CommandError::StrokeNotFinite);
-    }
-    let stroke: Vec<glam::DVec2> = input.points().iter().map(|p| p.pos).collect();
-    if stroke.len() < 2 {
-        return Err(CommandError::StrokeTooShort);
-    }
+    let stroke = curve_edit::screen_stroke(input, 2)?;
     let mut best: Option<(usize, Oversketched)> = None;
     let mut refusal = OversketchError::NoMatch;
     for (index, model) in document.models.iter().enumerate() {

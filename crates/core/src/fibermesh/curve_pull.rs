@@ -259,7 +259,7 @@ impl CurvePull {
             self.placement = Some(Placement::new(&self.network, segment)?);
         }
         let placement = self.placement.as_mut().ok_or(PullError::BadTarget)?;
-        placement.solve(&self.network, &rotations, target, nodes)?;
+        placement.solve(&rotations, target, nodes)?;
         Ok(Peel {
             radius,
             n_deformed: placement.segment.n_free(),
@@ -294,8 +294,8 @@ impl CurvePull {
                 fixed[3 * (m + k) + c] = is_frame;
             }
         }
+        let edges = segment.edges(&self.network);
         for _ in 0..self.params.rotation_iterations {
-            let edges = segment.edges(&self.network);
             let mut triplets = Triplets::with_capacity(12 * edges.len(), 6 * m, 60 * edges.len());
             let mut rhs = Vec::with_capacity(12 * edges.len());
             for &(i, j) in &edges {
@@ -496,7 +496,6 @@ impl Placement {
     /// `target`, into the network-wide `nodes`.
     fn solve(
         &mut self,
-        network: &CurveNetwork,
         rotations: &[DMat3],
         target: DVec3,
         nodes: &mut [DVec3],
@@ -516,7 +515,6 @@ impl Placement {
         {
             nodes[node as usize] = self.solved[k];
         }
-        debug_assert_eq!(network.n_nodes(), nodes.len());
         Ok(())
     }
 }

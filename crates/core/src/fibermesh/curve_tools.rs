@@ -245,7 +245,7 @@ impl VisibleCurves {
     ) -> Self {
         let bvh = Bvh::new(mesh);
         let normals = vertex_normals(mesh);
-        let lift = mean_edge_length(mesh);
+        let lift = mesh.mean_edge_length();
         let mut screen = vec![None; mesh.n_vertices()];
         for &v in vertices {
             let p = mesh.position(v);
@@ -268,22 +268,6 @@ impl VisibleCurves {
     pub fn screen(&self, v: VertexId) -> Option<DVec2> {
         self.screen.get(v.index()).copied().flatten()
     }
-}
-
-/// The mean length of a mesh's edges (each counted from both sides).
-fn mean_edge_length(mesh: &Mesh) -> f64 {
-    let p = mesh.positions();
-    let (sum, count) = mesh
-        .triangles()
-        .iter()
-        .fold((0.0, 0usize), |(sum, count), t| {
-            let [a, b, c] = t.map(|i| p[i as usize]);
-            (
-                sum + a.distance(b) + b.distance(c) + c.distance(a),
-                count + 3,
-            )
-        });
-    if count == 0 { 0.0 } else { sum / count as f64 }
 }
 
 /// The distance from `p` to a polyline (to its point for a single sample).

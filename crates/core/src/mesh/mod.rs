@@ -210,6 +210,21 @@ impl Mesh {
         self.triangles[f.index()].map(|v| self.positions[v as usize])
     }
 
+    /// Mean length of the undirected edges (0 for a mesh without faces).
+    pub fn mean_edge_length(&self) -> f64 {
+        let (mut sum, mut n) = (0.0, 0usize);
+        for h in (0..self.n_halfedges() as u32).map(HalfedgeId) {
+            // Each edge once: from its lower half-edge, or its only one on the boundary.
+            if self.twin(h).is_none_or(|t| h < t) {
+                sum += self
+                    .position(self.tail(h))
+                    .distance(self.position(self.head(h)));
+                n += 1;
+            }
+        }
+        if n == 0 { 0.0 } else { sum / n as f64 }
+    }
+
     /// Axis-aligned bounds `(min, max)`, or `None` for an empty mesh.
     pub fn bounding_box(&self) -> Option<(DVec3, DVec3)> {
         let first = *self.positions.first()?;

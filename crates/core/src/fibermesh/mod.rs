@@ -69,7 +69,7 @@ pub use control_curve::{ControlCurve, CurveKind};
 pub use fair_surface::{FairSurface, RunSummary};
 pub use outline::{FINE_SPACING_PX, MAX_OVERSHOOT, MIN_AREA_PX2, MIN_ROUNDNESS};
 pub use plane::DrawingPlane;
-pub use region::region_around;
+pub use region::{Region, nearest_vertices, region_around};
 
 use crate::camera::Camera;
 use crate::curve::{StrokeError, StrokePoint};

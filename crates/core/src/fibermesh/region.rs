@@ -10,12 +10,50 @@ use crate::mesh::{Mesh, VertexId};
 /// The vertices within `radius` of `seeds` along mesh edges (Dijkstra over edge lengths),
 /// as a mask with one entry per vertex. Seeds outside the mesh are ignored.
 pub fn region_around(mesh: &Mesh, seeds: &[u32], radius: f64) -> Vec<bool> {
-    let distance = distances_within(mesh.n_vertices(), seeds, radius, |v| {
-        let p = mesh.position(VertexId(v));
-        mesh.vertex_neighbors(VertexId(v))
-            .map(move |w| (w.0, p.distance(mesh.position(w))))
-    });
-    distance.iter().map(|d| d.is_finite()).collect()
+    nearest_vertices(mesh, seeds, radius, usize::MAX).mask
+}
+
+/// A region of a mesh and how far it reaches.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Region {
+    /// One entry per vertex: whether it is in the region.
+    pub mask: Vec<bool>,
+    /// Every vertex nearer than this (along edges) to the seeds is in the region:
+    /// infinite when the region holds the seeds' whole connected part.
+    pub reach: f64,
+}
+
+/// [`region_around`] holding at most `max_vertices` vertices, the nearest: for a region
+/// whose solve must stay within a time budget whatever the mesh's resolution.
+pub fn nearest_vertices(mesh: &Mesh, seeds: &[u32], radius: f64, max_vertices: usize) -> Region {
+    let mut mask = vec![false; mesh.n_vertices()];
+    let mut n_settled = 0;
+    let mut reach = f64::INFINITY;
+    shortest_paths(
+        mesh.n_vertices(),
+        seeds,
+        radius,
+        |v| {
+            let p = mesh.position(VertexId(v));
+            mesh.vertex_neighbors(VertexId(v))
+                .map(move |w| (w.0, p.distance(mesh.position(w))))
+        },
+        |v, d| {
+            mask[v as usize] = true;
+            n_settled += 1;
+            let is_full = n_settled >= max_vertices;
+            if is_full {
+                reach = d;
+            }
+            is_full
+        },
+    );
+    let reach = if reach.is_finite() || radius.is_infinite() {
+        reach
+    } else {
+        radius
+    };
+    Region { mask, reach }
 }
 
 /// Shortest-path distances from `seeds` over a graph on `n` nodes whose edges from a node
@@ -26,6 +64,19 @@ pub(crate) fn distances_within<I: Iterator<Item = (u32, f64)>>(
     radius: f64,
     neighbours: impl Fn(u32) -> I,
 ) -> Vec<f64> {
+    shortest_paths(n, seeds, radius, neighbours, |_, _| false)
+}
+
+/// Dijkstra from `seeds` up to `radius`, calling `settled` with each node and its distance
+/// as it becomes final, in increasing order, and stopping when it returns true (nodes
+/// reached but not yet settled then keep tentative distances).
+fn shortest_paths<I: Iterator<Item = (u32, f64)>>(
+    n: usize,
+    seeds: &[u32],
+    radius: f64,
+    neighbours: impl Fn(u32) -> I,
+    mut settled: impl FnMut(u32, f64) -> bool,
+) -> Vec<f64> {
     let mut distance = vec![f64::INFINITY; n];
     let mut queue = BinaryHeap::new();
     for &s in seeds.iter().filter(|&&s| (s as usize) < n) {
@@ -35,6 +86,9 @@ pub(crate) fn distances_within<I: Iterator<Item = (u32, f64)>>(
     while let Some(Reverse((Ordered(d), v))) = queue.pop() {
         if d > distance[v as usize] {
             continue;
+        }
+        if settled(v, d) {
+            break;
         }
         for (w, length) in neighbours(v) {
             let through = d + length;
@@ -86,5 +140,34 @@ mod tests {
                 .filter(|v| region[v.index()])
                 .all(|v| mesh.position(v).distance(p) <= 0.3 + 1e-12)
         );
+    }
+
+    #[test]
+    fn a_vertex_budget_keeps_the_nearest_vertices() {
+        let mesh = primitives::icosphere(1.0, 3);
+        let whole = nearest_vertices(&mesh, &[0], f64::INFINITY, usize::MAX);
+        assert!(whole.mask.iter().all(|&x| x));
+        assert_eq!(whole.reach, f64::INFINITY);
+        let budget = 100;
+        let region = nearest_vertices(&mesh, &[0], f64::INFINITY, budget);
+        assert_eq!(region.mask.iter().filter(|&&x| x).count(), budget);
+        assert!(region.reach > 0.0 && region.reach.is_finite());
+        // It is the ball that reaches as far: every vertex nearer is in, none farther.
+        let ball = region_around(&mesh, &[0], region.reach);
+        let below = region_around(&mesh, &[0], 0.999 * region.reach);
+        for v in 0..mesh.n_vertices() {
+            assert!(
+                !below[v] || region.mask[v],
+                "a nearer vertex {v} is missing"
+            );
+            assert!(
+                !region.mask[v] || ball[v],
+                "vertex {v} lies beyond the reach"
+            );
+        }
+        // Within the budget, the radius decides.
+        let small = nearest_vertices(&mesh, &[0], 0.3, budget);
+        assert_eq!(small.mask, region_around(&mesh, &[0], 0.3));
+        assert_eq!(small.reach, 0.3);
     }
 }

@@ -85,6 +85,9 @@ pub struct Remeshed {
     pub mesh: Mesh,
     /// The input chains over the new mesh's vertices.
     pub chains: Vec<Chain>,
+    /// Per new vertex, whether it lies in the region that was remeshed (see
+    /// [`remesh_within`]): every vertex for [`remesh`].
+    pub is_remeshed: Vec<bool>,
 }
 
 /// Why remeshing refused; the input is never changed.
@@ -131,6 +134,16 @@ pub enum RemeshError {
         /// Index of the chain.
         chain: usize,
     },
+    /// The region mask does not have one entry per vertex.
+    #[error(
+        "The surface could not be remeshed: the region has {found} entries for {expected} vertices."
+    )]
+    RegionMismatch {
+        /// Vertices of the mesh.
+        expected: usize,
+        /// Entries of the region.
+        found: usize,
+    },
     /// The result broke a mesh invariant; a bug, reported rather than returned broken.
     #[error("The surface could not be remeshed: the result was not a valid mesh. {0}")]
     InvalidResult(MeshError),
@@ -149,19 +162,50 @@ pub fn remesh(
     chains: &[Chain],
     params: &RemeshParams,
 ) -> Result<Remeshed, RemeshError> {
+    remesh_within(mesh, chains, params, &vec![true; mesh.n_vertices()])
+}
+
+/// [`remesh`] restricted to the vertices with `region[v]`: only edges between them split,
+/// collapse or flip, and only they relax, so every other vertex keeps its position and its
+/// neighbours. For a local edit: the cost follows the region, and the rest of the surface
+/// stays exactly as it was (the tangential moves of a remesh do not stay on the surface).
+///
+/// # Errors
+/// Those of [`remesh`], and [`RemeshError::RegionMismatch`] when `region` does not have one
+/// entry per vertex.
+pub fn remesh_within(
+    mesh: &Mesh,
+    chains: &[Chain],
+    params: &RemeshParams,
+    region: &[bool],
+) -> Result<Remeshed, RemeshError> {
+    if region.len() != mesh.n_vertices() {
+        return Err(RemeshError::RegionMismatch {
+            expected: mesh.n_vertices(),
+            found: region.len(),
+        });
+    }
     check_target(mesh, params.target_edge)?;
     check_chains(mesh, chains)?;
     let network = ChainNetwork::new(chains, mesh.positions());
-    let mut remesher = Remesher::new(EditableMesh::new(mesh), network, params.target_edge);
+    let editable = EditableMesh::new(mesh);
+    let mut remesher = Remesher::new(editable, network, params.target_edge, region.to_vec());
     for _ in 0..params.iterations {
         remesher.iterate();
     }
     let (soup, new_from_old) = remesher.mesh.to_soup();
+    let mut is_remeshed = vec![false; soup.positions.len()];
+    for (&new, &edited) in new_from_old.iter().zip(&remesher.is_editable) {
+        if let Some(slot) = is_remeshed.get_mut(new as usize) {
+            *slot = edited;
+        }
+    }
     let mesh = Mesh::from_soup(&soup).map_err(RemeshError::InvalidResult)?;
     mesh.validate().map_err(RemeshError::InvalidResult)?;
     Ok(Remeshed {
         mesh,
         chains: remesher.chains.to_chains(&new_from_old),
+        is_remeshed,
     })
 }
 
@@ -458,6 +502,49 @@ mod tests {
                 assert_eq!(out.mesh.is_closed(), fixture.is_closed, "{name}");
             }
         }
+    }
+
+    #[test]
+    fn a_regional_remesh_changes_nothing_outside_its_region() {
+        // A sphere with one side stretched, so that remeshing has work to do there.
+        let mut mesh = primitives::icosphere(1.0, 3);
+        for p in mesh.positions_mut() {
+            if p.x > 0.0 {
+                p.x *= 2.0;
+            }
+        }
+        let region: Vec<bool> = mesh.positions().iter().map(|p| p.x > 0.3).collect();
+        let params = RemeshParams::keep_resolution(&mesh);
+        let out = remesh_within(&mesh, &[], &params, &region).unwrap();
+        assert_same_topology(&mesh, &out.mesh, "stretched sphere");
+        let kept: Vec<DVec3> = mesh
+            .vertices()
+            .filter(|v| !region[v.index()])
+            .map(|v| mesh.position(v))
+            .collect();
+        let outside: Vec<DVec3> = out
+            .mesh
+            .vertices()
+            .filter(|v| !out.is_remeshed[v.index()])
+            .map(|v| out.mesh.position(v))
+            .collect();
+        assert_eq!(outside, kept, "a vertex outside the region moved or went");
+        let n_inside = region.iter().filter(|&&r| r).count();
+        let n_remeshed = out.is_remeshed.iter().filter(|&&r| r).count();
+        assert!(
+            n_remeshed > n_inside,
+            "the stretched side got no new vertices"
+        );
+        // Remeshing everything changes the outside too: the restriction is what kept it.
+        let everywhere = remesh(&mesh, &[], &params).unwrap();
+        assert_ne!(everywhere.mesh.n_vertices(), out.mesh.n_vertices());
+        assert_eq!(
+            remesh_within(&mesh, &[], &params, &region[1..]).unwrap_err(),
+            RemeshError::RegionMismatch {
+                expected: mesh.n_vertices(),
+                found: mesh.n_vertices() - 1
+            }
+        );
     }
 
     #[test]

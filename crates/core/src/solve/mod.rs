@@ -49,6 +49,9 @@ pub enum SolveError {
     /// The matrix holds NaN or an infinity.
     #[error("The matrix contains a value that is not a finite number.")]
     NonFiniteValue,
+    /// An iteration built on the solves ran away: its result was not finite.
+    #[error("The optimization diverged; the change is too large to follow in one step.")]
+    Diverged,
     /// faer could not factor for another reason (out of memory, index overflow).
     #[error("The sparse factorization failed: {0}.")]
     Factorization(String),

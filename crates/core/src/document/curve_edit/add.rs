@@ -3,7 +3,7 @@
 
 use glam::DVec2;
 
-use super::settle::remesh_and_settle;
+use super::settle::{Change, remesh_and_settle};
 use super::{bounding_diagonal, has_curves, replaced, screen_stroke, solver_curves};
 use crate::document::{AddCurveInput, CommandError, Document, Model, StrokeInput};
 use crate::fibermesh::add_curve::{CurveShape, add_curve};
@@ -52,10 +52,11 @@ pub fn add_curve_op(doc: &Document, input: &AddCurveInput) -> Result<(usize, Mod
         is_closed: embedded.closed,
         kind: CurveKind::Smooth,
     });
-    let mut changed = vec![false; curves.len()];
-    changed[curves.len() - 1] = true;
-    let radius = ADD_REGION * bounding_diagonal(&model.mesh);
-    let (mesh, curves) = remesh_and_settle(&embedded.mesh, &curves, &changed, radius)?;
+    let change = Change {
+        around: &embedded.chain,
+        radius: ADD_REGION * bounding_diagonal(&model.mesh),
+    };
+    let (mesh, curves) = remesh_and_settle(&embedded.mesh, &curves, change)?;
     Ok((index, replaced(model, mesh, &curves)))
 }
 

@@ -1,12 +1,15 @@
 //! The deform tool (thesis §3.2.2): grab a curve point, drag it parallel to the screen; the
 //! curve peels and the surface follows.
 //!
-//! The committed op ([`pull_op`]) deforms the curves for the release point, re-optimizes
-//! the whole surface with a fresh factorization and remeshes. While the pointer is down the
-//! app shows a [`PullSession`] instead: the curve deformation is the same (it depends on
-//! the target only), but the surface is solved only in a region around the grabbed point,
-//! factored once at pointer-down, with every other vertex held: at 40k vertices one
-//! back-substitution of the whole mesh costs ~34 ms in wasm, too slow for 30 fps.
+//! The committed op ([`pull_op`]) deforms the curves for the release point, re-optimizes the
+//! surface around the grabbed point with a fresh factorization, and remeshes there. While
+//! the pointer is down the app shows a [`PullSession`] instead: the curve deformation is
+//! the same (it depends on the target only), and the surface is solved in a region around
+//! the grabbed point, factored once at pointer-down, with every other vertex held: at 40k
+//! vertices one back-substitution of the whole mesh costs ~34 ms in wasm, too slow for
+//! 30 fps. The preview region is the [`PREVIEW_VERTICES`] nearest vertices (the whole
+//! shape at 10k vertices), so its cost does not grow with the mesh, and it is refactored
+//! only when the peel outgrows it: a refactor is a frame of 50–250 ms in the page.
 
 use std::sync::Arc;
 
@@ -19,13 +22,24 @@ use super::{
 use crate::camera::Camera;
 use crate::document::{CommandError, Document, Model, Op, StrokeInput};
 use crate::fibermesh::curve_pull::{CurveNetwork, CurvePull, PullParams};
-use crate::fibermesh::{ControlCurve, FairSurface, region_around};
+use crate::fibermesh::{ControlCurve, FairSurface, nearest_vertices, region_around};
 
 /// The region solved while dragging reaches this many peel radii from the grabbed point.
 const REGION_PER_PEEL: f64 = 2.5;
 
 /// The smallest region, as a fraction of the model's bounding-box diagonal.
 const MIN_REGION: f64 = 0.25;
+
+/// The most vertices the preview solves at pointer-down.
+const PREVIEW_VERTICES: usize = 5_000;
+
+/// The preview region must reach this many peel radii from the grabbed point (the peeled
+/// curve and some surface beyond its ends); past that it is refactored larger.
+const PREVIEW_REACH_PER_PEEL: f64 = 1.5;
+
+/// How much farther than needed a refactored preview region reaches, so that a drag
+/// refactors a few times, not every frame.
+const PREVIEW_GROWTH: f64 = 1.5;
 
 /// Surface iterations per drag frame.
 const ITERATIONS_PER_FRAME: usize = 1;
@@ -55,15 +69,7 @@ pub fn pull_op(doc: &Document, input: &StrokeInput) -> Result<(usize, Model), Co
         radius: region_radius(&model.mesh, peel.radius),
     };
     settle(&mut mesh, &curves, model.mesh.positions(), change, false)?;
-    let moved: Vec<bool> = curves
-        .iter()
-        .map(|c| {
-            c.vertices
-                .iter()
-                .any(|&v| mesh.position(v) != model.mesh.position(v))
-        })
-        .collect();
-    let (mesh, curves) = remesh_and_settle(&mesh, &curves, &moved, change.radius)?;
+    let (mesh, curves) = remesh_and_settle(&mesh, &curves, change)?;
     Ok((pick.model, replaced(model, mesh, &curves)))
 }
 
@@ -82,7 +88,8 @@ pub struct PullSession {
     nodes: Vec<DVec3>,
     positions: Vec<DVec3>,
     surface: FairSurface,
-    region_radius: f64,
+    /// How far from the grabbed point the preview region reaches.
+    reach: f64,
 }
 
 impl PullSession {
@@ -95,8 +102,13 @@ impl PullSession {
         let model = Arc::clone(&doc.models[pick.model]);
         let curves = solver_curves(&model);
         let (pull, node_vertices) = curve_pull(&model, &curves, pick)?;
-        let radius = region_radius(&model.mesh, 0.0);
-        let surface = regional_surface(&model, &curves, pick.vertex.0, radius)?;
+        let region = nearest_vertices(
+            &model.mesh,
+            &[pick.vertex.0],
+            f64::INFINITY,
+            PREVIEW_VERTICES,
+        );
+        let surface = regional_surface(&model, &curves, &region.mask)?;
         Ok(PullSession {
             input,
             model_index: pick.model,
@@ -109,7 +121,7 @@ impl PullSession {
             pull,
             node_vertices,
             surface,
-            region_radius: radius,
+            reach: region.reach,
         })
     }
 
@@ -122,16 +134,12 @@ impl PullSession {
         let screen = DVec2::new(sample[0], sample[1]);
         let target = drag_target(&self.input, self.grabbed, screen)?;
         let peel = self.pull.pull_to(target, &mut self.nodes)?;
-        let needed = region_radius(&self.model.mesh, peel.radius);
-        if needed > self.region_radius {
-            // Grown with room to spare, so that a drag refactors a few times, not every frame.
-            self.region_radius = 1.5 * needed;
-            self.surface = regional_surface(
-                &self.model,
-                &self.curves,
-                self.grabbed_vertex,
-                self.region_radius,
-            )?;
+        let needed = PREVIEW_REACH_PER_PEEL * peel.radius;
+        if needed > self.reach {
+            let reach = PREVIEW_GROWTH * needed;
+            let region = region_around(&self.model.mesh, &[self.grabbed_vertex], reach);
+            self.surface = regional_surface(&self.model, &self.curves, &region)?;
+            self.reach = reach;
         }
         for (&v, &p) in self.node_vertices.iter().zip(&self.nodes) {
             self.positions[v as usize] = p;
@@ -194,16 +202,14 @@ fn curve_pull(
     Ok((pull, node_vertices))
 }
 
-/// The fair surface of `model` solved only within `radius` (along mesh edges) of `grabbed`,
-/// aiming for the magnitudes the model has now.
+/// The fair surface of `model` solved only in `region` (a vertex mask), aiming for the
+/// magnitudes the model has now.
 fn regional_surface(
     model: &Model,
     curves: &[ControlCurve],
-    grabbed: u32,
-    radius: f64,
+    region: &[bool],
 ) -> Result<FairSurface, CommandError> {
-    let free = region_around(&model.mesh, &[grabbed], radius);
-    let mut surface = FairSurface::new_regional(&model.mesh, curves, &free, &[])
+    let mut surface = FairSurface::new_regional(&model.mesh, curves, region, &[])
         .map_err(CommandError::Surface)?;
     surface
         .measure_magnitudes(model.mesh.positions())

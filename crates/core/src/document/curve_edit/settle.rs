@@ -11,7 +11,7 @@ use glam::DVec3;
 
 use super::super::CommandError;
 use crate::fibermesh::{ControlCurve, FairSurface, region_around};
-use crate::mesh::remesh::{Chain, RemeshParams, remesh};
+use crate::mesh::remesh::{Chain, RemeshParams, remesh_within};
 use crate::mesh::{Mesh, VertexId};
 
 /// Iteration cap when settling; FiberMesh converges in 5–10 iterations.
@@ -66,13 +66,13 @@ pub(super) fn settle(
     Ok(())
 }
 
-/// Remeshes keeping every curve as an edge chain at the mesh's own resolution, then lets the
-/// surface find its fair shape again within `radius` of the curves with `changed[k]`.
+/// Remeshes the region of `change` keeping every curve as an edge chain at the mesh's own
+/// resolution, then lets the surface find its fair shape again there; the rest of the mesh
+/// keeps its vertices exactly.
 pub(super) fn remesh_and_settle(
     mesh: &Mesh,
     curves: &[ControlCurve],
-    changed: &[bool],
-    radius: f64,
+    change: Change<'_>,
 ) -> Result<(Mesh, Vec<ControlCurve>), CommandError> {
     let chains: Vec<Chain> = curves
         .iter()
@@ -81,7 +81,8 @@ pub(super) fn remesh_and_settle(
             closed: c.is_closed,
         })
         .collect();
-    let remeshed = remesh(mesh, &chains, &RemeshParams::keep_resolution(mesh))?;
+    let params = RemeshParams::keep_resolution(mesh);
+    let remeshed = remesh_within(mesh, &chains, &params, &change.region(mesh))?;
     let curves: Vec<ControlCurve> = curves
         .iter()
         .zip(remeshed.chains)
@@ -92,15 +93,8 @@ pub(super) fn remesh_and_settle(
         })
         .collect();
     let mut mesh = remeshed.mesh;
-    let around: Vec<u32> = curves
-        .iter()
-        .zip(changed)
-        .filter(|(_, is_changed)| **is_changed)
-        .flat_map(|(c, _)| c.vertices.iter().map(|v| v.0))
-        .collect();
-    let region = region_around(&mesh, &around, radius);
-    let mut surface =
-        FairSurface::new_regional(&mesh, &curves, &region, &[]).map_err(CommandError::Surface)?;
+    let mut surface = FairSurface::new_regional(&mesh, &curves, &remeshed.is_remeshed, &[])
+        .map_err(CommandError::Surface)?;
     surface
         .run(mesh.positions_mut(), ITERATIONS_AFTER_REMESH, TOLERANCE)
         .map_err(CommandError::Surface)?;

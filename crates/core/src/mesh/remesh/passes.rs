@@ -105,6 +105,9 @@ struct LongEdge {
 pub(super) struct Remesher {
     pub(super) mesh: EditableMesh,
     pub(super) chains: ChainNetwork,
+    /// Per vertex slot, whether remeshing may change it (its position, its edges); vertices
+    /// made by splits are.
+    pub(super) is_editable: Vec<bool>,
     /// Squared length above which edges split (`(4/3 L)²`).
     high_sq: f64,
     /// Squared length below which edges collapse (`(4/5 L)²`).
@@ -119,10 +122,17 @@ pub(super) struct Remesher {
 }
 
 impl Remesher {
-    pub(super) fn new(mesh: EditableMesh, chains: ChainNetwork, target_edge: f64) -> Remesher {
+    /// A remesher changing only the vertices with `is_editable[v]` (one entry per vertex).
+    pub(super) fn new(
+        mesh: EditableMesh,
+        chains: ChainNetwork,
+        target_edge: f64,
+        is_editable: Vec<bool>,
+    ) -> Remesher {
         Remesher {
             mesh,
             chains,
+            is_editable,
             high_sq: (4.0 / 3.0 * target_edge).powi(2),
             low_sq: (4.0 / 5.0 * target_edge).powi(2),
             marks: Vec::new(),
@@ -143,6 +153,10 @@ impl Remesher {
         for _ in 0..RELAXATION_SWEEPS {
             self.relax_tangentially();
         }
+    }
+
+    fn are_editable(&self, vertices: &[u32]) -> bool {
+        vertices.iter().all(|&v| self.is_editable[v as usize])
     }
 
     fn edge_length_sq(&self, h: u32) -> f64 {
@@ -176,6 +190,8 @@ impl Remesher {
                 .split_point(a, b)
                 .unwrap_or_else(|| self.mesh.position(a).midpoint(self.mesh.position(b)));
             let m = self.mesh.split(h, p);
+            debug_assert_eq!(m as usize, self.is_editable.len());
+            self.is_editable.push(true);
             self.chains.insert_split(a, b, m);
             self.mesh
                 .for_each_neighbor(m, |w| self.queue_if_long(&mut queue, m, w));
@@ -184,6 +200,9 @@ impl Remesher {
     }
 
     fn queue_if_long(&self, queue: &mut BinaryHeap<LongEdge>, a: u32, b: u32) {
+        if !self.are_editable(&[a, b]) {
+            return;
+        }
         let length_sq = self
             .mesh
             .position(a)
@@ -207,6 +226,9 @@ impl Remesher {
                 continue;
             }
             let (u, v) = (self.mesh.tail(h), self.mesh.head(h));
+            if !self.are_editable(&[u, v]) {
+                continue;
+            }
             // Prefer removing a free vertex: it carries no constraint.
             let order = if self.chains.is_on_chain(u) && !self.chains.is_on_chain(v) {
                 [(v, u), (u, v)]
@@ -364,6 +386,7 @@ impl Remesher {
             && valence(a) > i64::from(MIN_VALENCE)
             && valence(b) > i64::from(MIN_VALENCE)
             && c != d
+            && self.are_editable(&[a, b, c, d])
             && !self.chains.is_chain_edge(a, b)
             && !m.is_neighbor(c, d)
             && self.is_flip_geometry_ok([a, b, c, d].map(|v| m.position(v)))
@@ -384,6 +407,7 @@ impl Remesher {
     fn relax_tangentially(&mut self) {
         for v in 0..self.mesh.n_vertex_slots() {
             if !self.mesh.is_live_vertex(v)
+                || !self.is_editable[v as usize]
                 || self.mesh.is_boundary_vertex(v)
                 || self.chains.is_on_chain(v)
             {

@@ -15,7 +15,6 @@ use sketchmesh_core::document::{
 use sketchmesh_core::geometry::{face_normal, raycast};
 use sketchmesh_core::io::write_glb;
 use sketchmesh_core::mesh::{HalfedgeId, Mesh};
-use sketchmesh_core::solve::SolveError;
 
 #[path = "../benches/common/fibermesh_shape.rs"]
 mod fibermesh_shape;
@@ -199,7 +198,7 @@ fn a_long_pull_on_a_fine_shape_settles_into_an_unfolded_surface() {
     assert_closed_manifold(&after.mesh);
     assert_curves_embedded(after);
     assert_eq!(
-        folds(&after.mesh),
+        folded_edges(&after.mesh),
         0,
         "the pulled surface folds over itself"
     );
@@ -224,25 +223,33 @@ fn a_long_pull_on_a_fine_shape_settles_into_an_unfolded_surface() {
 }
 
 #[test]
-fn a_pull_that_folds_the_surface_over_itself_is_refused_and_changes_nothing() {
-    // The front curve pulled up past the top of the shape: the surface has to fold over the
-    // top, and the optimization feeds the folds back until it runs away.
+fn a_pull_far_past_the_shape_does_not_run_away() {
+    // The front curve pulled up past the top of the shape: the surface folds over the top
+    // (a few dozen folded edges). With a wider settle region (2.5 peel radii, a longer peel)
+    // the folds fed back and the optimization ran away to six times the shape's size.
     let mut editor = shape_with_front_curve();
-    let before = editor.document().clone();
-    let middle = before.models[0].curves[1].points[before.models[0].curves[1].points.len() / 2];
-    let error = editor
+    let before = model(&editor).clone();
+    let middle = before.curves[1].points[before.curves[1].points.len() / 2];
+    editor
         .apply(Op::Pull(drag(middle, DVec2::new(0.0, -220.0))))
-        .unwrap_err();
-    assert_eq!(error, CommandError::Surface(SolveError::Diverged));
-    assert_eq!(editor.document(), &before);
-    assert_eq!(editor.ops().len(), 2);
-    // Undo still takes back the curve added before.
-    editor.undo().unwrap();
-    assert_eq!(model(&editor).curves.len(), 1);
+        .unwrap();
+    let after = model(&editor);
+    assert_closed_manifold(&after.mesh);
+    assert_curves_embedded(after);
+    let size = |mesh: &Mesh| {
+        let (lo, hi) = mesh.bounding_box().unwrap();
+        (hi - lo).length()
+    };
+    let (size_before, size_after) = (size(&before.mesh), size(&after.mesh));
+    assert!(
+        size_after < 1.5 * size_before,
+        "the surface ran away: size {size_after} from {size_before}"
+    );
 }
 
-/// Pairs of neighbouring triangles facing more than 120° apart.
-fn folds(mesh: &Mesh) -> usize {
+/// Interior edges whose two faces face more than 120° apart: folds, where the surface
+/// doubles back on itself.
+fn folded_edges(mesh: &Mesh) -> usize {
     (0..mesh.n_halfedges() as u32)
         .map(HalfedgeId)
         .filter_map(|h| mesh.twin(h).filter(|t| h.0 < t.0).map(|t| (h, t)))
@@ -265,7 +272,7 @@ fn erasing_the_added_curve_after_a_pull_returns_close_to_the_creation() {
     let curve = model(&editor).curves[1].clone();
     let middle = curve.points[curve.points.len() / 2];
     editor
-        .apply(Op::Pull(drag(middle, DVec2::new(0.0, -50.0))))
+        .apply(Op::Pull(drag(middle, DVec2::new(0.0, -80.0))))
         .unwrap();
     let pulled = model(&editor).clone();
     let diagonal = bbox_diagonal(&created.mesh);
@@ -286,8 +293,8 @@ fn erasing_the_added_curve_after_a_pull_returns_close_to_the_creation() {
 }
 
 /// How close (largest vertex distance to the creation's surface, over the bounding-box
-/// diagonal) erasing brings a pulled shape back to its creation. A 50 px pull moves the
-/// surface by about 0.05 of the diagonal.
+/// diagonal) erasing brings a pulled shape back to its creation. The test's 80 px pull moves
+/// the surface by about 0.09 of the diagonal; erasing leaves 0.02.
 const ERASE_TOLERANCE: f64 = 0.03;
 
 #[test]

@@ -25,7 +25,7 @@ use crate::fibermesh::curve_pull::{CurveNetwork, CurvePull, PullParams};
 use crate::fibermesh::{ControlCurve, FairSurface, nearest_vertices, region_around};
 
 /// The region solved while dragging reaches this many peel radii from the grabbed point.
-const REGION_PER_PEEL: f64 = 2.5;
+const REGION_PER_PEEL: f64 = 2.0;
 
 /// The smallest region, as a fraction of the model's bounding-box diagonal.
 const MIN_REGION: f64 = 0.25;
@@ -35,11 +35,11 @@ const PREVIEW_VERTICES: usize = 5_000;
 
 /// The preview region must reach this many peel radii from the grabbed point (the peeled
 /// curve and some surface beyond its ends); past that it is refactored larger.
-const PREVIEW_REACH_PER_PEEL: f64 = 1.5;
+const PREVIEW_REACH_PER_PEEL: f64 = 1.25;
 
 /// How much farther than needed a refactored preview region reaches, so that a drag
 /// refactors a few times, not every frame.
-const PREVIEW_GROWTH: f64 = 1.5;
+const PREVIEW_GROWTH: f64 = 1.3;
 
 /// Surface iterations per drag frame.
 const ITERATIONS_PER_FRAME: usize = 1;

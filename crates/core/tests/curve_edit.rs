@@ -15,6 +15,7 @@ use sketchmesh_core::document::{
 use sketchmesh_core::geometry::{face_normal, raycast};
 use sketchmesh_core::io::write_glb;
 use sketchmesh_core::mesh::{HalfedgeId, Mesh};
+use sketchmesh_core::solve::SolveError;
 
 #[path = "../benches/common/fibermesh_shape.rs"]
 mod fibermesh_shape;
@@ -224,27 +225,34 @@ fn a_long_pull_on_a_fine_shape_settles_into_an_unfolded_surface() {
 
 #[test]
 fn a_pull_far_past_the_shape_does_not_run_away() {
-    // The front curve pulled up past the top of the shape: the surface folds over the top
-    // (a few dozen folded edges). With a wider settle region (2.5 peel radii, a longer peel)
-    // the folds fed back and the optimization ran away to six times the shape's size.
+    // The front curve pulled up past the top of the shape: the surface folds over the top,
+    // and fed back, the folds made the optimization run away (to six times the shape's
+    // size, or to NaN). Now either the run notices and the op is refused, changing
+    // nothing, or the result stays bounded.
     let mut editor = shape_with_front_curve();
     let before = model(&editor).clone();
     let middle = before.curves[1].points[before.curves[1].points.len() / 2];
-    editor
-        .apply(Op::Pull(drag(middle, DVec2::new(0.0, -220.0))))
-        .unwrap();
-    let after = model(&editor);
-    assert_closed_manifold(&after.mesh);
-    assert_curves_embedded(after);
-    let size = |mesh: &Mesh| {
-        let (lo, hi) = mesh.bounding_box().unwrap();
-        (hi - lo).length()
-    };
-    let (size_before, size_after) = (size(&before.mesh), size(&after.mesh));
-    assert!(
-        size_after < 1.5 * size_before,
-        "the surface ran away: size {size_after} from {size_before}"
-    );
+    match editor.apply(Op::Pull(drag(middle, DVec2::new(0.0, -220.0)))) {
+        Err(error) => {
+            assert_eq!(error, CommandError::Surface(SolveError::Diverged));
+            assert_eq!(model(&editor), &before);
+            assert_eq!(editor.ops().len(), 2);
+        }
+        Ok(()) => {
+            let after = model(&editor);
+            assert_closed_manifold(&after.mesh);
+            assert_curves_embedded(after);
+            let size = |mesh: &Mesh| {
+                let (lo, hi) = mesh.bounding_box().unwrap();
+                (hi - lo).length()
+            };
+            let (size_before, size_after) = (size(&before.mesh), size(&after.mesh));
+            assert!(
+                size_after < 1.5 * size_before,
+                "the surface ran away: size {size_after} from {size_before}"
+            );
+        }
+    }
 }
 
 /// Interior edges whose two faces face more than 120° apart: folds, where the surface

@@ -88,6 +88,9 @@ pub struct Remeshed {
     /// Per new vertex, whether it lies in the region that was remeshed (see
     /// [`remesh_within`]): every vertex for [`remesh`].
     pub is_remeshed: Vec<bool>,
+    /// Per new vertex, whether remeshing made it (by a split), rather than kept one of the
+    /// input's vertices.
+    pub is_new: Vec<bool>,
 }
 
 /// Why remeshing refused; the input is never changed.
@@ -195,9 +198,11 @@ pub fn remesh_within(
     }
     let (soup, new_from_old) = remesher.mesh.to_soup();
     let mut is_remeshed = vec![false; soup.positions.len()];
-    for (&new, &edited) in new_from_old.iter().zip(&remesher.is_editable) {
+    let mut is_new = vec![false; soup.positions.len()];
+    for (old, (&new, &edited)) in new_from_old.iter().zip(&remesher.is_editable).enumerate() {
         if let Some(slot) = is_remeshed.get_mut(new as usize) {
             *slot = edited;
+            is_new[new as usize] = old >= mesh.n_vertices();
         }
     }
     let mesh = Mesh::from_soup(&soup).map_err(RemeshError::InvalidResult)?;
@@ -206,6 +211,7 @@ pub fn remesh_within(
         mesh,
         chains: remesher.chains.to_chains(&new_from_old),
         is_remeshed,
+        is_new,
     })
 }
 
@@ -535,6 +541,12 @@ mod tests {
             n_remeshed > n_inside,
             "the stretched side got no new vertices"
         );
+        // New vertices are all in the region, and every other one is an input vertex.
+        let n_new = out.is_new.iter().filter(|&&r| r).count();
+        assert!(n_new > 0);
+        let is_inside_new = |(&new, &remeshed): (&bool, &bool)| !new || remeshed;
+        assert!(out.is_new.iter().zip(&out.is_remeshed).all(is_inside_new));
+        assert!(out.mesh.n_vertices() - n_new <= mesh.n_vertices());
         // Remeshing everything changes the outside too: the restriction is what kept it.
         let everywhere = remesh(&mesh, &[], &params).unwrap();
         assert_ne!(everywhere.mesh.n_vertices(), out.mesh.n_vertices());

@@ -25,7 +25,7 @@ use crate::fibermesh::curve_pull::{CurveNetwork, CurvePull, PullParams};
 use crate::fibermesh::{ControlCurve, FairSurface, nearest_vertices, region_around};
 
 /// The region solved while dragging reaches this many peel radii from the grabbed point.
-const REGION_PER_PEEL: f64 = 2.0;
+const REGION_PER_PEEL: f64 = 2.5;
 
 /// The smallest region, as a fraction of the model's bounding-box diagonal.
 const MIN_REGION: f64 = 0.25;

@@ -46,6 +46,13 @@ impl Change<'_> {
 /// surface before the op moved any curve; the same as `mesh.positions()` when nothing
 /// moved). With `relax`, the magnitudes in the region are not measured but interpolated
 /// from around it, so that the shape a removed or changed constraint forced gives way.
+///
+/// Without `relax` (curves moved, the same curves), what is applied is the *difference*
+/// the move makes: the optimization runs twice with the same factorization, from the
+/// moved curves and from the curves at rest, and the rest surface gets the first result
+/// minus the second. Re-converging a fair surface drifts it (about 1% thinner, see
+/// [`FairSurface`]); inside a region whose rim is held, that drift was a visible step at
+/// the rim, and the difference cancels it.
 pub(super) fn settle(
     mesh: &mut Mesh,
     curves: &[ControlCurve],
@@ -57,18 +64,33 @@ pub(super) fn settle(
     let relaxed = if relax { region.clone() } else { Vec::new() };
     let mut surface = FairSurface::new_regional(mesh, curves, &region, &relaxed)
         .map_err(CommandError::Surface)?;
-    surface
-        .measure_magnitudes(rest)
-        .map_err(CommandError::Surface)?;
-    surface
-        .run(mesh.positions_mut(), MAX_ITERATIONS, TOLERANCE)
-        .map_err(CommandError::Surface)?;
+    let mut run = |positions: &mut [DVec3]| {
+        surface.measure_magnitudes(rest)?;
+        surface.run(positions, MAX_ITERATIONS, TOLERANCE)
+    };
+    if relax {
+        run(mesh.positions_mut()).map_err(CommandError::Surface)?;
+        return Ok(());
+    }
+    let mut still = rest.to_vec();
+    run(&mut still).map_err(CommandError::Surface)?;
+    run(mesh.positions_mut()).map_err(CommandError::Surface)?;
+    for ((p, &r), &s) in mesh.positions_mut().iter_mut().zip(rest).zip(&still) {
+        *p += r - s;
+    }
     Ok(())
 }
 
 /// Remeshes the region of `change` keeping every curve as an edge chain at the mesh's own
-/// resolution, then lets the surface find its fair shape again there; the rest of the mesh
-/// keeps its vertices exactly.
+/// resolution, then lets the vertices the remesh made find the fair surface between the
+/// ones it kept; the rest of the mesh keeps its vertices exactly.
+///
+/// Only the new vertices move: the kept ones are on the settled surface already (the
+/// remesher's moves are tangential), and re-converging them all, with magnitudes measured
+/// on the remeshed surface, drifted the region away from its rim (up to a third of an edge
+/// length at 40k vertices, a visible step). The new vertices aim for the typical magnitude
+/// of the kept ones around them: measured where a split put them, on a chord, theirs is
+/// meaningless (and after a pull that folded the surface, it made them run away).
 pub(super) fn remesh_and_settle(
     mesh: &Mesh,
     curves: &[ControlCurve],
@@ -93,7 +115,7 @@ pub(super) fn remesh_and_settle(
         })
         .collect();
     let mut mesh = remeshed.mesh;
-    let mut surface = FairSurface::new_regional(&mesh, &curves, &remeshed.is_remeshed, &[])
+    let mut surface = FairSurface::new_regional(&mesh, &curves, &remeshed.is_new, &remeshed.is_new)
         .map_err(CommandError::Surface)?;
     surface
         .run(mesh.positions_mut(), ITERATIONS_AFTER_REMESH, TOLERANCE)

@@ -8,33 +8,15 @@
 //! `cargo bench -p sketchmesh-core --bench curve_edit -- --warm-up-time 1 --measurement-time 3`.
 
 use std::hint::black_box;
-use std::sync::Arc;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
-use sketchmesh_core::document::{Editor, FileInput, ImportInput, Op, PullSession, StrokeInput};
-use sketchmesh_core::io::write_glb;
+use sketchmesh_core::document::{Op, PullSession, StrokeInput};
 
 #[path = "common/fibermesh_shape.rs"]
 mod fibermesh_shape;
-use fibermesh_shape::{HALF_AXES, VIEWPORT, ellipse_document};
-
-/// An editor holding one created ellipse of about `n` vertices, imported from its .glb as
-/// the page bench does.
-fn shape(n: usize) -> Editor {
-    let document = ellipse_document(n).expect("the ellipse inflates");
-    let mut editor = Editor::new();
-    editor
-        .apply(Op::Import(ImportInput {
-            files: vec![FileInput {
-                name: "ellipse.glb".to_owned(),
-                data: Some(Arc::new(write_glb(&document))),
-            }],
-        }))
-        .expect("the export imports");
-    editor
-}
+use fibermesh_shape::{HALF_AXES, VIEWPORT, ellipse_editor};
 
 /// The drag from the outline's rightmost point, `steps` samples, 50 px right in all.
 fn drag(steps: usize) -> StrokeInput {
@@ -55,7 +37,7 @@ fn bench_curve_edit(c: &mut Criterion) {
     let mut group = c.benchmark_group("pull");
     group.sample_size(10);
     for n in [10_000, 40_000] {
-        let editor = shape(n);
+        let editor = ellipse_editor(n).expect("the ellipse inflates and imports");
         let vertices = editor.document().stats().vertices;
         let grab = StrokeInput {
             stroke: drag(1).stroke[..1].to_vec(),

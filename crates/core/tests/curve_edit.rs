@@ -4,16 +4,13 @@
 #![allow(clippy::unwrap_used)] // A panic is a test failure with a location.
 
 use std::f64::consts::TAU;
-use std::sync::Arc;
 
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    AddCurveInput, CommandError, ControlCurve, CurveTypeInput, Editor, FileInput, ImportInput,
-    Model, Op, StrokeInput,
+    AddCurveInput, CommandError, ControlCurve, CurveTypeInput, Editor, Model, Op, StrokeInput,
 };
 use sketchmesh_core::geometry::{face_normal, raycast};
-use sketchmesh_core::io::write_glb;
 use sketchmesh_core::mesh::{HalfedgeId, Mesh};
 use sketchmesh_core::solve::SolveError;
 
@@ -172,16 +169,7 @@ fn a_long_pull_on_a_fine_shape_settles_into_an_unfolded_surface() {
     // An ellipse of 10k vertices, its outline pulled out by 150 px (60% of its half-width):
     // the triangles next to the moved outline stretch and invert, and measured on them the
     // optimization ran away to infinite positions (the remesher then refused a NaN length).
-    let document = fibermesh_shape::ellipse_document(10_000).unwrap();
-    let mut editor = Editor::new();
-    editor
-        .apply(Op::Import(ImportInput {
-            files: vec![FileInput {
-                name: "ellipse.glb".to_owned(),
-                data: Some(Arc::new(write_glb(&document))),
-            }],
-        }))
-        .unwrap();
+    let mut editor = fibermesh_shape::ellipse_editor(10_000).unwrap();
     let viewport = fibermesh_shape::VIEWPORT;
     let grab = viewport / 2.0 + DVec2::new(fibermesh_shape::HALF_AXES.x, 0.0);
     let by = DVec2::new(150.0, 0.0);

@@ -7,8 +7,11 @@ use std::sync::Arc;
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::StrokePoint;
-use sketchmesh_core::document::{ControlCurve, Document, Model};
+use sketchmesh_core::document::{
+    ControlCurve, Document, Editor, FileInput, ImportInput, Model, Op,
+};
 use sketchmesh_core::fibermesh::{CreateParams, create_converged_from_stroke};
+use sketchmesh_core::io::write_glb;
 
 /// The viewport the ellipse is drawn in (the page's canvas below its toolbar).
 pub const VIEWPORT: DVec2 = DVec2::new(1280.0, 680.0);
@@ -49,4 +52,18 @@ pub fn ellipse_document(target_vertices: usize) -> Result<Document, Box<dyn std:
     let mut document = Document::default();
     document.models.push(Arc::new(model));
     Ok(document)
+}
+
+/// An editor holding [`ellipse_document`], imported from its .glb as the page bench does.
+#[allow(dead_code)] // The .glb example needs the document only.
+pub fn ellipse_editor(target_vertices: usize) -> Result<Editor, Box<dyn std::error::Error>> {
+    let document = ellipse_document(target_vertices)?;
+    let mut editor = Editor::new();
+    editor.apply(Op::Import(ImportInput {
+        files: vec![FileInput {
+            name: "ellipse.glb".to_owned(),
+            data: Some(Arc::new(write_glb(&document))),
+        }],
+    }))?;
+    Ok(editor)
 }

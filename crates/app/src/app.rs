@@ -523,6 +523,7 @@ impl eframe::App for SketchApp {
                     &shared.editor,
                     &mut self.options,
                     self.tools.mode(),
+                    self.tools.oversketch_fit_mut(),
                     &mut self.show_help,
                     status,
                 )

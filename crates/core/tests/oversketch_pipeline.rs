@@ -9,13 +9,17 @@ use std::sync::Arc;
 
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
+use sketchmesh_core::deform::HandleFit;
 use sketchmesh_core::document::{
-    CommandError, Document, Editor, FileInput, ImportInput, Model, Op, StrokeInput,
+    CommandError, Document, Editor, FileInput, ImportInput, Model, Op, OversketchFit,
+    OversketchInput, StrokeInput,
 };
 use sketchmesh_core::geometry::{Bvh, cotan_laplacian};
 use sketchmesh_core::io::write_glb;
 use sketchmesh_core::mesh::{Mesh, primitives};
-use sketchmesh_core::oversketch::{OversketchError, Oversketched, oversketch, preview_handle};
+use sketchmesh_core::oversketch::{
+    OversketchError, Oversketched, SOFT_FIT_WEIGHT, oversketch, oversketch_with, preview_handle,
+};
 use sketchmesh_core::silhouette::silhouettes;
 
 const VIEWPORT: DVec2 = DVec2::new(1000.0, 1000.0);
@@ -281,25 +285,66 @@ fn bumpy_torus_keeps_its_bumps_better_than_a_naive_falloff() {
             rest[v] + *motion * (1.0 - t * t * (3.0 - 2.0 * t))
         })
         .collect();
-    let laplacian = cotan_laplacian(&mesh);
-    let detail_change = |positions: &[DVec3]| {
-        let mut lx = vec![DVec3::ZERO; rest.len()];
-        let mut lp = vec![DVec3::ZERO; rest.len()];
-        laplacian.mul_dvec3(positions, &mut lx);
-        laplacian.mul_dvec3(rest, &mut lp);
-        let change: f64 = moved
-            .iter()
-            .map(|&v| (lx[v].length() - lp[v].length()).abs())
-            .sum();
-        let size: f64 = moved.iter().map(|&v| lp[v].length()).sum();
-        change / size
-    };
-    let ours = detail_change(&result.positions);
-    let naive = detail_change(&naive);
+    let ours = detail_change(&mesh, &result.positions, &moved);
+    let naive = detail_change(&mesh, &naive, &moved);
     eprintln!("bumpy torus: relative |Lx| change over the ROI: ours {ours:.4}, naive {naive:.4}");
     // Measured: ours 1.56, naive 2.20. Both large: the ROI (spheres as large as the
     // displacements, SilSketch's rule) is only about four edges wide here.
     assert!(ours < 0.8 * naive, "ours {ours}, naive {naive}");
+}
+
+/// The relative change of the cotangent Laplacians' lengths (the surface detail) over the
+/// vertices `over`, from `mesh` to `positions`.
+fn detail_change(mesh: &Mesh, positions: &[DVec3], over: &[usize]) -> f64 {
+    let laplacian = cotan_laplacian(mesh);
+    let rest = mesh.positions();
+    let mut lx = vec![DVec3::ZERO; rest.len()];
+    let mut lp = vec![DVec3::ZERO; rest.len()];
+    laplacian.mul_dvec3(positions, &mut lx);
+    laplacian.mul_dvec3(rest, &mut lp);
+    let change: f64 = over
+        .iter()
+        .map(|&v| (lx[v].length() - lp[v].length()).abs())
+        .sum();
+    let size: f64 = over.iter().map(|&v| lp[v].length()).sum();
+    change / size
+}
+
+#[test]
+fn a_soft_fit_follows_the_stroke_less_and_keeps_more_detail() {
+    let mesh = bumpy_torus(0.03, 192, 64);
+    let camera = Camera::default();
+    let outline = longest_outline(&mesh, &camera);
+    let stroke = pushed_stroke(&outline, DVec2::X, 50, 40.0);
+    let exact = oversketch_with(&mesh, &camera, VIEWPORT, &stroke, HandleFit::Exact).unwrap();
+    let soft = HandleFit::Soft {
+        weight: SOFT_FIT_WEIGHT,
+    };
+    let soft = oversketch_with(&mesh, &camera, VIEWPORT, &stroke, soft).unwrap();
+    assert_eq!(soft.handle, exact.handle, "the same outline piece matched");
+    let worst =
+        |result: &Oversketched| worst_middle_distance(&mesh, &result.positions, &camera, &stroke);
+    let (worst_exact, worst_soft) = (worst(&exact), worst(&soft));
+    let moved: Vec<usize> = (0..mesh.n_vertices())
+        .filter(|&v| mesh.positions()[v] != exact.positions[v])
+        .collect();
+    let (detail_exact, detail_soft) = (
+        detail_change(&mesh, &exact.positions, &moved),
+        detail_change(&mesh, &soft.positions, &moved),
+    );
+    eprintln!(
+        "bumpy torus: exact {worst_exact:.2} px, detail change {detail_exact:.3}; \
+         soft {worst_soft:.2} px, detail change {detail_soft:.3}"
+    );
+    // The soft outline still moves most of the way (the stroke is 40 px out).
+    assert!(
+        worst_soft > worst_exact && worst_soft < 20.0,
+        "soft {worst_soft} px"
+    );
+    assert!(
+        detail_soft < detail_exact,
+        "soft {detail_soft}, exact {detail_exact}"
+    );
 }
 
 #[test]
@@ -369,10 +414,11 @@ fn import_op(mesh: &Mesh) -> Op {
 }
 
 fn oversketch_op(stroke: &[DVec2]) -> Op {
-    Op::Oversketch(StrokeInput {
+    Op::Oversketch(OversketchInput {
         viewport: VIEWPORT.to_array(),
         camera: Camera::default(),
         stroke: stroke.iter().map(|p| [p.x, p.y, 0.5]).collect(),
+        fit: OversketchFit::Exact,
     })
 }
 
@@ -402,6 +448,31 @@ fn oversketch_op_replays_and_undoes_exactly() {
     assert!(Arc::ptr_eq(&editor.document().models[0], &before.models[0]));
     editor.redo().unwrap();
     assert_eq!(*editor.document(), after);
+
+    // A soft over-sketch of the same stroke: the op carries its fit through the editor and
+    // the session file.
+    let Op::Oversketch(exact) = oversketch_op(&stroke) else {
+        unreachable!("oversketch_op makes an oversketch")
+    };
+    let soft = Op::Oversketch(OversketchInput {
+        fit: OversketchFit::Soft,
+        ..exact
+    });
+    editor.undo().unwrap();
+    editor.apply(soft).unwrap();
+    let fit = HandleFit::Soft {
+        weight: SOFT_FIT_WEIGHT,
+    };
+    let expected = oversketch_with(&mesh, &Camera::default(), VIEWPORT, &stroke, fit).unwrap();
+    let softened = editor.document().clone();
+    assert_eq!(softened.models[0].mesh.positions(), &expected.positions[..]);
+    assert_ne!(softened, after);
+    assert_eq!(
+        *Editor::replay_json(&editor.session_json())
+            .unwrap()
+            .document(),
+        softened
+    );
 }
 
 #[test]

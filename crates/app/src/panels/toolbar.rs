@@ -1,7 +1,7 @@
 //! The toolbar: import and export, undo and redo for tablets (no keyboard there), view
 //! switches, status.
 
-use sketchmesh_core::document::Editor;
+use sketchmesh_core::document::{Editor, OversketchFit};
 
 use crate::render::ViewOptions;
 use crate::tools::Mode;
@@ -34,6 +34,7 @@ pub fn toolbar_ui(
     editor: &Editor,
     options: &mut ViewOptions,
     mode: Mode,
+    fit: &mut OversketchFit,
     show_help: &mut bool,
     status: Option<&str>,
 ) -> Option<Action> {
@@ -83,6 +84,22 @@ pub fn toolbar_ui(
             let hint = format!("{} ({})", m.hint(), m.key().name());
             if ui.add(button).on_hover_text(hint).clicked() {
                 picked_mode = Some(m);
+            }
+        }
+        if mode == Mode::Oversketch {
+            let mut exact = *fit == OversketchFit::Exact;
+            let hint = "On: the outline lands on the stroke. Off: it follows the stroke as far \
+                        as the surface detail allows, so a rough stroke bends the shape less";
+            if ui
+                .toggle_value(&mut exact, "Exact fit")
+                .on_hover_text(hint)
+                .changed()
+            {
+                *fit = if exact {
+                    OversketchFit::Exact
+                } else {
+                    OversketchFit::Soft
+                };
             }
         }
         ui.separator();

@@ -14,7 +14,7 @@ pub mod sketch;
 use egui::Rect;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::StrokePoint;
-use sketchmesh_core::document::{Document, Op, PullSession};
+use sketchmesh_core::document::{Document, Op, OversketchFit, PullSession};
 
 pub use crate::input::router::ToolEvent;
 pub use mode::Mode;
@@ -71,6 +71,11 @@ impl ToolSet {
         let dropped = self.cancel();
         self.mode = mode;
         dropped
+    }
+
+    /// The over-sketch tool's fit setting, for the toolbar.
+    pub fn oversketch_fit_mut(&mut self) -> &mut OversketchFit {
+        self.oversketch.fit_mut()
     }
 
     /// Drops any gesture in progress; see [`ToolSet::set_mode`].

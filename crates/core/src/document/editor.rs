@@ -4,14 +4,18 @@ use std::sync::Arc;
 
 use super::curve_edit;
 use super::history::History;
-use super::{Document, ImportInput, Model, Op, PendingCreate, SketchCurve, StrokeInput};
+use super::{
+    Document, ImportInput, Model, Op, OversketchFit, OversketchInput, PendingCreate, SketchCurve,
+    StrokeInput,
+};
 use crate::curve::{StrokeError, process_stroke};
+use crate::deform::HandleFit;
 use crate::fibermesh::CreateError;
 use crate::fibermesh::add_curve::AddCurveError;
 use crate::fibermesh::curve_pull::PullError;
 use crate::io::{GltfError, ImportFile, ImportLimits, Imported, import_gltf};
 use crate::mesh::remesh::RemeshError;
-use crate::oversketch::{OversketchError, Oversketched, oversketch};
+use crate::oversketch::{OversketchError, Oversketched, SOFT_FIT_WEIGHT, oversketch_with};
 use crate::solve::SolveError;
 
 /// Why an op was refused. The messages are sentences for the user.
@@ -250,14 +254,21 @@ fn place_stroke(input: &StrokeInput) -> Result<SketchCurve, CommandError> {
 /// (a failed edit, then a doubtful match, then no match).
 fn oversketch_document(
     document: &Document,
-    input: &StrokeInput,
+    input: &OversketchInput,
 ) -> Result<(usize, Model), CommandError> {
-    let viewport = input.viewport_size();
-    let stroke = curve_edit::screen_stroke(input, 2)?;
+    let input_stroke = StrokeInput::of_oversketch(input);
+    let viewport = input_stroke.viewport_size();
+    let stroke = curve_edit::screen_stroke(&input_stroke, 2)?;
+    let fit = match input.fit {
+        OversketchFit::Exact => HandleFit::Exact,
+        OversketchFit::Soft => HandleFit::Soft {
+            weight: SOFT_FIT_WEIGHT,
+        },
+    };
     let mut best: Option<(usize, Oversketched)> = None;
     let mut refusal = OversketchError::NoMatch;
     for (index, model) in document.models.iter().enumerate() {
-        match oversketch(&model.mesh, &input.camera, viewport, &stroke) {
+        match oversketch_with(&model.mesh, &input.camera, viewport, &stroke, fit) {
             Ok(result) => {
                 if best.as_ref().is_none_or(|(_, b)| result.score > b.score) {
                     best = Some((index, result));

@@ -20,6 +20,9 @@ pub use curve_edit::{CURVE_PICK_RADIUS_PX, PullSession, curve_type_toggle};
 pub use editor::{CommandError, Editor};
 pub use intent::{CLOSE_TOLERANCE_PX, ink_instead, needs_tap, op_for_stroke, starts_on_model};
 pub use model::{ControlCurve, Document, Model, PointCloud, SketchCurve, Stats};
-pub use op::{AddCurveInput, CurveTypeInput, FileInput, ImportInput, Op, StrokeInput};
+pub use op::{
+    AddCurveInput, CurveTypeInput, FileInput, ImportInput, Op, OversketchFit, OversketchInput,
+    StrokeInput,
+};
 pub use pending::PendingCreate;
 pub use session::{SESSION_FORMAT, SESSION_VERSION, Session, SessionError};

@@ -19,8 +19,8 @@ pub enum Op {
     /// Add the models, sketches and points of a glTF file.
     Import(ImportInput),
     /// Redraw part of a model's outline: the silhouette piece the stroke matches moves onto
-    /// it and the surface around follows (see [`crate::oversketch::oversketch`]).
-    Oversketch(StrokeInput),
+    /// it and the surface around follows (see [`crate::oversketch::oversketch_with`]).
+    Oversketch(OversketchInput),
     /// Drag a point of a control curve (FiberMesh deform tool): the first sample is where the
     /// curve was grabbed, the last where it was released; the curve peels and the surface
     /// follows.
@@ -91,6 +91,40 @@ pub struct AddCurveInput {
     /// A stroke across the model (confirmed by a tap) makes a cross-section loop.
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub cross_section: bool,
+}
+
+/// An `oversketch` op: the stroke, and how closely the outline follows it.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct OversketchInput {
+    /// Viewport size `[width, height]` in CSS px.
+    pub viewport: [f64; 2],
+    /// The camera the stroke was drawn with.
+    pub camera: Camera,
+    /// Raw samples `[x, y, pressure]`, as in [`StrokeInput`].
+    pub stroke: Vec<[f64; 3]>,
+    /// Exact (the default, left out of session files) or soft.
+    #[serde(default, skip_serializing_if = "OversketchFit::is_exact")]
+    pub fit: OversketchFit,
+}
+
+/// How closely an over-sketched outline follows the stroke.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum OversketchFit {
+    /// The outline lands on the stroke.
+    #[default]
+    Exact,
+    /// The outline is drawn towards the stroke as far as the surface details allow: a
+    /// rough stroke bends the shape less and keeps more of its detail.
+    Soft,
+}
+
+impl OversketchFit {
+    /// Whether this is [`OversketchFit::Exact`] (for serde's `skip_serializing_if`).
+    pub fn is_exact(&self) -> bool {
+        *self == OversketchFit::Exact
+    }
 }
 
 /// A `set_curve_type` op: the stroke along the curves and the type they get.
@@ -187,6 +221,15 @@ impl StrokeInput {
         }
     }
 
+    /// The stroke part of an `oversketch` op.
+    pub fn of_oversketch(input: &OversketchInput) -> StrokeInput {
+        StrokeInput {
+            viewport: input.viewport,
+            camera: input.camera,
+            stroke: input.stroke.clone(),
+        }
+    }
+
     /// The stroke part of a `set_curve_type` op.
     pub fn of_curve_type(input: &CurveTypeInput) -> StrokeInput {
         StrokeInput {
@@ -241,7 +284,12 @@ mod tests {
                     data: Some(Arc::new(vec![1, 2, 3])),
                 }],
             }),
-            Op::Oversketch(stroke()),
+            Op::Oversketch(OversketchInput {
+                viewport: [1.0, 1.0],
+                camera: Camera::default(),
+                stroke: Vec::new(),
+                fit: OversketchFit::Soft,
+            }),
             Op::Pull(stroke()),
             Op::AddCurve(AddCurveInput {
                 viewport: [1.0, 1.0],
@@ -316,5 +364,28 @@ mod tests {
             serde_json::to_string(&Op::Undo).unwrap(),
             r#"{"op":"undo"}"#
         );
+    }
+
+    #[test]
+    fn an_oversketch_writes_its_fit_only_when_soft() {
+        let json = r#"{"op":"oversketch","viewport":[1,1],"camera":"#.to_owned()
+            + &serde_json::to_string(&Camera::default()).unwrap()
+            + r#","stroke":[]}"#;
+        let op: Op = serde_json::from_str(&json).unwrap();
+        let Op::Oversketch(input) = &op else {
+            panic!("not an oversketch: {op:?}");
+        };
+        assert_eq!(input.fit, OversketchFit::Exact);
+        assert!(!serde_json::to_string(&op).unwrap().contains("fit"));
+        let soft = json.replace(r#""stroke":[]"#, r#""stroke":[],"fit":"soft""#);
+        let op: Op = serde_json::from_str(&soft).unwrap();
+        assert!(matches!(&op, Op::Oversketch(i) if i.fit == OversketchFit::Soft));
+        assert!(
+            serde_json::to_string(&op)
+                .unwrap()
+                .contains(r#""fit":"soft""#)
+        );
+        let unknown = json.replace(r#""stroke":[]"#, r#""stroke":[],"fit":"loose""#);
+        assert!(serde_json::from_str::<Op>(&unknown).is_err());
     }
 }

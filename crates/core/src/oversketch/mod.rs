@@ -28,7 +28,10 @@ mod turning;
 
 pub use mapping::{BLEND_WIDTH, blend_ends, blend_weight, map_point_to_stroke, map_to_stroke};
 pub use matching::{Match, MatchParams, match_stroke};
-pub use pipeline::{BLEND_GAP_PX, OversketchError, Oversketched, oversketch, preview_handle};
+pub use pipeline::{
+    BLEND_GAP_PX, OversketchError, Oversketched, SOFT_FIT_WEIGHT, oversketch, oversketch_with,
+    preview_handle,
+};
 pub use polyline::{STROKE_SPACING_PX, STROKE_TOLERANCE_PX, simplify_stroke};
 pub use roi::{ROI_RADIUS_FACTOR, roi_from_displacements};
 pub use track::{CLOSED_TOLERANCE_PX, handle_points};

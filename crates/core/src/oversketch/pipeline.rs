@@ -31,7 +31,7 @@ use super::{
     match_stroke, roi_from_displacements, simplify_stroke,
 };
 use crate::camera::Camera;
-use crate::deform::{DeformError, EditParams, HandlePoint, LaplacianEdit};
+use crate::deform::{DeformError, EditParams, HandleFit, HandlePoint, LaplacianEdit};
 use crate::geometry::Bvh;
 use crate::mesh::{Mesh, VertexId};
 use crate::silhouette::{Silhouette, SilhouettePoint, silhouettes};
@@ -75,6 +75,11 @@ struct Found {
     is_confident: bool,
 }
 
+/// The handle weight of a soft over-sketch ([`HandleFit::Soft`]): each handle point's row
+/// weighs as much as the detail of one vertex, so a handle point meets its target only as
+/// far as the surface around it agrees.
+pub const SOFT_FIT_WEIGHT: f64 = 1.0;
+
 /// Over-sketches `mesh` seen by `camera` in a `viewport` (CSS px) with `stroke` (screen
 /// points in drawing order): the silhouette piece the stroke redraws moves onto it, the
 /// surface around it follows with its details, and everything else stays bit for bit.
@@ -86,6 +91,21 @@ pub fn oversketch(
     camera: &Camera,
     viewport: DVec2,
     stroke: &[DVec2],
+) -> Result<Oversketched, OversketchError> {
+    oversketch_with(mesh, camera, viewport, stroke, HandleFit::Exact)
+}
+
+/// [`oversketch`] with the handles fitted as `fit` says: [`HandleFit::Exact`] puts the
+/// outline on the stroke, [`HandleFit::Soft`] draws it towards the stroke as far as the
+/// surface details allow (detail-preserving editing's approximate fit, Nealen §4.2).
+///
+/// Errors: those of [`oversketch`].
+pub fn oversketch_with(
+    mesh: &Mesh,
+    camera: &Camera,
+    viewport: DVec2,
+    stroke: &[DVec2],
+    fit: HandleFit,
 ) -> Result<Oversketched, OversketchError> {
     let found = find_handle(mesh, camera, viewport, stroke).ok_or(OversketchError::NoMatch)?;
     if !found.is_confident {
@@ -104,7 +124,11 @@ pub fn oversketch(
         .collect();
     let roi = roi_from_displacements(mesh, &displaced, ROI_RADIUS_FACTOR);
     let roi_size = roi.iter().filter(|&&r| r).count();
-    let mut edit = LaplacianEdit::new(mesh, &roi, &handles, EditParams::default())?;
+    let params = EditParams {
+        fit,
+        ..EditParams::default()
+    };
+    let mut edit = LaplacianEdit::new(mesh, &roi, &handles, params)?;
     let mut positions = vec![DVec3::ZERO; mesh.n_vertices()];
     edit.deform(&targets, &mut positions)
         .map_err(DeformError::from)?;

@@ -424,9 +424,11 @@ test('over-sketch mode: a stroke beyond a shape\'s outline pulls the outline to 
     await penStroke(fresh.cdp, outline);
     const created = await until(() => api(fresh.page, 'stats'), (s) => s.models === 1, 15_000);
     assert.equal(created.models, 1, 'the outline made a shape');
+    // Over-sketch mode first, so that the toolbar (which shows the fit toggle in this mode)
+    // is the same in the screenshots compared.
+    await fresh.page.keyboard.press('o');
     await frames(fresh.page, 3);
     const before = await screenshot(fresh.page, out('oversketch-before.png'));
-    await fresh.page.keyboard.press('o');
     // From the outline at -60 degrees to +60 degrees, bulging 40 px out at 0 degrees.
     const stroke = Array.from({ length: 41 }, (_, i) => {
       const a = (-Math.PI / 3) + (2 * Math.PI / 3) * (i / 40);

@@ -4,7 +4,8 @@
 //! All are consistently oriented with outward (or +z) normals. Sizes whose closed forms the
 //! tests use: an icosphere with `s` subdivisions has `10 * 4^s + 2` vertices and `20 * 4^s`
 //! faces; a grid has `(nx + 1)(ny + 1)` vertices and `2 nx ny` faces; a torus has
-//! `n_major * n_minor` vertices and twice as many faces.
+//! `n_major * n_minor` vertices and twice as many faces; a capsule `n_around (n_profile - 1) + 2`
+//! vertices.
 
 use std::collections::HashMap;
 use std::f64::consts::TAU;
@@ -155,6 +156,58 @@ pub fn torus(major: f64, minor: f64, n_major: usize, n_minor: usize) -> Mesh {
     })
 }
 
+/// A capsule along x: a cylinder of `radius` from `x = -half_length` to `half_length`,
+/// capped by hemispheres. A surface of revolution with `n_around` vertices per ring and
+/// `n_profile` steps of equal arclength from pole to pole: `n_around (n_profile - 1) + 2`
+/// vertices. Its silhouette seen from the side has straight parts and round ends, which a
+/// sphere's has not.
+pub fn capsule(radius: f64, half_length: f64, n_around: usize, n_profile: usize) -> Mesh {
+    let (n_around, n_profile) = (n_around.max(3), n_profile.max(2));
+    let quarter = 0.25 * TAU * radius;
+    let total = 2.0 * quarter + 2.0 * half_length;
+    let profile = |s: f64| -> (f64, f64) {
+        if s < quarter {
+            let angle = s / radius;
+            (-half_length - radius * angle.cos(), radius * angle.sin())
+        } else if s <= quarter + 2.0 * half_length {
+            (-half_length + (s - quarter), radius)
+        } else {
+            let angle = (total - s) / radius;
+            (half_length + radius * angle.cos(), radius * angle.sin())
+        }
+    };
+    let mut positions = vec![DVec3::new(-half_length - radius, 0.0, 0.0)];
+    for i in 1..n_profile {
+        let (x, rho) = profile(total * i as f64 / n_profile as f64);
+        for j in 0..n_around {
+            let angle = TAU * j as f64 / n_around as f64;
+            positions.push(DVec3::new(x, rho * angle.cos(), rho * angle.sin()));
+        }
+    }
+    positions.push(DVec3::new(half_length + radius, 0.0, 0.0));
+    let (first_pole, last_pole) = (0, positions.len() as u32 - 1);
+    let ring = |i: usize, j: usize| (1 + i * n_around + j % n_around) as u32;
+    let last_ring = n_profile - 2;
+    let mut triangles = Vec::with_capacity(2 * n_around * n_profile);
+    for j in 0..n_around {
+        triangles.push([first_pole, ring(0, j + 1), ring(0, j)]);
+        triangles.push([last_pole, ring(last_ring, j), ring(last_ring, j + 1)]);
+        for i in 0..last_ring {
+            let (a, b, c, d) = (
+                ring(i, j),
+                ring(i + 1, j),
+                ring(i + 1, j + 1),
+                ring(i, j + 1),
+            );
+            triangles.extend([[a, d, c], [a, c, b]]);
+        }
+    }
+    mesh_from_valid_soup(&TriSoup {
+        positions,
+        triangles,
+    })
+}
+
 /// An axis-aligned cube with side `size` centred on the origin: 8 vertices, 12 triangles.
 ///
 /// Useful for sharp features and very coarse input; vertex `k` sits at `±size/2` per axis
@@ -225,6 +278,25 @@ mod tests {
             let tube_centre = DVec3::new(p.x, p.y, 0.0).normalize() * 3.0;
             assert!(((*p - tube_centre).length() - 1.0).abs() < 1e-12);
         }
+    }
+
+    #[test]
+    fn capsule_is_closed_outward_and_round() {
+        let mesh = capsule(0.5, 1.0, 32, 40);
+        assert_eq!(mesh.validate(), Ok(()));
+        assert!(mesh.is_closed());
+        assert_eq!(mesh.n_vertices(), 32 * 39 + 2);
+        let euler = mesh.n_vertices() + mesh.n_faces() - mesh.n_edges();
+        assert_eq!(euler, 2);
+        // Every vertex lies at the radius from the axis segment.
+        for p in mesh.positions() {
+            let on_axis = DVec3::new(p.x.clamp(-1.0, 1.0), 0.0, 0.0);
+            assert!(((*p - on_axis).length() - 0.5).abs() < 1e-12, "{p}");
+        }
+        // Outward: the enclosed volume is positive and near the closed form.
+        let volume = crate::geometry::enclosed_volume(&mesh);
+        let exact = std::f64::consts::PI * 0.25 * 2.0 + 4.0 / 3.0 * std::f64::consts::PI * 0.125;
+        assert!((volume - exact).abs() < 0.02 * exact, "{volume} vs {exact}");
     }
 
     #[test]

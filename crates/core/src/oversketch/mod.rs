@@ -13,6 +13,9 @@
 //!    points beside the handle (§5.4.3).
 //! 4. [`roi_from_displacements`]: the ROI grown within a union of spheres (§5.4.4).
 //!
+//! Edge silhouettes ([`crate::silhouette::edge_silhouettes`]) are the outline as rendered;
+//! tests measure against them.
+//!
 //! [`oversketch`] runs all of it on a mesh: silhouettes, matching, targets unprojected at
 //! each handle point's depth, ROI and a detail-preserving [`LaplacianEdit`](crate::deform::LaplacianEdit);
 //! [`preview_handle`] shows the would-be handle while the stroke is drawn.
@@ -29,8 +32,8 @@ mod turning;
 pub use mapping::{BLEND_WIDTH, blend_ends, blend_weight, map_point_to_stroke, map_to_stroke};
 pub use matching::{Match, MatchParams, match_stroke};
 pub use pipeline::{
-    BLEND_GAP_PX, OversketchError, Oversketched, SOFT_FIT_WEIGHT, oversketch, oversketch_with,
-    preview_handle,
+    BLEND_GAP_PX, OversketchError, Oversketched, ROI_FACTOR, SOFT_FIT_WEIGHT, oversketch,
+    oversketch_with, preview_handle,
 };
 pub use polyline::{STROKE_SPACING_PX, STROKE_TOLERANCE_PX, simplify_stroke};
 pub use roi::{ROI_RADIUS_FACTOR, roi_from_displacements};

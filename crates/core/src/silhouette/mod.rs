@@ -24,11 +24,14 @@
 //! rays and the vertex normals.
 
 mod contour;
+mod edges;
 mod smooth;
 mod spacing;
 mod visibility;
 
 use glam::{DVec2, DVec3};
+
+pub use edges::edge_silhouettes;
 
 use crate::camera::Camera;
 use crate::geometry::{Bvh, vertex_normals};

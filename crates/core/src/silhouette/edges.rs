@@ -1,0 +1,129 @@
+//! Edge silhouettes: the mesh edges between a face turned towards the viewer and one turned
+//! away (Nealen §4.3), with the hidden ones removed.
+//!
+//! On a closed mesh these are exactly the outline a renderer draws: the boundary of the
+//! rasterized triangles' coverage is made of them (plus any boundary edges of an open mesh,
+//! included here too). The smooth silhouettes of the module root lie within the faces and
+//! are smoothed on screen, so they can sit a fraction of a pixel to a few pixels away from
+//! the drawn outline on a bumpy surface; tests of "the rendered outline follows the stroke"
+//! measure against these instead.
+//!
+//! Visibility: one occlusion ray per edge, at its midpoint moved outwards by
+//! [`super::visibility::OFFSET_EDGES`] edge lengths along the mean of its faces' normals,
+//! as for smooth silhouette points.
+
+use glam::{DVec2, DVec3};
+
+use super::visibility::{MARGIN_EDGES, OFFSET_EDGES};
+use crate::camera::Camera;
+use crate::geometry::{Bvh, face_normals};
+use crate::mesh::{FaceId, HalfedgeId, Mesh};
+
+/// The visible edge silhouettes of `mesh` seen by `camera` in a viewport of `viewport` CSS
+/// px, as screen segments (CSS px, y down), in no particular order; `bvh` must be built for
+/// the mesh's current positions. Empty for an invalid camera.
+pub fn edge_silhouettes(
+    mesh: &Mesh,
+    bvh: &Bvh,
+    camera: &Camera,
+    viewport: DVec2,
+) -> Vec<[DVec2; 2]> {
+    if !camera.is_valid() {
+        return Vec::new();
+    }
+    let normals = face_normals(mesh);
+    let is_front: Vec<bool> = mesh
+        .faces()
+        .map(|f| faces_viewer(mesh, camera, normals[f.index()], f))
+        .collect();
+    let mut segments = Vec::new();
+    for h in (0..mesh.n_halfedges() as u32).map(HalfedgeId) {
+        let f = mesh.face(h);
+        let outward = match mesh.twin(h) {
+            // Each interior edge once, from its front-facing side.
+            Some(twin) if is_front[f.index()] && !is_front[mesh.face(twin).index()] => {
+                normals[f.index()] + normals[mesh.face(twin).index()]
+            }
+            None if is_front[f.index()] => normals[f.index()],
+            _ => continue,
+        };
+        let [a, b] = [mesh.position(mesh.tail(h)), mesh.position(mesh.head(h))];
+        if !is_seen(mesh, bvh, camera, a, b, outward.normalize_or_zero()) {
+            continue;
+        }
+        if let (Some(pa), Some(pb)) = (
+            camera.screen_from_world(a, viewport),
+            camera.screen_from_world(b, viewport),
+        ) {
+            segments.push([pa.truncate(), pb.truncate()]);
+        }
+    }
+    segments
+}
+
+/// Whether face `f` (unit normal `normal`) turns its front towards the eye.
+fn faces_viewer(mesh: &Mesh, camera: &Camera, normal: DVec3, f: FaceId) -> bool {
+    match camera.ortho_height {
+        Some(_) => normal.dot(camera.forward()) < 0.0,
+        None => {
+            let [a, b, c] = mesh.face_positions(f);
+            normal.dot((a + b + c) / 3.0 - camera.eye) < 0.0
+        }
+    }
+}
+
+/// Whether the middle of the edge `a`–`b` is in sight, aiming slightly outside the surface.
+fn is_seen(mesh: &Mesh, bvh: &Bvh, camera: &Camera, a: DVec3, b: DVec3, outward: DVec3) -> bool {
+    let length = a.distance(b);
+    let target = 0.5 * (a + b) + OFFSET_EDGES * length * outward;
+    let from = match camera.ortho_height {
+        Some(_) => {
+            let forward = camera.forward();
+            target - forward * (target - camera.eye).dot(forward)
+        }
+        None => camera.eye,
+    };
+    !bvh.occluded(mesh, from, target, MARGIN_EDGES * length)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::primitives;
+
+    /// The outline of a sphere of radius r seen from distance d lies at the angle
+    /// asin(r / d) from the view axis: every segment end is that far from the centre on
+    /// screen (to within the polygon's chord error), none is hidden behind it.
+    #[test]
+    fn a_sphere_outline_is_a_circle_of_the_known_radius() {
+        let mesh = primitives::icosphere(1.0, 5);
+        let bvh = Bvh::new(&mesh);
+        let camera = Camera::default();
+        let viewport = DVec2::new(1000.0, 1000.0);
+        let segments = edge_silhouettes(&mesh, &bvh, &camera, viewport);
+        let centre = camera
+            .screen_from_world(DVec3::ZERO, viewport)
+            .unwrap()
+            .truncate();
+        // The tangent point above the centre: at angle acos(1 / d) from the eye direction.
+        let d = camera.eye.length();
+        let tangent = camera.eye / (d * d) + DVec3::Y * (1.0 - 1.0 / (d * d)).sqrt();
+        let radius = camera
+            .screen_from_world(tangent, viewport)
+            .unwrap()
+            .truncate()
+            .distance(centre);
+        assert!(segments.len() > 100, "{} segments", segments.len());
+        for [a, b] in &segments {
+            for p in [a, b] {
+                let r = p.distance(centre);
+                assert!((r - radius).abs() < 0.02 * radius, "{r} vs {radius}");
+            }
+        }
+        // The far side's edges facing away are not outline; the loop closes: every end is
+        // shared by two segments.
+        let mut ends: Vec<DVec2> = segments.iter().flatten().copied().collect();
+        ends.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+        assert!(ends.chunks(2).all(|pair| pair[0] == pair[1]));
+    }
+}

@@ -138,7 +138,7 @@ try {
     const vertices = await page.evaluate((data) => {
       window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
       window.sketchmesh.loadGlb(new Uint8Array(data), 'fixture.glb');
-      window.sketchmesh.pullTimings();
+      window.sketchmesh.timings();
       return window.sketchmesh.stats().vertices;
     }, bytes);
     await sleep(300);
@@ -185,7 +185,7 @@ try {
     await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', x: grab.x + 90, y: grab.y - 30, buttons: 0, clickCount: 1, ...pen });
     await page.waitForFunction(() => JSON.parse(window.sketchmesh.session()).ops.at(-1)?.op === 'pull', null, { timeout: 30_000, polling: 50 })
       .catch(() => {});
-    const t = await api(page, 'pullTimings');
+    const t = await api(page, 'timings');
     const stats = (list) => {
       const sorted = [...list].sort((a, b) => a - b);
       const at = (q) => (sorted.length ? sorted[Math.min(sorted.length - 1, Math.floor(q * sorted.length))] : null);
@@ -194,6 +194,87 @@ try {
     };
     pulls.push({ vertices, grab_ms: round(t.grab_ms.at(-1) ?? null), frame_ms: stats(t.frame_ms), release_ms: round(t.commit_ms.at(-1) ?? null) });
     console.error(`pull at ${vertices} vertices: ${JSON.stringify(pulls.at(-1))}`);
+  }
+
+  // An over-sketch of the 36,864-vertex bumpy torus (SKETCHMESH_OVERSKETCH_FIXTURE), seen down
+  // its axis: a pen stroke pushes 70 degrees of the outer outline out by up to 25 px. Timed
+  // from inside the page, from just before the pen lifts to the animation frame after the one
+  // that applied the op (the result on screen), and by the app around the op itself.
+  let oversketch = null;
+  const torusPath = process.env.SKETCHMESH_OVERSKETCH_FIXTURE;
+  if (torusPath) {
+    const vertices = await page.evaluate((data) => {
+      window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
+      window.sketchmesh.loadGlb(new Uint8Array(data), 'bumpy-torus.glb');
+      window.sketchmesh.timings();
+      return window.sketchmesh.stats().vertices;
+    }, [...readFileSync(torusPath)]);
+    await sleep(300);
+    await page.keyboard.press('r');
+    await page.keyboard.press('o');
+    for (let i = 0; i < 3; i++) {
+      await page.mouse.move(5 + i, 715);
+      await sleep(150);
+    }
+    const shot = await screenshot(page, join(OUT_DIR, 'bench-oversketch-before.png'));
+    // The lit model is the only bright thing below the toolbar: its bounding box gives the
+    // outline's centre and outer radius.
+    const box = { x0: Infinity, x1: -Infinity, y0: Infinity, y1: -Infinity };
+    for (let y = 60; y < shot.height; y++) {
+      for (let x = 0; x < shot.width; x++) {
+        const [r, g, b] = shot.data.slice((y * shot.width + x) * 4, (y * shot.width + x) * 4 + 3);
+        if (Math.min(r, g, b) > 110) {
+          box.x0 = Math.min(box.x0, x);
+          box.x1 = Math.max(box.x1, x);
+          box.y0 = Math.min(box.y0, y);
+          box.y1 = Math.max(box.y1, y);
+        }
+      }
+    }
+    if (box.x1 > box.x0) {
+      const centre = { x: (box.x0 + box.x1) / 2, y: (box.y0 + box.y1) / 2 };
+      const radius = (box.x1 - box.x0) / 2;
+      const n = 45;
+      const stroke = Array.from({ length: n + 1 }, (_, i) => {
+        const u = i / n;
+        const angle = ((-35 + 70 * u) * Math.PI) / 180;
+        const r = radius + 25 * Math.sin(Math.PI * u);
+        return { x: centre.x + r * Math.cos(angle), y: centre.y + r * Math.sin(angle) };
+      });
+      const pen = { pointerType: 'pen', button: 'left', force: 0.5 };
+      const [first, ...rest] = stroke;
+      await cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', ...first, buttons: 1, clickCount: 1, ...pen });
+      for (const point of rest) {
+        await sleep(16);
+        await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', ...point, buttons: 1, ...pen });
+      }
+      await sleep(50);
+      // Installed (and awaited) before the pen lifts: the watcher's clock starts first.
+      await page.evaluate(() => {
+        const started = performance.now();
+        const before = window.sketchmesh.opCount();
+        window.__shown = new Promise((resolve) => {
+          const tick = () => {
+            if (window.sketchmesh.opCount() > before) requestAnimationFrame(() => resolve(performance.now() - started));
+            else if (performance.now() - started > 10_000) resolve(null);
+            else requestAnimationFrame(tick);
+          };
+          requestAnimationFrame(tick);
+        });
+      });
+      const last = stroke.at(-1);
+      await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', ...last, buttons: 0, clickCount: 1, ...pen });
+      const shownMs = await page.evaluate(() => window.__shown);
+      const t = await api(page, 'timings');
+      await page.mouse.move(10, 715);
+      await sleep(150);
+      await screenshot(page, join(OUT_DIR, 'bench-oversketch-after.png'));
+      oversketch = { vertices, release_to_shown_ms: round(shownMs), op_ms: round(t.oversketch_ms.at(-1) ?? null) };
+      if (shownMs === null) console.error('the over-sketch was not applied (no new op within 10 s)');
+    } else {
+      console.error('no lit model found in the over-sketch view');
+    }
+    console.error(`over-sketch: ${JSON.stringify(oversketch)}`);
   }
 
   const deltas = timing.frames.slice(1).map((t, i) => t - timing.frames[i]);
@@ -215,6 +296,7 @@ try {
     },
     import_glb: { triangles: imported.triangles, bytes: imported.bytes, ms: round(imported.ms) },
     pulls,
+    oversketch,
   };
   console.log(JSON.stringify(report));
 } finally {

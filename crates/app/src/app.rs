@@ -129,14 +129,19 @@ impl SketchApp {
     fn apply(&mut self, op: Op, now: f64) {
         self.commit_pending(now);
         let started = clock::now_ms();
-        let is_pull = matches!(op, Op::Pull(_));
+        let (is_pull, is_oversketch) = (matches!(op, Op::Pull(_)), matches!(op, Op::Oversketch(_)));
         let result = match op {
             Op::Create(input) => PendingCreate::start(input).map(|p| self.pending = Some(p)),
             op => self.shared.borrow_mut().editor.apply(op),
         };
-        if is_pull {
-            let ms = clock::now_ms() - started;
-            clock::Timings::record(&mut self.shared.borrow_mut().timings.commit_ms, ms);
+        let ms = clock::now_ms() - started;
+        {
+            let timings = &mut self.shared.borrow_mut().timings;
+            if is_pull {
+                clock::Timings::record(&mut timings.commit_ms, ms);
+            } else if is_oversketch {
+                clock::Timings::record(&mut timings.oversketch_ms, ms);
+            }
         }
         if let Err(e) = result {
             self.set_status(e.to_string(), now);

@@ -1,5 +1,5 @@
 //! A millisecond clock for timing work inside a frame (`performance.now()` in the page), and
-//! the recent pull costs the page benchmark reads.
+//! the recent pull and over-sketch costs the page benchmark reads.
 
 /// Milliseconds since an arbitrary start, with sub-millisecond resolution where available.
 #[cfg(target_arch = "wasm32")]
@@ -21,7 +21,7 @@ pub fn now_ms() -> f64 {
 /// How many recent samples [`Timings`] keeps.
 const KEPT: usize = 1024;
 
-/// Recent costs of pulls, in ms: what the page benchmark reads.
+/// Recent costs of pulls and over-sketches, in ms: what the page benchmark reads.
 #[derive(Clone, Debug, Default, serde::Serialize)]
 pub struct Timings {
     /// Pointer-down: grabbing a curve and factoring the region around it.
@@ -30,6 +30,8 @@ pub struct Timings {
     pub frame_ms: Vec<f64>,
     /// Release: applying the `pull` op (full re-optimization and remesh).
     pub commit_ms: Vec<f64>,
+    /// Applying an `oversketch` op: silhouettes, matching, factorization and the edit.
+    pub oversketch_ms: Vec<f64>,
 }
 
 impl Timings {

@@ -80,7 +80,12 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
     )?;
     let s = shared.clone();
     set(
-        "pullTimings",
+        "opCount",
+        getter(move || Ok(JsValue::from(s.borrow().editor.ops().len() as u32))),
+    )?;
+    let s = shared.clone();
+    set(
+        "timings",
         getter(move || json(&s.borrow_mut().timings.take())),
     )?;
     let (s, c) = (shared.clone(), ctx.clone());

@@ -104,20 +104,6 @@ fn pushed_outline_stroke(
         .collect()
 }
 
-/// A torus about z (radii 1 and 0.4) with bumps of height 0.03 along the tube normal, 24
-/// around the axis and 8 around the tube, as in `tests/oversketch_pipeline.rs`.
-fn bumpy_torus(n_major: usize, n_minor: usize) -> sketchmesh_core::mesh::Mesh {
-    let mut mesh = primitives::torus(1.0, 0.4, n_major, n_minor);
-    for p in mesh.positions_mut() {
-        let u = p.y.atan2(p.x);
-        let centre = glam::DVec3::new(u.cos(), u.sin(), 0.0);
-        let normal = (*p - centre).normalize();
-        let v = normal.z.atan2(normal.truncate().dot(centre.truncate()));
-        *p += normal * 0.03 * ((24.0 * u).cos() * (8.0 * v).cos()).max(0.0).powi(2);
-    }
-    mesh
-}
-
 fn bench_whole(c: &mut Criterion) {
     let viewport = DVec2::new(1000.0, 1000.0);
     let camera = Camera::default();
@@ -125,7 +111,7 @@ fn bench_whole(c: &mut Criterion) {
     group.sample_size(20);
     for (name, mesh) in [
         ("icosphere_40962", primitives::icosphere(1.0, 6)),
-        ("bumpy_torus_36864", bumpy_torus(384, 96)),
+        ("bumpy_torus_36864", primitives::bumpy_torus(0.03, 384, 96)),
     ] {
         let stroke = pushed_outline_stroke(&mesh, viewport, 40.0);
         group.bench_function(name, |b| {

@@ -229,23 +229,9 @@ fn capsule_side_and_end_move_onto_the_stroke() {
     assert!(end < 2.0, "end: worst {end}");
 }
 
-/// A torus about z (radii 1 and 0.4) with bumps of height `height` along the tube normal:
-/// 24 around the axis, 8 around the tube.
-fn bumpy_torus(height: f64, n_major: usize, n_minor: usize) -> Mesh {
-    let mut mesh = primitives::torus(1.0, 0.4, n_major, n_minor);
-    for p in mesh.positions_mut() {
-        let u = p.y.atan2(p.x);
-        let centre = DVec3::new(u.cos(), u.sin(), 0.0);
-        let normal = (*p - centre).normalize();
-        let v = normal.z.atan2(normal.truncate().dot(centre.truncate()));
-        *p += normal * height * ((24.0 * u).cos() * (8.0 * v).cos()).max(0.0).powi(2);
-    }
-    mesh
-}
-
 #[test]
 fn bumpy_torus_keeps_its_bumps_better_than_a_naive_falloff() {
-    let mesh = bumpy_torus(0.03, 192, 64);
+    let mesh = primitives::bumpy_torus(0.03, 192, 64);
     let camera = Camera::default();
     let worst = run_case("bumpy torus", &mesh, DVec2::X, 50, 40.0);
     // Measured 1.83 px (rendered outline); the bumps make it the hardest of the three.
@@ -318,7 +304,7 @@ fn detail_change(mesh: &Mesh, positions: &[DVec3], over: &[usize]) -> f64 {
 
 #[test]
 fn a_soft_fit_follows_the_stroke_less_and_keeps_more_detail() {
-    let mesh = bumpy_torus(0.03, 192, 64);
+    let mesh = primitives::bumpy_torus(0.03, 192, 64);
     let camera = Camera::default();
     let outline = longest_outline(&mesh, &camera);
     let stroke = pushed_stroke(&outline, DVec2::X, 50, 40.0);

@@ -39,7 +39,7 @@ pub fn bench_command(workspace: &Workspace) -> anyhow::Result<()> {
     let web = steps.step("build-web --release", || {
         build::build_web(workspace, WebProfile::Release)
     })?;
-    let fixtures = steps.step("pull fixtures", || pull_fixtures(workspace))?;
+    let (pulls, torus) = steps.step("fixtures", || bench_fixtures(workspace))?;
     let server = steps.step("start server", || StaticServer::start(&workspace.dist(), 0))?;
     let page = steps.step("page bench", || {
         let out = Command::new("node")
@@ -47,7 +47,8 @@ pub fn bench_command(workspace: &Workspace) -> anyhow::Result<()> {
             .arg("tests/e2e/page-bench.mjs")
             .env("SKETCHMESH_URL", server.url())
             .env("SKETCHMESH_GPU", "webgl2")
-            .env("SKETCHMESH_PULL_FIXTURES", &fixtures)
+            .env("SKETCHMESH_PULL_FIXTURES", &pulls)
+            .env("SKETCHMESH_OVERSKETCH_FIXTURE", &torus)
             .output()
             .context("starting node tests/e2e/page-bench.mjs")?;
         eprint!("{}", String::from_utf8_lossy(&out.stderr));
@@ -235,32 +236,32 @@ fn format_ns(ns: f64) -> String {
 /// Vertex counts of the shapes whose curves the page bench pulls.
 const PULL_SIZES: [usize; 2] = [10_000, 40_000];
 
-/// Writes FiberMesh shapes of [`PULL_SIZES`] vertices as .glb files (the page makes shapes
-/// at its default resolution only); returns their paths, comma-separated.
-fn pull_fixtures(workspace: &Workspace) -> anyhow::Result<String> {
+/// The page bench's fixtures as .glb files (the page makes shapes at its default resolution
+/// only): FiberMesh shapes of [`PULL_SIZES`] vertices to pull, comma-separated, and the
+/// bumpy torus to over-sketch.
+fn bench_fixtures(workspace: &Workspace) -> anyhow::Result<(String, String)> {
     let dir = workspace.target_dir.join("bench-fixtures");
     fs::create_dir_all(&dir).with_context(|| format!("creating {}", dir.display()))?;
-    let mut paths = Vec::new();
+    let fixture = |args: &[&str]| {
+        run(
+            "fixture_glb example",
+            cargo()
+                .current_dir(&workspace.root)
+                .args(["run", "--release", "-q", "-p", "sketchmesh-core"])
+                .args(["--example", "fixture_glb", "--"])
+                .args(args),
+        )
+    };
+    let mut pulls = Vec::new();
     for size in PULL_SIZES {
         let path = dir.join(format!("fibermesh-{size}.glb"));
-        run(
-            "fibermesh_glb example",
-            cargo().current_dir(&workspace.root).args([
-                "run",
-                "--release",
-                "-q",
-                "-p",
-                "sketchmesh-core",
-                "--example",
-                "fibermesh_glb",
-                "--",
-                &size.to_string(),
-                &path.to_string_lossy(),
-            ]),
-        )?;
-        paths.push(path.to_string_lossy().into_owned());
+        let path = path.to_string_lossy().into_owned();
+        fixture(&["fibermesh", &size.to_string(), &path])?;
+        pulls.push(path);
     }
-    Ok(paths.join(","))
+    let torus = dir.join("bumpy-torus.glb").to_string_lossy().into_owned();
+    fixture(&["bumpy-torus", &torus])?;
+    Ok((pulls.join(","), torus))
 }
 
 /// The page-bench JSON report as a markdown table.
@@ -318,10 +319,22 @@ fn page_table(page: &Value, wasm_gzip_size: u64) -> String {
             ),
         ]
     });
+    let vertices = text("/oversketch/vertices");
+    let oversketch_rows = [
+        (
+            format!("over-sketch at {vertices} vertices, release to result shown"),
+            ms("/oversketch/release_to_shown_ms"),
+        ),
+        (
+            format!("over-sketch at {vertices} vertices, the op alone"),
+            ms("/oversketch/op_ms"),
+        ),
+    ];
     let rows = rows
         .into_iter()
         .map(|(name, value)| (name.to_owned(), value))
-        .chain(pull_rows);
+        .chain(pull_rows)
+        .chain(oversketch_rows);
     for (name, value) in rows {
         // Writing to a String cannot fail.
         let _ = writeln!(table, "| {name} | {value} |");

@@ -1,5 +1,5 @@
 //! A FiberMesh shape of a chosen size with its outline as control curve: the fixture the
-//! curve-editing bench and the page bench (through `examples/fibermesh_glb.rs`) pull, since
+//! curve-editing bench and the page bench (through `examples/fixture_glb.rs`) pull, since
 //! the app creates shapes at its default resolution only.
 
 use std::sync::Arc;

@@ -156,6 +156,21 @@ pub fn torus(major: f64, minor: f64, n_major: usize, n_minor: usize) -> Mesh {
     })
 }
 
+/// A torus about z with radii 1 and 0.4 ([`torus`]) carrying bumps of `height` along the
+/// tube's normal, 24 around the axis and 8 around the tube (`max(0, cos 24u · cos 8v)²`):
+/// surface detail for over-sketching and editing to keep, with an outline that wiggles.
+pub fn bumpy_torus(height: f64, n_major: usize, n_minor: usize) -> Mesh {
+    let mut mesh = torus(1.0, 0.4, n_major, n_minor);
+    for p in mesh.positions_mut() {
+        let u = p.y.atan2(p.x);
+        let centre = DVec3::new(u.cos(), u.sin(), 0.0);
+        let normal = (*p - centre).normalize();
+        let v = normal.z.atan2(normal.truncate().dot(centre.truncate()));
+        *p += normal * height * ((24.0 * u).cos() * (8.0 * v).cos()).max(0.0).powi(2);
+    }
+    mesh
+}
+
 /// A capsule along x: a cylinder of `radius` from `x = -half_length` to `half_length`,
 /// capped by hemispheres. A surface of revolution with `n_around` vertices per ring and
 /// `n_profile` steps of equal arclength from pole to pole: `n_around (n_profile - 1) + 2`

@@ -18,7 +18,8 @@ use sketchmesh_core::geometry::{Bvh, cotan_laplacian};
 use sketchmesh_core::io::write_glb;
 use sketchmesh_core::mesh::{Mesh, primitives};
 use sketchmesh_core::oversketch::{
-    OversketchError, Oversketched, SOFT_FIT_WEIGHT, oversketch, oversketch_with, preview_handle,
+    ManualHandle, OversketchError, Oversketched, SOFT_FIT_WEIGHT, manual_handle_preview,
+    oversketch, oversketch_manual, oversketch_with, pick_handle, preview_handle,
 };
 use sketchmesh_core::silhouette::{edge_silhouettes, silhouettes};
 
@@ -411,6 +412,7 @@ fn oversketch_op(stroke: &[DVec2]) -> Op {
         camera: Camera::default(),
         stroke: stroke.iter().map(|p| [p.x, p.y, 0.5]).collect(),
         fit: OversketchFit::Exact,
+        handle: None,
     })
 }
 
@@ -530,4 +532,159 @@ fn control_curves_follow_their_vertices() {
     }
     assert_ne!(after.curves[0].points, before.curves[0].points);
     assert_eq!(after.curves[0].vertices, before.curves[0].vertices);
+}
+
+/// The sphere's outline on the right, picked by a stroke along it, then redrawn 40 px out:
+/// the manual handle lands on the new stroke as closely as a matched one, and cropping its
+/// end moves less of the mesh.
+#[test]
+fn a_picked_silhouette_piece_moves_onto_its_new_shape_and_crops() {
+    let mesh = primitives::icosphere(1.0, 5);
+    let camera = Camera::default();
+    let outline = longest_outline(&mesh, &camera);
+    let along = pushed_stroke(&outline, DVec2::X, 60, 0.0);
+    let handle = pick_handle(&mesh, &camera, VIEWPORT, &along).unwrap();
+    let ManualHandle::Silhouette { from, .. } = handle else {
+        panic!("a stroke along the outline should pick it, got {handle:?}");
+    };
+    let stroke = pushed_stroke(&outline, DVec2::X, 60, 40.0);
+    let fit = HandleFit::Exact;
+    let result = oversketch_manual(&mesh, &camera, VIEWPORT, &handle, &stroke, fit).unwrap();
+    assert_outside_unmoved(&mesh, &result);
+    let worst = worst_middle_distance(&mesh, &result.positions, &camera, &stroke);
+    eprintln!("manual silhouette: worst distance {worst:.3} px");
+    assert!(worst < 2.0, "worst {worst}");
+
+    // Cropped to the first half: the new shape's first half, and fewer vertices move.
+    let half = along[along.len() / 2];
+    let cropped = ManualHandle::Silhouette {
+        from,
+        via: along[along.len() / 4],
+        to: half,
+    };
+    let preview = manual_handle_preview(&mesh, &camera, VIEWPORT, &cropped).unwrap();
+    assert!(preview.last().unwrap().distance(half) < 3.0);
+    let short = &stroke[..stroke.len() / 2];
+    let cropped = oversketch_manual(&mesh, &camera, VIEWPORT, &cropped, short, fit).unwrap();
+    let moved = |r: &Oversketched| {
+        (0..mesh.n_vertices())
+            .filter(|&v| r.positions[v] != mesh.positions()[v])
+            .count()
+    };
+    assert!(
+        moved(&cropped) < moved(&result),
+        "{} vs {}",
+        moved(&cropped),
+        moved(&result)
+    );
+    // `via` on the far side of the closed outline picks the long way round.
+    let far_side = *outline.iter().min_by(|a, b| a.x.total_cmp(&b.x)).unwrap();
+    let long_way = ManualHandle::Silhouette {
+        from,
+        via: far_side,
+        to: half,
+    };
+    let long = manual_handle_preview(&mesh, &camera, VIEWPORT, &long_way).unwrap();
+    assert!(
+        length(&long) > 3.0 * length(&preview),
+        "{} vs {}",
+        length(&long),
+        length(&preview)
+    );
+}
+
+/// A curve drawn across the front of the sphere, then drawn again 30 px higher: the surface
+/// under the new stroke is where the curve was in depth, and the far side stays.
+#[test]
+fn a_curve_drawn_on_the_surface_moves_to_its_new_position_at_its_depth() {
+    let mesh = primitives::icosphere(1.0, 5);
+    let camera = Camera::default();
+    let centre = 0.5 * VIEWPORT;
+    let line = |dy: f64| -> Vec<DVec2> {
+        (0..=100)
+            .map(|k| centre + DVec2::new(-100.0 + 2.0 * k as f64, dy))
+            .collect()
+    };
+    let drawn = line(0.0);
+    let handle = pick_handle(&mesh, &camera, VIEWPORT, &drawn).unwrap();
+    assert!(matches!(handle, ManualHandle::Surface { .. }), "{handle:?}");
+    let moved_to = line(-30.0);
+    let result = oversketch_manual(
+        &mesh,
+        &camera,
+        VIEWPORT,
+        &handle,
+        &moved_to,
+        HandleFit::Exact,
+    )
+    .unwrap();
+    assert_outside_unmoved(&mesh, &result);
+    let mut bent = mesh.clone();
+    bent.positions_mut().copy_from_slice(&result.positions);
+    let depth = |mesh: &Mesh, p: DVec2| {
+        let (origin, dir) = camera.ray_in_world(p, VIEWPORT);
+        Bvh::new(mesh).raycast(mesh, origin, dir).unwrap().distance
+    };
+    // The middle 80% of the curve (its ends sit between constraints).
+    for k in 10..=90 {
+        let before = depth(&mesh, drawn[k]);
+        let after = depth(&bent, moved_to[k]);
+        assert!(
+            (after - before).abs() < 0.01,
+            "point {k}: depth {before} then {after}"
+        );
+    }
+}
+
+/// A manual over-sketch replays from its session and undoes to the exact mesh; a handle
+/// that no longer finds its outline is refused with a sentence and changes nothing.
+#[test]
+fn a_manual_oversketch_op_replays_and_a_lost_handle_is_refused() {
+    let mesh = primitives::icosphere(1.0, 4);
+    let camera = Camera::default();
+    let outline = longest_outline(&mesh, &camera);
+    let along = pushed_stroke(&outline, DVec2::X, 40, 0.0);
+    let handle = pick_handle(&mesh, &camera, VIEWPORT, &along).unwrap();
+    let stroke = pushed_stroke(&outline, DVec2::X, 40, 30.0);
+    let op = |handle: ManualHandle| {
+        Op::Oversketch(OversketchInput {
+            viewport: VIEWPORT.to_array(),
+            camera,
+            stroke: stroke.iter().map(|p| [p.x, p.y, 0.5]).collect(),
+            fit: OversketchFit::Exact,
+            handle: Some(handle),
+        })
+    };
+    let mut editor = Editor::new();
+    editor.apply(import_op(&mesh)).unwrap();
+    let before = editor.document().clone();
+    editor.apply(op(handle.clone())).unwrap();
+    let after = editor.document().clone();
+    let imported = &before.models[0].mesh;
+    let expected = oversketch_manual(
+        imported,
+        &camera,
+        VIEWPORT,
+        &handle,
+        &stroke,
+        HandleFit::Exact,
+    )
+    .unwrap();
+    assert!(after.models[0].mesh.positions() == &expected.positions[..]);
+    let json = editor.session_json();
+    assert!(json.contains("\"silhouette\""), "{json}");
+    assert_eq!(*Editor::replay_json(&json).unwrap().document(), after);
+    editor.undo().unwrap();
+    assert_eq!(*editor.document(), before);
+
+    let nowhere = ManualHandle::Silhouette {
+        from: DVec2::new(5.0, 5.0),
+        via: DVec2::new(10.0, 5.0),
+        to: DVec2::new(15.0, 5.0),
+    };
+    assert_eq!(
+        editor.apply(op(nowhere)),
+        Err(CommandError::Oversketch(OversketchError::HandleLost))
+    );
+    assert_eq!(*editor.document(), before);
 }

@@ -58,6 +58,7 @@ impl OversketchTool {
                 camera: input.camera,
                 stroke: input.stroke,
                 fit: self.fit,
+                handle: None,
             }))
         })
     }

@@ -5,17 +5,15 @@ use std::sync::Arc;
 use super::curve_edit;
 use super::history::History;
 use super::{
-    Document, ImportInput, Model, Op, OversketchFit, OversketchInput, PendingCreate, SketchCurve,
-    StrokeInput,
+    Document, ImportInput, Model, Op, OversketchInput, PendingCreate, SketchCurve, StrokeInput,
 };
 use crate::curve::{StrokeError, process_stroke};
-use crate::deform::HandleFit;
 use crate::fibermesh::CreateError;
 use crate::fibermesh::add_curve::AddCurveError;
 use crate::fibermesh::curve_pull::PullError;
 use crate::io::{GltfError, ImportFile, ImportLimits, Imported, import_gltf};
 use crate::mesh::remesh::RemeshError;
-use crate::oversketch::{OversketchError, Oversketched, SOFT_FIT_WEIGHT, oversketch_with};
+use crate::oversketch::{OversketchError, Oversketched, oversketch_manual, oversketch_with};
 use crate::solve::SolveError;
 
 /// Why an op was refused. The messages are sentences for the user.
@@ -259,16 +257,16 @@ fn oversketch_document(
     let input_stroke = StrokeInput::of_oversketch(input);
     let viewport = input_stroke.viewport_size();
     let stroke = curve_edit::screen_stroke(&input_stroke, 2)?;
-    let fit = match input.fit {
-        OversketchFit::Exact => HandleFit::Exact,
-        OversketchFit::Soft => HandleFit::Soft {
-            weight: SOFT_FIT_WEIGHT,
-        },
-    };
+    let fit = input.fit.handle_fit();
     let mut best: Option<(usize, Oversketched)> = None;
     let mut refusal = OversketchError::NoMatch;
     for (index, model) in document.models.iter().enumerate() {
-        match oversketch_with(&model.mesh, &input.camera, viewport, &stroke, fit) {
+        let (mesh, camera) = (&model.mesh, &input.camera);
+        let result = match &input.handle {
+            Some(handle) => oversketch_manual(mesh, camera, viewport, handle, &stroke, fit),
+            None => oversketch_with(mesh, camera, viewport, &stroke, fit),
+        };
+        match result {
             Ok(result) => {
                 if best.as_ref().is_none_or(|(_, b)| result.score > b.score) {
                     best = Some((index, result));
@@ -303,7 +301,7 @@ fn oversketch_document(
 fn refusal_rank(error: &OversketchError) -> u8 {
     match error {
         OversketchError::NoMatch => 0,
-        OversketchError::LowConfidence => 1,
+        OversketchError::LowConfidence | OversketchError::HandleLost => 1,
         OversketchError::Deform(_) => 2,
     }
 }

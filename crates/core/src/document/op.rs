@@ -7,6 +7,8 @@ use serde::{Deserialize, Serialize};
 
 use crate::camera::Camera;
 use crate::curve::StrokePoint;
+use crate::deform::HandleFit;
+use crate::oversketch::{ManualHandle, SOFT_FIT_WEIGHT};
 
 /// One session op. JSON is internally tagged: `{"op":"stroke",...}`, `{"op":"undo"}`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -106,6 +108,10 @@ pub struct OversketchInput {
     /// Exact (the default, left out of session files) or soft.
     #[serde(default, skip_serializing_if = "OversketchFit::is_exact")]
     pub fit: OversketchFit,
+    /// The handle the user picked (manual mode), in the same screen space as the stroke;
+    /// left out when matching picks it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub handle: Option<ManualHandle>,
 }
 
 /// How closely an over-sketched outline follows the stroke.
@@ -124,6 +130,16 @@ impl OversketchFit {
     /// Whether this is [`OversketchFit::Exact`] (for serde's `skip_serializing_if`).
     pub fn is_exact(&self) -> bool {
         *self == OversketchFit::Exact
+    }
+
+    /// The handle fit of the Laplacian edit: soft handles weigh [`SOFT_FIT_WEIGHT`].
+    pub fn handle_fit(self) -> HandleFit {
+        match self {
+            OversketchFit::Exact => HandleFit::Exact,
+            OversketchFit::Soft => HandleFit::Soft {
+                weight: SOFT_FIT_WEIGHT,
+            },
+        }
     }
 }
 
@@ -289,6 +305,11 @@ mod tests {
                 camera: Camera::default(),
                 stroke: Vec::new(),
                 fit: OversketchFit::Soft,
+                handle: Some(ManualHandle::Silhouette {
+                    from: DVec2::ZERO,
+                    via: DVec2::X,
+                    to: DVec2::ONE,
+                }),
             }),
             Op::Pull(stroke()),
             Op::AddCurve(AddCurveInput {

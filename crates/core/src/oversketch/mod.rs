@@ -20,6 +20,8 @@
 //! each handle point's depth, ROI and a detail-preserving [`LaplacianEdit`](crate::deform::LaplacianEdit);
 //! [`preview_handle`] shows the would-be handle while the stroke is drawn.
 
+mod bend;
+mod manual;
 mod mapping;
 mod matching;
 mod pipeline;
@@ -29,11 +31,15 @@ mod scoring;
 mod track;
 mod turning;
 
+pub use bend::{BLEND_GAP_PX, ROI_FACTOR};
+pub use manual::{
+    ManualHandle, PICK_DISTANCE_PX, SURFACE_HANDLE_SPACING_PX, manual_handle_preview,
+    oversketch_manual, pick_handle,
+};
 pub use mapping::{BLEND_WIDTH, blend_ends, blend_weight, map_point_to_stroke, map_to_stroke};
 pub use matching::{Match, MatchParams, match_stroke};
 pub use pipeline::{
-    BLEND_GAP_PX, OversketchError, Oversketched, ROI_FACTOR, SOFT_FIT_WEIGHT, oversketch,
-    oversketch_with, preview_handle,
+    OversketchError, Oversketched, SOFT_FIT_WEIGHT, oversketch, oversketch_with, preview_handle,
 };
 pub use polyline::{STROKE_SPACING_PX, STROKE_TOLERANCE_PX, simplify_stroke};
 pub use roi::{ROI_RADIUS_FACTOR, roi_from_displacements};

@@ -1,0 +1,250 @@
+//! Manual over-sketching (Nealen's dissertation ch. 4, §4.2–4.3): the user says which curve
+//! moves instead of letting matching guess, then sketches where it goes.
+//!
+//! A handle is picked with one stroke ([`pick_handle`]):
+//! - drawn along a visible silhouette, it picks that silhouette's piece between the points
+//!   nearest the stroke's ends ([`ManualHandle::Silhouette`]); the ends can then be dragged
+//!   to crop it (the `from`/`to` points move, `via` keeps the side of a closed outline);
+//! - drawn over the model anywhere else, it is a curve on the surface
+//!   ([`ManualHandle::Surface`]): each point cast onto the mesh along its picking ray.
+//!
+//! The second stroke is the handle's new shape ([`oversketch_manual`]). A silhouette piece
+//! moves as in the automatic over-sketch (targets blended at the ends, the band around it
+//! carried along); a surface curve goes onto the stroke whole, its points constrained
+//! inside their triangles (Eq. 4.2). Both handles are kept as screen points, so a session
+//! replays them exactly with the same camera.
+
+use glam::{DVec2, DVec3};
+use serde::{Deserialize, Serialize};
+
+use super::bend::{HandleCurve, bend};
+use super::pipeline::{piece_points, seen_silhouettes};
+use super::polyline::{closest_point, cumulative_lengths, point_at, resample};
+use super::track::Track;
+use super::{OversketchError, Oversketched, handle_points, simplify_stroke};
+use crate::camera::Camera;
+use crate::deform::{HandleFit, HandlePoint};
+use crate::geometry::Bvh;
+use crate::mesh::Mesh;
+
+/// A pick stroke whose points all lie this close (px) to one silhouette picks that
+/// silhouette; a `via` point this close to a silhouette finds it again.
+pub const PICK_DISTANCE_PX: f64 = 8.0;
+
+/// Spacing (px) of the points of a curve drawn on the surface: wider than the stroke's
+/// samples so that neighbouring constraints rarely share a triangle.
+pub const SURFACE_HANDLE_SPACING_PX: f64 = 6.0;
+
+/// The handle of a manual over-sketch, in screen CSS px of the op's viewport.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ManualHandle {
+    /// The piece of the silhouette nearest `via`, from the point nearest `from` to the point
+    /// nearest `to`, running through `via` (which decides the way round a closed outline).
+    Silhouette {
+        /// One end of the piece.
+        from: DVec2,
+        /// A point of the piece between its ends.
+        via: DVec2,
+        /// The other end.
+        to: DVec2,
+    },
+    /// A curve on the surface: the points where these screen points' rays meet the mesh.
+    Surface {
+        /// The curve as drawn, in order.
+        points: Vec<DVec2>,
+    },
+}
+
+/// The handle a pick stroke selects: a silhouette piece when every point of the stroke lies
+/// within [`PICK_DISTANCE_PX`] of one visible silhouette, else a curve on the surface when at
+/// least two of its points hit the mesh. `None` otherwise.
+pub fn pick_handle(
+    mesh: &Mesh,
+    camera: &Camera,
+    viewport: DVec2,
+    stroke: &[DVec2],
+) -> Option<ManualHandle> {
+    let stroke = simplify_stroke(stroke);
+    let (&from, &to) = (stroke.first()?, stroke.last()?);
+    let (_, polylines) = seen_silhouettes(mesh, camera, viewport);
+    let follows = |polyline: &Vec<DVec2>| {
+        let cumulative = cumulative_lengths(polyline);
+        polyline.len() >= 2
+            && resample(&stroke, 2.0)
+                .iter()
+                .all(|&p| distance_to(polyline, &cumulative, p).1 <= PICK_DISTANCE_PX)
+    };
+    if from.distance(to) > 0.0 && polylines.iter().any(follows) {
+        let via = stroke_midpoint(&stroke);
+        return Some(ManualHandle::Silhouette { from, via, to });
+    }
+    let handle = ManualHandle::Surface { points: stroke };
+    let on_surface = resolve(mesh, camera, viewport, &handle)?;
+    (on_surface.points.len() >= 2).then_some(handle)
+}
+
+/// The handle as it would move, on screen (CSS px), for highlighting; `None` when it no
+/// longer finds its silhouette or misses the mesh.
+pub fn manual_handle_preview(
+    mesh: &Mesh,
+    camera: &Camera,
+    viewport: DVec2,
+    handle: &ManualHandle,
+) -> Option<Vec<DVec2>> {
+    resolve(mesh, camera, viewport, handle).map(|curve| curve.screen)
+}
+
+/// Moves `handle` onto `stroke` (its new shape, screen points in drawing order) and bends
+/// the surface around it with its details. The handle's end nearer the stroke's start goes
+/// to the stroke's start.
+///
+/// Errors: [`OversketchError::HandleLost`] when the handle no longer resolves on the mesh,
+/// [`OversketchError::NoMatch`] for a degenerate stroke, and
+/// [`OversketchError::Deform`] when the edit cannot be made.
+pub fn oversketch_manual(
+    mesh: &Mesh,
+    camera: &Camera,
+    viewport: DVec2,
+    handle: &ManualHandle,
+    stroke: &[DVec2],
+    fit: HandleFit,
+) -> Result<Oversketched, OversketchError> {
+    let stroke = if stroke.iter().all(|p| p.is_finite()) {
+        simplify_stroke(stroke)
+    } else {
+        Vec::new()
+    };
+    let (&start, &end) = stroke
+        .first()
+        .zip(stroke.last())
+        .filter(|(a, b)| a != b)
+        .ok_or(OversketchError::NoMatch)?;
+    let curve = resolve(mesh, camera, viewport, handle).ok_or(OversketchError::HandleLost)?;
+    let (first, last) = (curve.screen[0], curve.screen[curve.screen.len() - 1]);
+    let curve = if start.distance(last) + end.distance(first)
+        < start.distance(first) + end.distance(last)
+    {
+        curve.reversed()
+    } else {
+        curve
+    };
+    let (positions, roi_size) = bend(mesh, camera, viewport, &curve, &stroke, fit)?;
+    Ok(Oversketched {
+        positions,
+        handle: curve.screen,
+        roi_size,
+        score: 1.0,
+    })
+}
+
+/// The handle's points on the mesh as seen now; `None` (or fewer than two points) when the
+/// silhouette is gone or the curve misses the mesh.
+fn resolve(
+    mesh: &Mesh,
+    camera: &Camera,
+    viewport: DVec2,
+    handle: &ManualHandle,
+) -> Option<HandleCurve> {
+    let curve = match handle {
+        ManualHandle::Silhouette { from, via, to } => {
+            silhouette_piece(mesh, camera, viewport, [*from, *via, *to])?
+        }
+        ManualHandle::Surface { points } => surface_curve(mesh, camera, viewport, points),
+    };
+    (curve.points.len() >= 2).then_some(curve)
+}
+
+/// The piece of the silhouette nearest `via` between the points nearest `from` and `to`,
+/// the way round that passes `via`.
+fn silhouette_piece(
+    mesh: &Mesh,
+    camera: &Camera,
+    viewport: DVec2,
+    [from, via, to]: [DVec2; 3],
+) -> Option<HandleCurve> {
+    let (curves, polylines) = seen_silhouettes(mesh, camera, viewport);
+    let nearest = polylines
+        .iter()
+        .enumerate()
+        .filter(|(_, polyline)| polyline.len() >= 2)
+        .map(|(i, polyline)| {
+            let cumulative = cumulative_lengths(polyline);
+            (i, distance_to(polyline, &cumulative, via).1)
+        })
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .filter(|&(_, distance)| distance <= PICK_DISTANCE_PX)?;
+    let polyline = &polylines[nearest.0];
+    let track = Track::new(polyline)?;
+    let cumulative = cumulative_lengths(polyline);
+    let [s_from, s_via, s_to] = [from, via, to].map(|p| closest_point(polyline, &cumulative, p).0);
+    let (start, end) = if track.is_closed() {
+        let length = track.length();
+        let forward = (s_to - s_from).rem_euclid(length);
+        if (s_via - s_from).rem_euclid(length) <= forward {
+            (track.index(s_from), track.index(s_from + forward))
+        } else {
+            // Backwards: both indices in the unrolled second lap, end below start.
+            let backward = length - forward;
+            (
+                track.index(s_from + length),
+                track.index(s_from + length - backward),
+            )
+        }
+    } else {
+        (track.index(s_from), track.index(s_to))
+    };
+    let indices: Vec<f64> = handle_points(polyline, start, end)
+        .into_iter()
+        .map(|(index, _)| index)
+        .collect();
+    Some(HandleCurve::of_silhouette(&piece_points(
+        &curves[nearest.0],
+        polyline.len(),
+        &indices,
+    )))
+}
+
+/// The points where the rays through `points` (resampled every
+/// [`SURFACE_HANDLE_SPACING_PX`]) first meet the mesh, one per triangle.
+fn surface_curve(mesh: &Mesh, camera: &Camera, viewport: DVec2, points: &[DVec2]) -> HandleCurve {
+    let bvh = Bvh::new(mesh);
+    let mut curve = HandleCurve {
+        points: Vec::new(),
+        worlds: Vec::new(),
+        screen: Vec::new(),
+        is_silhouette: false,
+    };
+    let mut last_face = None;
+    for p in resample(points, SURFACE_HANDLE_SPACING_PX) {
+        let (origin, dir) = camera.ray_in_world(p, viewport);
+        let Some(hit) = bvh.raycast(mesh, origin, dir) else {
+            continue;
+        };
+        if last_face == Some(hit.face) {
+            continue;
+        }
+        last_face = Some(hit.face);
+        let world: DVec3 = origin + dir * hit.distance;
+        curve
+            .points
+            .push(HandlePoint::in_face(mesh, hit.face, hit.barycentric));
+        curve.worlds.push(world);
+        curve.screen.push(p);
+    }
+    curve
+}
+
+/// The point halfway along `stroke` by arclength.
+fn stroke_midpoint(stroke: &[DVec2]) -> DVec2 {
+    let cumulative = cumulative_lengths(stroke);
+    let half = 0.5 * cumulative.last().copied().unwrap_or(0.0);
+    point_at(stroke, &cumulative, half)
+}
+
+/// The arclength of the point of `polyline` (at least two points) nearest `p`, and its
+/// distance from `p`.
+fn distance_to(polyline: &[DVec2], cumulative: &[f64], p: DVec2) -> (f64, f64) {
+    let (s, _) = closest_point(polyline, cumulative, p);
+    (s, point_at(polyline, cumulative, s).distance(p))
+}

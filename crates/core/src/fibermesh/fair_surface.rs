@@ -461,7 +461,8 @@ impl FairSurface {
     /// or `max_iterations` are done.
     ///
     /// Errors: those of [`FairSurface::iterate`], and [`SolveError::Diverged`] when the steps
-    /// grow (see [`DIVERGENCE_GROWTH`]); `positions` then hold the last iteration.
+    /// grow (by more than `DIVERGENCE_GROWTH` times the smallest step); `positions` then
+    /// hold the last iteration.
     pub fn run(
         &mut self,
         positions: &mut [DVec3],

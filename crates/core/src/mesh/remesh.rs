@@ -1,7 +1,7 @@
 //! Explicit isotropic remeshing that keeps control curves as edge chains.
 //!
 //! FiberMesh remeshes after each sketch op and when a curve pull is released (Nealen's thesis
-//! §3.3.3, "modified explicit remeshing [SG03]"), so that stretched regions get new vertices
+//! §3.3.3, "modified explicit remeshing \[SG03\]"), so that stretched regions get new vertices
 //! and the later optimization sees well-shaped triangles. The method is Botsch & Kobbelt's
 //! ("A remeshing approach to multiresolution modeling", SGP 2004): with a target edge length
 //! `L`, each iteration

@@ -33,7 +33,7 @@ use crate::mesh::{Mesh, VertexId};
 use crate::silhouette::SilhouettePoint;
 
 /// The ROI grows within spheres of this many times each handle displacement: twice the
-/// thesis's radius ([`super::ROI_RADIUS_FACTOR`]). The band of [`band_handles`] moves
+/// thesis's radius ([`super::ROI_RADIUS_FACTOR`]). The band of `band_handles` moves
 /// rigidly, about two edges wide, so with the thesis's radius the whole falloff from the
 /// handle's motion to rest is squeezed into a few edges beyond it, and the bumps there
 /// change more than under a naive falloff (measured on the bumpy torus: relative Laplacian

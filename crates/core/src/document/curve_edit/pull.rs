@@ -95,7 +95,7 @@ pub struct PullSession {
 impl PullSession {
     /// Starts a pull where `input`'s first sample is: on the nearest visible curve point.
     ///
-    /// Errors: [`CommandError::NoCurveHere`] and the stroke's errors, as [`pull_op`].
+    /// Errors: [`CommandError::NoCurveHere`] and the stroke's errors, as the `pull` op.
     pub fn start(doc: &Document, input: StrokeInput) -> Result<PullSession, CommandError> {
         let stroke = screen_stroke(&input, 1)?;
         let pick = pick_curve_vertex(doc, &input, stroke[0])?;

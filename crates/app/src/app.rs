@@ -458,8 +458,18 @@ impl SketchApp {
         self.tools.preview()
     }
 
-    /// Highlights the silhouette piece an over-sketch stroke would replace.
+    /// Highlights the silhouette piece an over-sketch stroke would replace, or the picked
+    /// handle with its draggable ends, and says what to do next.
     fn handle_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
+        if let Some(hint) = self.tools.hint() {
+            ui.painter().text(
+                viewport.center_top() + egui::vec2(0.0, 28.0),
+                egui::Align2::CENTER_CENTER,
+                hint,
+                egui::FontId::proportional(16.0),
+                egui::Color32::from_white_alpha(200),
+            );
+        }
         let Some(handle) = self.tools.handle() else {
             return;
         };
@@ -473,6 +483,11 @@ impl SketchApp {
             .iter()
             .map(|p| viewport.min + egui::vec2(p.x as f32, p.y as f32))
             .collect();
+        if handle.croppable {
+            for end in [points.first(), points.last()].into_iter().flatten() {
+                ui.painter().circle_filled(*end, 7.0, color);
+            }
+        }
         ui.painter()
             .add(egui::Shape::line(points, egui::Stroke::new(4.0, color)));
     }
@@ -528,7 +543,7 @@ impl eframe::App for SketchApp {
                     &shared.editor,
                     &mut self.options,
                     self.tools.mode(),
-                    self.tools.oversketch_fit_mut(),
+                    self.tools.oversketch_settings_mut(),
                     &mut self.show_help,
                     status,
                 )

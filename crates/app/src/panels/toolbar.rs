@@ -4,7 +4,7 @@
 use sketchmesh_core::document::{Editor, OversketchFit};
 
 use crate::render::ViewOptions;
-use crate::tools::Mode;
+use crate::tools::{Mode, OversketchSettings};
 
 /// A toolbar button the user pressed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -34,7 +34,7 @@ pub fn toolbar_ui(
     editor: &Editor,
     options: &mut ViewOptions,
     mode: Mode,
-    fit: &mut OversketchFit,
+    oversketch: &mut OversketchSettings,
     show_help: &mut bool,
     status: Option<&str>,
 ) -> Option<Action> {
@@ -87,7 +87,11 @@ pub fn toolbar_ui(
             }
         }
         if mode == Mode::Oversketch {
-            let mut exact = *fit == OversketchFit::Exact;
+            let hint = "On: pick what moves first (draw along an outline, or across the \
+                        model), then draw its new shape. Off: the stroke finds the outline";
+            ui.toggle_value(&mut oversketch.manual, "Pick handle")
+                .on_hover_text(hint);
+            let mut exact = oversketch.fit == OversketchFit::Exact;
             let hint = "On: the outline lands on the stroke. Off: it follows the stroke as far \
                         as the surface detail allows, so a rough stroke bends the shape less";
             if ui
@@ -95,7 +99,7 @@ pub fn toolbar_ui(
                 .on_hover_text(hint)
                 .changed()
             {
-                *fit = if exact {
+                oversketch.fit = if exact {
                     OversketchFit::Exact
                 } else {
                     OversketchFit::Soft

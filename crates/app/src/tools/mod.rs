@@ -14,12 +14,13 @@ pub mod sketch;
 use egui::Rect;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::StrokePoint;
-use sketchmesh_core::document::{Document, Op, OversketchFit, PullSession};
+use sketchmesh_core::document::{Document, Op, PullSession};
 
 pub use crate::input::router::ToolEvent;
 pub use mode::Mode;
 
 use curve_stroke::CurveStrokeTool;
+pub use oversketch::OversketchSettings;
 use oversketch::{HandlePreview, OversketchTool};
 use pull::PullTool;
 use sketch::SketchTool;
@@ -73,9 +74,17 @@ impl ToolSet {
         dropped
     }
 
-    /// The over-sketch tool's fit setting, for the toolbar.
-    pub fn oversketch_fit_mut(&mut self) -> &mut OversketchFit {
-        self.oversketch.fit_mut()
+    /// The over-sketch tool's settings, for the toolbar.
+    pub fn oversketch_settings_mut(&mut self) -> &mut OversketchSettings {
+        self.oversketch.settings_mut()
+    }
+
+    /// What the active tool asks the user to do next, if anything.
+    pub fn hint(&self) -> Option<&'static str> {
+        match self.mode {
+            Mode::Oversketch => self.oversketch.hint(),
+            _ => None,
+        }
     }
 
     /// Drops any gesture in progress; see [`ToolSet::set_mode`].

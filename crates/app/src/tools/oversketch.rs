@@ -4,16 +4,27 @@
 //! `oversketch` op instead. While the stroke is drawn it asks core which silhouette piece it
 //! would replace, so the app can highlight it: green when the match is confident, orange
 //! when core would refuse it.
+//!
+//! In manual mode (the toolbar's "Pick handle") the first stroke picks the handle instead
+//! ([`pick_handle`]): along an outline, that outline's piece, whose ends can then be dragged
+//! to crop it; over the model elsewhere, a curve on the surface. The next stroke is its new
+//! shape. Orbiting or zooming drops the pick, since it is kept in screen points.
 
 use glam::DVec2;
-use sketchmesh_core::document::{Document, Op, OversketchFit, OversketchInput};
-use sketchmesh_core::oversketch::preview_handle;
+use sketchmesh_core::camera::Camera;
+use sketchmesh_core::document::{Document, Op, OversketchFit, OversketchInput, StrokeInput};
+use sketchmesh_core::oversketch::{
+    ManualHandle, manual_handle_preview, pick_handle, preview_handle,
+};
 
-use super::draw::DrawTool;
+use super::draw::{DrawTool, point};
 use super::{ToolEvent, ToolOutput, ViewCtx};
 
 /// Samples between two previews: matching runs on whole silhouettes, so not on every sample.
 const PREVIEW_EVERY: usize = 8;
+
+/// A press this close (points) to an end of a picked outline piece drags that end.
+const END_GRAB_PX: f64 = 16.0;
 
 /// The silhouette piece a stroke would replace, in viewport-relative points.
 #[derive(Clone, Debug, PartialEq)]
@@ -22,27 +33,52 @@ pub struct HandlePreview {
     pub points: Vec<DVec2>,
     /// Whether the match is confident enough to be applied.
     pub confident: bool,
+    /// Whether the ends can be dragged to crop it (a picked outline piece).
+    pub croppable: bool,
 }
 
-/// The over-sketch tool's state: the stroke being drawn, the current match, and how closely
-/// the outline is to follow (the user's setting).
+/// The user's over-sketch settings, kept across strokes and cancels.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct OversketchSettings {
+    /// How closely the outline follows the stroke.
+    pub fit: OversketchFit,
+    /// Pick the handle first instead of letting the stroke find it.
+    pub manual: bool,
+}
+
+/// A handle picked in manual mode, with the view it was picked in.
+#[derive(Clone, Debug, PartialEq)]
+struct Picked {
+    handle: ManualHandle,
+    camera: Camera,
+    viewport: DVec2,
+    /// Which end of an outline piece is being dragged: `true` for `to`, `false` for `from`.
+    dragging: Option<bool>,
+}
+
+/// The over-sketch tool's state: the stroke being drawn, the current match or pick, and
+/// the user's settings.
 #[derive(Clone, Debug, Default)]
 pub struct OversketchTool {
     stroke: DrawTool,
     handle: Option<HandlePreview>,
     samples_since_preview: usize,
-    fit: OversketchFit,
+    settings: OversketchSettings,
+    picked: Option<Picked>,
 }
 
 impl OversketchTool {
-    /// Feeds one event; a finished stroke becomes an `oversketch` op.
+    /// Feeds one event; a finished stroke becomes an `oversketch` op (or, in manual mode
+    /// with nothing picked yet, the pick).
     pub fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
+        if self.settings.manual {
+            return self.on_manual_event(event, view, doc);
+        }
+        self.picked = None;
         let finished = self.stroke.capture(event, view);
         match event {
             ToolEvent::Move(_) => {
-                self.samples_since_preview += 1;
-                if self.samples_since_preview >= PREVIEW_EVERY {
-                    self.samples_since_preview = 0;
+                if self.preview_is_due() {
                     self.handle = self.preview_now(view, doc);
                 }
             }
@@ -52,28 +88,134 @@ impl OversketchTool {
             }
             ToolEvent::Begin(_) => {}
         }
-        finished.map_or(ToolOutput::None, |input| {
-            ToolOutput::Commit(Op::Oversketch(OversketchInput {
-                viewport: input.viewport,
-                camera: input.camera,
-                stroke: input.stroke,
-                fit: self.fit,
-                handle: None,
-            }))
-        })
+        finished.map_or(ToolOutput::None, |input| self.commit(input, None))
     }
 
-    /// Drops the stroke in progress; the fit setting stays.
+    /// Manual mode: pick, crop by dragging an end, then the new shape.
+    fn on_manual_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
+        let size = view.viewport.size();
+        let viewport = DVec2::new(size.x.into(), size.y.into());
+        if self
+            .picked
+            .as_ref()
+            .is_some_and(|p| p.camera != view.camera || p.viewport != viewport)
+        {
+            self.picked = None;
+            self.handle = None;
+        }
+        if self.drag_end(event, view, doc) {
+            return ToolOutput::None;
+        }
+        let Some(input) = self.stroke.capture(event, view) else {
+            return ToolOutput::None;
+        };
+        if let Some(picked) = self.picked.take() {
+            self.handle = None;
+            return self.commit(input, Some(picked.handle));
+        }
+        let stroke: Vec<DVec2> = input
+            .stroke
+            .iter()
+            .map(|p| DVec2::new(p[0], p[1]))
+            .collect();
+        let picked = doc
+            .models
+            .iter()
+            .find_map(|model| pick_handle(&model.mesh, &input.camera, viewport, &stroke));
+        let Some(handle) = picked else {
+            return ToolOutput::Refused(String::from(
+                "Draw along an outline, or across the model, to pick what moves.",
+            ));
+        };
+        self.picked = Some(Picked {
+            handle,
+            camera: input.camera,
+            viewport,
+            dragging: None,
+        });
+        self.handle = self.picked_preview(doc);
+        ToolOutput::None
+    }
+
+    /// Drags an end of a picked outline piece; whether the event was used for that.
+    fn drag_end(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> bool {
+        let ends = self
+            .handle
+            .as_ref()
+            .filter(|h| h.croppable)
+            .and_then(|h| h.points.first().zip(h.points.last()))
+            .map(|(&first, &last)| [first, last]);
+        let Some(picked) = self.picked.as_mut() else {
+            return false;
+        };
+        match (event, picked.dragging) {
+            (ToolEvent::Begin(s), None) => {
+                let at = point(s, view).pos;
+                let Some([first, last]) = ends else {
+                    return false;
+                };
+                let (to_first, to_last) = (at.distance(first), at.distance(last));
+                if to_first.min(to_last) > END_GRAB_PX {
+                    return false;
+                }
+                picked.dragging = Some(to_last < to_first);
+                true
+            }
+            (ToolEvent::Move(s) | ToolEvent::End(s), Some(is_to)) => {
+                let at = point(s, view).pos;
+                if let ManualHandle::Silhouette { from, to, .. } = &mut picked.handle {
+                    *(if is_to { to } else { from }) = at;
+                }
+                let is_end = matches!(event, ToolEvent::End(_));
+                if is_end {
+                    picked.dragging = None;
+                }
+                if is_end || self.preview_is_due() {
+                    self.handle = self.picked_preview(doc).or(self.handle.take());
+                }
+                true
+            }
+            (ToolEvent::Cancel, Some(_)) => {
+                picked.dragging = None;
+                true
+            }
+            _ => false,
+        }
+    }
+
+    /// Whether enough samples passed since the last preview.
+    fn preview_is_due(&mut self) -> bool {
+        self.samples_since_preview += 1;
+        let is_due = self.samples_since_preview >= PREVIEW_EVERY;
+        if is_due {
+            self.samples_since_preview = 0;
+        }
+        is_due
+    }
+
+    /// The `oversketch` op for a finished stroke.
+    fn commit(&self, input: StrokeInput, handle: Option<ManualHandle>) -> ToolOutput {
+        ToolOutput::Commit(Op::Oversketch(OversketchInput {
+            viewport: input.viewport,
+            camera: input.camera,
+            stroke: input.stroke,
+            fit: self.settings.fit,
+            handle,
+        }))
+    }
+
+    /// Drops the stroke in progress and the pick; the settings stay.
     pub fn cancel(&mut self) {
         *self = Self {
-            fit: self.fit,
+            settings: self.settings,
             ..Self::default()
         };
     }
 
-    /// How closely over-sketched outlines follow their strokes, for the toolbar to change.
-    pub fn fit_mut(&mut self) -> &mut OversketchFit {
-        &mut self.fit
+    /// The user's settings, for the toolbar to change. Leaving manual mode drops a pick at
+    /// the next event.
+    pub fn settings_mut(&mut self) -> &mut OversketchSettings {
+        &mut self.settings
     }
 
     /// The stroke in progress, as the draw tool shows it.
@@ -81,9 +223,24 @@ impl OversketchTool {
         self.stroke.preview()
     }
 
-    /// The silhouette piece the stroke would replace, if any.
+    /// The silhouette piece the stroke would replace, or the picked handle.
     pub fn handle(&self) -> Option<&HandlePreview> {
-        self.handle.as_ref()
+        let is_stale_pick = self.picked.is_some() && !self.settings.manual;
+        self.handle.as_ref().filter(|_| !is_stale_pick)
+    }
+
+    /// What to do next in manual mode, for the viewport to show.
+    pub fn hint(&self) -> Option<&'static str> {
+        if !self.settings.manual {
+            return None;
+        }
+        Some(match (&self.picked, &self.handle) {
+            (None, _) => "Draw along an outline, or across the model, to pick what moves",
+            (Some(_), Some(h)) if h.croppable => {
+                "Drag the dots to crop it, then draw its new shape"
+            }
+            (Some(_), _) => "Now draw its new position",
+        })
     }
 
     /// Matches the stroke so far against the first model whose silhouettes it fits.
@@ -92,8 +249,28 @@ impl OversketchTool {
         let size = view.viewport.size();
         let viewport = DVec2::new(size.x.into(), size.y.into());
         doc.models.iter().find_map(|model| {
-            preview_handle(&model.mesh, &view.camera, viewport, &points)
-                .map(|(points, confident)| HandlePreview { points, confident })
+            preview_handle(&model.mesh, &view.camera, viewport, &points).map(
+                |(points, confident)| HandlePreview {
+                    points,
+                    confident,
+                    croppable: false,
+                },
+            )
+        })
+    }
+
+    /// The picked handle as it resolves on the first model it finds.
+    fn picked_preview(&self, doc: &Document) -> Option<HandlePreview> {
+        let picked = self.picked.as_ref()?;
+        let croppable = matches!(picked.handle, ManualHandle::Silhouette { .. });
+        doc.models.iter().find_map(|model| {
+            manual_handle_preview(&model.mesh, &picked.camera, picked.viewport, &picked.handle).map(
+                |points| HandlePreview {
+                    points,
+                    confident: true,
+                    croppable,
+                },
+            )
         })
     }
 }
@@ -138,12 +315,153 @@ mod tests {
         };
         assert_eq!(exact.fit, OversketchFit::Exact);
         assert_eq!(exact.stroke.len(), 3);
-        *tool.fit_mut() = OversketchFit::Soft;
+        tool.settings_mut().fit = OversketchFit::Soft;
         tool.cancel();
         let ToolOutput::Commit(Op::Oversketch(soft)) = draw(&mut tool) else {
             panic!("no oversketch op");
         };
         assert_eq!(soft.fit, OversketchFit::Soft);
         assert_eq!(soft.stroke, exact.stroke);
+    }
+
+    /// A unit sphere seen by the default camera in a 1000 × 1000 viewport: its outline is
+    /// the circle of radius 1 / (√24 · tan 22.5°) · 500 px about the centre.
+    fn sphere_view() -> (ViewCtx, Document, f64) {
+        let view = ViewCtx {
+            camera: Camera::default(),
+            viewport: Rect::from_min_max(pos2(0.0, 0.0), pos2(1000.0, 1000.0)),
+        };
+        let model = sketchmesh_core::document::Model {
+            mesh: sketchmesh_core::mesh::primitives::icosphere(1.0, 4),
+            ..Default::default()
+        };
+        let doc = Document {
+            models: vec![std::sync::Arc::new(model)],
+            ..Document::default()
+        };
+        let radius = 500.0 / (24f64.sqrt() * 22.5f64.to_radians().tan());
+        (view, doc, radius)
+    }
+
+    fn at(phase: Phase, p: DVec2) -> PointerSample {
+        PointerSample {
+            pos_in_screen: pos2(p.x as f32, p.y as f32),
+            ..pen(phase, 0.0)
+        }
+    }
+
+    /// Feeds a stroke through `points`; what the tool said at the end.
+    fn stroke_through(
+        tool: &mut OversketchTool,
+        view: &ViewCtx,
+        doc: &Document,
+        points: &[DVec2],
+    ) -> ToolOutput {
+        let (first, rest) = points.split_first().unwrap();
+        let (last, middle) = rest.split_last().unwrap();
+        tool.on_event(&ToolEvent::Begin(at(Phase::Down, *first)), view, doc);
+        for p in middle {
+            tool.on_event(&ToolEvent::Move(at(Phase::Move, *p)), view, doc);
+        }
+        tool.on_event(&ToolEvent::End(at(Phase::Up, *last)), view, doc)
+    }
+
+    /// Points on the circle of `radius` about the viewport centre, from `a` to `b` degrees.
+    fn arc(radius: f64, a: f64, b: f64) -> Vec<DVec2> {
+        (0..=40)
+            .map(|k| {
+                let angle = (a + (b - a) * k as f64 / 40.0).to_radians();
+                DVec2::splat(500.0) + radius * DVec2::from_angle(angle)
+            })
+            .collect()
+    }
+
+    #[test]
+    fn manual_mode_picks_a_surface_curve_then_commits_its_new_position() {
+        let (view, doc, _) = sphere_view();
+        let mut tool = OversketchTool::default();
+        tool.settings_mut().manual = true;
+        assert!(tool.hint().unwrap().contains("pick"));
+        let across: Vec<DVec2> = (0..=20)
+            .map(|k| DVec2::new(400.0 + 10.0 * k as f64, 500.0))
+            .collect();
+        assert_eq!(
+            stroke_through(&mut tool, &view, &doc, &across),
+            ToolOutput::None
+        );
+        let picked = tool.handle().unwrap();
+        assert!(picked.confident && !picked.croppable && picked.points.len() > 10);
+        assert_eq!(tool.hint(), Some("Now draw its new position"));
+        let higher: Vec<DVec2> = across.iter().map(|p| *p - DVec2::new(0.0, 30.0)).collect();
+        let ToolOutput::Commit(Op::Oversketch(input)) =
+            stroke_through(&mut tool, &view, &doc, &higher)
+        else {
+            panic!("the second stroke should commit");
+        };
+        assert!(matches!(input.handle, Some(ManualHandle::Surface { .. })));
+        assert!(tool.handle().is_none());
+        // Off the model entirely: refused with a sentence, nothing picked.
+        let off: Vec<DVec2> = (0..=20)
+            .map(|k| DVec2::new(10.0 + k as f64, 20.0))
+            .collect();
+        let ToolOutput::Refused(message) = stroke_through(&mut tool, &view, &doc, &off) else {
+            panic!("a stroke off the model should be refused");
+        };
+        assert!(message.ends_with('.'));
+    }
+
+    #[test]
+    fn a_picked_outline_piece_is_cropped_by_dragging_its_end_and_dropped_by_orbiting() {
+        let (view, doc, radius) = sphere_view();
+        let mut tool = OversketchTool::default();
+        tool.settings_mut().manual = true;
+        let along = arc(radius, -30.0, 30.0);
+        assert_eq!(
+            stroke_through(&mut tool, &view, &doc, &along),
+            ToolOutput::None
+        );
+        let picked = tool.handle().unwrap().clone();
+        assert!(picked.croppable);
+        // Silhouette points are the outline's edge crossings, about 8 px apart here.
+        assert!(picked.points.last().unwrap().distance(along[40]) < 10.0);
+        // Drag the end at +30° back to +10°: no op, a shorter piece.
+        let crop = arc(radius, 30.0, 10.0);
+        assert_eq!(
+            stroke_through(&mut tool, &view, &doc, &crop),
+            ToolOutput::None
+        );
+        let cropped = tool.handle().unwrap().clone();
+        assert!(cropped.points.len() < picked.points.len() * 3 / 4);
+        assert!(cropped.points.last().unwrap().distance(crop[40]) < 10.0);
+        // The new shape commits the cropped handle.
+        let out = arc(radius + 20.0, -30.0, 10.0);
+        let ToolOutput::Commit(Op::Oversketch(input)) =
+            stroke_through(&mut tool, &view, &doc, &out)
+        else {
+            panic!("the new shape should commit");
+        };
+        let Some(ManualHandle::Silhouette { to, .. }) = input.handle else {
+            panic!("an outline handle, got {:?}", input.handle);
+        };
+        assert!(to.distance(crop[40]) < 1e-3, "{to} vs {}", crop[40]);
+        // Pick again, then orbit: the pick is gone and the next stroke picks anew.
+        stroke_through(&mut tool, &view, &doc, &along);
+        assert!(tool.handle().is_some());
+        let orbited = ViewCtx {
+            camera: Camera {
+                eye: glam::DVec3::new(1.0, 0.0, 5.0),
+                ..Camera::default()
+            },
+            ..view
+        };
+        assert_eq!(
+            stroke_through(&mut tool, &orbited, &doc, &along),
+            ToolOutput::None
+        );
+        assert_eq!(
+            tool.picked.as_ref().map(|p| p.camera),
+            Some(orbited.camera),
+            "the stroke after orbiting picked again"
+        );
     }
 }

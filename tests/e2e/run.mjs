@@ -53,6 +53,21 @@ async function runAll() {
 
 const CENTRE = { x: 660, y: 380 };
 
+/** The ellipse the shape tests draw: centre, radii. */
+const ELLIPSE = { c: { x: 640, y: 400 }, rx: 170, ry: 120 };
+
+/**
+ * Points on the ellipse from angle `a0` to `a1` (radians, y down), `n` steps, pushed out by
+ * `push(a)` px; a full turn is the closed outline that creates the shape.
+ */
+function onEllipse(a0 = 0, a1 = 2 * Math.PI, n = 60, push = () => 0, force = 0.6) {
+  const { c, rx, ry } = ELLIPSE;
+  return Array.from({ length: n + 1 }, (_, i) => {
+    const a = a0 + ((a1 - a0) * i) / n;
+    return { x: c.x + (rx + push(a)) * Math.cos(a), y: c.y + (ry + push(a)) * Math.sin(a), force };
+  });
+}
+
 /** A pen loop around the centre (most of a circle), pressure rising and falling. */
 function penLoop() {
   const n = 40;
@@ -308,11 +323,8 @@ test('deviceScaleFactor 2: the canvas backing store is twice the CSS size and re
 test('a closed pen outline becomes a lit 3D shape with its blue curve; undo removes it; export validates', async () => {
   const fresh = await openApp(browser, url, gpu);
   try {
-    const centre = { x: 640, y: 400 };
-    const outline = Array.from({ length: 61 }, (_, i) => {
-      const a = (2 * Math.PI * i) / 60;
-      return { x: centre.x + 170 * Math.cos(a), y: centre.y + 120 * Math.sin(a), force: 0.6 };
-    });
+    const centre = ELLIPSE.c;
+    const outline = onEllipse();
     const before = await screenshot(fresh.page, out('create-before.png'));
     await penStroke(fresh.cdp, outline);
     const released = Date.now();
@@ -416,11 +428,8 @@ test('a dropped .glb imports and is framed; Export downloads a valid file; bad f
 test('over-sketch mode: a stroke beyond a shape\'s outline pulls the outline to it; undo restores it', async () => {
   const fresh = await openApp(browser, url, gpu);
   try {
-    const c = { x: 640, y: 400 };
-    const outline = Array.from({ length: 61 }, (_, i) => {
-      const a = (2 * Math.PI * i) / 60;
-      return { x: c.x + 170 * Math.cos(a), y: c.y + 120 * Math.sin(a), force: 0.6 };
-    });
+    const c = ELLIPSE.c;
+    const outline = onEllipse();
     await penStroke(fresh.cdp, outline);
     const created = await until(() => api(fresh.page, 'stats'), (s) => s.models === 1, 15_000);
     assert.equal(created.models, 1, 'the outline made a shape');
@@ -430,13 +439,9 @@ test('over-sketch mode: a stroke beyond a shape\'s outline pulls the outline to 
     await frames(fresh.page, 3);
     const before = await screenshot(fresh.page, out('oversketch-before.png'));
     // From the outline at -60 degrees to +60 degrees, bulging 40 px out at 0 degrees.
-    const stroke = Array.from({ length: 41 }, (_, i) => {
-      const a = (-Math.PI / 3) + (2 * Math.PI / 3) * (i / 40);
-      const bulge = 40 * Math.cos(1.5 * a) ** 2;
-      return { x: c.x + (170 + bulge) * Math.cos(a), y: c.y + (120 + bulge) * Math.sin(a), force: 0.5 };
-    });
-    const released = Date.now();
+    const stroke = onEllipse(-Math.PI / 3, Math.PI / 3, 40, (a) => 40 * Math.cos(1.5 * a) ** 2, 0.5);
     await penStroke(fresh.cdp, stroke);
+    const released = Date.now();
     const session = await until(
       () => api(fresh.page, 'session').then((json) => JSON.parse(json)),
       (sess) => sess.ops.at(-1)?.op === 'oversketch',
@@ -448,7 +453,8 @@ test('over-sketch mode: a stroke beyond a shape\'s outline pulls the outline to 
     await frames(fresh.page, 3);
     const after = await screenshot(fresh.page, out('oversketch.png'));
     const px = (img, x, y) => Array.from(img.data.slice((y * img.width + x) * 4, (y * img.width + x) * 4 + 3));
-    const probe = { x: c.x + 170 + 22, y: c.y };
+    // 8 px above the centre line: the red x axis runs along it behind the shape.
+    const probe = { x: c.x + 170 + 22, y: c.y - 8 };
     const [r0] = px(before, probe.x, probe.y);
     const [r1, g1, b1] = px(after, probe.x, probe.y);
     assert.ok(r0 < 100, `outside the original outline is background, got red ${r0}`);
@@ -463,14 +469,70 @@ test('over-sketch mode: a stroke beyond a shape\'s outline pulls the outline to 
   }
 });
 
+test('manual over-sketch (K): pick an outline piece, redraw it; pick a curve on the surface, move it; undo restores', async () => {
+  const fresh = await openApp(browser, url, gpu);
+  try {
+    const c = ELLIPSE.c;
+    await penStroke(fresh.cdp, onEllipse());
+    const created = await until(() => api(fresh.page, 'stats'), (s) => s.models === 1, 15_000);
+    assert.equal(created.models, 1, 'the outline made a shape');
+    await fresh.page.keyboard.press('k');
+    await frames(fresh.page, 3);
+    const before = await screenshot(fresh.page, out('manual-before.png'));
+    const lastOp = () => api(fresh.page, 'session').then((json) => JSON.parse(json).ops.at(-1) ?? {});
+    // Pick: along the outline from -40 to +40 degrees. Nothing changes yet.
+    await penStroke(fresh.cdp, onEllipse(-0.7, 0.7, 30, () => 0, 0.5));
+    await frames(fresh.page, 3);
+    assert.equal((await lastOp()).op, 'create', 'picking is not an op');
+    const picked = await screenshot(fresh.page, out('manual-picked.png'));
+    // The picked piece is highlighted green on the outline.
+    const px = (img, x, y) => Array.from(img.data.slice((y * img.width + x) * 4, (y * img.width + x) * 4 + 3));
+    const [hr, hg, hb] = px(picked, c.x + ELLIPSE.rx, c.y);
+    assert.ok(hg > 150 && hg > hr + 40 && hg > hb, `the picked piece is shown green, got rgb(${hr}, ${hg}, ${hb})`);
+    // Its new shape: 35 px out in the middle.
+    await penStroke(fresh.cdp, onEllipse(-0.7, 0.7, 30, (a) => 35 * Math.cos((Math.PI / 1.4) * a) ** 2, 0.5));
+    const op = await until(lastOp, (o) => o.op === 'oversketch', 10_000);
+    assert.ok(op.handle?.silhouette, `the op carries the picked outline: ${JSON.stringify(op.handle)}`);
+    await frames(fresh.page, 3);
+    const moved = await screenshot(fresh.page, out('manual-outline.png'));
+    const probe = { x: c.x + ELLIPSE.rx + 20, y: c.y - 8 };
+    const [r0] = px(before, probe.x, probe.y);
+    const [r1, g1, b1] = px(moved, probe.x, probe.y);
+    assert.ok(r0 < 100, `outside the original outline is background, got red ${r0}`);
+    assert.ok(r1 > 120 && r1 >= b1, `the picked outline moved out: clay at ${probe.x}, got rgb(${r1}, ${g1}, ${b1})`);
+    // A curve across the front, then its new place 25 px higher.
+    const positions = () => fresh.page.evaluate(() => Array.from(window.sketchmesh.exportGlb()));
+    const beforeLift = await positions();
+    const across = line({ x: c.x - 80, y: c.y + 10 }, { x: c.x + 80, y: c.y + 10 }, 30);
+    await penStroke(fresh.cdp, across);
+    await frames(fresh.page, 2);
+    await penStroke(fresh.cdp, across.map((p) => ({ ...p, y: p.y - 25 })));
+    const surface = await until(lastOp, (o) => o.op === 'oversketch' && o.handle?.surface, 10_000);
+    assert.ok(surface.handle?.surface, 'the second pick is a curve on the surface');
+    await frames(fresh.page, 3);
+    const lifted = await screenshot(fresh.page, out('manual-surface.png'));
+    // The surface slides along itself under the camera, so the shading changes only a little.
+    const shading = imageChangedFraction(moved, lifted, 12);
+    console.log(`    moving the surface curve changed ${(100 * shading).toFixed(2)}% of the pixels`);
+    assert.ok(shading > 0.0005, 'moving the surface curve changed the shading');
+    assert.notDeepEqual(await positions(), beforeLift, 'and the exported mesh');
+    assert.deepEqual(await api(fresh.page, 'stats'), created, 'same vertices and triangles, only moved');
+    await fresh.page.keyboard.press('Control+z');
+    await fresh.page.keyboard.press('Control+z');
+    await frames(fresh.page, 3);
+    const undone = await screenshot(fresh.page, out('manual-undone.png'));
+    assert.ok(imageChangedFraction(before, undone) < 0.01, 'two undos restore the shape');
+    assert.deepEqual(fresh.errors, [], 'console errors while over-sketching by hand');
+  } finally {
+    await fresh.context.close();
+  }
+});
+
 test('curve tools with the pen: pull (live preview), add a curve, make it sharp, rub, erase; undo restores', async () => {
   const fresh = await openApp(browser, url, gpu);
   try {
-    const c = { x: 640, y: 400 };
-    const outline = Array.from({ length: 61 }, (_, i) => {
-      const a = (2 * Math.PI * i) / 60;
-      return { x: c.x + 170 * Math.cos(a), y: c.y + 120 * Math.sin(a), force: 0.6 };
-    });
+    const c = ELLIPSE.c;
+    const outline = onEllipse();
     await penStroke(fresh.cdp, outline);
     const lastOp = () => api(fresh.page, 'session').then((json) => JSON.parse(json).ops.at(-1) ?? {});
     const waitOp = async (name, ms = 15_000) => {

@@ -306,6 +306,11 @@ impl SketchApp {
         if pressed(Key::G) {
             self.options.grid = !self.options.grid;
         }
+        if pressed(Key::K) {
+            let settings = self.tools.oversketch_settings_mut();
+            settings.manual = !settings.manual;
+            self.set_mode(Mode::Oversketch, now);
+        }
         if pressed(Key::H) || pressed(Key::F1) {
             self.show_help = !self.show_help;
         }

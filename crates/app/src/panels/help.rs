@@ -14,6 +14,10 @@ const SHORTCUTS: &[(&str, &str)] = &[
     ("T", "Switch control curves sharp/smooth"),
     ("U", "Rub: smooth a control curve"),
     ("O", "Over-sketch: a stroke near an outline redraws it"),
+    (
+        "K",
+        "Over-sketch: pick the handle first (outline piece or surface curve)",
+    ),
     ("W", "Wireframe on/off"),
     ("G", "Grid on/off"),
     ("H, F1", "This help"),

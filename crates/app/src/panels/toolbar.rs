@@ -86,26 +86,6 @@ pub fn toolbar_ui(
                 picked_mode = Some(m);
             }
         }
-        if mode == Mode::Oversketch {
-            let hint = "On: pick what moves first (draw along an outline, or across the \
-                        model), then draw its new shape. Off: the stroke finds the outline";
-            ui.toggle_value(&mut oversketch.manual, "Pick handle")
-                .on_hover_text(hint);
-            let mut exact = oversketch.fit == OversketchFit::Exact;
-            let hint = "On: the outline lands on the stroke. Off: it follows the stroke as far \
-                        as the surface detail allows, so a rough stroke bends the shape less";
-            if ui
-                .toggle_value(&mut exact, "Exact fit")
-                .on_hover_text(hint)
-                .changed()
-            {
-                oversketch.fit = if exact {
-                    OversketchFit::Exact
-                } else {
-                    OversketchFit::Soft
-                };
-            }
-        }
         ui.separator();
         button(ui, true, "Frame", "Frame everything (F)", Action::FrameAll);
         button(
@@ -121,7 +101,14 @@ pub fn toolbar_ui(
             .on_hover_text("Show the ground grid (G)");
         ui.toggle_value(show_help, "Help")
             .on_hover_text("Shortcuts and gestures (H)");
-        ui.separator();
+    });
+    // The second row, always there so that the viewport keeps its size whatever the mode:
+    // the mode's options, the document's size, the latest message.
+    ui.horizontal_wrapped(|ui| {
+        if mode == Mode::Oversketch {
+            oversketch_options_ui(ui, oversketch);
+            ui.separator();
+        }
         let stats = editor.document().stats();
         ui.label(format!(
             "{} models · {} vertices · {} triangles · {} curves",
@@ -133,4 +120,26 @@ pub fn toolbar_ui(
         }
     });
     action.or(picked_mode.map(Action::Mode))
+}
+
+/// The over-sketch mode's switches: manual handle picking and the fit.
+fn oversketch_options_ui(ui: &mut egui::Ui, settings: &mut OversketchSettings) {
+    let hint = "On: pick what moves first (draw along an outline, or across the model), then \
+                draw its new shape. Off: the stroke finds the outline (K)";
+    ui.toggle_value(&mut settings.manual, "Pick handle")
+        .on_hover_text(hint);
+    let mut exact = settings.fit == OversketchFit::Exact;
+    let hint = "On: the outline lands on the stroke. Off: it follows the stroke as far as the \
+                surface detail allows, so a rough stroke bends the shape less";
+    if ui
+        .toggle_value(&mut exact, "Exact fit")
+        .on_hover_text(hint)
+        .changed()
+    {
+        settings.fit = if exact {
+            OversketchFit::Exact
+        } else {
+            OversketchFit::Soft
+        };
+    }
 }

@@ -6,9 +6,10 @@
 //! when core would refuse it.
 //!
 //! In manual mode (the toolbar's "Pick handle") the first stroke picks the handle instead
-//! ([`pick_handle`]): along an outline, that outline's piece, whose ends can then be dragged
-//! to crop it; over the model elsewhere, a curve on the surface. The next stroke is its new
-//! shape. Orbiting or zooming drops the pick, since it is kept in screen points.
+//! ([`pick_handle`]): along an outline, that outline's piece; over the model elsewhere, a
+//! curve on the surface. A stroke from an end of a picked piece along the outline moves that
+//! end (a crop); any other stroke is the handle's new shape. The crop is decided when the
+//! stroke ends, since a new shape also starts at an end but leaves the outline. Orbiting or zooming drops the pick, since it is kept in screen points.
 
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
@@ -17,13 +18,14 @@ use sketchmesh_core::oversketch::{
     ManualHandle, manual_handle_preview, pick_handle, preview_handle,
 };
 
-use super::draw::{DrawTool, point};
+use super::draw::DrawTool;
 use super::{ToolEvent, ToolOutput, ViewCtx};
 
 /// Samples between two previews: matching runs on whole silhouettes, so not on every sample.
 const PREVIEW_EVERY: usize = 8;
 
-/// A press this close (points) to an end of a picked outline piece drags that end.
+/// A stroke starting this close (points) to an end of a picked outline piece and running
+/// along the outline moves that end (a crop).
 const END_GRAB_PX: f64 = 16.0;
 
 /// The silhouette piece a stroke would replace, in viewport-relative points.
@@ -52,8 +54,6 @@ struct Picked {
     handle: ManualHandle,
     camera: Camera,
     viewport: DVec2,
-    /// Which end of an outline piece is being dragged: `true` for `to`, `false` for `from`.
-    dragging: Option<bool>,
 }
 
 /// The over-sketch tool's state: the stroke being drawn, the current match or pick, and
@@ -103,21 +103,23 @@ impl OversketchTool {
             self.picked = None;
             self.handle = None;
         }
-        if self.drag_end(event, view, doc) {
-            return ToolOutput::None;
-        }
         let Some(input) = self.stroke.capture(event, view) else {
             return ToolOutput::None;
         };
-        if let Some(picked) = self.picked.take() {
-            self.handle = None;
-            return self.commit(input, Some(picked.handle));
-        }
         let stroke: Vec<DVec2> = input
             .stroke
             .iter()
             .map(|p| DVec2::new(p[0], p[1]))
             .collect();
+        if let Some(picked) = self.picked.take() {
+            if let Some(cropped) = self.cropped(&picked, &stroke, doc) {
+                self.picked = Some(cropped);
+                self.handle = self.picked_preview(doc);
+                return ToolOutput::None;
+            }
+            self.handle = None;
+            return self.commit(input, Some(picked.handle));
+        }
         let picked = doc
             .models
             .iter()
@@ -131,56 +133,39 @@ impl OversketchTool {
             handle,
             camera: input.camera,
             viewport,
-            dragging: None,
         });
         self.handle = self.picked_preview(doc);
         ToolOutput::None
     }
 
-    /// Drags an end of a picked outline piece; whether the event was used for that.
-    fn drag_end(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> bool {
-        let ends = self
-            .handle
-            .as_ref()
-            .filter(|h| h.croppable)
-            .and_then(|h| h.points.first().zip(h.points.last()))
-            .map(|(&first, &last)| [first, last]);
-        let Some(picked) = self.picked.as_mut() else {
-            return false;
+    /// The pick with one end moved, when `stroke` starts at an end of a picked outline piece
+    /// and runs along the outline (a crop); `None` when it is the piece's new shape.
+    fn cropped(&self, picked: &Picked, stroke: &[DVec2], doc: &Document) -> Option<Picked> {
+        let ManualHandle::Silhouette { from, via, to } = picked.handle else {
+            return None;
         };
-        match (event, picked.dragging) {
-            (ToolEvent::Begin(s), None) => {
-                let at = point(s, view).pos;
-                let Some([first, last]) = ends else {
-                    return false;
-                };
-                let (to_first, to_last) = (at.distance(first), at.distance(last));
-                if to_first.min(to_last) > END_GRAB_PX {
-                    return false;
-                }
-                picked.dragging = Some(to_last < to_first);
-                true
-            }
-            (ToolEvent::Move(s) | ToolEvent::End(s), Some(is_to)) => {
-                let at = point(s, view).pos;
-                if let ManualHandle::Silhouette { from, to, .. } = &mut picked.handle {
-                    *(if is_to { to } else { from }) = at;
-                }
-                let is_end = matches!(event, ToolEvent::End(_));
-                if is_end {
-                    picked.dragging = None;
-                }
-                if is_end || self.preview_is_due() {
-                    self.handle = self.picked_preview(doc).or(self.handle.take());
-                }
-                true
-            }
-            (ToolEvent::Cancel, Some(_)) => {
-                picked.dragging = None;
-                true
-            }
-            _ => false,
+        let shown = &self.handle.as_ref()?.points;
+        let (&first, &last) = shown.first().zip(shown.last())?;
+        let (&start, &end) = stroke.first().zip(stroke.last())?;
+        let (to_first, to_last) = (start.distance(first), start.distance(last));
+        if to_first.min(to_last) > END_GRAB_PX {
+            return None;
         }
+        let is_along = doc.models.iter().any(|model| {
+            matches!(
+                pick_handle(&model.mesh, &picked.camera, picked.viewport, stroke),
+                Some(ManualHandle::Silhouette { .. })
+            )
+        });
+        let handle = if to_last < to_first {
+            ManualHandle::Silhouette { from, via, to: end }
+        } else {
+            ManualHandle::Silhouette { from: end, via, to }
+        };
+        is_along.then(|| Picked {
+            handle,
+            ..picked.clone()
+        })
     }
 
     /// Whether enough samples passed since the last preview.
@@ -237,7 +222,7 @@ impl OversketchTool {
         Some(match (&self.picked, &self.handle) {
             (None, _) => "Draw along an outline, or across the model, to pick what moves",
             (Some(_), Some(h)) if h.croppable => {
-                "Drag the dots to crop it, then draw its new shape"
+                "Draw along the outline from a dot to crop it, or draw its new shape"
             }
             (Some(_), _) => "Now draw its new position",
         })
@@ -411,7 +396,7 @@ mod tests {
     }
 
     #[test]
-    fn a_picked_outline_piece_is_cropped_by_dragging_its_end_and_dropped_by_orbiting() {
+    fn a_picked_outline_piece_is_cropped_from_its_end_and_dropped_by_orbiting() {
         let (view, doc, radius) = sphere_view();
         let mut tool = OversketchTool::default();
         tool.settings_mut().manual = true;
@@ -424,7 +409,7 @@ mod tests {
         assert!(picked.croppable);
         // Silhouette points are the outline's edge crossings, about 8 px apart here.
         assert!(picked.points.last().unwrap().distance(along[40]) < 10.0);
-        // Drag the end at +30° back to +10°: no op, a shorter piece.
+        // From the end at +30° back along the outline to +10°: a crop, no op.
         let crop = arc(radius, 30.0, 10.0);
         assert_eq!(
             stroke_through(&mut tool, &view, &doc, &crop),

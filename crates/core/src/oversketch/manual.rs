@@ -27,9 +27,13 @@ use crate::deform::{HandleFit, HandlePoint};
 use crate::geometry::Bvh;
 use crate::mesh::Mesh;
 
-/// A pick stroke whose points all lie this close (px) to one silhouette picks that
-/// silhouette; a `via` point this close to a silhouette finds it again.
-pub const PICK_DISTANCE_PX: f64 = 8.0;
+/// A pick stroke whose ends and [`PICK_SHARE`] of its points lie this close (px) to one
+/// silhouette picks that silhouette; a `via` point this close to a silhouette finds it again.
+pub const PICK_DISTANCE_PX: f64 = 12.0;
+
+/// The share of a pick stroke's points that must lie near a silhouette: people trace an
+/// outline roughly, leaving it here and there.
+pub const PICK_SHARE: f64 = 0.8;
 
 /// Spacing (px) of the points of a curve drawn on the surface: wider than the stroke's
 /// samples so that neighbouring constraints rarely share a triangle.
@@ -56,9 +60,10 @@ pub enum ManualHandle {
     },
 }
 
-/// The handle a pick stroke selects: a silhouette piece when every point of the stroke lies
-/// within [`PICK_DISTANCE_PX`] of one visible silhouette, else a curve on the surface when at
-/// least two of its points hit the mesh. `None` otherwise.
+/// The handle a pick stroke selects: a silhouette piece when the stroke's ends and
+/// [`PICK_SHARE`] of its points lie within [`PICK_DISTANCE_PX`] of one visible silhouette,
+/// else a curve on the surface when at least two of its points hit the mesh. `None`
+/// otherwise.
 pub fn pick_handle(
     mesh: &Mesh,
     camera: &Camera,
@@ -68,12 +73,15 @@ pub fn pick_handle(
     let stroke = simplify_stroke(stroke);
     let (&from, &to) = (stroke.first()?, stroke.last()?);
     let (_, polylines) = seen_silhouettes(mesh, camera, viewport);
+    let samples = resample(&stroke, 2.0);
     let follows = |polyline: &Vec<DVec2>| {
+        if polyline.len() < 2 {
+            return false;
+        }
         let cumulative = cumulative_lengths(polyline);
-        polyline.len() >= 2
-            && resample(&stroke, 2.0)
-                .iter()
-                .all(|&p| distance_to(polyline, &cumulative, p).1 <= PICK_DISTANCE_PX)
+        let is_near = |p: DVec2| distance_to(polyline, &cumulative, p).1 <= PICK_DISTANCE_PX;
+        let near = samples.iter().filter(|&&p| is_near(p)).count();
+        is_near(from) && is_near(to) && near as f64 >= PICK_SHARE * samples.len() as f64
     };
     if from.distance(to) > 0.0 && polylines.iter().any(follows) {
         let via = stroke_midpoint(&stroke);

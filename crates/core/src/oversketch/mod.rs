@@ -33,7 +33,7 @@ mod turning;
 
 pub use bend::{BLEND_GAP_PX, ROI_FACTOR};
 pub use manual::{
-    ManualHandle, PICK_DISTANCE_PX, SURFACE_HANDLE_SPACING_PX, manual_handle_preview,
+    ManualHandle, PICK_DISTANCE_PX, PICK_SHARE, SURFACE_HANDLE_SPACING_PX, manual_handle_preview,
     oversketch_manual, pick_handle,
 };
 pub use mapping::{BLEND_WIDTH, blend_ends, blend_weight, map_point_to_stroke, map_to_stroke};

@@ -464,16 +464,10 @@ impl SketchApp {
     }
 
     /// Highlights the silhouette piece an over-sketch stroke would replace, or the picked
-    /// handle with its draggable ends, and says what to do next.
+    /// handle with its ends marked, and says what to do next.
     fn handle_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
         if let Some(hint) = self.tools.hint() {
-            ui.painter().text(
-                viewport.center_top() + egui::vec2(0.0, 28.0),
-                egui::Align2::CENTER_CENTER,
-                hint,
-                egui::FontId::proportional(16.0),
-                egui::Color32::from_white_alpha(200),
-            );
+            hint_ui(ui, viewport, hint);
         }
         let Some(handle) = self.tools.handle() else {
             return;
@@ -503,18 +497,23 @@ impl SketchApp {
         if let Some((points, what)) = self.tools.waiting() {
             // A stroke waiting for its confirming tap: shown dimmer, with what a tap does.
             stroke_ui(ui, viewport, points, egui::Color32::from_rgb(120, 200, 255));
-            ui.painter().text(
-                viewport.center_top() + egui::vec2(0.0, 28.0),
-                egui::Align2::CENTER_CENTER,
-                what,
-                egui::FontId::proportional(16.0),
-                egui::Color32::from_white_alpha(200),
-            );
+            hint_ui(ui, viewport, what);
         }
         if let Some(raw) = self.stroke_preview() {
             stroke_ui(ui, viewport, raw, egui::Color32::from_rgb(242, 199, 82));
         }
     }
+}
+
+/// What the active tool asks for next, centred at the top of the viewport.
+fn hint_ui(ui: &egui::Ui, viewport: egui::Rect, text: &str) {
+    ui.painter().text(
+        viewport.center_top() + egui::vec2(0.0, 28.0),
+        egui::Align2::CENTER_CENTER,
+        text,
+        egui::FontId::proportional(16.0),
+        egui::Color32::from_white_alpha(200),
+    );
 }
 
 /// Draws a stroke, smoothed as it will be stored, with pressure widths.

@@ -26,6 +26,7 @@
 
 use glam::{DVec2, DVec3};
 
+use super::polyline::cumulative_lengths;
 use super::{BLEND_WIDTH, OversketchError, blend_weight, map_to_stroke, roi_from_displacements};
 use crate::camera::Camera;
 use crate::deform::{DeformError, EditParams, HandleFit, HandlePoint, LaplacianEdit};
@@ -194,14 +195,8 @@ pub const BLEND_GAP_PX: f64 = 10.0;
 /// width at each end scaled by that end's gap (px) between the handle and the stroke: a
 /// stroke that starts on the outline needs no blend there and is followed all the way.
 fn blend_weights(handle: &[DVec2], gaps: [f64; 2]) -> Vec<f64> {
-    let mut cumulative = Vec::with_capacity(handle.len());
-    let mut total = 0.0;
-    for (i, p) in handle.iter().enumerate() {
-        if i > 0 {
-            total += p.distance(handle[i - 1]);
-        }
-        cumulative.push(total);
-    }
+    let cumulative = cumulative_lengths(handle);
+    let total = cumulative.last().copied().unwrap_or(0.0);
     let [start_width, end_width] = gaps.map(|gap| BLEND_WIDTH * (gap / BLEND_GAP_PX).min(1.0));
     let last = (handle.len().max(2) - 1) as f64;
     cumulative

@@ -14,7 +14,7 @@
 
 use glam::{DVec2, DVec3};
 
-use super::visibility::{MARGIN_EDGES, OFFSET_EDGES};
+use super::visibility::{MARGIN_EDGES, OFFSET_EDGES, ray_origin};
 use crate::camera::Camera;
 use crate::geometry::{Bvh, face_normals};
 use crate::mesh::{FaceId, HalfedgeId, Mesh};
@@ -76,14 +76,12 @@ fn faces_viewer(mesh: &Mesh, camera: &Camera, normal: DVec3, f: FaceId) -> bool 
 fn is_seen(mesh: &Mesh, bvh: &Bvh, camera: &Camera, a: DVec3, b: DVec3, outward: DVec3) -> bool {
     let length = a.distance(b);
     let target = 0.5 * (a + b) + OFFSET_EDGES * length * outward;
-    let from = match camera.ortho_height {
-        Some(_) => {
-            let forward = camera.forward();
-            target - forward * (target - camera.eye).dot(forward)
-        }
-        None => camera.eye,
-    };
-    !bvh.occluded(mesh, from, target, MARGIN_EDGES * length)
+    !bvh.occluded(
+        mesh,
+        ray_origin(camera, target),
+        target,
+        MARGIN_EDGES * length,
+    )
 }
 
 #[cfg(test)]

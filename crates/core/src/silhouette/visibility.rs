@@ -44,14 +44,24 @@ pub(super) fn is_visible(
         .lerp(normals[b.index()], point.t)
         .normalize_or_zero();
     let target = point.world + OFFSET_EDGES * edge_length * normal;
-    let from = match camera.ortho_height {
+    !bvh.occluded(
+        mesh,
+        ray_origin(camera, target),
+        target,
+        MARGIN_EDGES * edge_length,
+    )
+}
+
+/// Where the sight line to `target` starts: the eye, or for an orthographic camera the
+/// target's foot on the plane through the eye facing the view direction.
+pub(super) fn ray_origin(camera: &Camera, target: DVec3) -> DVec3 {
+    match camera.ortho_height {
         Some(_) => {
             let forward = camera.forward();
             target - forward * (target - camera.eye).dot(forward)
         }
         None => camera.eye,
-    };
-    !bvh.occluded(mesh, from, target, MARGIN_EDGES * edge_length)
+    }
 }
 
 /// Flips every flag whose two neighbours both disagree with it: a single ray that grazes a

@@ -110,13 +110,14 @@ impl LaplacianEdit {
         for &(local, _) in &split.fixed {
             fixed[local] = true;
         }
-        let mut solver = Prefactored::new(&triplets.build(), &fixed)?;
         let (exact_handles, exact_rows): (Vec<_>, Vec<_>) = split
             .exact
             .into_iter()
             .map(|(h, rest, terms)| ((h, rest), terms))
             .unzip();
-        let exact = ExactConstraints::new(&mut solver, exact_rows).map_err(|err| match err {
+        let constrained: Vec<usize> = exact_rows.iter().flatten().map(|&(j, _)| j).collect();
+        let solver = Prefactored::with_last(&triplets.build(), &fixed, &constrained)?;
+        let exact = ExactConstraints::new(&solver, exact_rows).map_err(|err| match err {
             SolveError::Singular => DeformError::DependentHandles,
             other => DeformError::Solve(other),
         })?;
@@ -176,12 +177,13 @@ impl LaplacianEdit {
         for &(local, _) in &self.fixed_handles {
             self.fixed_values[local] = DVec3::ONE;
         }
-        self.solver.solve(
+        let (exact, fixed_values) = (&mut self.exact, &self.fixed_values);
+        self.solver.solve_with(
             &self.rhs[..n_rows + self.soft_rows.len()],
-            &self.fixed_values,
+            fixed_values,
             &mut self.displacement,
+            |u| exact.correct(u, fixed_values, |_| DVec3::ONE),
         )?;
-        self.exact.project(|_| DVec3::ONE, &mut self.displacement);
         let reach = self.displacement[..n_rows]
             .iter()
             .map(|d| d.x.clamp(0.0, 1.0));
@@ -267,19 +269,19 @@ impl LaplacianEdit {
             }
         }
         let n_equations = n_rows + self.soft_rows.len();
-        self.solver.solve(
+        let (exact, exact_handles) = (&mut self.exact, &self.exact_handles);
+        let fixed_values = &self.fixed_values;
+        self.solver.solve_with(
             &self.rhs[..n_equations],
-            &self.fixed_values,
+            fixed_values,
             &mut self.displacement,
-        )?;
-        let exact_handles = &self.exact_handles;
-        self.exact.project(
-            |m| {
-                let (h, rest) = exact_handles[m];
-                targets[h] - rest
+            |u| {
+                exact.correct(u, fixed_values, |m| {
+                    let (h, rest) = exact_handles[m];
+                    targets[h] - rest
+                })
             },
-            &mut self.displacement,
-        );
+        )?;
         debug_assert_eq!(self.exact.len(), self.exact_handles.len());
         Ok(())
     }

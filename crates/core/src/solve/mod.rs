@@ -7,6 +7,7 @@
 //! Cholesky; see [`prefactored`](Prefactored) for the method and its limits.
 
 mod normal;
+mod ordering;
 mod prefactored;
 mod singular;
 mod sparse;

@@ -4,8 +4,16 @@
 //! `min_quad_with_fixed`, pmp's `cholesky_solve` with `is_constrained`). Splitting the columns
 //! of `A` into free and fixed blocks, `A x = A_f x_f + A_c x_c`, the minimiser solves the normal
 //! equations `(A_fᵀ A_f) x_f = A_fᵀ (b - A_c x_c)`. The normal matrix is factored once with
-//! faer's sparse `LLᵀ` after AMD ordering; each solve is then two triangular solves, with x, y
-//! and z as three columns of one right-hand side.
+//! faer's supernodal sparse `LLᵀ` after AMD ordering; each solve is then two triangular
+//! solves, with x, y and z as three columns of one right-hand side.
+//!
+//! The two triangular solves are kept apart, with a hook between them
+//! ([`Prefactored::solve_with`]), and some unknowns can be ordered last
+//! ([`Prefactored::with_last`]): together they make hard equality constraints on those
+//! unknowns cheap (see `deform`'s exact handles), because `L⁻¹` applied to a vector that is
+//! zero outside the last rows is zero outside them too ([`Prefactored::forward_sparse_columns`]
+//! only touches the trailing supernodes of a supernodal factor; a simplicial one, which faer
+//! picks for small or very sparse systems, is solved whole).
 //!
 //! faer's `SymbolicLlt`/`Llt` wrappers allocate their scratch on every call. To keep a drag
 //! frame allocation-free we hold their building blocks instead: the
@@ -18,12 +26,24 @@
 
 use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
 use faer::linalg::cholesky::llt::factor::LltRegularization;
-use faer::sparse::linalg::cholesky::{LltRef, SymbolicCholesky, factorize_symbolic_cholesky};
-use faer::{Conj, Mat, MatMut, Par, Side};
+use faer::linalg::matmul::matmul;
+use faer::linalg::triangular_solve::solve_lower_triangular_in_place;
+use faer::perm::PermRef;
+use faer::sparse::SparseColMatRef;
+use faer::sparse::linalg::cholesky::supernodal::SupernodalLltRef;
+use faer::sparse::linalg::cholesky::{
+    SymbolicCholesky, SymbolicCholeskyRaw, SymmetricOrdering, factorize_symbolic_cholesky,
+};
+use faer::sparse::linalg::triangular_solve::{
+    solve_lower_triangular_in_place as sparse_lower_solve,
+    solve_lower_triangular_transpose_in_place as sparse_lower_transpose_solve,
+};
+use faer::{Accum, Conj, Mat, MatMut, Par, Side};
 use glam::DVec3;
 
 use super::SolveError;
 use super::normal::NormalSystem;
+use super::ordering::amd_with_last;
 use super::singular::is_numerically_singular;
 use super::sparse::SparseMatrix;
 
@@ -39,10 +59,13 @@ pub struct Prefactored {
     l_values: Vec<f64>,
     /// Spare values buffer: a refactor fills it and swaps it in only on success.
     l_values_next: Vec<f64>,
+    /// Position of each free unknown in the factor's (permuted) order.
+    position: Vec<u32>,
     factor_memory: MemBuffer,
     solve_memory: MemBuffer,
     residual: Vec<DVec3>,
     residual_scalar: Vec<f64>,
+    /// Right-hand sides, then solutions, in the factor's order.
     rhs: Mat<f64>,
 }
 
@@ -66,16 +89,45 @@ impl Prefactored {
     /// [`SolveError::NotPositiveDefinite`] or [`SolveError::Singular`] when the free unknowns
     /// are not all determined (for example a Laplacian with nothing fixed).
     pub fn new(a: &SparseMatrix, fixed: &[bool]) -> Result<Prefactored, SolveError> {
+        Prefactored::with_last(a, fixed, &[])
+    }
+
+    /// [`Prefactored::new`], with the free unknowns in `last` eliminated after all others
+    /// (the rest in AMD order), so that [`Prefactored::forward_sparse_columns`] is cheap for
+    /// columns on them. Fixed unknowns in `last` are ignored.
+    ///
+    /// Errors: those of [`Prefactored::new`].
+    pub(crate) fn with_last(
+        a: &SparseMatrix,
+        fixed: &[bool],
+        last: &[usize],
+    ) -> Result<Prefactored, SolveError> {
         check_len("fixed", a.ncols(), fixed.len())?;
         check_finite(a)?;
         let system = NormalSystem::new(a, fixed);
+        let last_free: Vec<usize> = last.iter().filter_map(|&j| system.free_index(j)).collect();
+        let custom = if last_free.is_empty() {
+            None
+        } else {
+            Some(amd_with_last(system.normal().symbolic(), &last_free)?)
+        };
+        let ordering = match &custom {
+            Some((fwd, inv)) => {
+                SymmetricOrdering::Custom(PermRef::new_checked(fwd, inv, system.n_free()))
+            }
+            None => SymmetricOrdering::Amd,
+        };
         let symbolic = factorize_symbolic_cholesky(
             system.normal().symbolic(),
             Side::Lower,
-            Default::default(),
+            ordering,
             Default::default(),
         )
         .map_err(|err| SolveError::Factorization(format!("{err:?}")))?;
+        let position = match symbolic.perm() {
+            Some(perm) => perm.arrays().1.to_vec(),
+            None => (0..system.n_free() as u32).collect(),
+        };
         let factor_req =
             symbolic.factorize_numeric_llt_scratch::<f64>(Par::Seq, Default::default());
         let solve_req = symbolic.solve_in_place_scratch::<f64>(3, Par::Seq);
@@ -87,6 +139,7 @@ impl Prefactored {
             l_values_next: vec![0.0; symbolic.len_val()],
             symbolic,
             system,
+            position,
             factor_memory: try_memory(factor_req)?,
             solve_memory: try_memory(solve_req)?,
             residual: vec![DVec3::ZERO; a.nrows()],
@@ -151,6 +204,22 @@ impl Prefactored {
         fixed_values: &[DVec3],
         out: &mut [DVec3],
     ) -> Result<(), SolveError> {
+        self.solve_with(rhs, fixed_values, out, |_| {})
+    }
+
+    /// [`Prefactored::solve`] with `between` applied to the intermediate `u = L⁻¹ P r`
+    /// (`n_free × 3`, in the factor's order) before the second triangular solve. With `N =
+    /// Pᵀ L Lᵀ P` the solution is `Pᵀ L⁻ᵀ u`, so changing `u` by `-Y λ`, where `Y = L⁻¹ P Cᵀ`,
+    /// subtracts `N⁻¹ Cᵀ λ`: a correction for constraints `C x = t` without a third solve.
+    ///
+    /// Errors: [`SolveError::DimensionMismatch`] for wrong lengths.
+    pub(crate) fn solve_with(
+        &mut self,
+        rhs: &[DVec3],
+        fixed_values: &[DVec3],
+        out: &mut [DVec3],
+        between: impl FnOnce(MatMut<'_, f64>),
+    ) -> Result<(), SolveError> {
         self.check_lengths(rhs.len(), fixed_values.len(), out.len())?;
         subtract_fixed(&self.a, &self.system, rhs, fixed_values, &mut self.residual);
         for col in 0..self.a.ncols() {
@@ -160,14 +229,18 @@ impl Prefactored {
             let projected = self.a.column(col).fold(DVec3::ZERO, |sum, (row, value)| {
                 sum + value * self.residual[row]
             });
+            let p = self.position[f] as usize;
             for (k, value) in projected.to_array().into_iter().enumerate() {
-                self.rhs[(f, k)] = value;
+                self.rhs[(p, k)] = value;
             }
         }
-        self.triangular_solves(3);
+        self.triangular_solves(3, between);
         for (col, x) in out.iter_mut().enumerate() {
             *x = match self.system.free_index(col) {
-                Some(f) => DVec3::new(self.rhs[(f, 0)], self.rhs[(f, 1)], self.rhs[(f, 2)]),
+                Some(f) => {
+                    let p = self.position[f] as usize;
+                    DVec3::new(self.rhs[(p, 0)], self.rhs[(p, 1)], self.rhs[(p, 2)])
+                }
                 None => fixed_values[col],
             };
         }
@@ -195,61 +268,82 @@ impl Prefactored {
             let Some(f) = self.system.free_index(col) else {
                 continue;
             };
-            self.rhs[(f, 0)] = self
+            self.rhs[(self.position[f] as usize, 0)] = self
                 .a
                 .column(col)
                 .map(|(row, value)| value * self.residual_scalar[row])
                 .sum();
         }
-        self.triangular_solves(1);
+        self.triangular_solves(1, |_| {});
         for (col, x) in out.iter_mut().enumerate() {
             *x = match self.system.free_index(col) {
-                Some(f) => self.rhs[(f, 0)],
+                Some(f) => self.rhs[(self.position[f] as usize, 0)],
                 None => fixed_values[col],
             };
         }
         Ok(())
     }
 
-    /// Solves the normal equations themselves, `(A_fᵀ A_f) Y = R`, for several right-hand
-    /// sides at once: `columns` has one row per unknown (`n`) and any number of columns. On
-    /// input the rows of free unknowns hold `R`; on output they hold `Y`, and the rows of fixed
-    /// unknowns are zero. These are the Green's functions a constrained solve needs (the
-    /// Schur complement of extra equality constraints, as in `deform`'s exact handles).
-    ///
-    /// Unlike [`Prefactored::solve`] this allocates (scratch for all columns), so call it when
+    /// `Y = L⁻¹ P Cᵀ` for sparse columns of `Cᵀ` (each a list of `(unknown, coefficient)`,
+    /// terms on fixed unknowns skipped), with `N = Pᵀ L Lᵀ P`: then `C_f N⁻¹ C_fᵀ = Yᵀ Y` and
+    /// [`Prefactored::solve_with`] can apply `N⁻¹ C_fᵀ` for free. Returns the first row `r0`
+    /// (in the factor's order) where `Y` can be nonzero and rows `r0..` of `Y`: the
+    /// substitution starts at the supernode holding the columns' first unknown, so it costs
+    /// little when they are ordered last ([`Prefactored::with_last`]). Allocates; call it when
     /// setting up, not per frame.
-    ///
-    /// Errors: [`SolveError::DimensionMismatch`] when `columns` does not have `n` rows, and
-    /// [`SolveError::Factorization`] when the scratch memory cannot be reserved.
-    pub fn solve_normal_columns(&mut self, mut columns: MatMut<'_, f64>) -> Result<(), SolveError> {
-        check_len("columns", self.a.ncols(), columns.nrows())?;
-        let n_columns = columns.ncols();
-        let mut free = Mat::<f64>::zeros(self.n_free(), n_columns);
-        // Column by column: both matrices are column-major.
-        for k in 0..n_columns {
-            for col in 0..self.a.ncols() {
-                if let Some(f) = self.system.free_index(col) {
-                    free[(f, k)] = columns[(col, k)];
+    pub(crate) fn forward_sparse_columns(
+        &self,
+        columns: &[Vec<(usize, f64)>],
+    ) -> (usize, Mat<f64>) {
+        let n = self.n_free();
+        let free_position = |j: usize| self.system.free_index(j).map(|f| self.position[f] as usize);
+        let first = columns
+            .iter()
+            .flatten()
+            .filter_map(|&(j, _)| free_position(j))
+            .min()
+            .unwrap_or(n);
+        if first == n {
+            return (n, Mat::zeros(0, columns.len()));
+        }
+        let supernodal = match self.symbolic.raw() {
+            SymbolicCholeskyRaw::Supernodal(supernodal) => supernodal,
+            SymbolicCholeskyRaw::Simplicial(simplicial) => {
+                let mut y = self.scatter_columns(columns, 0);
+                let l = SparseColMatRef::new(simplicial.factor(), &self.l_values[..]);
+                sparse_lower_solve(l, Conj::No, y.as_mut(), Par::Seq);
+                return (0, y);
+            }
+        };
+        let begins = supernodal.supernode_begin();
+        let s0 = begins.partition_point(|&b| b as usize <= first) - 1;
+        let r0 = begins[s0] as usize;
+        let mut y = self.scatter_columns(columns, r0);
+        let llt = SupernodalLltRef::new(supernodal, &self.l_values);
+        let mut update = Mat::<f64>::zeros(0, columns.len());
+        for s in s0..supernodal.n_supernodes() {
+            let node = llt.supernode(s);
+            let block = node.val();
+            let size = block.ncols();
+            let (top, bottom) = block.split_at_row(size);
+            let mut y_top = y.as_mut().subrows_mut(node.start() - r0, size);
+            solve_lower_triangular_in_place(top, y_top.as_mut(), Par::Seq);
+            update.resize_with(bottom.nrows(), columns.len(), |_, _| 0.0);
+            matmul(
+                update.as_mut(),
+                Accum::Replace,
+                bottom,
+                y_top.as_ref(),
+                1.0,
+                Par::Seq,
+            );
+            for m in 0..columns.len() {
+                for (idx, &i) in node.pattern().iter().enumerate() {
+                    y[(i as usize - r0, m)] -= update[(idx, m)];
                 }
             }
         }
-        let mut memory = try_memory(
-            self.symbolic
-                .solve_in_place_scratch::<f64>(n_columns, Par::Seq),
-        )?;
-        LltRef::new(&self.symbolic, &self.l_values).solve_in_place_with_conj(
-            Conj::No,
-            free.as_mut(),
-            Par::Seq,
-            MemStack::new(&mut memory),
-        );
-        for k in 0..n_columns {
-            for col in 0..self.a.ncols() {
-                columns[(col, k)] = self.system.free_index(col).map_or(0.0, |f| free[(f, k)]);
-            }
-        }
-        Ok(())
+        (r0, y)
     }
 
     fn check_lengths(&self, n_rhs: usize, n_fixed: usize, n_out: usize) -> Result<(), SolveError> {
@@ -258,16 +352,47 @@ impl Prefactored {
         check_len("out", self.a.ncols(), n_out)
     }
 
-    /// Solves `N x = rhs` in place for the first `n_columns` columns of `self.rhs`.
-    fn triangular_solves(&mut self, n_columns: usize) {
-        let llt = LltRef::new(&self.symbolic, &self.l_values);
+    /// Position in the factor's order of unknown `j`, or `None` when it is fixed.
+    fn free_position(&self, j: usize) -> Option<usize> {
+        self.system.free_index(j).map(|f| self.position[f] as usize)
+    }
+
+    /// Sparse columns (terms on fixed unknowns skipped) as a dense matrix in the factor's
+    /// order, from row `r0` on.
+    fn scatter_columns(&self, columns: &[Vec<(usize, f64)>], r0: usize) -> Mat<f64> {
+        let mut y = Mat::<f64>::zeros(self.n_free() - r0, columns.len());
+        for (m, column) in columns.iter().enumerate() {
+            for &(j, c) in column {
+                if let Some(p) = self.free_position(j) {
+                    y[(p - r0, m)] += c;
+                }
+            }
+        }
+        y
+    }
+
+    /// Solves `N x = rhs` in place for the first `n_columns` columns of `self.rhs` (in the
+    /// factor's order), calling `between` after the forward substitution.
+    fn triangular_solves(&mut self, n_columns: usize, between: impl FnOnce(MatMut<'_, f64>)) {
+        if self.n_free() == 0 {
+            return;
+        }
         let stack = MemStack::new(&mut self.solve_memory);
-        llt.solve_in_place_with_conj(
-            Conj::No,
-            self.rhs.as_mut().subcols_mut(0, n_columns),
-            Par::Seq,
-            stack,
-        );
+        let mut x = self.rhs.as_mut().subcols_mut(0, n_columns);
+        match self.symbolic.raw() {
+            SymbolicCholeskyRaw::Supernodal(supernodal) => {
+                let llt = SupernodalLltRef::new(supernodal, &self.l_values);
+                llt.l_solve_with_conj(Conj::No, x.as_mut(), Par::Seq, stack);
+                between(x.as_mut());
+                llt.l_transpose_solve_with_conj(Conj::No, x, Par::Seq, stack);
+            }
+            SymbolicCholeskyRaw::Simplicial(simplicial) => {
+                let l = SparseColMatRef::new(simplicial.factor(), &self.l_values[..]);
+                sparse_lower_solve(l, Conj::No, x.as_mut(), Par::Seq);
+                between(x.as_mut());
+                sparse_lower_transpose_solve(l, Conj::No, x, Par::Seq);
+            }
+        }
     }
 
     /// Factors the current normal matrix into `l_values_next`.
@@ -477,7 +602,7 @@ mod tests {
     }
 
     #[test]
-    fn normal_columns_invert_the_normal_matrix() {
+    fn forward_columns_give_the_inverse_normal_matrix() {
         let entries: Vec<(usize, usize, f64)> = (0..30)
             .map(|k| (k * 5 % 19, k * 3 % 11, ((k as f64) * 1.3).cos()))
             .collect();
@@ -485,30 +610,60 @@ mod tests {
         let mut fixed = vec![false; 11];
         fixed[2] = true;
         fixed[7] = true;
-        let mut solver = Prefactored::new(&a, &fixed).unwrap();
         let free: Vec<usize> = (0..11).filter(|&j| !fixed[j]).collect();
         let dense = a.to_dense();
         let normal = |p: usize, q: usize| dense.iter().map(|r| r[p] * r[q]).sum::<f64>();
-        // Each column is a unit vector on a free unknown, plus junk on fixed rows.
-        let mut columns = Mat::<f64>::zeros(11, free.len());
-        for (k, &j) in free.iter().enumerate() {
-            columns[(j, k)] = 1.0;
-            columns[(2, k)] = 5.0;
-        }
-        solver.solve_normal_columns(columns.as_mut()).unwrap();
-        for (k, &j) in free.iter().enumerate() {
-            assert_eq!(columns[(2, k)], 0.0);
-            assert_eq!(columns[(7, k)], 0.0);
-            for &p in &free {
-                let nz: f64 = free.iter().map(|&q| normal(p, q) * columns[(q, k)]).sum();
-                let expected = if p == j { 1.0 } else { 0.0 };
-                assert!((nz - expected).abs() < 1e-12, "(N Y)[{p}, {k}] = {nz}");
+        // Each column is a unit vector on a free unknown, plus a term on a fixed one.
+        let columns: Vec<Vec<(usize, f64)>> =
+            free.iter().map(|&j| vec![(j, 1.0), (2, 5.0)]).collect();
+        for last in [&[][..], &[9, 0, 2]] {
+            let solver = Prefactored::with_last(&a, &fixed, last).unwrap();
+            let (first, y) = solver.forward_sparse_columns(&columns);
+            assert_eq!(first + y.nrows(), free.len());
+            let mut inverse = Mat::<f64>::zeros(free.len(), free.len());
+            matmul(
+                inverse.as_mut(),
+                Accum::Replace,
+                y.transpose(),
+                y.as_ref(),
+                1.0,
+                Par::Seq,
+            );
+            // (Yᵀ Y) = N⁻¹ on the free unknowns: N (Yᵀ Y) = I.
+            for (k, &j) in free.iter().enumerate() {
+                for (pi, &p) in free.iter().enumerate() {
+                    let nz: f64 = free
+                        .iter()
+                        .enumerate()
+                        .map(|(qi, &q)| normal(p, q) * inverse[(qi, k)])
+                        .sum();
+                    let expected = if p == j { 1.0 } else { 0.0 };
+                    assert!((nz - expected).abs() < 1e-12, "(N Yᵀ Y)[{pi}, {k}] = {nz}");
+                }
             }
         }
-        assert!(matches!(
-            solver.solve_normal_columns(Mat::<f64>::zeros(10, 2).as_mut()),
-            Err(SolveError::DimensionMismatch { .. })
-        ));
+    }
+
+    #[test]
+    fn columns_on_the_last_unknowns_skip_the_leading_rows() {
+        // Large enough for faer to choose a supernodal factor.
+        let mesh = primitives::grid(60, 60, 1.0);
+        let fixed = boundary_mask(&mesh);
+        let last = [1830, 1831, 1832, 1833];
+        let columns: Vec<Vec<(usize, f64)>> = last.iter().map(|&j| vec![(j, 1.0)]).collect();
+        let rows = |last: &[usize]| {
+            let solver = Prefactored::with_last(&cotan_laplacian(&mesh), &fixed, last).unwrap();
+            let (first, y) = solver.forward_sparse_columns(&columns);
+            assert_eq!(first + y.nrows(), solver.n_free());
+            y.nrows()
+        };
+        // Four unknowns last: only the trailing supernode (a few dozen rows after faer's
+        // relaxed amalgamation) is touched, against most rows in AMD's order.
+        let (ordered_last, scattered) = (rows(&last), rows(&[]));
+        assert!(
+            3 * ordered_last < scattered,
+            "{ordered_last} vs {scattered} rows"
+        );
     }
 
     #[test]

@@ -6,7 +6,9 @@
 //!
 //! `oversketch_whole` times the whole [`oversketch`] call (BVH, silhouettes, matching,
 //! ROI, factorization and the ARAP edit) on a 40,962-vertex icosphere, with a stroke
-//! pushing a sixth of the outline out by up to 40 px.
+//! pushing a sixth of the outline out by up to 40 px; `oversketch_part` the same on a
+//! 40,962-vertex horned sphere with SEED's part ROI (SDF, mixtures, region growing) against
+//! the default ROI.
 //! Run with `cargo bench -p sketchmesh-core --bench oversketch -- --warm-up-time 1 --measurement-time 3`.
 
 use std::hint::black_box;
@@ -16,7 +18,10 @@ use glam::DVec2;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::geometry::Bvh;
 use sketchmesh_core::mesh::primitives;
-use sketchmesh_core::oversketch::{MatchParams, match_stroke, oversketch};
+use sketchmesh_core::deform::HandleFit;
+use sketchmesh_core::oversketch::{
+    BendOptions, MatchParams, OversketchRoi, match_stroke, oversketch, oversketch_with,
+};
 use sketchmesh_core::silhouette::silhouettes;
 
 const SILHOUETTE_POINTS: usize = 500;
@@ -125,5 +130,31 @@ fn bench_whole(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench_match, bench_whole);
+fn bench_part(c: &mut Criterion) {
+    let viewport = DVec2::new(1000.0, 1000.0);
+    let camera = Camera::default();
+    let mesh = primitives::horned_sphere(6, 1.2, 0.22);
+    let stroke = pushed_outline_stroke(&mesh, viewport, 40.0);
+    let mut group = c.benchmark_group("oversketch_part");
+    group.sample_size(10);
+    for (name, roi) in [
+        ("near_handle", OversketchRoi::NearHandle),
+        ("part", OversketchRoi::Part),
+    ] {
+        let options = BendOptions {
+            fit: HandleFit::Exact,
+            roi,
+        };
+        group.bench_function(name, |b| {
+            b.iter(|| {
+                let result = oversketch_with(&mesh, &camera, viewport, black_box(&stroke), options);
+                assert!(result.is_ok(), "{result:?}");
+                result
+            });
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench_match, bench_whole, bench_part);
 criterion_main!(benches);

@@ -18,12 +18,21 @@ use sketchmesh_core::geometry::{Bvh, cotan_laplacian};
 use sketchmesh_core::io::write_glb;
 use sketchmesh_core::mesh::{Mesh, primitives};
 use sketchmesh_core::oversketch::{
-    ManualHandle, OversketchError, Oversketched, SOFT_FIT_WEIGHT, manual_handle_preview,
-    oversketch, oversketch_manual, oversketch_with, pick_handle, preview_handle,
+    BendOptions, ManualHandle, OversketchError, OversketchRoi, Oversketched, SOFT_FIT_WEIGHT,
+    manual_handle_preview, oversketch, oversketch_manual, oversketch_with, pick_handle,
+    preview_handle,
 };
 use sketchmesh_core::silhouette::{edge_silhouettes, silhouettes};
 
 const VIEWPORT: DVec2 = DVec2::new(1000.0, 1000.0);
+
+/// `fit` with the region near the handle.
+fn near(fit: HandleFit) -> BendOptions {
+    BendOptions {
+        fit,
+        roi: OversketchRoi::NearHandle,
+    }
+}
 
 /// Screen polylines of the visible silhouettes (closed ones repeat their first point).
 fn outlines(mesh: &Mesh, camera: &Camera) -> Vec<Vec<DVec2>> {
@@ -230,6 +239,72 @@ fn capsule_side_and_end_move_onto_the_stroke() {
     assert!(end < 2.0, "end: worst {end}");
 }
 
+/// The largest displacement in `positions` of a vertex of `mesh` farther than `angle` from
+/// the x axis.
+fn largest_move_beyond(mesh: &Mesh, positions: &[DVec3], angle: f64) -> f64 {
+    mesh.positions()
+        .iter()
+        .zip(positions)
+        .filter(|(a, _)| a.angle_between(DVec3::X) > angle)
+        .map(|(a, b)| a.distance(*b))
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn a_part_roi_bends_the_horn_and_leaves_the_body() {
+    let mesh = primitives::horned_sphere(5, 1.2, 0.22);
+    let camera = Camera::default();
+    // The horn's tip pulled far out: spheres as large as that reach into the body.
+    let stroke = pushed_stroke(&longest_outline(&mesh, &camera), DVec2::X, 40, 80.0);
+    let part = BendOptions {
+        fit: HandleFit::Exact,
+        roi: OversketchRoi::Part,
+    };
+    let by_part = oversketch_with(&mesh, &camera, VIEWPORT, &stroke, part).unwrap();
+    let near = oversketch_with(&mesh, &camera, VIEWPORT, &stroke, BendOptions::EXACT).unwrap();
+    let worst_part = worst_middle_distance(&mesh, &by_part.positions, &camera, &stroke);
+    let worst_near = worst_middle_distance(&mesh, &near.positions, &camera, &stroke);
+    // The body: more than 0.8 rad from the axis, where the horn's profile is down to 2e-6.
+    let body_part = largest_move_beyond(&mesh, &by_part.positions, 0.8);
+    let body_near = largest_move_beyond(&mesh, &near.positions, 0.8);
+    eprintln!(
+        "horn: part ROI {} vertices, body moves up to {body_part:.4}, worst {worst_part:.2} px; \
+         near-handle ROI {}, body moves up to {body_near:.4}, worst {worst_near:.2} px",
+        by_part.roi_size, near.roi_size
+    );
+    assert_outside_unmoved(&mesh, &by_part);
+    // Measured 0.0051 against 0.0267 (the part's border lies a little past 0.8 rad).
+    assert!(body_part < 0.3 * body_near, "{body_part} vs {body_near}");
+    // Measured 7.98 against 9.63 px: a tip pulled this far does not land within 2 px with
+    // either region (the horn's stretched triangles), but the part does no worse.
+    assert!(
+        worst_part < worst_near + 0.5,
+        "{worst_part} vs {worst_near}"
+    );
+    // The whole horn may bend: the part reaches its base.
+    let horn = mesh
+        .positions()
+        .iter()
+        .filter(|p| p.angle_between(DVec3::X) < 0.4)
+        .count();
+    assert!(by_part.roi_size >= horn, "{} < {horn}", by_part.roi_size);
+}
+
+#[test]
+fn a_part_roi_on_a_sphere_is_refused_and_changes_nothing() {
+    let mesh = primitives::icosphere(1.0, 4);
+    let camera = Camera::default();
+    let stroke = pushed_stroke(&longest_outline(&mesh, &camera), DVec2::X, 40, 30.0);
+    let part = BendOptions {
+        fit: HandleFit::Exact,
+        roi: OversketchRoi::Part,
+    };
+    assert_eq!(
+        oversketch_with(&mesh, &camera, VIEWPORT, &stroke, part).unwrap_err(),
+        OversketchError::NoPart
+    );
+}
+
 #[test]
 fn bumpy_torus_keeps_its_bumps_better_than_a_naive_falloff() {
     let mesh = primitives::bumpy_torus(0.03, 192, 64);
@@ -309,11 +384,11 @@ fn a_soft_fit_follows_the_stroke_less_and_keeps_more_detail() {
     let camera = Camera::default();
     let outline = longest_outline(&mesh, &camera);
     let stroke = pushed_stroke(&outline, DVec2::X, 50, 40.0);
-    let exact = oversketch_with(&mesh, &camera, VIEWPORT, &stroke, HandleFit::Exact).unwrap();
+    let exact = oversketch_with(&mesh, &camera, VIEWPORT, &stroke, BendOptions::EXACT).unwrap();
     let soft = HandleFit::Soft {
         weight: SOFT_FIT_WEIGHT,
     };
-    let soft = oversketch_with(&mesh, &camera, VIEWPORT, &stroke, soft).unwrap();
+    let soft = oversketch_with(&mesh, &camera, VIEWPORT, &stroke, near(soft)).unwrap();
     assert_eq!(soft.handle, exact.handle, "the same outline piece matched");
     let worst =
         |result: &Oversketched| worst_middle_distance(&mesh, &result.positions, &camera, &stroke);
@@ -412,6 +487,7 @@ fn oversketch_op(stroke: &[DVec2]) -> Op {
         camera: Camera::default(),
         stroke: stroke.iter().map(|p| [p.x, p.y, 0.5]).collect(),
         fit: OversketchFit::Exact,
+        roi: OversketchRoi::NearHandle,
         handle: None,
     })
 }
@@ -450,6 +526,7 @@ fn oversketch_op_replays_and_undoes_exactly() {
     };
     let soft = Op::Oversketch(OversketchInput {
         fit: OversketchFit::Soft,
+        roi: OversketchRoi::NearHandle,
         ..exact
     });
     editor.undo().unwrap();
@@ -457,7 +534,8 @@ fn oversketch_op_replays_and_undoes_exactly() {
     let fit = HandleFit::Soft {
         weight: SOFT_FIT_WEIGHT,
     };
-    let expected = oversketch_with(&mesh, &Camera::default(), VIEWPORT, &stroke, fit).unwrap();
+    let expected =
+        oversketch_with(&mesh, &Camera::default(), VIEWPORT, &stroke, near(fit)).unwrap();
     let softened = editor.document().clone();
     assert_eq!(softened.models[0].mesh.positions(), &expected.positions[..]);
     assert_ne!(softened, after);
@@ -549,7 +627,7 @@ fn a_picked_silhouette_piece_moves_onto_its_new_shape_and_crops() {
     };
     let stroke = pushed_stroke(&outline, DVec2::X, 60, 40.0);
     let fit = HandleFit::Exact;
-    let result = oversketch_manual(&mesh, &camera, VIEWPORT, &handle, &stroke, fit).unwrap();
+    let result = oversketch_manual(&mesh, &camera, VIEWPORT, &handle, &stroke, near(fit)).unwrap();
     assert_outside_unmoved(&mesh, &result);
     let worst = worst_middle_distance(&mesh, &result.positions, &camera, &stroke);
     eprintln!("manual silhouette: worst distance {worst:.3} px");
@@ -565,7 +643,7 @@ fn a_picked_silhouette_piece_moves_onto_its_new_shape_and_crops() {
     let preview = manual_handle_preview(&mesh, &camera, VIEWPORT, &cropped).unwrap();
     assert!(preview.last().unwrap().distance(half) < 3.0);
     let short = &stroke[..stroke.len() / 2];
-    let cropped = oversketch_manual(&mesh, &camera, VIEWPORT, &cropped, short, fit).unwrap();
+    let cropped = oversketch_manual(&mesh, &camera, VIEWPORT, &cropped, short, near(fit)).unwrap();
     let moved = |r: &Oversketched| {
         (0..mesh.n_vertices())
             .filter(|&v| r.positions[v] != mesh.positions()[v])
@@ -615,7 +693,7 @@ fn a_curve_drawn_on_the_surface_moves_to_its_new_position_at_its_depth() {
         VIEWPORT,
         &handle,
         &moved_to,
-        HandleFit::Exact,
+        BendOptions::EXACT,
     )
     .unwrap();
     assert_outside_unmoved(&mesh, &result);
@@ -652,6 +730,7 @@ fn a_manual_oversketch_op_replays_and_a_lost_handle_is_refused() {
             camera,
             stroke: stroke.iter().map(|p| [p.x, p.y, 0.5]).collect(),
             fit: OversketchFit::Exact,
+            roi: OversketchRoi::NearHandle,
             handle: Some(handle),
         })
     };
@@ -667,7 +746,7 @@ fn a_manual_oversketch_op_replays_and_a_lost_handle_is_refused() {
         VIEWPORT,
         &handle,
         &stroke,
-        HandleFit::Exact,
+        BendOptions::EXACT,
     )
     .unwrap();
     assert!(after.models[0].mesh.positions() == &expected.positions[..]);

@@ -2,6 +2,7 @@
 //! switches, status.
 
 use sketchmesh_core::document::{Editor, OversketchFit};
+use sketchmesh_core::oversketch::OversketchRoi;
 
 use crate::render::ViewOptions;
 use crate::tools::{Mode, OversketchSettings};
@@ -122,24 +123,37 @@ pub fn toolbar_ui(
     action.or(picked_mode.map(Action::Mode))
 }
 
-/// The over-sketch mode's switches: manual handle picking and the fit.
+/// The over-sketch mode's switches: manual handle picking, the fit and the region.
 fn oversketch_options_ui(ui: &mut egui::Ui, settings: &mut OversketchSettings) {
     let hint = "On: pick what moves first (draw along an outline, or across the model), then \
                 draw its new shape. Off: the stroke finds the outline (K)";
     ui.toggle_value(&mut settings.manual, "Pick handle")
         .on_hover_text(hint);
-    let mut exact = settings.fit == OversketchFit::Exact;
     let hint = "On: the outline lands on the stroke. Off: it follows the stroke as far as the \
                 surface detail allows, so a rough stroke bends the shape less";
+    let fit = [OversketchFit::Exact, OversketchFit::Soft];
+    toggle_between(ui, &mut settings.fit, fit, "Exact fit", hint);
+    let hint = "On: the part the outline belongs to bends as a whole (an ear, a finger, told \
+                apart by thickness) and the rest stays. Off: only the surface near the outline \
+                moves, farther for a longer pull";
+    let roi = [OversketchRoi::Part, OversketchRoi::NearHandle];
+    toggle_between(ui, &mut settings.roi, roi, "Whole part", hint);
+}
+
+/// A toggle button for a setting with two values, `[on, off]`.
+fn toggle_between<T: Copy + PartialEq>(
+    ui: &mut egui::Ui,
+    value: &mut T,
+    [on, off]: [T; 2],
+    label: &str,
+    hint: &str,
+) {
+    let mut is_on = *value == on;
     if ui
-        .toggle_value(&mut exact, "Exact fit")
+        .toggle_value(&mut is_on, label)
         .on_hover_text(hint)
         .changed()
     {
-        settings.fit = if exact {
-            OversketchFit::Exact
-        } else {
-            OversketchFit::Soft
-        };
+        *value = if is_on { on } else { off };
     }
 }

@@ -15,7 +15,7 @@ use glam::DVec2;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{Document, Op, OversketchFit, OversketchInput, StrokeInput};
 use sketchmesh_core::oversketch::{
-    ManualHandle, manual_handle_preview, pick_handle, preview_handle,
+    ManualHandle, OversketchRoi, manual_handle_preview, pick_handle, preview_handle,
 };
 
 use super::draw::DrawTool;
@@ -46,6 +46,8 @@ pub struct OversketchSettings {
     pub fit: OversketchFit,
     /// Pick the handle first instead of letting the stroke find it.
     pub manual: bool,
+    /// Which region may move.
+    pub roi: OversketchRoi,
 }
 
 /// A handle picked in manual mode, with the view it was picked in.
@@ -185,6 +187,7 @@ impl OversketchTool {
             camera: input.camera,
             stroke: input.stroke,
             fit: self.settings.fit,
+            roi: self.settings.roi,
             handle,
         }))
     }

@@ -13,7 +13,9 @@ use crate::fibermesh::add_curve::AddCurveError;
 use crate::fibermesh::curve_pull::PullError;
 use crate::io::{GltfError, ImportFile, ImportLimits, Imported, import_gltf};
 use crate::mesh::remesh::RemeshError;
-use crate::oversketch::{OversketchError, Oversketched, oversketch_manual, oversketch_with};
+use crate::oversketch::{
+    BendOptions, OversketchError, Oversketched, oversketch_manual, oversketch_with,
+};
 use crate::solve::SolveError;
 
 /// Why an op was refused. The messages are sentences for the user.
@@ -257,14 +259,17 @@ fn oversketch_document(
     let input_stroke = StrokeInput::of_oversketch(input);
     let viewport = input_stroke.viewport_size();
     let stroke = curve_edit::screen_stroke(&input_stroke, 2)?;
-    let fit = input.fit.handle_fit();
+    let options = BendOptions {
+        fit: input.fit.handle_fit(),
+        roi: input.roi,
+    };
     let mut best: Option<(usize, Oversketched)> = None;
     let mut refusal = OversketchError::NoMatch;
     for (index, model) in document.models.iter().enumerate() {
         let (mesh, camera) = (&model.mesh, &input.camera);
         let result = match &input.handle {
-            Some(handle) => oversketch_manual(mesh, camera, viewport, handle, &stroke, fit),
-            None => oversketch_with(mesh, camera, viewport, &stroke, fit),
+            Some(handle) => oversketch_manual(mesh, camera, viewport, handle, &stroke, options),
+            None => oversketch_with(mesh, camera, viewport, &stroke, options),
         };
         match result {
             Ok(result) => {
@@ -301,7 +306,7 @@ fn oversketch_document(
 fn refusal_rank(error: &OversketchError) -> u8 {
     match error {
         OversketchError::NoMatch => 0,
-        OversketchError::LowConfidence | OversketchError::HandleLost => 1,
+        OversketchError::LowConfidence | OversketchError::HandleLost | OversketchError::NoPart => 1,
         OversketchError::Deform(_) => 2,
     }
 }

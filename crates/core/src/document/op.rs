@@ -8,7 +8,7 @@ use serde::{Deserialize, Serialize};
 use crate::camera::Camera;
 use crate::curve::StrokePoint;
 use crate::deform::HandleFit;
-use crate::oversketch::{ManualHandle, SOFT_FIT_WEIGHT};
+use crate::oversketch::{ManualHandle, OversketchRoi, SOFT_FIT_WEIGHT};
 
 /// One session op. JSON is internally tagged: `{"op":"stroke",...}`, `{"op":"undo"}`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -108,6 +108,10 @@ pub struct OversketchInput {
     /// Exact (the default, left out of session files) or soft.
     #[serde(default, skip_serializing_if = "OversketchFit::is_exact")]
     pub fit: OversketchFit,
+    /// The region that may move: near the handle (the default, left out of session files)
+    /// or its part (`"part"`).
+    #[serde(default, skip_serializing_if = "OversketchRoi::is_near_handle")]
+    pub roi: OversketchRoi,
     /// The handle the user picked (manual mode), in the same screen space as the stroke;
     /// left out when matching picks it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -305,6 +309,7 @@ mod tests {
                 camera: Camera::default(),
                 stroke: Vec::new(),
                 fit: OversketchFit::Soft,
+                roi: OversketchRoi::Part,
                 handle: Some(ManualHandle::Silhouette {
                     from: DVec2::ZERO,
                     via: DVec2::X,

@@ -11,6 +11,7 @@ mod bvh;
 mod laplacian;
 mod normals;
 mod raycast;
+mod shape_diameter;
 
 pub use area::{
     enclosed_volume, face_area, mass_matrix, total_area, vertex_areas, vertex_areas_barycentric,
@@ -21,3 +22,4 @@ pub use normals::{
     face_normal, face_normals, vertex_normals, vertex_normals_into, vertex_normals_of,
 };
 pub use raycast::{RayHit, raycast};
+pub use shape_diameter::{SDF_RAYS, shape_diameter};

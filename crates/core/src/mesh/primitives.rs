@@ -171,6 +171,18 @@ pub fn bumpy_torus(height: f64, n_major: usize, n_minor: usize) -> Mesh {
     mesh
 }
 
+/// A unit icosphere ([`icosphere`]) with a horn along +x: each vertex at angle `θ` from
+/// the x axis is pushed out radially by `height · exp(-(θ / width)²)`. A thin part on a
+/// thick body, as an ear on a head, for the part ROI of over-sketching (SEED).
+pub fn horned_sphere(subdivisions: u32, height: f64, width: f64) -> Mesh {
+    let mut mesh = icosphere(1.0, subdivisions);
+    for p in mesh.positions_mut() {
+        let angle = p.angle_between(DVec3::X);
+        *p *= 1.0 + height * (-(angle / width).powi(2)).exp();
+    }
+    mesh
+}
+
 /// A capsule along x: a cylinder of `radius` from `x = -half_length` to `half_length`,
 /// capped by hemispheres. A surface of revolution with `n_around` vertices per ring and
 /// `n_profile` steps of equal arclength from pole to pole: `n_around (n_profile - 1) + 2`

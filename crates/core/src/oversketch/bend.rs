@@ -12,7 +12,7 @@
 //!    *unsmoothed* projection (its world position on screen): the middle lands on the stroke
 //!    exactly and the ends stay exactly where they were.
 //! 2. The ROI grown within spheres of radius [`ROI_FACTOR`] times the handle displacements
-//!    ([`roi_from_displacements`]).
+//!    ([`roi_from_displacements`]), or the part the handle lies on ([`part_roi`]).
 //! 3. Constraints: for a silhouette, not the crossing points themselves but the band of
 //!    vertices around them ([`band_handles`]), translated with the nearby handle points, so
 //!    the contour generator moves with the band instead of sliding across the bent surface.
@@ -27,7 +27,10 @@
 use glam::{DVec2, DVec3};
 
 use super::polyline::cumulative_lengths;
-use super::{BLEND_WIDTH, OversketchError, blend_weight, map_to_stroke, roi_from_displacements};
+use super::{
+    BLEND_WIDTH, OversketchError, OversketchRoi, blend_weight, map_to_stroke, part_roi,
+    roi_from_displacements,
+};
 use crate::camera::Camera;
 use crate::deform::{DeformError, EditParams, HandleFit, HandlePoint, LaplacianEdit};
 use crate::mesh::{Mesh, VertexId};
@@ -77,15 +80,35 @@ impl HandleCurve {
     }
 }
 
+/// How an over-sketch bends: the handles' fit and the region that may move.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BendOptions {
+    /// Exact or soft handles.
+    pub fit: HandleFit,
+    /// Near the handle or its part.
+    pub roi: OversketchRoi,
+}
+
+impl BendOptions {
+    /// Exact handles, the region near the handle: [`super::oversketch`]'s choice.
+    pub const EXACT: BendOptions = BendOptions {
+        fit: HandleFit::Exact,
+        roi: OversketchRoi::NearHandle,
+    };
+}
+
 /// Bends `mesh` so that `handle` lands on `stroke` (simplified, screen CSS px): the new
 /// positions and the ROI size.
+///
+/// Errors: [`OversketchError::NoPart`] when a part ROI is asked for and none stands out,
+/// [`OversketchError::Deform`] when the edit fails.
 pub(super) fn bend(
     mesh: &Mesh,
     camera: &Camera,
     viewport: DVec2,
     handle: &HandleCurve,
     stroke: &[DVec2],
-    fit: HandleFit,
+    options: BendOptions,
 ) -> Result<(Vec<DVec3>, usize), OversketchError> {
     let targets = handle_targets(camera, viewport, handle, stroke);
     let displaced: Vec<(VertexId, f64)> = handle
@@ -97,7 +120,13 @@ pub(super) fn bend(
             point.vertices().map(|v| (v, displacement))
         })
         .collect();
-    let roi = roi_from_displacements(mesh, &displaced, ROI_FACTOR);
+    let roi = match options.roi {
+        OversketchRoi::NearHandle => roi_from_displacements(mesh, &displaced, ROI_FACTOR),
+        OversketchRoi::Part => {
+            let vertices: Vec<VertexId> = displaced.iter().map(|&(v, _)| v).collect();
+            part_roi(mesh, &vertices).ok_or(OversketchError::NoPart)?
+        }
+    };
     let roi_size = roi.iter().filter(|&&r| r).count();
     let (points, targets) = if handle.is_silhouette {
         band_handles(mesh, &roi, &handle.points, &targets)
@@ -105,7 +134,7 @@ pub(super) fn bend(
         (handle.points.clone(), targets)
     };
     let params = EditParams {
-        fit,
+        fit: options.fit,
         ..EditParams::default()
     };
     let mut edit = LaplacianEdit::new(mesh, &roi, &points, params)?;

@@ -17,13 +17,13 @@
 use glam::{DVec2, DVec3};
 use serde::{Deserialize, Serialize};
 
-use super::bend::{HandleCurve, bend};
+use super::bend::{BendOptions, HandleCurve, bend};
 use super::pipeline::{piece_points, seen_silhouettes};
 use super::polyline::{closest_point, cumulative_lengths, point_at, resample};
 use super::track::Track;
 use super::{OversketchError, Oversketched, handle_points, simplify_stroke};
 use crate::camera::Camera;
-use crate::deform::{HandleFit, HandlePoint};
+use crate::deform::HandlePoint;
 use crate::geometry::Bvh;
 use crate::mesh::Mesh;
 
@@ -116,7 +116,7 @@ pub fn oversketch_manual(
     viewport: DVec2,
     handle: &ManualHandle,
     stroke: &[DVec2],
-    fit: HandleFit,
+    options: BendOptions,
 ) -> Result<Oversketched, OversketchError> {
     let stroke = if stroke.iter().all(|p| p.is_finite()) {
         simplify_stroke(stroke)
@@ -137,7 +137,7 @@ pub fn oversketch_manual(
     } else {
         curve
     };
-    let (positions, roi_size) = bend(mesh, camera, viewport, &curve, &stroke, fit)?;
+    let (positions, roi_size) = bend(mesh, camera, viewport, &curve, &stroke, options)?;
     Ok(Oversketched {
         positions,
         handle: curve.screen,

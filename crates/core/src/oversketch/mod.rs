@@ -11,7 +11,8 @@
 //! 3. [`map_to_stroke`] and [`blend_ends`]: targets by relative arclength, blended into the
 //!    untouched silhouette at the ends (SEED Eqs. 4–7); [`map_point_to_stroke`] for
 //!    points beside the handle (§5.4.3).
-//! 4. [`roi_from_displacements`]: the ROI grown within a union of spheres (§5.4.4).
+//! 4. [`roi_from_displacements`]: the ROI grown within a union of spheres (§5.4.4), or
+//!    [`part_roi`]: SEED's part of the model around the handle, by thickness (SEED §4).
 //!
 //! Edge silhouettes ([`crate::silhouette::edge_silhouettes`]) are the outline as rendered;
 //! tests measure against them.
@@ -24,6 +25,8 @@ mod bend;
 mod manual;
 mod mapping;
 mod matching;
+mod mixture;
+mod part_roi;
 mod pipeline;
 mod polyline;
 mod roi;
@@ -31,16 +34,18 @@ mod scoring;
 mod track;
 mod turning;
 
-pub use bend::{BLEND_GAP_PX, ROI_FACTOR};
+pub use bend::{BLEND_GAP_PX, BendOptions, ROI_FACTOR};
 pub use manual::{
     ManualHandle, PICK_DISTANCE_PX, PICK_SHARE, SURFACE_HANDLE_SPACING_PX, manual_handle_preview,
     oversketch_manual, pick_handle,
 };
 pub use mapping::{BLEND_WIDTH, blend_ends, blend_weight, map_point_to_stroke, map_to_stroke};
 pub use matching::{Match, MatchParams, match_stroke};
+pub use mixture::Mixture;
+pub use part_roi::{BACKGROUND_SAMPLES, MAX_PART_SHARE, MIN_SEEDS, PART_SMOOTHNESS, part_roi};
 pub use pipeline::{
     OversketchError, Oversketched, SOFT_FIT_WEIGHT, oversketch, oversketch_with, preview_handle,
 };
 pub use polyline::{STROKE_SPACING_PX, STROKE_TOLERANCE_PX, simplify_stroke};
-pub use roi::{ROI_RADIUS_FACTOR, roi_from_displacements};
+pub use roi::{OversketchRoi, ROI_RADIUS_FACTOR, roi_from_displacements};
 pub use track::{CLOSED_TOLERANCE_PX, handle_points};

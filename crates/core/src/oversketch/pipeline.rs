@@ -13,10 +13,10 @@
 
 use glam::{DVec2, DVec3};
 
-use super::bend::{HandleCurve, bend};
+use super::bend::{BendOptions, HandleCurve, bend};
 use super::{MatchParams, handle_points, match_stroke, simplify_stroke};
 use crate::camera::Camera;
-use crate::deform::{DeformError, HandleFit};
+use crate::deform::DeformError;
 use crate::geometry::Bvh;
 use crate::mesh::{Mesh, VertexId};
 use crate::silhouette::{Silhouette, SilhouettePoint, silhouettes};
@@ -50,6 +50,11 @@ pub enum OversketchError {
     /// A manual handle's silhouette is no longer in sight, or its curve misses the mesh.
     #[error("The picked outline or curve is no longer on the model as seen; pick it again.")]
     HandleLost,
+    /// A part ROI was asked for, but the handle's thickness sets no part apart.
+    #[error(
+        "No part of the model stands out around that outline (an ear, a finger); bend it with the region near the stroke instead."
+    )]
+    NoPart,
     /// The matched handle could not drive a deformation.
     #[error("The shape could not be bent to follow that stroke.")]
     Deform(#[from] DeformError),
@@ -63,7 +68,7 @@ struct Found {
     is_confident: bool,
 }
 
-/// The handle weight of a soft over-sketch ([`HandleFit::Soft`]): each handle point's row
+/// The handle weight of a soft over-sketch ([`HandleFit::Soft`](crate::deform::HandleFit::Soft)): each handle point's row
 /// weighs as much as the detail of one vertex, so a handle point meets its target only as
 /// far as the surface around it agrees.
 pub const SOFT_FIT_WEIGHT: f64 = 1.0;
@@ -80,27 +85,29 @@ pub fn oversketch(
     viewport: DVec2,
     stroke: &[DVec2],
 ) -> Result<Oversketched, OversketchError> {
-    oversketch_with(mesh, camera, viewport, stroke, HandleFit::Exact)
+    oversketch_with(mesh, camera, viewport, stroke, BendOptions::EXACT)
 }
 
-/// [`oversketch`] with the handles fitted as `fit` says: [`HandleFit::Exact`] puts the
-/// outline on the stroke, [`HandleFit::Soft`] draws it towards the stroke as far as the
-/// surface details allow (detail-preserving editing's approximate fit, Nealen §4.2).
+/// [`oversketch`] with the handles fitted as `options.fit` says: [`HandleFit::Exact`](crate::deform::HandleFit::Exact) puts
+/// the outline on the stroke, [`HandleFit::Soft`](crate::deform::HandleFit::Soft) draws it towards the stroke as far as the
+/// surface details allow (detail-preserving editing's approximate fit, Nealen §4.2); and
+/// the region `options.roi`.
 ///
-/// Errors: those of [`oversketch`].
+/// Errors: those of [`oversketch`], and [`OversketchError::NoPart`] for a part ROI that
+/// does not stand out.
 pub fn oversketch_with(
     mesh: &Mesh,
     camera: &Camera,
     viewport: DVec2,
     stroke: &[DVec2],
-    fit: HandleFit,
+    options: BendOptions,
 ) -> Result<Oversketched, OversketchError> {
     let found = find_handle(mesh, camera, viewport, stroke).ok_or(OversketchError::NoMatch)?;
     if !found.is_confident {
         return Err(OversketchError::LowConfidence);
     }
     let handle = HandleCurve::of_silhouette(&found.points);
-    let (positions, roi_size) = bend(mesh, camera, viewport, &handle, &found.stroke, fit)?;
+    let (positions, roi_size) = bend(mesh, camera, viewport, &handle, &found.stroke, options)?;
     Ok(Oversketched {
         positions,
         handle: handle.screen,

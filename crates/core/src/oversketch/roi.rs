@@ -8,8 +8,29 @@
 //! mesh that the union reaches but that is not connected through it stays out.
 
 use glam::DVec3;
+use serde::{Deserialize, Serialize};
 
 use crate::mesh::{Mesh, VertexId};
+
+/// Which vertices an over-sketch may move.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum OversketchRoi {
+    /// Those near the handle, within spheres as large as its displacements (SilSketch,
+    /// [`roi_from_displacements`]): a small change stays local.
+    #[default]
+    NearHandle,
+    /// The part of the model the handle lies on, told apart by thickness (SEED,
+    /// [`super::part_roi`]): an ear or a finger bends as a whole, the body stays.
+    Part,
+}
+
+impl OversketchRoi {
+    /// Whether this is the default (for serde's `skip_serializing_if`).
+    pub fn is_near_handle(&self) -> bool {
+        *self == OversketchRoi::NearHandle
+    }
+}
 
 /// Radius factor that reproduces the thesis (`r_s = d_{h,s}`).
 pub const ROI_RADIUS_FACTOR: f64 = 1.0;

@@ -12,6 +12,7 @@ use eframe::egui_wgpu;
 use egui::{Key, KeyboardShortcut, Modifiers};
 use sketchmesh_core::curve::{StrokePoint, process_stroke};
 use sketchmesh_core::document::{Editor, ImportInput, Op, PendingCreate};
+use sketchmesh_core::oversketch::OversketchRoi;
 
 use crate::camera::OrbitCamera;
 use crate::clock;
@@ -309,6 +310,14 @@ impl SketchApp {
         if pressed(Key::K) {
             let settings = self.tools.oversketch_settings_mut();
             settings.manual = !settings.manual;
+            self.set_mode(Mode::Oversketch, now);
+        }
+        if pressed(Key::A) {
+            let settings = self.tools.oversketch_settings_mut();
+            settings.roi = match settings.roi {
+                OversketchRoi::NearHandle => OversketchRoi::Part,
+                OversketchRoi::Part => OversketchRoi::NearHandle,
+            };
             self.set_mode(Mode::Oversketch, now);
         }
         if pressed(Key::H) || pressed(Key::F1) {

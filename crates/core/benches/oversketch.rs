@@ -16,9 +16,9 @@ use std::hint::black_box;
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
+use sketchmesh_core::deform::HandleFit;
 use sketchmesh_core::geometry::Bvh;
 use sketchmesh_core::mesh::primitives;
-use sketchmesh_core::deform::HandleFit;
 use sketchmesh_core::oversketch::{
     BendOptions, MatchParams, OversketchRoi, match_stroke, oversketch, oversketch_with,
 };

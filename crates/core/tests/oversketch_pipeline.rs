@@ -288,6 +288,34 @@ fn a_part_roi_bends_the_horn_and_leaves_the_body() {
         .filter(|p| p.angle_between(DVec3::X) < 0.4)
         .count();
     assert!(by_part.roi_size >= horn, "{} < {horn}", by_part.roi_size);
+
+    // Through the editor: the op carries its region, and the session replays it.
+    let mut editor = Editor::new();
+    editor.apply(import_op(&mesh)).unwrap();
+    // glTF stores f32 positions: the imported mesh is the one to compare against.
+    let imported = editor.document().models[0].mesh.clone();
+    let expected = oversketch_with(&imported, &camera, VIEWPORT, &stroke, part).unwrap();
+    editor.apply(part_op(&stroke)).unwrap();
+    let edited = editor.document().clone();
+    assert!(edited.models[0].mesh.positions() == &expected.positions[..]);
+    let json = editor.session_json();
+    assert!(
+        json.contains(r#""roi":"part""#),
+        "{}",
+        &json[json.len() - 200..]
+    );
+    assert_eq!(*Editor::replay_json(&json).unwrap().document(), edited);
+}
+
+/// [`oversketch_op`] with the part ROI.
+fn part_op(stroke: &[DVec2]) -> Op {
+    let Op::Oversketch(input) = oversketch_op(stroke) else {
+        unreachable!("oversketch_op makes an oversketch")
+    };
+    Op::Oversketch(OversketchInput {
+        roi: OversketchRoi::Part,
+        ..input
+    })
 }
 
 #[test]
@@ -302,6 +330,17 @@ fn a_part_roi_on_a_sphere_is_refused_and_changes_nothing() {
     assert_eq!(
         oversketch_with(&mesh, &camera, VIEWPORT, &stroke, part).unwrap_err(),
         OversketchError::NoPart
+    );
+    let mut editor = Editor::new();
+    editor.apply(import_op(&mesh)).unwrap();
+    let before = editor.document().clone();
+    let error = editor.apply(part_op(&stroke)).unwrap_err();
+    assert!(error.to_string().contains("No part"), "{error}");
+    assert_eq!(*editor.document(), before);
+    editor.undo().unwrap();
+    assert!(
+        editor.document().models.is_empty(),
+        "undo still undoes the import"
     );
 }
 

@@ -18,6 +18,10 @@ const SHORTCUTS: &[(&str, &str)] = &[
         "K",
         "Over-sketch: pick the handle first (outline piece or surface curve)",
     ),
+    (
+        "A",
+        "Over-sketch: bend the whole part (an ear, a finger) or only near the outline",
+    ),
     ("W", "Wireframe on/off"),
     ("G", "Grid on/off"),
     ("H, F1", "This help"),

@@ -135,7 +135,7 @@ fn oversketch_options_ui(ui: &mut egui::Ui, settings: &mut OversketchSettings) {
     toggle_between(ui, &mut settings.fit, fit, "Exact fit", hint);
     let hint = "On: the part the outline belongs to bends as a whole (an ear, a finger, told \
                 apart by thickness) and the rest stays. Off: only the surface near the outline \
-                moves, farther for a longer pull";
+                moves, farther for a longer pull (A)";
     let roi = [OversketchRoi::Part, OversketchRoi::NearHandle];
     toggle_between(ui, &mut settings.roi, roi, "Whole part", hint);
 }

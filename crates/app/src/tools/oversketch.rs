@@ -399,6 +399,22 @@ mod tests {
     }
 
     #[test]
+    fn the_ops_carry_the_region_setting() {
+        let (view, doc, radius) = sphere_view();
+        let mut tool = OversketchTool::default();
+        for roi in [OversketchRoi::Part, OversketchRoi::NearHandle] {
+            tool.settings_mut().roi = roi;
+            let beyond = arc(radius + 15.0, -30.0, 30.0);
+            let ToolOutput::Commit(Op::Oversketch(input)) =
+                stroke_through(&mut tool, &view, &doc, &beyond)
+            else {
+                panic!("a stroke beside the outline should commit");
+            };
+            assert_eq!(input.roi, roi);
+        }
+    }
+
+    #[test]
     fn a_picked_outline_piece_is_cropped_from_its_end_and_dropped_by_orbiting() {
         let (view, doc, radius) = sphere_view();
         let mut tool = OversketchTool::default();

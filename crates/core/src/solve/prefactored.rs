@@ -4,8 +4,9 @@
 //! `min_quad_with_fixed`, pmp's `cholesky_solve` with `is_constrained`). Splitting the columns
 //! of `A` into free and fixed blocks, `A x = A_f x_f + A_c x_c`, the minimiser solves the normal
 //! equations `(A_fᵀ A_f) x_f = A_fᵀ (b - A_c x_c)`. The normal matrix is factored once with
-//! faer's supernodal sparse `LLᵀ` after AMD ordering; each solve is then two triangular
-//! solves, with x, y and z as three columns of one right-hand side.
+//! faer's sparse `LLᵀ` (supernodal or simplicial, as faer picks) after AMD ordering; each
+//! solve is then two triangular solves, with x, y and z as three columns of one right-hand
+//! side.
 //!
 //! The two triangular solves are kept apart, with a hook between them
 //! ([`Prefactored::solve_with`]), and some unknowns can be ordered last

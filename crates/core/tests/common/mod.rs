@@ -1,0 +1,397 @@
+//! Shared by `golden_sessions.rs` and `editor_properties.rs`: a bit-exact digest of a
+//! document, readable summary numbers, and stroke generators for editor ops.
+//!
+//! [`digest`] is the one place that reads a document's contents; when the document's
+//! layout changes (control curves stored differently, say), adapt that function only, and
+//! keep it producing the same bytes for the same document so the recorded goldens stay
+//! valid.
+
+#![allow(dead_code)] // Each test crate uses part of this.
+
+use std::f64::consts::{PI, TAU};
+use std::sync::Arc;
+
+use glam::{DVec2, DVec3};
+use sketchmesh_core::camera::Camera;
+use sketchmesh_core::document::{
+    AddCurveInput, CurveTypeInput, Document, FileInput, ImportInput, Model, Op, OversketchFit,
+    OversketchInput, StrokeInput,
+};
+use sketchmesh_core::geometry::Bvh;
+use sketchmesh_core::io::write_glb;
+use sketchmesh_core::mesh::Mesh;
+use sketchmesh_core::oversketch::{ManualHandle, OversketchRoi};
+use sketchmesh_core::silhouette::silhouettes;
+
+// ---------------------------------------------------------------------------------------
+// Digest
+// ---------------------------------------------------------------------------------------
+
+/// FNV-1a, 64 bit.
+#[derive(Clone, Copy, Debug)]
+pub struct Fnv(u64);
+
+impl Default for Fnv {
+    fn default() -> Self {
+        Fnv(0xcbf2_9ce4_8422_2325)
+    }
+}
+
+impl Fnv {
+    pub fn bytes(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 ^= u64::from(b);
+            self.0 = self.0.wrapping_mul(0x0000_0100_0000_01b3);
+        }
+    }
+    pub fn u64(&mut self, value: u64) {
+        self.bytes(&value.to_le_bytes());
+    }
+    pub fn len(&mut self, value: usize) {
+        self.u64(value as u64);
+    }
+    pub fn f64(&mut self, value: f64) {
+        self.u64(value.to_bits());
+    }
+    pub fn point(&mut self, p: DVec3) {
+        self.f64(p.x);
+        self.f64(p.y);
+        self.f64(p.z);
+    }
+    pub fn tag(&mut self, tag: &str) {
+        self.len(tag.len());
+        self.bytes(tag.as_bytes());
+    }
+    pub fn finish(self) -> u64 {
+        self.0
+    }
+}
+
+/// Two digests of a document: `full` covers every number bit for bit, `topology` only the
+/// integer structure (counts, triangles, curve chains and flags), so that a mismatch can
+/// tell moved vertices from a changed mesh.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Digest {
+    pub full: u64,
+    pub topology: u64,
+}
+
+/// The digest of a document. Covers, per model: every position (f64 bits), every
+/// triangle, and every control curve (its vertex chain, the sharp/smooth kind, the closed
+/// flag and its points); per sketch its points and pressures; per point cloud its
+/// positions and colours; model names.
+///
+/// The single function to adapt when the document's layout changes. Curve points are
+/// hashed as world positions; a curve stored only as a vertex chain hashes the positions
+/// of its vertices here, which gives the same bytes for an embedded curve.
+pub fn digest(document: &Document) -> Digest {
+    let (mut full, mut topo) = (Fnv::default(), Fnv::default());
+    for h in [&mut full, &mut topo] {
+        h.tag("models");
+        h.len(document.models.len());
+    }
+    for model in &document.models {
+        let mesh = &model.mesh;
+        for h in [&mut full, &mut topo] {
+            h.tag("mesh");
+            h.len(mesh.n_vertices());
+            h.len(mesh.triangles().len());
+            for t in mesh.triangles() {
+                t.iter().for_each(|&v| h.u64(u64::from(v)));
+            }
+        }
+        mesh.positions().iter().for_each(|&p| full.point(p));
+        full.tag(model.name.as_deref().unwrap_or(""));
+        for h in [&mut full, &mut topo] {
+            h.tag("curves");
+            h.len(model.curves.len());
+        }
+        for curve in &model.curves {
+            for h in [&mut full, &mut topo] {
+                h.tag(if curve.sharp { "sharp" } else { "smooth" });
+                h.u64(u64::from(curve.closed));
+                h.len(curve.vertices.len());
+                curve.vertices.iter().for_each(|v| h.u64(u64::from(v.0)));
+                h.len(curve.points.len());
+            }
+            curve.points.iter().for_each(|&p| full.point(p));
+        }
+    }
+    for h in [&mut full, &mut topo] {
+        h.tag("sketches");
+        h.len(document.sketches.len());
+    }
+    for sketch in &document.sketches {
+        for h in [&mut full, &mut topo] {
+            h.len(sketch.points.len());
+        }
+        sketch.points.iter().for_each(|&p| full.point(p));
+        sketch.pressures.iter().for_each(|&p| full.f64(p));
+    }
+    for h in [&mut full, &mut topo] {
+        h.tag("point_clouds");
+        h.len(document.point_clouds.len());
+    }
+    for cloud in &document.point_clouds {
+        for h in [&mut full, &mut topo] {
+            h.len(cloud.positions.len());
+        }
+        cloud.positions.iter().for_each(|&p| full.point(p));
+        for colour in cloud.colors.iter().flatten() {
+            colour.iter().for_each(|c| full.u64(u64::from(c.to_bits())));
+        }
+    }
+    Digest {
+        full: full.finish(),
+        topology: topo.finish(),
+    }
+}
+
+/// Readable numbers of one model, for diagnosing a mismatch.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ModelSummary {
+    pub vertices: usize,
+    pub faces: usize,
+    pub curves: usize,
+    pub diagonal: f64,
+    pub centroid: DVec3,
+}
+
+pub fn summary(model: &Model) -> ModelSummary {
+    let positions = model.mesh.positions();
+    ModelSummary {
+        vertices: positions.len(),
+        faces: model.mesh.triangles().len(),
+        curves: model.curves.len(),
+        diagonal: diagonal(positions),
+        centroid: positions.iter().sum::<DVec3>() / positions.len().max(1) as f64,
+    }
+}
+
+pub fn diagonal(positions: &[DVec3]) -> f64 {
+    let min = positions.iter().copied().fold(DVec3::INFINITY, DVec3::min);
+    let max = positions
+        .iter()
+        .copied()
+        .fold(DVec3::NEG_INFINITY, DVec3::max);
+    if positions.is_empty() {
+        0.0
+    } else {
+        min.distance(max)
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Strokes and ops
+// ---------------------------------------------------------------------------------------
+
+pub fn samples(points: impl IntoIterator<Item = DVec2>) -> Vec<[f64; 3]> {
+    points.into_iter().map(|p| [p.x, p.y, 0.5]).collect()
+}
+
+pub fn stroke_input(viewport: DVec2, camera: Camera, points: &[DVec2]) -> StrokeInput {
+    StrokeInput {
+        viewport: viewport.to_array(),
+        camera,
+        stroke: samples(points.iter().copied()),
+    }
+}
+
+pub fn add_curve(
+    viewport: DVec2,
+    camera: Camera,
+    points: &[DVec2],
+    closed: bool,
+    cross_section: bool,
+) -> Op {
+    Op::AddCurve(AddCurveInput {
+        viewport: viewport.to_array(),
+        camera,
+        stroke: samples(points.iter().copied()),
+        closed,
+        cross_section,
+    })
+}
+
+pub fn set_type(viewport: DVec2, camera: Camera, points: &[DVec2], sharp: bool) -> Op {
+    Op::SetCurveType(CurveTypeInput {
+        viewport: viewport.to_array(),
+        camera,
+        stroke: samples(points.iter().copied()),
+        sharp,
+    })
+}
+
+pub fn oversketch(
+    viewport: DVec2,
+    camera: Camera,
+    points: &[DVec2],
+    fit: OversketchFit,
+    roi: OversketchRoi,
+    handle: Option<ManualHandle>,
+) -> Op {
+    Op::Oversketch(OversketchInput {
+        viewport: viewport.to_array(),
+        camera,
+        stroke: samples(points.iter().copied()),
+        fit,
+        roi,
+        handle,
+    })
+}
+
+/// An import op carrying the .glb of `document` (written by today's exporter; the op keeps
+/// the bytes, so replays do not depend on the exporter).
+pub fn import_document(name: &str, document: &Document) -> Op {
+    Op::Import(ImportInput {
+        files: vec![FileInput {
+            name: name.to_owned(),
+            data: Some(Arc::new(write_glb(document))),
+        }],
+    })
+}
+
+pub fn import_mesh(name: &str, mesh: &Mesh) -> Op {
+    let document = Document {
+        models: vec![Arc::new(Model {
+            mesh: mesh.clone(),
+            ..Model::default()
+        })],
+        ..Document::default()
+    };
+    import_document(name, &document)
+}
+
+/// Samples along the segment from `a` to `b`, about every 4 px.
+pub fn segment(a: DVec2, b: DVec2) -> Vec<DVec2> {
+    let n = (a.distance(b) / 4.0).ceil().max(1.0) as usize;
+    (0..=n).map(|i| a.lerp(b, i as f64 / n as f64)).collect()
+}
+
+/// A closed outline `centre + r(t) (cos t, squash sin t)` turned by `turn`, with
+/// `r(t) = radius (1 + Σ a cos(k t + φ))`, `n` segments (first point repeated at the end).
+pub fn outline(
+    centre: DVec2,
+    radius: f64,
+    waves: &[(usize, f64, f64)],
+    squash: f64,
+    turn: f64,
+    n: usize,
+) -> Vec<DVec2> {
+    (0..=n)
+        .map(|i| {
+            let t = TAU * i as f64 / n as f64;
+            let r = radius
+                * (1.0
+                    + waves
+                        .iter()
+                        .map(|&(k, a, phase)| a * (k as f64 * t + phase).cos())
+                        .sum::<f64>());
+            let p = r * DVec2::new(t.cos(), squash * t.sin());
+            centre + DVec2::from_angle(turn).rotate(p)
+        })
+        .collect()
+}
+
+pub fn circle(centre: DVec2, radius: f64) -> Vec<DVec2> {
+    outline(centre, radius, &[], 1.0, 0.0, 80)
+}
+
+/// Where `p` appears on screen.
+pub fn screen(camera: &Camera, viewport: DVec2, p: DVec3) -> Option<DVec2> {
+    camera
+        .screen_from_world(p, viewport)
+        .map(|s| s.truncate())
+        .filter(|s| s.is_finite())
+}
+
+/// Screen polylines of the visible silhouettes (closed ones repeat their first point).
+pub fn outlines(mesh: &Mesh, camera: &Camera, viewport: DVec2) -> Vec<Vec<DVec2>> {
+    let bvh = Bvh::new(mesh);
+    silhouettes(mesh, &bvh, camera, viewport)
+        .iter()
+        .map(|s| {
+            let mut points: Vec<DVec2> = s.points.iter().map(|p| p.screen).collect();
+            if s.closed && !points.is_empty() {
+                points.push(points[0]);
+            }
+            points
+        })
+        .collect()
+}
+
+pub fn length(points: &[DVec2]) -> f64 {
+    points.windows(2).map(|w| w[0].distance(w[1])).sum()
+}
+
+/// The longest silhouette, without the repeated point when closed; `None` when nothing
+/// shows.
+pub fn longest_outline(mesh: &Mesh, camera: &Camera, viewport: DVec2) -> Option<Vec<DVec2>> {
+    let mut all = outlines(mesh, camera, viewport);
+    all.sort_by(|a, b| length(b).total_cmp(&length(a)));
+    let mut outline = all.into_iter().next()?;
+    if outline.len() > 2 && outline.first() == outline.last() {
+        outline.pop();
+    }
+    (outline.len() >= 8).then_some(outline)
+}
+
+/// A stroke over the part of `outline` around its extreme point in `direction`,
+/// `half_span` points either side, pushed outward by `push · sin(π u)` px (0 at the ends),
+/// smoothed and resampled every 1 px (as in `oversketch_pipeline.rs`).
+pub fn pushed_stroke(
+    outline: &[DVec2],
+    direction: DVec2,
+    half_span: usize,
+    push: f64,
+) -> Vec<DVec2> {
+    let n = outline.len();
+    let centroid = outline.iter().sum::<DVec2>() / n as f64;
+    let extreme = (0..n)
+        .max_by(|&a, &b| {
+            outline[a]
+                .dot(direction)
+                .total_cmp(&outline[b].dot(direction))
+        })
+        .unwrap_or(0);
+    let half_span = half_span.min(n.saturating_sub(1) / 2);
+    let count = 2 * half_span + 1;
+    let piece: Vec<DVec2> = (0..count)
+        .map(|k| outline[(extreme + n + k - half_span) % n])
+        .collect();
+    let pushed: Vec<DVec2> = (0..count)
+        .map(|k| {
+            let before = piece[k.saturating_sub(1)];
+            let after = piece[(k + 1).min(count - 1)];
+            let mut normal = (after - before).perp().normalize_or_zero();
+            if normal.dot(piece[k] - centroid) < 0.0 {
+                normal = -normal;
+            }
+            let u = k as f64 / (count - 1).max(1) as f64;
+            piece[k] + normal * push * (PI * u).sin()
+        })
+        .collect();
+    resample(&smooth(&pushed, 4), 1.0)
+}
+
+/// Moving average over `half_window` points either side (fewer near the ends).
+pub fn smooth(points: &[DVec2], half_window: usize) -> Vec<DVec2> {
+    let n = points.len();
+    (0..n)
+        .map(|i| {
+            let w = half_window.min(i).min(n - 1 - i);
+            points[i - w..=i + w].iter().sum::<DVec2>() / (2 * w + 1) as f64
+        })
+        .collect()
+}
+
+pub fn resample(points: &[DVec2], spacing: f64) -> Vec<DVec2> {
+    let mut out = vec![points[0]];
+    for w in points.windows(2) {
+        let steps = (w[0].distance(w[1]) / spacing).ceil().max(1.0) as usize;
+        for k in 1..=steps {
+            out.push(w[0].lerp(w[1], k as f64 / steps as f64));
+        }
+    }
+    out
+}

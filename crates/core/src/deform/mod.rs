@@ -12,7 +12,7 @@
 //!
 //! **Rotations.** A linear Laplacian edit keeps the details' rest orientation, so a bent
 //! tube's bumps shear sideways instead of turning with the surface (64 degrees off the
-//! normal in `tests/deform.rs`). [`Rotations::Arap`] rotates each rest Laplacian coordinate
+//! normal in `tests/suite/deform.rs`). [`Rotations::Arap`] rotates each rest Laplacian coordinate
 //! by a per-vertex rotation, `δ_i → R_i δ_i`, found by as-rigid-as-possible local steps
 //! (Sorkine & Alexa 2007): alternately fit `R_i` to vertex `i`'s cotangent-weighted
 //! one-ring (a 3x3 Procrustes problem, `rotation.rs`) and re-solve. This is rotation

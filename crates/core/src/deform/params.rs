@@ -44,7 +44,7 @@ pub struct EditParams {
 impl EditParams {
     /// Rotation iterations used by [`EditParams::default`]: a 90 degree bend of a bumpy tube
     /// then keeps its bumps within 5.9 degrees of the normal, against 5.8 when run to
-    /// convergence (see `tests/deform.rs`). Each costs one back-substitution and a 3x3 fit
+    /// convergence (see `tests/suite/deform.rs`). Each costs one back-substitution and a 3x3 fit
     /// per vertex.
     pub const DEFAULT_ARAP_ITERATIONS: u32 = 2;
 }

@@ -6,7 +6,7 @@
 //! cross-section, erase, set_curve_type sharp and smooth, rub, over-sketch automatic,
 //! manual with a picked silhouette or surface curve, soft fit and part ROI, import of a
 //! .glb carried in the session, undo and redo). `golden.json` holds, per session, the
-//! digest of the replayed document after every op ([`common::digest`]: every position as
+//! digest of the replayed document after every op ([`crate::common::digest`]: every position as
 //! f64 bits, triangles, control curves, sketches), the digest of its integer structure, and
 //! summary numbers per model; `<session>.positions.bin` holds the final positions (for
 //! the deviation printed on a mismatch, and for the allowance below).
@@ -19,20 +19,18 @@
 //! The fixtures are frozen inputs. To record them again with the editor of the day (only
 //! when the behaviour is meant to change, and saying so in the commit):
 //!
-//! - `UPDATE_GOLDEN=digests cargo test -p sketchmesh-core --test golden_sessions -- --ignored`
+//! - `UPDATE_GOLDEN=digests cargo test -p sketchmesh-core --test suite golden_sessions -- --ignored`
 //!   rewrites `golden.json` and the positions from the existing session files;
 //! - `UPDATE_GOLDEN=sessions ...` also regenerates the session files with the generators
 //!   below (their strokes are computed from the shapes of the day, so they may differ).
 
 #![allow(clippy::unwrap_used, clippy::expect_used)] // A panic is a test failure.
 
-mod common;
-
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use common::{
+use crate::common::{
     Digest, ModelSummary, add_curve, circle, digest, import_document, import_mesh, longest_outline,
     outline, oversketch, pushed_stroke, screen, segment, set_type, stroke_input, summary,
 };
@@ -238,7 +236,7 @@ fn check(
 }
 
 fn diagonal_or_one(positions: &[DVec3]) -> f64 {
-    let d = common::diagonal(positions);
+    let d = crate::common::diagonal(positions);
     if d > 0.0 { d } else { 1.0 }
 }
 

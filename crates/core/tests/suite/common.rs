@@ -6,7 +6,7 @@
 //! keep it producing the same bytes for the same document so the recorded goldens stay
 //! valid.
 
-#![allow(dead_code)] // Each test crate uses part of this.
+#![allow(dead_code)] // Parts serve the property test only.
 
 use std::f64::consts::{PI, TAU};
 use std::sync::Arc;

@@ -14,7 +14,7 @@ use sketchmesh_core::geometry::{face_normal, raycast};
 use sketchmesh_core::mesh::{HalfedgeId, Mesh};
 use sketchmesh_core::solve::SolveError;
 
-#[path = "../benches/common/fibermesh_shape.rs"]
+#[path = "../../benches/common/fibermesh_shape.rs"]
 mod fibermesh_shape;
 
 const VIEWPORT: [f64; 2] = [800.0, 600.0];

@@ -1,0 +1,14 @@
+//! The core's integration tests, linked into one binary: each module was its own test crate,
+//! and linking nine binaries against the optimized dependencies cost minutes of every cold CI
+//! run (issue 15). Each module keeps its own imports and helpers.
+
+mod common;
+mod curve_edit;
+mod deform;
+mod fibermesh;
+mod gltf_import;
+mod gltf_testdata;
+mod golden_sessions;
+mod oversketch;
+mod oversketch_pipeline;
+mod silhouette;

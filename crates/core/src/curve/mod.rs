@@ -1,16 +1,18 @@
-//! Curves drawn on the screen: raw pointer strokes, even resampling and smoothing.
+//! Curves drawn on the screen: raw pointer strokes, planar polylines, even resampling and
+//! smoothing.
 //!
 //! A stroke arrives as [`StrokePoint`]s in screen space (CSS px, y down) with pen pressure.
-//! [`process_stroke`] validates it, [`resample`]s it to an even spacing and [`smooth`]s it
-//! lightly; later techniques (FiberMesh creation, pulling curves) work on the result.
+//! [`process_stroke`] validates it, [`resample`](polyline::resample)s it to an even spacing
+//! and [`smooth`]s it lightly; later techniques (FiberMesh creation, pulling curves) work on
+//! the result. [`polyline`] holds the planar helpers every technique shares: arclength,
+//! resampling, nearest points, simplification, polygon area and containment, crossings.
 
-mod resample;
+pub mod polyline;
 mod smooth;
 mod stroke;
 
-pub use resample::resample;
 pub use smooth::{smooth, smooth_closed};
 pub use stroke::{
     MIN_STROKE_LENGTH_PX, SAMPLE_SPACING_PX, SMOOTHING_ITERATIONS, StrokeError, StrokePoint,
-    arc_length, is_closed_loop, process_stroke, validate_stroke,
+    is_closed_loop, process_stroke, validate_stroke,
 };

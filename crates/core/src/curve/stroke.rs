@@ -2,7 +2,8 @@
 
 use glam::DVec2;
 
-use super::{resample, smooth};
+use super::polyline::{self, PolylinePoint, resample};
+use super::smooth;
 
 /// Strokes shorter than this (in CSS px of arc length) are refused.
 pub const MIN_STROKE_LENGTH_PX: f64 = 4.0;
@@ -24,6 +25,20 @@ impl StrokePoint {
     /// A point with the given position and pressure.
     pub fn new(pos: DVec2, pressure: f64) -> Self {
         Self { pos, pressure }
+    }
+}
+
+/// Resampling interpolates pressure linearly along with the position.
+impl PolylinePoint for StrokePoint {
+    fn position(&self) -> DVec2 {
+        self.pos
+    }
+
+    fn interpolate(self, other: Self, t: f64) -> Self {
+        StrokePoint {
+            pos: self.pos.lerp(other.pos, t),
+            pressure: self.pressure + (other.pressure - self.pressure) * t,
+        }
     }
 }
 
@@ -50,12 +65,9 @@ pub enum StrokeError {
     },
 }
 
-/// Total length of the polyline through the points.
-pub fn arc_length(points: &[StrokePoint]) -> f64 {
-    points
-        .windows(2)
-        .map(|pair| pair[0].pos.distance(pair[1].pos))
-        .sum()
+/// Arc length of a stroke in CSS px.
+fn arc_length(points: &[StrokePoint]) -> f64 {
+    polyline::length(points.iter().map(StrokePoint::position))
 }
 
 /// Whether a stroke ends near where it started, so that it reads as a closed loop.
@@ -119,13 +131,13 @@ mod tests {
     }
 
     #[test]
-    fn arc_length_of_a_polyline() {
-        assert_eq!(
-            arc_length(&line(&[(0.0, 0.0), (3.0, 4.0), (3.0, 10.0)])),
-            11.0
-        );
-        assert_eq!(arc_length(&line(&[(1.0, 1.0)])), 0.0);
-        assert_eq!(arc_length(&[]), 0.0);
+    fn resampling_interpolates_pressure() {
+        let mut raw = line(&[(0.0, 0.0), (10.0, 0.0), (10.0, 10.0)]);
+        raw[1].pressure = 1.0;
+        let even = resample(&raw, 5.0);
+        let pressures: Vec<f64> = even.iter().map(|p| p.pressure).collect();
+        assert_eq!(pressures, vec![0.5, 0.75, 1.0, 0.75, 0.5]);
+        assert_eq!(even[3].pos, DVec2::new(10.0, 5.0));
     }
 
     #[test]

@@ -17,7 +17,7 @@ use super::params::{EditParams, HandleFit, Rotations};
 use super::region::Region;
 use super::rotation::{best_rotation, refine_rotation};
 use crate::mesh::{Mesh, VertexId};
-use crate::solve::{Prefactored, SolveError, Triplets};
+use crate::solve::{Prefactored, SolveError, Triplets, check_len};
 
 /// A Laplacian edit of one mesh with a fixed ROI and handle set, factored once; call
 /// [`LaplacianEdit::deform`] with new handle targets every frame. See the
@@ -303,16 +303,4 @@ impl LaplacianEdit {
 
 fn outer(a: DVec3, b: DVec3) -> DMat3 {
     DMat3::from_cols(a * b.x, a * b.y, a * b.z)
-}
-
-fn check_len(what: &'static str, expected: usize, found: usize) -> Result<(), SolveError> {
-    if expected == found {
-        Ok(())
-    } else {
-        Err(SolveError::DimensionMismatch {
-            what,
-            expected,
-            found,
-        })
-    }
 }

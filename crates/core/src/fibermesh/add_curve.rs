@@ -38,11 +38,20 @@ mod walk;
 use glam::{DVec2, DVec3};
 
 use crate::camera::Camera;
+use crate::curve::polyline::simplify;
 use crate::geometry::Bvh;
 use crate::mesh::Mesh;
-use crate::oversketch::simplify_stroke;
 use project::{Projector, SurfacePoint};
 use tri_list::TriList;
+
+/// A cross-section stroke is resampled every this many px, then simplified by
+/// Douglas–Peucker at [`CROSS_SECTION_TOLERANCE_PX`], before the signed screen distance to
+/// it is taken; the values of the over-sketch's stroke simplification
+/// ([`crate::oversketch::simplify_stroke`]).
+const CROSS_SECTION_SPACING_PX: f64 = 2.0;
+/// Douglas–Peucker tolerance (px) for a cross-section stroke; see
+/// [`CROSS_SECTION_SPACING_PX`].
+const CROSS_SECTION_TOLERANCE_PX: f64 = 1.0;
 
 /// What kind of curve a stroke makes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -211,7 +220,7 @@ fn cross_section(
         .filter_map(|(_, hit)| hit.map(|s| s.point))
         .collect();
     let ends_miss = projector.cast(first).is_none() && projector.cast(last).is_none();
-    let polyline = simplify_stroke(stroke);
+    let polyline = simplify(stroke, CROSS_SECTION_SPACING_PX, CROSS_SECTION_TOLERANCE_PX);
     if hits.is_empty() || !ends_miss || polyline.len() < 2 {
         return Err(AddCurveError::DoesNotCross);
     }

@@ -19,8 +19,8 @@
 use glam::{DVec2, DVec3};
 
 use super::control_curve::{ControlCurve, CurveKind};
-use super::polygon::distance_to_segment;
 use crate::camera::Camera;
+use crate::curve::polyline::{distance_to_polyline, distance_to_segment};
 use crate::geometry::{Bvh, vertex_normals};
 use crate::mesh::{Mesh, VertexId};
 
@@ -270,18 +270,6 @@ impl VisibleCurves {
     }
 }
 
-/// The distance from `p` to a polyline (to its point for a single sample).
-fn distance_to_polyline(p: DVec2, polyline: &[DVec2]) -> f64 {
-    match polyline {
-        [] => f64::INFINITY,
-        [only] => p.distance(*only),
-        _ => polyline
-            .windows(2)
-            .map(|w| distance_to_segment(p, w[0], w[1]))
-            .fold(f64::INFINITY, f64::min),
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -349,13 +337,5 @@ mod tests {
         );
         assert_eq!(all.len(), 1);
         assert!(all[0].is_closed && all[0].kind == CurveKind::Sharp);
-    }
-
-    #[test]
-    fn polyline_distance() {
-        let line = [DVec2::ZERO, DVec2::new(10.0, 0.0)];
-        assert_eq!(distance_to_polyline(DVec2::new(5.0, 3.0), &line), 3.0);
-        assert_eq!(distance_to_polyline(DVec2::new(0.0, 4.0), &line[..1]), 4.0);
-        assert_eq!(distance_to_polyline(DVec2::ZERO, &[]), f64::INFINITY);
     }
 }

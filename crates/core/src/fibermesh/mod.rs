@@ -58,9 +58,7 @@ mod inflate;
 mod measure;
 mod outline;
 mod plane;
-mod polygon;
 mod region;
-mod segment_grid;
 mod triangulate;
 
 use glam::DVec2;
@@ -72,6 +70,7 @@ pub use plane::DrawingPlane;
 pub use region::{Region, nearest_vertices, region_around};
 
 use crate::camera::Camera;
+use crate::curve::polyline::{perimeter, signed_area};
 use crate::curve::{StrokeError, StrokePoint};
 use crate::mesh::{Mesh, MeshError, VertexId};
 use crate::solve::SolveError;
@@ -271,8 +270,8 @@ pub fn create_converged_from_stroke(
 /// interiors of `A / (√3/2 h²)` each plus `P / h` on the outline. At least 12 outline
 /// vertices.
 fn spacing_for(outline: &[DVec2], target_vertices: usize) -> f64 {
-    let area = polygon::signed_area(outline).abs();
-    let length = polygon::perimeter(outline);
+    let area = signed_area(outline).abs();
+    let length = perimeter(outline);
     let a = 2.0 * area / (3f64.sqrt() / 2.0);
     let n = target_vertices.max(1) as f64;
     // a x² + P x - N = 0 for x = 1 / h.

@@ -14,10 +14,11 @@ use glam::DVec2;
 
 use super::CreateError;
 use super::plane::DrawingPlane;
-use super::polygon;
-use super::segment_grid::SegmentGrid;
 use crate::camera::Camera;
-use crate::curve::{StrokePoint, is_closed_loop, resample, smooth_closed, validate_stroke};
+use crate::curve::polyline::{
+    perimeter, resample, resample_closed, segment_crossing, self_crossings, signed_area,
+};
+use crate::curve::{StrokePoint, is_closed_loop, smooth_closed, validate_stroke};
 
 /// Spacing, in CSS px, of the first resampling used for the closure and crossing checks.
 pub const FINE_SPACING_PX: f64 = 2.0;
@@ -51,11 +52,7 @@ pub(crate) fn closed_loop_in_screen(
     if fine.len() < 4 {
         return Err(CreateError::NoArea);
     }
-    let grid = SegmentGrid::new(
-        fine.windows(2).map(|w| [w[0], w[1]]).collect(),
-        2.0 * FINE_SPACING_PX,
-    );
-    let crossings = grid.chain_crossings(false);
+    let crossings = self_crossings(&fine, false);
     let loop_points = if crossings.is_empty() {
         if !is_closed_loop(stroke, close_tolerance_px) {
             return Err(CreateError::NotClosed);
@@ -65,15 +62,14 @@ pub(crate) fn closed_loop_in_screen(
         }
         fine
     } else {
-        trim_overshoot(&fine, &grid, &crossings)?
+        trim_overshoot(&fine, &crossings)?
     };
     // The closing edge must not cross the rest either.
-    let closed = SegmentGrid::closed(&loop_points, 2.0 * FINE_SPACING_PX);
-    if !closed.chain_crossings(true).is_empty() {
+    if !self_crossings(&loop_points, true).is_empty() {
         return Err(CreateError::SelfCrossing);
     }
-    let area = polygon::signed_area(&loop_points).abs();
-    let length = polygon::perimeter(&loop_points);
+    let area = signed_area(&loop_points).abs();
+    let length = perimeter(&loop_points);
     if area < MIN_AREA_PX2 || 4.0 * std::f64::consts::PI * area < MIN_ROUNDNESS * length * length {
         return Err(CreateError::NoArea);
     }
@@ -84,7 +80,6 @@ pub(crate) fn closed_loop_in_screen(
 /// cut-off head and tail are short and no other crossing lies inside the loop.
 fn trim_overshoot(
     points: &[DVec2],
-    grid: &SegmentGrid,
     crossings: &[(usize, usize)],
 ) -> Result<Vec<DVec2>, CreateError> {
     let Some(&(a, b)) = crossings.iter().max_by_key(|&&(a, b)| b - a) else {
@@ -98,9 +93,8 @@ fn trim_overshoot(
     if kept < (1.0 - MAX_OVERSHOOT) * total || crossings.iter().any(|pair| is_inner(&pair)) {
         return Err(CreateError::SelfCrossing);
     }
-    let [a0, a1] = grid.segment(a);
-    let [b0, b1] = grid.segment(b);
-    let t = polygon::crossing(a0, a1, b0, b1).unwrap_or(0.0);
+    let (a0, a1) = (points[a], points[a + 1]);
+    let t = segment_crossing(a0, a1, points[b], points[b + 1]).unwrap_or(0.0);
     let mut loop_points = vec![a0.lerp(a1, t)];
     loop_points.extend_from_slice(&points[a + 1..=b]);
     Ok(loop_points)
@@ -123,17 +117,6 @@ pub(crate) fn loop_on_plane(
         .collect()
 }
 
-/// Resamples a closed polygon at an even step close to `spacing`.
-pub(crate) fn resample_closed(points: &[DVec2], spacing: f64) -> Vec<DVec2> {
-    let mut open: Vec<StrokePoint> = points.iter().map(|&p| StrokePoint::new(p, 0.5)).collect();
-    if let Some(&first) = open.first() {
-        open.push(first);
-    }
-    let mut even: Vec<DVec2> = resample(&open, spacing).iter().map(|p| p.pos).collect();
-    even.pop();
-    even
-}
-
 /// The final outline at the mesh spacing: resampled, smoothed, resampled again and checked
 /// to be simple (smoothing a very narrow neck can make it cross itself).
 pub(crate) fn even_outline(
@@ -150,10 +133,7 @@ pub(crate) fn even_outline(
     if outline.len() < 3 {
         return Err(CreateError::NoArea);
     }
-    if !SegmentGrid::closed(&outline, spacing)
-        .chain_crossings(true)
-        .is_empty()
-    {
+    if !self_crossings(&outline, true).is_empty() {
         return Err(CreateError::SelfCrossing);
     }
     Ok(outline)
@@ -183,7 +163,7 @@ mod tests {
     #[test]
     fn a_nearly_closed_circle_is_closed() {
         let points = closed_loop_in_screen(&circle(0.97), 40.0).unwrap();
-        let area = polygon::signed_area(&points).abs();
+        let area = signed_area(&points).abs();
         assert!(
             (area - 0.5 * TAU * 100.0 * 100.0).abs() < 0.05 * area,
             "{area}"
@@ -214,7 +194,7 @@ mod tests {
     #[test]
     fn an_overshoot_is_trimmed() {
         let points = closed_loop_in_screen(&overshooting_circle(), 40.0).unwrap();
-        let length = polygon::perimeter(&points);
+        let length = perimeter(&points);
         assert!((length - TAU * 100.0).abs() < 0.01 * length, "{length}");
     }
 
@@ -258,7 +238,7 @@ mod tests {
         for (outline, tolerance) in [(ellipse, 0.03), (square, 0.15)] {
             let outline = even_outline(&outline, 0.05).unwrap();
             let n = outline.len();
-            let mean = polygon::perimeter(&outline) / n as f64;
+            let mean = perimeter(&outline) / n as f64;
             for i in 0..n {
                 let step = outline[i].distance(outline[(i + 1) % n]);
                 assert!(

@@ -21,8 +21,7 @@ use glam::DVec2;
 use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
 
 use super::CreateError;
-use super::polygon;
-use super::segment_grid::SegmentGrid;
+use crate::curve::polyline::{SegmentGrid, centroid, contains};
 
 /// Lattice points closer than this many spacings to the outline are dropped.
 const CLEARANCE: f64 = 0.6;
@@ -78,7 +77,7 @@ pub(crate) fn triangulate(outline: &[DVec2], spacing: f64) -> Result<PlanarMesh,
 /// Points of the triangular lattice with the given spacing, centred on the outline's
 /// centroid, inside the outline and at least [`CLEARANCE`] spacings away from it.
 fn lattice_points(outline: &[DVec2], spacing: f64, grid: &SegmentGrid) -> Vec<DVec2> {
-    let centre = polygon::centroid(outline);
+    let centre = centroid(outline);
     let (lo, hi) = outline
         .iter()
         .fold((centre, centre), |(lo, hi), &p| (lo.min(p), hi.max(p)));
@@ -187,7 +186,7 @@ fn inside_triangles(cdt: &Cdt, outline: &[DVec2], interior: &[DVec2]) -> Vec<[u3
     for face in cdt.inner_faces() {
         let [a, b, c] = face.vertices().map(|v| v.fix().index() as u32);
         let is_inside = a.max(b).max(c) as usize >= n
-            || polygon::contains(outline, (point(a) + point(b) + point(c)) / 3.0);
+            || contains(outline, (point(a) + point(b) + point(c)) / 3.0);
         if !is_inside {
             continue;
         }
@@ -282,7 +281,7 @@ mod tests {
             })
             .inspect(|&a| assert!(a > 0.0))
             .sum();
-        assert!((area - polygon::signed_area(&outline)).abs() < 1e-9);
+        assert!((area - crate::curve::polyline::signed_area(&outline)).abs() < 1e-9);
         assert!(min_angle_deg(&mesh) > 25.0, "{}", min_angle_deg(&mesh));
     }
 
@@ -297,7 +296,7 @@ mod tests {
             let waist = 0.02 + 0.5 * (2.0 * t).sin().powi(2);
             outline.push(DVec2::new(1.5 * t.cos(), waist * t.sin()));
         }
-        let outline = super::super::outline::resample_closed(&outline, spacing);
+        let outline = crate::curve::polyline::resample_closed(&outline, spacing);
         let mesh = triangulate(&outline, spacing).unwrap();
         let n = mesh.n_boundary as u32;
         for t in &mesh.triangles {

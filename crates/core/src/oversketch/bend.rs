@@ -26,12 +26,12 @@
 
 use glam::{DVec2, DVec3};
 
-use super::polyline::cumulative_lengths;
 use super::{
     BLEND_WIDTH, OversketchError, OversketchRoi, blend_weight, map_to_stroke, part_roi,
     roi_from_displacements,
 };
 use crate::camera::Camera;
+use crate::curve::polyline::relative_arclengths;
 use crate::deform::{DeformError, EditParams, HandleFit, HandlePoint, LaplacianEdit};
 use crate::mesh::{Mesh, VertexId};
 use crate::silhouette::SilhouettePoint;
@@ -224,19 +224,10 @@ pub const BLEND_GAP_PX: f64 = 10.0;
 /// width at each end scaled by that end's gap (px) between the handle and the stroke: a
 /// stroke that starts on the outline needs no blend there and is followed all the way.
 fn blend_weights(handle: &[DVec2], gaps: [f64; 2]) -> Vec<f64> {
-    let cumulative = cumulative_lengths(handle);
-    let total = cumulative.last().copied().unwrap_or(0.0);
     let [start_width, end_width] = gaps.map(|gap| BLEND_WIDTH * (gap / BLEND_GAP_PX).min(1.0));
-    let last = (handle.len().max(2) - 1) as f64;
-    cumulative
-        .iter()
-        .enumerate()
-        .map(|(i, &s)| {
-            let r = if total > 0.0 {
-                s / total
-            } else {
-                i as f64 / last
-            };
+    relative_arclengths(handle)
+        .into_iter()
+        .map(|r| {
             if r < 0.5 {
                 blend_weight(r, start_width)
             } else {

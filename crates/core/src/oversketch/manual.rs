@@ -19,10 +19,12 @@ use serde::{Deserialize, Serialize};
 
 use super::bend::{BendOptions, HandleCurve, bend};
 use super::pipeline::{piece_points, seen_silhouettes};
-use super::polyline::{closest_point, cumulative_lengths, point_at, resample};
 use super::track::Track;
 use super::{OversketchError, Oversketched, handle_points, simplify_stroke};
 use crate::camera::Camera;
+use crate::curve::polyline::{
+    closest_point, cumulative_lengths, distance_to_polyline, point_at, resample,
+};
 use crate::deform::HandlePoint;
 use crate::geometry::Bvh;
 use crate::mesh::Mesh;
@@ -78,8 +80,7 @@ pub fn pick_handle(
         if polyline.len() < 2 {
             return false;
         }
-        let cumulative = cumulative_lengths(polyline);
-        let is_near = |p: DVec2| distance_to(polyline, &cumulative, p).1 <= PICK_DISTANCE_PX;
+        let is_near = |p: DVec2| distance_to_polyline(p, polyline) <= PICK_DISTANCE_PX;
         let near = samples.iter().filter(|&&p| is_near(p)).count();
         is_near(from) && is_near(to) && near as f64 >= PICK_SHARE * samples.len() as f64
     };
@@ -176,16 +177,14 @@ fn silhouette_piece(
         .iter()
         .enumerate()
         .filter(|(_, polyline)| polyline.len() >= 2)
-        .map(|(i, polyline)| {
-            let cumulative = cumulative_lengths(polyline);
-            (i, distance_to(polyline, &cumulative, via).1)
-        })
+        .map(|(i, polyline)| (i, distance_to_polyline(via, polyline)))
         .min_by(|a, b| a.1.total_cmp(&b.1))
         .filter(|&(_, distance)| distance <= PICK_DISTANCE_PX)?;
     let polyline = &polylines[nearest.0];
     let track = Track::new(polyline)?;
     let cumulative = cumulative_lengths(polyline);
-    let [s_from, s_via, s_to] = [from, via, to].map(|p| closest_point(polyline, &cumulative, p).0);
+    let [s_from, s_via, s_to] =
+        [from, via, to].map(|p| closest_point(polyline, &cumulative, p).arclength);
     let (start, end) = if track.is_closed() {
         let length = track.length();
         let forward = (s_to - s_from).rem_euclid(length);
@@ -248,11 +247,4 @@ fn stroke_midpoint(stroke: &[DVec2]) -> DVec2 {
     let cumulative = cumulative_lengths(stroke);
     let half = 0.5 * cumulative.last().copied().unwrap_or(0.0);
     point_at(stroke, &cumulative, half)
-}
-
-/// The arclength of the point of `polyline` (at least two points) nearest `p`, and its
-/// distance from `p`.
-fn distance_to(polyline: &[DVec2], cumulative: &[f64], p: DVec2) -> (f64, f64) {
-    let (s, _) = closest_point(polyline, cumulative, p);
-    (s, point_at(polyline, cumulative, s).distance(p))
 }

@@ -10,7 +10,9 @@
 
 use glam::DVec2;
 
-use super::polyline::{closest_point, cumulative_lengths, point_at, segment_at};
+use crate::curve::polyline::{
+    closest_point, cumulative_lengths, point_at, relative_arclengths, segment_at,
+};
 
 /// Fraction of the handle's arclength, at each end, that blends from the silhouette to the
 /// stroke (SEED's `ω = 0.2`).
@@ -47,7 +49,8 @@ pub fn map_point_to_stroke(handle: &[DVec2], stroke: &[DVec2], p: DVec2) -> DVec
     if handle_length <= 0.0 || stroke_length <= 0.0 {
         return stroke[0];
     }
-    let (s, direction) = closest_point(handle, &handle_cumulative, p);
+    let closest = closest_point(handle, &handle_cumulative, p);
+    let (s, direction) = (closest.arclength, closest.direction);
     let offset = direction.perp_dot(p - point_at(handle, &handle_cumulative, s));
     let s_on_stroke = s / handle_length * stroke_length;
     let i = segment_at(&stroke_cumulative, s_on_stroke);
@@ -88,20 +91,6 @@ pub fn blend_ends(handle: &[DVec2], targets: &[DVec2], width: f64) -> Vec<DVec2>
         .zip(handle.iter().zip(targets))
         .map(|(r, (&q, &p))| q.lerp(p, blend_weight(r, width)))
         .collect()
-}
-
-/// Relative arclength of each point in `[0, 1]`; by index when the length is zero.
-fn relative_arclengths(points: &[DVec2]) -> Vec<f64> {
-    let cumulative = cumulative_lengths(points);
-    let Some(&length) = cumulative.last() else {
-        return Vec::new();
-    };
-    if length > 0.0 {
-        cumulative.iter().map(|s| s / length).collect()
-    } else {
-        let last = (points.len() - 1).max(1) as f64;
-        (0..points.len()).map(|i| i as f64 / last).collect()
-    }
 }
 
 #[cfg(test)]

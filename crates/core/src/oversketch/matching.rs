@@ -19,10 +19,25 @@
 
 use glam::DVec2;
 
-use super::polyline::{cumulative_lengths, simplify_stroke};
 use super::scoring::{Scorer, search};
 use super::track::Track;
 use super::turning::TurningSummary;
+use crate::curve::polyline::{cumulative_lengths, simplify};
+
+/// Spacing of the even resampling in [`simplify_stroke`], in px.
+pub const STROKE_SPACING_PX: f64 = 2.0;
+/// Douglas–Peucker tolerance of [`simplify_stroke`], in px.
+pub const STROKE_TOLERANCE_PX: f64 = 1.0;
+
+/// Simplifies a drawn stroke as SilSketch does before matching (Nealen's dissertation §5.4,
+/// §5.4.2): even resampling at [`STROKE_SPACING_PX`] (so bursts and gaps of pointer events
+/// weigh alike), then Douglas–Peucker at [`STROKE_TOLERANCE_PX`].
+///
+/// The first and last points are kept exactly. Fewer than two points, or a stroke of zero
+/// length, come back as at most one point.
+pub fn simplify_stroke(points: &[DVec2]) -> Vec<DVec2> {
+    simplify(points, STROKE_SPACING_PX, STROKE_TOLERANCE_PX)
+}
 
 /// Weights and limits of [`match_stroke`].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -245,6 +260,24 @@ mod tests {
                 DVec2::new(x, 300.0 + 30.0 * (x / 60.0).sin())
             })
             .collect()
+    }
+
+    #[test]
+    fn simplified_stroke_keeps_ends_and_shape() {
+        // A dense, jittery half circle of radius 100 px.
+        let raw: Vec<DVec2> = (0..=500)
+            .map(|k| {
+                let t = std::f64::consts::PI * k as f64 / 500.0;
+                (100.0 + 0.2 * (37.0 * t).sin()) * DVec2::new(t.cos(), t.sin())
+            })
+            .collect();
+        let simple = simplify_stroke(&raw);
+        assert_eq!(simple.first(), raw.first());
+        assert_eq!(simple.last(), raw.last());
+        assert!(simple.len() < 40, "{} points", simple.len());
+        for p in &simple {
+            assert!((p.length() - 100.0).abs() < 1.5);
+        }
     }
 
     #[test]

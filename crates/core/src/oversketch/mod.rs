@@ -28,7 +28,6 @@ mod matching;
 mod mixture;
 mod part_roi;
 mod pipeline;
-mod polyline;
 mod roi;
 mod scoring;
 mod track;
@@ -40,12 +39,13 @@ pub use manual::{
     oversketch_manual, pick_handle,
 };
 pub use mapping::{BLEND_WIDTH, blend_ends, blend_weight, map_point_to_stroke, map_to_stroke};
-pub use matching::{Match, MatchParams, match_stroke};
+pub use matching::{
+    Match, MatchParams, STROKE_SPACING_PX, STROKE_TOLERANCE_PX, match_stroke, simplify_stroke,
+};
 pub use mixture::Mixture;
 pub use part_roi::{BACKGROUND_SAMPLES, MAX_PART_SHARE, MIN_SEEDS, PART_SMOOTHNESS, part_roi};
 pub use pipeline::{
     OversketchError, Oversketched, SOFT_FIT_WEIGHT, oversketch, oversketch_with, preview_handle,
 };
-pub use polyline::{STROKE_SPACING_PX, STROKE_TOLERANCE_PX, simplify_stroke};
 pub use roi::{OversketchRoi, ROI_RADIUS_FACTOR, roi_from_displacements};
 pub use track::{CLOSED_TOLERANCE_PX, handle_points};

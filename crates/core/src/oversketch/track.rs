@@ -7,8 +7,10 @@
 
 use glam::DVec2;
 
-use super::polyline::{cumulative_lengths, douglas_peucker, index_at, point_at};
 use super::turning::TurningSummary;
+use crate::curve::polyline::{
+    cumulative_lengths, douglas_peucker, index_at, point_at, point_at_index,
+};
 
 /// A silhouette whose last point lies this close to its first (px) is closed.
 pub const CLOSED_TOLERANCE_PX: f64 = 1e-6;
@@ -136,7 +138,7 @@ pub fn handle_points(silhouette: &[DVec2], start: f64, end: f64) -> Vec<(f64, DV
     };
     let at = |t: f64| {
         let t = wrap(t);
-        (t, super::polyline::point_at_index(silhouette, t))
+        (t, point_at_index(silhouette, t))
     };
     let mut out = vec![at(start)];
     if start <= end {

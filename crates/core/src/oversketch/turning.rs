@@ -119,7 +119,7 @@ impl TurningSummary {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::oversketch::polyline::cumulative_lengths;
+    use crate::curve::polyline::cumulative_lengths;
     use std::f64::consts::PI;
 
     fn summary(points: &[DVec2]) -> TurningSummary {

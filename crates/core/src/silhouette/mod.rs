@@ -34,6 +34,7 @@ use glam::{DVec2, DVec3};
 pub use edges::edge_silhouettes;
 
 use crate::camera::Camera;
+use crate::curve::polyline;
 use crate::geometry::{Bvh, vertex_normals};
 use crate::mesh::{Mesh, VertexId};
 
@@ -74,14 +75,11 @@ pub struct Silhouette {
 impl Silhouette {
     /// Length on screen in CSS px, including the closing segment of a closed curve.
     pub fn screen_length(&self) -> f64 {
-        let open: f64 = self
-            .points
-            .windows(2)
-            .map(|pair| pair[0].screen.distance(pair[1].screen))
-            .sum();
-        match (self.closed, self.points.first(), self.points.last()) {
-            (true, Some(first), Some(last)) => open + last.screen.distance(first.screen),
-            _ => open,
+        let screen = self.points.iter().map(|p| p.screen);
+        if self.closed {
+            polyline::perimeter(screen)
+        } else {
+            polyline::length(screen)
         }
     }
 }

@@ -16,6 +16,7 @@ mod triplets;
 use glam::DVec3;
 
 pub use prefactored::Prefactored;
+pub(crate) use prefactored::check_len;
 pub use sparse::SparseMatrix;
 pub use triplets::Triplets;
 

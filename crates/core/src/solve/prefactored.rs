@@ -439,7 +439,13 @@ fn subtract_fixed<T>(
     }
 }
 
-fn check_len(what: &'static str, expected: usize, found: usize) -> Result<(), SolveError> {
+/// `Ok` when a buffer named `what` has the `expected` length, else
+/// [`SolveError::DimensionMismatch`].
+pub(crate) fn check_len(
+    what: &'static str,
+    expected: usize,
+    found: usize,
+) -> Result<(), SolveError> {
     if expected == found {
         Ok(())
     } else {

@@ -10,6 +10,7 @@ use glam::{DVec2, DVec3};
 use proptest::prelude::*;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::StrokePoint;
+use sketchmesh_core::curve::polyline::distance_to_polyline;
 use sketchmesh_core::fibermesh::{
     ControlCurve, CreateError, CreateParams, Creation, CurveKind, FairSurface,
     create_converged_from_stroke, create_from_stroke, seed_from_stroke,
@@ -84,20 +85,6 @@ fn min_neighbour_cosine(mesh: &Mesh) -> f64 {
     worst
 }
 
-fn distance_to_segment(p: DVec2, a: DVec2, b: DVec2) -> f64 {
-    let ab = b - a;
-    let t = ((p - a).dot(ab) / ab.length_squared().max(1e-300)).clamp(0.0, 1.0);
-    p.distance(a + t * ab)
-}
-
-/// Distance from `p` to the closed polyline.
-fn distance_to_loop(p: DVec2, polyline: &[DVec2]) -> f64 {
-    let n = polyline.len();
-    (0..n)
-        .map(|i| distance_to_segment(p, polyline[i], polyline[(i + 1) % n]))
-        .fold(f64::INFINITY, f64::min)
-}
-
 /// The silhouette of the mesh from the camera, as the outline pixels of the union of its
 /// projected triangles rasterized at 1 px (pixel centres inside any triangle are filled;
 /// a filled pixel with an empty 4-neighbour is on the outline).
@@ -152,10 +139,12 @@ fn silhouette_pixels(mesh: &Mesh, camera: &Camera) -> Vec<DVec2> {
 /// stroke's bounding-box diagonal.
 fn silhouette_error(mesh: &Mesh, camera: &Camera, stroke: &[StrokePoint]) -> (f64, f64) {
     let polyline: Vec<DVec2> = stroke.iter().map(|p| p.pos).collect();
+    let mut looped = polyline.clone();
+    looped.push(polyline[0]);
     let outline = silhouette_pixels(mesh, camera);
     let from_outline = outline
         .iter()
-        .map(|&p| distance_to_loop(p, &polyline))
+        .map(|&p| distance_to_polyline(p, &looped))
         .fold(0.0, f64::max);
     let from_stroke = polyline
         .iter()

@@ -9,6 +9,9 @@ use std::sync::Arc;
 
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
+use sketchmesh_core::curve::polyline::{
+    cumulative_lengths, distance_to_polyline, length, resample,
+};
 use sketchmesh_core::deform::HandleFit;
 use sketchmesh_core::document::{
     CommandError, Document, Editor, FileInput, ImportInput, Model, Op, OversketchFit,
@@ -63,10 +66,6 @@ fn longest_outline(mesh: &Mesh, camera: &Camera) -> Vec<DVec2> {
     outline
 }
 
-fn length(points: &[DVec2]) -> f64 {
-    points.windows(2).map(|w| w[0].distance(w[1])).sum()
-}
-
 /// A stroke over the part of `outline` around its extreme point in `direction`, `half_span`
 /// points either side, pushed outward by `push · sin(π u)` px (0 at the ends), smoothed and
 /// resampled every 1 px.
@@ -112,28 +111,6 @@ fn smooth(points: &[DVec2], half_window: usize) -> Vec<DVec2> {
         .collect()
 }
 
-fn resample(points: &[DVec2], spacing: f64) -> Vec<DVec2> {
-    let mut out = vec![points[0]];
-    for w in points.windows(2) {
-        let steps = (w[0].distance(w[1]) / spacing).ceil().max(1.0) as usize;
-        for k in 1..=steps {
-            out.push(w[0].lerp(w[1], k as f64 / steps as f64));
-        }
-    }
-    out
-}
-
-fn distance_to_polyline(p: DVec2, polyline: &[DVec2]) -> f64 {
-    polyline
-        .windows(2)
-        .map(|w| {
-            let d = w[1] - w[0];
-            let t = ((p - w[0]).dot(d) / d.length_squared().max(1e-300)).clamp(0.0, 1.0);
-            p.distance(w[0] + d * t)
-        })
-        .fold(f64::INFINITY, f64::min)
-}
-
 /// The largest distance from a stroke point in the middle 80% (by arclength) to the outline
 /// of `positions` as rendered: its visible edge silhouettes.
 fn worst_middle_distance(
@@ -145,13 +122,10 @@ fn worst_middle_distance(
     let mut moved = mesh.clone();
     moved.positions_mut().copy_from_slice(positions);
     let segments = edge_silhouettes(&moved, &Bvh::new(&moved), camera, VIEWPORT);
+    let cumulative = cumulative_lengths(stroke);
     let total = length(stroke);
-    let mut s = 0.0;
     let mut worst: f64 = 0.0;
-    for (k, &p) in stroke.iter().enumerate() {
-        if k > 0 {
-            s += p.distance(stroke[k - 1]);
-        }
+    for (&p, s) in stroke.iter().zip(cumulative) {
         if (0.1 * total..=0.9 * total).contains(&s) {
             let d = segments
                 .iter()

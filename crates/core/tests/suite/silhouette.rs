@@ -7,6 +7,7 @@ use std::f64::consts::TAU;
 
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
+use sketchmesh_core::curve::polyline;
 use sketchmesh_core::geometry::{Bvh, raycast, vertex_normals};
 use sketchmesh_core::mesh::Mesh;
 use sketchmesh_core::mesh::primitives::{icosphere, torus};
@@ -71,13 +72,8 @@ fn assert_points_on_sign_changes(mesh: &Mesh, camera: &Camera, curves: &[Silhoue
 
 /// Shoelace area in screen coordinates (y down).
 fn signed_area(curve: &Silhouette) -> f64 {
-    let n = curve.points.len();
-    (0..n)
-        .map(|i| {
-            let (p, q) = (curve.points[i].screen, curve.points[(i + 1) % n].screen);
-            0.5 * p.perp_dot(q)
-        })
-        .sum()
+    let screen: Vec<DVec2> = curve.points.iter().map(|p| p.screen).collect();
+    polyline::signed_area(&screen)
 }
 
 fn spacing_range(curve: &Silhouette) -> (f64, f64) {

@@ -4,7 +4,7 @@
 use glam::{DVec2, DVec3};
 
 use crate::camera::Camera;
-use crate::curve::{StrokePoint, resample};
+use crate::curve::polyline::resample;
 use crate::geometry::Bvh;
 use crate::mesh::{FaceId, Mesh};
 
@@ -59,16 +59,15 @@ impl Projector<'_> {
     /// first meets the surface (at most [`MAX_SPACING_PX`]), each sample with its hit (`None` where it misses). `None`
     /// overall when no point of the stroke hits.
     pub fn samples(&self, stroke: &[DVec2]) -> Option<Vec<(DVec2, Option<SurfacePoint>)>> {
-        let points: Vec<StrokePoint> = stroke.iter().map(|&s| StrokePoint::new(s, 0.5)).collect();
-        let first_hit = resample(&points, SEARCH_SPACING_PX)
-            .iter()
-            .find_map(|s| self.cast(s.pos))?;
+        let first_hit = resample(stroke, SEARCH_SPACING_PX)
+            .into_iter()
+            .find_map(|s| self.cast(s))?;
         let spacing =
             (SPACING_PER_EDGE * self.edge_length_on_screen(first_hit.face)).min(MAX_SPACING_PX);
         Some(
-            resample(&points, spacing)
-                .iter()
-                .map(|s| (s.pos, self.cast(s.pos)))
+            resample(stroke, spacing)
+                .into_iter()
+                .map(|s| (s, self.cast(s)))
                 .collect(),
         )
     }

@@ -3,6 +3,7 @@
 use glam::{DVec2, DVec3};
 
 use super::*;
+use crate::curve::polyline::distance_to_polyline;
 use crate::mesh::VertexId;
 use crate::mesh::primitives::icosphere;
 
@@ -36,19 +37,6 @@ fn wavy_stroke() -> Vec<DVec2> {
             screen(front(x, 0.15 + 0.2 * (4.0 * x).sin()))
         })
         .collect()
-}
-
-fn distance_to_segment(p: DVec2, a: DVec2, b: DVec2) -> f64 {
-    let ab = b - a;
-    let t = ((p - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0);
-    p.distance(a + ab * t)
-}
-
-fn distance_to_polyline(p: DVec2, polyline: &[DVec2]) -> f64 {
-    polyline
-        .windows(2)
-        .map(|w| distance_to_segment(p, w[0], w[1]))
-        .fold(f64::INFINITY, f64::min)
 }
 
 /// The largest gap between a triangle's centroid and the unit sphere: how far inside the

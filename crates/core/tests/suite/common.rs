@@ -6,8 +6,6 @@
 //! keep it producing the same bytes for the same document so the recorded goldens stay
 //! valid.
 
-#![allow(dead_code)] // Parts serve the property test only.
-
 use std::f64::consts::{PI, TAU};
 use std::sync::Arc;
 

@@ -5,6 +5,7 @@
 mod common;
 mod curve_edit;
 mod deform;
+mod editor_properties;
 mod fibermesh;
 mod gltf_import;
 mod gltf_testdata;

@@ -37,14 +37,12 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used)] // A panic is a test failure.
 
-mod common;
-
 use std::cell::RefCell;
 use std::collections::BTreeMap;
 use std::sync::{Arc, OnceLock};
 use std::time::Instant;
 
-use common::{
+use crate::common::{
     Digest, add_curve, digest, import_document, longest_outline, outline, oversketch,
     pushed_stroke, screen, segment, set_type, stroke_input,
 };
@@ -431,7 +429,7 @@ fn imported_shape(shape: u8, offset: DVec2) -> Op {
         1 => CREATED
             .get_or_init(|| {
                 let mut editor = Editor::new();
-                let circle = common::circle(VIEWPORT / 2.0, 110.0);
+                let circle = crate::common::circle(VIEWPORT / 2.0, 110.0);
                 editor
                     .apply(Op::Create(input(Camera::default(), &circle)))
                     .unwrap();

@@ -19,7 +19,8 @@
 //!
 //! [`oversketch`] runs all of it on a mesh: silhouettes, matching, targets unprojected at
 //! each handle point's depth, ROI and a detail-preserving [`LaplacianEdit`](crate::deform::LaplacianEdit);
-//! [`preview_handle`] shows the would-be handle while the stroke is drawn.
+//! [`preview_handle`] shows the would-be handle while the stroke is drawn ([`Outlines`] finds
+//! the silhouettes once per stroke).
 
 mod bend;
 mod manual;
@@ -44,7 +45,8 @@ pub use matching::{Match, MatchParams, match_stroke};
 pub use mixture::Mixture;
 pub use part_roi::{BACKGROUND_SAMPLES, MAX_PART_SHARE, MIN_SEEDS, PART_SMOOTHNESS, part_roi};
 pub use pipeline::{
-    OversketchError, Oversketched, SOFT_FIT_WEIGHT, oversketch, oversketch_with, preview_handle,
+    Outlines, OversketchError, Oversketched, SOFT_FIT_WEIGHT, oversketch, oversketch_with,
+    preview_handle,
 };
 pub use polyline::{STROKE_SPACING_PX, STROKE_TOLERANCE_PX, simplify_stroke};
 pub use roi::{OversketchRoi, ROI_RADIUS_FACTOR, roi_from_displacements};

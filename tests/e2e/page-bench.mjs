@@ -192,7 +192,8 @@ try {
       const mean = sorted.length ? sorted.reduce((a, b) => a + b, 0) / sorted.length : null;
       return { n: sorted.length, mean: round(mean), p50: round(at(0.5)), p95: round(at(0.95)), max: round(sorted.at(-1) ?? null) };
     };
-    pulls.push({ vertices, grab_ms: round(t.grab_ms.at(-1) ?? null), frame_ms: stats(t.frame_ms), release_ms: round(t.commit_ms.at(-1) ?? null) });
+    const pull = t.pull ?? { begin_ms: [], frame_ms: [], finish_ms: [] };
+    pulls.push({ vertices, grab_ms: round(pull.begin_ms.at(-1) ?? null), frame_ms: stats(pull.frame_ms), release_ms: round(pull.finish_ms.at(-1) ?? null) });
     console.error(`pull at ${vertices} vertices: ${JSON.stringify(pulls.at(-1))}`);
   }
 
@@ -269,7 +270,7 @@ try {
       await page.mouse.move(10, 715);
       await sleep(150);
       await screenshot(page, join(OUT_DIR, 'bench-oversketch-after.png'));
-      oversketch = { vertices, release_to_shown_ms: round(shownMs), op_ms: round(t.oversketch_ms.at(-1) ?? null) };
+      oversketch = { vertices, release_to_shown_ms: round(shownMs), op_ms: round(t.oversketch?.finish_ms.at(-1) ?? null) };
       if (shownMs === null) console.error('the over-sketch was not applied (no new op within 10 s)');
     } else {
       console.error('no lit model found in the over-sketch view');

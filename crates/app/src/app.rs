@@ -1,8 +1,11 @@
 //! The eframe app: wires input, the active tool, the editor and the 3D view together.
 //!
 //! Data flows one way: pointer samples go through the [`InputRouter`] to the tool or the
-//! camera; a finished gesture becomes one [`Op`] applied by the [`Editor`]; the view
-//! rebuilds its GPU arrays when the editor's revision changes.
+//! camera; a tool's gesture becomes one [`Op`], which the app begins as an [`Edit`] of the
+//! [`Editor`] (at pointer-down when the op previews while drawn), steps every frame within
+//! [`FRAME_BUDGET_MS`], draws, and finishes once done: the same edit `Editor::apply` runs,
+//! with no special case for any op. The view rebuilds its GPU arrays when the document drawn
+//! changes, and moves a model's vertices in place while an edit moves them.
 
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -11,7 +14,7 @@ use std::sync::Arc;
 use eframe::egui_wgpu;
 use egui::{Key, KeyboardShortcut, Modifiers};
 use sketchmesh_core::curve::{StrokePoint, process_stroke};
-use sketchmesh_core::document::{Editor, ImportInput, Op, PendingCreate};
+use sketchmesh_core::document::{Edit, Editor, ImportInput, Op, Progress};
 use sketchmesh_core::oversketch::OversketchRoi;
 
 use crate::camera::OrbitCamera;
@@ -27,6 +30,10 @@ use crate::tools::{Mode, ToolEvent, ToolOutput, ToolSet, ViewCtx};
 /// How long a status message stays up, in seconds.
 const STATUS_SECONDS: f64 = 6.0;
 
+/// How long the steps of the edit in progress may run in one frame, in ms. At least one step
+/// runs every frame, whatever it costs (a factorization can take longer).
+pub const FRAME_BUDGET_MS: f64 = 12.0;
+
 /// State shared with the page API (`window.sketchmesh`), which runs outside frames.
 pub struct Shared {
     /// The document and its history.
@@ -37,7 +44,7 @@ pub struct Shared {
     pub backend: String,
     /// Files waiting to be imported.
     pub imports: ImportQueue,
-    /// Recent pull frame costs, for the page benchmark.
+    /// Recent costs of edits, for the page benchmark.
     pub timings: clock::Timings,
 }
 
@@ -53,14 +60,18 @@ pub struct SketchApp {
     /// Samples queued by the browser's pointer listeners.
     pub web_samples: Rc<RefCell<std::collections::VecDeque<PointerSample>>>,
     geometry: Arc<SceneGeometry>,
-    /// What `geometry` was built from: the editor revision and the pending iterations.
-    geometry_source: (u64, usize),
-    /// Whether `geometry` shows a pull preview (and must be rebuilt when it ends).
-    shows_pull: bool,
-    /// Normals of the pull preview, reused between frames.
-    pull_normals: Vec<glam::DVec3>,
-    /// A shape being created, refined one iteration per frame before it is committed.
-    pending: Option<PendingCreate>,
+    /// What `geometry` was built from: the editor's revision and the edit's
+    /// ([`Edit::revision`], 0 when there is none).
+    geometry_source: (u64, u64),
+    /// The edit generation whose moved model `geometry` shows, if it shows one (it is rebuilt
+    /// when the edit stops moving it).
+    shown_motion: Option<u64>,
+    /// Normals of a moved model, reused between frames.
+    moved_normals: Vec<glam::DVec3>,
+    /// The edit in progress: begun from a tool's op, stepped every frame, finished when done.
+    edit: Option<Edit>,
+    /// Where the time of the edit in progress goes.
+    edit_clock: EditClock,
     options: ViewOptions,
     show_help: bool,
     status: Option<(String, f64)>,
@@ -104,9 +115,10 @@ impl SketchApp {
             web_samples: Default::default(),
             geometry: Arc::new(SceneGeometry::default()),
             geometry_source: (u64::MAX, 0),
-            shows_pull: false,
-            pull_normals: Vec::new(),
-            pending: None,
+            shown_motion: None,
+            moved_normals: Vec::new(),
+            edit: None,
+            edit_clock: EditClock::default(),
             options: ViewOptions {
                 wireframe: false,
                 grid: true,
@@ -124,84 +136,123 @@ impl SketchApp {
         self.shared.clone()
     }
 
-    /// Applies `op`, turning a refusal into a status message. Nothing changes on failure.
-    /// A creation starts refining instead, and shows at once; any other op first commits
-    /// a creation in progress, so ops stay in the order the user made them.
-    fn apply(&mut self, op: Op, now: f64) {
-        self.commit_pending(now);
+    /// Begins `op` (as a gesture when its stroke is still being drawn) after finishing the
+    /// edit in progress, so ops are logged in the order they were made; this frame's steps
+    /// run it. A refusal becomes a status message; nothing changes then.
+    fn begin(&mut self, op: Op, is_gesture: bool, now: f64) {
+        self.finish_edit(now);
+        let name = op.name();
         let started = clock::now_ms();
-        let (is_pull, is_oversketch) = (matches!(op, Op::Pull(_)), matches!(op, Op::Oversketch(_)));
-        let result = match op {
-            Op::Create(input) => PendingCreate::start(input).map(|p| self.pending = Some(p)),
-            op => self.shared.borrow_mut().editor.apply(op),
+        let begun = {
+            let editor = &self.shared.borrow().editor;
+            if is_gesture {
+                editor.begin_gesture(op)
+            } else {
+                editor.begin(op)
+            }
         };
         let ms = clock::now_ms() - started;
-        {
-            let timings = &mut self.shared.borrow_mut().timings;
-            if is_pull {
-                clock::Timings::record(&mut timings.commit_ms, ms);
-            } else if is_oversketch {
-                clock::Timings::record(&mut timings.oversketch_ms, ms);
+        match begun {
+            Ok(edit) => {
+                let timings = &mut self.shared.borrow_mut().timings;
+                self.edit_clock = EditClock::begun(name, ms, is_gesture, timings);
+                self.edit = Some(edit);
             }
-        }
-        if let Err(e) = result {
-            self.set_status(e.to_string(), now);
+            Err(e) => self.set_status(e.to_string(), now),
         }
     }
 
-    /// Runs one more iteration of a creation in progress; commits it once converged.
-    fn refine_pending(&mut self, ctx: &egui::Context) {
-        let Some(pending) = self.pending.as_mut() else {
+    /// Applies `op` at once (begun and finished in this call).
+    fn apply_now(&mut self, op: Op, now: f64) {
+        self.begin(op, false, now);
+        self.finish_edit(now);
+    }
+
+    /// Runs the steps of the edit in progress while [`FRAME_BUDGET_MS`] lasts (at least
+    /// one), and finishes it once done.
+    fn step_edit(&mut self, ctx: &egui::Context) {
+        let now = ctx.input(|i| i.time);
+        let Some(edit) = self.edit.as_mut() else {
             return;
         };
-        match pending.step() {
-            Ok(false) => ctx.request_repaint(),
-            Ok(true) => self.commit_pending(ctx.input(|i| i.time)),
-            Err(e) => {
-                self.pending = None;
-                self.status = Some((e.to_string(), ctx.input(|i| i.time) + STATUS_SECONDS));
-            }
-        }
-    }
-
-    fn commit_pending(&mut self, now: f64) {
-        let Some(pending) = self.pending.take() else {
-            return;
-        };
-        let result = self.shared.borrow_mut().editor.commit_create(pending);
-        if let Err(e) = result {
-            self.set_status(e.to_string(), now);
-        }
-    }
-
-    /// Lets a pull in progress follow the pointer, timing it for the page API.
-    fn tick_tools(&mut self, ctx: &egui::Context) {
+        let was_gesture = edit.is_gesture();
         let started = clock::now_ms();
-        let output = self.tools.tick();
-        if self.tools.live_pull().is_some() {
-            let ms = clock::now_ms() - started;
-            clock::Timings::record(&mut self.shared.borrow_mut().timings.frame_ms, ms);
-            ctx.request_repaint();
+        let stepped = loop {
+            match edit.step() {
+                Ok(Progress::Working) if clock::now_ms() - started < FRAME_BUDGET_MS => {}
+                other => break other,
+            }
+        };
+        let ms = clock::now_ms() - started;
+        self.edit_clock
+            .stepped(ms, was_gesture, &mut self.shared.borrow_mut().timings);
+        match stepped {
+            Ok(Progress::Done) => self.finish_edit(now),
+            // More work, or a gesture whose next samples may come from the page's listeners.
+            Ok(Progress::Working | Progress::Waiting) => ctx.request_repaint(),
+            Err(e) => {
+                self.edit = None;
+                self.set_status(e.to_string(), now);
+            }
         }
-        self.take_output(output, ctx.input(|i| i.time));
+    }
+
+    /// Finishes the edit in progress, if any (closing its gesture and running the steps it
+    /// has left); a refusal becomes a status message.
+    fn finish_edit(&mut self, now: f64) {
+        let Some(edit) = self.edit.take() else {
+            return;
+        };
+        let started = clock::now_ms();
+        let result = edit.finish(&mut self.shared.borrow_mut().editor);
+        let ms = clock::now_ms() - started;
+        self.edit_clock
+            .finished(ms, &mut self.shared.borrow_mut().timings);
+        if let Err(e) = result {
+            self.set_status(e.to_string(), now);
+        }
+    }
+
+    /// Drops the edit in progress if its gesture is still going on: nothing changes.
+    fn cancel_gesture(&mut self) {
+        if let Some(edit) = self.edit.take_if(|edit| edit.is_gesture()) {
+            edit.cancel();
+        }
     }
 
     /// Applies what a tool produced.
     fn take_output(&mut self, output: ToolOutput, now: f64) {
+        let gesture = self.edit.as_mut().filter(|edit| edit.is_gesture());
         match output {
             ToolOutput::None => {}
-            ToolOutput::Commit(op) => self.apply(op, now),
+            ToolOutput::Commit(op) => self.begin(op, false, now),
             ToolOutput::CommitAll(ops) => {
                 for op in ops {
-                    self.apply(op, now);
+                    self.begin(op, false, now);
                 }
             }
+            ToolOutput::Begin(op) => self.begin(op, true, now),
+            ToolOutput::Extend(sample) => {
+                if let Some(edit) = gesture {
+                    edit.extend(sample);
+                }
+            }
+            ToolOutput::End(sample) => {
+                if let Some(edit) = gesture {
+                    edit.extend(sample);
+                    edit.end_gesture();
+                }
+            }
+            ToolOutput::Cancel => self.cancel_gesture(),
             ToolOutput::Refused(message) => self.set_status(message, now),
         }
     }
 
-    /// Switches the tool mode (toolbar, keys).
+    /// Switches the tool mode (toolbar, keys); a gesture in progress is dropped.
     fn set_mode(&mut self, mode: Mode, now: f64) {
+        if mode != self.tools.mode() {
+            self.cancel_gesture();
+        }
         let dropped = self.tools.set_mode(mode);
         self.take_output(dropped, now);
     }
@@ -220,7 +271,7 @@ impl SketchApp {
         if let Some(input) = self.announced_import.take() {
             let name = input.files[0].name.clone();
             self.status = None;
-            self.apply(Op::Import(input), now);
+            self.apply_now(Op::Import(input), now);
             if self.status.is_none() {
                 self.set_status(format!("Imported {name}."), now);
                 self.frame_after_rebuild = true;
@@ -254,7 +305,7 @@ impl SketchApp {
     }
 
     fn export(&mut self, now: f64) {
-        self.commit_pending(now);
+        self.finish_edit(now);
         let bytes = sketchmesh_core::io::write_glb(self.shared.borrow().editor.document());
         let message = match files::download(&bytes) {
             Ok(name) => format!("Exported {name} ({:.1} MB).", bytes.len() as f64 / 1e6),
@@ -274,10 +325,10 @@ impl SketchApp {
                 || i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::Y))
         });
         if redo {
-            self.apply(Op::Redo, now);
+            self.begin(Op::Redo, false, now);
         }
         if ctx.input_mut(|i| i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::Z))) {
-            self.apply(Op::Undo, now);
+            self.begin(Op::Undo, false, now);
         }
         if ctx.input_mut(|i| i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::O))) {
             self.import_files(ctx);
@@ -356,23 +407,20 @@ impl SketchApp {
                         .camera
                         .apply(*action, viewport.height().into()),
                     Routed::Tool(event) => {
+                        // A new gesture acts on the document with the edit in progress
+                        // committed (a shape still refining is finished first).
+                        if matches!(event, ToolEvent::Begin(_)) {
+                            self.cancel_gesture();
+                            self.finish_edit(now);
+                        }
                         let view = ViewCtx {
                             camera: self.shared.borrow().camera.camera(),
                             viewport,
                         };
-                        let started = clock::now_ms();
                         let output = {
                             let shared = self.shared.borrow();
                             self.tools.on_event(event, &view, shared.editor.document())
                         };
-                        if matches!(event, ToolEvent::Begin(_)) && self.tools.live_pull().is_some()
-                        {
-                            let ms = clock::now_ms() - started;
-                            clock::Timings::record(
-                                &mut self.shared.borrow_mut().timings.grab_ms,
-                                ms,
-                            );
-                        }
                         self.take_output(output, now);
                     }
                 }
@@ -384,7 +432,6 @@ impl SketchApp {
         let viewport = ui.max_rect();
         let response = ui.allocate_rect(viewport, egui::Sense::hover());
         self.handle_pointer(ui.ctx(), viewport);
-        self.tick_tools(ui.ctx());
         if response.hovered() {
             let (scroll, zoom) = ui.input(|i| (i.smooth_scroll_delta.y, i.zoom_delta()));
             let mut shared = self.shared.borrow_mut();
@@ -396,7 +443,7 @@ impl SketchApp {
                 shared.camera.dolly(1.0 / f64::from(zoom));
             }
         }
-        self.refine_pending(ui.ctx());
+        self.step_edit(ui.ctx());
         self.update_geometry();
         if self.has_renderer {
             let camera = self.shared.borrow().camera.camera();
@@ -415,7 +462,7 @@ impl SketchApp {
                 .add(egui_wgpu::Callback::new_paint_callback(viewport, callback));
         }
         self.live_stroke_ui(ui, viewport);
-        let idle = self.stroke_preview().is_none() && self.pending.is_none();
+        let idle = self.stroke_preview().is_none() && self.edit.is_none();
         if self.shared.borrow().editor.document().is_empty() && idle {
             ui.painter().text(
                 viewport.center_bottom() - egui::vec2(0.0, 48.0),
@@ -427,43 +474,40 @@ impl SketchApp {
         }
     }
 
-    /// Rebuilds the GPU arrays when the document or a creation in progress changed, and
-    /// moves the pulled model's vertices in place while a pull is previewed.
+    /// Rebuilds the GPU arrays when the document drawn changed (the editor's, or the one the
+    /// edit in progress shows, such as a shape being created), and moves a model's vertices
+    /// in place while the edit moves them (a pull's preview).
     fn update_geometry(&mut self) {
-        let pull_ended = self.shows_pull && self.tools.live_pull().is_none();
-        if pull_ended {
-            self.geometry_source = (u64::MAX, 0);
-            self.shows_pull = false;
-        }
+        let edit = self.edit.as_ref();
         let source = (
             self.shared.borrow().editor.revision(),
-            self.pending.as_ref().map_or(0, PendingCreate::iterations),
+            edit.map_or(0, Edit::revision),
         );
-        if self.geometry_source != source {
-            let pending = self.pending.as_ref().and_then(PendingCreate::model);
-            let generation = self.geometry.generation + 1;
-            self.geometry = Arc::new(SceneGeometry::build(
-                self.shared.borrow().editor.document(),
-                pending.as_ref(),
-                generation,
-            ));
-            self.geometry_source = source;
-            if std::mem::take(&mut self.frame_after_rebuild) {
-                self.frame_all();
-            }
-        }
-        if let Some(session) = self.tools.live_pull() {
+        let moved = edit.and_then(Edit::moved_model);
+        let motion_ended = self.shown_motion.is_some() && moved.is_none();
+        let rebuilt = source != self.geometry_source || motion_ended;
+        if rebuilt {
             let shared = self.shared.borrow();
-            let index = session.model_index();
-            if let Some(model) = shared.editor.document().models.get(index) {
-                Arc::make_mut(&mut self.geometry).move_model(
-                    index,
-                    model,
-                    session.positions(),
-                    &mut self.pull_normals,
-                );
-                self.shows_pull = true;
-            }
+            let document = edit.map_or(shared.editor.document(), Edit::document);
+            let generation = self.geometry.generation + 1;
+            self.geometry = Arc::new(SceneGeometry::build(document, generation));
+            self.geometry_source = source;
+            self.shown_motion = None;
+        }
+        if let (Some(edit), Some((index, positions))) = (edit, moved)
+            && self.shown_motion != Some(edit.generation())
+            && let Some(model) = edit.document().models.get(index)
+        {
+            Arc::make_mut(&mut self.geometry).move_model(
+                index,
+                model,
+                positions,
+                &mut self.moved_normals,
+            );
+            self.shown_motion = Some(edit.generation());
+        }
+        if rebuilt && std::mem::take(&mut self.frame_after_rebuild) {
+            self.frame_all();
         }
     }
 
@@ -472,32 +516,22 @@ impl SketchApp {
         self.tools.preview()
     }
 
-    /// Highlights the silhouette piece an over-sketch stroke would replace, or the picked
-    /// handle with its ends marked, and says what to do next.
+    /// Highlights the silhouette piece an over-sketch stroke would replace (shown by the edit
+    /// in progress), or the picked handle with its ends marked, and says what to do next.
     fn handle_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
         if let Some(hint) = self.tools.hint() {
             hint_ui(ui, viewport, hint);
         }
-        let Some(handle) = self.tools.handle() else {
-            return;
-        };
-        let color = if handle.confident {
-            egui::Color32::from_rgb(90, 220, 120)
-        } else {
-            egui::Color32::from_rgb(240, 150, 60)
-        };
-        let points: Vec<egui::Pos2> = handle
-            .points
-            .iter()
-            .map(|p| viewport.min + egui::vec2(p.x as f32, p.y as f32))
-            .collect();
-        if handle.croppable {
-            for end in [points.first(), points.last()].into_iter().flatten() {
-                ui.painter().circle_filled(*end, 7.0, color);
-            }
+        let picked = self
+            .tools
+            .handle()
+            .map(|h| (h.points.as_slice(), h.confident, h.croppable));
+        let outline = (self.edit.as_ref())
+            .and_then(Edit::outline)
+            .map(|o| (o.points.as_slice(), o.is_confident, false));
+        for (points, confident, croppable) in picked.into_iter().chain(outline) {
+            outline_ui(ui, viewport, points, confident, croppable);
         }
-        ui.painter()
-            .add(egui::Shape::line(points, egui::Stroke::new(4.0, color)));
     }
 
     /// Draws the stroke in progress, smoothed as it will be stored, with pressure widths.
@@ -512,6 +546,33 @@ impl SketchApp {
             stroke_ui(ui, viewport, raw, egui::Color32::from_rgb(242, 199, 82));
         }
     }
+}
+
+/// A piece of outline on screen: green when confident, orange otherwise; the ends marked
+/// when they can be dragged.
+fn outline_ui(
+    ui: &egui::Ui,
+    viewport: egui::Rect,
+    points: &[glam::DVec2],
+    confident: bool,
+    croppable: bool,
+) {
+    let color = if confident {
+        egui::Color32::from_rgb(90, 220, 120)
+    } else {
+        egui::Color32::from_rgb(240, 150, 60)
+    };
+    let points: Vec<egui::Pos2> = points
+        .iter()
+        .map(|p| viewport.min + egui::vec2(p.x as f32, p.y as f32))
+        .collect();
+    if croppable {
+        for end in [points.first(), points.last()].into_iter().flatten() {
+            ui.painter().circle_filled(*end, 7.0, color);
+        }
+    }
+    ui.painter()
+        .add(egui::Shape::line(points, egui::Stroke::new(4.0, color)));
 }
 
 /// What the active tool asks for next, centred at the top of the viewport.
@@ -563,8 +624,8 @@ impl eframe::App for SketchApp {
             })
             .inner;
         match action {
-            Some(panels::toolbar::Action::Undo) => self.apply(Op::Undo, now),
-            Some(panels::toolbar::Action::Redo) => self.apply(Op::Redo, now),
+            Some(panels::toolbar::Action::Undo) => self.begin(Op::Undo, false, now),
+            Some(panels::toolbar::Action::Redo) => self.begin(Op::Redo, false, now),
             Some(panels::toolbar::Action::FrameAll) => self.frame_all(),
             Some(panels::toolbar::Action::ResetView) => {
                 self.shared.borrow_mut().camera = OrbitCamera::default()
@@ -577,6 +638,60 @@ impl eframe::App for SketchApp {
         egui::CentralPanel::no_frame().show(ui, |ui| self.viewport_ui(ui));
         let backend = self.shared.borrow().backend.clone();
         panels::help::help_ui(&ctx, &mut self.show_help, &backend, self.router.pen_seen());
+    }
+}
+
+/// The costs of the edit in progress, recorded in [`clock::Timings`] under its op's name as
+/// they become known (see [`clock::EditTimings`]).
+#[derive(Debug, Default)]
+struct EditClock {
+    name: &'static str,
+    /// The begin and the steps of its first frame, while the gesture goes on; `None` once
+    /// recorded.
+    begin_ms: Option<f64>,
+    /// The work since the input was complete, so far.
+    finish_ms: f64,
+}
+
+impl EditClock {
+    /// The clock of an edit of `name` whose begin took `ms`.
+    fn begun(name: &'static str, ms: f64, is_gesture: bool, timings: &mut clock::Timings) -> Self {
+        let mut edit_clock = EditClock {
+            name,
+            begin_ms: Some(ms),
+            finish_ms: 0.0,
+        };
+        if !is_gesture {
+            edit_clock.record_begin(timings);
+        }
+        edit_clock
+    }
+
+    fn record_begin(&mut self, timings: &mut clock::Timings) {
+        if let Some(ms) = self.begin_ms.take() {
+            clock::record(&mut timings.of(self.name).begin_ms, ms);
+        }
+    }
+
+    /// One frame's steps, taken while the gesture went on or after.
+    fn stepped(&mut self, ms: f64, was_gesture: bool, timings: &mut clock::Timings) {
+        match (&mut self.begin_ms, was_gesture) {
+            (Some(begin_ms), true) => {
+                *begin_ms += ms;
+                self.record_begin(timings);
+            }
+            (None, true) => clock::record(&mut timings.of(self.name).frame_ms, ms),
+            (_, false) => {
+                self.record_begin(timings);
+                self.finish_ms += ms;
+            }
+        }
+    }
+
+    /// The finish, which took `ms`.
+    fn finished(&mut self, ms: f64, timings: &mut clock::Timings) {
+        self.record_begin(timings);
+        clock::record(&mut timings.of(self.name).finish_ms, self.finish_ms + ms);
     }
 }
 

@@ -1,5 +1,7 @@
 //! A millisecond clock for timing work inside a frame (`performance.now()` in the page), and
-//! the recent pull and over-sketch costs the page benchmark reads.
+//! the recent costs of edits the page benchmark reads.
+
+use std::collections::BTreeMap;
 
 /// Milliseconds since an arbitrary start, with sub-millisecond resolution where available.
 #[cfg(target_arch = "wasm32")]
@@ -18,33 +20,44 @@ pub fn now_ms() -> f64 {
     START.get_or_init(Instant::now).elapsed().as_secs_f64() * 1e3
 }
 
-/// How many recent samples [`Timings`] keeps.
+/// How many recent samples each list of [`EditTimings`] keeps.
 const KEPT: usize = 1024;
 
-/// Recent costs of pulls and over-sketches, in ms: what the page benchmark reads.
+/// Recent costs of the edits the app ran, per op name (`"pull"`, `"oversketch"`, …), in ms:
+/// what the page benchmark reads.
 #[derive(Clone, Debug, Default, serde::Serialize)]
-pub struct Timings {
-    /// Pointer-down: grabbing a curve and factoring the region around it.
-    pub grab_ms: Vec<f64>,
-    /// Each frame of a drag: curve deformation plus surface update.
+#[serde(transparent)]
+pub struct Timings(BTreeMap<&'static str, EditTimings>);
+
+/// Recent costs of one kind of edit, in ms.
+#[derive(Clone, Debug, Default, serde::Serialize)]
+pub struct EditTimings {
+    /// Beginning the edit, with the steps of the frame it began in while its gesture goes on
+    /// (a pull's grab: picking the curve and factoring the region around it).
+    pub begin_ms: Vec<f64>,
+    /// The steps of each later frame while its gesture goes on (a pull's drag frames).
     pub frame_ms: Vec<f64>,
-    /// Release: applying the `pull` op (full re-optimization and remesh).
-    pub commit_ms: Vec<f64>,
-    /// Applying an `oversketch` op: silhouettes, matching, factorization and the edit.
-    pub oversketch_ms: Vec<f64>,
+    /// Everything after its input was complete, over however many frames: the steps left and
+    /// the commit (a pull's release, a whole over-sketch or creation).
+    pub finish_ms: Vec<f64>,
 }
 
 impl Timings {
-    /// Records one cost; the oldest half of a full buffer goes.
-    pub fn record(buffer: &mut Vec<f64>, ms: f64) {
-        if buffer.len() == KEPT {
-            buffer.drain(..KEPT / 2);
-        }
-        buffer.push(ms);
+    /// The timings of edits of the op named `name`.
+    pub fn of(&mut self, name: &'static str) -> &mut EditTimings {
+        self.0.entry(name).or_default()
     }
 
     /// Takes everything recorded so far.
     pub fn take(&mut self) -> Timings {
         std::mem::take(self)
     }
+}
+
+/// Records one cost; the oldest half of a full list goes.
+pub fn record(list: &mut Vec<f64>, ms: f64) {
+    if list.len() == KEPT {
+        list.drain(..KEPT / 2);
+    }
+    list.push(ms);
 }

@@ -1,6 +1,7 @@
 //! Drives the real app headlessly through egui_kittest with a wgpu renderer (lavapipe or
 //! any adapter the machine has): a mouse stroke leaves ink on the rendered image and one
-//! curve in the document; Ctrl+Z takes both away; right-drag orbits.
+//! curve in the document; Ctrl+Z takes both away; right-drag orbits; a shape created and
+//! pulled in the app, previewed over frames, is bit for bit the replay of its session.
 
 use egui::{Event, Modifiers, PointerButton, Pos2, pos2, vec2};
 use egui_kittest::Harness;
@@ -105,13 +106,10 @@ fn save(image: &image::RgbaImage, name: &str) {
     image.save(&path).expect("save render");
 }
 
-#[test]
-fn closed_stroke_becomes_a_lit_shape_with_its_curve() {
-    let mut h = harness();
-    h.run();
-    let center = pos2(450.0, 340.0);
+/// Draws a closed ellipse of half-axes 150 × 110 about `center`, one sample per frame.
+fn draw_ellipse(h: &mut Harness<'_, SketchApp>, center: Pos2) {
     h.event(Event::PointerMoved(center + vec2(150.0, 0.0)));
-    press(&h, center + vec2(150.0, 0.0), PointerButton::Primary, true);
+    press(h, center + vec2(150.0, 0.0), PointerButton::Primary, true);
     h.step();
     for i in 1..=60 {
         let a = std::f32::consts::TAU * i as f32 / 60.0;
@@ -120,8 +118,25 @@ fn closed_stroke_becomes_a_lit_shape_with_its_curve() {
         ));
         h.step();
     }
-    press(&h, center + vec2(150.0, 0.0), PointerButton::Primary, false);
+    press(h, center + vec2(150.0, 0.0), PointerButton::Primary, false);
     h.run();
+}
+
+/// Whether the app's document is exactly what replaying its session gives.
+fn replays_bit_for_bit(h: &Harness<'_, SketchApp>) -> bool {
+    let shared = h.state().shared();
+    let editor = &shared.borrow().editor;
+    let replayed = sketchmesh_core::document::Editor::replay_json(&editor.session_json())
+        .expect("the session replays");
+    replayed.document() == editor.document()
+}
+
+#[test]
+fn closed_stroke_becomes_a_lit_shape_with_its_curve() {
+    let mut h = harness();
+    h.run();
+    let center = pos2(450.0, 340.0);
+    draw_ellipse(&mut h, center);
     let stats = h.state().shared().borrow().editor.document().stats();
     assert_eq!((stats.models, stats.curves), (1, 1), "{stats:?}");
     assert!(stats.vertices > 500, "{stats:?}");
@@ -160,4 +175,46 @@ fn right_drag_orbits_without_drawing() {
         "yaw {yaw_before} -> {yaw_after}"
     );
     assert_eq!(curves(&h), 0);
+}
+
+#[test]
+fn a_shape_created_and_pulled_in_the_app_is_its_session_replayed() {
+    let mut h = harness();
+    h.run();
+    let center = pos2(450.0, 340.0);
+    draw_ellipse(&mut h, center);
+    let ops = |h: &Harness<'_, SketchApp>| h.state().shared().borrow().editor.ops().len();
+    assert_eq!(ops(&h), 1, "one create op");
+    assert!(
+        replays_bit_for_bit(&h),
+        "the creation refined over frames differs from apply"
+    );
+    let before = h.render().expect("render");
+
+    // Pull the outline's right end outwards: the shape follows while the pointer is down,
+    // and nothing is committed until it is released.
+    h.key_press(egui::Key::P);
+    h.run();
+    let grab = center + vec2(150.0, 0.0);
+    h.event(Event::PointerMoved(grab));
+    press(&h, grab, PointerButton::Primary, true);
+    h.step();
+    for i in 1..=10 {
+        h.event(Event::PointerMoved(grab + vec2(4.0 * i as f32, 0.0)));
+        h.step();
+    }
+    let dragging = h.render().expect("render");
+    save(&dragging, "pull-preview");
+    assert_eq!(ops(&h), 1, "nothing committed while dragging");
+    let moved = changed_pixels(&before, &dragging);
+    assert!(moved > 200, "the preview moved only {moved} pixels");
+    press(&h, grab + vec2(40.0, 0.0), PointerButton::Primary, false);
+    h.run();
+    let shared = h.state().shared();
+    let last = shared.borrow().editor.ops().last().map(|op| op.name());
+    assert_eq!((ops(&h), last), (2, Some("pull")));
+    assert!(
+        replays_bit_for_bit(&h),
+        "the pull committed in the app differs from apply"
+    );
 }

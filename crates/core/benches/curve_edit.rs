@@ -1,8 +1,9 @@
 //! FiberMesh curve editing (issue 4) on created shapes of about 10k and 40k vertices: a pull
 //! of the outline's rightmost point by 50 px, a tenth of the shape's width. Times the grab
-//! (`PullSession::start`: curve network, regional factorization), one drag frame
-//! (`PullSession::drag`: curve deformation and one back-substitution of the region), and
-//! the committed `pull` op at release (deformation, regional settle, remesh, settle).
+//! (`Editor::begin_gesture` of the `pull` op and its first step: curve network, regional
+//! factorization), one drag frame (`Edit::extend` and a step: curve deformation and one
+//! back-substitution of the region), and the committed `pull` op at release (deformation,
+//! regional settle, remesh, settle).
 //! Targets: a drag frame under 16 ms at 10k and under 33 ms at 40k in the browser; release
 //! under 250 ms at 10k. Run with
 //! `cargo bench -p sketchmesh-core --bench curve_edit -- --warm-up-time 1 --measurement-time 3`.
@@ -12,7 +13,7 @@ use std::hint::black_box;
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
-use sketchmesh_core::document::{Op, PullSession, StrokeInput};
+use sketchmesh_core::document::{Edit, Editor, Op, StrokeInput};
 
 #[path = "common/fibermesh_shape.rs"]
 mod fibermesh_shape;
@@ -33,6 +34,19 @@ fn drag(steps: usize) -> StrokeInput {
     }
 }
 
+/// Pointer-down: the pull begun as a gesture, and its first step (the region's factorization).
+fn grab_at(editor: &Editor, grab: &StrokeInput) -> Edit {
+    let mut edit = editor.begin_gesture(Op::Pull(grab.clone())).expect("grab");
+    edit.step().expect("factor");
+    edit
+}
+
+/// One drag frame: the pointer's latest sample, followed by one step.
+fn drag_frame(edit: &mut Edit, sample: [f64; 3]) {
+    edit.extend(sample);
+    edit.step().expect("drag");
+}
+
 fn bench_curve_edit(c: &mut Criterion) {
     let mut group = c.benchmark_group("pull");
     group.sample_size(10);
@@ -44,24 +58,21 @@ fn bench_curve_edit(c: &mut Criterion) {
             ..drag(1)
         };
         group.bench_with_input(BenchmarkId::new("grab", vertices), &editor, |b, editor| {
-            b.iter(|| {
-                PullSession::start(editor.document(), black_box(grab.clone())).expect("grab")
-            });
+            b.iter(|| grab_at(editor, black_box(&grab)));
         });
         let samples = drag(40).stroke;
         group.bench_with_input(
             BenchmarkId::new("drag_frame", vertices),
             &editor,
             |b, editor| {
-                let mut session =
-                    PullSession::start(editor.document(), grab.clone()).expect("grab");
+                let mut edit = grab_at(editor, &grab);
                 // Pull most of the way first, so that frames measure a grown peel and region.
                 for &sample in &samples[1..30] {
-                    session.drag(sample).expect("drag");
+                    drag_frame(&mut edit, sample);
                 }
                 let mut k = 30;
                 b.iter(|| {
-                    session.drag(samples[k]).expect("drag");
+                    drag_frame(&mut edit, samples[k]);
                     k = if k + 1 < samples.len() { k + 1 } else { 30 };
                 });
             },

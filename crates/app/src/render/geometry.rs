@@ -1,8 +1,9 @@
 //! GPU-ready arrays built from the document, once per document revision.
 //!
 //! Kept free of wgpu so it can be tested natively and shared (in an `Arc`) between the UI
-//! thread and the paint callback. Only [`SceneGeometry::move_model`] runs per frame (during
-//! a curve pull): it rewrites one model's vertices and curves in place, allocating nothing.
+//! thread and the paint callback. Only [`SceneGeometry::move_model`] runs per frame (while an
+//! edit moves a model's vertices, as a pull's preview does): it rewrites one model's vertices
+//! and curves in place, allocating nothing.
 
 use std::collections::HashSet;
 use std::ops::Range;
@@ -83,13 +84,13 @@ pub struct SceneGeometry {
 }
 
 impl SceneGeometry {
-    /// Builds the arrays for `doc` plus a model still being created, as `generation`.
-    pub fn build(doc: &Document, pending: Option<&Model>, generation: u64) -> Self {
+    /// Builds the arrays for `doc` as `generation`.
+    pub fn build(doc: &Document, generation: u64) -> Self {
         let mut scene = Self {
             generation,
             ..Self::default()
         };
-        for model in doc.models.iter().map(|m| m.as_ref()).chain(pending) {
+        for model in doc.models.iter().map(|m| m.as_ref()) {
             let (vertices, curves) = (scene.vertices.len(), scene.curves.len());
             scene.add_mesh(
                 model.mesh.positions(),

@@ -1,8 +1,10 @@
 //! Tools: small state machines that turn [`ToolEvent`]s into document operations.
 //!
 //! A tool never touches a mesh; it emits an [`Op`] for the editor, so one gesture is one
-//! undo step and every edit replays from the session. [`ToolSet`] holds one tool per
-//! [`Mode`] (FiberMesh's five tools plus over-sketch) and routes events to the active one.
+//! undo step and every edit replays from the session. A tool whose op previews while it is
+//! drawn (pull, over-sketch) begins it as a gesture ([`ToolOutput::Begin`]) and feeds it
+//! samples; the app runs it as it runs every edit. [`ToolSet`] holds one tool per [`Mode`]
+//! (FiberMesh's five tools plus over-sketch) and routes events to the active one.
 
 pub mod curve_stroke;
 pub mod draw;
@@ -14,7 +16,7 @@ pub mod sketch;
 use egui::Rect;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::StrokePoint;
-use sketchmesh_core::document::{Document, Op, PullSession};
+use sketchmesh_core::document::{Document, Op};
 
 pub use crate::input::router::ToolEvent;
 pub use mode::Mode;
@@ -43,6 +45,15 @@ pub enum ToolOutput {
     Commit(Op),
     /// Apply these operations in order, one undoable step each.
     CommitAll(Vec<Op>),
+    /// Begin this op as a gesture: its stroke (the pointer-down sample so far) is still
+    /// being drawn, and the edit previews it.
+    Begin(Op),
+    /// The gesture's stroke reached this sample `[x, y, pressure]`.
+    Extend([f64; 3]),
+    /// The gesture ended with this sample: apply its op as one undoable step.
+    End([f64; 3]),
+    /// Drop the gesture: nothing changes.
+    Cancel,
     /// The gesture did nothing; tell the user why.
     Refused(String),
 }
@@ -99,17 +110,12 @@ impl ToolSet {
     pub fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
         match self.mode {
             Mode::Sketch => self.sketch.on_event(event, view, doc),
-            Mode::Pull => self.pull.on_event(event, view, doc),
+            Mode::Pull => self.pull.on_event(event, view),
             Mode::Erase | Mode::CurveType | Mode::Rub => {
                 self.curve_stroke.on_event(self.mode, event, view, doc)
             }
             Mode::Oversketch => self.oversketch.on_event(event, view, doc),
         }
-    }
-
-    /// Once per frame: lets a pull follow the pointer.
-    pub fn tick(&mut self) -> ToolOutput {
-        self.pull.tick()
     }
 
     /// The stroke in progress of the active tool, for live display.
@@ -127,12 +133,7 @@ impl ToolSet {
         self.sketch.waiting()
     }
 
-    /// The pull in progress, whose preview replaces its model's vertices.
-    pub fn live_pull(&self) -> Option<&PullSession> {
-        self.pull.session()
-    }
-
-    /// The silhouette piece an over-sketch stroke would replace.
+    /// The handle picked in manual over-sketch mode.
     pub fn handle(&self) -> Option<&HandlePreview> {
         match self.mode {
             Mode::Oversketch => self.oversketch.handle(),

@@ -1,9 +1,12 @@
 //! The over-sketch tool: redraw part of an outline and the model follows (SilSketch, SEED).
 //!
-//! It captures a stroke exactly as the draw tool does (it wraps one) and commits an
-//! `oversketch` op instead. While the stroke is drawn it asks core which silhouette piece it
-//! would replace, so the app can highlight it: green when the match is confident, orange
-//! when core would refuse it.
+//! It captures a stroke exactly as the draw tool does (it wraps one, for the live stroke)
+//! and begins an `oversketch` edit as a gesture, fed every sample: while the stroke is drawn
+//! the edit shows which silhouette piece it would replace ([`Edit::outline`]), which the app
+//! highlights green when the match is confident, orange when core would refuse it; release
+//! commits the op.
+//!
+//! [`Edit::outline`]: sketchmesh_core::document::Edit::outline
 //!
 //! In manual mode (the toolbar's "Pick handle") the first stroke picks the handle instead
 //! ([`pick_handle`]): along an outline, that outline's piece; over the model elsewhere, a
@@ -15,20 +18,17 @@ use glam::DVec2;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{Document, Op, OversketchFit, OversketchInput, StrokeInput};
 use sketchmesh_core::oversketch::{
-    ManualHandle, OversketchRoi, manual_handle_preview, pick_handle, preview_handle,
+    ManualHandle, OversketchRoi, manual_handle_preview, pick_handle,
 };
 
-use super::draw::DrawTool;
+use super::draw::{DrawTool, point};
 use super::{ToolEvent, ToolOutput, ViewCtx};
-
-/// Samples between two previews: matching runs on whole silhouettes, so not on every sample.
-const PREVIEW_EVERY: usize = 8;
 
 /// A stroke starting this close (points) to an end of a picked outline piece and running
 /// along the outline moves that end (a crop).
 const END_GRAB_PX: f64 = 16.0;
 
-/// The silhouette piece a stroke would replace, in viewport-relative points.
+/// A picked handle as it resolves on the model, in viewport-relative points.
 #[derive(Clone, Debug, PartialEq)]
 pub struct HandlePreview {
     /// The piece, in order.
@@ -58,39 +58,48 @@ struct Picked {
     viewport: DVec2,
 }
 
-/// The over-sketch tool's state: the stroke being drawn, the current match or pick, and
-/// the user's settings.
+/// The over-sketch tool's state: the stroke being drawn, the pick in manual mode, and the
+/// user's settings.
 #[derive(Clone, Debug, Default)]
 pub struct OversketchTool {
     stroke: DrawTool,
+    /// The picked handle as shown.
     handle: Option<HandlePreview>,
-    samples_since_preview: usize,
     settings: OversketchSettings,
     picked: Option<Picked>,
 }
 
 impl OversketchTool {
-    /// Feeds one event; a finished stroke becomes an `oversketch` op (or, in manual mode
-    /// with nothing picked yet, the pick).
+    /// Feeds one event: a stroke is an `oversketch` gesture (in manual mode, the pick, a
+    /// crop, or an op committed at its end).
     pub fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
         if self.settings.manual {
             return self.on_manual_event(event, view, doc);
         }
         self.picked = None;
+        self.handle = None;
+        let was_drawing = self.stroke.preview().is_some();
         let finished = self.stroke.capture(event, view);
+        let is_drawing = self.stroke.preview().is_some();
+        let sample = |s| {
+            let p = point(s, view);
+            [p.pos.x, p.pos.y, p.pressure]
+        };
         match event {
-            ToolEvent::Move(_) => {
-                if self.preview_is_due() {
-                    self.handle = self.preview_now(view, doc);
-                }
+            ToolEvent::Begin(s) if is_drawing && !was_drawing => {
+                let size = view.viewport.size();
+                let input = StrokeInput {
+                    viewport: [size.x.into(), size.y.into()],
+                    camera: view.camera,
+                    stroke: vec![sample(s)],
+                };
+                ToolOutput::Begin(self.op(input, None))
             }
-            ToolEvent::End(_) | ToolEvent::Cancel => {
-                self.handle = None;
-                self.samples_since_preview = 0;
-            }
-            ToolEvent::Begin(_) => {}
+            ToolEvent::Move(s) if is_drawing => ToolOutput::Extend(sample(s)),
+            ToolEvent::End(s) if finished.is_some() => ToolOutput::End(sample(s)),
+            ToolEvent::Cancel if was_drawing => ToolOutput::Cancel,
+            _ => ToolOutput::None,
         }
-        finished.map_or(ToolOutput::None, |input| self.commit(input, None))
     }
 
     /// Manual mode: pick, crop by dragging an end, then the new shape.
@@ -120,7 +129,7 @@ impl OversketchTool {
                 return ToolOutput::None;
             }
             self.handle = None;
-            return self.commit(input, Some(picked.handle));
+            return ToolOutput::Commit(self.op(input, Some(picked.handle)));
         }
         let picked = doc
             .models
@@ -170,26 +179,16 @@ impl OversketchTool {
         })
     }
 
-    /// Whether enough samples passed since the last preview.
-    fn preview_is_due(&mut self) -> bool {
-        self.samples_since_preview += 1;
-        let is_due = self.samples_since_preview >= PREVIEW_EVERY;
-        if is_due {
-            self.samples_since_preview = 0;
-        }
-        is_due
-    }
-
-    /// The `oversketch` op for a finished stroke.
-    fn commit(&self, input: StrokeInput, handle: Option<ManualHandle>) -> ToolOutput {
-        ToolOutput::Commit(Op::Oversketch(OversketchInput {
+    /// The `oversketch` op of a stroke, with the user's settings.
+    fn op(&self, input: StrokeInput, handle: Option<ManualHandle>) -> Op {
+        Op::Oversketch(OversketchInput {
             viewport: input.viewport,
             camera: input.camera,
             stroke: input.stroke,
             fit: self.settings.fit,
             roi: self.settings.roi,
             handle,
-        }))
+        })
     }
 
     /// Drops the stroke in progress and the pick; the settings stay.
@@ -211,7 +210,7 @@ impl OversketchTool {
         self.stroke.preview()
     }
 
-    /// The silhouette piece the stroke would replace, or the picked handle.
+    /// The picked handle (manual mode).
     pub fn handle(&self) -> Option<&HandlePreview> {
         let is_stale_pick = self.picked.is_some() && !self.settings.manual;
         self.handle.as_ref().filter(|_| !is_stale_pick)
@@ -228,22 +227,6 @@ impl OversketchTool {
                 "Draw along the outline from a dot to crop it, or draw its new shape"
             }
             (Some(_), _) => "Now draw its new position",
-        })
-    }
-
-    /// Matches the stroke so far against the first model whose silhouettes it fits.
-    fn preview_now(&self, view: &ViewCtx, doc: &Document) -> Option<HandlePreview> {
-        let points: Vec<DVec2> = self.stroke.preview()?.iter().map(|p| p.pos).collect();
-        let size = view.viewport.size();
-        let viewport = DVec2::new(size.x.into(), size.y.into());
-        doc.models.iter().find_map(|model| {
-            preview_handle(&model.mesh, &view.camera, viewport, &points).map(
-                |(points, confident)| HandlePreview {
-                    points,
-                    confident,
-                    croppable: false,
-                },
-            )
         })
     }
 
@@ -283,16 +266,51 @@ mod tests {
         }
     }
 
-    /// Draws a short stroke and returns what the tool commits.
+    /// What the app commits for a tool's outputs: a gesture's op as a core edit builds it
+    /// from the samples, or the last output that is not part of a gesture.
+    fn committed(doc: &Document, outputs: Vec<ToolOutput>) -> ToolOutput {
+        let mut editor = sketchmesh_core::document::Editor::new();
+        if !doc.models.is_empty() {
+            let input = sketchmesh_core::document::ImportInput {
+                files: vec![sketchmesh_core::document::FileInput {
+                    name: String::from("doc.glb"),
+                    data: Some(std::sync::Arc::new(sketchmesh_core::io::write_glb(doc))),
+                }],
+            };
+            editor.apply(Op::Import(input)).unwrap();
+        }
+        let mut edit = None;
+        let mut last = ToolOutput::None;
+        for output in outputs {
+            match output {
+                ToolOutput::Begin(op) => edit = Some(editor.begin_gesture(op).unwrap()),
+                ToolOutput::Extend(sample) => edit.as_mut().unwrap().extend(sample),
+                ToolOutput::End(sample) => {
+                    let edit = edit.as_mut().unwrap();
+                    edit.extend(sample);
+                    edit.end_gesture();
+                    last = ToolOutput::Commit(edit.op().clone());
+                }
+                ToolOutput::None => {}
+                other => last = other,
+            }
+        }
+        last
+    }
+
+    /// Draws a short stroke and returns what the app commits for it.
     fn draw(tool: &mut OversketchTool) -> ToolOutput {
         let view = ViewCtx {
             camera: Camera::default(),
             viewport: Rect::from_min_max(pos2(0.0, 40.0), pos2(800.0, 640.0)),
         };
         let doc = Document::default();
-        tool.on_event(&ToolEvent::Begin(pen(Phase::Down, 10.0)), &view, &doc);
-        tool.on_event(&ToolEvent::Move(pen(Phase::Move, 60.0)), &view, &doc);
-        tool.on_event(&ToolEvent::End(pen(Phase::Up, 110.0)), &view, &doc)
+        let outputs = vec![
+            tool.on_event(&ToolEvent::Begin(pen(Phase::Down, 10.0)), &view, &doc),
+            tool.on_event(&ToolEvent::Move(pen(Phase::Move, 60.0)), &view, &doc),
+            tool.on_event(&ToolEvent::End(pen(Phase::Up, 110.0)), &view, &doc),
+        ];
+        committed(&doc, outputs)
     }
 
     #[test]
@@ -338,7 +356,8 @@ mod tests {
         }
     }
 
-    /// Feeds a stroke through `points`; what the tool said at the end.
+    /// Feeds a stroke through `points`; what the app commits for it (or the tool's
+    /// refusal).
     fn stroke_through(
         tool: &mut OversketchTool,
         view: &ViewCtx,
@@ -347,11 +366,13 @@ mod tests {
     ) -> ToolOutput {
         let (first, rest) = points.split_first().unwrap();
         let (last, middle) = rest.split_last().unwrap();
-        tool.on_event(&ToolEvent::Begin(at(Phase::Down, *first)), view, doc);
+        let mut outputs =
+            vec![tool.on_event(&ToolEvent::Begin(at(Phase::Down, *first)), view, doc)];
         for p in middle {
-            tool.on_event(&ToolEvent::Move(at(Phase::Move, *p)), view, doc);
+            outputs.push(tool.on_event(&ToolEvent::Move(at(Phase::Move, *p)), view, doc));
         }
-        tool.on_event(&ToolEvent::End(at(Phase::Up, *last)), view, doc)
+        outputs.push(tool.on_event(&ToolEvent::End(at(Phase::Up, *last)), view, doc));
+        committed(doc, outputs)
     }
 
     /// Points on the circle of `radius` about the viewport centre, from `a` to `b` degrees.

@@ -1,92 +1,11 @@
-//! The editor: a document, its undo history and the log of applied ops.
+//! The editor: a document, its undo history and the log of applied ops. Ops change it only
+//! through edits ([`Edit`], in `edit.rs`): [`Editor::apply`] is an edit begun and finished.
 
-use std::sync::Arc;
-
-use super::curve_edit;
+#[cfg(doc)]
+use super::Edit;
 use super::history::History;
-use super::{
-    Document, ImportInput, Model, Op, OversketchInput, PendingCreate, SketchCurve, StrokeInput,
-};
-use crate::curve::{StrokeError, process_stroke};
-use crate::fibermesh::CreateError;
-use crate::fibermesh::add_curve::AddCurveError;
-use crate::fibermesh::curve_pull::PullError;
-use crate::io::{GltfError, ImportFile, ImportLimits, Imported, import_gltf};
-use crate::mesh::remesh::RemeshError;
-use crate::oversketch::{
-    BendOptions, OversketchError, Oversketched, oversketch_manual, oversketch_with,
-};
-use crate::solve::SolveError;
-
-/// Why an op was refused. The messages are sentences for the user.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum CommandError {
-    /// The stroke has too few points or is too short.
-    #[error("That stroke is too short to use; draw a longer line.")]
-    StrokeTooShort,
-    /// The stroke contains NaN or infinite numbers.
-    #[error("That stroke has coordinates that are not numbers; draw it again.")]
-    StrokeNotFinite,
-    /// The camera or viewport sent with the op cannot project anything.
-    #[error("The camera or viewport of that op is not usable (degenerate view or zero size).")]
-    BadView,
-    /// A stroke point's ray misses the drawing plane.
-    #[error("That stroke could not be placed in the scene; look at the scene and draw again.")]
-    StrokeOffPlane,
-    /// Undo with an empty undo history.
-    #[error("Nothing to undo.")]
-    NothingToUndo,
-    /// Redo with an empty redo history.
-    #[error("Nothing to redo.")]
-    NothingToRedo,
-    /// A closed stroke did not become a shape.
-    #[error("{0}")]
-    Create(#[from] CreateError),
-    /// An import op names a file whose contents were not loaded.
-    #[error("The contents of {0} are not in the session; replay it next to that file.")]
-    FileNotLoaded(String),
-    /// An import op has no files.
-    #[error("The import has no file.")]
-    NoFile,
-    /// A file could not be imported.
-    #[error("{0}")]
-    Import(#[from] GltfError),
-    /// An over-sketch was refused.
-    #[error("{0}")]
-    Oversketch(#[from] OversketchError),
-    /// A curve tool started where no visible control curve is.
-    #[error("No control curve there: start on a curve (the blue and red lines on a shape).")]
-    NoCurveHere,
-    /// A curve was drawn where no model with control curves is.
-    #[error("Draw the curve on a shape made here; imported models are edited with over-sketch.")]
-    NotOnModel,
-    /// An erase would leave a shape with no curve to hold it.
-    #[error("That would erase the last curve holding the shape; a shape needs at least one.")]
-    LastCurve,
-    /// A curve could not be pulled.
-    #[error("{0}")]
-    Pull(#[from] PullError),
-    /// A curve could not be put on the surface.
-    #[error("{0}")]
-    AddCurve(#[from] AddCurveError),
-    /// The surface could not be remeshed after a curve edit.
-    #[error("{0}")]
-    Remesh(#[from] RemeshError),
-    /// The surface could not be re-optimized through its curves.
-    #[error("The surface could not be re-optimized: {0}")]
-    Surface(SolveError),
-}
-
-impl From<StrokeError> for CommandError {
-    fn from(error: StrokeError) -> Self {
-        match error {
-            StrokeError::TooFewPoints { .. } | StrokeError::TooShort { .. } => {
-                CommandError::StrokeTooShort
-            }
-            StrokeError::NonFinite { .. } => CommandError::StrokeNotFinite,
-        }
-    }
-}
+use super::outcome::Outcome;
+use super::{CommandError, Document, Op};
 
 /// A document with undo/redo and the log of applied ops (the session).
 #[derive(Clone, Debug, Default)]
@@ -103,51 +22,22 @@ impl Editor {
         Self::default()
     }
 
-    /// Applies one op. On success the op is appended to the log (undo and redo included); on
-    /// failure the document, the history and the log are unchanged.
-    pub fn apply(&mut self, op: Op) -> Result<(), CommandError> {
-        match &op {
-            Op::Stroke(input) => {
-                let sketch = place_stroke(input)?;
-                let mut next = self.document.clone();
-                next.sketches.push(Arc::new(sketch));
+    /// Applies a finished edit's outcome and logs its op.
+    ///
+    /// Errors: [`CommandError::NothingToUndo`], [`CommandError::NothingToRedo`]; nothing
+    /// changes then.
+    pub(super) fn commit(&mut self, op: Op, outcome: Outcome) -> Result<(), CommandError> {
+        match outcome {
+            Outcome::Document(next) => {
                 let before = std::mem::replace(&mut self.document, next);
                 self.history.record(before);
             }
-            Op::Create(input) => {
-                let (_, model) = PendingCreate::start(input.clone())?.finish()?;
-                self.add_model(model);
-            }
-            Op::Import(input) => {
-                let imported = import_files(input)?;
-                let mut next = self.document.clone();
-                next.models
-                    .extend(imported.models.into_iter().map(Arc::new));
-                next.sketches
-                    .extend(imported.sketches.into_iter().map(Arc::new));
-                next.point_clouds
-                    .extend(imported.point_clouds.into_iter().map(Arc::new));
-                let before = std::mem::replace(&mut self.document, next);
-                self.history.record(before);
-            }
-            Op::Oversketch(input) => {
-                self.replace_model(oversketch_document(&self.document, input)?);
-            }
-            Op::Pull(input) => self.replace_model(curve_edit::pull_op(&self.document, input)?),
-            Op::AddCurve(input) => {
-                self.replace_model(curve_edit::add_curve_op(&self.document, input)?);
-            }
-            Op::Erase(input) => self.replace_model(curve_edit::erase_op(&self.document, input)?),
-            Op::SetCurveType(input) => {
-                self.replace_model(curve_edit::set_curve_type_op(&self.document, input)?);
-            }
-            Op::Rub(input) => self.replace_model(curve_edit::rub_op(&self.document, input)?),
-            Op::Undo => {
+            Outcome::Undo => {
                 if !self.history.undo(&mut self.document) {
                     return Err(CommandError::NothingToUndo);
                 }
             }
-            Op::Redo => {
+            Outcome::Redo => {
                 if !self.history.redo(&mut self.document) {
                     return Err(CommandError::NothingToRedo);
                 }
@@ -156,33 +46,6 @@ impl Editor {
         self.log.push(op);
         self.revision += 1;
         Ok(())
-    }
-
-    /// Commits a creation the app refined over frames: finishes it (the same steps as
-    /// `apply` of its `create` op, so replay gives the same mesh) and logs the op.
-    ///
-    /// Errors: a failed solve; the document is unchanged then.
-    pub fn commit_create(&mut self, pending: PendingCreate) -> Result<(), CommandError> {
-        let (input, model) = pending.finish()?;
-        self.add_model(model);
-        self.log.push(Op::Create(input));
-        self.revision += 1;
-        Ok(())
-    }
-
-    /// Records the current document and puts `model` at `index`.
-    fn replace_model(&mut self, (index, model): (usize, Model)) {
-        let mut next = self.document.clone();
-        next.models[index] = Arc::new(model);
-        let before = std::mem::replace(&mut self.document, next);
-        self.history.record(before);
-    }
-
-    fn add_model(&mut self, model: Model) {
-        let mut next = self.document.clone();
-        next.models.push(Arc::new(model));
-        let before = std::mem::replace(&mut self.document, next);
-        self.history.record(before);
     }
 
     /// Undoes the last change; the same as `apply(Op::Undo)`.
@@ -222,116 +85,13 @@ impl Editor {
     }
 }
 
-/// Processes the stroke in screen space and projects each point onto the plane through the
-/// camera target facing the camera.
-fn place_stroke(input: &StrokeInput) -> Result<SketchCurve, CommandError> {
-    let viewport = input.viewport_size();
-    let viewport_ok = viewport.is_finite() && viewport.x > 0.0 && viewport.y > 0.0;
-    if !viewport_ok || !input.camera.is_valid() {
-        return Err(CommandError::BadView);
-    }
-    let processed = process_stroke(&input.points())?;
-    let mut sketch = SketchCurve {
-        points: Vec::with_capacity(processed.len()),
-        pressures: Vec::with_capacity(processed.len()),
-    };
-    for point in &processed {
-        let Some(point_in_world) = input.camera.point_on_target_plane(point.pos, viewport) else {
-            return Err(CommandError::StrokeOffPlane);
-        };
-        sketch.points.push(point_in_world);
-        sketch.pressures.push(point.pressure);
-    }
-    Ok(sketch)
-}
-
-/// Over-sketches the model whose outline the stroke matches best (highest match score
-/// among the models that accept it), returning its index and its new version: new
-/// positions, and control curves embedded in the mesh following their vertices.
-///
-/// Errors: [`CommandError::BadView`], [`CommandError::StrokeTooShort`],
-/// [`CommandError::StrokeNotFinite`], or the most telling refusal over all models
-/// (a failed edit, then a doubtful match, then no match).
-fn oversketch_document(
-    document: &Document,
-    input: &OversketchInput,
-) -> Result<(usize, Model), CommandError> {
-    let input_stroke = StrokeInput::of_oversketch(input);
-    let viewport = input_stroke.viewport_size();
-    let stroke = curve_edit::screen_stroke(&input_stroke, 2)?;
-    let options = BendOptions {
-        fit: input.fit.handle_fit(),
-        roi: input.roi,
-    };
-    let mut best: Option<(usize, Oversketched)> = None;
-    let mut refusal = OversketchError::NoMatch;
-    for (index, model) in document.models.iter().enumerate() {
-        let (mesh, camera) = (&model.mesh, &input.camera);
-        let result = match &input.handle {
-            Some(handle) => oversketch_manual(mesh, camera, viewport, handle, &stroke, options),
-            None => oversketch_with(mesh, camera, viewport, &stroke, options),
-        };
-        match result {
-            Ok(result) => {
-                if best.as_ref().is_none_or(|(_, b)| result.score > b.score) {
-                    best = Some((index, result));
-                }
-            }
-            Err(error) => {
-                if refusal_rank(&error) > refusal_rank(&refusal) {
-                    refusal = error;
-                }
-            }
-        }
-    }
-    let (index, result) = best.ok_or(refusal)?;
-    let mut model = Model::clone(&document.models[index]);
-    model
-        .mesh
-        .positions_mut()
-        .copy_from_slice(&result.positions);
-    for curve in &mut model.curves {
-        if !curve.vertices.is_empty() {
-            curve.points = curve
-                .vertices
-                .iter()
-                .map(|&v| result.positions[v.index()])
-                .collect();
-        }
-    }
-    Ok((index, model))
-}
-
-/// How much a refusal tells the user: a failed edit, then a doubtful match, then none.
-fn refusal_rank(error: &OversketchError) -> u8 {
-    match error {
-        OversketchError::NoMatch => 0,
-        OversketchError::LowConfidence | OversketchError::HandleLost | OversketchError::NoPart => 1,
-        OversketchError::Deform(_) => 2,
-    }
-}
-
-/// Imports the files of an import op with the default limits.
-fn import_files(input: &ImportInput) -> Result<Imported, CommandError> {
-    let files = input
-        .files
-        .iter()
-        .map(|file| match &file.data {
-            Some(data) => Ok(ImportFile {
-                name: &file.name,
-                bytes: data.as_slice(),
-            }),
-            None => Err(CommandError::FileNotLoaded(file.name.clone())),
-        })
-        .collect::<Result<Vec<_>, _>>()?;
-    let (main, others) = files.split_first().ok_or(CommandError::NoFile)?;
-    Ok(import_gltf(main, others, &ImportLimits::default())?)
-}
-
 #[cfg(test)]
 mod tests {
+    use std::sync::Arc;
+
     use super::*;
     use crate::camera::Camera;
+    use crate::document::StrokeInput;
     use glam::{DVec2, DVec3};
 
     fn stroke(points: &[[f64; 3]]) -> Op {

@@ -1,28 +1,36 @@
 //! The document (models and sketches) and the only way to change it: [`Op`]s applied by an
-//! [`Editor`], which keeps undo history and a replayable [`Session`] log.
+//! [`Editor`], which keeps undo history and a replayable [`Session`] log. Every op is applied
+//! as an [`Edit`]: begun, stepped (in one go, or across the app's frames) and finished; see
+//! `edit.rs` for the protocol.
 //!
 //! Every op builds the new state first and swaps it in only on success, so a refused op leaves
 //! the document, the history and the log untouched. Models and sketches sit behind `Arc`, so an
 //! undo snapshot is a copy of a few pointers and restores the exact previous state.
 
 mod appearance;
+mod create;
 mod curve_edit;
+mod edit;
 mod editor;
+mod error;
 mod history;
 mod intent;
 mod model;
 mod op;
-mod pending;
+mod outcome;
+mod oversketch;
 mod session;
 
 pub use appearance::{AlphaMode, Appearance, Image, Material, Texture, positions_hash};
-pub use curve_edit::{CURVE_PICK_RADIUS_PX, PullSession, curve_type_toggle};
-pub use editor::{CommandError, Editor};
+pub use curve_edit::{CURVE_PICK_RADIUS_PX, curve_type_toggle};
+pub use edit::{Edit, Progress};
+pub use editor::Editor;
+pub use error::CommandError;
 pub use intent::{CLOSE_TOLERANCE_PX, ink_instead, needs_tap, op_for_stroke, starts_on_model};
 pub use model::{ControlCurve, Document, Model, PointCloud, SketchCurve, Stats};
 pub use op::{
     AddCurveInput, CurveTypeInput, FileInput, ImportInput, Op, OversketchFit, OversketchInput,
     StrokeInput,
 };
-pub use pending::PendingCreate;
+pub use oversketch::OutlinePiece;
 pub use session::{SESSION_FORMAT, SESSION_VERSION, Session, SessionError};

@@ -75,6 +75,31 @@ impl Op {
             Op::Redo => "redo",
         }
     }
+
+    /// The raw samples of the op's stroke; `None` for the ops without one (import, undo,
+    /// redo).
+    pub fn stroke(&self) -> Option<&[[f64; 3]]> {
+        match self {
+            Op::Stroke(input) | Op::Create(input) | Op::Pull(input) => Some(&input.stroke),
+            Op::Erase(input) | Op::Rub(input) => Some(&input.stroke),
+            Op::Oversketch(input) => Some(&input.stroke),
+            Op::AddCurve(input) => Some(&input.stroke),
+            Op::SetCurveType(input) => Some(&input.stroke),
+            Op::Import(_) | Op::Undo | Op::Redo => None,
+        }
+    }
+
+    /// [`Op::stroke`], to extend while the stroke is drawn.
+    pub fn stroke_mut(&mut self) -> Option<&mut Vec<[f64; 3]>> {
+        match self {
+            Op::Stroke(input) | Op::Create(input) | Op::Pull(input) => Some(&mut input.stroke),
+            Op::Erase(input) | Op::Rub(input) => Some(&mut input.stroke),
+            Op::Oversketch(input) => Some(&mut input.stroke),
+            Op::AddCurve(input) => Some(&mut input.stroke),
+            Op::SetCurveType(input) => Some(&mut input.stroke),
+            Op::Import(_) | Op::Undo | Op::Redo => None,
+        }
+    }
 }
 
 /// An `add_curve` op: the stroke and which kind of curve it makes.

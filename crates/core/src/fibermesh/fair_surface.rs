@@ -458,7 +458,7 @@ impl FairSurface {
     }
 
     /// Iterates until no vertex moves more than `tolerance` times the bounding-box diagonal,
-    /// or `max_iterations` are done.
+    /// or `max_iterations` are done: a [`Convergence`] stepped to its end.
     ///
     /// Errors: those of [`FairSurface::iterate`], and [`SolveError::Diverged`] when the steps
     /// grow (by more than `DIVERGENCE_GROWTH` times the smallest step); `positions` then
@@ -469,31 +469,81 @@ impl FairSurface {
         max_iterations: usize,
         tolerance: f64,
     ) -> Result<RunSummary, SolveError> {
-        let mut summary = RunSummary {
-            iterations: 0,
-            is_converged: false,
-            last_step: f64::INFINITY,
-        };
-        let mut least_step = f64::INFINITY;
-        while summary.iterations < max_iterations && !summary.is_converged {
-            let step = self.iterate(positions)?;
-            let (lo, hi) = positions
-                .iter()
-                .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), &p| {
-                    (lo.min(p), hi.max(p))
-                });
-            let size = (hi - lo).length();
-            summary.iterations += 1;
-            summary.last_step = if size > 0.0 { step / size } else { 0.0 };
-            summary.is_converged = summary.last_step <= tolerance;
-            if summary.last_step > DIVERGENCE_GROWTH * least_step
-                && summary.last_step > DIVERGENCE_STEP
-            {
-                return Err(SolveError::Diverged);
-            }
-            least_step = least_step.min(summary.last_step);
+        let mut run = Convergence::new(max_iterations, tolerance);
+        while !run.step(self, positions)? {}
+        Ok(run.summary())
+    }
+}
+
+/// [`FairSurface::run`] one iteration at a time: the only convergence loop of the fair
+/// surface, with its stopping rule and divergence guard, for callers that spread the
+/// iterations over frames (a shape being created refines on screen) as well as for `run`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Convergence {
+    max_iterations: usize,
+    tolerance: f64,
+    summary: RunSummary,
+    /// The least relative step so far, for the divergence guard.
+    least_step: f64,
+}
+
+impl Convergence {
+    /// A run of at most `max_iterations` that stops once no vertex moves more than
+    /// `tolerance` times the bounding-box diagonal.
+    pub fn new(max_iterations: usize, tolerance: f64) -> Self {
+        Convergence {
+            max_iterations,
+            tolerance,
+            summary: RunSummary {
+                iterations: 0,
+                is_converged: false,
+                last_step: f64::INFINITY,
+            },
+            least_step: f64::INFINITY,
         }
-        Ok(summary)
+    }
+
+    /// Whether the run is over: converged, or out of iterations.
+    pub fn is_done(&self) -> bool {
+        self.summary.is_converged || self.summary.iterations >= self.max_iterations
+    }
+
+    /// What the iterations so far did.
+    pub fn summary(&self) -> RunSummary {
+        self.summary
+    }
+
+    /// Runs one iteration of `surface` on `positions` unless the run is over; returns
+    /// whether it is over now.
+    ///
+    /// Errors: those of [`FairSurface::iterate`], and [`SolveError::Diverged`] when this
+    /// step grew past the guard (see [`FairSurface::run`]); `positions` then hold it.
+    pub fn step(
+        &mut self,
+        surface: &mut FairSurface,
+        positions: &mut [DVec3],
+    ) -> Result<bool, SolveError> {
+        if self.is_done() {
+            return Ok(true);
+        }
+        let step = surface.iterate(positions)?;
+        let (lo, hi) = positions
+            .iter()
+            .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), &p| {
+                (lo.min(p), hi.max(p))
+            });
+        let size = (hi - lo).length();
+        let summary = &mut self.summary;
+        summary.iterations += 1;
+        summary.last_step = if size > 0.0 { step / size } else { 0.0 };
+        summary.is_converged = summary.last_step <= self.tolerance;
+        if summary.last_step > DIVERGENCE_GROWTH * self.least_step
+            && summary.last_step > DIVERGENCE_STEP
+        {
+            return Err(SolveError::Diverged);
+        }
+        self.least_step = self.least_step.min(summary.last_step);
+        Ok(self.is_done())
     }
 }
 

@@ -34,9 +34,10 @@
 //! Progressive display: [`seed_from_stroke`] stops after step 3 and costs no
 //! factorization (the seed is already rotund), so it is the first frame;
 //! [`SeedShape::into_creation`] factors both systems and runs one iteration (the costly
-//! part, about 5× the seed at 10k vertices), and [`Creation::converge`] or repeated
-//! [`FairSurface::iterate`] calls refine over the next frames. [`create_from_stroke`] and
-//! [`create_converged_from_stroke`] chain them.
+//! part, about 5× the seed at 10k vertices; [`first_iteration`]), and the steps of
+//! [`CreateParams::refinement`] (a [`Convergence`]) refine over the next frames.
+//! [`create_from_stroke`] and [`create_converged_from_stroke`] chain them, and so does the
+//! document's `create` op, one step at a time (`crate::document::Edit`).
 //!
 //! Sign conventions: `L v_i = v_i - mean_j v_j` (as in [`crate::geometry`]) and outward
 //! normals, so Laplacian magnitudes are positive on convex parts (`measure.rs`).
@@ -64,7 +65,7 @@ mod triangulate;
 use glam::DVec2;
 
 pub use control_curve::{ControlCurve, CurveKind};
-pub use fair_surface::{FairSurface, RunSummary};
+pub use fair_surface::{Convergence, FairSurface, RunSummary};
 pub use outline::{FINE_SPACING_PX, MAX_OVERSHOOT, MIN_AREA_PX2, MIN_ROUNDNESS};
 pub use plane::DrawingPlane;
 pub use region::{Region, nearest_vertices, region_around};
@@ -82,7 +83,8 @@ pub struct CreateParams {
     pub target_vertices: usize,
     /// How far apart (CSS px) the stroke's ends may be for it to count as closed.
     pub close_tolerance_px: f64,
-    /// Iteration cap for [`Creation::converge`] and [`create_converged_from_stroke`].
+    /// Iteration cap of a creation, its [`first_iteration`] included (see
+    /// [`CreateParams::refinement`]).
     pub max_iterations: usize,
     /// Convergence: no vertex moves more than this fraction of the bounding-box diagonal.
     pub tolerance: f64,
@@ -96,6 +98,14 @@ impl Default for CreateParams {
             max_iterations: 15,
             tolerance: 1e-3,
         }
+    }
+}
+
+impl CreateParams {
+    /// The run that refines a creation after its [`first_iteration`]: the rest of
+    /// `max_iterations`, to `tolerance`, with [`FairSurface::run`]'s rule and divergence guard.
+    pub fn refinement(&self) -> Convergence {
+        Convergence::new(self.max_iterations.saturating_sub(1), self.tolerance)
     }
 }
 
@@ -149,21 +159,18 @@ impl SeedShape {
         }
     }
 
-    /// Factors the fair-surface systems and runs one iteration.
+    /// Factors the fair-surface systems and runs one iteration ([`first_iteration`]).
     ///
     /// Errors: [`CreateError::Solve`] if a factorization fails (a bug for a seed built by
     /// [`seed_from_stroke`]).
     pub fn into_creation(self) -> Result<Creation, CreateError> {
-        let mut surface =
-            FairSurface::new(&self.mesh, &[self.control_curve()]).map_err(CreateError::Solve)?;
+        let curve = self.control_curve();
         let SeedShape {
             mut mesh,
             curve_vertices,
             plane,
         } = self;
-        surface
-            .iterate(mesh.positions_mut())
-            .map_err(CreateError::Solve)?;
+        let surface = first_iteration(&mut mesh, &curve)?;
         Ok(Creation {
             mesh,
             curve_vertices,
@@ -171,6 +178,19 @@ impl SeedShape {
             plane,
         })
     }
+}
+
+/// Factors the fair-surface systems of a new shape (a seed's `mesh` and its outline `curve`)
+/// and runs the first iteration on `mesh`; [`CreateParams::refinement`] goes on from there.
+///
+/// Errors: [`CreateError::Solve`] if a factorization fails.
+pub fn first_iteration(mesh: &mut Mesh, curve: &ControlCurve) -> Result<FairSurface, CreateError> {
+    let mut surface =
+        FairSurface::new(mesh, std::slice::from_ref(curve)).map_err(CreateError::Solve)?;
+    surface
+        .iterate(mesh.positions_mut())
+        .map_err(CreateError::Solve)?;
+    Ok(surface)
 }
 
 /// A new shape: its mesh, its control curve and the optimization to continue.
@@ -260,8 +280,12 @@ pub fn create_converged_from_stroke(
     params: &CreateParams,
 ) -> Result<(Creation, RunSummary), CreateError> {
     let mut creation = create_from_stroke(stroke, camera, viewport, params)?;
-    let mut summary =
-        creation.converge(params.max_iterations.saturating_sub(1), params.tolerance)?;
+    let mut run = params.refinement();
+    while !run
+        .step(&mut creation.surface, creation.mesh.positions_mut())
+        .map_err(CreateError::Solve)?
+    {}
+    let mut summary = run.summary();
     summary.iterations += 1;
     Ok((creation, summary))
 }

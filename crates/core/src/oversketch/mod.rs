@@ -19,7 +19,8 @@
 //!
 //! [`oversketch`] runs all of it on a mesh: silhouettes, matching, targets unprojected at
 //! each handle point's depth, ROI and a detail-preserving [`LaplacianEdit`](crate::deform::LaplacianEdit);
-//! [`preview_handle`] shows the would-be handle while the stroke is drawn.
+//! [`preview_handle`] shows the would-be handle while the stroke is drawn ([`Outlines`] finds
+//! the silhouettes once per stroke).
 
 mod bend;
 mod manual;
@@ -45,7 +46,8 @@ pub use matching::{
 pub use mixture::Mixture;
 pub use part_roi::{BACKGROUND_SAMPLES, MAX_PART_SHARE, MIN_SEEDS, PART_SMOOTHNESS, part_roi};
 pub use pipeline::{
-    OversketchError, Oversketched, SOFT_FIT_WEIGHT, oversketch, oversketch_with, preview_handle,
+    Outlines, OversketchError, Oversketched, SOFT_FIT_WEIGHT, oversketch, oversketch_with,
+    preview_handle,
 };
 pub use roi::{OversketchRoi, ROI_RADIUS_FACTOR, roi_from_displacements};
 pub use track::{CLOSED_TOLERANCE_PX, handle_points};

@@ -118,43 +118,69 @@ pub fn oversketch_with(
 
 /// The silhouette piece that [`oversketch`] would move for `stroke`, on screen (CSS px), and
 /// whether the match is confident (an over-sketch is refused otherwise). `None` when nothing
-/// matches. For highlighting while the stroke is drawn: silhouettes and matching only.
+/// matches. For highlighting while the stroke is drawn: silhouettes and matching only
+/// ([`Outlines`] keeps the silhouettes for the next samples).
 pub fn preview_handle(
     mesh: &Mesh,
     camera: &Camera,
     viewport: DVec2,
     stroke: &[DVec2],
 ) -> Option<(Vec<DVec2>, bool)> {
-    let found = find_handle(mesh, camera, viewport, stroke)?;
-    let screen = found.points.iter().map(|p| p.screen).collect();
-    Some((screen, found.is_confident))
+    Outlines::new(mesh, camera, viewport).preview(stroke)
 }
 
-/// Silhouettes and matching: the handle's silhouette points in stroke order, each edge
-/// once. `None` when the stroke is degenerate or nothing matches.
+/// The visible silhouettes of a mesh from one view, found once and matched against a stroke
+/// as it grows: the camera stays put while a stroke is drawn.
+#[derive(Clone, Debug)]
+pub struct Outlines {
+    curves: Vec<Silhouette>,
+    polylines: Vec<Vec<DVec2>>,
+}
+
+impl Outlines {
+    /// The silhouettes of `mesh` seen by `camera` in a `viewport` (CSS px).
+    pub fn new(mesh: &Mesh, camera: &Camera, viewport: DVec2) -> Self {
+        let (curves, polylines) = seen_silhouettes(mesh, camera, viewport);
+        Outlines { curves, polylines }
+    }
+
+    /// [`preview_handle`] for `stroke` on these silhouettes.
+    pub fn preview(&self, stroke: &[DVec2]) -> Option<(Vec<DVec2>, bool)> {
+        let found = self.find(stroke)?;
+        let screen = found.points.iter().map(|p| p.screen).collect();
+        Some((screen, found.is_confident))
+    }
+
+    /// Matching: the handle's silhouette points in stroke order, each edge once. `None` when
+    /// the stroke is degenerate or nothing matches.
+    fn find(&self, stroke: &[DVec2]) -> Option<Found> {
+        if !stroke.iter().all(|p| p.is_finite()) {
+            return None;
+        }
+        let stroke = simplify_stroke(stroke);
+        if stroke.len() < 2 {
+            return None;
+        }
+        let slices: Vec<&[DVec2]> = self.polylines.iter().map(Vec::as_slice).collect();
+        let found = match_stroke(&stroke, &slices, &MatchParams::default())?;
+        let polyline = &self.polylines[found.silhouette];
+        let indices: Vec<f64> = handle_points(polyline, found.start, found.end)
+            .into_iter()
+            .map(|(index, _)| index)
+            .collect();
+        let points = piece_points(&self.curves[found.silhouette], polyline.len(), &indices);
+        (points.len() >= 2).then_some(Found {
+            points,
+            stroke,
+            score: found.score,
+            is_confident: found.confident,
+        })
+    }
+}
+
+/// Silhouettes and matching ([`Outlines::find`]).
 fn find_handle(mesh: &Mesh, camera: &Camera, viewport: DVec2, stroke: &[DVec2]) -> Option<Found> {
-    if !stroke.iter().all(|p| p.is_finite()) {
-        return None;
-    }
-    let stroke = simplify_stroke(stroke);
-    if stroke.len() < 2 {
-        return None;
-    }
-    let (curves, polylines) = seen_silhouettes(mesh, camera, viewport);
-    let slices: Vec<&[DVec2]> = polylines.iter().map(Vec::as_slice).collect();
-    let found = match_stroke(&stroke, &slices, &MatchParams::default())?;
-    let polyline = &polylines[found.silhouette];
-    let indices: Vec<f64> = handle_points(polyline, found.start, found.end)
-        .into_iter()
-        .map(|(index, _)| index)
-        .collect();
-    let points = piece_points(&curves[found.silhouette], polyline.len(), &indices);
-    (points.len() >= 2).then_some(Found {
-        points,
-        stroke,
-        score: found.score,
-        is_confident: found.confident,
-    })
+    Outlines::new(mesh, camera, viewport).find(stroke)
 }
 
 /// The visible silhouettes and their screen polylines ([`screen_polyline`]).

@@ -4,7 +4,7 @@
 //! The algorithms live in [`crate::fibermesh`] and [`crate::mesh::remesh`]; this module
 //! picks the model and the curves an op acts on, and settles the surface afterwards. Every
 //! op recomputes its result from the op alone (the stroke, viewport and camera), so
-//! `sketchmesh replay` reproduces it exactly; the app's live previews (see [`PullSession`])
+//! `sketchmesh replay` reproduces it exactly; the app's live previews (see [`PullPreview`])
 //! only show where the committed result will land.
 //!
 //! After an op the surface is re-optimized with a fresh factorization: the thesis remeshes
@@ -22,7 +22,8 @@ use glam::DVec2;
 
 pub use add::add_curve_op;
 pub use constraints::{curve_type_toggle, erase_op, rub_op, set_curve_type_op};
-pub use pull::{PullSession, pull_op};
+pub(super) use pull::PullPreview;
+pub use pull::pull_op;
 
 use super::{CommandError, ControlCurve, Document, Model, StrokeInput};
 use crate::fibermesh::curve_tools::VisibleCurves;

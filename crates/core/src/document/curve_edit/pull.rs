@@ -3,11 +3,13 @@
 //!
 //! The committed op ([`pull_op`]) deforms the curves for the release point, re-optimizes the
 //! surface around the grabbed point with a fresh factorization, and remeshes there. While
-//! the pointer is down the app shows a [`PullSession`] instead: the curve deformation is
-//! the same (it depends on the target only), and the surface is solved in a region around
-//! the grabbed point, factored once at pointer-down, with every other vertex held: at 40k
-//! vertices one back-substitution of the whole mesh costs ~34 ms in wasm, too slow for
-//! 30 fps. The preview region is the [`PREVIEW_VERTICES`] nearest vertices (the whole
+//! the pointer is down, a `pull` edit begun as a gesture
+//! ([`Editor::begin_gesture`](crate::document::Editor::begin_gesture)) shows a
+//! [`PullPreview`] instead: the curve deformation is the same (it depends on the target
+//! only), and the surface is solved in a region around the grabbed point, factored once by
+//! the edit's first step, with every other vertex held; each later step follows the latest
+//! pointer sample with one back-substitution. At 40k vertices one back-substitution of the
+//! whole mesh costs ~34 ms in wasm, too slow for 30 fps. The preview region is the [`PREVIEW_VERTICES`] nearest vertices (the whole
 //! shape at 10k vertices), so its cost does not grow with the mesh, and it is refactored
 //! only when the peel outgrows it: a refactor is a frame of 50–250 ms in the page.
 
@@ -20,7 +22,7 @@ use super::{
     CurvePick, bounding_diagonal, pick_curve_vertex, replaced, screen_stroke, solver_curves,
 };
 use crate::camera::Camera;
-use crate::document::{CommandError, Document, Model, Op, StrokeInput};
+use crate::document::{CommandError, Document, Model, StrokeInput};
 use crate::fibermesh::curve_pull::{CurveNetwork, CurvePull, PullParams};
 use crate::fibermesh::{ControlCurve, FairSurface, nearest_vertices, region_around};
 
@@ -41,7 +43,7 @@ const PREVIEW_REACH_PER_PEEL: f64 = 1.25;
 /// refactors a few times, not every frame.
 const PREVIEW_GROWTH: f64 = 1.3;
 
-/// Surface iterations per drag frame.
+/// Surface iterations per followed sample (one step, so one frame).
 const ITERATIONS_PER_FRAME: usize = 1;
 
 /// Applies a `pull` op: returns the index of the pulled model and its new version.
@@ -73,10 +75,11 @@ pub fn pull_op(doc: &Document, input: &StrokeInput) -> Result<(usize, Model), Co
     Ok((pick.model, replaced(model, mesh, &curves)))
 }
 
-/// A pull in progress: the live preview of a `pull` op while the pointer is down.
+/// The live preview of a `pull` op while the pointer is down; see the module docs.
 #[derive(Debug)]
-pub struct PullSession {
-    input: StrokeInput,
+pub(in crate::document) struct PullPreview {
+    /// The view the drag happens in (the op's first sample is the grab).
+    view: StrokeInput,
     model_index: usize,
     model: Arc<Model>,
     curves: Vec<ControlCurve>,
@@ -87,30 +90,33 @@ pub struct PullSession {
     node_vertices: Vec<u32>,
     nodes: Vec<DVec3>,
     positions: Vec<DVec3>,
-    surface: FairSurface,
+    /// The surface of the preview region; `None` until the first step factors it.
+    surface: Option<FairSurface>,
     /// How far from the grabbed point the preview region reaches.
     reach: f64,
+    /// How many samples of the drag the preview has followed (the grab is the first).
+    followed: usize,
 }
 
-impl PullSession {
-    /// Starts a pull where `input`'s first sample is: on the nearest visible curve point.
+impl PullPreview {
+    /// Grabs the nearest visible curve point under `input`'s first sample; cheap (no
+    /// factorization yet), so a pull that grabs nothing is refused at once.
     ///
     /// Errors: [`CommandError::NoCurveHere`] and the stroke's errors, as the `pull` op.
-    pub fn start(doc: &Document, input: StrokeInput) -> Result<PullSession, CommandError> {
-        let stroke = screen_stroke(&input, 1)?;
-        let pick = pick_curve_vertex(doc, &input, stroke[0])?;
+    pub(in crate::document) fn start(
+        doc: &Document,
+        input: &StrokeInput,
+    ) -> Result<PullPreview, CommandError> {
+        let stroke = screen_stroke(input, 1)?;
+        let pick = pick_curve_vertex(doc, input, stroke[0])?;
         let model = Arc::clone(&doc.models[pick.model]);
         let curves = solver_curves(&model);
         let (pull, node_vertices) = curve_pull(&model, &curves, pick)?;
-        let region = nearest_vertices(
-            &model.mesh,
-            &[pick.vertex.0],
-            f64::INFINITY,
-            PREVIEW_VERTICES,
-        );
-        let surface = regional_surface(&model, &curves, &region.mask)?;
-        Ok(PullSession {
-            input,
+        Ok(PullPreview {
+            view: StrokeInput {
+                stroke: input.stroke[..1].to_vec(),
+                ..input.clone()
+            },
             model_index: pick.model,
             grabbed: model.mesh.position(pick.vertex),
             grabbed_vertex: pick.vertex.0,
@@ -120,52 +126,61 @@ impl PullSession {
             model,
             pull,
             node_vertices,
-            surface,
-            reach: region.reach,
+            surface: None,
+            reach: 0.0,
+            followed: 1,
         })
     }
 
-    /// Moves the grabbed point under the pointer sample `[x, y, pressure]`: deforms the
-    /// curves and lets the surface region follow by one back-substitution.
+    /// One chunk of work for the drag so far (`stroke`, the grab first): factors the
+    /// preview region (the first call), or moves the grabbed point under the latest sample,
+    /// deforming the curves and letting the region follow by one back-substitution. Earlier
+    /// samples not followed yet are skipped: the preview follows the pointer, not its path.
+    /// Returns `None` when there was nothing to do, else whether more work is ready.
     ///
-    /// Errors: a sample that does not project into the scene, or a failed solve; the
-    /// session stays as it was.
-    pub fn drag(&mut self, sample: [f64; 3]) -> Result<(), CommandError> {
-        let screen = DVec2::new(sample[0], sample[1]);
-        let target = drag_target(&self.input, self.grabbed, screen)?;
+    /// Errors: a sample that does not project into the scene, or a failed solve.
+    pub(in crate::document) fn step(
+        &mut self,
+        stroke: &[[f64; 3]],
+    ) -> Result<Option<bool>, CommandError> {
+        let Some(surface) = &mut self.surface else {
+            let region = nearest_vertices(
+                &self.model.mesh,
+                &[self.grabbed_vertex],
+                f64::INFINITY,
+                PREVIEW_VERTICES,
+            );
+            self.surface = Some(regional_surface(&self.model, &self.curves, &region.mask)?);
+            self.reach = region.reach;
+            return Ok(Some(stroke.len() > self.followed));
+        };
+        let Some(&[x, y, _]) = stroke.last().filter(|_| stroke.len() > self.followed) else {
+            return Ok(None);
+        };
+        let target = drag_target(&self.view, self.grabbed, DVec2::new(x, y))?;
         let peel = self.pull.pull_to(target, &mut self.nodes)?;
         let needed = PREVIEW_REACH_PER_PEEL * peel.radius;
         if needed > self.reach {
             let reach = PREVIEW_GROWTH * needed;
             let region = region_around(&self.model.mesh, &[self.grabbed_vertex], reach);
-            self.surface = regional_surface(&self.model, &self.curves, &region)?;
+            *surface = regional_surface(&self.model, &self.curves, &region)?;
             self.reach = reach;
         }
         for (&v, &p) in self.node_vertices.iter().zip(&self.nodes) {
             self.positions[v as usize] = p;
         }
         for _ in 0..ITERATIONS_PER_FRAME {
-            self.surface
+            surface
                 .iterate(&mut self.positions)
                 .map_err(CommandError::Surface)?;
         }
-        self.input.stroke.push(sample);
-        Ok(())
+        self.followed = stroke.len();
+        Ok(Some(false))
     }
 
-    /// The index of the model being pulled.
-    pub fn model_index(&self) -> usize {
-        self.model_index
-    }
-
-    /// The previewed positions of the pulled model's vertices.
-    pub fn positions(&self) -> &[DVec3] {
-        &self.positions
-    }
-
-    /// The op to commit on release: the drag path from the grab to the last sample.
-    pub fn finish(self) -> Op {
-        Op::Pull(self.input)
+    /// The index of the model being pulled and the previewed positions of its vertices.
+    pub(in crate::document) fn moved(&self) -> (usize, &[DVec3]) {
+        (self.model_index, &self.positions)
     }
 }
 

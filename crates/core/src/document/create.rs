@@ -1,0 +1,199 @@
+//! The `create` op as steps: FiberMesh's surface appears at once and refines step by step.
+//!
+//! Starting costs no factorization: it builds the seed shape (already rotund) and shows it.
+//! The first step factors the two fair-surface systems and runs one iteration
+//! ([`first_iteration`]); each later step runs one more of [`CreateParams::refinement`],
+//! the fair surface's only convergence loop ([`Convergence`], with its divergence guard).
+//! The shape is built in place in the document the edit shows, so the last step leaves the
+//! document to commit.
+
+use std::sync::Arc;
+
+use super::{CommandError, ControlCurve, Document, Model, StrokeInput};
+use crate::fibermesh::{
+    self, Convergence, CreateError, CreateParams, CurveKind, FairSurface, first_iteration,
+    seed_from_stroke,
+};
+
+/// A closed stroke being inflated into a new model, the last of its document.
+#[derive(Debug)]
+pub(super) struct CreateJob {
+    /// The document the edit began on, plus the new model.
+    document: Document,
+    /// The new model's index in `document`: its last.
+    index: usize,
+    params: CreateParams,
+    /// The factored surface and its run; `None` until the first step.
+    solve: Option<(FairSurface, Convergence)>,
+}
+
+impl CreateJob {
+    /// Meshes the stroke and builds the seed shape, cheaply: no factorization yet.
+    ///
+    /// Errors: the stroke's problems as sentences, see [`CommandError`].
+    pub(super) fn start(base: &Document, input: &StrokeInput) -> Result<Self, CommandError> {
+        let viewport = input.viewport_size();
+        if !viewport.is_finite() || viewport.min_element() <= 0.0 || !input.camera.is_valid() {
+            return Err(CommandError::BadView);
+        }
+        let params = CreateParams::default();
+        let seed = seed_from_stroke(&input.points(), &input.camera, viewport, &params)?;
+        let mut model = Model {
+            curves: vec![ControlCurve {
+                points: Vec::new(),
+                vertices: seed.curve_vertices,
+                closed: true,
+                sharp: false,
+            }],
+            mesh: seed.mesh,
+            ..Model::default()
+        };
+        follow_outline(&mut model);
+        let mut document = base.clone();
+        document.models.push(Arc::new(model));
+        Ok(CreateJob {
+            index: base.models.len(),
+            document,
+            params,
+            solve: None,
+        })
+    }
+
+    /// Factors and iterates once (first step), or iterates once more; returns whether the
+    /// run is over (converged or out of iterations).
+    ///
+    /// Errors: a failed solve or a diverging run, as [`CommandError::Create`].
+    pub(super) fn step(&mut self) -> Result<bool, CommandError> {
+        if self.solve.as_ref().is_some_and(|(_, run)| run.is_done()) {
+            return Ok(true);
+        }
+        // The job holds the only reference, so this does not copy the mesh.
+        let model = Arc::make_mut(&mut self.document.models[self.index]);
+        let done = match &mut self.solve {
+            None => {
+                let outline = fibermesh::ControlCurve {
+                    vertices: model.curves[0].vertices.clone(),
+                    is_closed: true,
+                    kind: CurveKind::Smooth,
+                };
+                let surface = first_iteration(&mut model.mesh, &outline)?;
+                let run = self.params.refinement();
+                let done = run.is_done();
+                self.solve = Some((surface, run));
+                done
+            }
+            Some((surface, run)) => run
+                .step(surface, model.mesh.positions_mut())
+                .map_err(|e| CommandError::Create(CreateError::Solve(e)))?,
+        };
+        follow_outline(model);
+        Ok(done)
+    }
+
+    /// The document with the shape as it is now.
+    pub(super) fn document(&self) -> &Document {
+        &self.document
+    }
+
+    /// The document with the shape as it is now, to commit.
+    pub(super) fn into_document(self) -> Document {
+        self.document
+    }
+}
+
+/// Puts the outline's points where its vertices are.
+fn follow_outline(model: &mut Model) {
+    let mesh = &model.mesh;
+    for curve in &mut model.curves {
+        curve.points = curve.vertices.iter().map(|&v| mesh.position(v)).collect();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::camera::Camera;
+    use crate::document::{Editor, Op, Progress};
+
+    fn ellipse() -> StrokeInput {
+        let n = 90;
+        StrokeInput {
+            viewport: [800.0, 600.0],
+            camera: Camera::default(),
+            stroke: (0..=n)
+                .map(|i| {
+                    let a = std::f64::consts::TAU * i as f64 / n as f64;
+                    [400.0 + 160.0 * a.cos(), 300.0 + 110.0 * a.sin(), 0.5]
+                })
+                .collect(),
+        }
+    }
+
+    #[test]
+    fn the_seed_shows_at_once_then_every_step_refines_it_to_what_apply_gives() {
+        let mut progressive = Editor::new();
+        let mut edit = progressive.begin(Op::Create(ellipse())).expect("begin");
+        let seed = edit.document().models[0].clone();
+        assert!(progressive.document().is_empty(), "nothing committed yet");
+        assert_eq!((edit.revision(), edit.generation()), (1, 1));
+        let mut shown = vec![seed.mesh.positions().to_vec()];
+        while edit.step().expect("step") == Progress::Working {
+            shown.push(edit.document().models[0].mesh.positions().to_vec());
+            assert_eq!(edit.revision() as usize, shown.len());
+        }
+        // The seed, the first iteration (after the factorization), and more: each different.
+        assert!(shown.len() >= 3, "{} displays", shown.len());
+        assert!(shown.windows(2).all(|w| w[0] != w[1]));
+        edit.finish(&mut progressive).expect("finish");
+        let mut direct = Editor::new();
+        direct.apply(Op::Create(ellipse())).expect("apply");
+        assert_eq!(progressive.document(), direct.document());
+        assert_eq!(progressive.session_json(), direct.session_json());
+        let replayed = Editor::replay_json(&progressive.session_json()).expect("replay");
+        assert_eq!(replayed.document(), direct.document());
+        // The outline is a smooth closed control curve through its vertices.
+        let model = &direct.document().models[0];
+        let curve = &model.curves[0];
+        assert!(curve.closed && !curve.sharp);
+        for (&v, &p) in curve.vertices.iter().zip(&curve.points) {
+            assert_eq!(model.mesh.position(v), p);
+        }
+    }
+
+    #[test]
+    fn undo_and_redo_of_a_creation_restore_exact_documents() {
+        let mut editor = Editor::new();
+        editor
+            .apply(Op::Stroke(StrokeInput {
+                stroke: vec![[10.0, 10.0, 0.5], [90.0, 40.0, 0.5]],
+                ..ellipse()
+            }))
+            .expect("ink");
+        let before = editor.document().clone();
+        editor.apply(Op::Create(ellipse())).expect("create");
+        let after = editor.document().clone();
+        assert_eq!(after.stats().models, 1);
+        editor.undo().expect("undo");
+        assert_eq!(editor.document(), &before);
+        editor.redo().expect("redo");
+        assert_eq!(editor.document(), &after);
+    }
+
+    #[test]
+    fn a_refused_creation_leaves_the_editor_untouched() {
+        let mut editor = Editor::new();
+        editor.apply(Op::Create(ellipse())).expect("create");
+        let (doc, ops) = (editor.document().clone(), editor.ops().len());
+        let open = StrokeInput {
+            stroke: ellipse().stroke[..40].to_vec(),
+            ..ellipse()
+        };
+        // Refused at begin, before any work.
+        let error = editor.begin(Op::Create(open.clone())).expect_err("open");
+        assert!(error.to_string().contains("Close the outline"), "{error}");
+        assert_eq!(editor.apply(Op::Create(open)), Err(error));
+        assert_eq!(editor.document(), &doc);
+        assert_eq!(editor.ops().len(), ops);
+        assert!(editor.can_undo() && !editor.can_redo());
+    }
+}

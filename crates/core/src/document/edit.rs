@@ -1,0 +1,386 @@
+//! Edits in progress: the one protocol by which an op changes a document, whether it is
+//! applied at once (replay, the CLI, tests) or spread over frames (the app).
+//!
+//! ```text
+//! let mut edit = editor.begin(op)?;           // cheap: checks, and a first thing to show
+//! while edit.step()? != Progress::Done {}      // bounded chunks of work
+//! edit.finish(&mut editor)?;                   // commit: one undo step, one op in the session
+//! ```
+//!
+//! [`Editor::apply`] is [`Editor::begin`] then [`Edit::finish`], which runs the steps that
+//! are left. The app runs the very same steps, only choosing when: each frame it steps the
+//! edit in progress while a time budget lasts, draws what the edit shows, and finishes it
+//! once [`Progress::Done`]. So a committed edit, its replay and the tests give bit-identical
+//! documents by construction, and the app has no special case for any op.
+//!
+//! **Why steps.** Some ops take longer than a frame. A creation factors two systems (about
+//! five times the cost of its seed) and then iterates 4–15 times: run at once it would
+//! freeze the page, and the user would see nothing until it converged. As steps, the seed
+//! shows at [`Editor::begin`], the first step factors and iterates once, and every later
+//! step is one more iteration the app can draw. Every op has the same shape, even those
+//! whose result is one step today (the curve ops, import, over-sketch), so splitting them
+//! later changes no caller.
+//!
+//! **Why one loop.** The steps of a creation are those of
+//! [`FairSurface::run`](crate::fibermesh::FairSurface::run)'s convergence loop,
+//! [`Convergence`](crate::fibermesh::Convergence), the same object every settle of the
+//! curve ops runs:
+//! the stopping rule and the divergence guard (a run whose steps grow is refused with
+//! [`SolveError::Diverged`](crate::solve::SolveError::Diverged)) live in one place. The app
+//! used to refine creations with a copy of that loop without the guard, so tests exercised
+//! one loop and users ran the other.
+//!
+//! **Gestures.** [`Editor::begin_gesture`] begins an op whose stroke is still being drawn.
+//! [`Edit::extend`] adds pointer samples to the op's stroke, and steps keep a preview up to
+//! date with the latest sample, skipping the ones in between: a pull factors the region
+//! around the grabbed point once (its first step) and then back-substitutes once per
+//! followed sample; an over-sketch finds each model's silhouettes once and matches the
+//! stroke so far against them every few samples. [`Edit::end_gesture`] (or
+//! [`Edit::finish`]) closes the stroke, and the next steps compute the committed result from
+//! the op alone, exactly as `apply` does: a preview only shows where the result will land.
+//!
+//! **What to draw meanwhile.** [`Edit::document`] (the document the edit began on, or the
+//! state it is building: a shape being created), [`Edit::moved_model`] (a pull's preview:
+//! one model's vertices elsewhere, same topology, cheap to upload every frame) and
+//! [`Edit::outline`] (the outline piece an over-sketch stroke would redraw, on screen).
+//! [`Edit::revision`] changes whenever the document shown does (rebuild what is drawn),
+//! [`Edit::generation`] whenever anything shown does (a pull's vertices moved).
+//!
+//! **Refusals and cancels change nothing.** An error at begin, at a step or at finish leaves
+//! the editor's document, history and log as they were; after a failed step the edit only
+//! repeats its error. [`Edit::cancel`] drops the edit. A result depends on the document the
+//! edit began on and the op only; if the editor's document changed meanwhile (another edit
+//! finished, a session was replayed), [`Edit::finish`] computes the op again on the current
+//! document, as replaying the session will. Edits run one at a time: the app finishes the
+//! one in progress before beginning the next, so ops are logged in the order they were made.
+//!
+//! Limits: the committed results of pull, over-sketch, the other curve ops and import are
+//! one step each (a pull's release at 40k vertices is one long frame); their settle and
+//! remesh would split along the same lines as a creation's iterations.
+
+use glam::DVec3;
+
+use super::create::CreateJob;
+use super::curve_edit::PullPreview;
+use super::outcome::{Outcome, outcome};
+use super::oversketch::{OutlinePiece, OutlinePreview};
+use super::{CommandError, Document, Editor, Op};
+
+/// What [`Edit::step`] left to do.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Progress {
+    /// More work is ready: step again (in this frame if time allows, else the next).
+    Working,
+    /// A gesture's preview is up to date: nothing to do until its stroke grows or ends.
+    Waiting,
+    /// The result is ready: [`Edit::finish`] commits it without more work.
+    Done,
+}
+
+/// An op being applied: begun by [`Editor::begin`] (or [`Editor::begin_gesture`] while its
+/// stroke is drawn), advanced by [`Edit::step`], then [`Edit::finish`]ed (one undo step, one
+/// op in the session) or [`Edit::cancel`]led (nothing changes).
+///
+/// ```
+/// # use sketchmesh_core::document::{Editor, Op, Progress, StrokeInput};
+/// # use sketchmesh_core::camera::Camera;
+/// let ellipse = (0..=90).map(|i| {
+///     let a = std::f64::consts::TAU * f64::from(i) / 90.0;
+///     [400.0 + 160.0 * a.cos(), 300.0 + 110.0 * a.sin(), 0.5]
+/// });
+/// let op = Op::Create(StrokeInput {
+///     viewport: [800.0, 600.0],
+///     camera: Camera::default(),
+///     stroke: ellipse.collect(),
+/// });
+/// let mut editor = Editor::new();
+/// let mut edit = editor.begin(op.clone())?; // the seed shape, shown at once
+/// let mut frames = 0;
+/// while edit.step()? != Progress::Done {
+///     frames += 1; // draw edit.document() here
+/// }
+/// edit.finish(&mut editor)?;
+/// let mut applied = Editor::new();
+/// applied.apply(op)?; // begin, then finish: the same steps
+/// assert_eq!(editor.document(), applied.document());
+/// assert!(frames > 2);
+/// # Ok::<(), sketchmesh_core::document::CommandError>(())
+/// ```
+///
+/// Why steps, why one convergence loop, gestures and refusals: see `document/edit.rs`.
+#[derive(Debug)]
+pub struct Edit {
+    op: Op,
+    /// The document the edit began on; the result is computed from it and the op alone.
+    base: Document,
+    /// Whether the op's stroke is still being drawn.
+    is_gesture: bool,
+    work: Work,
+    /// Changes whenever [`Edit::document`] does.
+    revision: u64,
+    /// Changes whenever anything the edit shows does.
+    generation: u64,
+}
+
+/// Where an edit is.
+#[derive(Debug)]
+enum Work {
+    /// A gesture with nothing to preview: waits for its end.
+    Gesture,
+    /// A pull's live preview.
+    Pull(Box<PullPreview>),
+    /// An over-sketch's live outline piece.
+    Outline(Box<OutlinePreview>),
+    /// A creation, refining step by step.
+    Create(Box<CreateJob>),
+    /// Nothing computed yet: the next step computes the result whole.
+    Whole,
+    /// The result, ready to commit.
+    Done(Outcome),
+    /// A step failed; the edit repeats the error.
+    Failed(CommandError),
+}
+
+impl Work {
+    /// The work of a complete op: a creation steps, everything else is one step.
+    fn complete(base: &Document, op: &Op) -> Result<Work, CommandError> {
+        Ok(match op {
+            Op::Create(input) => Work::Create(Box::new(CreateJob::start(base, input)?)),
+            _ => Work::Whole,
+        })
+    }
+
+    /// The work of an op whose stroke is still being drawn: a preview where there is one.
+    fn gesture(base: &Document, op: &Op) -> Result<Work, CommandError> {
+        Ok(match op {
+            Op::Pull(input) => Work::Pull(Box::new(PullPreview::start(base, input)?)),
+            Op::Oversketch(input) => Work::Outline(Box::new(OutlinePreview::new(input))),
+            _ => Work::Gesture,
+        })
+    }
+}
+
+impl Editor {
+    /// Begins applying `op` to the current document (see [`Edit`]). Cheap: it checks what
+    /// can be checked at once and prepares the first display (a creation's seed shape).
+    ///
+    /// Errors: a refusal that needs no work ([`CommandError::NothingToUndo`], a stroke that
+    /// cannot make a shape, …); nothing changes.
+    pub fn begin(&self, op: Op) -> Result<Edit, CommandError> {
+        Edit::begin(self, op, false)
+    }
+
+    /// Begins `op` while its stroke is still being drawn (a drag, an over-sketch stroke):
+    /// [`Edit::extend`] adds samples, steps keep the preview up to date, and
+    /// [`Edit::end_gesture`] or [`Edit::finish`] closes the stroke.
+    ///
+    /// Errors: as [`Editor::begin`], and a pull that grabs no curve.
+    pub fn begin_gesture(&self, op: Op) -> Result<Edit, CommandError> {
+        Edit::begin(self, op, true)
+    }
+
+    /// Applies one op: [`Editor::begin`], then [`Edit::finish`], which steps to the end. On
+    /// success the op is appended to the log (undo and redo included); on failure the
+    /// document, the history and the log are unchanged.
+    pub fn apply(&mut self, op: Op) -> Result<(), CommandError> {
+        self.begin(op)?.finish(self)
+    }
+}
+
+impl Edit {
+    fn begin(editor: &Editor, op: Op, is_gesture: bool) -> Result<Edit, CommandError> {
+        match op {
+            Op::Undo if !editor.can_undo() => return Err(CommandError::NothingToUndo),
+            Op::Redo if !editor.can_redo() => return Err(CommandError::NothingToRedo),
+            _ => {}
+        }
+        let base = editor.document().clone();
+        let work = if is_gesture {
+            Work::gesture(&base, &op)?
+        } else {
+            Work::complete(&base, &op)?
+        };
+        // A creation shows its seed at once.
+        let shown = u64::from(matches!(work, Work::Create(_)));
+        Ok(Edit {
+            op,
+            base,
+            is_gesture,
+            work,
+            revision: shown,
+            generation: shown,
+        })
+    }
+
+    /// Runs one bounded chunk of work: a creation's factorization or one of its iterations,
+    /// a gesture's preview for its latest sample, or an op's whole result.
+    ///
+    /// Errors: the op's refusal; the edit then only repeats it (drop it: nothing changed).
+    pub fn step(&mut self) -> Result<Progress, CommandError> {
+        match self.advance() {
+            Ok((progress, did_work)) => {
+                if did_work {
+                    self.generation += 1;
+                    if matches!(
+                        self.work,
+                        Work::Create(_) | Work::Done(Outcome::Document(_))
+                    ) {
+                        self.revision += 1;
+                    }
+                }
+                Ok(progress)
+            }
+            Err(error) => {
+                self.work = Work::Failed(error.clone());
+                Err(error)
+            }
+        }
+    }
+
+    /// [`Edit::step`]'s work: what is left, and whether anything was done.
+    fn advance(&mut self) -> Result<(Progress, bool), CommandError> {
+        let (base, op) = (&self.base, &self.op);
+        if let Work::Failed(error) = &self.work {
+            return Err(error.clone());
+        }
+        if self.is_gesture {
+            let stroke = op.stroke().unwrap_or_default();
+            let stepped = match &mut self.work {
+                Work::Pull(preview) => preview.step(stroke)?,
+                Work::Outline(preview) => preview.step(base, stroke),
+                _ => None,
+            };
+            return Ok(match stepped {
+                Some(true) => (Progress::Working, true),
+                Some(false) => (Progress::Waiting, true),
+                None => (Progress::Waiting, false),
+            });
+        }
+        match &mut self.work {
+            Work::Done(_) => Ok((Progress::Done, false)),
+            Work::Create(job) => {
+                if !job.step()? {
+                    return Ok((Progress::Working, true));
+                }
+                if let Work::Create(job) = std::mem::replace(&mut self.work, Work::Whole) {
+                    self.work = Work::Done(Outcome::Document(job.into_document()));
+                }
+                Ok((Progress::Done, true))
+            }
+            Work::Whole => {
+                self.work = Work::Done(outcome(base, op)?);
+                Ok((Progress::Done, true))
+            }
+            // A gesture ended: its preview goes, and the committed result begins.
+            Work::Gesture | Work::Pull(_) | Work::Outline(_) | Work::Failed(_) => {
+                self.work = Work::complete(base, op)?;
+                Ok((Progress::Working, true))
+            }
+        }
+    }
+
+    /// Adds a pointer sample `[x, y, pressure]` to the stroke of a gesture's op; the next
+    /// step previews it. A sample at the last one's position adds nothing (pointer events
+    /// often repeat), nor does one after the gesture ended or for an op without a stroke.
+    pub fn extend(&mut self, sample: [f64; 3]) {
+        debug_assert!(self.is_gesture, "extend after the gesture ended");
+        if !self.is_gesture {
+            return;
+        }
+        let Some(stroke) = self.op.stroke_mut() else {
+            return;
+        };
+        if stroke
+            .last()
+            .is_none_or(|last| [last[0], last[1]] != [sample[0], sample[1]])
+        {
+            stroke.push(sample);
+        }
+    }
+
+    /// Closes a gesture's stroke: the next steps compute the committed result.
+    pub fn end_gesture(&mut self) {
+        self.is_gesture = false;
+    }
+
+    /// Whether the op's stroke is still being drawn.
+    pub fn is_gesture(&self) -> bool {
+        self.is_gesture
+    }
+
+    /// Commits the edit: closes a gesture, runs the steps that are left, and applies the
+    /// result as one undo step, logging the op. If the editor's document is no longer the
+    /// one the edit began on, the op is computed again on the current one.
+    ///
+    /// Errors: the op's refusal; the document, the history and the log are unchanged.
+    pub fn finish(mut self, editor: &mut Editor) -> Result<(), CommandError> {
+        if !same_document(&self.base, editor.document()) {
+            return editor.begin(self.op)?.finish(editor);
+        }
+        self.is_gesture = false;
+        loop {
+            match std::mem::replace(&mut self.work, Work::Whole) {
+                Work::Done(outcome) => return editor.commit(self.op, outcome),
+                work => self.work = work,
+            }
+            self.step()?;
+        }
+    }
+
+    /// Drops the edit: the editor stays as it is.
+    pub fn cancel(self) {}
+
+    /// The op as far as it is known (a gesture's stroke grows).
+    pub fn op(&self) -> &Op {
+        &self.op
+    }
+
+    /// The document to draw meanwhile: the one the edit began on, or the state the edit
+    /// is building (a shape being created), or the result once it is ready.
+    pub fn document(&self) -> &Document {
+        match &self.work {
+            Work::Create(job) => job.document(),
+            Work::Done(Outcome::Document(next)) => next,
+            _ => &self.base,
+        }
+    }
+
+    /// A pull's preview: the index of a model of [`Edit::document`] and where its vertices
+    /// are drawn (the same topology).
+    pub fn moved_model(&self) -> Option<(usize, &[DVec3])> {
+        match &self.work {
+            Work::Pull(preview) => Some(preview.moved()),
+            _ => None,
+        }
+    }
+
+    /// The outline piece an over-sketch stroke being drawn would redraw, on screen.
+    pub fn outline(&self) -> Option<&OutlinePiece> {
+        match &self.work {
+            Work::Outline(preview) => preview.shown(),
+            _ => None,
+        }
+    }
+
+    /// A counter that changes whenever [`Edit::document`] does; 0 while it is the document
+    /// the edit began on. A renderer rebuilds what it draws when this changes.
+    pub fn revision(&self) -> u64 {
+        self.revision
+    }
+
+    /// A counter that changes whenever anything the edit shows does: its document, its
+    /// moved model or its outline piece. A renderer uploads again when this changes.
+    pub fn generation(&self) -> u64 {
+        self.generation
+    }
+}
+
+/// Whether two documents hold the very same models, sketches and point clouds.
+fn same_document(a: &Document, b: &Document) -> bool {
+    fn same<T>(a: &[std::sync::Arc<T>], b: &[std::sync::Arc<T>]) -> bool {
+        a.len() == b.len() && a.iter().zip(b).all(|(x, y)| std::sync::Arc::ptr_eq(x, y))
+    }
+    same(&a.models, &b.models)
+        && same(&a.sketches, &b.sketches)
+        && same(&a.point_clouds, &b.point_clouds)
+}

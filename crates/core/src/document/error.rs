@@ -1,0 +1,80 @@
+//! Why an op was refused: one error for every op, each message a sentence for the user.
+
+use crate::curve::StrokeError;
+use crate::fibermesh::CreateError;
+use crate::fibermesh::add_curve::AddCurveError;
+use crate::fibermesh::curve_pull::PullError;
+use crate::io::GltfError;
+use crate::mesh::remesh::RemeshError;
+use crate::oversketch::OversketchError;
+use crate::solve::SolveError;
+
+/// Why an op was refused. The messages are sentences for the user.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum CommandError {
+    /// The stroke has too few points or is too short.
+    #[error("That stroke is too short to use; draw a longer line.")]
+    StrokeTooShort,
+    /// The stroke contains NaN or infinite numbers.
+    #[error("That stroke has coordinates that are not numbers; draw it again.")]
+    StrokeNotFinite,
+    /// The camera or viewport sent with the op cannot project anything.
+    #[error("The camera or viewport of that op is not usable (degenerate view or zero size).")]
+    BadView,
+    /// A stroke point's ray misses the drawing plane.
+    #[error("That stroke could not be placed in the scene; look at the scene and draw again.")]
+    StrokeOffPlane,
+    /// Undo with an empty undo history.
+    #[error("Nothing to undo.")]
+    NothingToUndo,
+    /// Redo with an empty redo history.
+    #[error("Nothing to redo.")]
+    NothingToRedo,
+    /// A closed stroke did not become a shape.
+    #[error("{0}")]
+    Create(#[from] CreateError),
+    /// An import op names a file whose contents were not loaded.
+    #[error("The contents of {0} are not in the session; replay it next to that file.")]
+    FileNotLoaded(String),
+    /// An import op has no files.
+    #[error("The import has no file.")]
+    NoFile,
+    /// A file could not be imported.
+    #[error("{0}")]
+    Import(#[from] GltfError),
+    /// An over-sketch was refused.
+    #[error("{0}")]
+    Oversketch(#[from] OversketchError),
+    /// A curve tool started where no visible control curve is.
+    #[error("No control curve there: start on a curve (the blue and red lines on a shape).")]
+    NoCurveHere,
+    /// A curve was drawn where no model with control curves is.
+    #[error("Draw the curve on a shape made here; imported models are edited with over-sketch.")]
+    NotOnModel,
+    /// An erase would leave a shape with no curve to hold it.
+    #[error("That would erase the last curve holding the shape; a shape needs at least one.")]
+    LastCurve,
+    /// A curve could not be pulled.
+    #[error("{0}")]
+    Pull(#[from] PullError),
+    /// A curve could not be put on the surface.
+    #[error("{0}")]
+    AddCurve(#[from] AddCurveError),
+    /// The surface could not be remeshed after a curve edit.
+    #[error("{0}")]
+    Remesh(#[from] RemeshError),
+    /// The surface could not be re-optimized through its curves.
+    #[error("The surface could not be re-optimized: {0}")]
+    Surface(SolveError),
+}
+
+impl From<StrokeError> for CommandError {
+    fn from(error: StrokeError) -> Self {
+        match error {
+            StrokeError::TooFewPoints { .. } | StrokeError::TooShort { .. } => {
+                CommandError::StrokeTooShort
+            }
+            StrokeError::NonFinite { .. } => CommandError::StrokeNotFinite,
+        }
+    }
+}

@@ -1,0 +1,104 @@
+//! What an op makes of a document when computed in one go: the next document, or an undo
+//! or redo of the history.
+
+use std::sync::Arc;
+
+use super::create::CreateJob;
+use super::oversketch::oversketch_op;
+use super::{CommandError, Document, ImportInput, Model, Op, SketchCurve, StrokeInput, curve_edit};
+use crate::curve::process_stroke;
+use crate::io::{ImportFile, ImportLimits, Imported, import_gltf};
+
+/// What an op does to the editor, ready to commit.
+#[derive(Debug)]
+pub(super) enum Outcome {
+    /// The next document; the current one goes on the undo history.
+    Document(Document),
+    /// Go back to the last undo snapshot.
+    Undo,
+    /// Go forward to the last redo snapshot.
+    Redo,
+}
+
+/// Computes `op` on `base` in one go. A `create` runs its steps to the end here; the edits
+/// that spread an op over steps ([`super::Edit`]) end with the same result.
+///
+/// Errors: the op's refusal, see [`CommandError`].
+pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError> {
+    let replaced = |(index, model): (usize, Model)| {
+        let mut next = base.clone();
+        next.models[index] = Arc::new(model);
+        Outcome::Document(next)
+    };
+    Ok(match op {
+        Op::Stroke(input) => {
+            let mut next = base.clone();
+            next.sketches.push(Arc::new(place_stroke(input)?));
+            Outcome::Document(next)
+        }
+        Op::Create(input) => {
+            let mut job = CreateJob::start(base, input)?;
+            while !job.step()? {}
+            Outcome::Document(job.into_document())
+        }
+        Op::Import(input) => {
+            let imported = import_files(input)?;
+            let mut next = base.clone();
+            next.models
+                .extend(imported.models.into_iter().map(Arc::new));
+            next.sketches
+                .extend(imported.sketches.into_iter().map(Arc::new));
+            next.point_clouds
+                .extend(imported.point_clouds.into_iter().map(Arc::new));
+            Outcome::Document(next)
+        }
+        Op::Oversketch(input) => replaced(oversketch_op(base, input)?),
+        Op::Pull(input) => replaced(curve_edit::pull_op(base, input)?),
+        Op::AddCurve(input) => replaced(curve_edit::add_curve_op(base, input)?),
+        Op::Erase(input) => replaced(curve_edit::erase_op(base, input)?),
+        Op::SetCurveType(input) => replaced(curve_edit::set_curve_type_op(base, input)?),
+        Op::Rub(input) => replaced(curve_edit::rub_op(base, input)?),
+        Op::Undo => Outcome::Undo,
+        Op::Redo => Outcome::Redo,
+    })
+}
+
+/// Processes the stroke in screen space and projects each point onto the plane through the
+/// camera target facing the camera.
+fn place_stroke(input: &StrokeInput) -> Result<SketchCurve, CommandError> {
+    let viewport = input.viewport_size();
+    let viewport_ok = viewport.is_finite() && viewport.x > 0.0 && viewport.y > 0.0;
+    if !viewport_ok || !input.camera.is_valid() {
+        return Err(CommandError::BadView);
+    }
+    let processed = process_stroke(&input.points())?;
+    let mut sketch = SketchCurve {
+        points: Vec::with_capacity(processed.len()),
+        pressures: Vec::with_capacity(processed.len()),
+    };
+    for point in &processed {
+        let Some(point_in_world) = input.camera.point_on_target_plane(point.pos, viewport) else {
+            return Err(CommandError::StrokeOffPlane);
+        };
+        sketch.points.push(point_in_world);
+        sketch.pressures.push(point.pressure);
+    }
+    Ok(sketch)
+}
+
+/// Imports the files of an import op with the default limits.
+fn import_files(input: &ImportInput) -> Result<Imported, CommandError> {
+    let files = input
+        .files
+        .iter()
+        .map(|file| match &file.data {
+            Some(data) => Ok(ImportFile {
+                name: &file.name,
+                bytes: data.as_slice(),
+            }),
+            None => Err(CommandError::FileNotLoaded(file.name.clone())),
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let (main, others) = files.split_first().ok_or(CommandError::NoFile)?;
+    Ok(import_gltf(main, others, &ImportLimits::default())?)
+}

@@ -1,0 +1,177 @@
+//! The `oversketch` op on a document: which model the stroke redraws and its new version,
+//! and the outline piece shown while the stroke is drawn.
+//!
+//! The committed op tries every model and keeps the best match ([`oversketch_op`]). While
+//! the stroke is drawn, an [`OutlinePreview`] finds each model's silhouettes once (the
+//! stroke's camera does not move) and matches the stroke so far every
+//! [`PREVIEW_EVERY`] samples, so the app can show which piece the stroke would replace:
+//! silhouettes and matching only, no edit.
+
+use glam::DVec2;
+
+use super::{CommandError, Document, Model, OversketchInput, StrokeInput, curve_edit};
+use crate::camera::Camera;
+use crate::oversketch::{
+    BendOptions, ManualHandle, Outlines, OversketchError, Oversketched, manual_handle_preview,
+    oversketch_manual, oversketch_with,
+};
+
+/// New samples between two matches of the stroke so far: matching runs on whole
+/// silhouettes, so not on every sample.
+const PREVIEW_EVERY: usize = 8;
+
+/// Over-sketches the model whose outline the stroke matches best (highest match score
+/// among the models that accept it), returning its index and its new version: new
+/// positions, and control curves embedded in the mesh following their vertices.
+///
+/// Errors: [`CommandError::BadView`], [`CommandError::StrokeTooShort`],
+/// [`CommandError::StrokeNotFinite`], or the most telling refusal over all models
+/// (a failed edit, then a doubtful match, then no match).
+pub(super) fn oversketch_op(
+    document: &Document,
+    input: &OversketchInput,
+) -> Result<(usize, Model), CommandError> {
+    let input_stroke = StrokeInput::of_oversketch(input);
+    let viewport = input_stroke.viewport_size();
+    let stroke = curve_edit::screen_stroke(&input_stroke, 2)?;
+    let options = BendOptions {
+        fit: input.fit.handle_fit(),
+        roi: input.roi,
+    };
+    let mut best: Option<(usize, Oversketched)> = None;
+    let mut refusal = OversketchError::NoMatch;
+    for (index, model) in document.models.iter().enumerate() {
+        let (mesh, camera) = (&model.mesh, &input.camera);
+        let result = match &input.handle {
+            Some(handle) => oversketch_manual(mesh, camera, viewport, handle, &stroke, options),
+            None => oversketch_with(mesh, camera, viewport, &stroke, options),
+        };
+        match result {
+            Ok(result) => {
+                if best.as_ref().is_none_or(|(_, b)| result.score > b.score) {
+                    best = Some((index, result));
+                }
+            }
+            Err(error) => {
+                if refusal_rank(&error) > refusal_rank(&refusal) {
+                    refusal = error;
+                }
+            }
+        }
+    }
+    let (index, result) = best.ok_or(refusal)?;
+    let mut model = Model::clone(&document.models[index]);
+    model
+        .mesh
+        .positions_mut()
+        .copy_from_slice(&result.positions);
+    for curve in &mut model.curves {
+        if !curve.vertices.is_empty() {
+            curve.points = curve
+                .vertices
+                .iter()
+                .map(|&v| result.positions[v.index()])
+                .collect();
+        }
+    }
+    Ok((index, model))
+}
+
+/// How much a refusal tells the user: a failed edit, then a doubtful match, then none.
+fn refusal_rank(error: &OversketchError) -> u8 {
+    match error {
+        OversketchError::NoMatch => 0,
+        OversketchError::LowConfidence | OversketchError::HandleLost | OversketchError::NoPart => 1,
+        OversketchError::Deform(_) => 2,
+    }
+}
+
+/// The silhouette piece an over-sketch stroke would redraw, on screen (CSS px of the op's
+/// viewport), as shown while the stroke is drawn.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OutlinePiece {
+    /// The piece, in the stroke's direction.
+    pub points: Vec<DVec2>,
+    /// Whether the match is confident enough for the op to be applied (it is refused
+    /// otherwise); a picked handle always is.
+    pub is_confident: bool,
+}
+
+/// The piece an over-sketch stroke being drawn would redraw; see the module docs.
+#[derive(Debug)]
+pub(super) struct OutlinePreview {
+    camera: Camera,
+    viewport: DVec2,
+    handle: Option<ManualHandle>,
+    /// Each model's silhouettes; `None` until the first step.
+    outlines: Option<Vec<Outlines>>,
+    /// How many samples the stroke had at the last match.
+    matched: usize,
+    shown: Option<OutlinePiece>,
+}
+
+impl OutlinePreview {
+    /// The preview of `input`, nothing found yet.
+    pub(super) fn new(input: &OversketchInput) -> Self {
+        OutlinePreview {
+            camera: input.camera,
+            viewport: DVec2::from(input.viewport),
+            handle: input.handle.clone(),
+            outlines: None,
+            matched: 0,
+            shown: None,
+        }
+    }
+
+    /// One chunk of work for the stroke so far: the silhouettes of every model (the first
+    /// call; a picked handle is found on them then and stays), or a match of the stroke
+    /// when [`PREVIEW_EVERY`] samples came since the last one. Returns `None` when there was
+    /// nothing to do, else whether more work is ready.
+    pub(super) fn step(&mut self, document: &Document, stroke: &[[f64; 3]]) -> Option<bool> {
+        let Some(outlines) = &self.outlines else {
+            let (camera, viewport) = (&self.camera, self.viewport);
+            if let Some(handle) = &self.handle {
+                self.shown = document.models.iter().find_map(|model| {
+                    let points = manual_handle_preview(&model.mesh, camera, viewport, handle)?;
+                    Some(OutlinePiece {
+                        points,
+                        is_confident: true,
+                    })
+                });
+            }
+            let outlines = match self.handle {
+                Some(_) => Vec::new(),
+                None => document
+                    .models
+                    .iter()
+                    .map(|model| Outlines::new(&model.mesh, camera, viewport))
+                    .collect(),
+            };
+            self.outlines = Some(outlines);
+            return Some(self.is_due(stroke));
+        };
+        if !self.is_due(stroke) {
+            return None;
+        }
+        let points: Vec<DVec2> = stroke.iter().map(|&[x, y, _]| DVec2::new(x, y)).collect();
+        self.shown = outlines.iter().find_map(|outlines| {
+            let (points, is_confident) = outlines.preview(&points)?;
+            Some(OutlinePiece {
+                points,
+                is_confident,
+            })
+        });
+        self.matched = stroke.len();
+        Some(false)
+    }
+
+    /// Whether the stroke is to be matched again (never for a picked handle).
+    fn is_due(&self, stroke: &[[f64; 3]]) -> bool {
+        self.handle.is_none() && stroke.len() >= self.matched + PREVIEW_EVERY
+    }
+
+    /// The piece found at the last match, or the picked handle.
+    pub(super) fn shown(&self) -> Option<&OutlinePiece> {
+        self.shown.as_ref()
+    }
+}

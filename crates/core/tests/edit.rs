@@ -1,0 +1,312 @@
+//! One protocol for every op: an edit begun, stepped and finished by hand (gestures extended
+//! sample by sample, as the app does) gives the very document `apply` gives; a cancelled or
+//! refused edit changes nothing.
+
+#![allow(clippy::unwrap_used)] // A panic is a test failure with a location.
+
+use std::f64::consts::TAU;
+
+use glam::{DVec2, DVec3};
+use sketchmesh_core::camera::Camera;
+use sketchmesh_core::document::{
+    AddCurveInput, CommandError, Editor, Op, OversketchFit, OversketchInput, Progress, StrokeInput,
+};
+use sketchmesh_core::oversketch::OversketchRoi;
+
+const VIEWPORT: [f64; 2] = [800.0, 600.0];
+const CENTRE: DVec2 = DVec2::new(400.0, 300.0);
+
+fn input(points: impl IntoIterator<Item = DVec2>) -> StrokeInput {
+    StrokeInput {
+        viewport: VIEWPORT,
+        camera: Camera::default(),
+        stroke: points.into_iter().map(|p| [p.x, p.y, 0.5]).collect(),
+    }
+}
+
+fn circle(centre: DVec2, radius: f64) -> StrokeInput {
+    input((0..=80).map(|i| centre + radius * DVec2::from_angle(TAU * f64::from(i) / 80.0)))
+}
+
+/// Samples along the segment from `a` to `b`, about every 4 px.
+fn segment(a: DVec2, b: DVec2) -> Vec<DVec2> {
+    let n = (a.distance(b) / 4.0).ceil().max(1.0) as usize;
+    (0..=n).map(|i| a.lerp(b, i as f64 / n as f64)).collect()
+}
+
+fn screen(p: DVec3) -> DVec2 {
+    Camera::default()
+        .screen_from_world(p, DVec2::from(VIEWPORT))
+        .unwrap()
+        .truncate()
+}
+
+/// The arc of radius `radius` about the centre from `a` to `b` degrees.
+fn arc(radius: f64, a: f64, b: f64) -> Vec<DVec2> {
+    (0..=60)
+        .map(|k| {
+            CENTRE + radius * DVec2::from_angle((a + (b - a) * f64::from(k) / 60.0).to_radians())
+        })
+        .collect()
+}
+
+fn oversketch(points: &[DVec2]) -> Op {
+    let stroke = input(points.iter().copied());
+    Op::Oversketch(OversketchInput {
+        viewport: stroke.viewport,
+        camera: stroke.camera,
+        stroke: stroke.stroke,
+        fit: OversketchFit::Exact,
+        roi: OversketchRoi::NearHandle,
+        handle: None,
+    })
+}
+
+/// An op made from the document it applies to.
+type MakeOp = Box<dyn Fn(&Editor) -> Op>;
+
+/// The ops of a short session: ink, a shape, a curve across it, a pull of that curve, an
+/// over-sketch of the outline, an erase of the pulled curve, undo and redo.
+fn session() -> Vec<MakeOp> {
+    vec![
+        Box::new(|_| {
+            Op::Stroke(input(segment(
+                DVec2::new(40.0, 40.0),
+                DVec2::new(200.0, 60.0),
+            )))
+        }),
+        Box::new(|_| Op::Create(circle(CENTRE, 150.0))),
+        Box::new(|_| {
+            let stroke = input(segment(CENTRE - DVec2::X * 90.0, CENTRE + DVec2::X * 90.0));
+            Op::AddCurve(AddCurveInput {
+                viewport: stroke.viewport,
+                camera: stroke.camera,
+                stroke: stroke.stroke,
+                closed: false,
+                cross_section: false,
+            })
+        }),
+        Box::new(|editor| {
+            let curve = &editor.document().models[0].curves[1];
+            let start = screen(curve.points[curve.points.len() / 2]);
+            Op::Pull(input(segment(start, start + DVec2::new(0.0, -60.0))))
+        }),
+        Box::new(|_| oversketch(&arc(165.0, -30.0, 30.0))),
+        Box::new(|editor| {
+            let curve = &editor.document().models[0].curves[1];
+            Op::Erase(input(curve.points.iter().map(|&p| screen(p))))
+        }),
+        Box::new(|_| Op::Undo),
+        Box::new(|_| Op::Redo),
+    ]
+}
+
+/// Whether the app draws `op` as a gesture: begun at pointer-down, extended on moves.
+fn is_gesture(op: &Op) -> bool {
+    matches!(op, Op::Pull(_) | Op::Oversketch(_))
+}
+
+/// Applies `op` through the protocol by hand, one step at a time; a gesture is begun with
+/// its first sample and extended by the others, stepping in between as frames would.
+/// Returns how many steps it took.
+fn by_hand(editor: &mut Editor, op: Op) -> Result<usize, CommandError> {
+    let mut steps = 0;
+    let mut edit = if is_gesture(&op) {
+        let samples = op.stroke().unwrap().to_vec();
+        let mut first = op;
+        first.stroke_mut().unwrap().truncate(1);
+        let mut edit = editor.begin_gesture(first)?;
+        for &sample in &samples[1..] {
+            edit.extend(sample);
+            loop {
+                steps += 1;
+                if edit.step()? == Progress::Waiting {
+                    break;
+                }
+            }
+        }
+        assert_eq!(edit.op().stroke().unwrap(), &samples[..]);
+        edit.end_gesture();
+        edit
+    } else {
+        editor.begin(op)?
+    };
+    loop {
+        steps += 1;
+        if edit.step()? == Progress::Done {
+            break;
+        }
+    }
+    edit.finish(editor)?;
+    Ok(steps)
+}
+
+#[test]
+fn applying_equals_beginning_stepping_and_finishing_by_hand() {
+    let (mut direct, mut hand) = (Editor::new(), Editor::new());
+    for (k, make) in session().iter().enumerate() {
+        let op = make(&direct);
+        let name = op.name();
+        direct
+            .apply(op.clone())
+            .unwrap_or_else(|e| panic!("op {k} ({name}): {e}"));
+        let steps = by_hand(&mut hand, op).unwrap();
+        assert_eq!(hand.document(), direct.document(), "op {k} ({name})");
+        assert_eq!(
+            hand.session_json(),
+            direct.session_json(),
+            "op {k} ({name})"
+        );
+        if name == "create" {
+            assert!(
+                steps > 3,
+                "a creation refines over several steps, not {steps}"
+            );
+        }
+    }
+    assert_eq!(hand.ops().len(), 8);
+    let replayed = Editor::replay_json(&hand.session_json()).unwrap();
+    assert_eq!(replayed.document(), hand.document());
+}
+
+#[test]
+fn gestures_preview_without_changing_the_document() {
+    let mut editor = Editor::new();
+    for make in &session()[1..3] {
+        editor.apply(make(&editor)).unwrap();
+    }
+    let before = editor.document().clone();
+    // A pull: the first step factors the region, each followed sample moves its vertices.
+    let Op::Pull(drag) = session()[3](&editor) else {
+        unreachable!("the fourth op is a pull")
+    };
+    let mut edit = editor
+        .begin_gesture(Op::Pull(StrokeInput {
+            stroke: drag.stroke[..1].to_vec(),
+            ..drag.clone()
+        }))
+        .unwrap();
+    assert_eq!(edit.step().unwrap(), Progress::Waiting);
+    let rest = before.models[0].mesh.positions();
+    assert_eq!(edit.moved_model(), Some((0, rest)));
+    let generation = edit.generation();
+    for &sample in &drag.stroke[1..] {
+        edit.extend(sample);
+    }
+    // Samples arrived between two frames: one step follows the latest.
+    assert_eq!(edit.step().unwrap(), Progress::Waiting);
+    assert_eq!(edit.generation(), generation + 1);
+    assert_eq!(edit.step().unwrap(), Progress::Waiting);
+    assert_eq!(edit.generation(), generation + 1, "nothing new to follow");
+    let (index, moved) = edit.moved_model().unwrap();
+    assert_eq!(index, 0);
+    assert_ne!(moved, rest);
+    assert_eq!((edit.document(), edit.revision()), (&before, 0));
+    edit.cancel();
+    // An over-sketch: each model's silhouettes once, then the stroke so far is matched.
+    let Op::Oversketch(stroke) = session()[4](&editor) else {
+        unreachable!("the fifth op is an over-sketch")
+    };
+    let mut edit = editor
+        .begin_gesture(Op::Oversketch(OversketchInput {
+            stroke: stroke.stroke[..1].to_vec(),
+            ..stroke.clone()
+        }))
+        .unwrap();
+    assert_eq!(edit.step().unwrap(), Progress::Waiting);
+    assert!(edit.outline().is_none());
+    for &sample in &stroke.stroke[1..] {
+        edit.extend(sample);
+        while edit.step().unwrap() == Progress::Working {}
+    }
+    let piece = edit.outline().expect("the stroke matches the outline");
+    assert!(piece.is_confident && piece.points.len() > 5);
+    assert_eq!(edit.document(), &before);
+    edit.cancel();
+    assert_eq!(editor.document(), &before);
+}
+
+#[test]
+fn a_cancelled_edit_leaves_the_document_and_history_untouched() {
+    let mut editor = Editor::new();
+    for make in &session()[..3] {
+        editor.apply(make(&editor)).unwrap();
+    }
+    editor.undo().unwrap();
+    let state = |e: &Editor| {
+        (
+            e.document().clone(),
+            e.session_json(),
+            e.revision(),
+            e.can_undo(),
+            e.can_redo(),
+        )
+    };
+    let before = state(&editor);
+    let mut creation = editor
+        .begin(Op::Create(circle(CENTRE + DVec2::X * 200.0, 60.0)))
+        .unwrap();
+    for _ in 0..3 {
+        creation.step().unwrap();
+    }
+    assert_eq!(creation.document().models.len(), 2);
+    creation.cancel();
+    let mut pull = editor
+        .begin_gesture(Op::Pull(input([CENTRE + DVec2::X * 150.0])))
+        .unwrap();
+    pull.step().unwrap();
+    pull.extend([CENTRE.x + 190.0, CENTRE.y, 0.5]);
+    pull.step().unwrap();
+    pull.cancel();
+    assert!(state(&editor) == before, "a cancel changed the editor");
+    // Redo still finds what the undo took.
+    editor.redo().unwrap();
+    assert_eq!(editor.document().models[0].curves.len(), 2);
+}
+
+#[test]
+fn a_refused_op_changes_nothing_whether_at_begin_a_step_or_finish() {
+    let mut editor = Editor::new();
+    assert_eq!(
+        editor.begin(Op::Undo).err(),
+        Some(CommandError::NothingToUndo)
+    );
+    editor.apply(session()[1](&editor)).unwrap();
+    let (document, ops) = (editor.document().clone(), editor.ops().len());
+    let unchanged = |e: &Editor| e.document() == &document && e.ops().len() == ops;
+    // At begin: a drag that grabs no curve.
+    let nowhere = Op::Pull(input([DVec2::new(20.0, 20.0)]));
+    let refusal = editor.begin_gesture(nowhere.clone()).err();
+    assert_eq!(refusal, Some(CommandError::NoCurveHere));
+    // At a step: the same op begun whole refuses when computed, and then keeps refusing.
+    let mut edit = editor.begin(nowhere).unwrap();
+    assert_eq!(edit.step(), Err(CommandError::NoCurveHere));
+    assert_eq!(edit.step(), Err(CommandError::NoCurveHere));
+    assert_eq!(edit.finish(&mut editor), Err(CommandError::NoCurveHere));
+    assert!(unchanged(&editor));
+    // At finish: an undo begun while there was something to undo, finished after another
+    // undo took it. The document changed, so the op is computed again, and refused.
+    let undo = editor.begin(Op::Undo).unwrap();
+    editor.undo().unwrap();
+    let (document, ops) = (editor.document().clone(), editor.ops().len());
+    assert_eq!(undo.finish(&mut editor), Err(CommandError::NothingToUndo));
+    assert_eq!((editor.document(), editor.ops().len()), (&document, ops));
+}
+
+#[test]
+fn an_edit_finished_after_the_document_changed_is_computed_again() {
+    let first = Op::Stroke(input(segment(
+        DVec2::new(40.0, 40.0),
+        DVec2::new(200.0, 60.0),
+    )));
+    let second = Op::Create(circle(CENTRE, 120.0));
+    let mut editor = Editor::new();
+    let late = editor.begin(first.clone()).unwrap();
+    editor.apply(second.clone()).unwrap();
+    late.finish(&mut editor).unwrap();
+    let mut in_order = Editor::new();
+    in_order.apply(second).unwrap();
+    in_order.apply(first).unwrap();
+    assert_eq!(editor.document(), in_order.document());
+    assert_eq!(editor.session_json(), in_order.session_json());
+}

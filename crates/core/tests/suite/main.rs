@@ -5,6 +5,7 @@
 mod common;
 mod curve_edit;
 mod deform;
+mod edit;
 mod editor_properties;
 mod fibermesh;
 mod gltf_import;

@@ -18,8 +18,9 @@ use sketchmesh_core::oversketch::{
     ManualHandle, OversketchRoi, manual_handle_preview, pick_handle, preview_handle,
 };
 
+use super::context::{ToolOutput, ViewCtx};
 use super::draw::DrawTool;
-use super::{ToolEvent, ToolOutput, ViewCtx};
+use crate::input::router::ToolEvent;
 
 /// Samples between two previews: matching runs on whole silhouettes, so not on every sample.
 const PREVIEW_EVERY: usize = 8;

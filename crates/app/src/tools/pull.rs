@@ -8,8 +8,9 @@
 
 use sketchmesh_core::document::{Document, PullSession, StrokeInput};
 
+use super::context::{ToolOutput, ViewCtx};
 use super::draw::point;
-use super::{ToolEvent, ToolOutput, ViewCtx};
+use crate::input::router::ToolEvent;
 
 /// The pull tool's state: the session of the drag in progress.
 #[derive(Debug, Default)]

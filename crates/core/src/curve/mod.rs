@@ -4,13 +4,16 @@
 //! [`process_stroke`] validates it, [`resample`]s it to an even spacing and [`smooth`]s it
 //! lightly; later techniques (FiberMesh creation, pulling curves) work on the result.
 
+mod error;
+mod point;
 mod resample;
 mod smooth;
 mod stroke;
 
+pub use error::{MIN_STROKE_LENGTH_PX, StrokeError};
+pub use point::{StrokePoint, arc_length};
 pub use resample::resample;
 pub use smooth::{smooth, smooth_closed};
 pub use stroke::{
-    MIN_STROKE_LENGTH_PX, SAMPLE_SPACING_PX, SMOOTHING_ITERATIONS, StrokeError, StrokePoint,
-    arc_length, is_closed_loop, process_stroke, validate_stroke,
+    SAMPLE_SPACING_PX, SMOOTHING_ITERATIONS, is_closed_loop, process_stroke, validate_stroke,
 };

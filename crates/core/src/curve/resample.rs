@@ -1,6 +1,6 @@
 //! Even arc-length resampling of a polyline.
 
-use super::StrokePoint;
+use super::point::{StrokePoint, arc_length};
 
 /// Resamples a polyline at an even arc-length step close to `spacing`, interpolating
 /// pressure linearly.
@@ -16,7 +16,7 @@ pub fn resample(points: &[StrokePoint], spacing: f64) -> Vec<StrokePoint> {
     if !(spacing.is_finite() && spacing > 0.0) {
         return points.to_vec();
     }
-    let length = super::arc_length(points);
+    let length = arc_length(points);
     if length <= 0.0 {
         return vec![first];
     }
@@ -96,7 +96,7 @@ mod tests {
         let out = resample(&input, 3.0);
         assert_eq!(out.first(), input.first());
         assert_eq!(out.last(), input.last());
-        let length = crate::curve::arc_length(&input);
+        let length = arc_length(&input);
         let n = (length / 3.0).round();
         assert_eq!(out.len() as f64, n + 1.0);
         // Chords are at most the arc step, and close to it on this gentle curve.

@@ -247,7 +247,7 @@ fn place_stroke(input: &StrokeInput) -> Result<SketchCurve, CommandError> {
 
 /// Over-sketches the model whose outline the stroke matches best (highest match score
 /// among the models that accept it), returning its index and its new version: new
-/// positions, and control curves embedded in the mesh following their vertices.
+/// positions (its control curves, chains of its vertices, follow).
 ///
 /// Errors: [`CommandError::BadView`], [`CommandError::StrokeTooShort`],
 /// [`CommandError::StrokeNotFinite`], or the most telling refusal over all models
@@ -290,15 +290,6 @@ fn oversketch_document(
         .mesh
         .positions_mut()
         .copy_from_slice(&result.positions);
-    for curve in &mut model.curves {
-        if !curve.vertices.is_empty() {
-            curve.points = curve
-                .vertices
-                .iter()
-                .map(|&v| result.positions[v.index()])
-                .collect();
-        }
-    }
     Ok((index, model))
 }
 

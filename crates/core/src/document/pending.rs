@@ -120,15 +120,13 @@ impl PendingCreate {
     /// after a failed factorization.
     pub fn model(&self) -> Option<Model> {
         let (mesh, vertices) = self.parts()?;
-        let (mesh, vertices) = (mesh.clone(), vertices.to_vec());
         Some(Model {
             curves: vec![ControlCurve {
-                points: vertices.iter().map(|&v| mesh.position(v)).collect(),
-                vertices,
-                closed: true,
-                sharp: false,
+                vertices: vertices.to_vec(),
+                is_closed: true,
+                kind: crate::fibermesh::CurveKind::Smooth,
             }],
-            mesh,
+            mesh: mesh.clone(),
             ..Model::default()
         })
     }

@@ -16,9 +16,7 @@ use std::sync::Arc;
 use glam::{DVec2, DVec3};
 
 use super::settle::{Change, remesh_and_settle, settle};
-use super::{
-    CurvePick, bounding_diagonal, pick_curve_vertex, replaced, screen_stroke, solver_curves,
-};
+use super::shared::{CurvePick, bounding_diagonal, pick_curve_vertex, replaced, screen_stroke};
 use crate::camera::Camera;
 use crate::document::{CommandError, Document, Model, Op, StrokeInput};
 use crate::fibermesh::curve_pull::{CurveNetwork, CurvePull, PullParams};
@@ -52,8 +50,8 @@ pub fn pull_op(doc: &Document, input: &StrokeInput) -> Result<(usize, Model), Co
     let stroke = screen_stroke(input, 1)?;
     let pick = pick_curve_vertex(doc, input, stroke[0])?;
     let model = &doc.models[pick.model];
-    let curves = solver_curves(model);
-    let (mut pull, node_vertices) = curve_pull(model, &curves, pick)?;
+    let curves = &model.curves;
+    let (mut pull, node_vertices) = curve_pull(model, curves, pick)?;
     let Some(&release) = stroke.last() else {
         return Err(CommandError::StrokeTooShort);
     };
@@ -68,9 +66,9 @@ pub fn pull_op(doc: &Document, input: &StrokeInput) -> Result<(usize, Model), Co
         around: &[pick.vertex.0],
         radius: region_radius(&model.mesh, peel.radius),
     };
-    settle(&mut mesh, &curves, model.mesh.positions(), change, false)?;
-    let (mesh, curves) = remesh_and_settle(&mesh, &curves, change)?;
-    Ok((pick.model, replaced(model, mesh, &curves)))
+    settle(&mut mesh, curves, model.mesh.positions(), change, false)?;
+    let (mesh, curves) = remesh_and_settle(&mesh, curves, change)?;
+    Ok((pick.model, replaced(model, mesh, curves)))
 }
 
 /// A pull in progress: the live preview of a `pull` op while the pointer is down.
@@ -100,7 +98,7 @@ impl PullSession {
         let stroke = screen_stroke(&input, 1)?;
         let pick = pick_curve_vertex(doc, &input, stroke[0])?;
         let model = Arc::clone(&doc.models[pick.model]);
-        let curves = solver_curves(&model);
+        let curves = model.curves.clone();
         let (pull, node_vertices) = curve_pull(&model, &curves, pick)?;
         let region = nearest_vertices(
             &model.mesh,

@@ -4,6 +4,15 @@
 //! the GPU and glTF boundaries. The app, the CLI and the tests drive it through
 //! [`document::Editor`], which changes the [`document::Document`] only through
 //! serializable, undoable operations.
+//!
+//! The modules form layers; each uses only those below it:
+//! 1. the ground floor: [`camera`], [`curve`] (screen strokes), [`mesh`], [`solve`] and
+//!    [`geometry`] (which builds on `mesh` and `solve`);
+//! 2. the modeling techniques: [`fibermesh`], [`deform`], [`silhouette`] and [`oversketch`]
+//!    (which bends with `deform` along `silhouette`s);
+//! 3. [`model`]: what a document holds, as plain data;
+//! 4. [`io`]: glTF files in and out of the model;
+//! 5. [`document`]: editing it, with ops, undo history and sessions.
 
 pub mod camera;
 pub mod curve;
@@ -13,6 +22,7 @@ pub mod fibermesh;
 pub mod geometry;
 pub mod io;
 pub mod mesh;
+pub mod model;
 pub mod oversketch;
 pub mod silhouette;
 pub mod solve;

@@ -98,13 +98,14 @@ impl SceneGeometry {
                 &vertex_normals(&model.mesh),
             );
             for curve in &model.curves {
-                let color = if curve.sharp {
+                let color = if curve.is_sharp() {
                     SHARP_CURVE_COLOR
                 } else {
                     SMOOTH_CURVE_COLOR
                 };
-                let widths = vec![f64::from(CONTROL_CURVE_WIDTH); curve.points.len()];
-                scene.add_polyline(&curve.points, &widths, curve.closed, color);
+                let points = curve.points(&model.mesh);
+                let widths = vec![f64::from(CONTROL_CURVE_WIDTH); points.len()];
+                scene.add_polyline(&points, &widths, curve.is_closed, color);
             }
             scene.model_ranges.push(ModelRange {
                 vertices: vertices..scene.vertices.len(),
@@ -152,16 +153,13 @@ impl SceneGeometry {
         }
         let mut segments = self.curves[range.curves].iter_mut();
         for curve in &model.curves {
-            let n = curve.points.len();
-            let n_segments = if curve.closed && n > 2 {
+            let n = curve.vertices.len();
+            let n_segments = if curve.is_closed && n > 2 {
                 n
             } else {
                 n.saturating_sub(1)
             };
-            let at = |k: usize| match curve.vertices.get(k % n) {
-                Some(v) => positions[v.index()],
-                None => curve.points[k % n],
-            };
+            let at = |k: usize| positions[curve.vertices[k % n].index()];
             for k in 0..n_segments {
                 if let Some(segment) = segments.next() {
                     segment.p0 = at(k).as_vec3().to_array();

@@ -4,8 +4,10 @@
 use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::document::{CurveTypeInput, Document, Op, curve_type_toggle};
 
+use super::context::{ToolOutput, ViewCtx};
 use super::draw::DrawTool;
-use super::{Mode, ToolEvent, ToolOutput, ViewCtx};
+use super::mode::Mode;
+use crate::input::router::ToolEvent;
 
 /// The state of the three stroke-along-curves tools: the stroke being drawn.
 #[derive(Clone, Debug, Default)]

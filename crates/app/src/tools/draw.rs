@@ -10,7 +10,8 @@ use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::document::{Document, StrokeInput, op_for_stroke};
 
-use super::{ToolEvent, ToolOutput, ViewCtx};
+use super::context::{ToolOutput, ViewCtx};
+use crate::input::router::ToolEvent;
 
 /// The draw tool's state.
 #[derive(Clone, Debug, Default)]

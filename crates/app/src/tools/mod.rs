@@ -1,11 +1,13 @@
 //! Tools: small state machines that turn [`ToolEvent`]s into document operations.
 //!
-//! A tool never touches a mesh; it emits an [`Op`] for the editor, so one gesture is one
-//! undo step and every edit replays from the session. A tool whose op previews while it is
-//! drawn (pull, over-sketch) begins it as a gesture ([`ToolOutput::Begin`]) and feeds it
-//! samples; the app runs it as it runs every edit. [`ToolSet`] holds one tool per [`Mode`]
-//! (FiberMesh's five tools plus over-sketch) and routes events to the active one.
+//! A tool never touches a mesh; it emits an [`Op`](sketchmesh_core::document::Op) for the
+//! editor, so one gesture is one undo step and every edit replays from the session. A tool
+//! whose op previews while it is drawn (pull, over-sketch) begins it as a gesture
+//! ([`ToolOutput::Begin`]) and feeds it samples; the app runs it as it runs every edit.
+//! [`ToolSet`] holds one tool per [`Mode`] (FiberMesh's five tools plus over-sketch) and
+//! routes events to the active one.
 
+mod context;
 pub mod curve_stroke;
 pub mod draw;
 pub mod mode;
@@ -13,12 +15,11 @@ pub mod oversketch;
 pub mod pull;
 pub mod sketch;
 
-use egui::Rect;
-use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::StrokePoint;
-use sketchmesh_core::document::{Document, Op};
+use sketchmesh_core::document::Document;
 
 pub use crate::input::router::ToolEvent;
+pub use context::{ToolOutput, ViewCtx};
 pub use mode::Mode;
 
 use curve_stroke::CurveStrokeTool;
@@ -26,37 +27,6 @@ pub use oversketch::OversketchSettings;
 use oversketch::{HandlePreview, OversketchTool};
 use pull::PullTool;
 use sketch::SketchTool;
-
-/// What a tool needs to know about the view it acts in.
-#[derive(Clone, Copy, Debug)]
-pub struct ViewCtx {
-    /// The camera the user sees through.
-    pub camera: Camera,
-    /// The 3D viewport's rectangle in screen points; stroke coordinates are relative to it.
-    pub viewport: Rect,
-}
-
-/// The result of feeding an event to a tool.
-#[derive(Clone, Debug, PartialEq)]
-pub enum ToolOutput {
-    /// Nothing for the document (the tool may have updated its preview).
-    None,
-    /// Apply this operation as one undoable step.
-    Commit(Op),
-    /// Apply these operations in order, one undoable step each.
-    CommitAll(Vec<Op>),
-    /// Begin this op as a gesture: its stroke (the pointer-down sample so far) is still
-    /// being drawn, and the edit previews it.
-    Begin(Op),
-    /// The gesture's stroke reached this sample `[x, y, pressure]`.
-    Extend([f64; 3]),
-    /// The gesture ended with this sample: apply its op as one undoable step.
-    End([f64; 3]),
-    /// Drop the gesture: nothing changes.
-    Cancel,
-    /// The gesture did nothing; tell the user why.
-    Refused(String),
-}
 
 /// Every tool, and which one gets the events.
 #[derive(Debug, Default)]

@@ -21,8 +21,9 @@ use sketchmesh_core::oversketch::{
     ManualHandle, OversketchRoi, manual_handle_preview, pick_handle,
 };
 
+use super::context::{ToolOutput, ViewCtx};
 use super::draw::{DrawTool, point};
-use super::{ToolEvent, ToolOutput, ViewCtx};
+use crate::input::router::ToolEvent;
 
 /// A stroke starting this close (points) to an end of a picked outline piece and running
 /// along the outline moves that end (a crop).

@@ -5,8 +5,9 @@
 
 use sketchmesh_core::document::{Op, StrokeInput};
 
+use super::context::{ToolOutput, ViewCtx};
 use super::draw::point;
-use super::{ToolEvent, ToolOutput, ViewCtx};
+use crate::input::router::ToolEvent;
 
 /// The pull tool's state: whether a drag is in progress.
 #[derive(Debug, Default)]

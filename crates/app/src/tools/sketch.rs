@@ -6,8 +6,9 @@ use glam::DVec2;
 use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::document::{Document, Op, StrokeInput, ink_instead, needs_tap, op_for_stroke};
 
+use super::context::{ToolOutput, ViewCtx};
 use super::draw::DrawTool;
-use super::{ToolEvent, ToolOutput, ViewCtx};
+use crate::input::router::ToolEvent;
 
 /// A gesture whose samples all lie within this many points of its first one is a tap.
 const TAP_RADIUS: f64 = 10.0;

@@ -7,9 +7,7 @@ use std::sync::Arc;
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::StrokePoint;
-use sketchmesh_core::document::{
-    ControlCurve, Document, Editor, FileInput, ImportInput, Model, Op,
-};
+use sketchmesh_core::document::{Document, Editor, FileInput, ImportInput, Model, Op};
 use sketchmesh_core::fibermesh::{CreateParams, create_converged_from_stroke};
 use sketchmesh_core::io::write_glb;
 
@@ -34,18 +32,8 @@ pub fn ellipse_document(target_vertices: usize) -> Result<Document, Box<dyn std:
     };
     let (creation, _) =
         create_converged_from_stroke(&stroke, &Camera::default(), VIEWPORT, &params)?;
-    let curve = creation.control_curve();
     let model = Model {
-        curves: vec![ControlCurve {
-            points: curve
-                .vertices
-                .iter()
-                .map(|&v| creation.mesh.position(v))
-                .collect(),
-            vertices: curve.vertices,
-            closed: true,
-            sharp: false,
-        }],
+        curves: vec![creation.control_curve()],
         mesh: creation.mesh,
         ..Model::default()
     };

@@ -7,12 +7,15 @@
 //! the result. [`polyline`] holds the planar helpers every technique shares: arclength,
 //! resampling, nearest points, simplification, polygon area and containment, crossings.
 
+mod error;
+mod point;
 pub mod polyline;
 mod smooth;
 mod stroke;
 
+pub use error::{MIN_STROKE_LENGTH_PX, StrokeError};
+pub use point::StrokePoint;
 pub use smooth::{smooth, smooth_closed};
 pub use stroke::{
-    MIN_STROKE_LENGTH_PX, SAMPLE_SPACING_PX, SMOOTHING_ITERATIONS, StrokeError, StrokePoint,
-    is_closed_loop, process_stroke, validate_stroke,
+    SAMPLE_SPACING_PX, SMOOTHING_ITERATIONS, is_closed_loop, process_stroke, validate_stroke,
 };

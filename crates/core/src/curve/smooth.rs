@@ -6,7 +6,7 @@
 //! smoothing makes it. `Δp_i = (p_{i−1} + p_{i+1}) / 2 − p_i` is the umbrella operator.
 //! Pressure is smoothed along with position.
 
-use super::StrokePoint;
+use super::point::StrokePoint;
 
 /// Taubin's shrinking step.
 const LAMBDA: f64 = 0.5;

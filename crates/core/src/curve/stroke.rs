@@ -1,69 +1,14 @@
 //! Stroke points, validation and the standard stroke clean-up.
 
-use glam::DVec2;
-
+use super::error::{MIN_STROKE_LENGTH_PX, StrokeError};
+use super::point::StrokePoint;
 use super::polyline::{self, PolylinePoint, resample};
 use super::smooth;
 
-/// Strokes shorter than this (in CSS px of arc length) are refused.
-pub const MIN_STROKE_LENGTH_PX: f64 = 4.0;
 /// Spacing of the resampled stroke, in CSS px.
 pub const SAMPLE_SPACING_PX: f64 = 4.0;
 /// Taubin smoothing iterations applied by [`process_stroke`].
 pub const SMOOTHING_ITERATIONS: usize = 2;
-
-/// One sample of a pointer stroke.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct StrokePoint {
-    /// Position in screen space (CSS px, y down, origin top-left).
-    pub pos: DVec2,
-    /// Pen pressure in 0..=1; 0.5 for a mouse or a touch without force.
-    pub pressure: f64,
-}
-
-impl StrokePoint {
-    /// A point with the given position and pressure.
-    pub fn new(pos: DVec2, pressure: f64) -> Self {
-        Self { pos, pressure }
-    }
-}
-
-/// Resampling interpolates pressure linearly along with the position.
-impl PolylinePoint for StrokePoint {
-    fn position(&self) -> DVec2 {
-        self.pos
-    }
-
-    fn interpolate(self, other: Self, t: f64) -> Self {
-        StrokePoint {
-            pos: self.pos.lerp(other.pos, t),
-            pressure: self.pressure + (other.pressure - self.pressure) * t,
-        }
-    }
-}
-
-/// Why a stroke was refused.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum StrokeError {
-    /// Fewer than two points.
-    #[error("The stroke has {count} point(s); at least 2 are needed.")]
-    TooFewPoints {
-        /// How many points the stroke had.
-        count: usize,
-    },
-    /// A coordinate or pressure is NaN or infinite.
-    #[error("Point {index} of the stroke is not a finite number.")]
-    NonFinite {
-        /// Index of the first bad point.
-        index: usize,
-    },
-    /// The stroke is shorter than [`MIN_STROKE_LENGTH_PX`].
-    #[error("The stroke is {length_px:.1} px long; at least {MIN_STROKE_LENGTH_PX} px are needed.")]
-    TooShort {
-        /// Arc length of the stroke in CSS px.
-        length_px: f64,
-    },
-}
 
 /// Arc length of a stroke in CSS px.
 fn arc_length(points: &[StrokePoint]) -> f64 {
@@ -121,6 +66,8 @@ pub fn process_stroke(raw: &[StrokePoint]) -> Result<Vec<StrokePoint>, StrokeErr
 
 #[cfg(test)]
 mod tests {
+    use glam::DVec2;
+
     use super::*;
 
     fn line(points: &[(f64, f64)]) -> Vec<StrokePoint> {

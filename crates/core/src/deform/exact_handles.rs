@@ -164,7 +164,7 @@ impl ExactConstraints {
 mod tests {
     use super::*;
     use crate::solve::Triplets;
-    use crate::solve::tests::dense_solve;
+    use crate::solve::test_support::dense_solve;
 
     /// A 1D chain: `x_{i+1} - x_i = 1` for 6 unknowns, with x_0 fixed, and `last` ordered
     /// last.

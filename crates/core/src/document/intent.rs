@@ -77,9 +77,9 @@ fn hits_model(
         .any(|m| accept(m) && raycast(&m.mesh, origin, dir).is_some())
 }
 
-/// Whether a model's shape is held by control curves embedded in its mesh.
+/// Whether a model's shape is held by control curves (made here, or imported with them).
 fn has_curves(model: &Model) -> bool {
-    model.curves.iter().any(|c| c.vertices.len() >= 2)
+    !model.curves.is_empty()
 }
 
 fn curve_input(input: StrokeInput, closed: bool, cross_section: bool) -> AddCurveInput {

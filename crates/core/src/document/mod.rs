@@ -6,8 +6,12 @@
 //! Every op builds the new state first and swaps it in only on success, so a refused op leaves
 //! the document, the history and the log untouched. Models and sketches sit behind `Arc`, so an
 //! undo snapshot is a copy of a few pointers and restores the exact previous state.
+//!
+//! The data itself ([`Document`], [`Model`], [`ControlCurve`], ...) is defined in
+//! [`crate::model`], below both this module and [`crate::io`], and re-exported here as part
+//! of the editor's interface. This is the top layer: it uses the techniques (FiberMesh,
+//! over-sketch) and `io` (the `import` op), and nothing below uses it.
 
-mod appearance;
 mod create;
 mod curve_edit;
 mod edit;
@@ -15,22 +19,25 @@ mod editor;
 mod error;
 mod history;
 mod intent;
-mod model;
 mod op;
 mod outcome;
 mod oversketch;
 mod session;
+mod session_error;
 
-pub use appearance::{AlphaMode, Appearance, Image, Material, Texture, positions_hash};
+pub use crate::model::{
+    AlphaMode, Appearance, ControlCurve, CurveKind, Document, Image, Material, Model, PointCloud,
+    SketchCurve, Stats, Texture, positions_hash,
+};
 pub use curve_edit::{CURVE_PICK_RADIUS_PX, curve_type_toggle};
 pub use edit::{Edit, Progress};
 pub use editor::Editor;
 pub use error::CommandError;
 pub use intent::{CLOSE_TOLERANCE_PX, ink_instead, needs_tap, op_for_stroke, starts_on_model};
-pub use model::{ControlCurve, Document, Model, PointCloud, SketchCurve, Stats};
 pub use op::{
     AddCurveInput, CurveTypeInput, FileInput, ImportInput, Op, OversketchFit, OversketchInput,
     StrokeInput,
 };
 pub use oversketch::OutlinePiece;
-pub use session::{SESSION_FORMAT, SESSION_VERSION, Session, SessionError};
+pub use session::{SESSION_FORMAT, SESSION_VERSION, Session};
+pub use session_error::SessionError;

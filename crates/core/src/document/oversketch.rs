@@ -65,15 +65,6 @@ pub(super) fn oversketch_op(
         .mesh
         .positions_mut()
         .copy_from_slice(&result.positions);
-    for curve in &mut model.curves {
-        if !curve.vertices.is_empty() {
-            curve.points = curve
-                .vertices
-                .iter()
-                .map(|&v| result.positions[v.index()])
-                .collect();
-        }
-    }
     Ok((index, model))
 }
 

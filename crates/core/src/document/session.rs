@@ -6,7 +6,8 @@
 
 use serde_json::Value;
 
-use super::{CommandError, Editor, Op};
+use super::session_error::SessionError;
+use super::{Editor, Op};
 
 /// The `"format"` value of a session file.
 pub const SESSION_FORMAT: &str = "sketchmesh-session";
@@ -18,41 +19,6 @@ pub const SESSION_VERSION: u64 = 1;
 pub struct Session {
     /// The ops, in the order they were applied.
     pub ops: Vec<Op>,
-}
-
-/// Why a session could not be read or replayed.
-#[derive(Debug, thiserror::Error)]
-pub enum SessionError {
-    /// The text is not JSON at all.
-    #[error("The session is not valid JSON: {0}")]
-    Json(#[from] serde_json::Error),
-    /// The JSON is not a session object (wrong `"format"`, missing or unknown fields).
-    #[error("This is not a Sketchmesh session: {0}.")]
-    Format(String),
-    /// The session was written by an incompatible version.
-    #[error(
-        "The session has version {found}, but this Sketchmesh reads version {SESSION_VERSION}."
-    )]
-    Version {
-        /// The `"version"` value found, as JSON text.
-        found: String,
-    },
-    /// An op could not be parsed.
-    #[error("op {index}: {message}")]
-    Op {
-        /// Zero-based position of the op in `"ops"`.
-        index: usize,
-        /// What is wrong with it.
-        message: String,
-    },
-    /// An op parsed but was refused when replayed.
-    #[error("op {index}: {source}")]
-    Command {
-        /// Zero-based position of the op in `"ops"`.
-        index: usize,
-        /// Why the editor refused it.
-        source: CommandError,
-    },
 }
 
 impl Session {
@@ -96,6 +62,7 @@ impl Session {
             Some(version) => {
                 return Err(SessionError::Version {
                     found: version.to_string(),
+                    expected: SESSION_VERSION,
                 });
             }
             None => return Err(format_error("the \"version\" field is missing")),
@@ -214,7 +181,7 @@ fn has_no_fields(op: &Op) -> bool {
 mod tests {
     use super::*;
     use crate::camera::Camera;
-    use crate::document::StrokeInput;
+    use crate::document::{CommandError, StrokeInput};
     use glam::DVec3;
 
     /// The session example in docs/session-format.md (its last JSON block), so the docs

@@ -30,10 +30,13 @@
 //! for open and closed curves and O(vertices · stroke segments) for cross sections, plus
 //! building the BVH and the output mesh.
 
+mod error;
 mod level_set;
 mod project;
 mod tri_list;
 mod walk;
+
+pub use error::AddCurveError;
 
 use glam::{DVec2, DVec3};
 
@@ -80,24 +83,6 @@ pub struct Embedded {
     /// moment) got vertex `new` between a and b. Callers replay this list to insert `new`
     /// into other curves that ran along a–b.
     pub split_edges: Vec<(u32, u32, u32)>,
-}
-
-/// Why a stroke did not become a curve. The messages are sentences for the user.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum AddCurveError {
-    /// No two consecutive stroke samples hit the shape.
-    #[error("Draw the curve on the shape: the stroke misses it.")]
-    Misses,
-    /// Part of a closed stroke misses the shape or jumps between parts of it.
-    #[error("A closed curve must lie on the visible surface.")]
-    ClosedOffSurface,
-    /// A cross-section stroke starts or ends on the shape, or never crosses it, or its
-    /// cut holds no closed loop.
-    #[error("That stroke does not cross the shape from side to side.")]
-    DoesNotCross,
-    /// The walk along the stroke lost its way, or the result is not a valid mesh.
-    #[error("The curve could not be placed on the surface.")]
-    NotPlaced,
 }
 
 /// Embeds the curve that `stroke` (screen points in CSS px, y down, in a `viewport` of

@@ -31,12 +31,16 @@
 //! With zero rotation iterations the deformation is the plain linear Laplacian one (`δ`
 //! not rotated), kept for comparison.
 
+mod error;
+
 use glam::{DMat3, DVec3};
 use rustc_hash::FxHashMap;
 
+pub use error::PullError;
+
 use super::measure::Rings;
 use super::region::distances_within;
-use crate::solve::{Prefactored, SolveError, Triplets};
+use crate::solve::{Prefactored, Triplets};
 
 /// How a pull peels and deforms.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -66,25 +70,6 @@ impl Default for PullParams {
             rotation_weight: 1.0,
         }
     }
-}
-
-/// Why a pull failed. The messages are sentences for the user.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum PullError {
-    /// The drag target is not a finite point.
-    #[error("The curve cannot be pulled there from this view.")]
-    BadTarget,
-    /// The output buffer does not have one entry per node (a bug).
-    #[error("The curve network has {expected} points, but {found} were given.")]
-    WrongLength {
-        /// Nodes of the network.
-        expected: usize,
-        /// Length of the buffer.
-        found: usize,
-    },
-    /// A solve failed.
-    #[error("The curve could not be deformed: {0}")]
-    Solve(#[from] SolveError),
 }
 
 /// The control curves of a model as one graph: every curve vertex once (curves that share

@@ -53,6 +53,7 @@ pub mod add_curve;
 mod control_curve;
 pub mod curve_pull;
 pub mod curve_tools;
+mod error;
 mod fair_surface;
 mod fair_systems;
 mod inflate;
@@ -65,16 +66,16 @@ mod triangulate;
 use glam::DVec2;
 
 pub use control_curve::{ControlCurve, CurveKind};
+pub use error::CreateError;
 pub use fair_surface::{Convergence, FairSurface, RunSummary};
 pub use outline::{FINE_SPACING_PX, MAX_OVERSHOOT, MIN_AREA_PX2, MIN_ROUNDNESS};
 pub use plane::DrawingPlane;
 pub use region::{Region, nearest_vertices, region_around};
 
 use crate::camera::Camera;
+use crate::curve::StrokePoint;
 use crate::curve::polyline::{perimeter, signed_area};
-use crate::curve::{StrokeError, StrokePoint};
-use crate::mesh::{Mesh, MeshError, VertexId};
-use crate::solve::SolveError;
+use crate::mesh::{Mesh, VertexId};
 
 /// Settings of a creation.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -107,35 +108,6 @@ impl CreateParams {
     pub fn refinement(&self) -> Convergence {
         Convergence::new(self.max_iterations.saturating_sub(1), self.tolerance)
     }
-}
-
-/// Why a stroke did not become a shape. The messages are sentences for the user.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum CreateError {
-    /// The stroke itself is unusable (too few points, not finite, too short).
-    #[error("{0}")]
-    Stroke(StrokeError),
-    /// The ends of the stroke are far apart.
-    #[error("Close the outline: end the stroke near where it started.")]
-    NotClosed,
-    /// The outline crosses itself other than by overshooting its start.
-    #[error("That outline crosses itself; draw it without loops.")]
-    SelfCrossing,
-    /// The outline encloses (almost) no area.
-    #[error("The outline encloses almost no area; draw a rounder shape.")]
-    NoArea,
-    /// The outline is too thin somewhere for the mesh resolution.
-    #[error("The outline is too thin in places to build a surface; draw it wider.")]
-    TooThin,
-    /// The camera is degenerate or the stroke misses the drawing plane.
-    #[error("The stroke cannot be placed in the scene from this view; reset the camera.")]
-    BadView,
-    /// A sparse solve failed.
-    #[error("The surface could not be computed: {0}")]
-    Solve(SolveError),
-    /// The stitched mesh is broken (a bug).
-    #[error("The surface mesh could not be built: {0}")]
-    Mesh(MeshError),
 }
 
 /// The first display of a new shape: connectivity and seed, before any factorization.

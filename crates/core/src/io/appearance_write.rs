@@ -9,9 +9,9 @@ use glam::Vec3;
 use gltf::json;
 use json::validation::Checked::Valid;
 
-use super::gltf_write::{Writer, f32_positions_and_normals};
-use crate::document::{AlphaMode, Appearance, Material, Texture};
+use super::glb::{Writer, f32_positions_and_normals};
 use crate::mesh::Mesh;
+use crate::model::{AlphaMode, Appearance, Material, Texture};
 
 /// The vertex arrays of an imported model after splitting corners that differ.
 struct SplitVertices {
@@ -23,118 +23,122 @@ struct SplitVertices {
     corner_vertex: Vec<u32>,
 }
 
-impl Writer {
-    /// One primitive per material (faces without one last), sharing the vertex accessors.
-    pub(super) fn imported_primitives(
-        &mut self,
-        mesh: &Mesh,
-        appearance: &Appearance,
-    ) -> Vec<json::mesh::Primitive> {
-        let split = split_vertices(mesh, appearance);
-        let mut attributes = BTreeMap::new();
+/// One primitive per material (faces without one last), sharing the vertex accessors.
+pub(super) fn imported_primitives(
+    writer: &mut Writer,
+    mesh: &Mesh,
+    appearance: &Appearance,
+) -> Vec<json::mesh::Primitive> {
+    let split = split_vertices(mesh, appearance);
+    let mut attributes = BTreeMap::new();
+    attributes.insert(
+        Valid(json::mesh::Semantic::Positions),
+        writer.positions(&split.positions),
+    );
+    attributes.insert(
+        Valid(json::mesh::Semantic::Normals),
+        writer.vec3s(&split.normals, None),
+    );
+    if let Some(uvs) = &split.uvs {
         attributes.insert(
-            Valid(json::mesh::Semantic::Positions),
-            self.positions(&split.positions),
+            Valid(json::mesh::Semantic::TexCoords(0)),
+            writer.floats(uvs),
         );
+    }
+    if let Some(colors) = &split.colors {
         attributes.insert(
-            Valid(json::mesh::Semantic::Normals),
-            self.vec3s(&split.normals, None),
+            Valid(json::mesh::Semantic::Colors(0)),
+            writer.floats(colors),
         );
-        if let Some(uvs) = &split.uvs {
-            attributes.insert(Valid(json::mesh::Semantic::TexCoords(0)), self.floats(uvs));
-        }
-        if let Some(colors) = &split.colors {
-            attributes.insert(Valid(json::mesh::Semantic::Colors(0)), self.floats(colors));
-        }
-        let mut groups: BTreeMap<Option<u32>, Vec<u32>> = BTreeMap::new();
-        for (f, &material) in appearance.face_materials.iter().enumerate() {
-            // `None` sorts first in a BTreeMap; write it last by keying it past every index.
-            groups
-                .entry(material.or(Some(u32::MAX)))
-                .or_default()
-                .extend_from_slice(&split.corner_vertex[3 * f..3 * f + 3]);
-        }
-        let n_vertices = split.positions.len();
+    }
+    let mut groups: BTreeMap<Option<u32>, Vec<u32>> = BTreeMap::new();
+    for (f, &material) in appearance.face_materials.iter().enumerate() {
+        // `None` sorts first in a BTreeMap; write it last by keying it past every index.
         groups
-            .into_iter()
-            .map(|(material, indices)| {
-                let material = material
-                    .and_then(|m| appearance.materials.get(m as usize))
-                    .map(|m| self.imported_material(m));
-                self.triangle_primitive(attributes.clone(), &indices, n_vertices, material)
-            })
-            .collect()
+            .entry(material.or(Some(u32::MAX)))
+            .or_default()
+            .extend_from_slice(&split.corner_vertex[3 * f..3 * f + 3]);
     }
-
-    fn imported_material(&mut self, material: &Material) -> json::Index<json::Material> {
-        let base_color_texture =
-            material
-                .base_color_texture
-                .as_ref()
-                .map(|texture| json::texture::Info {
-                    index: self.texture(texture),
-                    tex_coord: 0,
-                    extensions: None,
-                    extras: None,
-                });
-        let (alpha_mode, alpha_cutoff) = match material.alpha_mode {
-            AlphaMode::Opaque => (json::material::AlphaMode::Opaque, None),
-            AlphaMode::Mask(cutoff) => (
-                json::material::AlphaMode::Mask,
-                Some(json::material::AlphaCutoff(cutoff)),
-            ),
-            AlphaMode::Blend => (json::material::AlphaMode::Blend, None),
-        };
-        self.root.push(json::Material {
-            name: material.name.clone(),
-            alpha_mode: Valid(alpha_mode),
-            alpha_cutoff,
-            double_sided: material.double_sided,
-            emissive_factor: json::material::EmissiveFactor(material.emissive),
-            pbr_metallic_roughness: json::material::PbrMetallicRoughness {
-                base_color_factor: json::material::PbrBaseColorFactor(material.base_color),
-                base_color_texture,
-                metallic_factor: json::material::StrengthFactor(material.metallic),
-                roughness_factor: json::material::StrengthFactor(material.roughness),
-                ..Default::default()
-            },
-            ..Default::default()
+    let n_vertices = split.positions.len();
+    groups
+        .into_iter()
+        .map(|(material, indices)| {
+            let material = material
+                .and_then(|m| appearance.materials.get(m as usize))
+                .map(|m| imported_material(writer, m));
+            writer.triangle_primitive(attributes.clone(), &indices, n_vertices, material)
         })
-    }
+        .collect()
+}
 
-    fn texture(&mut self, texture: &Texture) -> json::Index<json::Texture> {
-        let key = Arc::as_ptr(&texture.image);
-        let source = match self.images.get(&key) {
-            Some(&image) => image,
-            None => {
-                let view = self.view(&texture.image.bytes, None);
-                let image = self.root.push(json::Image {
-                    buffer_view: Some(view),
-                    mime_type: Some(json::image::MimeType(texture.image.mime_type.clone())),
-                    name: None,
-                    uri: None,
-                    extensions: None,
-                    extras: None,
-                });
-                self.images.insert(key, image);
-                image
-            }
-        };
-        let sampler = self.root.push(json::texture::Sampler {
-            mag_filter: texture.mag_filter.and_then(mag_filter).map(Valid),
-            min_filter: texture.min_filter.and_then(min_filter).map(Valid),
-            wrap_s: Valid(wrapping(texture.wrap[0])),
-            wrap_t: Valid(wrapping(texture.wrap[1])),
+fn imported_material(writer: &mut Writer, material: &Material) -> json::Index<json::Material> {
+    let base_color_texture =
+        material
+            .base_color_texture
+            .as_ref()
+            .map(|texture| json::texture::Info {
+                index: write_texture(writer, texture),
+                tex_coord: 0,
+                extensions: None,
+                extras: None,
+            });
+    let (alpha_mode, alpha_cutoff) = match material.alpha_mode {
+        AlphaMode::Opaque => (json::material::AlphaMode::Opaque, None),
+        AlphaMode::Mask(cutoff) => (
+            json::material::AlphaMode::Mask,
+            Some(json::material::AlphaCutoff(cutoff)),
+        ),
+        AlphaMode::Blend => (json::material::AlphaMode::Blend, None),
+    };
+    writer.root.push(json::Material {
+        name: material.name.clone(),
+        alpha_mode: Valid(alpha_mode),
+        alpha_cutoff,
+        double_sided: material.double_sided,
+        emissive_factor: json::material::EmissiveFactor(material.emissive),
+        pbr_metallic_roughness: json::material::PbrMetallicRoughness {
+            base_color_factor: json::material::PbrBaseColorFactor(material.base_color),
+            base_color_texture,
+            metallic_factor: json::material::StrengthFactor(material.metallic),
+            roughness_factor: json::material::StrengthFactor(material.roughness),
             ..Default::default()
-        });
-        self.root.push(json::Texture {
-            name: None,
-            sampler: Some(sampler),
-            source,
-            extensions: None,
-            extras: None,
-        })
-    }
+        },
+        ..Default::default()
+    })
+}
+
+fn write_texture(writer: &mut Writer, texture: &Texture) -> json::Index<json::Texture> {
+    let key = Arc::as_ptr(&texture.image);
+    let source = match writer.images.get(&key) {
+        Some(&image) => image,
+        None => {
+            let view = writer.view(&texture.image.bytes, None);
+            let image = writer.root.push(json::Image {
+                buffer_view: Some(view),
+                mime_type: Some(json::image::MimeType(texture.image.mime_type.clone())),
+                name: None,
+                uri: None,
+                extensions: None,
+                extras: None,
+            });
+            writer.images.insert(key, image);
+            image
+        }
+    };
+    let sampler = writer.root.push(json::texture::Sampler {
+        mag_filter: texture.mag_filter.and_then(mag_filter).map(Valid),
+        min_filter: texture.min_filter.and_then(min_filter).map(Valid),
+        wrap_s: Valid(wrapping(texture.wrap[0])),
+        wrap_t: Valid(wrapping(texture.wrap[1])),
+        ..Default::default()
+    });
+    writer.root.push(json::Texture {
+        name: None,
+        sampler: Some(sampler),
+        source,
+        extensions: None,
+        extras: None,
+    })
 }
 
 /// Splits mesh vertices whose corners carry different attributes, in corner order.

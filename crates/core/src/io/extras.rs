@@ -5,6 +5,10 @@ use serde::{Deserialize, Serialize};
 /// Version of the `"sketchmesh"` extras object written by this build.
 pub const EXTRAS_VERSION: u32 = 1;
 
+/// The name of the material of models made here, by which import recognizes them (and
+/// leaves them without an imported look).
+pub(crate) const CLAY_MATERIAL_NAME: &str = "Sketchmesh clay";
+
 /// The value of `extras` on a Sketchmesh node: `{"sketchmesh": {...}}`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub(crate) struct NodeExtras {

@@ -6,59 +6,29 @@
 //! not already. What the file said about the look (normals, UVs, colours, materials) is kept
 //! per triangle corner in an [`Appearance`] so export can write it back. Line primitives
 //! become sketches and point primitives point clouds. Nodes written by Sketchmesh bring back
-//! their control curves (attached to the mesh vertices they run through) and their sketches
-//! with pen pressure, from the node extras.
+//! their control curves (as chains of the mesh's vertices, see `curves.rs`) and their
+//! sketches with pen pressure, from the node extras.
 
 use std::collections::HashMap;
 use std::sync::Arc;
 
 use glam::DVec3;
 
+use super::curves::{AttachedCurves, attach_curves};
 use super::error::GltfError;
-use super::gltf_write::CLAY_MATERIAL_NAME;
+use super::extras::CLAY_MATERIAL_NAME;
+use super::input::{ImportFile, ImportLimits};
 use super::parse::parse;
 use super::resources::{Buffers, load_buffers, resolve};
 use super::scene::{NodeGeometry, Surface, read_nodes};
 use super::weld::weld;
-use crate::document::{
-    AlphaMode, Appearance, ControlCurve, Image, Material, Model, PointCloud, SketchCurve, Texture,
-    positions_hash,
+use crate::mesh::{Mesh, TriSoup, make_manifold};
+use crate::model::{
+    AlphaMode, Appearance, Image, Material, Model, PointCloud, SketchCurve, Texture, positions_hash,
 };
-use crate::mesh::{Mesh, TriSoup, VertexId, make_manifold};
 
 /// Pen pressure given to imported line primitives (the pressure of a mouse stroke).
 const LINE_PRESSURE: f64 = 0.5;
-
-/// Limits that protect the page from files too large to edit.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct ImportLimits {
-    /// Largest file accepted, in bytes.
-    pub max_file_bytes: usize,
-    /// Most vertices over all node instances.
-    pub max_vertices: usize,
-    /// Most triangles over all node instances.
-    pub max_triangles: usize,
-}
-
-impl Default for ImportLimits {
-    /// 512 MiB, 10 M vertices, 20 M triangles.
-    fn default() -> Self {
-        Self {
-            max_file_bytes: 512 << 20,
-            max_vertices: 10_000_000,
-            max_triangles: 20_000_000,
-        }
-    }
-}
-
-/// A file given to the importer: its name (for matching URIs) and bytes.
-#[derive(Clone, Copy, Debug)]
-pub struct ImportFile<'a> {
-    /// The file name, as picked or dropped.
-    pub name: &'a str,
-    /// Its contents.
-    pub bytes: &'a [u8],
-}
 
 /// What a file brought in.
 #[derive(Clone, Debug, Default)]
@@ -146,10 +116,11 @@ fn add_node(
     }
     let model_name = name.clone().unwrap_or_else(|| String::from("unnamed node"));
     let is_sketchmesh = extras.is_some();
-    let (mesh, face_source) = weld_and_repair(&mut surface, &model_name, &mut imported.notes)?;
-    let curves = extras
-        .map(|extras| attach_curves(&mesh, &extras.curves))
+    let (mut mesh, face_source) = weld_and_repair(&mut surface, &model_name, &mut imported.notes)?;
+    let attached = extras
+        .map(|extras| attach_curves(&mut mesh, &extras.curves))
         .unwrap_or_default();
+    note_curves(&attached, &model_name, &mut imported.notes);
     let is_clay = is_sketchmesh
         && !surface.has_uvs
         && !surface.has_colors
@@ -161,7 +132,7 @@ fn add_node(
         (!is_clay).then(|| Arc::new(appearance(&mesh, &surface, &face_source, materials)));
     imported.models.push(Model {
         mesh,
-        curves,
+        curves: attached.curves,
         name: if is_clay { None } else { name },
         appearance,
     });
@@ -216,33 +187,31 @@ fn weld_and_repair(
     Ok((repaired.mesh, repaired.face_source))
 }
 
-/// Control curves from the extras, attached to the mesh vertices they pass through when
-/// every point is a vertex (compared at the `f32` precision the file stores positions in).
-fn attach_curves(mesh: &Mesh, curves: &[super::extras::CurveExtras]) -> Vec<ControlCurve> {
-    if curves.is_empty() {
-        return Vec::new();
+/// Tells the user about curves that had to be moved onto the mesh or left out.
+fn note_curves(attached: &AttachedCurves, name: &str, notes: &mut Vec<String>) {
+    let (snapped, dropped) = (attached.snapped, attached.dropped);
+    if snapped > 0 {
+        notes.push(format!(
+            "{} of {name} did not run through its vertices; {} moved onto the nearest ones.",
+            curves(snapped),
+            if snapped == 1 { "it was" } else { "they were" }
+        ));
     }
-    let key = |p: DVec3| p.as_vec3().to_array().map(f32::to_bits);
-    let mut vertex_at: HashMap<[u32; 3], VertexId> = HashMap::with_capacity(mesh.n_vertices());
-    for v in mesh.vertices() {
-        vertex_at.entry(key(mesh.position(v))).or_insert(v);
+    if dropped > 0 {
+        notes.push(format!(
+            "{} of {name} could not be placed on its surface and {} left out.",
+            curves(dropped),
+            if dropped == 1 { "was" } else { "were" }
+        ));
     }
-    curves
-        .iter()
-        .map(|curve| {
-            let points: Vec<DVec3> = curve.points.iter().map(|&p| DVec3::from(p)).collect();
-            let vertices: Option<Vec<VertexId>> = points
-                .iter()
-                .map(|&p| vertex_at.get(&key(p)).copied())
-                .collect();
-            ControlCurve {
-                points,
-                vertices: vertices.unwrap_or_default(),
-                closed: curve.closed,
-                sharp: curve.sharp,
-            }
-        })
-        .collect()
+}
+
+/// "1 control curve", "2 control curves".
+fn curves(n: usize) -> String {
+    match n {
+        1 => String::from("1 control curve"),
+        n => format!("{n} control curves"),
+    }
 }
 
 /// Per-corner attributes and materials of the mesh faces, from the surface they came from.

@@ -4,7 +4,7 @@ use glam::DVec3;
 use serde::Serialize;
 
 use super::error::GltfError;
-use super::import::{ImportFile, ImportLimits};
+use super::input::{ImportFile, ImportLimits};
 use super::parse::parse;
 use super::resources::load_buffers;
 use super::scene::read_nodes;
@@ -115,9 +115,9 @@ fn count_components(soup: &TriSoup) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::document::{ControlCurve, Document, Model, SketchCurve};
     use crate::io::write_glb;
-    use crate::mesh::primitives;
+    use crate::mesh::{VertexId, primitives};
+    use crate::model::{ControlCurve, CurveKind, Document, Model, SketchCurve};
     use std::sync::Arc;
 
     fn inspect(bytes: &[u8]) -> Result<Info, GltfError> {
@@ -131,14 +131,14 @@ mod tests {
     }
 
     fn document_with(mesh: Mesh) -> Document {
+        let neighbor = mesh.vertex_neighbors(VertexId(0)).next().unwrap();
         Document {
             models: vec![Arc::new(Model {
                 mesh,
                 curves: vec![ControlCurve {
-                    points: vec![DVec3::X, DVec3::Y],
-                    vertices: Vec::new(),
-                    closed: false,
-                    sharp: true,
+                    vertices: vec![VertexId(0), neighbor],
+                    is_closed: false,
+                    kind: CurveKind::Sharp,
                 }],
                 ..Model::default()
             })],
@@ -180,6 +180,7 @@ mod tests {
 
     #[test]
     fn empty_document() {
+        // (gltf-json itself cannot read a scene without "nodes"; our reader can.)
         let info = inspect(&write_glb(&Document::default())).unwrap();
         let json = serde_json::to_string(&info).unwrap();
         assert_eq!(

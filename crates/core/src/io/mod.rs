@@ -7,14 +7,26 @@
 //! points; control curves and sketches also go in node `extras` under `"sketchmesh"`
 //! (documented in `docs/gltf-extras.md`), so nothing the user drew is lost and a file written
 //! here imports with its curves editable. [`inspect_gltf`] reports a file's topology.
+//!
+//! This module reads and writes the data types of [`crate::model`] and knows nothing of
+//! editing: the `document` layer above calls it (the `import` op), never the other way round.
+//!
+//! Inside, the files point one way: `input.rs` (what the importer is given), `error.rs` and
+//! `extras.rs` (the `"sketchmesh"` JSON) are used by the readers `parse.rs`, `resources.rs`,
+//! `accessor.rs`, `scene.rs` and `weld.rs`, which `import.rs` (with `curves.rs`) and `info.rs`
+//! drive; `glb.rs` (the container being written) is filled by `appearance_write.rs` and
+//! `gltf_write.rs`.
 
 mod accessor;
 mod appearance_write;
+mod curves;
 mod error;
 mod extras;
+mod glb;
 mod gltf_write;
 mod import;
 mod info;
+mod input;
 mod parse;
 mod resources;
 mod scene;
@@ -23,6 +35,7 @@ mod weld;
 pub use error::GltfError;
 pub use extras::EXTRAS_VERSION;
 pub use gltf_write::write_glb;
-pub use import::{ImportFile, ImportLimits, Imported, import_gltf};
+pub use import::{Imported, import_gltf};
 pub use info::{Info, inspect_gltf};
+pub use input::{ImportFile, ImportLimits};
 pub use resources::referenced_files;

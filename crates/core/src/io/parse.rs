@@ -11,7 +11,7 @@ use std::borrow::Cow;
 use gltf::json::validation::{Error as ValidationError, Validate as _};
 
 use super::error::GltfError;
-use super::import::ImportLimits;
+use super::input::ImportLimits;
 
 /// Required extensions the importer honours: mesh quantization is read by the accessor
 /// reader; the others only change shading, which a modeller may ignore.

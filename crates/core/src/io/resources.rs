@@ -6,7 +6,7 @@ use std::borrow::Cow;
 use base64::Engine as _;
 
 use super::error::GltfError;
-use super::import::ImportFile;
+use super::input::ImportFile;
 
 /// The bytes behind a URI, borrowed from the given files where possible.
 pub(crate) fn resolve<'a>(

@@ -10,7 +10,7 @@ use gltf::mesh::Mode;
 use super::accessor::{read_f64, read_u32};
 use super::error::GltfError;
 use super::extras::NodeExtras;
-use super::import::ImportLimits;
+use super::input::ImportLimits;
 use super::resources::Buffers;
 
 /// The triangles of one node instance with their per-vertex attributes (before welding).

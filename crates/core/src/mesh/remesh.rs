@@ -39,9 +39,13 @@
 
 mod chains;
 mod editable;
+mod error;
 mod passes;
 
-use super::{Mesh, MeshError, VertexId};
+pub use chains::Chain;
+pub use error::RemeshError;
+
+use super::{Mesh, VertexId};
 use chains::ChainNetwork;
 use editable::EditableMesh;
 use passes::Remesher;
@@ -49,15 +53,6 @@ use passes::Remesher;
 /// Above this many vertices expected at the target edge length, remeshing refuses, since
 /// the result would not fit in memory or time.
 const MAX_EXPECTED_VERTICES: f64 = 4_000_000.0;
-
-/// A chain of mesh vertices joined by mesh edges (a control curve); `closed` adds the edge last→first.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Chain {
-    /// The vertices in curve order.
-    pub vertices: Vec<u32>,
-    /// Whether the last vertex joins the first.
-    pub closed: bool,
-}
 
 /// How finely and how thoroughly to remesh.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -91,65 +86,6 @@ pub struct Remeshed {
     /// Per new vertex, whether remeshing made it (by a split), rather than kept one of the
     /// input's vertices.
     pub is_new: Vec<bool>,
-}
-
-/// Why remeshing refused; the input is never changed.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum RemeshError {
-    /// The target edge length is zero, negative or not a number.
-    #[error("The surface could not be remeshed: the target edge length must be a positive number.")]
-    InvalidTargetEdge,
-    /// The target edge length is so small the mesh would have too many vertices.
-    #[error(
-        "The surface could not be remeshed: the target edge length would make about {expected_vertices} vertices, too many to handle."
-    )]
-    TargetTooSmall {
-        /// Vertices expected at the target edge length.
-        expected_vertices: u64,
-    },
-    /// A chain refers to a vertex the mesh does not have.
-    #[error(
-        "The surface could not be remeshed: control curve {chain} refers to vertex {vertex}, which the mesh does not have."
-    )]
-    VertexOutOfRange {
-        /// Index of the chain.
-        chain: usize,
-        /// The missing vertex.
-        vertex: u32,
-    },
-    /// Two consecutive chain vertices are not joined by a mesh edge.
-    #[error(
-        "The surface could not be remeshed: control curve {chain} jumps from vertex {a} to vertex {b}, which no mesh edge joins."
-    )]
-    NotAnEdgeChain {
-        /// Index of the chain.
-        chain: usize,
-        /// The vertex before the jump.
-        a: u32,
-        /// The vertex after the jump.
-        b: u32,
-    },
-    /// A closed chain has fewer than three vertices.
-    #[error(
-        "The surface could not be remeshed: control curve {chain} is closed but has fewer than three vertices."
-    )]
-    ClosedChainTooShort {
-        /// Index of the chain.
-        chain: usize,
-    },
-    /// The region mask does not have one entry per vertex.
-    #[error(
-        "The surface could not be remeshed: the region has {found} entries for {expected} vertices."
-    )]
-    RegionMismatch {
-        /// Vertices of the mesh.
-        expected: usize,
-        /// Entries of the region.
-        found: usize,
-    },
-    /// The result broke a mesh invariant; a bug, reported rather than returned broken.
-    #[error("The surface could not be remeshed: the result was not a valid mesh. {0}")]
-    InvalidResult(MeshError),
 }
 
 /// Remeshes `mesh` isotropically at `params.target_edge`, keeping every chain as an edge

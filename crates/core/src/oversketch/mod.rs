@@ -23,6 +23,8 @@
 //! the silhouettes once per stroke).
 
 mod bend;
+mod candidate;
+mod error;
 mod manual;
 mod mapping;
 mod matching;
@@ -35,19 +37,18 @@ mod track;
 mod turning;
 
 pub use bend::{BLEND_GAP_PX, BendOptions, ROI_FACTOR};
+pub use candidate::MatchParams;
+pub use error::OversketchError;
 pub use manual::{
     ManualHandle, PICK_DISTANCE_PX, PICK_SHARE, SURFACE_HANDLE_SPACING_PX, manual_handle_preview,
     oversketch_manual, pick_handle,
 };
 pub use mapping::{BLEND_WIDTH, blend_ends, blend_weight, map_point_to_stroke, map_to_stroke};
-pub use matching::{
-    Match, MatchParams, STROKE_SPACING_PX, STROKE_TOLERANCE_PX, match_stroke, simplify_stroke,
-};
+pub use matching::{Match, STROKE_SPACING_PX, STROKE_TOLERANCE_PX, match_stroke, simplify_stroke};
 pub use mixture::Mixture;
 pub use part_roi::{BACKGROUND_SAMPLES, MAX_PART_SHARE, MIN_SEEDS, PART_SMOOTHNESS, part_roi};
 pub use pipeline::{
-    Outlines, OversketchError, Oversketched, SOFT_FIT_WEIGHT, oversketch, oversketch_with,
-    preview_handle,
+    Outlines, Oversketched, SOFT_FIT_WEIGHT, oversketch, oversketch_with, preview_handle,
 };
 pub use roi::{OversketchRoi, ROI_RADIUS_FACTOR, roi_from_displacements};
 pub use track::{CLOSED_TOLERANCE_PX, handle_points};

@@ -6,7 +6,7 @@
 //! negative), so once candidates sorted by proximity reach the cost of the best distinct
 //! alternative, or a cost that would leave the best confident anyway, none later can matter.
 
-use super::matching::{MatchParams, Segment, Target, proximity_cost};
+use super::candidate::{MatchParams, Segment, Target, proximity_cost};
 use super::track::Track;
 use super::turning::TurningSummary;
 

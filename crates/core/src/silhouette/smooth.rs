@@ -25,7 +25,7 @@
 
 use glam::{DVec2, DVec3};
 
-use super::SilhouettePoint;
+use super::points::SilhouettePoint;
 use crate::camera::Camera;
 use crate::mesh::Mesh;
 

@@ -19,7 +19,7 @@
 
 use glam::DVec3;
 
-use super::SilhouettePoint;
+use super::points::SilhouettePoint;
 use crate::camera::Camera;
 use crate::geometry::Bvh;
 use crate::mesh::Mesh;

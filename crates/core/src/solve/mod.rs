@@ -6,67 +6,23 @@
 //! `||A x - b||²` with some unknowns fixed, through the normal equations and faer's sparse
 //! Cholesky; see [`prefactored`](Prefactored) for the method and its limits.
 
+mod error;
 mod normal;
 mod ordering;
 mod prefactored;
 mod singular;
 mod sparse;
+#[cfg(test)]
+pub(crate) mod test_support;
 mod triplets;
 
 use glam::DVec3;
 
+pub use error::SolveError;
 pub use prefactored::Prefactored;
 pub(crate) use prefactored::check_len;
 pub use sparse::SparseMatrix;
 pub use triplets::Triplets;
-
-/// Why a sparse solve failed.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum SolveError {
-    /// A zero or negative pivot: some free unknowns are not determined by the equations.
-    #[error(
-        "The equations do not determine every free unknown (the system is not positive definite); \
-         fix at least one vertex in each connected part."
-    )]
-    NotPositiveDefinite,
-    /// A pivot vanished up to round-off: some free unknowns are determined only by noise.
-    #[error(
-        "The equations barely determine some free unknowns (the system is numerically singular); \
-         fix at least one vertex in each connected part."
-    )]
-    Singular,
-    /// An input has the wrong length.
-    #[error("The {what} has length {found}, but {expected} was expected.")]
-    DimensionMismatch {
-        /// Which input.
-        what: &'static str,
-        /// The length the system needs.
-        expected: usize,
-        /// The length given.
-        found: usize,
-    },
-    /// [`Prefactored::refactor_values`] got a matrix with another shape or pattern.
-    #[error("The matrix has a different sparsity pattern from the one that was factored.")]
-    PatternMismatch,
-    /// The matrix holds NaN or an infinity.
-    #[error("The matrix contains a value that is not a finite number.")]
-    NonFiniteValue,
-    /// An iteration built on the solves ran away: its result was not finite.
-    #[error("The optimization diverged; the change is too large to follow in one step.")]
-    Diverged,
-    /// faer could not factor for another reason (out of memory, index overflow).
-    #[error("The sparse factorization failed: {0}.")]
-    Factorization(String),
-}
-
-impl SolveError {
-    /// Whether the equations leave some free unknown undetermined (exactly or numerically):
-    /// [`SolveError::NotPositiveDefinite`] or [`SolveError::Singular`]. The usual fix is to fix
-    /// a vertex or add a soft constraint in each connected part.
-    pub fn is_underdetermined(&self) -> bool {
-        matches!(self, SolveError::NotPositiveDefinite | SolveError::Singular)
-    }
-}
 
 /// One-off: minimises `||A x - b||²` with `x[j] = fixed_values[j]` wherever `fixed[j]`.
 ///
@@ -88,35 +44,12 @@ pub fn solve_least_squares(
 
 #[cfg(test)]
 #[allow(clippy::needless_range_loop)]
-pub(crate) mod tests {
+mod tests {
+    use super::test_support::{dense_solve, random_system};
     use super::*;
     use crate::geometry::uniform_laplacian;
     use crate::mesh::{Mesh, primitives};
     use proptest::prelude::*;
-
-    /// Solves a small dense system by Gaussian elimination with partial pivoting.
-    pub(crate) fn dense_solve(mut m: Vec<Vec<f64>>, mut rhs: Vec<f64>) -> Vec<f64> {
-        let n = rhs.len();
-        for k in 0..n {
-            let pivot = (k..n)
-                .max_by(|&i, &j| m[i][k].abs().total_cmp(&m[j][k].abs()))
-                .unwrap();
-            m.swap(k, pivot);
-            rhs.swap(k, pivot);
-            for i in k + 1..n {
-                let factor = m[i][k] / m[k][k];
-                for j in k..n {
-                    m[i][j] -= factor * m[k][j];
-                }
-                rhs[i] -= factor * rhs[k];
-            }
-        }
-        let mut x = vec![0.0; n];
-        for k in (0..n).rev() {
-            x[k] = (rhs[k] - (k + 1..n).map(|j| m[k][j] * x[j]).sum::<f64>()) / m[k][k];
-        }
-        x
-    }
 
     /// The constrained least-squares minimiser of one coordinate, by dense normal equations.
     pub(crate) fn dense_least_squares(
@@ -154,23 +87,6 @@ pub(crate) mod tests {
             x[j] = value;
         }
         x
-    }
-
-    /// A random sparse `m x n` system: a strong diagonal block keeps it well posed, plus
-    /// scattered off-diagonal entries.
-    pub(crate) fn random_system(
-        m: usize,
-        n: usize,
-        entries: &[(usize, usize, f64)],
-    ) -> SparseMatrix {
-        let mut t = Triplets::new(m, n);
-        for j in 0..n.min(m) {
-            t.push(j, j, 4.0);
-        }
-        for &(r, c, v) in entries {
-            t.push(r % m, c % n, v);
-        }
-        t.build()
     }
 
     proptest! {

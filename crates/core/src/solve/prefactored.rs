@@ -475,7 +475,7 @@ mod tests {
     use crate::geometry::{cotan_laplacian, uniform_laplacian};
     use crate::mesh::{Mesh, primitives};
     use crate::solve::Triplets;
-    use crate::solve::tests::random_system;
+    use crate::solve::test_support::random_system;
 
     fn boundary_mask(mesh: &Mesh) -> Vec<bool> {
         mesh.vertices()

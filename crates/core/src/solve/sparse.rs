@@ -1,14 +1,12 @@
-//! Compressed sparse column matrices of `f64`, and a triplet builder for them.
+//! Compressed sparse column matrices of `f64`.
 //!
 //! [`SparseMatrix`] wraps faer's `SparseColMat<u32, f64>` (u32 indices halve the index memory
-//! and match the mesh ids) and keeps every entry pushed to a [`Triplets`], zeros included:
-//! [`crate::solve::Prefactored::refactor_values`] needs the pattern to stay the same when a
-//! weight happens to be zero.
+//! and match the mesh ids) and keeps every entry it is built with, zeros included (see
+//! [`crate::solve::Triplets`]): [`crate::solve::Prefactored::refactor_values`] needs the
+//! pattern to stay the same when a weight happens to be zero.
 
-use faer::sparse::{SparseColMat, SparseColMatRef};
+use faer::sparse::{SparseColMat, SparseColMatRef, SymbolicSparseColMat};
 use glam::DVec3;
-
-use super::Triplets;
 
 /// A sparse `nrows x ncols` matrix in compressed sparse column form, rows sorted within each
 /// column, no duplicate entries.
@@ -28,13 +26,13 @@ impl SparseMatrix {
         SparseMatrix::diagonal(&vec![1.0; n])
     }
 
-    /// A square diagonal matrix.
+    /// A square diagonal matrix (zeros on the diagonal are stored).
     pub fn diagonal(values: &[f64]) -> SparseMatrix {
-        let mut triplets = Triplets::with_capacity(values.len(), values.len(), values.len());
-        for (i, &value) in values.iter().enumerate() {
-            triplets.push(i, i, value);
-        }
-        triplets.build()
+        let n = values.len();
+        let indices: Vec<u32> = (0..n as u32).collect();
+        let col_ptr = (0..=n as u32).collect();
+        let symbolic = SymbolicSparseColMat::new_checked(n, n, col_ptr, None, indices);
+        SparseMatrix::from_faer(SparseColMat::new(symbolic, values.to_vec()))
     }
 
     /// Number of rows.
@@ -147,15 +145,25 @@ impl SparseMatrix {
         for (new, &old) in rows.iter().enumerate() {
             new_rows_of_old[old].push(new);
         }
-        let mut triplets = Triplets::new(rows.len(), self.ncols());
+        let mut col_ptr = Vec::with_capacity(self.ncols() + 1);
+        col_ptr.push(0u32);
+        let mut row_indices = Vec::new();
+        let mut values = Vec::new();
+        let mut column: Vec<(u32, f64)> = Vec::new();
         for col in 0..self.ncols() {
+            column.clear();
             for (row, value) in self.column(col) {
-                for &new in &new_rows_of_old[row] {
-                    triplets.push(new, col, value);
-                }
+                column.extend(new_rows_of_old[row].iter().map(|&new| (new as u32, value)));
             }
+            // Each new row comes from one old row, so a column holds it at most once.
+            column.sort_unstable_by_key(|&(row, _)| row);
+            row_indices.extend(column.iter().map(|&(row, _)| row));
+            values.extend(column.iter().map(|&(_, value)| value));
+            col_ptr.push(row_indices.len() as u32);
         }
-        triplets.build()
+        let symbolic =
+            SymbolicSparseColMat::new_checked(rows.len(), self.ncols(), col_ptr, None, row_indices);
+        SparseMatrix::from_faer(SparseColMat::new(symbolic, values))
     }
 
     /// Dense row-major copy, for tests and debugging of small matrices.
@@ -185,44 +193,22 @@ mod tests {
     use super::*;
 
     #[test]
-    fn products_match_dense_arithmetic() {
-        let mut t = Triplets::new(2, 3);
-        for (r, c, v) in [(0, 0, 1.0), (0, 2, -2.0), (1, 1, 3.0), (1, 2, 0.5)] {
-            t.push(r, c, v);
-        }
-        let m = t.build();
-        let mut out = [0.0; 2];
-        m.mul_vec(&[1.0, 2.0, 3.0], &mut out);
-        assert_eq!(out, [-5.0, 7.5]);
-        let mut out3 = [DVec3::ZERO; 2];
-        m.mul_dvec3(&[DVec3::X, DVec3::Y, DVec3::Z], &mut out3);
+    fn diagonals_keep_zeros_and_rows_can_be_picked_again() {
+        let m = SparseMatrix::diagonal(&[2.0, 0.0, 3.0]);
+        assert_eq!((m.nrows(), m.ncols(), m.nnz()), (3, 3, 3));
         assert_eq!(
-            out3,
-            [DVec3::new(1.0, 0.0, -2.0), DVec3::new(0.0, 3.0, 0.5)]
+            SparseMatrix::identity(2).to_dense(),
+            vec![vec![1.0, 0.0], vec![0.0, 1.0]]
         );
-    }
-
-    #[test]
-    fn stacking_blocks() {
-        let mut t = Triplets::new(4, 2);
-        t.push_matrix(&SparseMatrix::identity(2), 0, 0, 1.0);
-        t.push_matrix(&SparseMatrix::diagonal(&[2.0, 3.0]), 2, 0, 10.0);
-        let m = t.build();
-        assert_eq!(
-            m.to_dense(),
-            vec![
-                vec![1.0, 0.0],
-                vec![0.0, 1.0],
-                vec![20.0, 0.0],
-                vec![0.0, 30.0]
-            ]
-        );
-        assert!(m.has_same_pattern(&m.clone()));
-        let picked = m.select_rows(&[3, 0, 3]);
+        let picked = m.select_rows(&[2, 0, 2]);
+        assert_eq!(picked.col_ptr(), &[0, 1, 1, 3]);
         assert_eq!(
             picked.to_dense(),
-            vec![vec![0.0, 30.0], vec![1.0, 0.0], vec![0.0, 30.0]]
+            vec![
+                vec![0.0, 0.0, 3.0],
+                vec![2.0, 0.0, 0.0],
+                vec![0.0, 0.0, 3.0]
+            ]
         );
-        assert_eq!(m, m.clone());
     }
 }

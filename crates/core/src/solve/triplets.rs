@@ -119,6 +119,7 @@ impl Triplets {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use glam::DVec3;
 
     #[test]
     fn build_sums_duplicates_and_keeps_zeros() {
@@ -137,5 +138,47 @@ mod tests {
         );
         assert_eq!(m.get(2, 1), 3.5);
         assert_eq!(m.get(2, 0), 0.0);
+    }
+
+    #[test]
+    fn products_match_dense_arithmetic() {
+        let mut t = Triplets::new(2, 3);
+        for (r, c, v) in [(0, 0, 1.0), (0, 2, -2.0), (1, 1, 3.0), (1, 2, 0.5)] {
+            t.push(r, c, v);
+        }
+        let m = t.build();
+        let mut out = [0.0; 2];
+        m.mul_vec(&[1.0, 2.0, 3.0], &mut out);
+        assert_eq!(out, [-5.0, 7.5]);
+        let mut out3 = [DVec3::ZERO; 2];
+        m.mul_dvec3(&[DVec3::X, DVec3::Y, DVec3::Z], &mut out3);
+        assert_eq!(
+            out3,
+            [DVec3::new(1.0, 0.0, -2.0), DVec3::new(0.0, 3.0, 0.5)]
+        );
+    }
+
+    #[test]
+    fn stacking_blocks() {
+        let mut t = Triplets::new(4, 2);
+        t.push_matrix(&SparseMatrix::identity(2), 0, 0, 1.0);
+        t.push_matrix(&SparseMatrix::diagonal(&[2.0, 3.0]), 2, 0, 10.0);
+        let m = t.build();
+        assert_eq!(
+            m.to_dense(),
+            vec![
+                vec![1.0, 0.0],
+                vec![0.0, 1.0],
+                vec![20.0, 0.0],
+                vec![0.0, 30.0]
+            ]
+        );
+        assert!(m.has_same_pattern(&m.clone()));
+        let picked = m.select_rows(&[3, 0, 3]);
+        assert_eq!(
+            picked.to_dense(),
+            vec![vec![0.0, 30.0], vec![1.0, 0.0], vec![0.0, 30.0]]
+        );
+        assert_eq!(m, m.clone());
     }
 }

@@ -75,13 +75,12 @@ pub struct Digest {
 }
 
 /// The digest of a document. Covers, per model: every position (f64 bits), every
-/// triangle, and every control curve (its vertex chain, the sharp/smooth kind, the closed
-/// flag and its points); per sketch its points and pressures; per point cloud its
-/// positions and colours; model names.
+/// triangle, the name, and every control curve: its kind (sharp or smooth), its closed flag
+/// and its vertex chain (its points are where its vertices are); per sketch its points and
+/// pressures; per point cloud its positions and colours.
 ///
-/// The single function to adapt when the document's layout changes. Curve points are
-/// hashed as world positions; a curve stored only as a vertex chain hashes the positions
-/// of its vertices here, which gives the same bytes for an embedded curve.
+/// The single function to adapt when the document's layout changes: it must keep feeding
+/// the same bytes in the same order for the same document.
 pub fn digest(document: &Document) -> Digest {
     let (mut full, mut topo) = (Fnv::default(), Fnv::default());
     for h in [&mut full, &mut topo] {
@@ -106,13 +105,11 @@ pub fn digest(document: &Document) -> Digest {
         }
         for curve in &model.curves {
             for h in [&mut full, &mut topo] {
-                h.tag(if curve.sharp { "sharp" } else { "smooth" });
-                h.u64(u64::from(curve.closed));
+                h.tag(if curve.is_sharp() { "sharp" } else { "smooth" });
+                h.u64(u64::from(curve.is_closed));
                 h.len(curve.vertices.len());
                 curve.vertices.iter().for_each(|v| h.u64(u64::from(v.0)));
-                h.len(curve.points.len());
             }
-            curve.points.iter().for_each(|&p| full.point(p));
         }
     }
     for h in [&mut full, &mut topo] {

@@ -8,7 +8,7 @@ use std::f64::consts::TAU;
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    AddCurveInput, CommandError, ControlCurve, CurveTypeInput, Editor, Model, Op, StrokeInput,
+    AddCurveInput, CommandError, CurveTypeInput, Editor, Model, Op, StrokeInput,
 };
 use sketchmesh_core::geometry::{face_normal, raycast};
 use sketchmesh_core::mesh::{HalfedgeId, Mesh};
@@ -78,9 +78,14 @@ fn drag(from: DVec3, by: DVec2) -> StrokeInput {
     input(segment(start, start + by))
 }
 
-/// A stroke along a curve's screen projection.
-fn along(curve: &ControlCurve) -> StrokeInput {
-    input(curve.points.iter().map(|&p| screen(p)))
+/// A stroke along a curve's screen projection, given its points.
+fn along(points: &[DVec3]) -> StrokeInput {
+    input(points.iter().map(|&p| screen(p)))
+}
+
+/// The points of `model`'s curve `k`.
+fn points(model: &Model, k: usize) -> Vec<DVec3> {
+    model.curves[k].points(&model.mesh)
 }
 
 fn assert_closed_manifold(mesh: &Mesh) {
@@ -92,18 +97,11 @@ fn assert_closed_manifold(mesh: &Mesh) {
     );
 }
 
-/// Every curve is a chain of mesh edges through its points.
+/// Every curve is a chain of mesh edges.
 fn assert_curves_embedded(model: &Model) {
     for curve in &model.curves {
-        for (k, &v) in curve.vertices.iter().enumerate() {
-            assert_eq!(
-                curve.points[k],
-                model.mesh.position(v),
-                "curve point off its vertex"
-            );
-        }
         let n = curve.vertices.len();
-        let n_edges = if curve.closed { n } else { n - 1 };
+        let n_edges = if curve.is_closed { n } else { n - 1 };
         for k in 0..n_edges {
             let (a, b) = (curve.vertices[k], curve.vertices[(k + 1) % n]);
             assert!(
@@ -120,10 +118,10 @@ fn an_open_stroke_on_a_shape_becomes_a_smooth_curve_on_it() {
     let model = model(&editor);
     assert_eq!(model.curves.len(), 2);
     let added = &model.curves[1];
-    assert!(!added.closed && !added.sharp);
+    assert!(!added.is_closed && !added.is_sharp());
     assert_closed_manifold(&model.mesh);
     assert_curves_embedded(model);
-    for &p in &added.points {
+    for p in added.points(&model.mesh) {
         let s = screen(p);
         assert!(
             (s.y - CENTRE.y).abs() < 2.0,
@@ -140,7 +138,8 @@ fn an_open_stroke_on_a_shape_becomes_a_smooth_curve_on_it() {
 fn a_pull_moves_the_grabbed_point_parallel_to_the_screen_and_keeps_other_curves() {
     let mut editor = shape_with_front_curve();
     let before = model(&editor).clone();
-    let middle = before.curves[1].points[before.curves[1].points.len() / 2];
+    let front = points(&before, 1);
+    let middle = front[front.len() / 2];
     let by = DVec2::new(0.0, -60.0);
     editor.apply(Op::Pull(drag(middle, by))).unwrap();
     let after = model(&editor);
@@ -148,8 +147,7 @@ fn a_pull_moves_the_grabbed_point_parallel_to_the_screen_and_keeps_other_curves(
     assert_curves_embedded(after);
     // The grabbed point went 60 px up on the screen, at its depth.
     let target = screen(middle) + by;
-    let nearest = after.curves[1]
-        .points
+    let nearest = points(after, 1)
         .iter()
         .map(|&p| screen(p).distance(target))
         .fold(f64::INFINITY, f64::min);
@@ -158,7 +156,7 @@ fn a_pull_moves_the_grabbed_point_parallel_to_the_screen_and_keeps_other_curves(
         "no curve point within {nearest} px of the release point"
     );
     // The outline is not connected to the pulled curve: it stays exactly.
-    assert_eq!(after.curves[0].points, before.curves[0].points);
+    assert_eq!(points(after, 0), points(&before, 0));
     // One undo restores the exact model.
     editor.undo().unwrap();
     assert_eq!(model(&editor), &before);
@@ -198,11 +196,11 @@ fn a_long_pull_on_a_fine_shape_settles_into_an_unfolded_surface() {
             .unwrap()
             .truncate()
     };
-    let landed = before.curves[0]
-        .points
-        .iter()
-        .filter(|&&q| on_screen(q).distance(grab) < 16.0)
-        .flat_map(|&q| after.curves[0].points.iter().map(move |&p| (p, q)))
+    let pulled = points(after, 0);
+    let landed = points(&before, 0)
+        .into_iter()
+        .filter(|&q| on_screen(q).distance(grab) < 16.0)
+        .flat_map(|q| pulled.iter().map(move |&p| (p, q)))
         .map(|(p, q)| on_screen(p).distance(on_screen(q) + by))
         .fold(f64::INFINITY, f64::min);
     assert!(
@@ -219,7 +217,8 @@ fn a_pull_far_past_the_shape_does_not_run_away() {
     // nothing, or the result stays bounded.
     let mut editor = shape_with_front_curve();
     let before = model(&editor).clone();
-    let middle = before.curves[1].points[before.curves[1].points.len() / 2];
+    let front = points(&before, 1);
+    let middle = front[front.len() / 2];
     match editor.apply(Op::Pull(drag(middle, DVec2::new(0.0, -220.0)))) {
         Err(error) => {
             assert_eq!(error, CommandError::Surface(SolveError::Diverged));
@@ -265,15 +264,15 @@ fn erasing_the_added_curve_after_a_pull_returns_close_to_the_creation() {
     editor
         .apply(Op::AddCurve(add_input(&across, false, false)))
         .unwrap();
-    let curve = model(&editor).curves[1].clone();
-    let middle = curve.points[curve.points.len() / 2];
+    let curve = points(model(&editor), 1);
+    let middle = curve[curve.len() / 2];
     editor
         .apply(Op::Pull(drag(middle, DVec2::new(0.0, -80.0))))
         .unwrap();
     let pulled = model(&editor).clone();
     let diagonal = bbox_diagonal(&created.mesh);
     let pulled_gap = max_distance(&pulled.mesh, &created.mesh) / diagonal;
-    editor.apply(Op::Erase(along(&pulled.curves[1]))).unwrap();
+    editor.apply(Op::Erase(along(&points(&pulled, 1)))).unwrap();
     let erased = model(&editor);
     assert_eq!(erased.curves.len(), 1, "only the outline is left");
     assert_closed_manifold(&erased.mesh);
@@ -297,25 +296,22 @@ const ERASE_TOLERANCE: f64 = 0.03;
 fn a_sharp_curve_creases_at_least_30_degrees_more_than_smooth() {
     let mut editor = Editor::new();
     editor.apply(Op::Create(circle(150.0))).unwrap();
-    let outline = model(&editor).curves[0].clone();
-    let right = outline
-        .points
-        .iter()
-        .copied()
+    let right = points(model(&editor), 0)
+        .into_iter()
         .max_by(|a, b| a.x.total_cmp(&b.x))
         .unwrap();
     editor
         .apply(Op::Pull(drag(right, DVec2::new(70.0, 0.0))))
         .unwrap();
     let smooth = crease(model(&editor));
-    let pulled_outline = model(&editor).curves[0].clone();
+    let pulled_outline = points(model(&editor), 0);
     editor
         .apply(Op::SetCurveType(CurveTypeInput {
             sharp: true,
             ..type_input(&pulled_outline)
         }))
         .unwrap();
-    assert!(model(&editor).curves.iter().all(|c| c.sharp));
+    assert!(model(&editor).curves.iter().all(|c| c.is_sharp()));
     let sharp = crease(model(&editor));
     eprintln!("crease across the outline: smooth {smooth:.1}°, sharp {sharp:.1}°");
     assert!(sharp >= smooth + 30.0, "smooth {smooth}°, sharp {sharp}°");
@@ -323,13 +319,13 @@ fn a_sharp_curve_creases_at_least_30_degrees_more_than_smooth() {
     editor
         .apply(Op::SetCurveType(CurveTypeInput {
             sharp: false,
-            ..type_input(&model(&editor).curves[0].clone())
+            ..type_input(&points(model(&editor), 0))
         }))
         .unwrap();
     assert!(crease(model(&editor)) < sharp - 30.0);
 }
 
-fn type_input(curve: &ControlCurve) -> CurveTypeInput {
+fn type_input(curve: &[DVec3]) -> CurveTypeInput {
     let stroke = along(curve);
     CurveTypeInput {
         viewport: stroke.viewport,
@@ -352,7 +348,7 @@ fn rubbing_smooths_a_wobbly_curve_more_with_more_passes() {
     editor
         .apply(Op::AddCurve(add_input(&wobbly, false, false)))
         .unwrap();
-    let mut roughness = vec![curve_roughness(&model(&editor).curves[1])];
+    let mut roughness = vec![curve_roughness(&points(model(&editor), 1))];
     for passes in [1, 3] {
         let mut rub = Vec::new();
         for pass in 0..passes {
@@ -364,7 +360,7 @@ fn rubbing_smooths_a_wobbly_curve_more_with_more_passes() {
             });
         }
         editor.apply(Op::Rub(input(rub))).unwrap();
-        roughness.push(curve_roughness(&model(&editor).curves[1]));
+        roughness.push(curve_roughness(&points(model(&editor), 1)));
     }
     eprintln!("roughness: {roughness:?}");
     assert!(
@@ -376,8 +372,8 @@ fn rubbing_smooths_a_wobbly_curve_more_with_more_passes() {
 #[test]
 fn a_session_of_curve_edits_replays_identically() {
     let mut editor = shape_with_front_curve();
-    let curve = model(&editor).curves[1].clone();
-    let middle = curve.points[curve.points.len() / 2];
+    let curve = points(model(&editor), 1);
+    let middle = curve[curve.len() / 2];
     editor
         .apply(Op::Pull(drag(middle, DVec2::new(0.0, -40.0))))
         .unwrap();
@@ -388,7 +384,7 @@ fn a_session_of_curve_edits_replays_identically() {
     editor
         .apply(Op::AddCurve(add_input(&cross, false, true)))
         .unwrap();
-    let outline = model(&editor).curves[0].clone();
+    let outline = points(model(&editor), 0);
     editor
         .apply(Op::SetCurveType(CurveTypeInput {
             sharp: true,
@@ -396,7 +392,7 @@ fn a_session_of_curve_edits_replays_identically() {
         }))
         .unwrap();
     editor
-        .apply(Op::Erase(along(&model(&editor).curves[1].clone())))
+        .apply(Op::Erase(along(&points(model(&editor), 1))))
         .unwrap();
     let json = editor.session_json();
     let replayed = Editor::replay_json(&json).unwrap();
@@ -437,7 +433,7 @@ fn curve_tools_away_from_curves_are_refused_and_change_nothing() {
 fn erasing_the_last_curve_is_refused() {
     let mut editor = Editor::new();
     editor.apply(Op::Create(circle(150.0))).unwrap();
-    let outline = model(&editor).curves[0].clone();
+    let outline = points(model(&editor), 0);
     assert_eq!(
         editor.apply(Op::Erase(along(&outline))),
         Err(CommandError::LastCurve)
@@ -464,8 +460,7 @@ fn crease(model: &Model) -> f64 {
 }
 
 /// Σ‖L₁‖² over the interior curve points, relative to the squared mean edge length.
-fn curve_roughness(curve: &ControlCurve) -> f64 {
-    let p = &curve.points;
+fn curve_roughness(p: &[DVec3]) -> f64 {
     let mean_edge = p.windows(2).map(|w| w[0].distance(w[1])).sum::<f64>() / (p.len() - 1) as f64;
     p.windows(3)
         .map(|w| (w[1] - 0.5 * (w[0] + w[2])).length_squared())

@@ -87,14 +87,16 @@ fn session() -> Vec<MakeOp> {
             })
         }),
         Box::new(|editor| {
-            let curve = &editor.document().models[0].curves[1];
-            let start = screen(curve.points[curve.points.len() / 2]);
+            let model = &editor.document().models[0];
+            let points = model.curves[1].points(&model.mesh);
+            let start = screen(points[points.len() / 2]);
             Op::Pull(input(segment(start, start + DVec2::new(0.0, -60.0))))
         }),
         Box::new(|_| oversketch(&arc(165.0, -30.0, 30.0))),
         Box::new(|editor| {
-            let curve = &editor.document().models[0].curves[1];
-            Op::Erase(input(curve.points.iter().map(|&p| screen(p))))
+            let model = &editor.document().models[0];
+            let points = model.curves[1].points(&model.mesh);
+            Op::Erase(input(points.iter().map(|&p| screen(p))))
         }),
         Box::new(|_| Op::Undo),
         Box::new(|_| Op::Redo),

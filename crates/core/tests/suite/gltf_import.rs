@@ -508,6 +508,43 @@ fn points_and_lines_are_kept() {
 }
 
 #[test]
+fn hand_written_curve_extras_become_edge_chains_or_are_left_out() {
+    let mut asset = Asset::new();
+    let mesh = asset.tetra_mesh(UNSIGNED_SHORT);
+    let curves = json!([
+        // Near vertices 1 and 2 (not on them): snapped, and joined by their edge.
+        {"closed": false, "sharp": true, "points": [[0.98, 0.01, 0.0], [0.02, 0.97, 0.01]]},
+        // Exactly on vertices 0, 1 and 3: found as they are.
+        {"closed": true, "sharp": false, "points": [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]},
+        // Far off the surface.
+        {"closed": false, "sharp": false, "points": [[0.0, 0.0, 0.0], [5.0, 5.0, 5.0]]},
+    ]);
+    asset.root_node(json!({
+        "mesh": mesh,
+        "extras": {"sketchmesh": {"version": 1, "curves": curves}},
+    }));
+    let imported = import(&asset.glb()).unwrap();
+    let model = &imported.models[0];
+    assert_eq!(model.curves.len(), 2);
+    let (snapped, exact) = (&model.curves[0], &model.curves[1]);
+    let position = |v: sketchmesh_core::mesh::VertexId| model.mesh.position(v).to_array();
+    assert!(snapped.is_sharp() && !snapped.is_closed);
+    assert_eq!(
+        snapped
+            .vertices
+            .iter()
+            .map(|&v| position(v))
+            .collect::<Vec<_>>(),
+        [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]
+    );
+    assert!(!exact.is_sharp() && exact.is_closed);
+    assert_eq!(exact.points(&model.mesh), [DVec3::ZERO, DVec3::X, DVec3::Z]);
+    assert_eq!(imported.notes.len(), 2, "{:?}", imported.notes);
+    assert!(imported.notes[0].contains("1 control curve of"));
+    assert!(imported.notes[1].contains("was left out"));
+}
+
+#[test]
 fn unknown_required_extensions_are_named() {
     let mut asset = Asset::new();
     let mesh = asset.tetra_mesh(UNSIGNED_SHORT);
@@ -722,16 +759,23 @@ fn created_models_round_trip_with_their_curves() {
     let (before, after) = (&original.models[0], &document.models[0]);
     assert!(after.appearance.is_none() && after.name.is_none());
     assert_eq!(after.mesh.triangles(), before.mesh.triangles());
-    for (p, q) in after.mesh.positions().iter().zip(before.mesh.positions()) {
-        assert_eq!(*p, q.as_vec3().as_dvec3());
-    }
     assert_eq!(after.curves.len(), 1);
-    assert_eq!(after.curves[0].points, before.curves[0].points);
     assert_eq!(after.curves[0].vertices, before.curves[0].vertices);
     assert_eq!(
-        (after.curves[0].closed, after.curves[0].sharp),
+        (after.curves[0].is_closed, after.curves[0].is_sharp()),
         (true, false)
     );
+    // The mesh comes back at f32 precision, except the curve vertices: the extras keep
+    // their exact positions.
+    let on_curve = &before.curves[0].vertices;
+    for v in before.mesh.vertices() {
+        let (p, q) = (after.mesh.position(v), before.mesh.position(v));
+        if on_curve.contains(&v) {
+            assert_eq!(p, q);
+        } else {
+            assert_eq!(p, q.as_vec3().as_dvec3());
+        }
+    }
     assert_eq!(document.sketches, original.sketches);
     assert_eq!(
         write_glb(document),

@@ -4,12 +4,13 @@
 use glam::DVec2;
 
 use super::settle::{Change, remesh_and_settle};
-use super::{bounding_diagonal, has_curves, replaced, screen_stroke, solver_curves};
-use crate::document::{AddCurveInput, CommandError, Document, Model, StrokeInput};
+use super::shared::{bounding_diagonal, has_curves, replaced, screen_stroke};
+use crate::document::{AddCurveInput, CommandError, Document, StrokeInput};
 use crate::fibermesh::add_curve::{CurveShape, add_curve};
 use crate::fibermesh::{ControlCurve, CurveKind};
 use crate::geometry::Bvh;
 use crate::mesh::VertexId;
+use crate::model::Model;
 
 /// How far from a new curve (as a fraction of the model's size) the surface settles after
 /// the remesh: the curve lies on the surface, so only the new vertices need to find it.
@@ -41,7 +42,7 @@ pub fn add_curve_op(doc: &Document, input: &AddCurveInput) -> Result<(usize, Mod
         &stroke,
         shape,
     )?;
-    let mut curves = solver_curves(model);
+    let mut curves = model.curves.clone();
     for &(a, b, new) in &embedded.split_edges {
         for curve in &mut curves {
             insert_on_edge(curve, a, b, new);
@@ -57,7 +58,7 @@ pub fn add_curve_op(doc: &Document, input: &AddCurveInput) -> Result<(usize, Mod
         radius: ADD_REGION * bounding_diagonal(&model.mesh),
     };
     let (mesh, curves) = remesh_and_settle(&embedded.mesh, &curves, change)?;
-    Ok((index, replaced(model, mesh, &curves)))
+    Ok((index, replaced(model, mesh, curves)))
 }
 
 /// Inserts `new` between consecutive vertices `a` and `b` of `curve` (either order,

@@ -4,13 +4,12 @@
 use glam::DVec2;
 
 use super::settle::{Change, settle};
-use super::{
-    CURVE_PICK_RADIUS_PX, bounding_diagonal, has_curves, replaced, screen_stroke, solver_curves,
-};
-use crate::document::{CommandError, CurveTypeInput, Document, Model, StrokeInput};
+use super::shared::{CURVE_PICK_RADIUS_PX, bounding_diagonal, has_curves, replaced, screen_stroke};
+use crate::document::{CommandError, CurveTypeInput, Document, StrokeInput};
 use crate::fibermesh::curve_tools::{StrokeHits, erase, hit_curves, rub, set_kind};
 use crate::fibermesh::{ControlCurve, CurveKind};
 use crate::mesh::Mesh;
+use crate::model::Model;
 
 /// How far from an erased curve (as a fraction of the model's bounding-box diagonal) the
 /// surface re-optimizes and forgets the curvature the curve forced: as far as a pull by a
@@ -37,7 +36,7 @@ pub fn erase_op(doc: &Document, input: &StrokeInput) -> Result<(usize, Model), C
     let mut mesh = model.mesh.clone();
     let change = changed_near(&model.mesh, &around, ERASE_REGION);
     settle(&mut mesh, &kept, model.mesh.positions(), change, true)?;
-    Ok((index, replaced(model, mesh, &kept)))
+    Ok((index, replaced(model, mesh, kept)))
 }
 
 /// Applies a `set_curve_type` op: the curve parts under the stroke become sharp or smooth.
@@ -59,7 +58,7 @@ pub fn set_curve_type_op(
     let mut mesh = model.mesh.clone();
     let change = changed_near(&model.mesh, &around, RETYPE_REGION);
     settle(&mut mesh, &retyped, model.mesh.positions(), change, true)?;
-    Ok((index, replaced(model, mesh, &retyped)))
+    Ok((index, replaced(model, mesh, retyped)))
 }
 
 /// Applies a `rub` op: the curves near the stroke get smoother, more so the more
@@ -83,7 +82,7 @@ pub fn rub_op(doc: &Document, input: &StrokeInput) -> Result<(usize, Model), Com
     let around = hits.vertices_hit(&curves);
     let change = changed_near(&model.mesh, &around, RETYPE_REGION);
     settle(&mut mesh, &curves, model.mesh.positions(), change, false)?;
-    Ok((index, replaced(model, mesh, &curves)))
+    Ok((index, replaced(model, mesh, curves)))
 }
 
 /// The surface within `fraction` of `mesh`'s size from the curve vertices `around`.
@@ -105,7 +104,7 @@ pub fn curve_type_toggle(doc: &Document, input: &StrokeInput) -> Option<bool> {
 }
 
 /// The first model (in document order) whose visible curves the stroke passes over, its
-/// solver curves and the hits.
+/// curves and the hits.
 fn stroke_over_curves(
     doc: &Document,
     input: &StrokeInput,
@@ -115,17 +114,16 @@ fn stroke_over_curves(
         if !has_curves(model) {
             continue;
         }
-        let curves = solver_curves(model);
         let hits = hit_curves(
             &model.mesh,
-            &curves,
+            &model.curves,
             &input.camera,
             input.viewport_size(),
             &stroke,
             CURVE_PICK_RADIUS_PX,
         );
         if !hits.is_empty() {
-            return Ok((index, curves, hits));
+            return Ok((index, model.curves.clone(), hits));
         }
     }
     Err(CommandError::NoCurveHere)

@@ -18,9 +18,7 @@ use std::sync::Arc;
 use glam::{DVec2, DVec3};
 
 use super::settle::{Change, remesh_and_settle, settle};
-use super::{
-    CurvePick, bounding_diagonal, pick_curve_vertex, replaced, screen_stroke, solver_curves,
-};
+use super::shared::{CurvePick, bounding_diagonal, pick_curve_vertex, replaced, screen_stroke};
 use crate::camera::Camera;
 use crate::document::{CommandError, Document, Model, StrokeInput};
 use crate::fibermesh::curve_pull::{CurveNetwork, CurvePull, PullParams};
@@ -54,8 +52,8 @@ pub fn pull_op(doc: &Document, input: &StrokeInput) -> Result<(usize, Model), Co
     let stroke = screen_stroke(input, 1)?;
     let pick = pick_curve_vertex(doc, input, stroke[0])?;
     let model = &doc.models[pick.model];
-    let curves = solver_curves(model);
-    let (mut pull, node_vertices) = curve_pull(model, &curves, pick)?;
+    let curves = &model.curves;
+    let (mut pull, node_vertices) = curve_pull(model, curves, pick)?;
     let Some(&release) = stroke.last() else {
         return Err(CommandError::StrokeTooShort);
     };
@@ -70,9 +68,9 @@ pub fn pull_op(doc: &Document, input: &StrokeInput) -> Result<(usize, Model), Co
         around: &[pick.vertex.0],
         radius: region_radius(&model.mesh, peel.radius),
     };
-    settle(&mut mesh, &curves, model.mesh.positions(), change, false)?;
-    let (mesh, curves) = remesh_and_settle(&mesh, &curves, change)?;
-    Ok((pick.model, replaced(model, mesh, &curves)))
+    settle(&mut mesh, curves, model.mesh.positions(), change, false)?;
+    let (mesh, curves) = remesh_and_settle(&mesh, curves, change)?;
+    Ok((pick.model, replaced(model, mesh, curves)))
 }
 
 /// The live preview of a `pull` op while the pointer is down; see the module docs.
@@ -110,7 +108,7 @@ impl PullPreview {
         let stroke = screen_stroke(input, 1)?;
         let pick = pick_curve_vertex(doc, input, stroke[0])?;
         let model = Arc::clone(&doc.models[pick.model]);
-        let curves = solver_curves(&model);
+        let curves = model.curves.clone();
         let (pull, node_vertices) = curve_pull(&model, &curves, pick)?;
         Ok(PullPreview {
             view: StrokeInput {

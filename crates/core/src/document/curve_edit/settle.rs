@@ -9,7 +9,7 @@
 
 use glam::DVec3;
 
-use super::super::CommandError;
+use crate::document::CommandError;
 use crate::fibermesh::{ControlCurve, FairSurface, region_around};
 use crate::mesh::remesh::{Chain, RemeshParams, remesh_within};
 use crate::mesh::{Mesh, VertexId};

@@ -10,7 +10,7 @@
 //! even triangles the trees differ little, and the few hundred rays of a silhouette frame
 //! do not notice.
 
-use super::{Aabb, Node, triangle_box};
+use super::node::{Aabb, Node, triangle_box};
 use crate::mesh::Mesh;
 
 /// Ranges at most this long become leaves.

@@ -10,12 +10,14 @@
 //! deformations).
 
 mod build;
+mod node;
 
 use glam::DVec3;
 
 use super::RayHit;
 use super::raycast::intersect_triangle;
 use crate::mesh::{FaceId, Mesh};
+use node::{Aabb, Node, triangle_box};
 
 /// A bounding-volume hierarchy over the triangles of one [`Mesh`]: a linear BVH (triangles
 /// sorted along a Morton curve of their centroids, leaves of up to four), built in about 3 ms
@@ -26,46 +28,6 @@ pub struct Bvh {
     nodes: Vec<Node>,
     /// Face indices, permuted so that every leaf owns a contiguous range.
     faces: Vec<u32>,
-}
-
-/// A box and either a leaf's face range (`count > 0`) or an inner node's children
-/// (`first` and `first + 1`, `count == 0`).
-#[derive(Clone, Copy, Debug)]
-struct Node {
-    bounds: Aabb,
-    first: u32,
-    count: u32,
-}
-
-/// An axis-aligned box, empty when `lo > hi`.
-#[derive(Clone, Copy, Debug)]
-struct Aabb {
-    /// Smallest corner.
-    lo: DVec3,
-    /// Largest corner.
-    hi: DVec3,
-}
-
-impl Aabb {
-    /// Grows to anything.
-    const EMPTY: Self = Self {
-        lo: DVec3::INFINITY,
-        hi: DVec3::NEG_INFINITY,
-    };
-
-    fn grow(&mut self, other: Self) {
-        self.lo = self.lo.min(other.lo);
-        self.hi = self.hi.max(other.hi);
-    }
-}
-
-/// The box around one triangle.
-fn triangle_box(mesh: &Mesh, f: u32) -> Aabb {
-    let [a, b, c] = mesh.face_positions(FaceId(f));
-    Aabb {
-        lo: a.min(b).min(c),
-        hi: a.max(b).max(c),
-    }
 }
 
 impl Bvh {

@@ -8,8 +8,16 @@
 
 use glam::DVec3;
 
-use super::Chain;
 use crate::mesh::INVALID;
+
+/// A chain of mesh vertices joined by mesh edges (a control curve); `closed` adds the edge last→first.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Chain {
+    /// The vertices in curve order.
+    pub vertices: Vec<u32>,
+    /// Whether the last vertex joins the first.
+    pub closed: bool,
+}
 
 /// What a vertex is to the chains, which decides how it may move or disappear.
 #[derive(Clone, Copy, Debug, PartialEq)]

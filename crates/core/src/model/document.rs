@@ -1,57 +1,12 @@
-//! What a document holds: models (a mesh and its control curves) and free sketch curves.
+//! Everything the user has made, and its counts.
 
 use std::sync::Arc;
 
-use glam::DVec3;
 use serde::Serialize;
 
-use super::Appearance;
-use crate::mesh::{Mesh, VertexId};
-
-/// An ink stroke placed in 3D: the processed screen stroke projected onto a plane.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct SketchCurve {
-    /// Points in world space, in drawing order.
-    pub points: Vec<DVec3>,
-    /// Pen pressure (0..=1) at each point; same length as `points`.
-    pub pressures: Vec<f64>,
-}
-
-/// A curve on a model's surface that defines or deforms its shape (FiberMesh).
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct ControlCurve {
-    /// Points in world space, in order.
-    pub points: Vec<DVec3>,
-    /// The mesh vertices the curve runs through (a chain of mesh edges), in the order of
-    /// `points`; empty when the curve is not embedded in the mesh (for example imported).
-    pub vertices: Vec<VertexId>,
-    /// Whether the last point connects back to the first.
-    pub closed: bool,
-    /// Whether the surface has a crease along the curve (instead of being smooth across it).
-    pub sharp: bool,
-}
-
-/// A surface model: a triangle mesh and the control curves that shape it.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Model {
-    /// The surface, in world space.
-    pub mesh: Mesh,
-    /// Control curves on the surface.
-    pub curves: Vec<ControlCurve>,
-    /// The name it had in an imported file.
-    pub name: Option<String>,
-    /// How it looked in an imported file; `None` for models made here.
-    pub appearance: Option<Arc<Appearance>>,
-}
-
-/// Points imported from a file (a scan, say): shown, kept and exported as they are.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct PointCloud {
-    /// Positions in world space.
-    pub positions: Vec<DVec3>,
-    /// RGBA colour per point, if the file had colours.
-    pub colors: Option<Vec<[f32; 4]>>,
-}
+use super::point_cloud::PointCloud;
+use super::sketch::SketchCurve;
+use super::surface::Model;
 
 /// Everything the user has made. Cheap to clone: a clone shares every model and sketch.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -102,6 +57,7 @@ impl Document {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::fibermesh::ControlCurve;
     use crate::mesh::primitives;
 
     #[test]

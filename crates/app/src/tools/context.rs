@@ -1,0 +1,36 @@
+//! What a tool is given (the view it acts in) and what it gives back.
+
+use egui::Rect;
+use sketchmesh_core::camera::Camera;
+use sketchmesh_core::document::Op;
+
+/// What a tool needs to know about the view it acts in.
+#[derive(Clone, Copy, Debug)]
+pub struct ViewCtx {
+    /// The camera the user sees through.
+    pub camera: Camera,
+    /// The 3D viewport's rectangle in screen points; stroke coordinates are relative to it.
+    pub viewport: Rect,
+}
+
+/// The result of feeding an event to a tool.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ToolOutput {
+    /// Nothing for the document (the tool may have updated its preview).
+    None,
+    /// Apply this operation as one undoable step.
+    Commit(Op),
+    /// Apply these operations in order, one undoable step each.
+    CommitAll(Vec<Op>),
+    /// Begin this op as a gesture: its stroke (the pointer-down sample so far) is still
+    /// being drawn, and the edit previews it.
+    Begin(Op),
+    /// The gesture's stroke reached this sample `[x, y, pressure]`.
+    Extend([f64; 3]),
+    /// The gesture ended with this sample: apply its op as one undoable step.
+    End([f64; 3]),
+    /// Drop the gesture: nothing changes.
+    Cancel,
+    /// The gesture did nothing; tell the user why.
+    Refused(String),
+}

@@ -1,0 +1,20 @@
+//! Surface models: a triangle mesh and the control curves that shape it.
+
+use std::sync::Arc;
+
+use super::appearance::Appearance;
+use crate::fibermesh::ControlCurve;
+use crate::mesh::Mesh;
+
+/// A surface model: a triangle mesh and the control curves that shape it (FiberMesh).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Model {
+    /// The surface, in world space.
+    pub mesh: Mesh,
+    /// Control curves on the surface: chains of `mesh`'s vertices, so they move with it.
+    pub curves: Vec<ControlCurve>,
+    /// The name it had in an imported file.
+    pub name: Option<String>,
+    /// How it looked in an imported file; `None` for models made here.
+    pub appearance: Option<Arc<Appearance>>,
+}

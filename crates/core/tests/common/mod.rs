@@ -77,13 +77,18 @@ pub struct Digest {
 }
 
 /// The digest of a document. Covers, per model: every position (f64 bits), every
-/// triangle, and every control curve (its vertex chain, the sharp/smooth kind, the closed
-/// flag and its points); per sketch its points and pressures; per point cloud its
-/// positions and colours; model names.
+/// triangle, the name, and every control curve: its kind (sharp or smooth), its closed flag
+/// and its vertex chain, and, for a curve not embedded in the mesh (no vertices), its
+/// points; per sketch its points and pressures; per point cloud its positions and colours.
 ///
-/// The single function to adapt when the document's layout changes. Curve points are
-/// hashed as world positions; a curve stored only as a vertex chain hashes the positions
-/// of its vertices here, which gives the same bytes for an embedded curve.
+/// The single function to adapt when the document's layout changes (curves stored as
+/// chains of `VertexId` with a kind and a closed flag, say): it must keep feeding the same
+/// bytes in the same order for the same document.
+///
+/// An embedded curve's points are left out: they are where its vertices are, except right
+/// after an import, where they keep the f64 points of the file's extras while the mesh holds
+/// the f32 positions of its buffer (until the first edit rewrites them), and a curve stored
+/// as a vertex chain has no separate points.
 pub fn digest(document: &Document) -> Digest {
     let (mut full, mut topo) = (Fnv::default(), Fnv::default());
     for h in [&mut full, &mut topo] {
@@ -112,9 +117,13 @@ pub fn digest(document: &Document) -> Digest {
                 h.u64(u64::from(curve.closed));
                 h.len(curve.vertices.len());
                 curve.vertices.iter().for_each(|v| h.u64(u64::from(v.0)));
-                h.len(curve.points.len());
             }
-            curve.points.iter().for_each(|&p| full.point(p));
+            if curve.vertices.is_empty() {
+                for h in [&mut full, &mut topo] {
+                    h.len(curve.points.len());
+                }
+                curve.points.iter().for_each(|&p| full.point(p));
+            }
         }
     }
     for h in [&mut full, &mut topo] {

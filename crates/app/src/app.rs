@@ -72,6 +72,9 @@ pub struct SketchApp {
     edit: Option<Edit>,
     /// How many edits were begun: tells apart the documents of two edits of equal revision.
     edits_begun: u64,
+    /// Whether the edit in progress was begun this frame: it is drawn once before its first
+    /// step, so what it shows at once (a creation's seed) is seen at once.
+    is_edit_new: bool,
     /// Where the time of the edit in progress goes.
     edit_clock: EditClock,
     options: ViewOptions,
@@ -121,6 +124,7 @@ impl SketchApp {
             moved_normals: Vec::new(),
             edit: None,
             edits_begun: 0,
+            is_edit_new: false,
             edit_clock: EditClock::default(),
             options: ViewOptions {
                 wireframe: false,
@@ -161,6 +165,7 @@ impl SketchApp {
                 self.edit_clock = EditClock::begun(name, ms, is_gesture, timings);
                 self.edit = Some(edit);
                 self.edits_begun += 1;
+                self.is_edit_new = true;
             }
             Err(e) => self.set_status(e.to_string(), now),
         }
@@ -173,12 +178,16 @@ impl SketchApp {
     }
 
     /// Runs the steps of the edit in progress while [`FRAME_BUDGET_MS`] lasts (at least
-    /// one), and finishes it once done.
+    /// one; none in the frame it was begun in), and finishes it once done.
     fn step_edit(&mut self, ctx: &egui::Context) {
         let now = ctx.input(|i| i.time);
         let Some(edit) = self.edit.as_mut() else {
             return;
         };
+        if std::mem::take(&mut self.is_edit_new) {
+            ctx.request_repaint();
+            return;
+        }
         let was_gesture = edit.is_gesture();
         let started = clock::now_ms();
         let stepped = loop {

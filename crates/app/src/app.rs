@@ -60,9 +60,9 @@ pub struct SketchApp {
     /// Samples queued by the browser's pointer listeners.
     pub web_samples: Rc<RefCell<std::collections::VecDeque<PointerSample>>>,
     geometry: Arc<SceneGeometry>,
-    /// What `geometry` was built from: the editor's revision and the edit's
-    /// ([`Edit::revision`], 0 when there is none).
-    geometry_source: (u64, u64),
+    /// What `geometry` was built from: the editor's revision, and the edit's number and
+    /// revision when it shows another document than the editor's.
+    geometry_source: (u64, Option<(u64, u64)>),
     /// The edit generation whose moved model `geometry` shows, if it shows one (it is rebuilt
     /// when the edit stops moving it).
     shown_motion: Option<u64>,
@@ -70,6 +70,11 @@ pub struct SketchApp {
     moved_normals: Vec<glam::DVec3>,
     /// The edit in progress: begun from a tool's op, stepped every frame, finished when done.
     edit: Option<Edit>,
+    /// How many edits were begun: tells apart the documents of two edits of equal revision.
+    edits_begun: u64,
+    /// Whether the edit in progress was begun this frame: it is drawn once before its first
+    /// step, so what it shows at once (a creation's seed) is seen at once.
+    is_edit_new: bool,
     /// Where the time of the edit in progress goes.
     edit_clock: EditClock,
     options: ViewOptions,
@@ -114,10 +119,12 @@ impl SketchApp {
             egui_pointer: Default::default(),
             web_samples: Default::default(),
             geometry: Arc::new(SceneGeometry::default()),
-            geometry_source: (u64::MAX, 0),
+            geometry_source: (u64::MAX, None),
             shown_motion: None,
             moved_normals: Vec::new(),
             edit: None,
+            edits_begun: 0,
+            is_edit_new: false,
             edit_clock: EditClock::default(),
             options: ViewOptions {
                 wireframe: false,
@@ -157,6 +164,8 @@ impl SketchApp {
                 let timings = &mut self.shared.borrow_mut().timings;
                 self.edit_clock = EditClock::begun(name, ms, is_gesture, timings);
                 self.edit = Some(edit);
+                self.edits_begun += 1;
+                self.is_edit_new = true;
             }
             Err(e) => self.set_status(e.to_string(), now),
         }
@@ -169,12 +178,16 @@ impl SketchApp {
     }
 
     /// Runs the steps of the edit in progress while [`FRAME_BUDGET_MS`] lasts (at least
-    /// one), and finishes it once done.
+    /// one; none in the frame it was begun in), and finishes it once done.
     fn step_edit(&mut self, ctx: &egui::Context) {
         let now = ctx.input(|i| i.time);
         let Some(edit) = self.edit.as_mut() else {
             return;
         };
+        if std::mem::take(&mut self.is_edit_new) {
+            ctx.request_repaint();
+            return;
+        }
         let was_gesture = edit.is_gesture();
         let started = clock::now_ms();
         let stepped = loop {
@@ -481,7 +494,9 @@ impl SketchApp {
         let edit = self.edit.as_ref();
         let source = (
             self.shared.borrow().editor.revision(),
-            edit.map_or(0, Edit::revision),
+            edit.map(Edit::revision)
+                .filter(|&revision| revision != 0)
+                .map(|revision| (self.edits_begun, revision)),
         );
         let moved = edit.and_then(Edit::moved_model);
         let motion_ended = self.shown_motion.is_some() && moved.is_none();

@@ -218,3 +218,47 @@ fn a_shape_created_and_pulled_in_the_app_is_its_session_replayed() {
         "the pull committed in the app differs from apply"
     );
 }
+
+#[test]
+fn an_oversketch_stroke_shows_its_outline_piece_then_commits_what_replay_gives() {
+    let mut h = harness();
+    h.run();
+    let center = pos2(450.0, 340.0);
+    draw_ellipse(&mut h, center);
+    h.key_press(egui::Key::O);
+    h.run();
+    // Beside the right end of the outline, 15% out, from -30° to +30°.
+    let at = |k: usize| {
+        let a = (-30.0 + 60.0 * k as f32 / 30.0).to_radians();
+        center + vec2(172.0 * a.cos(), 126.0 * a.sin())
+    };
+    h.event(Event::PointerMoved(at(0)));
+    press(&h, at(0), PointerButton::Primary, true);
+    h.step();
+    for k in 1..30 {
+        h.event(Event::PointerMoved(at(k)));
+        h.step();
+    }
+    let drawing = h.render().expect("render");
+    save(&drawing, "oversketch-preview");
+    let green = drawing
+        .pixels()
+        .filter(|p| p.0[1] > 200 && p.0[0] < 130 && p.0[2] < 160)
+        .count();
+    assert!(green > 100, "no outline piece shown green ({green} pixels)");
+    press(&h, at(30), PointerButton::Primary, false);
+    h.run();
+    let shared = h.state().shared();
+    let names: Vec<&str> = shared
+        .borrow()
+        .editor
+        .ops()
+        .iter()
+        .map(|op| op.name())
+        .collect();
+    assert_eq!(names, ["create", "oversketch"]);
+    assert!(
+        replays_bit_for_bit(&h),
+        "the over-sketch committed in the app differs from apply"
+    );
+}

@@ -3,7 +3,7 @@
 //!
 //! The committed op tries every model and keeps the best match ([`oversketch_op`]). While
 //! the stroke is drawn, an [`OutlinePreview`] finds each model's silhouettes once (the
-//! stroke's camera does not move) and matches the stroke so far every
+//! stroke's camera does not move; one model per step) and matches the stroke so far every
 //! [`PREVIEW_EVERY`] samples, so the app can show which piece the stroke would replace:
 //! silhouettes and matching only, no edit.
 
@@ -93,9 +93,12 @@ pub struct OutlinePiece {
 pub(super) struct OutlinePreview {
     camera: Camera,
     viewport: DVec2,
+    /// A picked handle (manual mode): shown as it resolves, never matched.
     handle: Option<ManualHandle>,
-    /// Each model's silhouettes; `None` until the first step.
-    outlines: Option<Vec<Outlines>>,
+    /// Whether the picked handle was looked for.
+    is_resolved: bool,
+    /// The silhouettes of the first models, one more each step until all have theirs.
+    outlines: Vec<Outlines>,
     /// How many samples the stroke had at the last match.
     matched: usize,
     shown: Option<OutlinePiece>,
@@ -108,44 +111,44 @@ impl OutlinePreview {
             camera: input.camera,
             viewport: DVec2::from(input.viewport),
             handle: input.handle.clone(),
-            outlines: None,
+            is_resolved: false,
+            outlines: Vec::new(),
             matched: 0,
             shown: None,
         }
     }
 
-    /// One chunk of work for the stroke so far: the silhouettes of every model (the first
-    /// call; a picked handle is found on them then and stays), or a match of the stroke
-    /// when [`PREVIEW_EVERY`] samples came since the last one. Returns `None` when there was
-    /// nothing to do, else whether more work is ready.
+    /// One chunk of work for the stroke so far (`document` is the one the edit began on):
+    /// a picked handle found on the models (once), or the silhouettes of one more model, or
+    /// a match of the stroke once every model has its silhouettes and [`PREVIEW_EVERY`]
+    /// samples came since the last match. Returns `None` when there was nothing to do, else
+    /// whether more work is ready.
     pub(super) fn step(&mut self, document: &Document, stroke: &[[f64; 3]]) -> Option<bool> {
-        let Some(outlines) = &self.outlines else {
-            let (camera, viewport) = (&self.camera, self.viewport);
-            if let Some(handle) = &self.handle {
-                self.shown = document.models.iter().find_map(|model| {
-                    let points = manual_handle_preview(&model.mesh, camera, viewport, handle)?;
-                    Some(OutlinePiece {
-                        points,
-                        is_confident: true,
-                    })
-                });
+        let (camera, viewport) = (&self.camera, self.viewport);
+        if let Some(handle) = &self.handle {
+            if std::mem::replace(&mut self.is_resolved, true) {
+                return None;
             }
-            let outlines = match self.handle {
-                Some(_) => Vec::new(),
-                None => document
-                    .models
-                    .iter()
-                    .map(|model| Outlines::new(&model.mesh, camera, viewport))
-                    .collect(),
-            };
-            self.outlines = Some(outlines);
-            return Some(self.is_due(stroke));
-        };
+            self.shown = document.models.iter().find_map(|model| {
+                let points = manual_handle_preview(&model.mesh, camera, viewport, handle)?;
+                Some(OutlinePiece {
+                    points,
+                    is_confident: true,
+                })
+            });
+            return Some(false);
+        }
+        if let Some(model) = document.models.get(self.outlines.len()) {
+            self.outlines
+                .push(Outlines::new(&model.mesh, camera, viewport));
+            let is_more = self.outlines.len() < document.models.len() || self.is_due(stroke);
+            return Some(is_more);
+        }
         if !self.is_due(stroke) {
             return None;
         }
         let points: Vec<DVec2> = stroke.iter().map(|&[x, y, _]| DVec2::new(x, y)).collect();
-        self.shown = outlines.iter().find_map(|outlines| {
+        self.shown = self.outlines.iter().find_map(|outlines| {
             let (points, is_confident) = outlines.preview(&points)?;
             Some(OutlinePiece {
                 points,
@@ -156,9 +159,9 @@ impl OutlinePreview {
         Some(false)
     }
 
-    /// Whether the stroke is to be matched again (never for a picked handle).
+    /// Whether the stroke is to be matched again.
     fn is_due(&self, stroke: &[[f64; 3]]) -> bool {
-        self.handle.is_none() && stroke.len() >= self.matched + PREVIEW_EVERY
+        stroke.len() >= self.matched + PREVIEW_EVERY
     }
 
     /// The piece found at the last match, or the picked handle.

@@ -76,7 +76,9 @@ pub fn oversketch_with(
     stroke: &[DVec2],
     options: BendOptions,
 ) -> Result<Oversketched, OversketchError> {
-    let found = find_handle(mesh, camera, viewport, stroke).ok_or(OversketchError::NoMatch)?;
+    let found = Outlines::new(mesh, camera, viewport)
+        .find(stroke)
+        .ok_or(OversketchError::NoMatch)?;
     if !found.is_confident {
         return Err(OversketchError::LowConfidence);
     }
@@ -150,11 +152,6 @@ impl Outlines {
             is_confident: found.confident,
         })
     }
-}
-
-/// Silhouettes and matching ([`Outlines::find`]).
-fn find_handle(mesh: &Mesh, camera: &Camera, viewport: DVec2, stroke: &[DVec2]) -> Option<Found> {
-    Outlines::new(mesh, camera, viewport).find(stroke)
 }
 
 /// The visible silhouettes and their screen polylines ([`screen_polyline`]).

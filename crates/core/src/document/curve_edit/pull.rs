@@ -9,9 +9,10 @@
 //! only), and the surface is solved in a region around the grabbed point, factored once by
 //! the edit's first step, with every other vertex held; each later step follows the latest
 //! pointer sample with one back-substitution. At 40k vertices one back-substitution of the
-//! whole mesh costs ~34 ms in wasm, too slow for 30 fps. The preview region is the [`PREVIEW_VERTICES`] nearest vertices (the whole
-//! shape at 10k vertices), so its cost does not grow with the mesh, and it is refactored
-//! only when the peel outgrows it: a refactor is a frame of 50–250 ms in the page.
+//! whole mesh costs ~34 ms in wasm, too slow for 30 fps. The preview region is the
+//! [`PREVIEW_VERTICES`] nearest vertices (the whole shape at 10k vertices), so its cost does
+//! not grow with the mesh, and it is refactored only when the peel outgrows it: a refactor
+//! is a frame of 50–250 ms in the page.
 
 use std::sync::Arc;
 

@@ -12,7 +12,7 @@ use std::hint::black_box;
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use glam::DVec3;
 use sketchmesh_core::mesh::remesh::{Chain, RemeshParams, remesh};
-use sketchmesh_core::mesh::{HalfedgeId, Mesh, primitives};
+use sketchmesh_core::mesh::{HalfedgeId, Mesh, VertexId, primitives};
 
 /// The closed edge loop between faces with centroids above a slightly tilted equator plane
 /// and the others (off the icosphere's symmetry planes, so the loop never touches itself).
@@ -44,7 +44,7 @@ fn equator(mesh: &Mesh) -> Chain {
         vertices.push(next);
     }
     Chain {
-        vertices,
+        vertices: vertices.into_iter().map(VertexId).collect(),
         closed: true,
     }
 }
@@ -53,7 +53,7 @@ fn equator(mesh: &Mesh) -> Chain {
 fn stretched(mesh: &Mesh, chain: &Chain) -> Mesh {
     let mut mesh = mesh.clone();
     for &v in &chain.vertices {
-        let p = &mut mesh.positions_mut()[v as usize];
+        let p = &mut mesh.positions_mut()[v.index()];
         if p.x > 0.0 {
             *p *= 1.5;
         }

@@ -30,10 +30,10 @@
 //! for open and closed curves and O(vertices · stroke segments) for cross sections, plus
 //! building the BVH and the output mesh.
 
+mod embedding;
 mod error;
 mod level_set;
 mod project;
-mod tri_list;
 mod walk;
 
 pub use error::AddCurveError;
@@ -43,9 +43,9 @@ use glam::{DVec2, DVec3};
 use crate::camera::Camera;
 use crate::curve::polyline::simplify;
 use crate::geometry::Bvh;
-use crate::mesh::Mesh;
+use crate::mesh::{Mesh, VertexId};
+use embedding::Embedding;
 use project::{Projector, SurfacePoint};
-use tri_list::TriList;
 
 /// A cross-section stroke is resampled every this many px, then simplified by
 /// Douglas–Peucker at [`CROSS_SECTION_TOLERANCE_PX`], before the signed screen distance to
@@ -76,13 +76,13 @@ pub struct Embedded {
     pub mesh: Mesh,
     /// The new curve's vertices in stroke order, consecutive ones joined by mesh edges (and
     /// last→first when `closed`).
-    pub chain: Vec<u32>,
+    pub chain: Vec<VertexId>,
     /// Whether the curve is a closed loop.
     pub closed: bool,
     /// Every edge split, in order: (a, b, new) means the edge a–b (of the mesh at that
     /// moment) got vertex `new` between a and b. Callers replay this list to insert `new`
     /// into other curves that ran along a–b.
-    pub split_edges: Vec<(u32, u32, u32)>,
+    pub split_edges: Vec<(VertexId, VertexId, VertexId)>,
 }
 
 /// Embeds the curve that `stroke` (screen points in CSS px, y down, in a `viewport` of
@@ -102,25 +102,31 @@ pub fn add_curve(
         camera,
         viewport,
     };
-    let mut tri = TriList::new(mesh);
+    let mut embedding = Embedding::new(mesh);
     let chain = match shape {
         CurveShape::Open => {
             let run = first_run(&projector, stroke)?;
-            walk::walk(&mut tri, &run, false)
+            walk::walk(&mut embedding, &run, false)
         }
         CurveShape::Closed => {
             let samples = closed_samples(&projector, stroke)?;
-            walk::walk(&mut tri, &samples, true)
+            walk::walk(&mut embedding, &samples, true)
         }
-        CurveShape::CrossSection => cross_section(&projector, &mut tri, stroke)?,
+        CurveShape::CrossSection => cross_section(&projector, &mut embedding, stroke)?,
     };
     let chain = chain.ok_or(AddCurveError::NotPlaced)?;
     let closed = shape != CurveShape::Open;
     if chain.len() < if closed { 3 } else { 2 } {
         return Err(AddCurveError::NotPlaced);
     }
-    let split_edges = std::mem::take(&mut tri.splits);
-    let mesh = tri.into_mesh().map_err(|_| AddCurveError::NotPlaced)?;
+    let Embedding {
+        mut mesh,
+        splits: split_edges,
+    } = embedding;
+    // Splits append only, so this keeps every id; it only picks the vertices' half-edges
+    // as a mesh built from these triangles would have them.
+    mesh.compact();
+    debug_assert_eq!(mesh.validate(), Ok(()));
     Ok(Embedded {
         mesh,
         chain,
@@ -191,9 +197,9 @@ fn closed_samples(
 /// embeds the loop of the cut nearest to its hits.
 fn cross_section(
     projector: &Projector,
-    tri: &mut TriList,
+    embedding: &mut Embedding,
     stroke: &[DVec2],
-) -> Result<Option<Vec<u32>>, AddCurveError> {
+) -> Result<Option<Vec<VertexId>>, AddCurveError> {
     let (Some(&first), Some(&last)) = (stroke.first(), stroke.last()) else {
         return Err(AddCurveError::DoesNotCross);
     };
@@ -210,12 +216,12 @@ fn cross_section(
         return Err(AddCurveError::DoesNotCross);
     }
     let distances = level_set::screen_distances(
-        &tri.positions,
+        embedding.mesh.positions(),
         projector.camera,
         projector.viewport,
         &polyline,
     );
-    let curve = level_set::cross_section(tri, &distances, &hits);
+    let curve = level_set::cross_section(embedding, &distances, &hits);
     curve.map(Some).ok_or(AddCurveError::DoesNotCross)
 }
 

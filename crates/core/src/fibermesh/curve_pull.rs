@@ -40,6 +40,7 @@ pub use error::PullError;
 
 use super::measure::Rings;
 use super::region::distances_within;
+use crate::mesh::VertexId;
 use crate::solve::{Prefactored, Triplets};
 
 /// How a pull peels and deforms.
@@ -77,8 +78,8 @@ impl Default for PullParams {
 #[derive(Clone, Debug)]
 pub struct CurveNetwork {
     /// The mesh vertex of each node.
-    mesh_vertex: Vec<u32>,
-    node_of: FxHashMap<u32, u32>,
+    mesh_vertex: Vec<VertexId>,
+    node_of: FxHashMap<VertexId, u32>,
     rest: Vec<DVec3>,
     adjacency: Rings,
     mean_edge: f64,
@@ -87,10 +88,10 @@ pub struct CurveNetwork {
 impl CurveNetwork {
     /// The network of `chains` (mesh vertex indices, and whether each is closed) on a mesh
     /// with `positions`.
-    pub fn new(positions: &[DVec3], chains: &[(&[u32], bool)]) -> CurveNetwork {
+    pub fn new(positions: &[DVec3], chains: &[(&[VertexId], bool)]) -> CurveNetwork {
         let mut mesh_vertex = Vec::new();
         let mut node_of = FxHashMap::default();
-        let mut node = |v: u32| {
+        let mut node = |v: VertexId| {
             *node_of.entry(v).or_insert_with(|| {
                 mesh_vertex.push(v);
                 mesh_vertex.len() as u32 - 1
@@ -105,7 +106,7 @@ impl CurveNetwork {
             }
         }
         edges.retain(|&[a, b]| a != b);
-        let rest: Vec<DVec3> = mesh_vertex.iter().map(|&v| positions[v as usize]).collect();
+        let rest: Vec<DVec3> = mesh_vertex.iter().map(|&v| positions[v.index()]).collect();
         let total: f64 = edges
             .iter()
             .map(|&[a, b]| rest[a as usize].distance(rest[b as usize]))
@@ -125,7 +126,7 @@ impl CurveNetwork {
     }
 
     /// The node at mesh vertex `v`, if a curve passes through it.
-    pub fn node_of(&self, v: u32) -> Option<usize> {
+    pub fn node_of(&self, v: VertexId) -> Option<usize> {
         self.node_of.get(&v).map(|&k| k as usize)
     }
 
@@ -135,7 +136,7 @@ impl CurveNetwork {
     }
 
     /// The mesh vertex of `node`.
-    pub fn mesh_vertex(&self, node: usize) -> u32 {
+    pub fn mesh_vertex(&self, node: usize) -> VertexId {
         self.mesh_vertex[node]
     }
 
@@ -523,7 +524,7 @@ mod tests {
     }
 
     fn network(points: &[DVec3]) -> CurveNetwork {
-        let chain: Vec<u32> = (0..points.len() as u32).collect();
+        let chain: Vec<VertexId> = (0..points.len() as u32).map(VertexId).collect();
         CurveNetwork::new(points, &[(&chain, false)])
     }
 
@@ -572,15 +573,15 @@ mod tests {
         // A horizontal and a vertical line crossing at node (50, 50).
         let mut points = wavy(101);
         points.extend((0..101).map(|i| DVec3::new(5.0, 0.1 * i as f64 - 5.0, 0.0)));
-        let horizontal: Vec<u32> = (0..101).collect();
-        let mut vertical: Vec<u32> = (101..202).collect();
-        vertical[50] = 50;
+        let horizontal: Vec<VertexId> = (0..101).map(VertexId).collect();
+        let mut vertical: Vec<VertexId> = (101..202).map(VertexId).collect();
+        vertical[50] = VertexId(50);
         let network = CurveNetwork::new(&points, &[(&horizontal, false), (&vertical, false)]);
         let mut pull = CurvePull::new(network, 50, PullParams::default());
         let mut nodes = vec![DVec3::ZERO; pull.network().n_nodes()];
         pull.pull_to(points[50] + DVec3::Z * 1.0, &mut nodes)
             .unwrap();
-        let node = pull.network().node_of(101 + 45).unwrap();
+        let node = pull.network().node_of(VertexId(101 + 45)).unwrap();
         assert!(nodes[node].z > 0.1, "the crossing curve did not follow");
     }
 

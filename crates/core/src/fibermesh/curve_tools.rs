@@ -43,11 +43,11 @@ impl StrokeHits {
 
     /// The mesh vertices of the curve edges the stroke passes over (`curves` as given to
     /// [`hit_curves`]).
-    pub fn vertices_hit(&self, curves: &[ControlCurve]) -> Vec<u32> {
+    pub fn vertices_hit(&self, curves: &[ControlCurve]) -> Vec<VertexId> {
         let mut hit = Vec::new();
         for (curve, mask) in curves.iter().zip(&self.vertices) {
             for (_, piece) in pieces(curve, mask).into_iter().filter(|(h, _)| *h) {
-                hit.extend(piece.vertices.iter().map(|v| v.0));
+                hit.extend(piece.vertices.iter().copied());
             }
         }
         hit

@@ -565,10 +565,10 @@ pub const SHARP_BAND: f64 = 0.025;
 
 /// The mesh vertices within [`SHARP_BAND`] of a sharp curve, themselves included.
 fn near_sharp_curves(mesh: &Mesh, curves: &[ControlCurve]) -> Vec<bool> {
-    let sharp: Vec<u32> = curves
+    let sharp: Vec<VertexId> = curves
         .iter()
         .filter(|c| c.kind == CurveKind::Sharp)
-        .flat_map(|c| c.vertices.iter().map(|v| v.0))
+        .flat_map(|c| c.vertices.iter().copied())
         .collect();
     if sharp.is_empty() {
         return vec![false; mesh.n_vertices()];

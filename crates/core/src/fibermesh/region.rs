@@ -9,7 +9,7 @@ use crate::mesh::{Mesh, VertexId};
 
 /// The vertices within `radius` of `seeds` along mesh edges (Dijkstra over edge lengths),
 /// as a mask with one entry per vertex. Seeds outside the mesh are ignored.
-pub fn region_around(mesh: &Mesh, seeds: &[u32], radius: f64) -> Vec<bool> {
+pub fn region_around(mesh: &Mesh, seeds: &[VertexId], radius: f64) -> Vec<bool> {
     nearest_vertices(mesh, seeds, radius, usize::MAX).mask
 }
 
@@ -25,13 +25,19 @@ pub struct Region {
 
 /// [`region_around`] holding at most `max_vertices` vertices, the nearest: for a region
 /// whose solve must stay within a time budget whatever the mesh's resolution.
-pub fn nearest_vertices(mesh: &Mesh, seeds: &[u32], radius: f64, max_vertices: usize) -> Region {
+pub fn nearest_vertices(
+    mesh: &Mesh,
+    seeds: &[VertexId],
+    radius: f64,
+    max_vertices: usize,
+) -> Region {
+    let seeds: Vec<u32> = seeds.iter().map(|v| v.0).collect();
     let mut mask = vec![false; mesh.n_vertices()];
     let mut n_settled = 0;
     let mut reach = f64::INFINITY;
     shortest_paths(
         mesh.n_vertices(),
-        seeds,
+        &seeds,
         radius,
         |v| {
             let p = mesh.position(VertexId(v));
@@ -127,14 +133,19 @@ mod tests {
     #[test]
     fn region_grows_with_the_radius_and_holds_the_seed() {
         let mesh = primitives::icosphere(1.0, 3);
-        let count = |r: f64| region_around(&mesh, &[0], r).iter().filter(|&&x| x).count();
+        let count = |r: f64| {
+            region_around(&mesh, &[VertexId(0)], r)
+                .iter()
+                .filter(|&&x| x)
+                .count()
+        };
         assert_eq!(count(0.0), 1);
         let (small, large) = (count(0.3), count(1.0));
         assert!(1 < small && small < large && large < mesh.n_vertices());
         assert_eq!(count(10.0), mesh.n_vertices());
         // Every vertex in the region is within the radius in space as well.
         let p = mesh.position(VertexId(0));
-        let region = region_around(&mesh, &[0], 0.3);
+        let region = region_around(&mesh, &[VertexId(0)], 0.3);
         assert!(
             mesh.vertices()
                 .filter(|v| region[v.index()])
@@ -145,16 +156,16 @@ mod tests {
     #[test]
     fn a_vertex_budget_keeps_the_nearest_vertices() {
         let mesh = primitives::icosphere(1.0, 3);
-        let whole = nearest_vertices(&mesh, &[0], f64::INFINITY, usize::MAX);
+        let whole = nearest_vertices(&mesh, &[VertexId(0)], f64::INFINITY, usize::MAX);
         assert!(whole.mask.iter().all(|&x| x));
         assert_eq!(whole.reach, f64::INFINITY);
         let budget = 100;
-        let region = nearest_vertices(&mesh, &[0], f64::INFINITY, budget);
+        let region = nearest_vertices(&mesh, &[VertexId(0)], f64::INFINITY, budget);
         assert_eq!(region.mask.iter().filter(|&&x| x).count(), budget);
         assert!(region.reach > 0.0 && region.reach.is_finite());
         // It is the ball that reaches as far: every vertex nearer is in, none farther.
-        let ball = region_around(&mesh, &[0], region.reach);
-        let below = region_around(&mesh, &[0], 0.999 * region.reach);
+        let ball = region_around(&mesh, &[VertexId(0)], region.reach);
+        let below = region_around(&mesh, &[VertexId(0)], 0.999 * region.reach);
         for v in 0..mesh.n_vertices() {
             assert!(
                 !below[v] || region.mask[v],
@@ -166,8 +177,8 @@ mod tests {
             );
         }
         // Within the budget, the radius decides.
-        let small = nearest_vertices(&mesh, &[0], 0.3, budget);
-        assert_eq!(small.mask, region_around(&mesh, &[0], 0.3));
+        let small = nearest_vertices(&mesh, &[VertexId(0)], 0.3, budget);
+        assert_eq!(small.mask, region_around(&mesh, &[VertexId(0)], 0.3));
         assert_eq!(small.reach, 0.3);
     }
 }

@@ -22,7 +22,7 @@ use super::parse::parse;
 use super::resources::{Buffers, load_buffers, resolve};
 use super::scene::{NodeGeometry, Surface, read_nodes};
 use super::weld::weld;
-use crate::mesh::{Mesh, TriSoup, make_manifold};
+use crate::mesh::{FaceId, Mesh, TriSoup, make_manifold};
 use crate::model::{
     AlphaMode, Appearance, Image, Material, Model, PointCloud, SketchCurve, Texture, positions_hash,
 };
@@ -157,7 +157,7 @@ fn weld_and_repair(
     surface: &mut Surface,
     name: &str,
     notes: &mut Vec<String>,
-) -> Result<(Mesh, Vec<(u32, bool)>), GltfError> {
+) -> Result<(Mesh, Vec<(FaceId, bool)>), GltfError> {
     let (positions, welded_of) = weld(&surface.positions);
     // The welded copy is all that is needed from here on; free the original early.
     surface.positions = Vec::new();
@@ -171,7 +171,7 @@ fn weld_and_repair(
     };
     welded.remove_unreferenced_vertices();
     if let Ok(mesh) = Mesh::from_soup(&welded) {
-        let identity = (0..mesh.n_faces() as u32).map(|f| (f, false)).collect();
+        let identity = mesh.faces().map(|f| (f, false)).collect();
         return Ok((mesh, identity));
     }
     let repaired = make_manifold(&welded).map_err(|error| {
@@ -218,14 +218,14 @@ fn curves(n: usize) -> String {
 fn appearance(
     mesh: &Mesh,
     surface: &Surface,
-    face_source: &[(u32, bool)],
+    face_source: &[(FaceId, bool)],
     materials: &mut MaterialCache,
 ) -> Appearance {
     // The surface vertex behind each corner of the mesh, in mesh corner order.
     let corner_sources: Vec<u32> = face_source
         .iter()
         .flat_map(|&(source, flipped)| {
-            let t = surface.triangles[source as usize];
+            let t = surface.triangles[source.index()];
             if flipped { [t[0], t[2], t[1]] } else { t }
         })
         .collect();
@@ -237,7 +237,7 @@ fn appearance(
     let face_materials = face_source
         .iter()
         .map(|&(source, _)| {
-            let gltf_index = surface.face_materials[source as usize]?;
+            let gltf_index = surface.face_materials[source.index()]?;
             let material = materials.get(gltf_index)?;
             Some(*local_of.entry(gltf_index).or_insert_with(|| {
                 model_materials.push(material);

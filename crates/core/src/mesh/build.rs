@@ -29,6 +29,8 @@ impl Mesh {
             triangles: soup.triangles.clone(),
             twin,
             vertex_halfedge: vec![INVALID; n_vertices],
+            n_dead_vertices: 0,
+            n_dead_faces: 0,
         };
         let n_outgoing = mesh.assign_vertex_halfedges();
         if let Some(vertex) = mesh.vertex_halfedge.iter().position(|&h| h == INVALID) {
@@ -55,7 +57,7 @@ impl Mesh {
 
     /// Picks each vertex's half-edge (a boundary one when there is one) and returns how many
     /// half-edges leave each vertex.
-    fn assign_vertex_halfedges(&mut self) -> Vec<u32> {
+    pub(super) fn assign_vertex_halfedges(&mut self) -> Vec<u32> {
         let mut n_outgoing = vec![0u32; self.n_vertices()];
         for (h, &v) in self.triangles.as_flattened().iter().enumerate() {
             let v = v as usize;

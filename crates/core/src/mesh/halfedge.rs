@@ -44,6 +44,22 @@ impl Mesh {
         self.tail(self.next(h))
     }
 
+    /// The corner of `h`'s face that `h` does not touch.
+    pub fn opposite_vertex(&self, h: HalfedgeId) -> VertexId {
+        self.tail(self.prev(h))
+    }
+
+    /// The half-edge from `a` to `b`, if they are joined by an edge of a face on its left.
+    pub fn find_halfedge(&self, a: VertexId, b: VertexId) -> Option<HalfedgeId> {
+        self.outgoing_halfedges(a).find(|&h| self.head(h) == b)
+    }
+
+    /// A half-edge of the edge `a`–`b`, in either direction.
+    pub fn find_edge(&self, a: VertexId, b: VertexId) -> Option<HalfedgeId> {
+        self.find_halfedge(a, b)
+            .or_else(|| self.find_halfedge(b, a))
+    }
+
     /// One outgoing half-edge of `v`; on the boundary, the one with no twin.
     pub fn vertex_halfedge(&self, v: VertexId) -> HalfedgeId {
         HalfedgeId(self.vertex_halfedge[v.index()])
@@ -54,9 +70,10 @@ impl Mesh {
         self.twin[h.index()] == INVALID
     }
 
-    /// Whether `v` lies on the boundary.
+    /// Whether `v` lies on the boundary (never for a deleted vertex).
     pub fn is_boundary_vertex(&self, v: VertexId) -> bool {
-        self.is_boundary_halfedge(self.vertex_halfedge(v))
+        let h = self.vertex_halfedge[v.index()];
+        h != INVALID && self.twin[h as usize] == INVALID
     }
 
     /// Whether the mesh has no boundary edges.
@@ -70,7 +87,8 @@ impl Mesh {
         OutgoingHalfedges {
             mesh: self,
             start,
-            current: Some(start),
+            // A deleted vertex has no half-edges.
+            current: (start.0 != INVALID).then_some(start),
         }
     }
 

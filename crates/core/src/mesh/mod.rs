@@ -14,13 +14,17 @@
 //!   (the mesh is an oriented 2-manifold with boundary);
 //! - every vertex has one fan of faces, and the vertex's half-edge is its boundary half-edge when
 //!   it lies on the boundary, so a counter-clockwise walk from it visits the whole one-ring;
-//! - positions are finite.
+//! - positions are finite;
+//! - a deleted face (a tombstone left by a collapse or a deletion, see [`edit`]) has invalid
+//!   corners and twins, a deleted vertex an invalid half-edge, and no live face uses it.
 //!
-//! A current limitation: there is no mutation API yet (no edge flips, splits or deletion with
-//! tombstones); techniques that change topology build a new [`TriSoup`] and call
-//! [`Mesh::from_soup`].
+//! This is the one mesh of the crate: [`edit`] changes its topology in place (splits, flips,
+//! collapses, deletions, fills, new components), so remeshing, curve embedding and the
+//! topology operations all work on it. A document keeps each model behind an `Arc` and
+//! clones a mesh only when an op changes it, so snapshots for undo stay cheap.
 
 mod build;
+pub mod edit;
 mod error;
 pub mod fixtures;
 mod halfedge;
@@ -34,6 +38,7 @@ mod validate;
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
+pub use edit::Remap;
 pub use error::MeshError;
 pub use halfedge::OutgoingHalfedges;
 pub use repair::{RepairReport, Repaired, make_manifold};
@@ -85,6 +90,9 @@ pub struct Mesh {
     twin: Vec<u32>,
     /// One outgoing half-edge per vertex; the boundary one for boundary vertices.
     vertex_halfedge: Vec<u32>,
+    /// Deleted vertices and faces still holding a slot; see [`edit`].
+    n_dead_vertices: u32,
+    n_dead_faces: u32,
 }
 
 impl Mesh {
@@ -103,12 +111,12 @@ impl Mesh {
         self.positions[v.index()]
     }
 
-    /// Number of vertices.
+    /// Number of vertices (slots, deleted ones included, until [`Mesh::compact`]).
     pub fn n_vertices(&self) -> usize {
         self.positions.len()
     }
 
-    /// Number of triangles.
+    /// Number of triangles (slots, deleted ones included, until [`Mesh::compact`]).
     pub fn n_faces(&self) -> usize {
         self.triangles.len()
     }

@@ -30,24 +30,22 @@
 //!   corners, so boundary loops keep their shape.
 //! - Every edit is checked locally (link condition, valences of at least 3, no normal turning
 //!   by more than 60°, no new sliver), so genus, components and boundary loops are unchanged.
-//! - The work happens on a private corner table with tombstones; the output [`Mesh`] is built
-//!   once, with compact indices.
+//! - The work happens on a copy of the [`Mesh`] through its edits ([`crate::mesh::edit`]);
+//!   collapses leave tombstones, which one [`Mesh::compact`] drops at the end.
 //!
 //! A current limitation: split and collapse keep the flat input surface (midpoints, kept
 //! vertex positions); nothing smooths the new vertices into the curved shape but the
 //! optimization that follows.
 
 mod chains;
-mod editable;
 mod error;
 mod passes;
 
 pub use chains::Chain;
 pub use error::RemeshError;
 
-use super::{Mesh, VertexId};
+use super::Mesh;
 use chains::ChainNetwork;
-use editable::EditableMesh;
 use passes::Remesher;
 
 /// Above this many vertices expected at the target edge length, remeshing refuses, since
@@ -127,25 +125,31 @@ pub fn remesh_within(
     check_target(mesh, params.target_edge)?;
     check_chains(mesh, chains)?;
     let network = ChainNetwork::new(chains, mesh.positions());
-    let editable = EditableMesh::new(mesh);
-    let mut remesher = Remesher::new(editable, network, params.target_edge, region.to_vec());
+    let mut remesher = Remesher::new(mesh.clone(), network, params.target_edge, region.to_vec());
     for _ in 0..params.iterations {
         remesher.iterate();
     }
-    let (soup, new_from_old) = remesher.mesh.to_soup();
-    let mut is_remeshed = vec![false; soup.positions.len()];
-    let mut is_new = vec![false; soup.positions.len()];
-    for (old, (&new, &edited)) in new_from_old.iter().zip(&remesher.is_editable).enumerate() {
-        if let Some(slot) = is_remeshed.get_mut(new as usize) {
-            *slot = edited;
-            is_new[new as usize] = old >= mesh.n_vertices();
+    let remap = remesher.mesh.compact();
+    let n_new = remesher.mesh.n_vertices();
+    let (mut is_remeshed, mut is_new) = (vec![false; n_new], vec![false; n_new]);
+    for (old, (&new, &edited)) in remap
+        .vertices()
+        .iter()
+        .zip(&remesher.is_editable)
+        .enumerate()
+    {
+        if let Some(new) = new {
+            is_remeshed[new.index()] = edited;
+            is_new[new.index()] = old >= mesh.n_vertices();
         }
     }
-    let mesh = Mesh::from_soup(&soup).map_err(RemeshError::InvalidResult)?;
-    mesh.validate().map_err(RemeshError::InvalidResult)?;
+    remesher
+        .mesh
+        .validate()
+        .map_err(RemeshError::InvalidResult)?;
     Ok(Remeshed {
-        mesh,
-        chains: remesher.chains.to_chains(&new_from_old),
+        chains: remesher.chains.to_chains(&remap),
+        mesh: remesher.mesh,
         is_remeshed,
         is_new,
     })
@@ -174,12 +178,11 @@ fn check_target(mesh: &Mesh, target_edge: f64) -> Result<(), RemeshError> {
 
 fn check_chains(mesh: &Mesh, chains: &[Chain]) -> Result<(), RemeshError> {
     for (chain, c) in chains.iter().enumerate() {
-        if let Some(&vertex) = c
-            .vertices
-            .iter()
-            .find(|&&v| v as usize >= mesh.n_vertices())
-        {
-            return Err(RemeshError::VertexOutOfRange { chain, vertex });
+        if let Some(&vertex) = c.vertices.iter().find(|&&v| v.index() >= mesh.n_vertices()) {
+            return Err(RemeshError::VertexOutOfRange {
+                chain,
+                vertex: vertex.0,
+            });
         }
         if c.closed && c.vertices.len() < 3 {
             return Err(RemeshError::ClosedChainTooShort { chain });
@@ -189,8 +192,12 @@ fn check_chains(mesh: &Mesh, chains: &[Chain]) -> Result<(), RemeshError> {
             .then(|| (c.vertices[c.vertices.len() - 1], c.vertices[0]));
         let edges = c.vertices.windows(2).map(|w| (w[0], w[1])).chain(closing);
         for (a, b) in edges {
-            if !mesh.vertex_neighbors(VertexId(a)).any(|w| w.0 == b) {
-                return Err(RemeshError::NotAnEdgeChain { chain, a, b });
+            if !mesh.vertex_neighbors(a).any(|w| w == b) {
+                return Err(RemeshError::NotAnEdgeChain {
+                    chain,
+                    a: a.0,
+                    b: b.0,
+                });
             }
         }
     }
@@ -205,7 +212,7 @@ mod tests {
     use rustc_hash::FxHashMap;
 
     use super::*;
-    use crate::mesh::{HalfedgeId, fixtures, primitives};
+    use crate::mesh::{HalfedgeId, VertexId, fixtures, primitives};
 
     /// The closed edge loop between the faces whose centroids lie above the plane
     /// `normal · p = offset` and the others.
@@ -218,7 +225,7 @@ mod tests {
         for h in (0..mesh.n_halfedges() as u32).map(HalfedgeId) {
             let t = mesh.twin(h).unwrap();
             if is_above(mesh.face(h)) && !is_above(mesh.face(t)) {
-                let previous = head_from_tail.insert(mesh.tail(h).0, mesh.head(h).0);
+                let previous = head_from_tail.insert(mesh.tail(h), mesh.head(h));
                 assert!(previous.is_none(), "the cut loop touches itself");
             }
         }
@@ -245,7 +252,7 @@ mod tests {
         plane_cut_loop(mesh, DVec3::new(0.01, 0.02, 1.0).normalize(), 0.003)
     }
 
-    fn chain_edges(chain: &Chain) -> Vec<(u32, u32)> {
+    fn chain_edges(chain: &Chain) -> Vec<(VertexId, VertexId)> {
         let n = chain.vertices.len();
         let n_edges = if chain.closed { n } else { n.saturating_sub(1) };
         (0..n_edges)
@@ -255,10 +262,7 @@ mod tests {
 
     fn assert_edge_chain(mesh: &Mesh, chain: &Chain) {
         for (a, b) in chain_edges(chain) {
-            assert!(
-                mesh.vertex_neighbors(VertexId(a)).any(|w| w.0 == b),
-                "{a}-{b} is not an edge"
-            );
+            assert!(mesh.find_edge(a, b).is_some(), "{a:?}-{b:?} is not an edge");
         }
     }
 
@@ -272,14 +276,14 @@ mod tests {
     fn assert_on_polyline(mesh: &Mesh, input: &Chain, remeshed: &Mesh, chain: &Chain) {
         let p = mesh.positions();
         for &v in &chain.vertices {
-            let q = remeshed.positions()[v as usize];
+            let q = remeshed.positions()[v.index()];
             let distance = chain_edges(input)
                 .iter()
-                .map(|&(a, b)| distance_to_segment(q, p[a as usize], p[b as usize]))
+                .map(|&(a, b)| distance_to_segment(q, p[a.index()], p[b.index()]))
                 .fold(f64::INFINITY, f64::min);
             assert!(
                 distance < 1e-9,
-                "chain vertex {v} is {distance} off the curve"
+                "chain vertex {v:?} is {distance} off the curve"
             );
         }
     }
@@ -367,7 +371,7 @@ mod tests {
         let target_edge = mesh.mean_edge_length();
         let chain = equator(&mesh);
         for &v in &chain.vertices {
-            let p = &mut mesh.positions_mut()[v as usize];
+            let p = &mut mesh.positions_mut()[v.index()];
             if p.x > 0.0 {
                 *p *= 1.5;
             }
@@ -384,7 +388,7 @@ mod tests {
         assert_on_polyline(&mesh, &chain, &out.mesh, new_chain);
         let p = out.mesh.positions();
         for (a, b) in chain_edges(new_chain) {
-            let length = p[a as usize].distance(p[b as usize]);
+            let length = p[a.index()].distance(p[b.index()]);
             assert!(length <= 4.0 / 3.0 * target_edge, "chain edge of {length}");
         }
     }
@@ -393,7 +397,7 @@ mod tests {
     fn crossing_chains_keep_their_junction_and_ends() {
         let n = 12;
         let mesh = primitives::grid(n, n, 1.0);
-        let index = |i: usize, j: usize| (i + j * (n + 1)) as u32;
+        let index = |i: usize, j: usize| VertexId((i + j * (n + 1)) as u32);
         let row = Chain {
             vertices: (0..=n).map(|i| index(i, n / 2)).collect(),
             closed: false,
@@ -411,8 +415,8 @@ mod tests {
             };
             let out = remesh(&mesh, &chains, &params).unwrap();
             assert_same_topology(&mesh, &out.mesh, "grid");
-            let p = |v: u32| out.mesh.positions()[v as usize];
-            let centre = mesh.positions()[index(n / 2, n / 2) as usize];
+            let p = |v: VertexId| out.mesh.position(v);
+            let centre = mesh.positions()[index(n / 2, n / 2).index()];
             let at_centre = |c: &Chain| c.vertices.iter().filter(|&&v| p(v) == centre).count();
             for (input, chain) in chains.iter().zip(&out.chains) {
                 assert!(!chain.closed);
@@ -420,7 +424,7 @@ mod tests {
                 assert_on_polyline(&mesh, input, &out.mesh, chain);
                 assert_eq!(at_centre(chain), 1, "scale {scale}: junction lost");
                 let ends =
-                    [input.vertices[0], input.vertices[n]].map(|v| mesh.positions()[v as usize]);
+                    [input.vertices[0], input.vertices[n]].map(|v| mesh.positions()[v.index()]);
                 let new_ends = [chain.vertices[0], *chain.vertices.last().unwrap()].map(p);
                 assert_eq!(ends, new_ends, "scale {scale}: an end moved");
             }
@@ -519,10 +523,11 @@ mod tests {
         let mesh = primitives::icosphere(1.0, 1);
         let params = RemeshParams::keep_resolution(&mesh);
         let far = (1..mesh.n_vertices() as u32)
-            .find(|&v| !mesh.vertex_neighbors(VertexId(0)).any(|w| w.0 == v))
+            .map(VertexId)
+            .find(|&v| mesh.find_edge(VertexId(0), v).is_none())
             .unwrap();
         let jump = Chain {
-            vertices: vec![0, far],
+            vertices: vec![VertexId(0), far],
             closed: false,
         };
         assert_eq!(
@@ -530,11 +535,11 @@ mod tests {
             RemeshError::NotAnEdgeChain {
                 chain: 0,
                 a: 0,
-                b: far
+                b: far.0
             }
         );
         let missing = Chain {
-            vertices: vec![0, 1000],
+            vertices: vec![VertexId(0), VertexId(1000)],
             closed: false,
         };
         assert!(matches!(
@@ -542,7 +547,10 @@ mod tests {
             Err(RemeshError::VertexOutOfRange { vertex: 1000, .. })
         ));
         let short = Chain {
-            vertices: vec![0, mesh.vertex_neighbors(VertexId(0)).next().unwrap().0],
+            vertices: vec![
+                VertexId(0),
+                mesh.vertex_neighbors(VertexId(0)).next().unwrap(),
+            ],
             closed: true,
         };
         let error = remesh(&mesh, &[short], &params).unwrap_err();

@@ -17,7 +17,7 @@
 use std::collections::{HashSet, VecDeque};
 
 use super::build::for_each_edge;
-use super::{Mesh, MeshError, TriSoup};
+use super::{FaceId, Mesh, MeshError, TriSoup, VertexId};
 
 const NONE: u32 = u32::MAX;
 
@@ -30,10 +30,10 @@ pub struct Repaired {
     /// The manifold mesh.
     pub mesh: Mesh,
     /// For each mesh vertex, the soup vertex whose position it has.
-    pub vertex_source: Vec<u32>,
+    pub vertex_source: Vec<VertexId>,
     /// For each mesh face, the soup triangle it came from and whether its winding was
     /// reversed (corners 1 and 2 swapped).
-    pub face_source: Vec<(u32, bool)>,
+    pub face_source: Vec<(FaceId, bool)>,
     /// What was changed.
     pub report: RepairReport,
 }
@@ -87,16 +87,16 @@ pub fn make_manifold(soup: &TriSoup) -> Result<Repaired, MeshError> {
         let new_from_old = out.remove_unreferenced_vertices();
         let error = match Mesh::from_soup(&out) {
             Ok(mesh) => {
-                let mut kept_source = vec![0; mesh.n_vertices()];
+                let mut kept_source = vec![VertexId(0); mesh.n_vertices()];
                 for (old, new) in new_from_old.iter().enumerate() {
                     if let Some(new) = new {
-                        kept_source[*new as usize] = vertex_source[old];
+                        kept_source[*new as usize] = VertexId(vertex_source[old]);
                     }
                 }
                 return Ok(Repaired {
                     mesh,
                     vertex_source: kept_source,
-                    face_source: faces.into_iter().zip(flipped).collect(),
+                    face_source: faces.into_iter().map(FaceId).zip(flipped).collect(),
                     report,
                 });
             }
@@ -316,7 +316,7 @@ mod tests {
                 .face_source
                 .iter()
                 .enumerate()
-                .all(|(f, &(s, flipped))| s == f as u32 && !flipped)
+                .all(|(f, &(s, flipped))| s.index() == f && !flipped)
         );
     }
 
@@ -357,15 +357,15 @@ mod tests {
         for (v, &source) in repaired.vertex_source.iter().enumerate() {
             assert_eq!(
                 repaired.mesh.positions()[v],
-                broken.positions[source as usize]
+                broken.positions[source.index()]
             );
         }
         for (f, &(source, flipped)) in repaired.face_source.iter().enumerate() {
-            let mut original = broken.triangles[source as usize];
+            let mut original = broken.triangles[source.index()];
             if flipped {
                 original.swap(1, 2);
             }
-            let now = repaired.mesh.triangles()[f].map(|v| repaired.vertex_source[v as usize]);
+            let now = repaired.mesh.triangles()[f].map(|v| repaired.vertex_source[v as usize].0);
             assert_eq!(now, original);
         }
     }

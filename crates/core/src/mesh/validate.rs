@@ -42,16 +42,35 @@ impl Mesh {
         Ok(())
     }
 
+    /// Live triangles are in range and have distinct corners; tombstones are whole, and
+    /// there are as many as counted.
     fn validate_triangles(&self) -> Result<(), MeshError> {
-        super::build::check_triangles(&self.triangles, self.n_vertices())
+        let (live, dead): (Vec<[u32; 3]>, Vec<[u32; 3]>) =
+            self.triangles.iter().partition(|t| t[0] != INVALID);
+        super::build::check_triangles(&live, self.n_vertices())?;
+        if dead.iter().any(|t| t.iter().any(|&v| v != INVALID)) {
+            return Err(broken(String::from("a deleted face keeps a corner.")));
+        }
+        if dead.len() != self.n_dead_faces as usize {
+            return Err(broken(format!(
+                "{} faces are deleted but {} are counted.",
+                dead.len(),
+                self.n_dead_faces
+            )));
+        }
+        Ok(())
     }
 
     /// Twins pair opposite half-edges, and no directed edge occurs twice.
     fn validate_twins(&self) -> Result<(), MeshError> {
         let n_halfedges = self.n_halfedges() as u32;
+        let is_live = |h: super::HalfedgeId| self.is_live_face(self.face(h));
         for h in (0..n_halfedges).map(super::HalfedgeId) {
             let Some(t) = self.twin(h) else { continue };
-            if t.0 >= n_halfedges || t == h {
+            if !is_live(h) {
+                return Err(broken(format!("deleted half-edge {} has a twin.", h.0)));
+            }
+            if t.0 >= n_halfedges || t == h || !is_live(t) {
                 return Err(broken(format!(
                     "half-edge {} has twin {}, which is not valid.",
                     h.0, t.0
@@ -72,6 +91,7 @@ impl Mesh {
         }
         let mut directed: Vec<(u32, u32)> = (0..n_halfedges)
             .map(super::HalfedgeId)
+            .filter(|&h| is_live(h))
             .map(|h| (self.tail(h).0, self.head(h).0))
             .collect();
         directed.sort_unstable();
@@ -90,11 +110,19 @@ impl Mesh {
         let mut n_outgoing = vec![0usize; self.n_vertices()];
         let mut is_boundary = vec![false; self.n_vertices()];
         for (h, &v) in self.triangles.as_flattened().iter().enumerate() {
-            n_outgoing[v as usize] += 1;
-            is_boundary[v as usize] |= self.twin[h] == INVALID;
+            if v != INVALID {
+                n_outgoing[v as usize] += 1;
+                is_boundary[v as usize] |= self.twin[h] == INVALID;
+            }
         }
+        let mut n_dead = 0;
         for v in self.vertices() {
             let h = self.vertex_halfedge[v.index()];
+            if h == INVALID && n_outgoing[v.index()] == 0 && n_dead < self.n_dead_vertices {
+                // A tombstone: deleted with its last face.
+                n_dead += 1;
+                continue;
+            }
             if h == INVALID {
                 return Err(MeshError::IsolatedVertex { vertex: v.0 });
             }
@@ -113,6 +141,12 @@ impl Mesh {
             if self.outgoing_halfedges(v).count() != n_outgoing[v.index()] {
                 return Err(MeshError::NonManifoldVertex { vertex: v.0 });
             }
+        }
+        if n_dead != self.n_dead_vertices {
+            return Err(broken(format!(
+                "{n_dead} vertices are deleted but {} are counted.",
+                self.n_dead_vertices
+            )));
         }
         Ok(())
     }

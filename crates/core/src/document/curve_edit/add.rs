@@ -49,7 +49,7 @@ pub fn add_curve_op(doc: &Document, input: &AddCurveInput) -> Result<(usize, Mod
         }
     }
     curves.push(ControlCurve {
-        vertices: embedded.chain.iter().map(|&v| VertexId(v)).collect(),
+        vertices: embedded.chain.clone(),
         is_closed: embedded.closed,
         kind: CurveKind::Smooth,
     });
@@ -63,7 +63,7 @@ pub fn add_curve_op(doc: &Document, input: &AddCurveInput) -> Result<(usize, Mod
 
 /// Inserts `new` between consecutive vertices `a` and `b` of `curve` (either order,
 /// including the closing edge), where an embedding split that curve edge.
-fn insert_on_edge(curve: &mut ControlCurve, a: u32, b: u32, new: u32) {
+fn insert_on_edge(curve: &mut ControlCurve, a: VertexId, b: VertexId, new: VertexId) {
     let n = curve.vertices.len();
     let n_edges = if curve.is_closed {
         n
@@ -71,11 +71,11 @@ fn insert_on_edge(curve: &mut ControlCurve, a: u32, b: u32, new: u32) {
         n.saturating_sub(1)
     };
     let is_edge = |k: usize| {
-        let (p, q) = (curve.vertices[k].0, curve.vertices[(k + 1) % n].0);
+        let (p, q) = (curve.vertices[k], curve.vertices[(k + 1) % n]);
         (p, q) == (a, b) || (p, q) == (b, a)
     };
     if let Some(k) = (0..n_edges).find(|&k| is_edge(k)) {
-        curve.vertices.insert(k + 1, VertexId(new));
+        curve.vertices.insert(k + 1, new);
     }
 }
 

@@ -8,7 +8,7 @@ use super::shared::{CURVE_PICK_RADIUS_PX, bounding_diagonal, has_curves, replace
 use crate::document::{CommandError, CurveTypeInput, Document, StrokeInput};
 use crate::fibermesh::curve_tools::{StrokeHits, erase, hit_curves, rub, set_kind};
 use crate::fibermesh::{ControlCurve, CurveKind};
-use crate::mesh::Mesh;
+use crate::mesh::{Mesh, VertexId};
 use crate::model::Model;
 
 /// How far from an erased curve (as a fraction of the model's bounding-box diagonal) the
@@ -86,7 +86,7 @@ pub fn rub_op(doc: &Document, input: &StrokeInput) -> Result<(usize, Model), Com
 }
 
 /// The surface within `fraction` of `mesh`'s size from the curve vertices `around`.
-fn changed_near<'a>(mesh: &Mesh, around: &'a [u32], fraction: f64) -> Change<'a> {
+fn changed_near<'a>(mesh: &Mesh, around: &'a [VertexId], fraction: f64) -> Change<'a> {
     Change {
         around,
         radius: fraction * bounding_diagonal(mesh),

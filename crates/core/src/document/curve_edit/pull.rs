@@ -24,6 +24,7 @@ use crate::camera::Camera;
 use crate::document::{CommandError, Document, Model, StrokeInput};
 use crate::fibermesh::curve_pull::{CurveNetwork, CurvePull, PullParams};
 use crate::fibermesh::{ControlCurve, FairSurface, nearest_vertices, region_around};
+use crate::mesh::VertexId;
 
 /// The region solved while dragging reaches this many peel radii from the grabbed point.
 const REGION_PER_PEEL: f64 = 2.5;
@@ -63,10 +64,10 @@ pub fn pull_op(doc: &Document, input: &StrokeInput) -> Result<(usize, Model), Co
     let peel = pull.pull_to(target, &mut nodes)?;
     let mut mesh = model.mesh.clone();
     for (&v, &p) in node_vertices.iter().zip(&nodes) {
-        mesh.positions_mut()[v as usize] = p;
+        mesh.positions_mut()[v.index()] = p;
     }
     let change = Change {
-        around: &[pick.vertex.0],
+        around: &[pick.vertex],
         radius: region_radius(&model.mesh, peel.radius),
     };
     settle(&mut mesh, curves, model.mesh.positions(), change, false)?;
@@ -83,10 +84,10 @@ pub(in crate::document) struct PullPreview {
     model: Arc<Model>,
     curves: Vec<ControlCurve>,
     grabbed: DVec3,
-    grabbed_vertex: u32,
+    grabbed_vertex: VertexId,
     pull: CurvePull,
     /// The mesh vertex of each node of the curve network.
-    node_vertices: Vec<u32>,
+    node_vertices: Vec<VertexId>,
     nodes: Vec<DVec3>,
     positions: Vec<DVec3>,
     /// The surface of the preview region; `None` until the first step factors it.
@@ -118,7 +119,7 @@ impl PullPreview {
             },
             model_index: pick.model,
             grabbed: model.mesh.position(pick.vertex),
-            grabbed_vertex: pick.vertex.0,
+            grabbed_vertex: pick.vertex,
             curves,
             nodes: vec![DVec3::ZERO; node_vertices.len()],
             positions: model.mesh.positions().to_vec(),
@@ -166,7 +167,7 @@ impl PullPreview {
             self.reach = reach;
         }
         for (&v, &p) in self.node_vertices.iter().zip(&self.nodes) {
-            self.positions[v as usize] = p;
+            self.positions[v.index()] = p;
         }
         for _ in 0..ITERATIONS_PER_FRAME {
             surface
@@ -195,19 +196,14 @@ fn curve_pull(
     model: &Model,
     curves: &[ControlCurve],
     pick: CurvePick,
-) -> Result<(CurvePull, Vec<u32>), CommandError> {
-    let chains: Vec<Vec<u32>> = curves
+) -> Result<(CurvePull, Vec<VertexId>), CommandError> {
+    let chains: Vec<(&[VertexId], bool)> = curves
         .iter()
-        .map(|c| c.vertices.iter().map(|v| v.0).collect())
+        .map(|curve| (curve.vertices.as_slice(), curve.is_closed))
         .collect();
-    let chain_refs: Vec<(&[u32], bool)> = chains
-        .iter()
-        .zip(curves)
-        .map(|(chain, curve)| (chain.as_slice(), curve.is_closed))
-        .collect();
-    let network = CurveNetwork::new(model.mesh.positions(), &chain_refs);
+    let network = CurveNetwork::new(model.mesh.positions(), &chains);
     let node = network
-        .node_of(pick.vertex.0)
+        .node_of(pick.vertex)
         .ok_or(CommandError::NoCurveHere)?;
     let node_vertices = (0..network.n_nodes())
         .map(|node| network.mesh_vertex(node))

@@ -29,7 +29,7 @@ const ITERATIONS_AFTER_REMESH: usize = 4;
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Change<'a> {
     /// Mesh vertices of the curve parts the op changed.
-    pub around: &'a [u32],
+    pub around: &'a [VertexId],
     /// How far from them the surface may move.
     pub radius: f64,
 }
@@ -99,7 +99,7 @@ pub(super) fn remesh_and_settle(
     let chains: Vec<Chain> = curves
         .iter()
         .map(|c| Chain {
-            vertices: c.vertices.iter().map(|v| v.0).collect(),
+            vertices: c.vertices.clone(),
             closed: c.is_closed,
         })
         .collect();
@@ -109,7 +109,7 @@ pub(super) fn remesh_and_settle(
         .iter()
         .zip(remeshed.chains)
         .map(|(curve, chain)| ControlCurve {
-            vertices: chain.vertices.into_iter().map(VertexId).collect(),
+            vertices: chain.vertices,
             is_closed: curve.is_closed,
             kind: curve.kind,
         })

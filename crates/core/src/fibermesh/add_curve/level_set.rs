@@ -10,8 +10,9 @@
 use glam::{DVec2, DVec3};
 use rustc_hash::FxHashSet;
 
-use super::tri_list::{TriList, rotated};
+use super::embedding::Embedding;
 use crate::camera::Camera;
+use crate::mesh::{HalfedgeId, Mesh, VertexId};
 
 /// Zero crossings this close to an edge's end (fraction of the edge) put the curve through
 /// that vertex instead, which avoids slivers.
@@ -63,30 +64,31 @@ fn signed_distance(polyline: &[DVec2], p: DVec2) -> f64 {
 /// of the points `near` (the stroke's hits on the visible surface), or `None` if the zero
 /// set holds no closed loop.
 pub(super) fn cross_section(
-    tri: &mut TriList,
+    embedding: &mut Embedding,
     distances: &[f64],
     near: &[DVec3],
-) -> Option<Vec<u32>> {
+) -> Option<Vec<VertexId>> {
     let mut value = distances.to_vec();
-    snap_near_zero(tri, &mut value);
-    for (a, b) in undirected_edges(tri) {
-        let (fa, fb) = (value[a as usize], value[b as usize]);
+    snap_near_zero(&embedding.mesh, &mut value);
+    for (a, b) in undirected_edges(&embedding.mesh) {
+        let (fa, fb) = (value[a.index()], value[b.index()]);
         if fa * fb < 0.0 {
-            tri.split_edge(a, b, fa / (fa - fb));
+            embedding.split_edge(a, b, fa / (fa - fb))?;
             value.push(0.0);
         }
     }
-    let is_positive: Vec<bool> = tri
+    let mesh = &embedding.mesh;
+    let is_positive: Vec<bool> = mesh
         .triangles()
         .iter()
         .map(|t| is_positive_face(t, &value, distances))
         .collect();
-    let loops = boundary_loops(tri, &is_positive);
-    let gap = |curve: &Vec<u32>| {
+    let loops = boundary_loops(mesh, &is_positive);
+    let gap = |curve: &Vec<VertexId>| {
         let mut gap = f64::INFINITY;
         for &v in curve {
             for &p in near {
-                gap = gap.min(tri.positions[v as usize].distance_squared(p));
+                gap = gap.min(mesh.position(v).distance_squared(p));
             }
         }
         gap
@@ -98,25 +100,22 @@ pub(super) fn cross_section(
         .map(|(_, curve)| curve)
 }
 
-/// Each edge once, as `(a, b)` with `a < b` or as a boundary edge.
-fn undirected_edges(tri: &TriList) -> Vec<(u32, u32)> {
-    let mut edges = Vec::with_capacity(3 * tri.triangles().len() / 2);
-    for &[a, b, c] in tri.triangles() {
-        for (p, q) in [(a, b), (b, c), (c, a)] {
-            if p < q || tri.face_of_edge(q, p).is_none() {
-                edges.push((p, q));
-            }
-        }
-    }
-    edges
+/// Each edge once, as `(a, b)` with `a < b` or as a boundary edge, in face order.
+fn undirected_edges(mesh: &Mesh) -> Vec<(VertexId, VertexId)> {
+    (0..mesh.n_halfedges() as u32)
+        .map(HalfedgeId)
+        .map(|h| (h, mesh.tail(h), mesh.head(h)))
+        .filter(|&(h, a, b)| a < b || mesh.twin(h).is_none())
+        .map(|(_, a, b)| (a, b))
+        .collect()
 }
 
 /// Puts the curve through a vertex (value 0) where a zero crossing lies within
 /// [`SNAP_CROSSING`] of it.
-fn snap_near_zero(tri: &TriList, value: &mut [f64]) {
+fn snap_near_zero(mesh: &Mesh, value: &mut [f64]) {
     let mut on_curve = Vec::new();
-    for (a, b) in undirected_edges(tri) {
-        let (fa, fb) = (value[a as usize], value[b as usize]);
+    for (a, b) in undirected_edges(mesh) {
+        let (fa, fb) = (value[a.index()], value[b.index()]);
         if fa * fb < 0.0 {
             let t = fa / (fa - fb);
             if t < SNAP_CROSSING {
@@ -127,7 +126,7 @@ fn snap_near_zero(tri: &TriList, value: &mut [f64]) {
         }
     }
     for v in on_curve {
-        value[v as usize] = 0.0;
+        value[v.index()] = 0.0;
     }
 }
 
@@ -148,24 +147,18 @@ fn is_positive_face(t: &[u32; 3], value: &[f64], unsnapped: &[f64]) -> bool {
 }
 
 /// The closed loops of half-edges with a positive face on their left and a negative one on
-/// their right; a loop that runs into the mesh boundary is dropped.
-fn boundary_loops(tri: &TriList, is_positive: &[bool]) -> Vec<Vec<u32>> {
-    let is_cut = |u: u32, v: u32| -> bool {
-        let (Some(left), Some(right)) = (tri.face_of_edge(u, v), tri.face_of_edge(v, u)) else {
-            return false;
-        };
-        is_positive[left as usize] && !is_positive[right as usize]
+/// their right, as vertex cycles; a loop that runs into the mesh boundary is dropped.
+fn boundary_loops(mesh: &Mesh, is_positive: &[bool]) -> Vec<Vec<VertexId>> {
+    let is_cut = |h: HalfedgeId| {
+        is_positive[mesh.face(h).index()]
+            && mesh
+                .twin(h)
+                .is_some_and(|t| !is_positive[mesh.face(t).index()])
     };
-    let mut starts = Vec::new();
-    for (f, &[a, b, c]) in tri.triangles().iter().enumerate() {
-        if is_positive[f] {
-            starts.extend(
-                [(a, b), (b, c), (c, a)]
-                    .into_iter()
-                    .filter(|&(u, v)| is_cut(u, v)),
-            );
-        }
-    }
+    let starts: Vec<HalfedgeId> = (0..mesh.n_halfedges() as u32)
+        .map(HalfedgeId)
+        .filter(|&h| is_cut(h))
+        .collect();
     let mut visited = FxHashSet::default();
     let mut loops = Vec::new();
     for &first in &starts {
@@ -176,8 +169,8 @@ fn boundary_loops(tri: &TriList, is_positive: &[bool]) -> Vec<Vec<u32>> {
         let mut h = first;
         let is_closed = loop {
             visited.insert(h);
-            curve.push(h.0);
-            let Some(next) = next_cut(tri, h, is_positive) else {
+            curve.push(mesh.tail(h));
+            let Some(next) = next_cut(mesh, h, is_positive) else {
                 break false;
             };
             if next == first {
@@ -195,18 +188,17 @@ fn boundary_loops(tri: &TriList, is_positive: &[bool]) -> Vec<Vec<u32>> {
     loops
 }
 
-/// The cut half-edge that follows `(u, v)`: turning around `v` through positive faces
+/// The cut half-edge that follows `h`: turning around its head through positive faces
 /// until the face across is negative. `None` at the mesh boundary.
-fn next_cut(tri: &TriList, (mut u, v): (u32, u32), is_positive: &[bool]) -> Option<(u32, u32)> {
+fn next_cut(mesh: &Mesh, mut h: HalfedgeId, is_positive: &[bool]) -> Option<HalfedgeId> {
     // A vertex has fewer faces than there are faces in all.
-    for _ in 0..tri.triangles().len() {
-        let face = tri.face_of_edge(u, v)?;
-        let [_, _, w] = rotated(tri.triangle(face), u);
-        let across = tri.face_of_edge(w, v)?;
-        if !is_positive[across as usize] {
-            return Some((v, w));
+    for _ in 0..mesh.n_faces() {
+        let g = mesh.next(h);
+        let across = mesh.twin(g)?;
+        if !is_positive[mesh.face(across).index()] {
+            return Some(g);
         }
-        u = w;
+        h = across;
     }
     None
 }

@@ -27,7 +27,7 @@ pub(super) struct SurfacePoint {
     /// The point on the surface.
     pub point: DVec3,
     /// The input triangle it lies in.
-    pub face: u32,
+    pub face: FaceId,
     /// Its barycentric coordinates in that triangle.
     pub barycentric: DVec3,
     /// The unit view ray direction through the sample.
@@ -49,7 +49,7 @@ impl Projector<'_> {
         let hit = self.bvh.raycast(self.mesh, origin, ray_dir)?;
         Some(SurfacePoint {
             point: origin + ray_dir * hit.distance,
-            face: hit.face.0,
+            face: hit.face,
             barycentric: hit.barycentric,
             ray_dir,
         })
@@ -93,16 +93,16 @@ impl Projector<'_> {
     }
 
     /// The mean edge length of an input triangle in world units.
-    fn edge_length(&self, face: u32) -> f64 {
-        let [a, b, c] = self.mesh.face_positions(FaceId(face));
+    fn edge_length(&self, face: FaceId) -> f64 {
+        let [a, b, c] = self.mesh.face_positions(face);
         (a.distance(b) + b.distance(c) + c.distance(a)) / 3.0
     }
 
     /// The mean edge length of an input triangle on the screen, in px (at least 1).
-    fn edge_length_on_screen(&self, face: u32) -> f64 {
+    fn edge_length_on_screen(&self, face: FaceId) -> f64 {
         let corners = self
             .mesh
-            .face_positions(FaceId(face))
+            .face_positions(face)
             .map(|p| self.camera.screen_from_world(p, self.viewport));
         let [Some(a), Some(b), Some(c)] = corners else {
             return 1.0;

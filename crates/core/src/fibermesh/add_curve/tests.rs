@@ -50,19 +50,20 @@ fn chord_sag(mesh: &Mesh) -> f64 {
         .fold(0.0, f64::max)
 }
 
-fn is_edge(mesh: &Mesh, a: u32, b: u32) -> bool {
-    mesh.vertex_neighbors(VertexId(a)).any(|v| v.0 == b)
-}
-
-fn assert_edge_chain(mesh: &Mesh, chain: &[u32], closed: bool) {
+fn assert_edge_chain(mesh: &Mesh, chain: &[VertexId], closed: bool) {
     for w in chain.windows(2) {
-        assert!(is_edge(mesh, w[0], w[1]), "{} – {} is no edge", w[0], w[1]);
+        assert!(
+            mesh.find_edge(w[0], w[1]).is_some(),
+            "{:?} – {:?} is no edge",
+            w[0],
+            w[1]
+        );
     }
     if closed {
         let (first, last) = (chain[0], chain[chain.len() - 1]);
         assert!(
-            is_edge(mesh, last, first),
-            "closing {last} – {first} is no edge"
+            mesh.find_edge(last, first).is_some(),
+            "closing {last:?} – {first:?} is no edge"
         );
     }
 }
@@ -78,7 +79,7 @@ fn assert_valid(input: &Mesh, embedded: &Embedded) {
     assert_eq!(&mesh.positions()[..n], input.positions());
     assert_edge_chain(mesh, &embedded.chain, embedded.closed);
     for (k, &(a, b, new)) in embedded.split_edges.iter().enumerate() {
-        assert!(a < new && b < new && new as usize >= n, "split {k}");
+        assert!(a < new && b < new && new.index() >= n, "split {k}");
     }
     for f in mesh.faces() {
         let [a, b, c] = mesh.face_positions(f);
@@ -115,7 +116,7 @@ fn open_stroke_across_the_front_follows_it() {
     let positions = embedded.mesh.positions();
     let on_screen: Vec<DVec2> = chain
         .iter()
-        .map(|&v| screen(positions[v as usize]))
+        .map(|&v| screen(positions[v.index()]))
         .collect();
     // The ends snap within a tenth of an edge (about 1.2 px here); the rest lie on the
     // swept planes, up to the snapping of crossings.
@@ -128,7 +129,7 @@ fn open_stroke_across_the_front_follows_it() {
         let gap = distance_to_polyline(s, &stroke);
         assert!(gap < tolerance, "vertex {k} is {gap} px off the stroke");
         assert!(
-            positions[chain[k] as usize].z > 0.0,
+            positions[chain[k].index()].z > 0.0,
             "vertex {k} is on the back"
         );
     }
@@ -146,19 +147,19 @@ fn open_stroke_leaving_the_shape_is_clipped() {
     let embedded = embed(&input, &stroke, CurveShape::Open).unwrap();
     assert_embedding(&input, &embedded);
     let positions = embedded.mesh.positions();
-    let last = positions[*embedded.chain.last().unwrap() as usize];
+    let last = positions[(*embedded.chain.last().unwrap()).index()];
     // It ends near the silhouette, where the visible surface ends.
     assert!(last.x > 0.9, "ends at {last}");
     assert!(screen(last).x < 560.0);
     for &v in &embedded.chain {
-        let s = screen(positions[v as usize]);
+        let s = screen(positions[v.index()]);
         assert!(distance_to_polyline(s, &stroke) < 2.0);
     }
     // Drawn the other way, the curve starts at the silhouette.
     let reversed: Vec<DVec2> = stroke.iter().rev().copied().collect();
     let embedded = embed(&input, &reversed, CurveShape::Open).unwrap();
     assert_embedding(&input, &embedded);
-    let first = embedded.mesh.positions()[embedded.chain[0] as usize];
+    let first = embedded.mesh.positions()[embedded.chain[0].index()];
     assert!(first.x > 0.9, "starts at {first}");
 }
 
@@ -179,7 +180,7 @@ fn closed_loop_on_the_front() {
     let positions = embedded.mesh.positions();
     for (k, &v) in embedded.chain.iter().enumerate() {
         let tolerance = if k == 0 { 2.0 } else { 0.5 };
-        let gap = distance_to_polyline(screen(positions[v as usize]), &looped);
+        let gap = distance_to_polyline(screen(positions[v.index()]), &looped);
         assert!(gap < tolerance, "vertex {k} is {gap} px off the stroke");
     }
     assert!(embedded.chain.len() > 30);
@@ -198,7 +199,7 @@ fn cross_section_goes_around_the_back() {
     // The rays through a horizontal line through the centre sweep the plane y = 0.
     let mut behind = 0;
     for &v in &embedded.chain {
-        let p = positions[v as usize];
+        let p = positions[v.index()];
         assert!(p.y.abs() < 0.01, "{p} is off the plane");
         let depth = camera.screen_from_world(p, VIEWPORT).unwrap().z;
         behind += usize::from(depth > camera.distance());
@@ -212,7 +213,7 @@ fn cross_section_goes_around_the_back() {
     let length: f64 = (0..n)
         .map(|i| {
             let (a, b) = (embedded.chain[i], embedded.chain[(i + 1) % n]);
-            positions[a as usize].distance(positions[b as usize])
+            positions[a.index()].distance(positions[b.index()])
         })
         .sum();
     assert!(
@@ -231,7 +232,7 @@ fn slanted_cross_section_lies_under_its_stroke() {
     let normal = (b - a).perp().normalize();
     for &v in &embedded.chain {
         // About 12 px edges, snapped within 5%.
-        let off = normal.dot(screen(positions[v as usize]) - a).abs();
+        let off = normal.dot(screen(positions[v.index()]) - a).abs();
         assert!(off < 1.0, "{off} px off the stroke's line");
     }
 }
@@ -271,7 +272,7 @@ fn strokes_that_miss_or_do_not_cross_are_refused() {
 }
 
 /// A path of input edges over the front from near `from` to near `to`, chosen greedily.
-fn edge_path(mesh: &Mesh, from: DVec3, to: DVec3) -> Vec<u32> {
+fn edge_path(mesh: &Mesh, from: DVec3, to: DVec3) -> Vec<VertexId> {
     let nearest = |p: DVec3| {
         mesh.vertices()
             .min_by(|a, b| {
@@ -281,7 +282,7 @@ fn edge_path(mesh: &Mesh, from: DVec3, to: DVec3) -> Vec<u32> {
             .unwrap()
     };
     let (mut at, goal) = (nearest(from), nearest(to));
-    let mut path = vec![at.0];
+    let mut path = vec![at];
     while at != goal {
         at = mesh
             .vertex_neighbors(at)
@@ -293,15 +294,15 @@ fn edge_path(mesh: &Mesh, from: DVec3, to: DVec3) -> Vec<u32> {
                 da.total_cmp(&db)
             })
             .unwrap();
-        path.push(at.0);
+        path.push(at);
     }
     path
 }
 
 /// What callers do with `split_edges`: insert each new vertex into a curve edge it split.
-fn replay(curve: &mut Vec<u32>, splits: &[(u32, u32, u32)]) {
+fn replay(curve: &mut Vec<VertexId>, splits: &[(VertexId, VertexId, VertexId)]) {
     for &(a, b, new) in splits {
-        let is_split = |w: &[u32]| (w[0], w[1]) == (a, b) || (w[0], w[1]) == (b, a);
+        let is_split = |w: &[VertexId]| (w[0], w[1]) == (a, b) || (w[0], w[1]) == (b, a);
         if let Some(k) = curve.windows(2).position(is_split) {
             curve.insert(k + 1, new);
         }

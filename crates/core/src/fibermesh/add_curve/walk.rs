@@ -11,8 +11,9 @@
 use glam::DVec3;
 use rustc_hash::FxHashSet;
 
+use super::embedding::Embedding;
 use super::project::SurfacePoint;
-use super::tri_list::TriList;
+use crate::mesh::{FaceId, Mesh, VertexId};
 
 /// Crossings this close to an edge's end (fraction of the edge) snap onto that vertex,
 /// which avoids slivers and moves the curve off its plane by at most this fraction.
@@ -25,18 +26,18 @@ const MAX_STEPS_PER_SEGMENT: usize = 64;
 /// The curve's vertices in stroke order (for a closed curve, not repeating the first), or
 /// `None` if the walk lost its way (a stroke over a fold or a silhouette).
 pub(super) fn walk(
-    tri: &mut TriList,
+    embedding: &mut Embedding,
     samples: &[SurfacePoint],
     is_closed: bool,
-) -> Option<Vec<u32>> {
+) -> Option<Vec<VertexId>> {
     let first = samples.first()?;
     let n_segments = if is_closed {
         samples.len()
     } else {
         samples.len() - 1
     };
-    let start = tri.insert_point(first.face, first.barycentric, SNAP_END);
-    let start_point = tri.positions[start as usize];
+    let start = embedding.insert_point(first.face, first.barycentric, SNAP_END)?;
+    let start_point = embedding.mesh.position(start);
     // Where segment k ends; a closed curve's last segment ends on its first vertex.
     let end_of = |k: usize| samples.get(k + 1).map_or(start_point, |s| s.point);
     let cut_of = |k: usize| Cut::new(samples[k].point, end_of(k), samples[k].ray_dir);
@@ -44,40 +45,41 @@ pub(super) fn walk(
     let (mut at, mut k) = (start, 0);
     for _ in 0..MAX_STEPS_PER_SEGMENT * n_segments {
         let is_closing = is_closed && k + 1 == n_segments;
-        if is_closing && (at == start || tri.fan(at).iter().any(|&(_, [_, b, _])| b == start)) {
+        let mesh = &embedding.mesh;
+        if is_closing && (at == start || mesh.find_halfedge(at, start).is_some()) {
             return Some(chain.into_closed());
         }
         let mut cut = cut_of(k)?;
-        let mut from = tri.positions[at as usize];
-        let mut exit = exit_from_vertex(tri, at, &cut)?;
+        let mut from = mesh.position(at);
+        let mut exit = exit_from_vertex(mesh, at, &cut)?;
         // Segments ending before the exit end inside its triangle: turn there.
         while cut.progress(from, end_of(k)) < cut.progress(from, exit.point) {
             let end = end_of(k);
             if k + 1 == n_segments {
                 if !is_closed {
-                    let bary = barycentric(tri.triangle_positions(exit.face), end);
-                    chain.push(tri.insert_point(exit.face, bary, SNAP_END));
+                    let bary = barycentric(mesh.face_positions(exit.face), end);
+                    chain.push(embedding.insert_point(exit.face, bary, SNAP_END)?);
                     return Some(chain.vertices);
                 }
-                if tri.triangle(exit.face).contains(&start) {
+                if mesh.face_vertices(exit.face).contains(&start) {
                     return Some(chain.into_closed());
                 }
                 break;
             }
             k += 1;
             (cut, from) = (cut_of(k)?, end);
-            exit = match exit_from_point(tri, exit.face, from, &cut) {
+            exit = match exit_from_point(mesh, exit.face, from, &cut) {
                 Some(exit) => exit,
                 None => {
-                    from = tri.positions[at as usize];
-                    exit_from_vertex(tri, at, &cut)?
+                    from = mesh.position(at);
+                    exit_from_vertex(mesh, at, &cut)?
                 }
             };
         }
         at = match exit.crossing {
             Crossing::Vertex(v) => v,
             Crossing::Edge(a, b, t) => {
-                let m = tri.split_edge(a, b, t);
+                let m = embedding.split_edge(a, b, t)?;
                 chain.on_split(a, b, m);
                 m
             }
@@ -122,20 +124,20 @@ impl Cut {
 /// Where the walk leaves a triangle: through a vertex or across an edge at `a + t (b − a)`.
 #[derive(Clone, Copy, Debug)]
 enum Crossing {
-    Vertex(u32),
-    Edge(u32, u32, f64),
+    Vertex(VertexId),
+    Edge(VertexId, VertexId, f64),
 }
 
 #[derive(Clone, Copy, Debug)]
 struct Exit {
-    face: u32,
+    face: FaceId,
     crossing: Crossing,
     point: DVec3,
 }
 
 /// Where the cut crosses the edge `b`–`c`, snapped onto an end within [`SNAP_CROSSING`].
-fn edge_crossing(tri: &TriList, face: u32, b: u32, c: u32, cut: &Cut) -> Option<Exit> {
-    let (pb, pc) = (tri.positions[b as usize], tri.positions[c as usize]);
+fn edge_crossing(mesh: &Mesh, face: FaceId, b: VertexId, c: VertexId, cut: &Cut) -> Option<Exit> {
+    let (pb, pc) = (mesh.position(b), mesh.position(c));
     let (sb, sc) = (cut.side(pb), cut.side(pc));
     if sb == sc || (sb > 0.0) == (sc > 0.0) && sb != 0.0 && sc != 0.0 {
         return None;
@@ -157,15 +159,17 @@ fn edge_crossing(tri: &TriList, face: u32, b: u32, c: u32, cut: &Cut) -> Option<
 
 /// The next crossing from vertex `v`: on the far edges of its fan (treating `v` as on the
 /// cut), the one best aligned with the segment's direction.
-fn exit_from_vertex(tri: &TriList, v: u32, cut: &Cut) -> Option<Exit> {
-    let from = tri.positions[v as usize];
+fn exit_from_vertex(mesh: &Mesh, v: VertexId, cut: &Cut) -> Option<Exit> {
+    let from = mesh.position(v);
     let alignment = |exit: &Exit| {
         let offset = exit.point - from;
         cut.dir.dot(offset) / offset.length()
     };
-    tri.fan(v)
-        .into_iter()
-        .filter_map(|(face, [_, b, c])| edge_crossing(tri, face, b, c, cut))
+    mesh.outgoing_halfedges(v)
+        .filter_map(|h| {
+            let (b, c) = (mesh.head(h), mesh.opposite_vertex(h));
+            edge_crossing(mesh, mesh.face(h), b, c, cut)
+        })
         .map(|exit| (alignment(&exit), exit))
         .filter(|(alignment, _)| *alignment > 0.0)
         .max_by(|x, y| x.0.total_cmp(&y.0))
@@ -174,11 +178,11 @@ fn exit_from_vertex(tri: &TriList, v: u32, cut: &Cut) -> Option<Exit> {
 
 /// Where the cut leaves triangle `face` ahead of `from`, a point on the cut in (or just
 /// before) the triangle.
-fn exit_from_point(tri: &TriList, face: u32, from: DVec3, cut: &Cut) -> Option<Exit> {
-    let [a, b, c] = tri.triangle(face);
+fn exit_from_point(mesh: &Mesh, face: FaceId, from: DVec3, cut: &Cut) -> Option<Exit> {
+    let [a, b, c] = mesh.face_vertices(face);
     [(a, b), (b, c), (c, a)]
         .into_iter()
-        .filter_map(|(p, q)| edge_crossing(tri, face, p, q, cut))
+        .filter_map(|(p, q)| edge_crossing(mesh, face, p, q, cut))
         .map(|exit| (cut.progress(from, exit.point), exit))
         .filter(|(progress, _)| *progress > 0.0)
         .max_by(|x, y| x.0.total_cmp(&y.0))
@@ -199,16 +203,16 @@ fn barycentric([a, b, c]: [DVec3; 3], p: DVec3) -> DVec3 {
 /// The curve as it grows: its vertices and its edges, so that a later split of one of
 /// its own edges (a stroke crossing itself) inserts the new vertex into it.
 struct Chain {
-    vertices: Vec<u32>,
-    edges: FxHashSet<(u32, u32)>,
+    vertices: Vec<VertexId>,
+    edges: FxHashSet<(VertexId, VertexId)>,
 }
 
-fn edge_key(a: u32, b: u32) -> (u32, u32) {
+fn edge_key(a: VertexId, b: VertexId) -> (VertexId, VertexId) {
     (a.min(b), a.max(b))
 }
 
 impl Chain {
-    fn new(start: u32) -> Self {
+    fn new(start: VertexId) -> Self {
         Self {
             vertices: vec![start],
             edges: FxHashSet::default(),
@@ -216,7 +220,7 @@ impl Chain {
     }
 
     /// Appends `v` unless the walk stayed on the last vertex.
-    fn push(&mut self, v: u32) {
+    fn push(&mut self, v: VertexId) {
         let Some(&last) = self.vertices.last() else {
             return;
         };
@@ -227,11 +231,11 @@ impl Chain {
     }
 
     /// Puts `m` between `a` and `b` if they are consecutive on the chain.
-    fn on_split(&mut self, a: u32, b: u32, m: u32) {
+    fn on_split(&mut self, a: VertexId, b: VertexId, m: VertexId) {
         if !self.edges.remove(&edge_key(a, b)) {
             return;
         }
-        let is_edge = |w: &[u32]| edge_key(w[0], w[1]) == edge_key(a, b);
+        let is_edge = |w: &[VertexId]| edge_key(w[0], w[1]) == edge_key(a, b);
         if let Some(i) = self.vertices.windows(2).position(is_edge) {
             self.vertices.insert(i + 1, m);
             self.edges.extend([edge_key(a, m), edge_key(m, b)]);
@@ -239,7 +243,7 @@ impl Chain {
     }
 
     /// The vertices of a closed curve, without repeating the first at the end.
-    fn into_closed(mut self) -> Vec<u32> {
+    fn into_closed(mut self) -> Vec<VertexId> {
         if self.vertices.len() > 1 && self.vertices.first() == self.vertices.last() {
             self.vertices.pop();
         }

@@ -8,13 +8,13 @@
 
 use glam::DVec3;
 
-use crate::mesh::INVALID;
+use crate::mesh::{INVALID, Remap, VertexId};
 
 /// A chain of mesh vertices joined by mesh edges (a control curve); `closed` adds the edge last→first.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Chain {
     /// The vertices in curve order.
-    pub vertices: Vec<u32>,
+    pub vertices: Vec<VertexId>,
     /// Whether the last vertex joins the first.
     pub closed: bool,
 }
@@ -100,7 +100,7 @@ impl ChainNetwork {
             let points: Vec<DVec3> = chain
                 .vertices
                 .iter()
-                .map(|&v| positions[v as usize])
+                .map(|&v| positions[v.index()])
                 .collect();
             let mut arc = Vec::with_capacity(points.len());
             let mut length = 0.0;
@@ -115,7 +115,7 @@ impl ChainNetwork {
             }
             let first = network.nodes.len() as u32;
             for (i, &v) in chain.vertices.iter().enumerate() {
-                network.push_node(v, c as u32, arc[i]);
+                network.push_node(v.0, c as u32, arc[i]);
                 if i > 0 {
                     network.link(first + i as u32 - 1, first + i as u32);
                 }
@@ -276,8 +276,9 @@ impl ChainNetwork {
         }
     }
 
-    /// The chains over the compacted vertex indices of `new_from_old`.
-    pub(super) fn to_chains(&self, new_from_old: &[u32]) -> Vec<Chain> {
+    /// The chains over the compacted vertex ids of `remap` (a chain never keeps a vertex
+    /// that a collapse removed).
+    pub(super) fn to_chains(&self, remap: &Remap) -> Vec<Chain> {
         self.chains
             .iter()
             .map(|chain_state| {
@@ -285,7 +286,7 @@ impl ChainNetwork {
                 let mut n = chain_state.head;
                 while n != INVALID && vertices.len() < chain_state.n_nodes {
                     let node = &self.nodes[n as usize];
-                    vertices.push(new_from_old[node.vertex as usize]);
+                    vertices.extend(remap.vertex(VertexId(node.vertex)));
                     n = node.next;
                 }
                 Chain {

@@ -9,7 +9,7 @@ use std::collections::BinaryHeap;
 use glam::DVec3;
 
 use super::chains::{ChainNetwork, Role};
-use super::editable::EditableMesh;
+use crate::mesh::{HalfedgeId, Mesh, VertexId};
 
 /// Least cosine between a changed triangle's normal and its normal before the edit (60°):
 /// larger turns fold the surface or change its shape more than remeshing should.
@@ -103,7 +103,7 @@ struct LongEdge {
 
 /// The mesh, its chains and the edge length bounds of one remesh.
 pub(super) struct Remesher {
-    pub(super) mesh: EditableMesh,
+    pub(super) mesh: Mesh,
     pub(super) chains: ChainNetwork,
     /// Per vertex slot, whether remeshing may change it (its position, its edges); vertices
     /// made by splits are.
@@ -124,7 +124,7 @@ pub(super) struct Remesher {
 impl Remesher {
     /// A remesher changing only the vertices with `is_editable[v]` (one entry per vertex).
     pub(super) fn new(
-        mesh: EditableMesh,
+        mesh: Mesh,
         chains: ChainNetwork,
         target_edge: f64,
         is_editable: Vec<bool>,
@@ -142,24 +142,33 @@ impl Remesher {
         }
     }
 
+    /// Every half-edge slot, deleted ones included: a pass visits the ones it appends.
+    fn halfedges(&self) -> impl Iterator<Item = HalfedgeId> + use<> {
+        (0..self.mesh.n_halfedges() as u32).map(HalfedgeId)
+    }
+
+    fn is_live(&self, h: HalfedgeId) -> bool {
+        self.mesh.is_live_face(self.mesh.face(h))
+    }
+
     /// One Botsch–Kobbelt iteration.
     pub(super) fn iterate(&mut self) {
         self.split_long_edges();
-        debug_assert!(self.mesh.is_consistent(), "split broke the mesh");
+        debug_assert_eq!(self.mesh.validate(), Ok(()), "split broke the mesh");
         self.collapse_short_edges();
-        debug_assert!(self.mesh.is_consistent(), "collapse broke the mesh");
+        debug_assert_eq!(self.mesh.validate(), Ok(()), "collapse broke the mesh");
         self.equalize_valences();
-        debug_assert!(self.mesh.is_consistent(), "flip broke the mesh");
+        debug_assert_eq!(self.mesh.validate(), Ok(()), "flip broke the mesh");
         for _ in 0..RELAXATION_SWEEPS {
             self.relax_tangentially();
         }
     }
 
-    fn are_editable(&self, vertices: &[u32]) -> bool {
-        vertices.iter().all(|&v| self.is_editable[v as usize])
+    fn are_editable(&self, vertices: &[VertexId]) -> bool {
+        vertices.iter().all(|&v| self.is_editable[v.index()])
     }
 
-    fn edge_length_sq(&self, h: u32) -> f64 {
+    fn edge_length_sq(&self, h: HalfedgeId) -> f64 {
         let m = &self.mesh;
         m.position(m.tail(h))
             .distance_squared(m.position(m.head(h)))
@@ -174,32 +183,34 @@ impl Remesher {
     fn split_long_edges(&mut self) {
         let mut queue = std::mem::take(&mut self.long_edges);
         queue.clear();
-        for h in 0..self.mesh.n_halfedge_slots() {
+        for h in self.halfedges() {
             let is_first = self.mesh.twin(h).is_none_or(|t| h < t);
-            if self.mesh.is_live_halfedge(h) && is_first {
+            if self.is_live(h) && is_first {
                 self.queue_if_long(&mut queue, self.mesh.tail(h), self.mesh.head(h));
             }
         }
         while let Some(LongEdge { a, b, .. }) = queue.pop() {
             // Other splits may have replaced the edge; its length cannot have changed.
-            let Some(h) = self.mesh.find_halfedge(a, b) else {
+            let (a, b) = (VertexId(a), VertexId(b));
+            let Some(h) = self.mesh.find_edge(a, b) else {
                 continue;
             };
             let p = self
                 .chains
-                .split_point(a, b)
+                .split_point(a.0, b.0)
                 .unwrap_or_else(|| self.mesh.position(a).midpoint(self.mesh.position(b)));
-            let m = self.mesh.split(h, p);
-            debug_assert_eq!(m as usize, self.is_editable.len());
+            let m = self.mesh.split_edge(h, p);
+            debug_assert_eq!(m.index(), self.is_editable.len());
             self.is_editable.push(true);
-            self.chains.insert_split(a, b, m);
-            self.mesh
-                .for_each_neighbor(m, |w| self.queue_if_long(&mut queue, m, w));
+            self.chains.insert_split(a.0, b.0, m.0);
+            for w in self.mesh.vertex_neighbors(m) {
+                self.queue_if_long(&mut queue, m, w);
+            }
         }
         self.long_edges = queue;
     }
 
-    fn queue_if_long(&self, queue: &mut BinaryHeap<LongEdge>, a: u32, b: u32) {
+    fn queue_if_long(&self, queue: &mut BinaryHeap<LongEdge>, a: VertexId, b: VertexId) {
         if !self.are_editable(&[a, b]) {
             return;
         }
@@ -211,8 +222,8 @@ impl Remesher {
             // Non-negative floats order as their bit patterns do.
             queue.push(LongEdge {
                 length_sq_bits: length_sq.to_bits(),
-                a,
-                b,
+                a: a.0,
+                b: b.0,
             });
         }
     }
@@ -220,9 +231,9 @@ impl Remesher {
     /// Collapses edges shorter than `4/5 L` where the chains, the boundary, the topology and
     /// the geometry allow it; the removed vertex goes, the kept one stays put.
     fn collapse_short_edges(&mut self) {
-        self.marks.resize(self.mesh.n_vertex_slots() as usize, 0);
-        for h in 0..self.mesh.n_halfedge_slots() {
-            if !self.mesh.is_live_halfedge(h) || self.edge_length_sq(h) >= self.low_sq {
+        self.marks.resize(self.mesh.n_vertices(), 0);
+        for h in self.halfedges() {
+            if !self.is_live(h) || self.edge_length_sq(h) >= self.low_sq {
                 continue;
             }
             let (u, v) = (self.mesh.tail(h), self.mesh.head(h));
@@ -230,14 +241,14 @@ impl Remesher {
                 continue;
             }
             // Prefer removing a free vertex: it carries no constraint.
-            let order = if self.chains.is_on_chain(u) && !self.chains.is_on_chain(v) {
+            let order = if self.chains.is_on_chain(u.0) && !self.chains.is_on_chain(v.0) {
                 [(v, u), (u, v)]
             } else {
                 [(u, v), (v, u)]
             };
             if let Some(&(r, _)) = order.iter().find(|&&(r, k)| self.is_collapse_ok(h, r, k)) {
-                let role = self.chains.role(r);
-                self.mesh.collapse(h, r);
+                let role = self.chains.role(r.0);
+                self.mesh.collapse_edge(h, r);
                 if let Role::Interior(node) = role {
                     self.chains.remove(node);
                 }
@@ -246,11 +257,11 @@ impl Remesher {
     }
 
     /// Whether `r` may disappear into `k` along the edge of `h`.
-    fn is_collapse_ok(&mut self, h: u32, r: u32, k: u32) -> bool {
+    fn is_collapse_ok(&mut self, h: HalfedgeId, r: VertexId, k: VertexId) -> bool {
         let is_boundary_edge = self.mesh.twin(h).is_none();
-        let may_go = match self.chains.role(r) {
+        let may_go = match self.chains.role(r.0) {
             Role::Free => true,
-            Role::Interior(node) => self.chains.can_collapse_onto(node, k),
+            Role::Interior(node) => self.chains.can_collapse_onto(node, k.0),
             Role::Pinned => false,
         };
         // Boundary vertices slide only along the boundary, and corners stay.
@@ -266,26 +277,26 @@ impl Remesher {
             && self.is_collapse_geometry_ok(r, k)
     }
 
-    fn is_boundary_corner(&self, v: u32) -> bool {
+    fn is_boundary_corner(&self, v: VertexId) -> bool {
         let m = &self.mesh;
-        let mut outgoing = m.outgoing(v);
+        let mut outgoing = m.outgoing_halfedges(v);
         let Some(first) = outgoing.next() else {
             return true;
         };
         let last = outgoing.last().unwrap_or(first);
         let p = m.position(v);
         let after = m.position(m.head(first));
-        let before = m.position(m.opposite(last));
+        let before = m.position(m.opposite_vertex(last));
         let turn = (p - before)
             .normalize_or_zero()
             .dot((after - p).normalize_or_zero());
         turn < BOUNDARY_CORNER_COS
     }
 
-    fn are_valences_ok_after_collapse(&self, h: u32, r: u32, k: u32) -> bool {
+    fn are_valences_ok_after_collapse(&self, h: HalfedgeId, r: VertexId, k: VertexId) -> bool {
         let m = &self.mesh;
-        let valence = |v: u32| m.valence(v) as u32;
-        let opposite_ok = |g: u32| valence(m.opposite(g)) > MIN_VALENCE;
+        let valence = |v: VertexId| m.valence(v) as u32;
+        let opposite_ok = |g: HalfedgeId| valence(m.opposite_vertex(g)) > MIN_VALENCE;
         let n_faces_lost = 1 + u32::from(m.twin(h).is_some());
         let merged = valence(r) + valence(k);
         opposite_ok(h)
@@ -295,40 +306,38 @@ impl Remesher {
 
     /// The link condition: `r` and `k` share exactly the neighbours opposite their edge, so
     /// the collapse pinches nothing and keeps the topology.
-    fn is_link_condition_ok(&mut self, r: u32, k: u32, n_opposite: usize) -> bool {
+    fn is_link_condition_ok(&mut self, r: VertexId, k: VertexId, n_opposite: usize) -> bool {
         self.stamp = self.stamp.wrapping_add(1);
         if self.stamp == 0 {
             self.marks.fill(0);
             self.stamp = 1;
         }
-        let (stamp, marks) = (self.stamp, &mut self.marks);
-        self.mesh
-            .for_each_neighbor(r, |w| marks[w as usize] = stamp);
-        let mut n_common = 0;
-        self.mesh.for_each_neighbor(k, |w| {
-            n_common += usize::from(self.marks[w as usize] == stamp);
-        });
+        for w in self.mesh.vertex_neighbors(r) {
+            self.marks[w.index()] = self.stamp;
+        }
+        let n_common = self
+            .mesh
+            .vertex_neighbors(k)
+            .filter(|w| self.marks[w.index()] == self.stamp)
+            .count();
         n_common == n_opposite
     }
 
     /// Whether no edge longer than `4/3 L` appears when `r` joins `k`.
-    fn are_new_edges_short(&self, r: u32, k: u32) -> bool {
+    fn are_new_edges_short(&self, r: VertexId, k: VertexId) -> bool {
         let m = &self.mesh;
         let p_k = m.position(k);
-        let mut is_short = true;
-        m.for_each_neighbor(r, |w| {
-            is_short &= m.position(w).distance_squared(p_k) <= self.high_sq;
-        });
-        is_short
+        m.vertex_neighbors(r)
+            .all(|w| m.position(w).distance_squared(p_k) <= self.high_sq)
     }
 
     /// Whether `r`'s remaining triangles, moved onto `k`, neither turn too far nor degenerate.
-    fn is_collapse_geometry_ok(&self, r: u32, k: u32) -> bool {
+    fn is_collapse_geometry_ok(&self, r: VertexId, k: VertexId) -> bool {
         let m = &self.mesh;
         let (p_r, p_k) = (m.position(r), m.position(k));
         let mut check = EditCheck::new();
-        for g in m.outgoing(r) {
-            let (x, y) = (m.head(g), m.opposite(g));
+        for g in m.outgoing_halfedges(r) {
+            let (x, y) = (m.head(g), m.opposite_vertex(g));
             if x != k && y != k {
                 let (p_x, p_y) = (m.position(x), m.position(y));
                 check.add([p_r, p_x, p_y], [p_k, p_x, p_y], &[]);
@@ -342,28 +351,28 @@ impl Remesher {
     fn equalize_valences(&mut self) {
         let m = &self.mesh;
         self.valences.clear();
-        self.valences.extend((0..m.n_vertex_slots()).map(|v| {
-            if m.is_live_vertex(v) {
-                m.valence(v) as u32
-            } else {
-                0
-            }
-        }));
-        for h in 0..self.mesh.n_halfedge_slots() {
+        self.valences
+            .extend(m.vertices().map(|v| m.valence(v) as u32));
+        for h in self.halfedges() {
             if self.is_flip_ok(h) {
                 let m = &mut self.mesh;
                 let Some(t) = m.twin(h) else { continue };
-                let (a, b, c, d) = (m.tail(h), m.head(h), m.opposite(h), m.opposite(t));
-                m.flip(h);
+                let (a, b, c, d) = (
+                    m.tail(h),
+                    m.head(h),
+                    m.opposite_vertex(h),
+                    m.opposite_vertex(t),
+                );
+                m.flip_edge(h);
                 for (v, delta) in [(a, -1), (b, -1), (c, 1), (d, 1)] {
-                    self.valences[v as usize] =
-                        self.valences[v as usize].saturating_add_signed(delta);
+                    self.valences[v.index()] =
+                        self.valences[v.index()].saturating_add_signed(delta);
                 }
             }
         }
     }
 
-    fn target_valence(&self, v: u32) -> i64 {
+    fn target_valence(&self, v: VertexId) -> i64 {
         if self.mesh.is_boundary_vertex(v) {
             4
         } else {
@@ -371,15 +380,21 @@ impl Remesher {
         }
     }
 
-    fn is_flip_ok(&self, h: u32) -> bool {
+    fn is_flip_ok(&self, h: HalfedgeId) -> bool {
         let m = &self.mesh;
         let Some(t) = m.twin(h) else { return false };
-        if h > t || !m.is_live_halfedge(h) {
+        if h > t || !self.is_live(h) {
             return false;
         }
-        let (a, b, c, d) = (m.tail(h), m.head(h), m.opposite(h), m.opposite(t));
-        let valence = |v: u32| i64::from(self.valences[v as usize]);
-        let deviation = |v: u32, change: i64| (valence(v) + change - self.target_valence(v)).abs();
+        let (a, b, c, d) = (
+            m.tail(h),
+            m.head(h),
+            m.opposite_vertex(h),
+            m.opposite_vertex(t),
+        );
+        let valence = |v: VertexId| i64::from(self.valences[v.index()]);
+        let deviation =
+            |v: VertexId, change: i64| (valence(v) + change - self.target_valence(v)).abs();
         let before: i64 = [a, b, c, d].iter().map(|&v| deviation(v, 0)).sum();
         let after = deviation(a, -1) + deviation(b, -1) + deviation(c, 1) + deviation(d, 1);
         after < before
@@ -387,8 +402,8 @@ impl Remesher {
             && valence(b) > i64::from(MIN_VALENCE)
             && c != d
             && self.are_editable(&[a, b, c, d])
-            && !self.chains.is_chain_edge(a, b)
-            && !m.is_neighbor(c, d)
+            && !self.chains.is_chain_edge(a.0, b.0)
+            && !m.vertex_neighbors(c).any(|w| w == d)
             && self.is_flip_geometry_ok([a, b, c, d].map(|v| m.position(v)))
     }
 
@@ -405,11 +420,11 @@ impl Remesher {
     /// Moves every free interior vertex part of the way to the centroid of its one-ring,
     /// within its tangent plane, unless that would fold or degrade one of its triangles.
     fn relax_tangentially(&mut self) {
-        for v in 0..self.mesh.n_vertex_slots() {
+        for v in self.mesh.vertices() {
             if !self.mesh.is_live_vertex(v)
-                || !self.is_editable[v as usize]
+                || !self.is_editable[v.index()]
                 || self.mesh.is_boundary_vertex(v)
-                || self.chains.is_on_chain(v)
+                || self.chains.is_on_chain(v.0)
             {
                 continue;
             }
@@ -417,17 +432,17 @@ impl Remesher {
                 continue;
             };
             if self.is_move_ok(v, q) {
-                self.mesh.positions[v as usize] = q;
+                self.mesh.positions_mut()[v.index()] = q;
             }
         }
     }
 
-    fn relaxed_position(&self, v: u32) -> Option<DVec3> {
+    fn relaxed_position(&self, v: VertexId) -> Option<DVec3> {
         let m = &self.mesh;
         let p = m.position(v);
         let (mut sum, mut normal, mut n) = (DVec3::ZERO, DVec3::ZERO, 0.0);
-        for g in m.outgoing(v) {
-            let (x, y) = (m.position(m.head(g)), m.position(m.opposite(g)));
+        for g in m.outgoing_halfedges(v) {
+            let (x, y) = (m.position(m.head(g)), m.position(m.opposite_vertex(g)));
             sum += x;
             normal += (x - p).cross(y - p);
             n += 1.0;
@@ -438,12 +453,12 @@ impl Remesher {
         q.is_finite().then_some(q)
     }
 
-    fn is_move_ok(&self, v: u32, q: DVec3) -> bool {
+    fn is_move_ok(&self, v: VertexId, q: DVec3) -> bool {
         let m = &self.mesh;
         let p = m.position(v);
         let mut check = EditCheck::new();
-        for g in m.outgoing(v) {
-            let (x, y) = (m.position(m.head(g)), m.position(m.opposite(g)));
+        for g in m.outgoing_halfedges(v) {
+            let (x, y) = (m.position(m.head(g)), m.position(m.opposite_vertex(g)));
             check.add([p, x, y], [q, x, y], &[]);
         }
         check.is_ok()

@@ -1,7 +1,10 @@
-//! The `sketchmesh` command: replay sessions headlessly, convert and inspect glTF files.
+//! The `sketchmesh` command: replay sessions headlessly, convert, inspect and optimize glTF
+//! files.
 //!
 //! Arguments are matched by hand on the argument slice (as egui's xtask does); any refusal
 //! prints one sentence on stderr and exits with status 1.
+
+mod optimize;
 
 use std::io::Write as _;
 use std::path::Path;
@@ -18,6 +21,11 @@ Usage:
   sketchmesh replay SESSION.json -o OUT.glb   Replay a session and write the document as glTF.
   sketchmesh convert IN.glb|IN.gltf -o OUT.glb Import a glTF file and export it as Sketchmesh does.
   sketchmesh info FILE.glb|FILE.gltf          Print what a glTF file contains, as JSON.
+  sketchmesh optimize IN.glb -o OUT.glb [--mode shape|smooth] [--weights const|linear|cdf]
+      [--scale S] [--laplacian uniform|cotan|cotan-curvature] [--tangent-plane] [--quality]
+      [--features] [--report]                 Laplacian mesh optimization of every model;
+                                              --report prints radius ratios and the
+                                              Hausdorff distance as JSON.
   sketchmesh --help                           Show this help.
 
 A .gltf file's .bin and image files are read from beside it. Import ops in a session
@@ -46,6 +54,7 @@ fn try_main(args: &[String]) -> anyhow::Result<()> {
             convert(Path::new(input), Path::new(out))
         }
         ["info", file] => info(Path::new(file)),
+        ["optimize", rest @ ..] => optimize::run(rest),
         _ => bail!("I don't understand the arguments {args:?}.\n{USAGE}"),
     }
 }

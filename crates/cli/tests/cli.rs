@@ -224,3 +224,71 @@ fn convert_round_trips_and_sessions_import_files_beside_them() {
     assert!(stderr.contains("not valid glTF"), "{stderr}");
     assert!(!dir.join("never.glb").exists());
 }
+
+/// `../shared/testdata/meshes/NAME`, or a loud failure when the shared data is missing.
+fn testdata_mesh(name: &str) -> PathBuf {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../../../shared/testdata/meshes")
+        .join(name);
+    assert!(
+        path.is_file(),
+        "the shared test data is missing: {} does not exist",
+        path.display()
+    );
+    path
+}
+
+#[test]
+fn optimize_improves_the_triangles_of_a_scan_and_reports_it() {
+    let dir = temp_dir("optimize");
+    let out = dir.join("spot.glb");
+    let input = testdata_mesh("spot.glb");
+    let output = sketchmesh(&[
+        "optimize".as_ref(),
+        input.as_os_str(),
+        "-o".as_ref(),
+        out.as_os_str(),
+        "--weights".as_ref(),
+        "cdf".as_ref(),
+        "--report".as_ref(),
+    ]);
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    assert_eq!(
+        output.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let json_start = stdout.find('[').unwrap();
+    let reports: serde_json::Value = serde_json::from_str(&stdout[json_start..]).unwrap();
+    let report = &reports[0];
+    let number = |key: &str| report[key].as_f64().unwrap();
+    assert!(
+        number("mean_radius_ratio") > number("input_mean_radius_ratio"),
+        "{report}"
+    );
+    assert!(number("hausdorff_relative") < 0.005, "{report}");
+    assert!(std::fs::read(&out).unwrap().starts_with(b"glTF"));
+}
+
+#[test]
+fn optimize_refuses_bad_options_with_a_sentence() {
+    let input = testdata_mesh("suzanne.glb");
+    for (args, says) in [
+        (vec!["--mode", "sharpen"], "--mode"),
+        (vec!["--scale", "lots"], "--scale takes a number"),
+        (vec!["--wobble"], "I don't know the option --wobble"),
+    ] {
+        let mut all: Vec<&std::ffi::OsStr> = vec![
+            "optimize".as_ref(),
+            input.as_os_str(),
+            "-o".as_ref(),
+            "x.glb".as_ref(),
+        ];
+        all.extend(args.iter().map(std::ffi::OsStr::new));
+        let output = sketchmesh(&all);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(1), "{args:?}");
+        assert!(stderr.contains(says), "{args:?}: {stderr}");
+    }
+}

@@ -8,8 +8,8 @@
 //! The modules form layers; each uses only those below it:
 //! 1. the ground floor: [`camera`], [`curve`] (screen strokes), [`mesh`], [`solve`] and
 //!    [`geometry`] (which builds on `mesh` and `solve`);
-//! 2. the modeling techniques: [`fibermesh`], [`deform`], [`silhouette`] and [`oversketch`]
-//!    (which bends with `deform` along `silhouette`s);
+//! 2. the modeling techniques: [`fibermesh`], [`deform`], [`silhouette`], [`oversketch`]
+//!    (which bends with `deform` along `silhouette`s) and [`optimize`];
 //! 3. [`model`]: what a document holds, as plain data;
 //! 4. [`io`]: glTF files in and out of the model;
 //! 5. [`document`]: editing it, with ops, undo history and sessions.
@@ -23,6 +23,7 @@ pub mod geometry;
 pub mod io;
 pub mod mesh;
 pub mod model;
+pub mod optimize;
 pub mod oversketch;
 pub mod silhouette;
 pub mod solve;

@@ -6,6 +6,7 @@ use crate::fibermesh::add_curve::AddCurveError;
 use crate::fibermesh::curve_pull::PullError;
 use crate::io::GltfError;
 use crate::mesh::remesh::RemeshError;
+use crate::optimize::OptimizeError;
 use crate::oversketch::OversketchError;
 use crate::solve::SolveError;
 
@@ -66,6 +67,12 @@ pub enum CommandError {
     /// The surface could not be re-optimized through its curves.
     #[error("The surface could not be re-optimized: {0}")]
     Surface(SolveError),
+    /// An op names a model the document does not have.
+    #[error("There is no model {0} in the document.")]
+    NoSuchModel(usize),
+    /// A mesh optimization was refused.
+    #[error("The mesh could not be optimized: {0}.")]
+    Optimize(#[from] OptimizeError),
 }
 
 impl From<StrokeError> for CommandError {

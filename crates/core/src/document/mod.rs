@@ -20,6 +20,7 @@ mod error;
 mod history;
 mod intent;
 mod op;
+mod optimize;
 mod outcome;
 mod oversketch;
 mod session;
@@ -35,8 +36,8 @@ pub use editor::Editor;
 pub use error::CommandError;
 pub use intent::{CLOSE_TOLERANCE_PX, ink_instead, needs_tap, op_for_stroke, starts_on_model};
 pub use op::{
-    AddCurveInput, CurveTypeInput, FileInput, ImportInput, Op, OversketchFit, OversketchInput,
-    StrokeInput,
+    AddCurveInput, CurveTypeInput, FileInput, ImportInput, Op, OptimizeInput, OversketchFit,
+    OversketchInput, StrokeInput,
 };
 pub use oversketch::OutlinePiece;
 pub use session::{SESSION_FORMAT, SESSION_VERSION, Session};

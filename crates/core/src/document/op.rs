@@ -8,6 +8,7 @@ use serde::{Deserialize, Serialize};
 use crate::camera::Camera;
 use crate::curve::StrokePoint;
 use crate::deform::HandleFit;
+use crate::optimize::OptimizeParams;
 use crate::oversketch::{ManualHandle, OversketchRoi, SOFT_FIT_WEIGHT};
 
 /// One session op. JSON is internally tagged: `{"op":"stroke",...}`, `{"op":"undo"}`.
@@ -36,6 +37,9 @@ pub enum Op {
     SetCurveType(CurveTypeInput),
     /// Smooth the control curves near the stroke; each back-and-forth pass smooths more.
     Rub(StrokeInput),
+    /// Move a model's vertices by Laplacian mesh optimization (better triangles, or
+    /// smoothing); its triangles and curves stay.
+    Optimize(OptimizeInput),
     /// Undo the last change.
     Undo,
     /// Redo the last undone change.
@@ -55,6 +59,7 @@ impl Op {
         "erase",
         "set_curve_type",
         "rub",
+        "optimize",
         "undo",
         "redo",
     ];
@@ -71,6 +76,7 @@ impl Op {
             Op::Erase(_) => "erase",
             Op::SetCurveType(_) => "set_curve_type",
             Op::Rub(_) => "rub",
+            Op::Optimize(_) => "optimize",
             Op::Undo => "undo",
             Op::Redo => "redo",
         }
@@ -85,7 +91,7 @@ impl Op {
             Op::Oversketch(input) => Some(&input.stroke),
             Op::AddCurve(input) => Some(&input.stroke),
             Op::SetCurveType(input) => Some(&input.stroke),
-            Op::Import(_) | Op::Undo | Op::Redo => None,
+            Op::Import(_) | Op::Optimize(_) | Op::Undo | Op::Redo => None,
         }
     }
 
@@ -97,9 +103,21 @@ impl Op {
             Op::Oversketch(input) => Some(&mut input.stroke),
             Op::AddCurve(input) => Some(&mut input.stroke),
             Op::SetCurveType(input) => Some(&mut input.stroke),
-            Op::Import(_) | Op::Undo | Op::Redo => None,
+            Op::Import(_) | Op::Optimize(_) | Op::Undo | Op::Redo => None,
         }
     }
+}
+
+/// An `optimize` op: which model, and the settings at the top level beside it
+/// (`{"op":"optimize","model":0,"mode":"shape","weights":"cdf","scale":1.0}`); settings
+/// left out take their defaults.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct OptimizeInput {
+    /// Index of the model in the document.
+    pub model: usize,
+    /// How to optimize, written beside `model`.
+    #[serde(flatten)]
+    pub settings: OptimizeParams,
 }
 
 /// An `add_curve` op: the stroke and which kind of curve it makes.
@@ -357,6 +375,10 @@ mod tests {
                 sharp: true,
             }),
             Op::Rub(stroke()),
+            Op::Optimize(OptimizeInput {
+                model: 0,
+                settings: OptimizeParams::default(),
+            }),
             Op::Undo,
             Op::Redo,
         ];

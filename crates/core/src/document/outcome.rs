@@ -4,6 +4,7 @@
 use std::sync::Arc;
 
 use super::create::CreateJob;
+use super::optimize::optimize_op;
 use super::oversketch::oversketch_op;
 use super::{CommandError, Document, ImportInput, Model, Op, SketchCurve, StrokeInput, curve_edit};
 use crate::curve::process_stroke;
@@ -58,6 +59,7 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
         Op::Erase(input) => replaced(curve_edit::erase_op(base, input)?),
         Op::SetCurveType(input) => replaced(curve_edit::set_curve_type_op(base, input)?),
         Op::Rub(input) => replaced(curve_edit::rub_op(base, input)?),
+        Op::Optimize(input) => replaced(optimize_op(base, input)?),
         Op::Undo => Outcome::Undo,
         Op::Redo => Outcome::Redo,
     })

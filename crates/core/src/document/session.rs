@@ -149,15 +149,19 @@ fn parse_op(value: Value) -> Result<Op, String> {
             Op::NAMES.join(", ")
         ));
     }
-    let other_field = object.keys().find(|key| *key != "op").cloned();
+    let keys: Vec<String> = object.keys().filter(|key| *key != "op").cloned().collect();
     let op: Op = serde_json::from_value(Value::Object(object))
         .map_err(|error| format!("in a \"{name}\" op: {error}"))?;
-    // serde ignores extra fields of unit variants in internally tagged enums; refuse them.
-    match other_field {
-        Some(key) if has_no_fields(&op) => {
-            Err(format!("unknown field \"{key}\" in a \"{name}\" op"))
-        }
-        _ => Ok(op),
+    // serde ignores extra fields of unit variants in internally tagged enums, and of the
+    // flattened settings of `optimize` (which it writes in full); refuse them.
+    let written = serde_json::to_value(&op).unwrap_or_default();
+    let is_unknown = |key: &&String| match &op {
+        Op::Optimize(_) => written.get(key.as_str()).is_none(),
+        _ => has_no_fields(&op),
+    };
+    match keys.iter().find(is_unknown) {
+        Some(key) => Err(format!("unknown field \"{key}\" in a \"{name}\" op")),
+        None => Ok(op),
     }
 }
 
@@ -172,7 +176,8 @@ fn has_no_fields(op: &Op) -> bool {
         | Op::AddCurve(_)
         | Op::Erase(_)
         | Op::SetCurveType(_)
-        | Op::Rub(_) => false,
+        | Op::Rub(_)
+        | Op::Optimize(_) => false,
         Op::Undo | Op::Redo => true,
     }
 }

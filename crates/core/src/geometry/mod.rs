@@ -8,6 +8,7 @@
 
 mod area;
 mod bvh;
+mod closest;
 mod laplacian;
 mod normals;
 mod raycast;
@@ -17,6 +18,7 @@ pub use area::{
     enclosed_volume, face_area, mass_matrix, total_area, vertex_areas, vertex_areas_barycentric,
 };
 pub use bvh::Bvh;
+pub use closest::closest_point_on_triangle;
 pub use laplacian::{cotan_laplacian, mean_curvature, mean_curvature_normals, uniform_laplacian};
 pub use normals::{
     face_normal, face_normals, vertex_normals, vertex_normals_into, vertex_normals_of,

@@ -7,6 +7,7 @@
 //! valid.
 
 use std::f64::consts::{PI, TAU};
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use glam::{DVec2, DVec3};
@@ -389,4 +390,24 @@ pub fn resample(points: &[DVec2], spacing: f64) -> Vec<DVec2> {
         }
     }
     out
+}
+
+/// The shared real test data (`../shared/testdata`): its path, or a loud failure when it is
+/// missing, unless `SKETCHMESH_NO_TESTDATA=1` says that is expected (then `None`, and the
+/// caller prints that it checks nothing).
+pub fn testdata() -> Option<PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/testdata");
+    if dir.is_dir() {
+        return Some(dir);
+    }
+    let message = format!(
+        "the shared test data is missing: {} does not exist",
+        dir.display()
+    );
+    if std::env::var_os("SKETCHMESH_NO_TESTDATA").is_some() {
+        eprintln!("WARNING: {message}; SKETCHMESH_NO_TESTDATA is set, so this test checks nothing");
+        None
+    } else {
+        panic!("{message} (set SKETCHMESH_NO_TESTDATA=1 to skip on purpose)");
+    }
 }

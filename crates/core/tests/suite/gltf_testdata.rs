@@ -9,24 +9,8 @@
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
+use crate::common::testdata;
 use sketchmesh_core::io::{GltfError, ImportFile, ImportLimits, import_gltf, inspect_gltf};
-
-fn testdata() -> Option<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/testdata");
-    if dir.is_dir() {
-        return Some(dir);
-    }
-    let message = format!(
-        "the shared test data is missing: {} does not exist",
-        dir.display()
-    );
-    if std::env::var_os("SKETCHMESH_NO_TESTDATA").is_some() {
-        eprintln!("WARNING: {message}; SKETCHMESH_NO_TESTDATA is set, so this test checks nothing");
-        None
-    } else {
-        panic!("{message} (set SKETCHMESH_NO_TESTDATA=1 to skip on purpose)");
-    }
-}
 
 /// The file and every other file in its directory (a .gltf's .bin and images).
 fn load(path: &Path) -> (Vec<u8>, Vec<(String, Vec<u8>)>) {

@@ -11,6 +11,7 @@ mod fibermesh;
 mod gltf_import;
 mod gltf_testdata;
 mod golden_sessions;
+mod optimize;
 mod oversketch;
 mod oversketch_pipeline;
 mod silhouette;

@@ -10,6 +10,7 @@
 //! deformations).
 
 mod build;
+mod nearest;
 mod node;
 
 use glam::DVec3;

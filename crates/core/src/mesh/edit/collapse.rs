@@ -16,6 +16,11 @@ impl Mesh {
             self.tail(h)
         };
         let t = self.twin[h.index()];
+        // The kept vertex is on the boundary afterwards if either end was; the vertices
+        // opposite the edge keep their status.
+        let on_k = self.is_boundary_vertex(k) || self.is_boundary_vertex(r);
+        let on_c = self.is_boundary_vertex(self.opposite_vertex(h));
+        let on_d = t != INVALID && self.is_boundary_vertex(self.opposite_vertex(HalfedgeId(t)));
         // Renaming the tails of `r`'s outgoing half-edges renames it in every face.
         let start = self.vertex_halfedge(r);
         let mut g = start;
@@ -30,11 +35,11 @@ impl Mesh {
         let (c, c_out, mut k_out) = self.remove_collapsed_face(h);
         if t != INVALID {
             let (d, d_out, k_out_d) = self.remove_collapsed_face(HalfedgeId(t));
-            self.set_vertex_halfedge(d, d_out);
+            self.set_vertex_halfedge_on(d, d_out, on_d);
             k_out = k_out_d;
         }
-        self.set_vertex_halfedge(c, c_out);
-        self.set_vertex_halfedge(k, k_out);
+        self.set_vertex_halfedge_on(c, c_out, on_c);
+        self.set_vertex_halfedge_on(k, k_out, on_k);
     }
 
     /// Deletes the face of `h` (whose edge collapses, tails already renamed to the kept

@@ -43,11 +43,11 @@ impl Mesh {
                 let (f, g) = (3 * (first_face + k), 3 * (first_face + (k + 1) % n));
                 self.link_twins(f + 2, g + 1);
             }
-            self.set_vertex_halfedge(m, HalfedgeId(3 * first_face + 2));
+            self.set_vertex_halfedge_on(m, HalfedgeId(3 * first_face + 2), false);
         }
         for edge in rim {
             let v = self.tail(edge);
-            self.set_vertex_halfedge(v, edge);
+            self.set_vertex_halfedge_on(v, edge, false);
         }
         (first_face..self.n_faces() as u32).map(FaceId).collect()
     }

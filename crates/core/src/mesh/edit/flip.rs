@@ -11,6 +11,7 @@ impl Mesh {
         let Some(t) = self.twin(h) else { return };
         let (h1, h2, t1, t2) = (self.next(h), self.prev(h), self.next(t), self.prev(t));
         let (a, b, c, d) = (self.tail(h), self.head(h), self.tail(h2), self.tail(t2));
+        let [on_a, on_b, on_c, on_d] = [a, b, c, d].map(|v| self.is_boundary_vertex(v));
         let [outer_bc, outer_ca, outer_ad, outer_db] =
             [h1, h2, t1, t2].map(|s| self.twin[s.index()]);
         for (slot, v) in [(h, d), (h1, c), (h2, a), (t, c), (t1, d), (t2, b)] {
@@ -20,10 +21,10 @@ impl Mesh {
         self.link_twins(h2.0, outer_ad);
         self.link_twins(t1.0, outer_db);
         self.link_twins(t2.0, outer_bc);
-        self.set_vertex_halfedge(a, h2);
-        self.set_vertex_halfedge(b, t2);
-        self.set_vertex_halfedge(c, h1);
-        self.set_vertex_halfedge(d, t1);
+        self.set_vertex_halfedge_on(a, h2, on_a);
+        self.set_vertex_halfedge_on(b, t2, on_b);
+        self.set_vertex_halfedge_on(c, h1, on_c);
+        self.set_vertex_halfedge_on(d, t1, on_d);
     }
 }
 

@@ -48,7 +48,8 @@ impl Mesh {
     }
 
     /// Points `v` at its outgoing half-edge `h`, turned clockwise to the boundary half-edge
-    /// when `v` lies on the boundary, as the counter-clockwise walks require. O(valence).
+    /// when `v` lies on the boundary, as the counter-clockwise walks require. O(valence):
+    /// for edits that change where the boundary runs.
     fn set_vertex_halfedge(&mut self, v: VertexId, h: HalfedgeId) {
         debug_assert_eq!(self.tail(h), v);
         let mut g = h;
@@ -60,6 +61,16 @@ impl Mesh {
             }
         }
         self.vertex_halfedge[v.index()] = g.0;
+    }
+
+    /// [`Mesh::set_vertex_halfedge`] for a vertex whose boundary status the caller knows
+    /// (splits, flips and collapses keep it): O(1) inside, where remeshing spends its time.
+    fn set_vertex_halfedge_on(&mut self, v: VertexId, h: HalfedgeId, is_boundary: bool) {
+        if is_boundary {
+            self.set_vertex_halfedge(v, h);
+        } else {
+            self.vertex_halfedge[v.index()] = h.0;
+        }
     }
 
     /// Makes `h` and `t` twins; either may be [`INVALID`] (a boundary edge).

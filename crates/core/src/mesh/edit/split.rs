@@ -14,6 +14,7 @@ impl Mesh {
     pub fn split_edge(&mut self, h: HalfedgeId, p: DVec3) -> VertexId {
         let (h1, h2) = (self.next(h), self.prev(h));
         let (a, b, c) = (self.tail(h), self.head(h), self.tail(h2));
+        let [on_a, on_b, on_c] = [a, b, c].map(|v| self.is_boundary_vertex(v));
         let t = self.twin[h.index()];
         let m = self.push_vertex(p);
         let outer_bc = self.twin[h1.index()];
@@ -25,18 +26,19 @@ impl Mesh {
             let t = HalfedgeId(t);
             let t2 = self.prev(t);
             let d = self.tail(t2);
+            let on_d = self.is_boundary_vertex(d);
             let outer_bd = self.twin[t2.index()];
             self.set_tail(t, m);
             let k = self.push_face([b, m, d]);
             self.link_twins(k.0 + 2, outer_bd);
             self.link_twins(t2.0, k.0 + 1);
             self.link_twins(g.0, k.0);
-            self.set_vertex_halfedge(d, t2);
+            self.set_vertex_halfedge_on(d, t2, on_d);
         }
-        self.set_vertex_halfedge(m, g);
-        self.set_vertex_halfedge(b, HalfedgeId(g.0 + 1));
-        self.set_vertex_halfedge(a, h);
-        self.set_vertex_halfedge(c, h2);
+        self.set_vertex_halfedge_on(m, g, t == INVALID);
+        self.set_vertex_halfedge_on(b, HalfedgeId(g.0 + 1), on_b);
+        self.set_vertex_halfedge_on(a, h, on_a);
+        self.set_vertex_halfedge_on(c, h2, on_c);
         m
     }
 
@@ -46,6 +48,7 @@ impl Mesh {
         let h0 = HalfedgeId(3 * f.0);
         let (h1, h2) = (self.next(h0), self.prev(h0));
         let [a, b, c] = self.face_vertices(f);
+        let [on_a, on_b, on_c] = [a, b, c].map(|v| self.is_boundary_vertex(v));
         let (outer_bc, outer_ca) = (self.twin[h1.index()], self.twin[h2.index()]);
         let m = self.push_vertex(p);
         self.set_tail(h2, m);
@@ -56,10 +59,10 @@ impl Mesh {
         self.link_twins(h1.0, g.0 + 2);
         self.link_twins(g.0 + 1, k.0 + 2);
         self.link_twins(k.0 + 1, h2.0);
-        self.set_vertex_halfedge(m, h2);
-        self.set_vertex_halfedge(a, h0);
-        self.set_vertex_halfedge(b, g);
-        self.set_vertex_halfedge(c, k);
+        self.set_vertex_halfedge_on(m, h2, false);
+        self.set_vertex_halfedge_on(a, h0, on_a);
+        self.set_vertex_halfedge_on(b, g, on_b);
+        self.set_vertex_halfedge_on(c, k, on_c);
         m
     }
 }

@@ -108,6 +108,9 @@ pub(super) struct Remesher {
     /// Per vertex slot, whether remeshing may change it (its position, its edges); vertices
     /// made by splits are.
     pub(super) is_editable: Vec<bool>,
+    /// Per vertex slot, whether it lies on the boundary: no edit here changes that, and the
+    /// flip pass asks for every edge's four vertices, so it is kept rather than looked up.
+    is_boundary: Vec<bool>,
     /// Squared length above which edges split (`(4/3 L)²`).
     high_sq: f64,
     /// Squared length below which edges collapse (`(4/5 L)²`).
@@ -129,9 +132,14 @@ impl Remesher {
         target_edge: f64,
         is_editable: Vec<bool>,
     ) -> Remesher {
+        let is_boundary = mesh
+            .vertices()
+            .map(|v| mesh.is_boundary_vertex(v))
+            .collect();
         Remesher {
             mesh,
             chains,
+            is_boundary,
             is_editable,
             high_sq: (4.0 / 3.0 * target_edge).powi(2),
             low_sq: (4.0 / 5.0 * target_edge).powi(2),
@@ -202,6 +210,7 @@ impl Remesher {
             let m = self.mesh.split_edge(h, p);
             debug_assert_eq!(m.index(), self.is_editable.len());
             self.is_editable.push(true);
+            self.is_boundary.push(self.mesh.is_boundary_vertex(m));
             self.chains.insert_split(a.0, b.0, m.0);
             for w in self.mesh.vertex_neighbors(m) {
                 self.queue_if_long(&mut queue, m, w);
@@ -266,7 +275,7 @@ impl Remesher {
         };
         // Boundary vertices slide only along the boundary, and corners stay.
         let keeps_boundary =
-            !self.mesh.is_boundary_vertex(r) || (is_boundary_edge && !self.is_boundary_corner(r));
+            !self.is_boundary[r.index()] || (is_boundary_edge && !self.is_boundary_corner(r));
         // Cheapest and most often failing first: a collapse at the target length usually
         // fails for an edge that would get too long.
         may_go
@@ -373,11 +382,7 @@ impl Remesher {
     }
 
     fn target_valence(&self, v: VertexId) -> i64 {
-        if self.mesh.is_boundary_vertex(v) {
-            4
-        } else {
-            6
-        }
+        if self.is_boundary[v.index()] { 4 } else { 6 }
     }
 
     fn is_flip_ok(&self, h: HalfedgeId) -> bool {
@@ -423,7 +428,7 @@ impl Remesher {
         for v in self.mesh.vertices() {
             if !self.mesh.is_live_vertex(v)
                 || !self.is_editable[v.index()]
-                || self.mesh.is_boundary_vertex(v)
+                || self.is_boundary[v.index()]
                 || self.chains.is_on_chain(v.0)
             {
                 continue;

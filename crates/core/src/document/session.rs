@@ -322,6 +322,24 @@ mod tests {
             error.to_string(),
             "The session has version 2, but this Sketchmesh reads version 1."
         );
+        let optimize = |op: &str| {
+            Session::from_json(&format!(
+                r#"{{"format":"sketchmesh-session","version":1,"ops":[{op}]}}"#
+            ))
+        };
+        let short = optimize(r#"{"op":"optimize","model":0,"mode":"smooth","scale":0.3}"#);
+        let Op::Optimize(input) = &short.unwrap().ops[0] else {
+            panic!("not an optimize op")
+        };
+        assert_eq!(
+            (input.settings.scale, input.settings.tangent_plane),
+            (0.3, false)
+        );
+        let typo = optimize(r#"{"op":"optimize","model":0,"scael":0.3}"#).unwrap_err();
+        assert!(
+            typo.to_string().contains("unknown field \"scael\""),
+            "{typo}"
+        );
         let extra = r#"{"format":"sketchmesh-session","version":1,"ops":[],"notes":""}"#;
         assert_eq!(
             Session::from_json(extra).unwrap_err().to_string(),

@@ -1,0 +1,54 @@
+//! Laplacian mesh optimization (`core::optimize`): the whole call (curvatures, weights, the
+//! system, one sparse factorization, the solves) on scans of the shared test data and on a
+//! subdivided sphere of 164k vertices, near the thesis's 17k and 173k (Fig. 6.5, §6.7).
+//!
+//! `cargo bench -p sketchmesh-core --bench optimize`. The scans come from
+//! `../shared/testdata`; without it the bench says so and runs the generated mesh only.
+
+use std::hint::black_box;
+use std::path::Path;
+
+use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use sketchmesh_core::io::{ImportFile, ImportLimits, import_gltf};
+use sketchmesh_core::mesh::{Mesh, primitives};
+use sketchmesh_core::optimize::{OptimizeParams, optimize};
+
+/// The first mesh of a test-data file, or `None` (said loudly) when the data is missing.
+fn scan(name: &str) -> Option<Mesh> {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../../shared/testdata/meshes")
+        .join(name);
+    let Ok(bytes) = std::fs::read(&path) else {
+        eprintln!(
+            "WARNING: {} is missing; this case is skipped",
+            path.display()
+        );
+        return None;
+    };
+    let file = ImportFile {
+        name,
+        bytes: &bytes,
+    };
+    let imported = import_gltf(&file, &[], &ImportLimits::default()).ok()?;
+    imported.models.into_iter().next().map(|m| m.mesh)
+}
+
+fn bench_optimize(c: &mut Criterion) {
+    let mut group = c.benchmark_group("optimize_shape_cdf");
+    group.sample_size(10);
+    let mut cases: Vec<(String, Mesh)> = ["stanford_bunny.glb", "nefertiti.glb", "igea.glb"]
+        .iter()
+        .filter_map(|name| scan(name).map(|mesh| (name.trim_end_matches(".glb").to_owned(), mesh)))
+        .collect();
+    cases.push((String::from("sphere"), primitives::icosphere(1.0, 7)));
+    for (name, mesh) in &cases {
+        let id = BenchmarkId::from_parameter(format!("{name}_{}", mesh.n_vertices()));
+        group.bench_function(id, |b| {
+            b.iter(|| optimize(black_box(mesh), &OptimizeParams::default()).expect("solves"));
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench_optimize);
+criterion_main!(benches);

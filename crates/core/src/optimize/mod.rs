@@ -260,6 +260,96 @@ mod tests {
         assert!(b.mean_radius_ratio > b.input_mean_radius_ratio);
     }
 
+    /// A cube of side 1 tessellated into `n × n` quads per side, welded.
+    fn fine_cube(n: usize) -> Mesh {
+        let mut soup = crate::mesh::TriSoup::default();
+        let mut index = std::collections::HashMap::new();
+        let mut vertex = |p: DVec3, soup: &mut crate::mesh::TriSoup| {
+            let key = (p * 4.0 * n as f64).round().as_ivec3().to_array();
+            *index.entry(key).or_insert_with(|| {
+                soup.positions.push(p);
+                soup.positions.len() as u32 - 1
+            })
+        };
+        for axis in 0..3 {
+            for side in [-0.5, 0.5] {
+                let (u, v) = (DVec3::AXES[(axis + 1) % 3], DVec3::AXES[(axis + 2) % 3]);
+                let normal = DVec3::AXES[axis] * side;
+                // Counter-clockwise seen from outside: u × v points along +axis.
+                let (u, v) = if side > 0.0 { (u, v) } else { (v, u) };
+                let at = |i: usize, j: usize| {
+                    normal + u * (i as f64 / n as f64 - 0.5) + v * (j as f64 / n as f64 - 0.5)
+                };
+                for i in 0..n {
+                    for j in 0..n {
+                        let [a, b, c, d] = [at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)]
+                            .map(|p| vertex(p, &mut soup));
+                        soup.triangles.extend([[a, b, c], [a, c, d]]);
+                    }
+                }
+            }
+        }
+        Mesh::from_soup(&soup).unwrap()
+    }
+
+    /// The largest deviation from 90° of the dihedral angles along the cube's edges.
+    fn worst_edge_angle_error(mesh: &Mesh, positions: &[DVec3], rest: &Mesh) -> f64 {
+        // The axes along which a rest position lies on a face of the cube; an edge of the
+        // mesh runs along an edge of the cube when its ends share two of them.
+        let faces_of = |p: DVec3| {
+            (p.abs() - DVec3::splat(0.5))
+                .abs()
+                .cmple(DVec3::splat(1e-9))
+                .bitmask()
+        };
+        let normal = |f| {
+            let [a, b, c] = mesh.face_vertices(f).map(|v| positions[v.index()]);
+            (b - a).cross(c - a).normalize()
+        };
+        let mut worst = 0.0f64;
+        for h in (0..mesh.n_halfedges() as u32).map(crate::mesh::HalfedgeId) {
+            let (a, b) = (mesh.tail(h), mesh.head(h));
+            if (faces_of(rest.position(a)) & faces_of(rest.position(b))).count_ones() < 2 {
+                continue;
+            }
+            let t = mesh.twin(h).unwrap();
+            let angle = normal(mesh.face(h))
+                .dot(normal(mesh.face(t)))
+                .clamp(-1.0, 1.0)
+                .acos();
+            worst = worst.max((angle.to_degrees() - 90.0).abs());
+        }
+        worst
+    }
+
+    /// §6.5.3 on a noisy cube: with feature preservation the sharp edges keep their right
+    /// angles within 10° while the faces smooth; without it they round off.
+    #[test]
+    fn feature_preservation_keeps_the_edges_of_a_noisy_cube() {
+        let cube = fine_cube(12);
+        let mut noisy = cube.clone();
+        let normals = crate::geometry::vertex_normals(&cube);
+        for (i, p) in noisy.positions_mut().iter_mut().enumerate() {
+            *p += normals[i] * 0.01 * jitter(i, 0);
+        }
+        let smooth = |features| OptimizeParams {
+            features,
+            ..smooth_uniform_const(0.3)
+        };
+        let kept = optimize(&noisy, &smooth(true)).unwrap();
+        let rounded = optimize(&noisy, &smooth(false)).unwrap();
+        let (kept_error, rounded_error) = (
+            worst_edge_angle_error(&noisy, &kept, &cube),
+            worst_edge_angle_error(&noisy, &rounded, &cube),
+        );
+        eprintln!("cube edges: {kept_error:.1}° off with features, {rounded_error:.1}° without");
+        assert!(kept_error < 10.0, "features: {kept_error}° off");
+        assert!(
+            rounded_error > kept_error,
+            "{rounded_error} vs {kept_error}"
+        );
+    }
+
     #[test]
     fn bad_settings_and_empty_meshes_are_refused() {
         let mesh = primitives::icosphere(1.0, 1);

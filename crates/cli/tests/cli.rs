@@ -34,19 +34,7 @@ fn replay_then_info() {
     let glb = dir.join("out.glb");
     std::fs::write(&session, SESSION).unwrap();
 
-    let output = sketchmesh(&[
-        "replay".as_ref(),
-        session.as_os_str(),
-        "-o".as_ref(),
-        glb.as_os_str(),
-    ]);
-    let stdout = String::from_utf8_lossy(&output.stdout);
-    assert_eq!(
-        output.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    let stdout = succeed("replay", &session, &glb, &[]);
     assert!(
         stdout.starts_with("Replayed 4 ops: 0 models, 0 vertices, 0 triangles, 2 curves"),
         "{stdout}"
@@ -164,20 +152,29 @@ fn a_created_shape_replays_to_the_same_closed_genus_0_mesh() {
     assert_eq!(info["control_curves"], 1, "{info}");
 }
 
-/// Runs `sketchmesh COMMAND INPUT -o OUTPUT` and expects success.
-fn succeed(command: &str, input: &std::path::Path, output: &std::path::Path) {
-    let run = sketchmesh(&[
+/// Runs `sketchmesh COMMAND INPUT -o OUTPUT [EXTRA...]`, expects success and returns what
+/// it printed.
+fn succeed(
+    command: &str,
+    input: &std::path::Path,
+    output: &std::path::Path,
+    extra: &[&str],
+) -> String {
+    let mut args: Vec<&std::ffi::OsStr> = vec![
         command.as_ref(),
         input.as_os_str(),
         "-o".as_ref(),
         output.as_os_str(),
-    ]);
+    ];
+    args.extend(extra.iter().map(std::ffi::OsStr::new));
+    let run = sketchmesh(&args);
     assert_eq!(
         run.status.code(),
         Some(0),
         "{}",
         String::from_utf8_lossy(&run.stderr)
     );
+    String::from_utf8_lossy(&run.stdout).into_owned()
 }
 
 #[test]
@@ -186,9 +183,9 @@ fn convert_round_trips_and_sessions_import_files_beside_them() {
     let session = dir.join("create.json");
     std::fs::write(&session, create_session()).unwrap();
     let created = dir.join("created.glb");
-    succeed("replay", &session, &created);
+    succeed("replay", &session, &created, &[]);
     let converted = dir.join("converted.glb");
-    succeed("convert", &created, &converted);
+    succeed("convert", &created, &converted, &[]);
     assert_eq!(
         std::fs::read(&converted).unwrap(),
         std::fs::read(&created).unwrap(),
@@ -203,7 +200,7 @@ fn convert_round_trips_and_sessions_import_files_beside_them() {
     )
     .unwrap();
     let replayed = dir.join("replayed.glb");
-    succeed("replay", &import_session, &replayed);
+    succeed("replay", &import_session, &replayed, &[]);
     assert_eq!(
         std::fs::read(&replayed).unwrap(),
         std::fs::read(&created).unwrap()
@@ -243,22 +240,7 @@ fn optimize_improves_the_triangles_of_a_scan_and_reports_it() {
     let dir = temp_dir("optimize");
     let out = dir.join("spot.glb");
     let input = testdata_mesh("spot.glb");
-    let output = sketchmesh(&[
-        "optimize".as_ref(),
-        input.as_os_str(),
-        "-o".as_ref(),
-        out.as_os_str(),
-        "--weights".as_ref(),
-        "cdf".as_ref(),
-        "--report".as_ref(),
-    ]);
-    let stdout = String::from_utf8_lossy(&output.stdout);
-    assert_eq!(
-        output.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    let stdout = succeed("optimize", &input, &out, &["--weights", "cdf", "--report"]);
     let json_start = stdout.find('[').unwrap();
     let reports: serde_json::Value = serde_json::from_str(&stdout[json_start..]).unwrap();
     let report = &reports[0];

@@ -29,7 +29,8 @@ impl Rows {
         let kappa = curvature_magnitudes(mesh);
         let (mut positional, row_weights) = if params.features {
             let linear = linear_weights(&kappa, params.scale);
-            (linear, feature_laplacian_weights(&kappa, params.scale))
+            let rows = feature_laplacian_weights(&linear, params.scale);
+            (linear, rows)
         } else {
             let weights = positional_weights(&kappa, params.weights, params.scale);
             (weights, vec![1.0; mesh.n_vertices()])

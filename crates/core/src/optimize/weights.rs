@@ -57,10 +57,11 @@ pub fn cdf_weights(kappa: &[f64], scale: f64) -> Vec<f64> {
         .collect()
 }
 
-/// Laplacian row weights that keep features (§6.5.3): `(scale − W_linear) / scale`, so the
-/// most curved vertices (weight `scale`) get no Laplacian row and stay where they are.
-pub fn feature_laplacian_weights(kappa: &[f64], scale: f64) -> Vec<f64> {
-    linear_weights(kappa, scale)
+/// Laplacian row weights that keep features (§6.5.3): `(scale − W_linear) / scale` from the
+/// [`linear_weights`] `linear`, so the most curved vertices (weight `scale`) get no Laplacian
+/// row and stay where they are.
+pub fn feature_laplacian_weights(linear: &[f64], scale: f64) -> Vec<f64> {
+    linear
         .iter()
         .map(|&w| ((scale - w) / scale).clamp(0.0, 1.0))
         .collect()

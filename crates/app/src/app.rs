@@ -256,6 +256,16 @@ impl SketchApp {
                     edit.end_gesture();
                 }
             }
+            ToolOutput::Revise(op) => match gesture {
+                Some(edit) if edit.op().name() == op.name() => edit.revise(op),
+                // The preview was committed meanwhile (another edit began): open a new one.
+                _ => self.begin(op, true, now),
+            },
+            ToolOutput::Finish => {
+                if let Some(edit) = gesture {
+                    edit.end_gesture();
+                }
+            }
             ToolOutput::Cancel => self.cancel_gesture(),
             ToolOutput::Refused(message) => self.set_status(message, now),
         }
@@ -631,8 +641,7 @@ impl eframe::App for SketchApp {
                     ui,
                     &shared.editor,
                     &mut self.options,
-                    self.tools.mode(),
-                    self.tools.oversketch_settings_mut(),
+                    &mut self.tools,
                     &mut self.show_help,
                     status,
                 )
@@ -648,6 +657,7 @@ impl eframe::App for SketchApp {
             Some(panels::toolbar::Action::Import) => self.import_files(&ctx),
             Some(panels::toolbar::Action::Export) => self.export(now),
             Some(panels::toolbar::Action::Mode(mode)) => self.set_mode(mode, now),
+            Some(panels::toolbar::Action::Tool(output)) => self.take_output(*output, now),
             None => {}
         }
         egui::CentralPanel::no_frame().show(ui, |ui| self.viewport_ui(ui));

@@ -2,6 +2,8 @@
 //! system, one sparse factorization, the solves) on scans of the shared test data and on a
 //! subdivided sphere of 164k vertices, near the thesis's 17k and 173k (Fig. 6.5, §6.7).
 //!
+//! `optimize_rescale` is the app's slider: a kept [`Optimizer`] at a new scale.
+//!
 //! `cargo bench -p sketchmesh-core --bench optimize`. The scans come from
 //! `../shared/testdata`; without it the bench says so and runs the generated mesh only.
 
@@ -11,7 +13,7 @@ use std::path::Path;
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use sketchmesh_core::io::{ImportFile, ImportLimits, import_gltf};
 use sketchmesh_core::mesh::{Mesh, primitives};
-use sketchmesh_core::optimize::{OptimizeParams, optimize};
+use sketchmesh_core::optimize::{OptimizeParams, Optimizer, optimize};
 
 /// The first mesh of a test-data file, or `None` (said loudly) when the data is missing.
 fn scan(name: &str) -> Option<Mesh> {
@@ -45,6 +47,22 @@ fn bench_optimize(c: &mut Criterion) {
         let id = BenchmarkId::from_parameter(format!("{name}_{}", mesh.n_vertices()));
         group.bench_function(id, |b| {
             b.iter(|| optimize(black_box(mesh), &OptimizeParams::default()).expect("solves"));
+        });
+    }
+    group.finish();
+    // The slider: a kept optimizer solving at a new scale (numeric refactorization on the
+    // kept analysis, then a back-substitution), alternating so that every call refactors.
+    let mut group = c.benchmark_group("optimize_rescale");
+    group.sample_size(10);
+    for (name, mesh) in &cases {
+        let id = BenchmarkId::from_parameter(format!("{name}_{}", mesh.n_vertices()));
+        let mut optimizer = Optimizer::new(mesh, &OptimizeParams::default()).expect("factors");
+        let mut scale = 1.0;
+        group.bench_function(id, |b| {
+            b.iter(|| {
+                scale = if scale == 1.0 { 0.5 } else { 1.0 };
+                optimizer.solve(black_box(scale)).expect("solves")
+            });
         });
     }
     group.finish();

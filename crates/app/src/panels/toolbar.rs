@@ -5,10 +5,10 @@ use sketchmesh_core::document::{Editor, OversketchFit};
 use sketchmesh_core::oversketch::OversketchRoi;
 
 use crate::render::ViewOptions;
-use crate::tools::{Mode, OversketchSettings};
+use crate::tools::{Mode, OversketchSettings, ToolOutput, ToolSet};
 
 /// A toolbar button the user pressed.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Action {
     /// Undo the last operation.
     Undo,
@@ -24,6 +24,8 @@ pub enum Action {
     Export,
     /// Switch to a tool.
     Mode(Mode),
+    /// The active tool's panel asked for this.
+    Tool(Box<ToolOutput>),
 }
 
 /// Minimum touch target, in points, so buttons are easy to hit with a finger.
@@ -34,13 +36,13 @@ pub fn toolbar_ui(
     ui: &mut egui::Ui,
     editor: &Editor,
     options: &mut ViewOptions,
-    mode: Mode,
-    oversketch: &mut OversketchSettings,
+    tools: &mut ToolSet,
     show_help: &mut bool,
     status: Option<&str>,
 ) -> Option<Action> {
     let mut action = None;
     let mut picked_mode = None;
+    let mode = tools.mode();
     ui.spacing_mut().interact_size.y = TOUCH_TARGET;
     ui.spacing_mut().button_padding = egui::vec2(10.0, 6.0);
     ui.horizontal_wrapped(|ui| {
@@ -106,9 +108,19 @@ pub fn toolbar_ui(
     // The second row, always there so that the viewport keeps its size whatever the mode:
     // the mode's options, the document's size, the latest message.
     ui.horizontal_wrapped(|ui| {
-        if mode == Mode::Oversketch {
-            oversketch_options_ui(ui, oversketch);
-            ui.separator();
+        match mode {
+            Mode::Oversketch => {
+                oversketch_options_ui(ui, tools.oversketch_settings_mut());
+                ui.separator();
+            }
+            Mode::Optimize => {
+                let output = tools.optimize_ui(ui);
+                if output != ToolOutput::None {
+                    action = Some(Action::Tool(Box::new(output)));
+                }
+                ui.separator();
+            }
+            _ => {}
         }
         let stats = editor.document().stats();
         ui.label(format!(

@@ -29,6 +29,11 @@ pub enum ToolOutput {
     Extend([f64; 3]),
     /// The gesture ended with this sample: apply its op as one undoable step.
     End([f64; 3]),
+    /// The gesture's op has new settings (a panel changed): preview them instead.
+    Revise(Op),
+    /// The gesture ended without a sample (a panel's Apply): apply its op as one undoable
+    /// step.
+    Finish,
     /// Drop the gesture: nothing changes.
     Cancel,
     /// The gesture did nothing; tell the user why.

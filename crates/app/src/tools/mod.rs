@@ -4,13 +4,14 @@
 //! editor, so one gesture is one undo step and every edit replays from the session. A tool
 //! whose op previews while it is drawn (pull, over-sketch) begins it as a gesture
 //! ([`ToolOutput::Begin`]) and feeds it samples; the app runs it as it runs every edit.
-//! [`ToolSet`] holds one tool per [`Mode`] (FiberMesh's five tools plus over-sketch) and
-//! routes events to the active one.
+//! [`ToolSet`] holds one tool per [`Mode`] (FiberMesh's five tools, over-sketch and
+//! optimize) and routes events to the active one.
 
 mod context;
 pub mod curve_stroke;
 pub mod draw;
 pub mod mode;
+pub mod optimize;
 pub mod oversketch;
 pub mod pull;
 pub mod sketch;
@@ -23,6 +24,7 @@ pub use context::{ToolOutput, ViewCtx};
 pub use mode::Mode;
 
 use curve_stroke::CurveStrokeTool;
+use optimize::OptimizeTool;
 pub use oversketch::OversketchSettings;
 use oversketch::{HandlePreview, OversketchTool};
 use pull::PullTool;
@@ -36,6 +38,7 @@ pub struct ToolSet {
     pull: PullTool,
     curve_stroke: CurveStrokeTool,
     oversketch: OversketchTool,
+    optimize: OptimizeTool,
 }
 
 impl ToolSet {
@@ -60,10 +63,16 @@ impl ToolSet {
         self.oversketch.settings_mut()
     }
 
+    /// The optimize tool's panel; what the user did there.
+    pub fn optimize_ui(&mut self, ui: &mut egui::Ui) -> ToolOutput {
+        self.optimize.settings_ui(ui)
+    }
+
     /// What the active tool asks the user to do next, if anything.
     pub fn hint(&self) -> Option<&'static str> {
         match self.mode {
             Mode::Oversketch => self.oversketch.hint(),
+            Mode::Optimize => self.optimize.hint(),
             _ => None,
         }
     }
@@ -73,6 +82,7 @@ impl ToolSet {
         self.pull.cancel();
         self.curve_stroke.cancel();
         self.oversketch.cancel();
+        self.optimize.cancel();
         self.sketch.cancel()
     }
 
@@ -85,6 +95,7 @@ impl ToolSet {
                 self.curve_stroke.on_event(self.mode, event, view, doc)
             }
             Mode::Oversketch => self.oversketch.on_event(event, view, doc),
+            Mode::Optimize => self.optimize.on_event(event, view, doc),
         }
     }
 
@@ -92,7 +103,7 @@ impl ToolSet {
     pub fn preview(&self) -> Option<&[StrokePoint]> {
         match self.mode {
             Mode::Sketch => self.sketch.preview(),
-            Mode::Pull => None,
+            Mode::Pull | Mode::Optimize => None,
             Mode::Erase | Mode::CurveType | Mode::Rub => self.curve_stroke.preview(),
             Mode::Oversketch => self.oversketch.preview(),
         }

@@ -1,5 +1,5 @@
 //! The tool modes: FiberMesh's five tools (sketch, deform, erase, type change, rub;
-//! thesis §3.2) and over-sketch, with their toolbar labels and keys.
+//! thesis §3.2), over-sketch and optimize, with their toolbar labels and keys.
 
 use egui::Key;
 
@@ -19,17 +19,20 @@ pub enum Mode {
     Rub,
     /// Redraw part of a model's outline.
     Oversketch,
+    /// Better triangles or less noise on a model (Laplacian mesh optimization).
+    Optimize,
 }
 
 impl Mode {
     /// Every mode, in toolbar order.
-    pub const ALL: [Mode; 6] = [
+    pub const ALL: [Mode; 7] = [
         Mode::Sketch,
         Mode::Pull,
         Mode::Erase,
         Mode::CurveType,
         Mode::Rub,
         Mode::Oversketch,
+        Mode::Optimize,
     ];
 
     /// The toolbar label.
@@ -41,6 +44,7 @@ impl Mode {
             Mode::CurveType => "Sharp/smooth",
             Mode::Rub => "Rub",
             Mode::Oversketch => "Over-sketch",
+            Mode::Optimize => "Optimize",
         }
     }
 
@@ -53,6 +57,7 @@ impl Mode {
             Mode::CurveType => Key::T,
             Mode::Rub => Key::U,
             Mode::Oversketch => Key::O,
+            Mode::Optimize => Key::M,
         }
     }
 
@@ -67,6 +72,9 @@ impl Mode {
             Mode::CurveType => "Drag along control curves to switch smooth (blue) and sharp (red)",
             Mode::Rub => "Rub back and forth near a control curve to smooth it",
             Mode::Oversketch => "Draw near an outline where you want it to be",
+            Mode::Optimize => {
+                "Tap a model: even out its triangles or smooth it, preview the amount, Apply"
+            }
         }
     }
 }

@@ -62,7 +62,8 @@ use glam::DVec3;
 
 use super::create::CreateJob;
 use super::curve_edit::PullPreview;
-use super::outcome::{Outcome, outcome};
+use super::optimize::OptimizePreview;
+use super::outcome::{Outcome, outcome, with_model};
 use super::oversketch::{OutlinePiece, OutlinePreview};
 use super::{CommandError, Document, Editor, Op};
 
@@ -131,6 +132,8 @@ enum Work {
     Pull(Box<PullPreview>),
     /// An over-sketch's live outline piece.
     Outline(Box<OutlinePreview>),
+    /// An optimization's live result, following the op's settings.
+    Optimize(Box<OptimizePreview>),
     /// A creation, refining step by step.
     Create(Box<CreateJob>),
     /// Nothing computed yet: the next step computes the result whole.
@@ -155,6 +158,7 @@ impl Work {
         Ok(match op {
             Op::Pull(input) => Work::Pull(Box::new(PullPreview::start(base, input)?)),
             Op::Oversketch(input) => Work::Outline(Box::new(OutlinePreview::new(input))),
+            Op::Optimize(input) => Work::Optimize(Box::new(OptimizePreview::start(base, input)?)),
             _ => Work::Gesture,
         })
     }
@@ -245,9 +249,10 @@ impl Edit {
         }
         if self.is_gesture {
             let stroke = op.stroke().unwrap_or_default();
-            let stepped = match &mut self.work {
-                Work::Pull(preview) => preview.step(stroke)?,
-                Work::Outline(preview) => preview.step(base, stroke),
+            let stepped = match (&mut self.work, op) {
+                (Work::Pull(preview), _) => preview.step(stroke)?,
+                (Work::Outline(preview), _) => preview.step(base, stroke),
+                (Work::Optimize(preview), Op::Optimize(input)) => preview.step(base, input)?,
                 _ => None,
             };
             return Ok(match stepped {
@@ -271,11 +276,30 @@ impl Edit {
                 self.work = Work::Done(outcome(base, op)?);
                 Ok((Progress::Done, true))
             }
+            // A gesture ended on settings its optimization preview solved: that is the result.
+            Work::Optimize(preview) => {
+                let Some(model) = optimized(preview, base, op) else {
+                    self.work = Work::complete(base, op)?;
+                    return Ok((Progress::Working, true));
+                };
+                self.work = Work::Done(with_model(base, model));
+                Ok((Progress::Done, true))
+            }
             // A gesture ended: its preview goes, and the committed result begins.
             Work::Gesture | Work::Pull(_) | Work::Outline(_) | Work::Failed(_) => {
                 self.work = Work::complete(base, op)?;
                 Ok((Progress::Working, true))
             }
+        }
+    }
+
+    /// Replaces the op of a gesture in progress by `op`, of the same kind, with new settings
+    /// (a slider moved): the next step previews it, and finishing commits it. Ignored after
+    /// the gesture ended or for an op of another kind.
+    pub fn revise(&mut self, op: Op) {
+        debug_assert!(self.is_gesture, "revise after the gesture ended");
+        if self.is_gesture && op.name() == self.op.name() {
+            self.op = op;
         }
     }
 
@@ -345,11 +369,15 @@ impl Edit {
         }
     }
 
-    /// A pull's preview: the index of a model of [`Edit::document`] and where its vertices
-    /// are drawn (the same topology).
+    /// A pull's or an optimization's preview: the index of a model of [`Edit::document`]
+    /// and where its vertices are drawn (the same topology).
     pub fn moved_model(&self) -> Option<(usize, &[DVec3])> {
         match &self.work {
             Work::Pull(preview) => Some(preview.moved()),
+            Work::Optimize(preview) => match &self.op {
+                Op::Optimize(input) => Some(preview.moved(input)),
+                _ => None,
+            },
             _ => None,
         }
     }
@@ -376,6 +404,14 @@ impl Edit {
 }
 
 /// Whether two documents hold the very same models, sketches and point clouds.
+/// The committed model of an optimization whose preview solved exactly `op`.
+fn optimized(preview: &OptimizePreview, base: &Document, op: &Op) -> Option<(usize, super::Model)> {
+    match op {
+        Op::Optimize(input) => preview.result(base, input),
+        _ => None,
+    }
+}
+
 fn same_document(a: &Document, b: &Document) -> bool {
     fn same<T>(a: &[std::sync::Arc<T>], b: &[std::sync::Arc<T>]) -> bool {
         a.len() == b.len() && a.iter().zip(b).all(|(x, y)| std::sync::Arc::ptr_eq(x, y))

@@ -58,10 +58,20 @@ pub fn ink_instead(op: Op) -> Op {
 
 /// Whether the stroke's first point lies over a model in the stroke's view.
 pub fn starts_on_model(doc: &Document, input: &StrokeInput) -> bool {
-    input
-        .stroke
-        .first()
-        .is_some_and(|&[x, y, _]| hits_model(doc, input, DVec2::new(x, y), |_| true))
+    model_under(doc, input).is_some()
+}
+
+/// The index of the model nearest the eye under the stroke's first point (a tap), if any.
+pub fn model_under(doc: &Document, input: &StrokeInput) -> Option<usize> {
+    let &[x, y, _] = input.stroke.first()?;
+    let (origin, dir) = input
+        .camera
+        .ray_in_world(DVec2::new(x, y), input.viewport_size());
+    let hits =
+        doc.models.iter().enumerate().filter_map(|(i, model)| {
+            raycast(&model.mesh, origin, dir).map(|hit| (hit.distance, i))
+        });
+    hits.min_by(|a, b| a.0.total_cmp(&b.0)).map(|(_, i)| i)
 }
 
 /// Whether the view ray through `screen` hits a model for which `accept` holds.

@@ -34,7 +34,9 @@ pub use curve_edit::{CURVE_PICK_RADIUS_PX, curve_type_toggle};
 pub use edit::{Edit, Progress};
 pub use editor::Editor;
 pub use error::CommandError;
-pub use intent::{CLOSE_TOLERANCE_PX, ink_instead, needs_tap, op_for_stroke, starts_on_model};
+pub use intent::{
+    CLOSE_TOLERANCE_PX, ink_instead, model_under, needs_tap, op_for_stroke, starts_on_model,
+};
 pub use op::{
     AddCurveInput, CurveTypeInput, FileInput, ImportInput, Op, OptimizeInput, OversketchFit,
     OversketchInput, StrokeInput,

@@ -26,11 +26,7 @@ pub(super) enum Outcome {
 ///
 /// Errors: the op's refusal, see [`CommandError`].
 pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError> {
-    let replaced = |(index, model): (usize, Model)| {
-        let mut next = base.clone();
-        next.models[index] = Arc::new(model);
-        Outcome::Document(next)
-    };
+    let replaced = |model| with_model(base, model);
     Ok(match op {
         Op::Stroke(input) => {
             let mut next = base.clone();
@@ -67,6 +63,13 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
 
 /// Processes the stroke in screen space and projects each point onto the plane through the
 /// camera target facing the camera.
+/// `base` with model `index` replaced.
+pub(super) fn with_model(base: &Document, (index, model): (usize, Model)) -> Outcome {
+    let mut next = base.clone();
+    next.models[index] = Arc::new(model);
+    Outcome::Document(next)
+}
+
 fn place_stroke(input: &StrokeInput) -> Result<SketchCurve, CommandError> {
     let viewport = input.viewport_size();
     let viewport_ok = viewport.is_finite() && viewport.x > 0.0 && viewport.y > 0.0;

@@ -39,17 +39,33 @@ fn halfedges(mesh: &Mesh) -> impl Iterator<Item = HalfedgeId> + use<> {
 }
 
 /// The uniform Laplacian: `L_ii = 1`, `L_ij = -1 / valence(i)` for neighbours `j`.
+///
+/// Built column by column from the one-rings (column `j` holds row `j` and the rows of `j`'s
+/// neighbours), so no triplets are sorted: large meshes build it several times faster.
 pub fn uniform_laplacian(mesh: &Mesh) -> SparseMatrix {
     let n = mesh.n_vertices();
-    let mut triplets = Triplets::with_capacity(n, n, n + 2 * mesh.n_halfedges());
+    let inverse_valence: Vec<f64> = mesh
+        .vertices()
+        .map(|v| 1.0 / mesh.valence(v) as f64)
+        .collect();
+    let mut col_ptr = Vec::with_capacity(n + 1);
+    col_ptr.push(0u32);
+    let mut rows = Vec::with_capacity(n + mesh.n_halfedges());
+    let mut values = Vec::with_capacity(n + mesh.n_halfedges());
+    let mut column = Vec::new();
     for v in mesh.vertices() {
-        let valence = mesh.valence(v) as f64;
-        triplets.push(v.index(), v.index(), 1.0);
-        for u in mesh.vertex_neighbors(v) {
-            triplets.push(v.index(), u.index(), -1.0 / valence);
-        }
+        column.clear();
+        column.push((v.0, 1.0));
+        column.extend(
+            mesh.vertex_neighbors(v)
+                .map(|u| (u.0, -inverse_valence[u.index()])),
+        );
+        column.sort_unstable_by_key(|&(row, _)| row);
+        rows.extend(column.iter().map(|&(row, _)| row));
+        values.extend(column.iter().map(|&(_, value)| value));
+        col_ptr.push(rows.len() as u32);
     }
-    triplets.build()
+    SparseMatrix::from_columns(n, col_ptr, rows, values)
 }
 
 /// The cotangent Laplacian `L` (unnormalised, symmetric, positive semi-definite): see the
@@ -70,18 +86,29 @@ pub fn cotan_laplacian(mesh: &Mesh) -> SparseMatrix {
     triplets.build()
 }
 
-/// The mean curvature normal `H n = M⁻¹ L x / 2` at every vertex, with mixed Voronoi areas.
-///
-/// On boundary vertices this is not a curvature: it also holds the boundary's own bending.
-pub fn mean_curvature_normals(mesh: &Mesh) -> Vec<DVec3> {
+/// The cotangent Laplacian applied to the positions, `Σ_j w_ij (v_i − v_j)`, and its
+/// diagonal `Σ_j w_ij`, at every vertex: what [`cotan_laplacian`] gives, without building
+/// the matrix.
+pub fn cotan_laplacian_coordinates(mesh: &Mesh) -> (Vec<DVec3>, Vec<f64>) {
     let mut laplacian = vec![DVec3::ZERO; mesh.n_vertices()];
+    let mut diagonal = vec![0.0; mesh.n_vertices()];
     for h in halfedges(mesh) {
         let w = half_cot_opposite(mesh, h);
         let (i, j) = (mesh.tail(h).index(), mesh.head(h).index());
         let difference = w * (mesh.positions()[i] - mesh.positions()[j]);
         laplacian[i] += difference;
         laplacian[j] -= difference;
+        diagonal[i] += w;
+        diagonal[j] += w;
     }
+    (laplacian, diagonal)
+}
+
+/// The mean curvature normal `H n = M⁻¹ L x / 2` at every vertex, with mixed Voronoi areas.
+///
+/// On boundary vertices this is not a curvature: it also holds the boundary's own bending.
+pub fn mean_curvature_normals(mesh: &Mesh) -> Vec<DVec3> {
+    let (laplacian, _) = cotan_laplacian_coordinates(mesh);
     let areas = vertex_areas(mesh);
     laplacian
         .iter()

@@ -19,7 +19,10 @@ pub use area::{
 };
 pub use bvh::Bvh;
 pub use closest::closest_point_on_triangle;
-pub use laplacian::{cotan_laplacian, mean_curvature, mean_curvature_normals, uniform_laplacian};
+pub use laplacian::{
+    cotan_laplacian, cotan_laplacian_coordinates, mean_curvature, mean_curvature_normals,
+    uniform_laplacian,
+};
 pub use normals::{
     face_normal, face_normals, vertex_normals, vertex_normals_into, vertex_normals_of,
 };

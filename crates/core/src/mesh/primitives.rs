@@ -104,10 +104,20 @@ pub fn grid(nx: usize, ny: usize, size: f64) -> Mesh {
             positions.push(origin + DVec3::new(i as f64 * cell, j as f64 * cell, 0.0));
         }
     }
-    let index = |i: usize, j: usize| (i + j * (nx + 1)) as u32;
-    let mut triangles = Vec::with_capacity(2 * nx * ny);
-    for j in 0..ny {
-        for i in 0..nx {
+    let triangles = quads(nx, ny, |i, j| (i + j * (nx + 1)) as u32);
+    mesh_from_valid_soup(&TriSoup {
+        positions,
+        triangles,
+    })
+}
+
+/// Two triangles for each cell `(i, j)` of an `ni × nj` grid of quads, corners taken
+/// counter-clockwise from `index(i, j)` through `index(i + 1, j)`; `index` names the grid
+/// point's vertex (wrapping, for closed surfaces).
+fn quads(ni: usize, nj: usize, index: impl Fn(usize, usize) -> u32) -> Vec<[u32; 3]> {
+    let mut triangles = Vec::with_capacity(2 * ni * nj);
+    for i in 0..ni {
+        for j in 0..nj {
             let (a, b, c, d) = (
                 index(i, j),
                 index(i + 1, j),
@@ -117,10 +127,7 @@ pub fn grid(nx: usize, ny: usize, size: f64) -> Mesh {
             triangles.extend([[a, b, c], [a, c, d]]);
         }
     }
-    mesh_from_valid_soup(&TriSoup {
-        positions,
-        triangles,
-    })
+    triangles
 }
 
 /// A torus around the z axis: tube centre at distance `major`, tube radius `minor`, with
@@ -136,20 +143,10 @@ pub fn torus(major: f64, minor: f64, n_major: usize, n_minor: usize) -> Mesh {
             positions.push(DVec3::new(ring * u.cos(), ring * u.sin(), minor * v.sin()));
         }
     }
-    let index = |i: usize, j: usize| ((i % n_major) * n_minor + j % n_minor) as u32;
-    let mut triangles = Vec::with_capacity(2 * n_major * n_minor);
-    for i in 0..n_major {
-        for j in 0..n_minor {
-            // d(position)/du x d(position)/dv points out of the tube, so this order is outward.
-            let (a, b, c, d) = (
-                index(i, j),
-                index(i + 1, j),
-                index(i + 1, j + 1),
-                index(i, j + 1),
-            );
-            triangles.extend([[a, b, c], [a, c, d]]);
-        }
-    }
+    // d(position)/du x d(position)/dv points out of the tube, so the quads' order is outward.
+    let triangles = quads(n_major, n_minor, |i, j| {
+        ((i % n_major) * n_minor + j % n_minor) as u32
+    });
     mesh_from_valid_soup(&TriSoup {
         positions,
         triangles,

@@ -22,11 +22,13 @@
 //! keep their place. [`quality`] measures the radius ratios and the Hausdorff distance.
 
 mod error;
+mod optimizer;
 pub mod quality;
 mod system;
 pub mod weights;
 
 pub use error::OptimizeError;
+pub use optimizer::Optimizer;
 pub use quality::{QualityReport, quality_report};
 
 use glam::DVec3;
@@ -111,23 +113,7 @@ impl Default for OptimizeParams {
 /// [`OptimizeError::Empty`] for a mesh without faces, [`OptimizeError::Solve`] when the
 /// factorization fails.
 pub fn optimize(mesh: &Mesh, params: &OptimizeParams) -> Result<Vec<DVec3>, OptimizeError> {
-    if !(params.scale.is_finite() && params.scale > 0.0) {
-        return Err(OptimizeError::InvalidScale(params.scale));
-    }
-    if mesh.n_faces() == 0 {
-        return Err(OptimizeError::Empty);
-    }
-    let rows = system::Rows::new(mesh, params);
-    let positions = if params.tangent_plane {
-        rows.solve_coupled(mesh)?
-    } else {
-        rows.solve_separable(mesh)?
-    };
-    if positions.iter().all(|p| p.is_finite()) {
-        Ok(positions)
-    } else {
-        Err(OptimizeError::NotFinite)
-    }
+    Optimizer::new(mesh, params)?.solve(params.scale)
 }
 
 #[cfg(test)]
@@ -261,6 +247,37 @@ mod tests {
     }
 
     /// A cube of side 1 tessellated into `n × n` quads per side, welded.
+    #[test]
+    fn a_rescaled_optimizer_gives_what_a_fresh_one_gives_bit_for_bit() {
+        let mut mesh = primitives::icosphere(1.0, 2);
+        for (i, p) in mesh.positions_mut().iter_mut().enumerate() {
+            *p *= 1.0 + 0.02 * jitter(i, 0);
+        }
+        for tangent_plane in [false, true] {
+            let params = OptimizeParams {
+                tangent_plane,
+                features: true,
+                ..OptimizeParams::default()
+            };
+            let mut optimizer = Optimizer::new(&mesh, &params).unwrap();
+            let first = optimizer.solve(1.0).unwrap();
+            for scale in [0.3, 2.5] {
+                let fresh = optimize(&mesh, &OptimizeParams { scale, ..params }).unwrap();
+                assert_eq!(optimizer.solve(scale).unwrap(), fresh);
+                assert!(optimizer.serves(&OptimizeParams {
+                    scale: 9.0,
+                    ..params
+                }));
+            }
+            assert_ne!(optimizer.solve(0.3).unwrap(), first);
+            assert!(!optimizer.serves(&OptimizeParams::default()));
+            assert_eq!(
+                optimizer.solve(-1.0),
+                Err(OptimizeError::InvalidScale(-1.0))
+            );
+        }
+    }
+
     fn fine_cube(n: usize) -> Mesh {
         let mut soup = crate::mesh::TriSoup::default();
         let mut index = std::collections::HashMap::new();

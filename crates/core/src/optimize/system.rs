@@ -1,5 +1,6 @@
-//! The rows of Eq. 6.11 for one mesh and setting, and their solves: per coordinate (x, y
-//! and z share one factorization), or coupled through the tangent-plane rows.
+//! The rows of Eq. 6.11 for one mesh and setting, with the scale `s` left open: every
+//! weight that `s` changes is `s` times a weight computed once, so a new `s` changes the
+//! values of the system but not its pattern (the factorization's analysis is kept).
 
 use glam::DVec3;
 
@@ -7,32 +8,37 @@ use super::weights::{
     curvature_magnitudes, feature_laplacian_weights, linear_weights, positional_weights,
     worst_radius_ratios,
 };
-use super::{LaplacianKind, Mode, OptimizeError, OptimizeParams};
-use crate::geometry::{cotan_laplacian, uniform_laplacian, vertex_areas, vertex_normals};
+use super::{LaplacianKind, Mode, OptimizeParams};
+use crate::geometry::{
+    cotan_laplacian, cotan_laplacian_coordinates, uniform_laplacian, vertex_areas, vertex_normals,
+};
 use crate::mesh::Mesh;
-use crate::solve::{Prefactored, SparseMatrix, Triplets, solve_least_squares};
+use crate::solve::{SparseMatrix, Triplets};
 
-/// `W_L L`, `W_L f` and `W_p` of Eq. 6.11, and the weight of the tangent-plane rows.
+/// `W_L L` and `W_L f` of Eq. 6.11, `W_p` at `s = 1`, and what the tangent-plane rows need.
 pub(super) struct Rows {
-    /// The Laplacian with each row scaled by its `W_L`.
+    /// The Laplacian with each row scaled by its `W_L` (which does not depend on `s`).
     laplacian: SparseMatrix,
     /// `W_L f`, per vertex.
     target: Vec<DVec3>,
-    /// `W_p`, per vertex.
+    /// `W_p` at `s = 1`, per vertex.
     positional: Vec<f64>,
-    /// The weight of each tangent-plane row (the scale `s`, so it matches the positional rows).
-    tangent_weight: f64,
+    /// The input positions, which the positional rows hold.
+    positions: Vec<DVec3>,
+    /// The input's vertex normals, when the tangent-plane rows are on.
+    normals: Option<Vec<DVec3>>,
 }
 
 impl Rows {
+    /// The rows for `mesh` and `params` (whose `scale` is ignored: see [`Rows::matrix`]).
     pub(super) fn new(mesh: &Mesh, params: &OptimizeParams) -> Rows {
         let kappa = curvature_magnitudes(mesh);
         let (mut positional, row_weights) = if params.features {
-            let linear = linear_weights(&kappa, params.scale);
-            let rows = feature_laplacian_weights(&linear, params.scale);
+            let linear = linear_weights(&kappa, 1.0);
+            let rows = feature_laplacian_weights(&linear, 1.0);
             (linear, rows)
         } else {
-            let weights = positional_weights(&kappa, params.weights, params.scale);
+            let weights = positional_weights(&kappa, params.weights, 1.0);
             (weights, vec![1.0; mesh.n_vertices()])
         };
         if params.quality {
@@ -48,75 +54,80 @@ impl Rows {
             ),
         };
         Rows {
-            laplacian: scale_rows(&laplacian, &row_weights),
+            laplacian: laplacian.scale_rows(&row_weights),
             target: target
                 .iter()
                 .zip(&row_weights)
                 .map(|(&f, &w)| f * w)
                 .collect(),
             positional,
-            tangent_weight: params.scale,
+            positions: mesh.positions().to_vec(),
+            normals: params.tangent_plane.then(|| vertex_normals(mesh)),
         }
     }
 
-    /// Solves x, y and z apart: `[W_L L; W_p] V' = [W_L f; W_p V]`.
-    pub(super) fn solve_separable(&self, mesh: &Mesh) -> Result<Vec<DVec3>, OptimizeError> {
-        let n = mesh.n_vertices();
-        let mut a = Triplets::with_capacity(2 * n, n, self.laplacian.nnz() + n);
-        a.push_matrix(&self.laplacian, 0, 0, 1.0);
-        for (i, &w) in self.positional.iter().enumerate() {
-            a.push(n + i, i, w);
-        }
-        let rhs: Vec<DVec3> = self
-            .target
-            .iter()
-            .copied()
-            .chain(
-                mesh.positions()
-                    .iter()
-                    .zip(&self.positional)
-                    .map(|(&p, &w)| p * w),
-            )
-            .collect();
-        let free = vec![false; n];
-        Ok(solve_least_squares(
-            &a.build(),
-            &rhs,
-            &free,
-            &vec![DVec3::ZERO; n],
-        )?)
+    /// Whether x, y and z are solved together (the tangent-plane rows couple them).
+    pub(super) fn is_coupled(&self) -> bool {
+        self.normals.is_some()
     }
 
-    /// Solves all coordinates at once with the tangent-plane rows `n_i · v'_i = n_i · v_i`
-    /// (Eq. 6.15): a `7n × 3n` system, unknown `3 i + d` for coordinate `d` of vertex `i`.
-    pub(super) fn solve_coupled(&self, mesh: &Mesh) -> Result<Vec<DVec3>, OptimizeError> {
-        let n = mesh.n_vertices();
-        let normals = vertex_normals(mesh);
+    /// The system matrix at `scale`; its pattern is the same for every scale.
+    ///
+    /// Separable: `[W_L L; s W_p]`, `2n × n`, shared by x, y and z. Coupled: the `7n × 3n`
+    /// system with unknown `3 i + d` for coordinate `d` of vertex `i`, whose last `n` rows
+    /// are the tangent-plane rows `s n_i · v'_i` (Eq. 6.15; weighted `s` to match the
+    /// positional rows).
+    pub(super) fn matrix(&self, scale: f64) -> SparseMatrix {
+        let n = self.positions.len();
+        let Some(normals) = &self.normals else {
+            let mut a = Triplets::with_capacity(2 * n, n, self.laplacian.nnz() + n);
+            a.push_matrix(&self.laplacian, 0, 0, 1.0);
+            for (i, &w) in self.positional.iter().enumerate() {
+                a.push(n + i, i, scale * w);
+            }
+            return a.build();
+        };
         let mut a = Triplets::with_capacity(7 * n, 3 * n, 3 * self.laplacian.nnz() + 6 * n);
-        let mut rhs = Vec::with_capacity(7 * n);
         for d in 0..3 {
             push_block(&mut a, &self.laplacian, d * n, d, 3);
+            for (i, &w) in self.positional.iter().enumerate() {
+                a.push(3 * n + d * n + i, 3 * i + d, scale * w);
+            }
+        }
+        for (i, normal) in normals.iter().enumerate() {
+            for d in 0..3 {
+                a.push(6 * n + i, 3 * i + d, scale * normal[d]);
+            }
+        }
+        a.build()
+    }
+
+    /// The right-hand side at `scale` of the separable system: `[W_L f; s W_p V]`.
+    pub(super) fn rhs(&self, scale: f64) -> Vec<DVec3> {
+        let held = self.positions.iter().zip(&self.positional);
+        (self.target.iter().copied())
+            .chain(held.map(|(&p, &w)| p * (scale * w)))
+            .collect()
+    }
+
+    /// The right-hand side at `scale` of the coupled system, in the rows of [`Rows::matrix`].
+    pub(super) fn coupled_rhs(&self, scale: f64) -> Vec<f64> {
+        let n = self.positions.len();
+        let mut rhs = Vec::with_capacity(7 * n);
+        for d in 0..3 {
             rhs.extend(self.target.iter().map(|f| f[d]));
         }
         for d in 0..3 {
-            for (i, (&w, p)) in self.positional.iter().zip(mesh.positions()).enumerate() {
-                a.push(3 * n + d * n + i, 3 * i + d, w);
-                rhs.push(w * p[d]);
-            }
+            let held = self.positions.iter().zip(&self.positional);
+            rhs.extend(held.map(|(p, &w)| scale * w * p[d]));
         }
-        for (i, (normal, p)) in normals.iter().zip(mesh.positions()).enumerate() {
-            let w = self.tangent_weight;
-            for d in 0..3 {
-                a.push(6 * n + i, 3 * i + d, w * normal[d]);
-            }
-            rhs.push(w * normal.dot(*p));
-        }
-        let mut solver = Prefactored::new(&a.build(), &vec![false; 3 * n])?;
-        let mut x = vec![0.0; 3 * n];
-        solver.solve_scalar(&rhs, &vec![0.0; 3 * n], &mut x)?;
-        Ok(x.chunks_exact(3)
-            .map(|c| DVec3::new(c[0], c[1], c[2]))
-            .collect())
+        let normals = self.normals.iter().flatten();
+        rhs.extend(
+            normals
+                .zip(&self.positions)
+                .map(|(normal, p)| scale * normal.dot(*p)),
+        );
+        rhs
     }
 }
 
@@ -125,64 +136,57 @@ impl Rows {
 /// cotangents sum to nothing (degenerate fans) the uniform coordinate stands in, which
 /// asks for no change.
 fn cotan_coordinates(mesh: &Mesh) -> Vec<DVec3> {
-    let cotan = normalized_rows(&cotan_laplacian(mesh), |_, diagonal| diagonal, mesh);
-    let mut out = vec![DVec3::ZERO; mesh.n_vertices()];
-    cotan.mul_dvec3(mesh.positions(), &mut out);
-    out
+    let (laplacian, diagonal) = cotan_laplacian_coordinates(mesh);
+    let is_usable = usable_divisors(&diagonal);
+    mesh.vertices()
+        .map(|v| {
+            let i = v.index();
+            if is_usable[i] {
+                laplacian[i] / diagonal[i]
+            } else {
+                let ring: DVec3 = mesh.vertex_neighbors(v).map(|u| mesh.position(u)).sum();
+                mesh.position(v) - ring / mesh.valence(v) as f64
+            }
+        })
+        .collect()
 }
 
 /// The Laplacian smoothing uses: uniform, normalized cotangent or `M⁻¹` times the cotangent
 /// one (its rows are `κ̄ n`, Eq. 6.7, up to the factor 2).
 fn smoothing_laplacian(mesh: &Mesh, kind: LaplacianKind) -> SparseMatrix {
-    match kind {
-        LaplacianKind::Uniform => uniform_laplacian(mesh),
-        LaplacianKind::Cotan => {
-            normalized_rows(&cotan_laplacian(mesh), |_, diagonal| diagonal, mesh)
-        }
-        LaplacianKind::CotanCurvature => {
-            let areas = vertex_areas(mesh);
-            normalized_rows(&cotan_laplacian(mesh), |i, _| areas[i], mesh)
-        }
-    }
+    let divisors = match kind {
+        LaplacianKind::Uniform => return uniform_laplacian(mesh),
+        LaplacianKind::Cotan => cotan_laplacian_coordinates(mesh).1,
+        LaplacianKind::CotanCurvature => vertex_areas(mesh),
+    };
+    normalized_rows(&cotan_laplacian(mesh), &divisors, mesh)
 }
 
-/// `cotan` with row `i` divided by `divisor(i, L_ii)`; rows whose divisor is not positive
-/// (no area, cotangents that cancel) become uniform Laplacian rows.
-fn normalized_rows(
-    cotan: &SparseMatrix,
-    divisor: impl Fn(usize, f64) -> f64,
-    mesh: &Mesh,
-) -> SparseMatrix {
-    let n = cotan.nrows();
-    let divisors: Vec<f64> = (0..n).map(|i| divisor(i, cotan.get(i, i))).collect();
+/// Whether each divisor is large enough to divide by: positive, and not vanishing next to
+/// the largest one (no area, cotangents that cancel).
+fn usable_divisors(divisors: &[f64]) -> Vec<bool> {
     let largest = divisors.iter().fold(0.0f64, |m, d| m.max(d.abs()));
-    let is_usable = |i: usize| divisors[i] > 1e-12 * largest;
-    let uniform = uniform_laplacian(mesh);
-    let mut out = Triplets::with_capacity(n, n, cotan.nnz());
-    for col in 0..n {
-        for (row, value) in cotan.column(col) {
-            if is_usable(row) {
-                out.push(row, col, value / divisors[row]);
-            }
-        }
-        for (row, value) in uniform.column(col) {
-            if !is_usable(row) {
-                out.push(row, col, value);
-            }
-        }
-    }
-    out.build()
+    divisors.iter().map(|&d| d > 1e-12 * largest).collect()
 }
 
-/// `matrix` with row `i` multiplied by `weights[i]`.
-fn scale_rows(matrix: &SparseMatrix, weights: &[f64]) -> SparseMatrix {
-    let mut out = Triplets::with_capacity(matrix.nrows(), matrix.ncols(), matrix.nnz());
-    for col in 0..matrix.ncols() {
-        for (row, value) in matrix.column(col) {
-            out.push(row, col, weights[row] * value);
-        }
+/// `cotan` with row `i` divided by `divisors[i]`; rows whose divisor is not usable become
+/// uniform Laplacian rows. Both Laplacians store every edge and the diagonal, so the result
+/// keeps their common pattern.
+fn normalized_rows(cotan: &SparseMatrix, divisors: &[f64], mesh: &Mesh) -> SparseMatrix {
+    let uniform = uniform_laplacian(mesh);
+    debug_assert!(uniform.has_same_pattern(cotan));
+    let is_usable = usable_divisors(divisors);
+    let mut out = cotan.clone();
+    let entries = out.values_mut().iter_mut().zip(uniform.values());
+    for ((value, &uniform), &row) in entries.zip(cotan.row_indices()) {
+        let row = row as usize;
+        *value = if is_usable[row] {
+            *value / divisors[row]
+        } else {
+            uniform
+        };
     }
-    out.build()
+    out
 }
 
 /// Copies `block` into `a` at row offset `row0`, its column `j` going to column

@@ -29,10 +29,31 @@ impl SparseMatrix {
     /// A square diagonal matrix (zeros on the diagonal are stored).
     pub fn diagonal(values: &[f64]) -> SparseMatrix {
         let n = values.len();
-        let indices: Vec<u32> = (0..n as u32).collect();
         let col_ptr = (0..=n as u32).collect();
-        let symbolic = SymbolicSparseColMat::new_checked(n, n, col_ptr, None, indices);
-        SparseMatrix::from_faer(SparseColMat::new(symbolic, values.to_vec()))
+        SparseMatrix::from_columns(n, col_ptr, (0..n as u32).collect(), values.to_vec())
+    }
+
+    /// An `nrows × (col_ptr.len() − 1)` matrix from compressed columns: column `j` holds
+    /// `rows[col_ptr[j]..col_ptr[j + 1]]`, strictly increasing, with their `values`.
+    pub fn from_columns(
+        nrows: usize,
+        col_ptr: Vec<u32>,
+        rows: Vec<u32>,
+        values: Vec<f64>,
+    ) -> SparseMatrix {
+        let ncols = col_ptr.len() - 1;
+        let symbolic = SymbolicSparseColMat::new_checked(nrows, ncols, col_ptr, None, rows);
+        SparseMatrix::from_faer(SparseColMat::new(symbolic, values))
+    }
+
+    /// This matrix with row `i` multiplied by `weights[i]`: same pattern, new values.
+    pub fn scale_rows(&self, weights: &[f64]) -> SparseMatrix {
+        let mut out = self.clone();
+        let rows = self.inner.symbolic().row_idx();
+        for (value, &row) in out.values_mut().iter_mut().zip(rows) {
+            *value *= weights[row as usize];
+        }
+        out
     }
 
     /// Number of rows.

@@ -8,9 +8,11 @@ use std::f64::consts::TAU;
 
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
+use sketchmesh_core::document::OptimizeInput;
 use sketchmesh_core::document::{
     AddCurveInput, CommandError, Editor, Op, OversketchFit, OversketchInput, Progress, StrokeInput,
 };
+use sketchmesh_core::optimize::{Mode, OptimizeParams};
 use sketchmesh_core::oversketch::OversketchRoi;
 
 const VIEWPORT: [f64; 2] = [800.0, 600.0];
@@ -226,6 +228,58 @@ fn gestures_preview_without_changing_the_document() {
     assert_eq!(edit.document(), &before);
     edit.cancel();
     assert_eq!(editor.document(), &before);
+}
+
+#[test]
+fn an_optimization_previews_each_setting_and_commits_the_last_without_solving_again() {
+    let mut editor = Editor::new();
+    editor.apply(session()[1](&editor)).unwrap();
+    let before = editor.document().clone();
+    let op = |scale: f64, mode: Mode| {
+        Op::Optimize(OptimizeInput {
+            model: 0,
+            settings: OptimizeParams {
+                mode,
+                scale,
+                ..OptimizeParams::default()
+            },
+        })
+    };
+    let mut edit = editor.begin_gesture(op(1.0, Mode::Smooth)).unwrap();
+    let rest = before.models[0].mesh.positions();
+    assert_eq!(edit.moved_model(), Some((0, rest)), "the model as it is");
+    assert_eq!(edit.step().unwrap(), Progress::Waiting);
+    let at_one = edit.moved_model().unwrap().1.to_vec();
+    assert_ne!(at_one, rest);
+    let generation = edit.generation();
+    assert_eq!(edit.step().unwrap(), Progress::Waiting);
+    assert_eq!(edit.generation(), generation, "nothing new to solve");
+    // The slider, then the mode: each is one step.
+    for revised in [op(0.2, Mode::Smooth), op(0.5, Mode::Shape)] {
+        edit.revise(revised);
+        assert_eq!(edit.step().unwrap(), Progress::Waiting);
+    }
+    edit.revise(Op::Undo);
+    assert_eq!(
+        edit.op(),
+        &op(0.5, Mode::Shape),
+        "another kind of op is ignored"
+    );
+    let previewed = edit.moved_model().unwrap().1.to_vec();
+    assert_eq!((edit.document(), edit.revision()), (&before, 0));
+    edit.end_gesture();
+    assert_eq!(
+        edit.step().unwrap(),
+        Progress::Done,
+        "the preview is the result"
+    );
+    edit.finish(&mut editor).unwrap();
+    assert_eq!(editor.document().models[0].mesh.positions(), previewed);
+    let mut applied = Editor::new();
+    applied.apply(session()[1](&applied)).unwrap();
+    applied.apply(op(0.5, Mode::Shape)).unwrap();
+    assert_eq!(applied.document(), editor.document());
+    assert_eq!(applied.session_json(), editor.session_json());
 }
 
 #[test]

@@ -1,0 +1,102 @@
+//! An optimization held open while its scale changes (the app's slider): the system is
+//! analysed and factored once; a new scale changes only the values of the positional and
+//! tangent-plane rows, so it costs a numeric refactorization on the kept analysis (AMD
+//! ordering, elimination tree, normal-matrix pattern) and a back-substitution, and gives
+//! bit for bit what a fresh [`optimize`](super::optimize) at that scale gives.
+
+use glam::DVec3;
+
+use super::system::Rows;
+use super::{OptimizeError, OptimizeParams};
+use crate::mesh::Mesh;
+use crate::solve::Prefactored;
+
+/// One mesh's optimization with its factorization, ready to solve at any scale.
+pub struct Optimizer {
+    /// The settings; `scale` is the one the factorization is for.
+    params: OptimizeParams,
+    rows: Rows,
+    solver: Prefactored,
+}
+
+impl std::fmt::Debug for Optimizer {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Optimizer")
+            .field("params", &self.params)
+            .finish_non_exhaustive()
+    }
+}
+
+impl Optimizer {
+    /// Builds and factors the system of `mesh` with `params`.
+    ///
+    /// Errors: [`OptimizeError::InvalidScale`], [`OptimizeError::Empty`], or the solver's.
+    pub fn new(mesh: &Mesh, params: &OptimizeParams) -> Result<Optimizer, OptimizeError> {
+        check_scale(params.scale)?;
+        if mesh.n_faces() == 0 {
+            return Err(OptimizeError::Empty);
+        }
+        let rows = Rows::new(mesh, params);
+        let a = rows.matrix(params.scale);
+        let solver = Prefactored::new(&a, &vec![false; a.ncols()])?;
+        Ok(Optimizer {
+            params: *params,
+            rows,
+            solver,
+        })
+    }
+
+    /// The settings, with the scale last solved at.
+    pub fn params(&self) -> &OptimizeParams {
+        &self.params
+    }
+
+    /// Whether `params` differ from this optimizer's at most in the scale, so that
+    /// [`Optimizer::solve`] serves them.
+    pub fn serves(&self, params: &OptimizeParams) -> bool {
+        OptimizeParams {
+            scale: self.params.scale,
+            ..*params
+        } == self.params
+    }
+
+    /// The optimized positions at `scale`, refactoring first when the scale changed (on a
+    /// failed refactorization the previous one is kept).
+    ///
+    /// Errors: [`OptimizeError::InvalidScale`], the solver's, or
+    /// [`OptimizeError::NotFinite`].
+    pub fn solve(&mut self, scale: f64) -> Result<Vec<DVec3>, OptimizeError> {
+        check_scale(scale)?;
+        if scale != self.params.scale {
+            self.solver.refactor_values(&self.rows.matrix(scale))?;
+            self.params.scale = scale;
+        }
+        let n = self.solver.n_unknowns();
+        let positions = if self.rows.is_coupled() {
+            let mut x = vec![0.0; n];
+            let rhs = self.rows.coupled_rhs(scale);
+            self.solver.solve_scalar(&rhs, &vec![0.0; n], &mut x)?;
+            x.chunks_exact(3)
+                .map(|c| DVec3::new(c[0], c[1], c[2]))
+                .collect()
+        } else {
+            let mut x = vec![DVec3::ZERO; n];
+            let rhs = self.rows.rhs(scale);
+            self.solver.solve(&rhs, &vec![DVec3::ZERO; n], &mut x)?;
+            x
+        };
+        if positions.iter().all(|p| p.is_finite()) {
+            Ok(positions)
+        } else {
+            Err(OptimizeError::NotFinite)
+        }
+    }
+}
+
+fn check_scale(scale: f64) -> Result<(), OptimizeError> {
+    if scale.is_finite() && scale > 0.0 {
+        Ok(())
+    } else {
+        Err(OptimizeError::InvalidScale(scale))
+    }
+}

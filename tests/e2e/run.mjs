@@ -613,6 +613,57 @@ test('curve tools with the pen: pull (live preview), add a curve, make it sharp,
   }
 });
 
+test('optimize (M): a tap previews the shape optimized, Esc drops it, Enter commits one op, undo restores', async () => {
+  const fresh = await openApp(browser, url, gpu);
+  try {
+    const c = ELLIPSE.c;
+    await penStroke(fresh.cdp, onEllipse());
+    const created = await until(() => api(fresh.page, 'stats'), (s) => s.models === 1, 15_000);
+    assert.equal(created.models, 1, 'the outline made a shape');
+    const lastOp = () => api(fresh.page, 'session').then((json) => JSON.parse(json).ops.at(-1) ?? {});
+    const glb = () => fresh.page.evaluate(() => Array.from(window.sketchmesh.exportGlb()));
+    await until(lastOp, (o) => o.op === 'create', 15_000);
+    const original = await glb();
+    // Wireframe on, so that moved vertices show as moved lines.
+    await fresh.page.keyboard.press('m');
+    await fresh.page.keyboard.press('w');
+    await frames(fresh.page, 3);
+    const before = await screenshot(fresh.page, out('optimize-before.png'));
+    const tap = async () => {
+      await penStroke(fresh.cdp, [{ x: c.x + 40, y: c.y, force: 0.5 }, { x: c.x + 40, y: c.y, force: 0.5 }]);
+      await frames(fresh.page, 6);
+    };
+    await tap();
+    const preview = await screenshot(fresh.page, out('optimize-preview.png'));
+    const moved = imageChangedFraction(before, preview);
+    console.log(`    the preview changed ${(100 * moved).toFixed(2)}% of the pixels`);
+    assert.ok(moved > 0.002, `the preview moves the wireframe (${moved})`);
+    assert.equal((await lastOp()).op, 'create', 'a preview is not an op');
+    await fresh.page.keyboard.press('Escape');
+    await frames(fresh.page, 3);
+    const dropped = await screenshot(fresh.page, out('optimize-dropped.png'));
+    assert.ok(imageChangedFraction(before, dropped) < 0.001, 'Esc shows the shape as it was');
+    assert.deepEqual(await glb(), original, 'Esc changes nothing');
+    await tap();
+    await fresh.page.keyboard.press('Enter');
+    const op = await until(lastOp, (o) => o.op === 'optimize', 10_000);
+    assert.equal(op.op, 'optimize', 'Enter commits an optimize op');
+    assert.equal(op.model, 0);
+    assert.equal(op.mode, 'shape');
+    assert.deepEqual(await api(fresh.page, 'stats'), created, 'same vertices, triangles and curves');
+    assert.notDeepEqual(await glb(), original, 'the committed positions differ');
+    await frames(fresh.page, 3);
+    const committed = await screenshot(fresh.page, out('optimize.png'));
+    assert.ok(imageChangedFraction(preview, committed) < 0.001, 'the committed shape is the preview');
+    await fresh.page.keyboard.press('Control+z');
+    await frames(fresh.page, 3);
+    assert.deepEqual(await glb(), original, 'undo restores the shape bit for bit');
+    assert.deepEqual(fresh.errors, [], 'console errors while optimizing');
+  } finally {
+    await fresh.context.close();
+  }
+});
+
 const failed = await runAll();
 clearTimeout(watchdog);
 await browser.close();

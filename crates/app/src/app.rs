@@ -15,6 +15,7 @@ use eframe::egui_wgpu;
 use egui::{Key, KeyboardShortcut, Modifiers};
 use sketchmesh_core::curve::{StrokePoint, process_stroke};
 use sketchmesh_core::document::{Edit, Editor, ImportInput, Op, Progress};
+use sketchmesh_core::optimize::quality_report;
 use sketchmesh_core::oversketch::OversketchRoi;
 
 use crate::camera::OrbitCamera;
@@ -216,14 +217,49 @@ impl SketchApp {
         let Some(edit) = self.edit.take() else {
             return;
         };
+        let optimized = match edit.op() {
+            Op::Optimize(input) => self
+                .shared
+                .borrow()
+                .editor
+                .document()
+                .models
+                .get(input.model)
+                .cloned()
+                .map(|m| (input.model, m)),
+            _ => None,
+        };
         let started = clock::now_ms();
         let result = edit.finish(&mut self.shared.borrow_mut().editor);
         let ms = clock::now_ms() - started;
         self.edit_clock
             .finished(ms, &mut self.shared.borrow_mut().timings);
-        if let Err(e) = result {
-            self.set_status(e.to_string(), now);
+        match (result, optimized) {
+            (Err(e), _) => self.set_status(e.to_string(), now),
+            (Ok(()), Some((index, before))) => {
+                let after = Arc::clone(&self.shared.borrow().editor.document().models[index]);
+                let report = quality_report(&before.mesh, after.mesh.positions());
+                self.set_status(report.summary(), now);
+            }
+            (Ok(()), None) => {}
         }
+    }
+
+    /// Undo: drops a gesture in progress (a drag, an open preview) if there is one, else
+    /// undoes the last op.
+    fn undo(&mut self, now: f64) {
+        if self.edit.as_ref().is_some_and(Edit::is_gesture) {
+            self.drop_gesture(now);
+        } else {
+            self.begin(Op::Undo, false, now);
+        }
+    }
+
+    /// Drops the gesture in progress and the tool's part of it (Esc): nothing changes.
+    fn drop_gesture(&mut self, now: f64) {
+        self.cancel_gesture();
+        let dropped = self.tools.cancel();
+        self.take_output(dropped, now);
     }
 
     /// Drops the edit in progress if its gesture is still going on: nothing changes.
@@ -351,7 +387,7 @@ impl SketchApp {
             self.begin(Op::Redo, false, now);
         }
         if ctx.input_mut(|i| i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::Z))) {
-            self.begin(Op::Undo, false, now);
+            self.undo(now);
         }
         if ctx.input_mut(|i| i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::O))) {
             self.import_files(ctx);
@@ -364,6 +400,13 @@ impl SketchApp {
             self.export(now);
         }
         let pressed = |key| ctx.input_mut(|i| i.consume_shortcut(&shortcut(Modifiers::NONE, key)));
+        if pressed(Key::Enter) {
+            let confirmed = self.tools.confirm();
+            self.take_output(confirmed, now);
+        }
+        if pressed(Key::Escape) {
+            self.drop_gesture(now);
+        }
         if pressed(Key::F) {
             self.frame_all();
         }
@@ -648,7 +691,7 @@ impl eframe::App for SketchApp {
             })
             .inner;
         match action {
-            Some(panels::toolbar::Action::Undo) => self.begin(Op::Undo, false, now),
+            Some(panels::toolbar::Action::Undo) => self.undo(now),
             Some(panels::toolbar::Action::Redo) => self.begin(Op::Redo, false, now),
             Some(panels::toolbar::Action::FrameAll) => self.frame_all(),
             Some(panels::toolbar::Action::ResetView) => {

@@ -2,7 +2,8 @@
 //! system, one sparse factorization, the solves) on scans of the shared test data and on a
 //! subdivided sphere of 164k vertices, near the thesis's 17k and 173k (Fig. 6.5, §6.7).
 //!
-//! `optimize_rescale` is the app's slider: a kept [`Optimizer`] at a new scale.
+//! `optimize_rescale` is the exact result at a new scale on a kept [`Optimizer`] (what Apply
+//! costs after the slider moved); `optimize_preview_step` is one step of the slider's preview.
 //!
 //! `cargo bench -p sketchmesh-core --bench optimize`. The scans come from
 //! `../shared/testdata`; without it the bench says so and runs the generated mesh only.
@@ -62,6 +63,24 @@ fn bench_optimize(c: &mut Criterion) {
             b.iter(|| {
                 scale = if scale == 1.0 { 0.5 } else { 1.0 };
                 optimizer.solve(black_box(scale)).expect("solves")
+            });
+        });
+    }
+    group.finish();
+    // A preview step of the slider: a conjugate-gradient iteration toward a new scale,
+    // preconditioned by the kept factorization (each call starts toward another scale, so it
+    // also sets the iteration up: the most a step costs).
+    let mut group = c.benchmark_group("optimize_preview_step");
+    group.sample_size(20);
+    for (name, mesh) in &cases {
+        let id = BenchmarkId::from_parameter(format!("{name}_{}", mesh.n_vertices()));
+        let mut optimizer = Optimizer::new(mesh, &OptimizeParams::default()).expect("factors");
+        let mut shown = optimizer.solve(1.0).expect("solves");
+        let mut scale = 0.5;
+        group.bench_function(id, |b| {
+            b.iter(|| {
+                scale = if scale == 0.5 { 0.6 } else { 0.5 };
+                optimizer.refine(black_box(scale), &mut shown).expect("solves")
             });
         });
     }

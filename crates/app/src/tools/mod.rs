@@ -68,6 +68,14 @@ impl ToolSet {
         self.optimize.settings_ui(ui)
     }
 
+    /// Confirms what the active tool holds open (Enter): an optimization's preview.
+    pub fn confirm(&mut self) -> ToolOutput {
+        match self.mode {
+            Mode::Optimize => self.optimize.confirm(),
+            _ => ToolOutput::None,
+        }
+    }
+
     /// What the active tool asks the user to do next, if anything.
     pub fn hint(&self) -> Option<&'static str> {
         match self.mode {

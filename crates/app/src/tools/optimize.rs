@@ -56,6 +56,14 @@ impl OptimizeTool {
         })
     }
 
+    /// Applies the open preview, if any.
+    pub fn confirm(&mut self) -> ToolOutput {
+        match self.model.take() {
+            Some(_) => ToolOutput::Finish,
+            None => ToolOutput::None,
+        }
+    }
+
     /// Forgets the open preview (the app cancels its edit).
     pub fn cancel(&mut self) {
         self.draw = DrawTool::Idle;
@@ -153,18 +161,17 @@ impl OptimizeTool {
         };
         if ui
             .button("Apply")
-            .on_hover_text("Keep this result: one undo step")
+            .on_hover_text("Keep this result: one undo step (Enter)")
             .clicked()
         {
-            self.model = None;
-            return ToolOutput::Finish;
+            return self.confirm();
         }
         if ui
             .button("Cancel")
-            .on_hover_text("Leave the model as it was")
+            .on_hover_text("Leave the model as it was (Esc)")
             .clicked()
         {
-            self.model = None;
+            self.cancel();
             return ToolOutput::Cancel;
         }
         if self.settings == before {

@@ -276,9 +276,9 @@ impl Edit {
                 self.work = Work::Done(outcome(base, op)?);
                 Ok((Progress::Done, true))
             }
-            // A gesture ended on settings its optimization preview solved: that is the result.
+            // An optimization's gesture ended: its kept optimizer gives the exact result.
             Work::Optimize(preview) => {
-                let Some(model) = optimized(preview, base, op) else {
+                let Some(model) = optimized(preview, base, op)? else {
                     self.work = Work::complete(base, op)?;
                     return Ok((Progress::Working, true));
                 };
@@ -403,15 +403,19 @@ impl Edit {
     }
 }
 
-/// Whether two documents hold the very same models, sketches and point clouds.
-/// The committed model of an optimization whose preview solved exactly `op`.
-fn optimized(preview: &OptimizePreview, base: &Document, op: &Op) -> Option<(usize, super::Model)> {
+/// The committed model of an optimization, computed by its preview's kept optimizer.
+fn optimized(
+    preview: &mut OptimizePreview,
+    base: &Document,
+    op: &Op,
+) -> Result<Option<(usize, super::Model)>, CommandError> {
     match op {
-        Op::Optimize(input) => preview.result(base, input),
-        _ => None,
+        Op::Optimize(input) => preview.result(base, input).map(Some),
+        _ => Ok(None),
     }
 }
 
+/// Whether two documents hold the very same models, sketches and point clouds.
 fn same_document(a: &Document, b: &Document) -> bool {
     fn same<T>(a: &[std::sync::Arc<T>], b: &[std::sync::Arc<T>]) -> bool {
         a.len() == b.len() && a.iter().zip(b).all(|(x, y)| std::sync::Arc::ptr_eq(x, y))

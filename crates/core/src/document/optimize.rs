@@ -1,11 +1,12 @@
 //! The `optimize` op: Laplacian mesh optimization of one model ([`crate::optimize`]), and
 //! its live preview while the user tunes the settings.
 //!
-//! The preview keeps an [`Optimizer`]: a new scale (the slider) refactors numerically on
-//! the kept analysis and back-substitutes; other settings build a new one. When the gesture
-//! ends at settings the preview has solved, its positions are the committed result: they
-//! are bit for bit what [`optimize_op`] computes (see [`Optimizer`]), so the commit costs
-//! nothing and replay gives the same document.
+//! The preview keeps an [`Optimizer`]: a new scale (the slider) is approached by conjugate
+//! gradients preconditioned with the kept factorization, one iteration per step, so the view
+//! follows the slider without a frame spent refactoring; other settings build a new one.
+//! When the gesture ends, the kept optimizer computes the exact result (a numeric
+//! refactorization at the final scale, if it changed): bit for bit what [`optimize_op`]
+//! computes (see [`Optimizer`]), so replay gives the same document.
 
 use glam::DVec3;
 
@@ -27,8 +28,11 @@ pub(super) fn optimize_op(
 /// A live optimization of one model: what it shows and the optimizer behind it.
 #[derive(Debug)]
 pub(super) struct OptimizePreview {
-    /// The settings the shown positions were solved with, once solved.
+    /// The settings the shown positions are solved for, once solved (exactly, or to the
+    /// refinement's tolerance).
     solved: Option<OptimizeInput>,
+    /// The model the optimizer was built for.
+    model: usize,
     optimizer: Option<Optimizer>,
     /// The model's positions as optimized (its own until the first step).
     shown: Vec<DVec3>,
@@ -41,14 +45,15 @@ impl OptimizePreview {
     pub(super) fn start(base: &Document, input: &OptimizeInput) -> Result<Self, CommandError> {
         Ok(OptimizePreview {
             solved: None,
+            model: input.model,
             optimizer: None,
             shown: target(base, input.model)?.mesh.positions().to_vec(),
         })
     }
 
-    /// Solves for `input` unless it is what is shown: `None` when nothing changed,
-    /// `Some(false)` when the preview was brought up to date (one step, however far the
-    /// settings moved).
+    /// Brings what is shown closer to `input`'s result: `None` when it is there already,
+    /// `Some(true)` after a step that is not there yet (an iteration toward a new scale),
+    /// `Some(false)` after the step that got there.
     ///
     /// Errors: [`CommandError::NoSuchModel`], or the optimization's refusal (the edit then
     /// repeats it; the document is untouched).
@@ -60,27 +65,53 @@ impl OptimizePreview {
         if self.solved.as_ref() == Some(input) {
             return Ok(None);
         }
-        let mesh = &target(base, input.model)?.mesh;
-        let same_model = self.solved.as_ref().is_some_and(|s| s.model == input.model);
-        let optimizer = match &mut self.optimizer {
-            Some(optimizer) if same_model && optimizer.serves(&input.settings) => optimizer,
-            kept => kept.insert(Optimizer::new(mesh, &input.settings)?),
+        let is_there = match optimizer_for(&mut self.optimizer, &mut self.model, base, input)? {
+            (optimizer, true) => optimizer.refine(input.settings.scale, &mut self.shown)?,
+            (optimizer, false) => {
+                self.shown = optimizer.solve(input.settings.scale)?;
+                true
+            }
         };
-        self.shown = optimizer.solve(input.settings.scale)?;
-        self.solved = Some(input.clone());
-        Ok(Some(false))
+        if is_there {
+            self.solved = Some(input.clone());
+        }
+        Ok(Some(!is_there))
+    }
+
+    /// The committed result of `input`: exact, from the kept optimizer when it serves.
+    ///
+    /// Errors: [`CommandError::NoSuchModel`], or the optimization's refusal.
+    pub(super) fn result(
+        &mut self,
+        base: &Document,
+        input: &OptimizeInput,
+    ) -> Result<(usize, Model), CommandError> {
+        let (optimizer, _) = optimizer_for(&mut self.optimizer, &mut self.model, base, input)?;
+        let positions = optimizer.solve(input.settings.scale)?;
+        Ok((input.model, with_positions(base, input.model, &positions)))
     }
 
     /// The model shown and its positions.
     pub(super) fn moved(&self, input: &OptimizeInput) -> (usize, &[DVec3]) {
         (input.model, &self.shown)
     }
+}
 
-    /// The committed result when the preview has solved exactly `input`.
-    pub(super) fn result(&self, base: &Document, input: &OptimizeInput) -> Option<(usize, Model)> {
-        (self.solved.as_ref() == Some(input))
-            .then(|| (input.model, with_positions(base, input.model, &self.shown)))
-    }
+/// The optimizer in `slot` if it was built for `model` and serves `input` (and whether it
+/// was kept), else a new one for `input`, recorded in `slot` and `model`.
+fn optimizer_for<'a>(
+    slot: &'a mut Option<Optimizer>,
+    model: &mut usize,
+    base: &Document,
+    input: &OptimizeInput,
+) -> Result<(&'a mut Optimizer, bool), CommandError> {
+    let mesh = &target(base, input.model)?.mesh;
+    let keep = *model == input.model && slot.as_ref().is_some_and(|o| o.serves(&input.settings));
+    *model = input.model;
+    Ok(match (slot, keep) {
+        (Some(kept), true) => (kept, true),
+        (slot, _) => (slot.insert(Optimizer::new(mesh, &input.settings)?), false),
+    })
 }
 
 fn target(doc: &Document, index: usize) -> Result<&Model, CommandError> {

@@ -24,6 +24,7 @@
 mod error;
 mod optimizer;
 pub mod quality;
+mod refine;
 mod system;
 pub mod weights;
 
@@ -276,6 +277,54 @@ mod tests {
                 Err(OptimizeError::InvalidScale(-1.0))
             );
         }
+    }
+
+    #[test]
+    fn refining_toward_a_new_scale_converges_to_the_exact_solution() {
+        let mut mesh = primitives::icosphere(1.0, 3);
+        for (i, p) in mesh.positions_mut().iter_mut().enumerate() {
+            *p *= 1.0 + 0.02 * jitter(i, 0);
+        }
+        let params = OptimizeParams {
+            mode: Mode::Smooth,
+            ..OptimizeParams::default()
+        };
+        let mut optimizer = Optimizer::new(&mesh, &params).unwrap();
+        let mut shown = optimizer.solve(1.0).unwrap();
+        for scale in [0.5, 0.2, 0.8] {
+            let mut calls = 1;
+            while !optimizer.refine(scale, &mut shown).unwrap() {
+                calls += 1;
+            }
+            let exact = optimize(&mesh, &OptimizeParams { scale, ..params }).unwrap();
+            let error = shown
+                .iter()
+                .zip(&exact)
+                .map(|(a, b)| a.distance(*b))
+                .fold(0.0, f64::max);
+            assert!(error < 1e-5, "scale {scale}: {error} after {calls} calls");
+            assert!(calls < 40, "scale {scale}: {calls} iterations");
+        }
+        // The factored scale and the coupled system are solved exactly at once.
+        assert!(optimizer.refine(1.0, &mut shown).unwrap());
+        assert_eq!(shown, optimizer.solve(1.0).unwrap());
+        let coupled = OptimizeParams {
+            tangent_plane: true,
+            ..OptimizeParams::default()
+        };
+        let mut optimizer = Optimizer::new(&mesh, &coupled).unwrap();
+        assert!(optimizer.refine(0.5, &mut shown).unwrap());
+        assert_eq!(
+            shown,
+            optimize(
+                &mesh,
+                &OptimizeParams {
+                    scale: 0.5,
+                    ..coupled
+                }
+            )
+            .unwrap()
+        );
     }
 
     fn fine_cube(n: usize) -> Mesh {

@@ -2,10 +2,13 @@
 //! analysed and factored once; a new scale changes only the values of the positional and
 //! tangent-plane rows, so it costs a numeric refactorization on the kept analysis (AMD
 //! ordering, elimination tree, normal-matrix pattern) and a back-substitution, and gives
-//! bit for bit what a fresh [`optimize`](super::optimize) at that scale gives.
+//! bit for bit what a fresh [`optimize`](super::optimize) at that scale gives. For a preview
+//! that must not stall a frame, [`Optimizer::refine`] approaches a new scale by
+//! preconditioned conjugate gradients instead ([`super::refine`]), one iteration per call.
 
 use glam::DVec3;
 
+use super::refine::Refinement;
 use super::system::Rows;
 use super::{OptimizeError, OptimizeParams};
 use crate::mesh::Mesh;
@@ -17,7 +20,13 @@ pub struct Optimizer {
     params: OptimizeParams,
     rows: Rows,
     solver: Prefactored,
+    /// The preview's approach to another scale, if one is under way.
+    refinement: Option<Refinement>,
 }
+
+/// Conjugate-gradient iterations after which a refinement gives up and refactors (a scale
+/// far from the factored one).
+const MAX_ITERATIONS: usize = 40;
 
 impl std::fmt::Debug for Optimizer {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -43,6 +52,7 @@ impl Optimizer {
             params: *params,
             rows,
             solver,
+            refinement: None,
         })
     }
 
@@ -90,6 +100,38 @@ impl Optimizer {
         } else {
             Err(OptimizeError::NotFinite)
         }
+    }
+
+    /// One step of the preview toward `scale`: `shown` (the positions on screen) moves
+    /// closer to the solution. Returns whether it is there: exactly when `scale` is the
+    /// factored one or the system is coupled (which has no iterative path and refactors),
+    /// else to a relative residual of 1e-5 by conjugate gradients preconditioned with the
+    /// kept factorization, one iteration per call (after [`MAX_ITERATIONS`] it refactors).
+    /// [`Optimizer::solve`] gives the exact result to commit.
+    ///
+    /// Errors: those of [`Optimizer::solve`].
+    pub fn refine(&mut self, scale: f64, shown: &mut Vec<DVec3>) -> Result<bool, OptimizeError> {
+        check_scale(scale)?;
+        if scale == self.params.scale || self.rows.is_coupled() {
+            self.refinement = None;
+            *shown = self.solve(scale)?;
+            return Ok(true);
+        }
+        let refinement = match &mut self.refinement {
+            Some(r) if r.scale() == scale => r,
+            slot => slot.insert(Refinement::new(&self.rows, &mut self.solver, scale, shown)?),
+        };
+        refinement.iterate(&self.rows, &mut self.solver)?;
+        shown.copy_from_slice(refinement.estimate());
+        if refinement.has_converged() {
+            return Ok(true);
+        }
+        if refinement.iterations() >= MAX_ITERATIONS {
+            self.refinement = None;
+            *shown = self.solve(scale)?;
+            return Ok(true);
+        }
+        Ok(false)
     }
 }
 

@@ -37,6 +37,22 @@ pub struct QualityReport {
     pub hausdorff_relative: f64,
 }
 
+impl QualityReport {
+    /// One sentence for the user: the radius ratios before and after, and how far the
+    /// surface moved.
+    pub fn summary(&self) -> String {
+        format!(
+            "Triangle quality (radius ratio): worst {:.2} → {:.2}, mean {:.2} → {:.2}; the \
+             surface moved at most {:.2}% of the model's size.",
+            self.input_min_radius_ratio,
+            self.min_radius_ratio,
+            self.input_mean_radius_ratio,
+            self.mean_radius_ratio,
+            100.0 * self.hausdorff_relative
+        )
+    }
+}
+
 /// Radius ratios (worst, mean) of `mesh`'s triangles with the given positions.
 fn radius_ratios(mesh: &Mesh, positions: &[DVec3]) -> (f64, f64) {
     let (mut worst, mut sum) = (1.0f64, 0.0);

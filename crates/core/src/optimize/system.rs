@@ -110,6 +110,33 @@ impl Rows {
             .collect()
     }
 
+    /// `N(scale) x` for the separable system, `N = (W_L L)ᵀ (W_L L) + s² W_p²`, with
+    /// `rows` (one per vertex) as scratch.
+    pub(super) fn normal_product(
+        &self,
+        scale: f64,
+        x: &[DVec3],
+        rows: &mut [DVec3],
+        out: &mut [DVec3],
+    ) {
+        self.laplacian.mul_dvec3(x, rows);
+        self.laplacian.mul_transpose_dvec3(rows, out);
+        for ((out, &x), &w) in out.iter_mut().zip(x).zip(&self.positional) {
+            *out += (scale * w) * (scale * w) * x;
+        }
+    }
+
+    /// `Aᵀ b` at `scale` for the separable system: `(W_L L)ᵀ W_L f + s² W_p² V`.
+    pub(super) fn normal_rhs(&self, scale: f64) -> Vec<DVec3> {
+        let mut out = vec![DVec3::ZERO; self.positions.len()];
+        self.laplacian.mul_transpose_dvec3(&self.target, &mut out);
+        let held = self.positions.iter().zip(&self.positional);
+        for (out, (&p, &w)) in out.iter_mut().zip(held) {
+            *out += (scale * w) * (scale * w) * p;
+        }
+        out
+    }
+
     /// The right-hand side at `scale` of the coupled system, in the rows of [`Rows::matrix`].
     pub(super) fn coupled_rhs(&self, scale: f64) -> Vec<f64> {
         let n = self.positions.len();

@@ -230,20 +230,37 @@ impl Prefactored {
             let projected = self.a.column(col).fold(DVec3::ZERO, |sum, (row, value)| {
                 sum + value * self.residual[row]
             });
-            let p = self.position[f] as usize;
-            for (k, value) in projected.to_array().into_iter().enumerate() {
-                self.rhs[(p, k)] = value;
-            }
+            self.set_rhs_row(self.position[f] as usize, projected);
         }
         self.triangular_solves(3, between);
         for (col, x) in out.iter_mut().enumerate() {
-            *x = match self.system.free_index(col) {
-                Some(f) => {
-                    let p = self.position[f] as usize;
-                    DVec3::new(self.rhs[(p, 0)], self.rhs[(p, 1)], self.rhs[(p, 2)])
-                }
+            *x = match self.free_position(col) {
+                Some(p) => self.rhs_row(p),
                 None => fixed_values[col],
             };
+        }
+        Ok(())
+    }
+
+    /// `out = N⁻¹ r` for x, y and z at once, where `N` is the normal matrix of the free
+    /// unknowns and `r` holds one vector per unknown (entries of fixed unknowns are ignored,
+    /// their outputs zero): the preconditioner of an iterative solve whose matrix is close to
+    /// `N` (the same system with other weights). Allocates nothing.
+    ///
+    /// Errors: [`SolveError::DimensionMismatch`] for wrong lengths.
+    pub fn solve_normal(&mut self, r: &[DVec3], out: &mut [DVec3]) -> Result<(), SolveError> {
+        check_len("r", self.a.ncols(), r.len())?;
+        check_len("out", self.a.ncols(), out.len())?;
+        for (col, &r) in r.iter().enumerate() {
+            if let Some(p) = self.free_position(col) {
+                self.set_rhs_row(p, r);
+            }
+        }
+        self.triangular_solves(3, |_| {});
+        for (col, x) in out.iter_mut().enumerate() {
+            *x = self
+                .free_position(col)
+                .map_or(DVec3::ZERO, |p| self.rhs_row(p));
         }
         Ok(())
     }
@@ -351,6 +368,17 @@ impl Prefactored {
         check_len("rhs", self.a.nrows(), n_rhs)?;
         check_len("fixed_values", self.a.ncols(), n_fixed)?;
         check_len("out", self.a.ncols(), n_out)
+    }
+
+    /// Row `p` (in the factor's order) of the x, y and z right-hand sides.
+    fn rhs_row(&self, p: usize) -> DVec3 {
+        DVec3::new(self.rhs[(p, 0)], self.rhs[(p, 1)], self.rhs[(p, 2)])
+    }
+
+    fn set_rhs_row(&mut self, p: usize, value: DVec3) {
+        for (k, value) in value.to_array().into_iter().enumerate() {
+            self.rhs[(p, k)] = value;
+        }
     }
 
     /// Position in the factor's order of unknown `j`, or `None` when it is fixed.

@@ -138,6 +138,23 @@ impl SparseMatrix {
         }
     }
 
+    /// `out = Aᵀ y` applied to x, y and z at once.
+    ///
+    /// # Panics
+    /// When `y.len() != nrows` or `out.len() != ncols`.
+    pub fn mul_transpose_dvec3(&self, y: &[DVec3], out: &mut [DVec3]) {
+        assert_eq!(
+            (y.len(), out.len()),
+            (self.nrows(), self.ncols()),
+            "mul_transpose_dvec3: wrong vector lengths"
+        );
+        for (col, out) in out.iter_mut().enumerate() {
+            *out = self
+                .column(col)
+                .fold(DVec3::ZERO, |sum, (row, value)| sum + value * y[row]);
+        }
+    }
+
     /// `out = A x` applied to x, y and z at once.
     ///
     /// # Panics

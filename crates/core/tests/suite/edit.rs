@@ -254,11 +254,25 @@ fn an_optimization_previews_each_setting_and_commits_the_last_without_solving_ag
     let generation = edit.generation();
     assert_eq!(edit.step().unwrap(), Progress::Waiting);
     assert_eq!(edit.generation(), generation, "nothing new to solve");
-    // The slider, then the mode: each is one step.
-    for revised in [op(0.2, Mode::Smooth), op(0.5, Mode::Shape)] {
-        edit.revise(revised);
-        assert_eq!(edit.step().unwrap(), Progress::Waiting);
+    // The slider: conjugate-gradient steps toward the new scale, close to the exact result.
+    edit.revise(op(0.2, Mode::Smooth));
+    let mut iterations = 0;
+    while edit.step().unwrap() == Progress::Working {
+        iterations += 1;
     }
+    assert!((1..40).contains(&iterations), "{iterations} iterations");
+    let mut exact = editor.clone();
+    exact.apply(op(0.2, Mode::Smooth)).unwrap();
+    let (_, approached) = edit.moved_model().unwrap();
+    let error = approached
+        .iter()
+        .zip(exact.document().models[0].mesh.positions())
+        .map(|(a, b)| a.distance(*b))
+        .fold(0.0, f64::max);
+    assert!(error < 1e-4, "the preview is {error} from the exact result");
+    // The mode: a new system, solved in one step.
+    edit.revise(op(0.5, Mode::Shape));
+    assert_eq!(edit.step().unwrap(), Progress::Waiting);
     edit.revise(Op::Undo);
     assert_eq!(
         edit.op(),

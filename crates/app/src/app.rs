@@ -610,6 +610,10 @@ impl SketchApp {
             stroke_ui(ui, viewport, points, egui::Color32::from_rgb(120, 200, 255));
             hint_ui(ui, viewport, what);
         }
+        let camera = self.shared.borrow().camera.camera();
+        if let Some(lasso) = self.tools.lasso(&camera) {
+            stroke_ui(ui, viewport, lasso, egui::Color32::from_rgb(110, 220, 150));
+        }
         if let Some(raw) = self.stroke_preview() {
             stroke_ui(ui, viewport, raw, egui::Color32::from_rgb(242, 199, 82));
         }

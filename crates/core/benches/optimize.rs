@@ -57,7 +57,8 @@ fn bench_optimize(c: &mut Criterion) {
     group.sample_size(10);
     for (name, mesh) in &cases {
         let id = BenchmarkId::from_parameter(format!("{name}_{}", mesh.n_vertices()));
-        let mut optimizer = Optimizer::new(mesh, &OptimizeParams::default()).expect("factors");
+        let mut optimizer =
+            Optimizer::new(mesh, &OptimizeParams::default(), None).expect("factors");
         let mut scale = 1.0;
         group.bench_function(id, |b| {
             b.iter(|| {
@@ -74,13 +75,16 @@ fn bench_optimize(c: &mut Criterion) {
     group.sample_size(20);
     for (name, mesh) in &cases {
         let id = BenchmarkId::from_parameter(format!("{name}_{}", mesh.n_vertices()));
-        let mut optimizer = Optimizer::new(mesh, &OptimizeParams::default()).expect("factors");
+        let mut optimizer =
+            Optimizer::new(mesh, &OptimizeParams::default(), None).expect("factors");
         let mut shown = optimizer.solve(1.0).expect("solves");
         let mut scale = 0.5;
         group.bench_function(id, |b| {
             b.iter(|| {
                 scale = if scale == 0.5 { 0.6 } else { 0.5 };
-                optimizer.refine(black_box(scale), &mut shown).expect("solves")
+                optimizer
+                    .refine(black_box(scale), &mut shown)
+                    .expect("solves")
             });
         });
     }

@@ -112,6 +112,21 @@ pub fn point(s: &crate::input::PointerSample, view: &ViewCtx) -> StrokePoint {
     }
 }
 
+/// A gesture whose samples all lie within this many points of its first one is a tap.
+const TAP_RADIUS: f64 = 10.0;
+
+/// Whether a finished gesture stayed within [`TAP_RADIUS`] of where it began.
+pub(super) fn is_tap(input: &StrokeInput) -> bool {
+    let Some(&[x0, y0, _]) = input.stroke.first() else {
+        return false;
+    };
+    let start = DVec2::new(x0, y0);
+    input
+        .stroke
+        .iter()
+        .all(|&[x, y, _]| DVec2::new(x, y).distance(start) <= TAP_RADIUS)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -16,6 +16,7 @@ pub mod oversketch;
 pub mod pull;
 pub mod sketch;
 
+use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::document::Document;
 
@@ -120,6 +121,14 @@ impl ToolSet {
     /// A sketch stroke waiting for a confirming tap, shown until then.
     pub fn waiting(&self) -> Option<(&[StrokePoint], &'static str)> {
         self.sketch.waiting()
+    }
+
+    /// The optimize tool's lasso, while the view is the one it was drawn in.
+    pub fn lasso(&self, camera: &Camera) -> Option<&[StrokePoint]> {
+        match self.mode {
+            Mode::Optimize => self.optimize.lasso(camera),
+            _ => None,
+        }
     }
 
     /// The handle picked in manual over-sketch mode.

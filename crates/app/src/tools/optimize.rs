@@ -1,6 +1,6 @@
-//! The optimize tool (Nealen's dissertation ch. 6): tap a model, choose the mode and the
-//! weights, drag the amount; the model previews each setting, and Apply commits the last one
-//! as one undoable `optimize` op.
+//! The optimize tool (Nealen's dissertation ch. 6): tap a model (or draw a lasso around part
+//! of one), choose the mode and the weights, drag the amount; the model previews each
+//! setting, and Apply commits the last one as one undoable `optimize` op.
 //!
 //! The tap begins an `optimize` edit as a gesture (as a pull is begun at pointer-down);
 //! every change in the panel revises its op ([`ToolOutput::Revise`]) and the app's next step
@@ -8,13 +8,17 @@
 //! builds the system again (see `core::optimize::Optimizer`). Apply ends the gesture; the
 //! preview of the final settings is the committed result.
 
+use glam::DVec2;
+use sketchmesh_core::camera::Camera;
+use sketchmesh_core::curve::StrokePoint;
+use sketchmesh_core::curve::polyline::centroid;
 use sketchmesh_core::document::{Document, Op, OptimizeInput, StrokeInput, model_under};
 use sketchmesh_core::optimize::{
     LaplacianKind, Mode as OptimizeMode, OptimizeParams, WeightScheme,
 };
 
 use super::context::{ToolOutput, ViewCtx};
-use super::draw::DrawTool;
+use super::draw::{DrawTool, is_tap};
 use crate::input::router::ToolEvent;
 
 /// The slider's range for the scale `s` (the thesis's positional weights lie in `[0, s]`).
@@ -27,37 +31,57 @@ pub struct OptimizeTool {
     settings: OptimizeParams,
     /// The model whose preview is open, if any.
     model: Option<usize>,
+    /// The lasso bounding what moves, if one was drawn, and its samples for display.
+    region: Option<(StrokeInput, Vec<StrokePoint>)>,
 }
 
 impl OptimizeTool {
-    /// Feeds one event: a tap on a model opens its preview (applying the one open before).
+    /// Feeds one event: a tap on a model opens its preview of the whole model, a lasso its
+    /// preview of what the lasso holds (an open preview of another model is applied first).
     pub fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
         let Some(input) = self.draw.capture(event, view) else {
             return ToolOutput::None;
         };
-        self.tap(&input, doc)
+        let (model, region) = if is_tap(&input) {
+            (model_under(doc, &input), None)
+        } else {
+            (lasso_model(doc, &input), Some(input))
+        };
+        let Some(model) = model else {
+            let sentence = "Tap a model, or draw a lasso around part of one, to optimize it.";
+            return ToolOutput::Refused(String::from(sentence));
+        };
+        let unchanged = self.model == Some(model) && region.is_none() && self.region.is_none();
+        self.region = region.map(|r| {
+            let points = r.points();
+            (r, points)
+        });
+        let is_open = self.model.replace(model) == Some(model);
+        match (unchanged, is_open) {
+            (true, _) => ToolOutput::None,
+            (false, true) => ToolOutput::Revise(self.op(model)),
+            (false, false) => ToolOutput::Begin(self.op(model)),
+        }
     }
 
-    fn tap(&mut self, input: &StrokeInput, doc: &Document) -> ToolOutput {
-        match model_under(doc, input) {
-            Some(model) if Some(model) == self.model => ToolOutput::None,
-            Some(model) => {
-                self.model = Some(model);
-                ToolOutput::Begin(self.op(model))
-            }
-            None => ToolOutput::Refused(String::from("Tap a model to optimize it.")),
-        }
+    /// The lasso bounding the preview, for display while the view is the one it was drawn
+    /// in (it is kept in screen points).
+    pub fn lasso(&self, camera: &Camera) -> Option<&[StrokePoint]> {
+        let (input, points) = self.region.as_ref()?;
+        (input.camera == *camera).then_some(points.as_slice())
     }
 
     fn op(&self, model: usize) -> Op {
         Op::Optimize(OptimizeInput {
             model,
             settings: self.settings,
+            region: self.region.as_ref().map(|(input, _)| input.clone()),
         })
     }
 
     /// Applies the open preview, if any.
     pub fn confirm(&mut self) -> ToolOutput {
+        self.region = None;
         match self.model.take() {
             Some(_) => ToolOutput::Finish,
             None => ToolOutput::None,
@@ -68,13 +92,14 @@ impl OptimizeTool {
     pub fn cancel(&mut self) {
         self.draw = DrawTool::Idle;
         self.model = None;
+        self.region = None;
     }
 
     /// What the tool asks for while no model is previewed.
     pub fn hint(&self) -> Option<&'static str> {
-        self.model
-            .is_none()
-            .then_some("Tap a model to preview its optimization")
+        self.model.is_none().then_some(
+            "Tap a model, or draw a lasso around part of one, to preview its optimization",
+        )
     }
 
     /// The panel: the settings, and Apply and Cancel while a preview is open.
@@ -159,6 +184,15 @@ impl OptimizeTool {
         let Some(model) = self.model else {
             return ToolOutput::None;
         };
+        if self.region.is_some()
+            && ui
+                .button("Whole model")
+                .on_hover_text("Drop the lasso: optimize all of the model")
+                .clicked()
+        {
+            self.region = None;
+            return ToolOutput::Revise(self.op(model));
+        }
         if ui
             .button("Apply")
             .on_hover_text("Keep this result: one undo step (Enter)")
@@ -180,6 +214,21 @@ impl OptimizeTool {
             ToolOutput::Revise(self.op(model))
         }
     }
+}
+
+/// The model a lasso is drawn around: the one under its centroid, else under any of its
+/// samples.
+fn lasso_model(doc: &Document, lasso: &StrokeInput) -> Option<usize> {
+    let points: Vec<DVec2> = lasso.points().iter().map(|p| p.pos).collect();
+    let inside = centroid(&points);
+    std::iter::once(inside).chain(points).find_map(|p| {
+        let probe = StrokeInput {
+            viewport: lasso.viewport,
+            camera: lasso.camera,
+            stroke: vec![[p.x, p.y, 0.5]],
+        };
+        model_under(doc, &probe)
+    })
 }
 
 /// A drop-down for one setting: `(value, label, hint)` per choice.

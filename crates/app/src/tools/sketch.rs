@@ -2,16 +2,12 @@
 //! ([`op_for_stroke`]); a closed curve on a shape and a cross-section wait for a confirming
 //! tap, as in the thesis, and stay ink if something else comes instead.
 
-use glam::DVec2;
 use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::document::{Document, Op, StrokeInput, ink_instead, needs_tap, op_for_stroke};
 
 use super::context::{ToolOutput, ViewCtx};
-use super::draw::DrawTool;
+use super::draw::{DrawTool, is_tap};
 use crate::input::router::ToolEvent;
-
-/// A gesture whose samples all lie within this many points of its first one is a tap.
-const TAP_RADIUS: f64 = 10.0;
 
 /// A stroke that waits for its confirming tap.
 #[derive(Clone, Debug)]
@@ -76,18 +72,6 @@ impl SketchTool {
         };
         Some((&waiting.points, what))
     }
-}
-
-/// Whether a finished gesture stayed within [`TAP_RADIUS`] of where it began.
-fn is_tap(input: &StrokeInput) -> bool {
-    let Some(&[x0, y0, _]) = input.stroke.first() else {
-        return false;
-    };
-    let start = DVec2::new(x0, y0);
-    input
-        .stroke
-        .iter()
-        .all(|&[x, y, _]| DVec2::new(x, y).distance(start) <= TAP_RADIUS)
 }
 
 /// The samples of an `add_curve` op, for showing it while it waits.

@@ -32,10 +32,7 @@ impl CreateJob {
     ///
     /// Errors: the stroke's problems as sentences, see [`CommandError`].
     pub(super) fn start(base: &Document, input: &StrokeInput) -> Result<Self, CommandError> {
-        let viewport = input.viewport_size();
-        if !viewport.is_finite() || viewport.min_element() <= 0.0 || !input.camera.is_valid() {
-            return Err(CommandError::BadView);
-        }
+        let viewport = input.checked_viewport()?;
         let params = CreateParams::default();
         let seed = seed_from_stroke(&input.points(), &input.camera, viewport, &params)?;
         let model = Model {

@@ -5,6 +5,7 @@ use std::sync::Arc;
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
 
+use super::CommandError;
 use crate::camera::Camera;
 use crate::curve::StrokePoint;
 use crate::deform::HandleFit;
@@ -118,6 +119,10 @@ pub struct OptimizeInput {
     /// How to optimize, written beside `model`.
     #[serde(flatten)]
     pub settings: OptimizeParams,
+    /// The closed lasso, in the view it was drawn in, around the vertices that may move; the
+    /// rest keep their place. Without it the whole model is optimized.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub region: Option<StrokeInput>,
 }
 
 /// An `add_curve` op: the stroke and which kind of curve it makes.
@@ -314,6 +319,19 @@ impl StrokeInput {
     pub fn viewport_size(&self) -> DVec2 {
         DVec2::from(self.viewport)
     }
+
+    /// The viewport size in CSS px, after checking that it and the camera can project.
+    ///
+    /// Errors: [`CommandError::BadView`].
+    pub fn checked_viewport(&self) -> Result<DVec2, CommandError> {
+        let viewport = self.viewport_size();
+        let viewport_ok = viewport.is_finite() && viewport.x > 0.0 && viewport.y > 0.0;
+        if viewport_ok && self.camera.is_valid() {
+            Ok(viewport)
+        } else {
+            Err(CommandError::BadView)
+        }
+    }
 }
 
 #[cfg(test)]
@@ -378,6 +396,7 @@ mod tests {
             Op::Optimize(OptimizeInput {
                 model: 0,
                 settings: OptimizeParams::default(),
+                region: None,
             }),
             Op::Undo,
             Op::Redo,

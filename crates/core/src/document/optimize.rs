@@ -11,18 +11,37 @@
 use glam::DVec3;
 
 use super::{CommandError, Document, Model, OptimizeInput};
-use crate::optimize::{Optimizer, optimize};
+use crate::optimize::region::lasso_vertices;
+use crate::optimize::{OptimizeError, Optimizer};
 
 /// The index of the model and the model with its vertices optimized; its triangles, curves
 /// (chains of vertices, so they follow) and appearance stay.
 ///
-/// Errors: [`CommandError::NoSuchModel`], or the optimization's refusal.
+/// Errors: [`CommandError::NoSuchModel`], [`CommandError::BadView`] for a lasso's view,
+/// or the optimization's refusal.
 pub(super) fn optimize_op(
     doc: &Document,
     input: &OptimizeInput,
 ) -> Result<(usize, Model), CommandError> {
-    let positions = optimize(&target(doc, input.model)?.mesh, &input.settings)?;
+    let positions = new_optimizer(doc, input)?.solve(input.settings.scale)?;
     Ok((input.model, with_positions(doc, input.model, &positions)))
+}
+
+/// The optimizer for `input`: its model, settings and region.
+fn new_optimizer(doc: &Document, input: &OptimizeInput) -> Result<Optimizer, CommandError> {
+    let mesh = &target(doc, input.model)?.mesh;
+    let movable = match &input.region {
+        Some(lasso) => {
+            let viewport = lasso.checked_viewport()?;
+            let points: Vec<_> = lasso.points().iter().map(|p| p.pos).collect();
+            if points.len() < 3 || points.iter().any(|p| !p.is_finite()) {
+                return Err(OptimizeError::EmptyRegion.into());
+            }
+            Some(lasso_vertices(mesh, &lasso.camera, viewport, &points))
+        }
+        None => None,
+    };
+    Ok(Optimizer::new(mesh, &input.settings, movable.as_deref())?)
 }
 
 /// A live optimization of one model: what it shows and the optimizer behind it.
@@ -31,8 +50,9 @@ pub(super) struct OptimizePreview {
     /// The settings the shown positions are solved for, once solved (exactly, or to the
     /// refinement's tolerance).
     solved: Option<OptimizeInput>,
-    /// The model the optimizer was built for.
-    model: usize,
+    /// The op the optimizer was built for (its model and region; the settings but the
+    /// scale are the optimizer's own).
+    built: Option<OptimizeInput>,
     optimizer: Option<Optimizer>,
     /// The model's positions as optimized (its own until the first step).
     shown: Vec<DVec3>,
@@ -45,7 +65,7 @@ impl OptimizePreview {
     pub(super) fn start(base: &Document, input: &OptimizeInput) -> Result<Self, CommandError> {
         Ok(OptimizePreview {
             solved: None,
-            model: input.model,
+            built: None,
             optimizer: None,
             shown: target(base, input.model)?.mesh.positions().to_vec(),
         })
@@ -65,7 +85,7 @@ impl OptimizePreview {
         if self.solved.as_ref() == Some(input) {
             return Ok(None);
         }
-        let is_there = match optimizer_for(&mut self.optimizer, &mut self.model, base, input)? {
+        let is_there = match optimizer_for(&mut self.optimizer, &mut self.built, base, input)? {
             (optimizer, true) => optimizer.refine(input.settings.scale, &mut self.shown)?,
             (optimizer, false) => {
                 self.shown = optimizer.solve(input.settings.scale)?;
@@ -86,7 +106,7 @@ impl OptimizePreview {
         base: &Document,
         input: &OptimizeInput,
     ) -> Result<(usize, Model), CommandError> {
-        let (optimizer, _) = optimizer_for(&mut self.optimizer, &mut self.model, base, input)?;
+        let (optimizer, _) = optimizer_for(&mut self.optimizer, &mut self.built, base, input)?;
         let positions = optimizer.solve(input.settings.scale)?;
         Ok((input.model, with_positions(base, input.model, &positions)))
     }
@@ -97,20 +117,26 @@ impl OptimizePreview {
     }
 }
 
-/// The optimizer in `slot` if it was built for `model` and serves `input` (and whether it
-/// was kept), else a new one for `input`, recorded in `slot` and `model`.
+/// The optimizer in `slot` if it was built for the model and region of `input` and serves
+/// its settings (and whether it was kept), else a new one for `input`, recorded in `slot`
+/// and `built`.
 fn optimizer_for<'a>(
     slot: &'a mut Option<Optimizer>,
-    model: &mut usize,
+    built: &mut Option<OptimizeInput>,
     base: &Document,
     input: &OptimizeInput,
 ) -> Result<(&'a mut Optimizer, bool), CommandError> {
-    let mesh = &target(base, input.model)?.mesh;
-    let keep = *model == input.model && slot.as_ref().is_some_and(|o| o.serves(&input.settings));
-    *model = input.model;
+    let same_target = built
+        .as_ref()
+        .is_some_and(|b| b.model == input.model && b.region == input.region);
+    let keep = same_target && slot.as_ref().is_some_and(|o| o.serves(&input.settings));
     Ok(match (slot, keep) {
         (Some(kept), true) => (kept, true),
-        (slot, _) => (slot.insert(Optimizer::new(mesh, &input.settings)?), false),
+        (slot, _) => {
+            let optimizer = slot.insert(new_optimizer(base, input)?);
+            *built = Some(input.clone());
+            (optimizer, false)
+        }
     })
 }
 

@@ -71,11 +71,7 @@ pub(super) fn with_model(base: &Document, (index, model): (usize, Model)) -> Out
 }
 
 fn place_stroke(input: &StrokeInput) -> Result<SketchCurve, CommandError> {
-    let viewport = input.viewport_size();
-    let viewport_ok = viewport.is_finite() && viewport.x > 0.0 && viewport.y > 0.0;
-    if !viewport_ok || !input.camera.is_valid() {
-        return Err(CommandError::BadView);
-    }
+    let viewport = input.checked_viewport()?;
     let processed = process_stroke(&input.points())?;
     let mut sketch = SketchCurve {
         points: Vec::with_capacity(processed.len()),

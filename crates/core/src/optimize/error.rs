@@ -13,6 +13,11 @@ pub enum OptimizeError {
     /// Nothing to optimize.
     #[error("the model has no triangles to optimize")]
     Empty,
+    /// The region to optimize holds no vertex of the model.
+    #[error(
+        "the lasso holds no vertex of the model that faces you; draw it around part of the model"
+    )]
+    EmptyRegion,
     /// The sparse factorization failed.
     #[error("the optimization could not be solved: {0}")]
     Solve(#[from] SolveError),

@@ -25,6 +25,7 @@ mod error;
 mod optimizer;
 pub mod quality;
 mod refine;
+pub mod region;
 mod system;
 pub mod weights;
 
@@ -114,7 +115,7 @@ impl Default for OptimizeParams {
 /// [`OptimizeError::Empty`] for a mesh without faces, [`OptimizeError::Solve`] when the
 /// factorization fails.
 pub fn optimize(mesh: &Mesh, params: &OptimizeParams) -> Result<Vec<DVec3>, OptimizeError> {
-    Optimizer::new(mesh, params)?.solve(params.scale)
+    Optimizer::new(mesh, params, None)?.solve(params.scale)
 }
 
 #[cfg(test)]
@@ -260,7 +261,7 @@ mod tests {
                 features: true,
                 ..OptimizeParams::default()
             };
-            let mut optimizer = Optimizer::new(&mesh, &params).unwrap();
+            let mut optimizer = Optimizer::new(&mesh, &params, None).unwrap();
             let first = optimizer.solve(1.0).unwrap();
             for scale in [0.3, 2.5] {
                 let fresh = optimize(&mesh, &OptimizeParams { scale, ..params }).unwrap();
@@ -289,7 +290,7 @@ mod tests {
             mode: Mode::Smooth,
             ..OptimizeParams::default()
         };
-        let mut optimizer = Optimizer::new(&mesh, &params).unwrap();
+        let mut optimizer = Optimizer::new(&mesh, &params, None).unwrap();
         let mut shown = optimizer.solve(1.0).unwrap();
         for scale in [0.5, 0.2, 0.8] {
             let mut calls = 1;
@@ -312,7 +313,7 @@ mod tests {
             tangent_plane: true,
             ..OptimizeParams::default()
         };
-        let mut optimizer = Optimizer::new(&mesh, &coupled).unwrap();
+        let mut optimizer = Optimizer::new(&mesh, &coupled, None).unwrap();
         assert!(optimizer.refine(0.5, &mut shown).unwrap());
         assert_eq!(
             shown,
@@ -325,6 +326,37 @@ mod tests {
             )
             .unwrap()
         );
+    }
+
+    #[test]
+    fn a_region_moves_only_its_vertices_also_while_refining() {
+        let mut mesh = primitives::icosphere(1.0, 3);
+        for (i, p) in mesh.positions_mut().iter_mut().enumerate() {
+            *p *= 1.0 + 0.02 * jitter(i, 0);
+        }
+        let movable: Vec<bool> = mesh.positions().iter().map(|p| p.z > 0.3).collect();
+        for tangent_plane in [false, true] {
+            let params = OptimizeParams {
+                mode: Mode::Smooth,
+                tangent_plane,
+                ..OptimizeParams::default()
+            };
+            let mut optimizer = Optimizer::new(&mesh, &params, Some(&movable)).unwrap();
+            let mut shown = optimizer.solve(1.0).unwrap();
+            while !optimizer.refine(0.4, &mut shown).unwrap() {}
+            for result in [shown.clone(), optimizer.solve(0.4).unwrap()] {
+                for ((p, q), &m) in mesh.positions().iter().zip(&result).zip(&movable) {
+                    if !m {
+                        assert_eq!(p, q, "a vertex outside the region moved");
+                    }
+                }
+                let moved = mesh.positions().iter().zip(&result).filter(|(p, q)| p != q);
+                assert!(moved.count() > movable.iter().filter(|&&m| m).count() / 2);
+            }
+        }
+        let nothing = vec![false; mesh.n_vertices()];
+        let refused = Optimizer::new(&mesh, &OptimizeParams::default(), Some(&nothing));
+        assert_eq!(refused.err(), Some(OptimizeError::EmptyRegion));
     }
 
     fn fine_cube(n: usize) -> Mesh {

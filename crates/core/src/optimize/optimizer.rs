@@ -20,6 +20,8 @@ pub struct Optimizer {
     params: OptimizeParams,
     rows: Rows,
     solver: Prefactored,
+    /// Per vertex: whether it keeps its place (outside the region).
+    fixed: Vec<bool>,
     /// The preview's approach to another scale, if one is under way.
     refinement: Option<Refinement>,
 }
@@ -37,21 +39,39 @@ impl std::fmt::Debug for Optimizer {
 }
 
 impl Optimizer {
-    /// Builds and factors the system of `mesh` with `params`.
+    /// Builds and factors the system of `mesh` with `params`; only the vertices `movable`
+    /// marks move (all of them when `None`), the rest keep their place.
     ///
-    /// Errors: [`OptimizeError::InvalidScale`], [`OptimizeError::Empty`], or the solver's.
-    pub fn new(mesh: &Mesh, params: &OptimizeParams) -> Result<Optimizer, OptimizeError> {
+    /// Errors: [`OptimizeError::InvalidScale`], [`OptimizeError::Empty`],
+    /// [`OptimizeError::EmptyRegion`], or the solver's.
+    pub fn new(
+        mesh: &Mesh,
+        params: &OptimizeParams,
+        movable: Option<&[bool]>,
+    ) -> Result<Optimizer, OptimizeError> {
         check_scale(params.scale)?;
         if mesh.n_faces() == 0 {
             return Err(OptimizeError::Empty);
         }
+        let fixed: Vec<bool> = match movable {
+            Some(movable) => movable.iter().map(|&m| !m).collect(),
+            None => vec![false; mesh.n_vertices()],
+        };
+        if fixed.len() != mesh.n_vertices() || fixed.iter().all(|&f| f) {
+            return Err(OptimizeError::EmptyRegion);
+        }
         let rows = Rows::new(mesh, params);
         let a = rows.matrix(params.scale);
-        let solver = Prefactored::new(&a, &vec![false; a.ncols()])?;
+        let unknowns_fixed: Vec<bool> = match rows.is_coupled() {
+            true => fixed.iter().flat_map(|&f| [f; 3]).collect(),
+            false => fixed.clone(),
+        };
+        let solver = Prefactored::new(&a, &unknowns_fixed)?;
         Ok(Optimizer {
             params: *params,
             rows,
             solver,
+            fixed,
             refinement: None,
         })
     }
@@ -82,17 +102,19 @@ impl Optimizer {
             self.params.scale = scale;
         }
         let n = self.solver.n_unknowns();
+        let held = self.rows.positions();
         let positions = if self.rows.is_coupled() {
             let mut x = vec![0.0; n];
             let rhs = self.rows.coupled_rhs(scale);
-            self.solver.solve_scalar(&rhs, &vec![0.0; n], &mut x)?;
+            let held: Vec<f64> = held.iter().flat_map(|p| p.to_array()).collect();
+            self.solver.solve_scalar(&rhs, &held, &mut x)?;
             x.chunks_exact(3)
                 .map(|c| DVec3::new(c[0], c[1], c[2]))
                 .collect()
         } else {
             let mut x = vec![DVec3::ZERO; n];
             let rhs = self.rows.rhs(scale);
-            self.solver.solve(&rhs, &vec![DVec3::ZERO; n], &mut x)?;
+            self.solver.solve(&rhs, held, &mut x)?;
             x
         };
         if positions.iter().all(|p| p.is_finite()) {
@@ -119,9 +141,15 @@ impl Optimizer {
         }
         let refinement = match &mut self.refinement {
             Some(r) if r.scale() == scale => r,
-            slot => slot.insert(Refinement::new(&self.rows, &mut self.solver, scale, shown)?),
+            slot => slot.insert(Refinement::new(
+                &self.rows,
+                &mut self.solver,
+                &self.fixed,
+                scale,
+                shown,
+            )?),
         };
-        refinement.iterate(&self.rows, &mut self.solver)?;
+        refinement.iterate(&self.rows, &mut self.solver, &self.fixed)?;
         shown.copy_from_slice(refinement.estimate());
         if refinement.has_converged() {
             return Ok(true);

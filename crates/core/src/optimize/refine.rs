@@ -39,15 +39,18 @@ pub(super) struct Refinement {
 }
 
 impl Refinement {
-    /// Starts from `start` toward the solution at `scale`.
+    /// Starts from `start` toward the solution at `scale`; `fixed` vertices stay where
+    /// `start` has them (their residuals are zero throughout).
     pub(super) fn new(
         rows: &Rows,
         solver: &mut Prefactored,
+        fixed: &[bool],
         scale: f64,
         start: &[DVec3],
     ) -> Result<Refinement, OptimizeError> {
         let n = start.len();
-        let b = rows.normal_rhs(scale);
+        let mut b = rows.normal_rhs(scale);
+        clear_fixed(&mut b, fixed);
         let mut refinement = Refinement {
             scale,
             x: start.to_vec(),
@@ -68,6 +71,7 @@ impl Refinement {
         for ((r, &b), &nx) in refinement.r.iter_mut().zip(&b).zip(&refinement.z) {
             *r = b - nx;
         }
+        clear_fixed(&mut refinement.r, fixed);
         solver.solve_normal(&refinement.r, &mut refinement.p)?;
         refinement.rz = dot(&refinement.r, &refinement.p);
         Ok(refinement)
@@ -100,8 +104,10 @@ impl Refinement {
         &mut self,
         rows: &Rows,
         solver: &mut Prefactored,
+        fixed: &[bool],
     ) -> Result<(), OptimizeError> {
         rows.normal_product(self.scale, &self.p, &mut self.rows, &mut self.z);
+        clear_fixed(&mut self.z, fixed);
         let alpha = ratio(self.rz, dot(&self.p, &self.z));
         for ((x, r), (&p, &q)) in self
             .x
@@ -121,6 +127,14 @@ impl Refinement {
         }
         self.iterations += 1;
         Ok(())
+    }
+}
+
+/// Zeroes the entries of fixed vertices: conjugate gradients on the free ones only (the
+/// preconditioner already leaves fixed ones at zero).
+fn clear_fixed(v: &mut [DVec3], fixed: &[bool]) {
+    for (v, _) in v.iter_mut().zip(fixed).filter(|(_, f)| **f) {
+        *v = DVec3::ZERO;
     }
 }
 

@@ -66,6 +66,11 @@ impl Rows {
         }
     }
 
+    /// The input positions.
+    pub(super) fn positions(&self) -> &[DVec3] {
+        &self.positions
+    }
+
     /// Whether x, y and z are solved together (the tangent-plane rows couple them).
     pub(super) fn is_coupled(&self) -> bool {
         self.normals.is_some()

@@ -243,6 +243,7 @@ fn an_optimization_previews_each_setting_and_commits_the_last_without_solving_ag
                 scale,
                 ..OptimizeParams::default()
             },
+            region: None,
         })
     };
     let mut edit = editor.begin_gesture(op(1.0, Mode::Smooth)).unwrap();
@@ -294,6 +295,66 @@ fn an_optimization_previews_each_setting_and_commits_the_last_without_solving_ag
     applied.apply(op(0.5, Mode::Shape)).unwrap();
     assert_eq!(applied.document(), editor.document());
     assert_eq!(applied.session_json(), editor.session_json());
+}
+
+#[test]
+fn an_optimization_in_a_lasso_moves_only_what_the_lasso_holds() {
+    let mut editor = Editor::new();
+    editor.apply(session()[1](&editor)).unwrap();
+    let before = editor.document().clone();
+    let lasso = |half: f64| {
+        let corner = |x: f64, y: f64| CENTRE + DVec2::new(60.0 + x * half, y * half);
+        let square = [
+            corner(-1.0, -1.0),
+            corner(1.0, -1.0),
+            corner(1.0, 1.0),
+            corner(-1.0, 1.0),
+        ];
+        Op::Optimize(OptimizeInput {
+            model: 0,
+            settings: OptimizeParams {
+                mode: Mode::Smooth,
+                scale: 0.3,
+                ..OptimizeParams::default()
+            },
+            region: Some(input(square)),
+        })
+    };
+    editor.apply(lasso(50.0)).unwrap();
+    let mesh = &before.models[0].mesh;
+    let after = editor.document().models[0].mesh.positions();
+    let camera = Camera::default();
+    let mut moved = 0;
+    for (p, q) in mesh.positions().iter().zip(after) {
+        if p != q {
+            moved += 1;
+            let s = camera.screen_from_world(*p, DVec2::from(VIEWPORT)).unwrap();
+            let offset = s.truncate() - CENTRE - DVec2::new(60.0, 0.0);
+            assert!(
+                offset.abs().max_element() <= 50.0,
+                "a vertex outside the lasso moved"
+            );
+        }
+    }
+    assert!(moved > 10, "{moved} vertices moved");
+    // A lasso around nothing of the model is refused and changes nothing.
+    let far = Op::Optimize(OptimizeInput {
+        region: Some(input([
+            DVec2::new(5.0, 5.0),
+            DVec2::new(30.0, 5.0),
+            DVec2::new(5.0, 30.0),
+        ])),
+        ..match lasso(1.0) {
+            Op::Optimize(op) => op,
+            _ => unreachable!("an optimize op"),
+        }
+    });
+    let kept = editor.document().clone();
+    let refused = editor.apply(far).unwrap_err();
+    assert!(refused.to_string().contains("lasso"), "{refused}");
+    assert_eq!(editor.document(), &kept);
+    let replayed = Editor::replay_json(&editor.session_json()).unwrap();
+    assert_eq!(replayed.document(), editor.document());
 }
 
 #[test]

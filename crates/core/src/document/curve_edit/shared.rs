@@ -20,11 +20,7 @@ pub(crate) fn screen_stroke(
     input: &StrokeInput,
     min_points: usize,
 ) -> Result<Vec<DVec2>, CommandError> {
-    let viewport = input.viewport_size();
-    let viewport_ok = viewport.is_finite() && viewport.x > 0.0 && viewport.y > 0.0;
-    if !viewport_ok || !input.camera.is_valid() {
-        return Err(CommandError::BadView);
-    }
+    input.checked_viewport()?;
     if input.stroke.iter().flatten().any(|x| !x.is_finite()) {
         return Err(CommandError::StrokeNotFinite);
     }

@@ -528,6 +528,9 @@ impl SketchApp {
                 .add(egui_wgpu::Callback::new_paint_callback(viewport, callback));
         }
         self.live_stroke_ui(ui, viewport);
+        if let Some((status, _)) = &self.status {
+            status_ui(ui, viewport, status);
+        }
         let idle = self.stroke_preview().is_none() && self.edit.is_none();
         if self.shared.borrow().editor.document().is_empty() && idle {
             ui.painter().text(
@@ -658,6 +661,21 @@ fn hint_ui(ui: &egui::Ui, viewport: egui::Rect, text: &str) {
     );
 }
 
+/// The latest message, at the bottom of the view on a dark band, wrapped to its width: the
+/// view never moves or shrinks for a message, however long.
+fn status_ui(ui: &egui::Ui, viewport: egui::Rect, text: &str) {
+    let color = ui.visuals().warn_fg_color;
+    let font = egui::FontId::proportional(15.0);
+    let width = (viewport.width() - 40.0).max(80.0);
+    let galley = ui.painter().layout(text.to_owned(), font, color, width);
+    let size = galley.size();
+    let pos = viewport.center_bottom() - egui::vec2(0.5 * size.x, size.y + 18.0);
+    let band = egui::Rect::from_min_size(pos, size).expand(8.0);
+    ui.painter()
+        .rect_filled(band, 6.0, egui::Color32::from_black_alpha(190));
+    ui.painter().galley(pos, galley, color);
+}
+
 /// Draws a stroke, smoothed as it will be stored, with pressure widths.
 fn stroke_ui(ui: &egui::Ui, viewport: egui::Rect, raw: &[StrokePoint], color: egui::Color32) {
     let points = process_stroke(raw).unwrap_or_else(|_| raw.to_vec());
@@ -683,14 +701,12 @@ impl eframe::App for SketchApp {
         let action = egui::Panel::top("toolbar")
             .show(ui, |ui| {
                 let shared = self.shared.borrow();
-                let status = self.status.as_ref().map(|(s, _)| s.as_str());
                 panels::toolbar::toolbar_ui(
                     ui,
                     &shared.editor,
                     &mut self.options,
                     &mut self.tools,
                     &mut self.show_help,
-                    status,
                 )
             })
             .inner;

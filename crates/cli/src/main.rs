@@ -23,7 +23,8 @@ Usage:
   sketchmesh info FILE.glb|FILE.gltf          Print what a glTF file contains, as JSON.
   sketchmesh optimize IN.glb -o OUT.glb [--mode shape|smooth] [--weights const|linear|cdf]
       [--scale S] [--laplacian uniform|cotan|cotan-curvature] [--tangent-plane] [--quality]
-      [--features] [--report]                 Laplacian mesh optimization of every model;
+      [--features [--feature-falloff linear|cdf|gaussian]] [--report]
+                                              Laplacian mesh optimization of every model;
                                               --report prints radius ratios and the
                                               Hausdorff distance as JSON.
   sketchmesh --help                           Show this help.

@@ -60,9 +60,9 @@ fn parse<'a>(args: &[&'a str]) -> anyhow::Result<Request<'a>> {
         };
         match arg {
             "-o" => output = Some(value()?),
-            "--mode" | "--weights" | "--laplacian" => {
-                let key = arg.trim_start_matches("--");
-                settings[key] = Value::String(value()?.replace('-', "_"));
+            "--mode" | "--weights" | "--laplacian" | "--feature-falloff" => {
+                let key = arg.trim_start_matches("--").replace('-', "_");
+                settings[key.as_str()] = Value::String(value()?.replace('-', "_"));
             }
             "--scale" => {
                 let text = value()?;
@@ -81,7 +81,7 @@ fn parse<'a>(args: &[&'a str]) -> anyhow::Result<Request<'a>> {
         }
     }
     let settings: OptimizeParams = serde_json::from_value(settings)
-        .context("One of --mode (shape, smooth), --weights (const, linear, cdf) or --laplacian (uniform, cotan, cotan-curvature) has a value I don't know")?;
+        .context("One of --mode (shape, smooth), --weights (const, linear, cdf), --laplacian (uniform, cotan, cotan-curvature) or --feature-falloff (linear, cdf, gaussian) has a value I don't know")?;
     Ok(Request {
         input: input.context("Name the glTF file to optimize.")?,
         output: output.context("Name the output with -o OUT.glb.")?,

@@ -9,32 +9,14 @@
 //! `../shared/testdata`; without it the bench says so and runs the generated mesh only.
 
 use std::hint::black_box;
-use std::path::Path;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
-use sketchmesh_core::io::{ImportFile, ImportLimits, import_gltf};
 use sketchmesh_core::mesh::{Mesh, primitives};
 use sketchmesh_core::optimize::{OptimizeParams, Optimizer, optimize};
 
-/// The first mesh of a test-data file, or `None` (said loudly) when the data is missing.
-fn scan(name: &str) -> Option<Mesh> {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../../shared/testdata/meshes")
-        .join(name);
-    let Ok(bytes) = std::fs::read(&path) else {
-        eprintln!(
-            "WARNING: {} is missing; this case is skipped",
-            path.display()
-        );
-        return None;
-    };
-    let file = ImportFile {
-        name,
-        bytes: &bytes,
-    };
-    let imported = import_gltf(&file, &[], &ImportLimits::default()).ok()?;
-    imported.models.into_iter().next().map(|m| m.mesh)
-}
+#[path = "common/scan.rs"]
+mod scan;
+use scan::scan;
 
 fn bench_optimize(c: &mut Criterion) {
     let mut group = c.benchmark_group("optimize_shape_cdf");

@@ -14,24 +14,12 @@ use std::time::Instant;
 use glam::DVec3;
 use sketchmesh_core::deform::{EditParams, HandleFit, LaplacianEdit, Rotations};
 
+#[path = "../benches/common/export.rs"]
+mod export;
 #[path = "../benches/common/oversketch.rs"]
 mod oversketch;
+use export::{RUNS, median_ms, vectors};
 use oversketch::{oversketch_edit, sphere, targets};
-
-/// Runs per timing; the median is printed.
-const RUNS: usize = 15;
-
-fn vectors(points: &[DVec3]) -> String {
-    points.iter().fold(String::new(), |mut s, p| {
-        let _ = writeln!(s, "{} {} {}", p.x, p.y, p.z);
-        s
-    })
-}
-
-fn median_ms(mut samples: Vec<f64>) -> f64 {
-    samples.sort_by(f64::total_cmp);
-    samples[samples.len() / 2] * 1e3
-}
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let dir = PathBuf::from(

@@ -32,8 +32,15 @@ pub fn bench_command(workspace: &Workspace) -> anyhow::Result<()> {
     })?;
     let mut summary = String::from("# Sketchmesh benchmarks\n\n## sketchmesh-core (criterion)\n\n");
     summary += &criterion_table(&workspace.target_dir.join("criterion"), started)?;
-    let libigl = steps.step("libigl comparison", || libigl_comparison(workspace))?;
+    let libigl = steps.step("libigl comparison", || {
+        libigl_comparison(workspace, "deform_export", "libigl_compare.py")
+    })?;
     summary += "\n## Laplacian editing against libigl (same mesh, ROI and handles)\n\n";
+    summary += &libigl;
+    let libigl = steps.step("libigl comparison, optimize", || {
+        libigl_comparison(workspace, "optimize_export", "libigl_optimize.py")
+    })?;
+    summary += "\n## Laplacian mesh optimization against libigl (same normal equations)\n\n";
     summary += &libigl;
 
     let web = steps.step("build-web --release", || {
@@ -76,11 +83,13 @@ pub fn bench_command(workspace: &Workspace) -> anyhow::Result<()> {
 /// The Python packages of the libigl comparison, pinned so that runs compare alike.
 const LIBIGL_PACKAGES: &[&str] = &["libigl==2.6.3", "numpy<3", "scipy<2"];
 
-/// Our linear exact-handle edit (`examples/deform_export.rs`) and libigl's
-/// `min_quad_with_fixed` on the same problem (`benches/libigl_compare.py`, which fails when
+/// One of our solves (`examples/<example>.rs`, which writes the problem and our solution) and
+/// libigl's `min_quad_with_fixed` on the same problem (`benches/<script>`, which fails when
 /// the solutions differ by more than 1e-6 of the diagonal): both programs' reports, as
-/// markdown lines.
-fn libigl_comparison(workspace: &Workspace) -> anyhow::Result<String> {
+/// markdown lines. The problems: the linear exact-handle Laplacian edit (`deform_export`,
+/// `libigl_compare.py`) and the Laplacian mesh optimization (`optimize_export`,
+/// `libigl_optimize.py`).
+fn libigl_comparison(workspace: &Workspace, example: &str, script: &str) -> anyhow::Result<String> {
     let venv = workspace.target_dir.join("libigl-venv");
     let python = venv.join("bin/python");
     if !python.exists() {
@@ -95,20 +104,20 @@ fn libigl_comparison(workspace: &Workspace) -> anyhow::Result<String> {
                 .args(LIBIGL_PACKAGES),
         )?;
     }
-    let problem = workspace.target_dir.join("libigl-problem");
+    let problem = workspace.target_dir.join(format!("libigl-{example}"));
     let ours = cargo()
         .current_dir(&workspace.root)
         .args(["run", "--release", "-q", "-p", "sketchmesh-core"])
-        .args(["--example", "deform_export", "--"])
+        .args(["--example", example, "--"])
         .arg(&problem)
         .output()
-        .context("running the deform_export example")?;
+        .with_context(|| format!("running the {example} example"))?;
     let theirs = Command::new(&python)
         .current_dir(&workspace.root)
-        .arg("crates/core/benches/libigl_compare.py")
+        .arg(format!("crates/core/benches/{script}"))
         .arg(&problem)
         .output()
-        .context("running benches/libigl_compare.py")?;
+        .with_context(|| format!("running benches/{script}"))?;
     let report = [&ours.stdout, &theirs.stdout]
         .iter()
         .flat_map(|out| {

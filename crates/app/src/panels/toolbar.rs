@@ -38,7 +38,6 @@ pub fn toolbar_ui(
     options: &mut ViewOptions,
     tools: &mut ToolSet,
     show_help: &mut bool,
-    status: Option<&str>,
 ) -> Option<Action> {
     let mut action = None;
     let mut picked_mode = None;
@@ -106,7 +105,7 @@ pub fn toolbar_ui(
             .on_hover_text("Shortcuts and gestures (H)");
     });
     // The second row, always there so that the viewport keeps its size whatever the mode:
-    // the mode's options, the document's size, the latest message.
+    // the mode's options and the document's size. (Messages show over the view.)
     ui.horizontal_wrapped(|ui| {
         match mode {
             Mode::Oversketch => {
@@ -127,10 +126,6 @@ pub fn toolbar_ui(
             "{} models · {} vertices · {} triangles · {} curves",
             stats.models, stats.vertices, stats.triangles, stats.curves
         ));
-        if let Some(status) = status {
-            ui.separator();
-            ui.colored_label(ui.visuals().warn_fg_color, status);
-        }
     });
     action.or(picked_mode.map(Action::Mode))
 }

@@ -14,7 +14,7 @@ use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::curve::polyline::centroid;
 use sketchmesh_core::document::{Document, Op, OptimizeInput, StrokeInput, model_under};
 use sketchmesh_core::optimize::{
-    LaplacianKind, Mode as OptimizeMode, OptimizeParams, WeightScheme,
+    FeatureFalloff, LaplacianKind, Mode as OptimizeMode, OptimizeParams, WeightScheme,
 };
 
 use super::context::{ToolOutput, ViewCtx};
@@ -173,6 +173,30 @@ impl OptimizeTool {
         .on_hover_text("How strongly vertices hold their place (the scale s)");
         ui.toggle_value(&mut s.features, "Keep edges")
             .on_hover_text("Sharp features keep their place (§6.5.3)");
+        if s.features {
+            combo(
+                ui,
+                "optimize-falloff",
+                &mut s.feature_falloff,
+                &[
+                    (
+                        FeatureFalloff::Linear,
+                        "Edges: linear",
+                        "Hold grows with the curvature (§6.5.3)",
+                    ),
+                    (
+                        FeatureFalloff::Cdf,
+                        "Edges: rank",
+                        "Hold grows with the curvature's rank",
+                    ),
+                    (
+                        FeatureFalloff::Gaussian,
+                        "Edges: soft",
+                        "Only the most curved places hold",
+                    ),
+                ],
+            );
+        }
         if s.mode == OptimizeMode::Shape {
             ui.toggle_value(&mut s.tangent_plane, "On surface")
                 .on_hover_text(

@@ -12,7 +12,7 @@ use super::refine::Refinement;
 use super::system::Rows;
 use super::{OptimizeError, OptimizeParams};
 use crate::mesh::Mesh;
-use crate::solve::Prefactored;
+use crate::solve::{Prefactored, SparseMatrix};
 
 /// One mesh's optimization with its factorization, ready to solve at any scale.
 pub struct Optimizer {
@@ -79,6 +79,14 @@ impl Optimizer {
     /// The settings, with the scale last solved at.
     pub fn params(&self) -> &OptimizeParams {
         &self.params
+    }
+
+    /// The separable least-squares system `A x = b` at the current scale (`A` is `2n × n`, `b`
+    /// one vector per row), for checking against other solvers; `None` when the
+    /// tangent-plane rows couple the coordinates.
+    pub fn least_squares_system(&self) -> Option<(SparseMatrix, Vec<DVec3>)> {
+        let scale = self.params.scale;
+        (!self.rows.is_coupled()).then(|| (self.rows.matrix(scale), self.rows.rhs(scale)))
     }
 
     /// Whether `params` differ from this optimizer's at most in the scale, so that

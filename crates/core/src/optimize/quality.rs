@@ -42,8 +42,8 @@ impl QualityReport {
     /// surface moved.
     pub fn summary(&self) -> String {
         format!(
-            "Triangle quality (radius ratio): worst {:.2} → {:.2}, mean {:.2} → {:.2}; the \
-             surface moved at most {:.2}% of the model's size.",
+            "Radius ratio: worst {:.2} → {:.2}, mean {:.2} → {:.2}; moved at most {:.2}% of the \
+             size.",
             self.input_min_radius_ratio,
             self.min_radius_ratio,
             self.input_mean_radius_ratio,

@@ -5,10 +5,10 @@
 use glam::DVec3;
 
 use super::weights::{
-    curvature_magnitudes, feature_laplacian_weights, linear_weights, positional_weights,
-    worst_radius_ratios,
+    curvature_magnitudes, feature_laplacian_weights, gaussian_laplacian_weights,
+    positional_weights, worst_radius_ratios,
 };
-use super::{LaplacianKind, Mode, OptimizeParams};
+use super::{FeatureFalloff, LaplacianKind, Mode, OptimizeParams, WeightScheme};
 use crate::geometry::{
     cotan_laplacian, cotan_laplacian_coordinates, uniform_laplacian, vertex_areas, vertex_normals,
 };
@@ -33,13 +33,24 @@ impl Rows {
     /// The rows for `mesh` and `params` (whose `scale` is ignored: see [`Rows::matrix`]).
     pub(super) fn new(mesh: &Mesh, params: &OptimizeParams) -> Rows {
         let kappa = curvature_magnitudes(mesh);
-        let (mut positional, row_weights) = if params.features {
-            let linear = linear_weights(&kappa, 1.0);
-            let rows = feature_laplacian_weights(&linear, 1.0);
-            (linear, rows)
-        } else {
-            let weights = positional_weights(&kappa, params.weights, 1.0);
-            (weights, vec![1.0; mesh.n_vertices()])
+        let (mut positional, row_weights) = match (params.features, params.feature_falloff) {
+            (false, _) => (
+                positional_weights(&kappa, params.weights, 1.0),
+                vec![1.0; mesh.n_vertices()],
+            ),
+            (true, FeatureFalloff::Linear | FeatureFalloff::Cdf) => {
+                let scheme = match params.feature_falloff {
+                    FeatureFalloff::Cdf => WeightScheme::Cdf,
+                    _ => WeightScheme::Linear,
+                };
+                let weights = positional_weights(&kappa, scheme, 1.0);
+                let rows = feature_laplacian_weights(&weights, 1.0);
+                (weights, rows)
+            }
+            (true, FeatureFalloff::Gaussian) => (
+                positional_weights(&kappa, params.weights, 1.0),
+                gaussian_laplacian_weights(&kappa),
+            ),
         };
         if params.quality {
             for (w, t) in positional.iter_mut().zip(worst_radius_ratios(mesh)) {

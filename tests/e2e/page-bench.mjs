@@ -7,7 +7,7 @@
 // Headless Chromium renders with SwiftShader on the CPU here, so absolute numbers are a floor
 // for real hardware rather than a prediction; compare runs on the same machine.
 
-import { readFileSync } from 'node:fs';
+import { existsSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 
 import { OUT_DIR, api, launch, penStroke, screenshot, settings, sleep } from './lib.mjs';
@@ -278,6 +278,58 @@ try {
     console.error(`over-sketch: ${JSON.stringify(oversketch)}`);
   }
 
+  // Laplacian mesh optimization of the Stanford bunny (SKETCHMESH_OPTIMIZE_FIXTURE, from the
+  // shared test data): a tap opens the preview (weights, system, factorization, solve: one
+  // step), `[` moves the amount (conjugate-gradient steps on the kept factorization), Enter
+  // applies (the exact refactorization at the new amount). Timed by the app per step.
+  let optimize = null;
+  const scanPath = process.env.SKETCHMESH_OPTIMIZE_FIXTURE;
+  if (scanPath && existsSync(scanPath)) {
+    const vertices = await page.evaluate((data) => {
+      window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
+      window.sketchmesh.loadGlb(new Uint8Array(data), 'bunny.glb');
+      window.sketchmesh.timings();
+      return window.sketchmesh.stats().vertices;
+    }, [...readFileSync(scanPath)]);
+    await sleep(500);
+    await page.keyboard.press('m');
+    const canvas = await page.evaluate(() => {
+      const r = document.querySelector('canvas').getBoundingClientRect();
+      return { x: r.left + r.width / 2, y: r.top + (r.height + 80) / 2 };
+    });
+    const pen = { pointerType: 'pen', button: 'left', force: 0.5 };
+    for (const type of ['mousePressed', 'mouseReleased']) {
+      await cdp.send('Input.dispatchMouseEvent', { type, ...canvas, buttons: type === 'mousePressed' ? 1 : 0, clickCount: 1, ...pen });
+    }
+    const frames = () => api(page, 'timings').then((t) => t.optimize?.frame_ms ?? []);
+    const collected = [];
+    for (let waited = 0; waited < 30_000 && collected.length === 0; waited += 200) {
+      await sleep(200);
+      collected.push(...(await frames()));
+    }
+    await page.keyboard.press('[');
+    await page.keyboard.press('[');
+    await sleep(4000);
+    const steps = await frames();
+    const applied = Date.now();
+    await page.keyboard.press('Enter');
+    await page.waitForFunction(() => JSON.parse(window.sketchmesh.session()).ops.at(-1)?.op === 'optimize', null, { timeout: 30_000, polling: 50 })
+      .catch(() => {});
+    const t = await api(page, 'timings');
+    const sorted = [...steps].sort((a, b) => a - b);
+    const mean = sorted.length ? sorted.reduce((a, b) => a + b, 0) / sorted.length : null;
+    optimize = {
+      vertices,
+      first_ms: round(collected[0] ?? null),
+      step_ms: { n: sorted.length, mean: round(mean), max: round(sorted.at(-1) ?? null) },
+      apply_ms: round(t.optimize?.finish_ms.at(-1) ?? null),
+      apply_wall_ms: Date.now() - applied,
+    };
+    console.error(`optimize: ${JSON.stringify(optimize)}`);
+  } else {
+    console.error(`WARNING: ${scanPath} is missing (the shared test data); the optimize timing is skipped`);
+  }
+
   const deltas = timing.frames.slice(1).map((t, i) => t - timing.frames[i]);
   const sorted = [...deltas].sort((a, b) => a - b);
   const quantile = (q) => (sorted.length ? sorted[Math.min(sorted.length - 1, Math.floor(q * sorted.length))] : null);
@@ -298,6 +350,7 @@ try {
     import_glb: { triangles: imported.triangles, bytes: imported.bytes, ms: round(imported.ms) },
     pulls,
     oversketch,
+    optimize,
   };
   console.log(JSON.stringify(report));
 } finally {

@@ -407,6 +407,12 @@ impl SketchApp {
         if pressed(Key::Escape) {
             self.drop_gesture(now);
         }
+        for (key, factor) in [(Key::OpenBracket, 1.0 / 1.25), (Key::CloseBracket, 1.25)] {
+            if pressed(key) {
+                let nudged = self.tools.nudge(factor);
+                self.take_output(nudged, now);
+            }
+        }
         if pressed(Key::F) {
             self.frame_all();
         }

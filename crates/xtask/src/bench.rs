@@ -56,6 +56,10 @@ pub fn bench_command(workspace: &Workspace) -> anyhow::Result<()> {
             .env("SKETCHMESH_GPU", "webgl2")
             .env("SKETCHMESH_PULL_FIXTURES", &pulls)
             .env("SKETCHMESH_OVERSKETCH_FIXTURE", &torus)
+            .env(
+                "SKETCHMESH_OPTIMIZE_FIXTURE",
+                workspace.root.join(OPTIMIZE_SCAN),
+            )
             .output()
             .context("starting node tests/e2e/page-bench.mjs")?;
         eprint!("{}", String::from_utf8_lossy(&out.stderr));
@@ -273,6 +277,10 @@ fn bench_fixtures(workspace: &Workspace) -> anyhow::Result<(String, String)> {
     Ok((pulls.join(","), torus))
 }
 
+/// The scan the page bench optimizes (the shared test data, beside the repository; the page
+/// bench says so loudly when it is missing).
+const OPTIMIZE_SCAN: &str = "../shared/testdata/meshes/stanford_bunny.glb";
+
 /// The page-bench JSON report as a markdown table.
 fn page_table(page: &Value, wasm_gzip_size: u64) -> String {
     let ms = |pointer: &str| {
@@ -339,11 +347,33 @@ fn page_table(page: &Value, wasm_gzip_size: u64) -> String {
             ms("/oversketch/op_ms"),
         ),
     ];
+    let vertices = text("/optimize/vertices");
+    let optimize_rows = [
+        (
+            format!(
+                "optimize at {vertices} vertices, tap to first preview (weights, factor, solve)"
+            ),
+            ms("/optimize/first_ms"),
+        ),
+        (
+            format!("optimize at {vertices} vertices, slider step (one CG iteration), mean"),
+            ms("/optimize/step_ms/mean"),
+        ),
+        (
+            format!("optimize at {vertices} vertices, slider step, max"),
+            ms("/optimize/step_ms/max"),
+        ),
+        (
+            format!("optimize at {vertices} vertices, Apply (exact refactor and solve)"),
+            ms("/optimize/apply_ms"),
+        ),
+    ];
     let rows = rows
         .into_iter()
         .map(|(name, value)| (name.to_owned(), value))
         .chain(pull_rows)
-        .chain(oversketch_rows);
+        .chain(oversketch_rows)
+        .chain(optimize_rows);
     for (name, value) in rows {
         // Writing to a String cannot fail.
         let _ = writeln!(table, "| {name} | {value} |");

@@ -22,6 +22,13 @@ const SHORTCUTS: &[(&str, &str)] = &[
         "A",
         "Over-sketch: bend the whole part (an ear, a finger) or only near the outline",
     ),
+    (
+        "M",
+        "Optimize: tap a model (or lasso part of one) to preview better triangles or smoothing",
+    ),
+    ("[ and ]", "Optimize: less or more hold (the amount s)"),
+    ("Enter", "Optimize: apply the preview"),
+    ("Esc", "Drop what is in progress (a preview, a drag)"),
     ("W", "Wireframe on/off"),
     ("G", "Grid on/off"),
     ("H, F1", "This help"),

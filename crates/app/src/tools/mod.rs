@@ -77,6 +77,14 @@ impl ToolSet {
         }
     }
 
+    /// Steps the active tool's amount by `factor` (`[` and `]`): the optimize tool's scale.
+    pub fn nudge(&mut self, factor: f64) -> ToolOutput {
+        match self.mode {
+            Mode::Optimize => self.optimize.nudge(factor),
+            _ => ToolOutput::None,
+        }
+    }
+
     /// What the active tool asks the user to do next, if anything.
     pub fn hint(&self) -> Option<&'static str> {
         match self.mode {

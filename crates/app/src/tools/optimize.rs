@@ -79,6 +79,17 @@ impl OptimizeTool {
         })
     }
 
+    /// Multiplies the amount (the scale `s`) by `factor` within the slider's range (the `[`
+    /// and `]` keys); the open preview follows.
+    pub fn nudge(&mut self, factor: f64) -> ToolOutput {
+        let (lo, hi) = (*SCALE_RANGE.start(), *SCALE_RANGE.end());
+        self.settings.scale = (self.settings.scale * factor).clamp(lo, hi);
+        match self.model {
+            Some(model) => ToolOutput::Revise(self.op(model)),
+            None => ToolOutput::None,
+        }
+    }
+
     /// Applies the open preview, if any.
     pub fn confirm(&mut self) -> ToolOutput {
         self.region = None;
@@ -170,7 +181,7 @@ impl OptimizeTool {
                 .logarithmic(true)
                 .text("Hold"),
         )
-        .on_hover_text("How strongly vertices hold their place (the scale s)");
+        .on_hover_text("How strongly vertices hold their place (the scale s; [ and ] step it)");
         ui.toggle_value(&mut s.features, "Keep edges")
             .on_hover_text("Sharp features keep their place (§6.5.3)");
         if s.features {

@@ -101,6 +101,22 @@ async function expectStats(page, expected, what) {
 }
 
 /** Polls `probe` until `accept(value)` holds or `ms` pass; returns the last value. */
+/**
+ * A fresh page with one shape drawn from the ellipse outline: runs `body({ fresh, created })`
+ * (`created` the stats after the creation) and closes the page whatever happens.
+ */
+async function withShape(body) {
+  const fresh = await openApp(browser, url, gpu);
+  try {
+    await penStroke(fresh.cdp, onEllipse());
+    const created = await until(() => api(fresh.page, 'stats'), (s) => s.models === 1, 15_000);
+    assert.equal(created.models, 1, 'the outline made a shape');
+    await body({ fresh, created });
+  } finally {
+    await fresh.context.close();
+  }
+}
+
 async function until(probe, accept, ms = 3000) {
   const deadline = Date.now() + ms;
   let value = await probe();
@@ -469,13 +485,8 @@ test('over-sketch mode: a stroke beyond a shape\'s outline pulls the outline to 
   }
 });
 
-test('manual over-sketch (K): pick an outline piece, redraw it; pick a curve on the surface, move it; undo restores', async () => {
-  const fresh = await openApp(browser, url, gpu);
-  try {
+test('manual over-sketch (K): pick an outline piece, redraw it; pick a curve on the surface, move it; undo restores', () => withShape(async ({ fresh, created }) => {
     const c = ELLIPSE.c;
-    await penStroke(fresh.cdp, onEllipse());
-    const created = await until(() => api(fresh.page, 'stats'), (s) => s.models === 1, 15_000);
-    assert.equal(created.models, 1, 'the outline made a shape');
     await fresh.page.keyboard.press('k');
     await frames(fresh.page, 3);
     const before = await screenshot(fresh.page, out('manual-before.png'));
@@ -523,10 +534,7 @@ test('manual over-sketch (K): pick an outline piece, redraw it; pick a curve on 
     const undone = await screenshot(fresh.page, out('manual-undone.png'));
     assert.ok(imageChangedFraction(before, undone) < 0.01, 'two undos restore the shape');
     assert.deepEqual(fresh.errors, [], 'console errors while over-sketching by hand');
-  } finally {
-    await fresh.context.close();
-  }
-});
+}));
 
 test('curve tools with the pen: pull (live preview), add a curve, make it sharp, rub, erase; undo restores', async () => {
   const fresh = await openApp(browser, url, gpu);
@@ -613,13 +621,8 @@ test('curve tools with the pen: pull (live preview), add a curve, make it sharp,
   }
 });
 
-test('optimize (M): a tap previews the shape optimized, Esc drops it, Enter commits one op, undo restores', async () => {
-  const fresh = await openApp(browser, url, gpu);
-  try {
+test('optimize (M): a tap previews the shape optimized, Esc drops it, Enter commits one op, undo restores', () => withShape(async ({ fresh, created }) => {
     const c = ELLIPSE.c;
-    await penStroke(fresh.cdp, onEllipse());
-    const created = await until(() => api(fresh.page, 'stats'), (s) => s.models === 1, 15_000);
-    assert.equal(created.models, 1, 'the outline made a shape');
     const lastOp = () => api(fresh.page, 'session').then((json) => JSON.parse(json).ops.at(-1) ?? {});
     const glb = () => fresh.page.evaluate(() => Array.from(window.sketchmesh.exportGlb()));
     await until(lastOp, (o) => o.op === 'create', 15_000);
@@ -667,10 +670,7 @@ test('optimize (M): a tap previews the shape optimized, Esc drops it, Enter comm
     await frames(fresh.page, 3);
     assert.deepEqual(await glb(), original, 'undo restores the shape bit for bit');
     assert.deepEqual(fresh.errors, [], 'console errors while optimizing');
-  } finally {
-    await fresh.context.close();
-  }
-});
+}));
 
 const failed = await runAll();
 clearTimeout(watchdog);

@@ -15,23 +15,12 @@ Exits non-zero when the largest difference exceeds 1e-6 of the bounding-box diag
 """
 
 import sys
-import time
 
 import igl
 import numpy as np
 import scipy.sparse as sp
 
-RUNS = 5
-
-
-def median_ms(f):
-    samples = []
-    result = None
-    for _ in range(RUNS):
-        start = time.perf_counter()
-        result = f()
-        samples.append(time.perf_counter() - start)
-    return result, 1e3 * sorted(samples)[len(samples) // 2]
+from libigl_common import RUNS, median_ms
 
 
 def main(directory):

@@ -12,23 +12,12 @@ Exits non-zero when the largest difference exceeds 1e-6 of the bounding-box diag
 """
 
 import sys
-import time
 
 import igl
 import numpy as np
 import scipy.sparse as sp
 
-RUNS = 5
-
-
-def median_ms(f):
-    samples = []
-    result = None
-    for _ in range(RUNS):
-        start = time.perf_counter()
-        result = f()
-        samples.append(time.perf_counter() - start)
-    return result, 1e3 * sorted(samples)[len(samples) // 2]
+from libigl_common import RUNS, median_ms
 
 
 def main(directory):
@@ -62,7 +51,7 @@ def main(directory):
     diagonal = np.linalg.norm(ours.max(axis=0) - ours.min(axis=0))
     difference = np.abs(x - ours).max() / diagonal
     print(
-        f"optimize, libigl {igl.__version__ if hasattr(igl, '__version__') else ''}: "
+        "optimize, libigl (min_quad_with_fixed): "
         f"build Q = 2AᵀA {build_ms:.1f} ms, precompute {factor_ms:.1f} ms, "
         f"solve {solve_ms:.1f} ms (median of {RUNS}); "
         f"largest difference {difference:.2e} of the diagonal"

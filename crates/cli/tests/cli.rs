@@ -254,12 +254,37 @@ fn optimize_improves_the_triangles_of_a_scan_and_reports_it() {
 }
 
 #[test]
+fn optimize_smooths_with_each_feature_falloff() {
+    let dir = temp_dir("optimize-falloff");
+    let input = testdata_mesh("suzanne.glb");
+    for falloff in ["linear", "cdf", "gaussian"] {
+        let out = dir.join(format!("{falloff}.glb"));
+        let args = [
+            "--mode",
+            "smooth",
+            "--features",
+            "--feature-falloff",
+            falloff,
+        ];
+        succeed("optimize", &input, &out, &args);
+        assert!(
+            std::fs::read(&out).unwrap().starts_with(b"glTF"),
+            "{falloff}"
+        );
+    }
+}
+
+#[test]
 fn optimize_refuses_bad_options_with_a_sentence() {
     let input = testdata_mesh("suzanne.glb");
     for (args, says) in [
         (vec!["--mode", "sharpen"], "--mode"),
         (vec!["--scale", "lots"], "--scale takes a number"),
         (vec!["--wobble"], "I don't know the option --wobble"),
+        (
+            vec!["--features", "--feature-falloff", "sharp"],
+            "--feature-falloff",
+        ),
     ] {
         let mut all: Vec<&std::ffi::OsStr> = vec![
             "optimize".as_ref(),

@@ -8,11 +8,11 @@
 //! builds the system again (see `core::optimize::Optimizer`). Apply ends the gesture; the
 //! preview of the final settings is the committed result.
 
-use glam::DVec2;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::StrokePoint;
-use sketchmesh_core::curve::polyline::centroid;
-use sketchmesh_core::document::{Document, Op, OptimizeInput, StrokeInput, model_under};
+use sketchmesh_core::document::{
+    Document, Op, OptimizeInput, StrokeInput, model_in_lasso, model_under,
+};
 use sketchmesh_core::optimize::{
     FeatureFalloff, LaplacianKind, Mode as OptimizeMode, OptimizeParams, WeightScheme,
 };
@@ -45,7 +45,7 @@ impl OptimizeTool {
         let (model, region) = if is_tap(&input) {
             (model_under(doc, &input), None)
         } else {
-            (lasso_model(doc, &input), Some(input))
+            (model_in_lasso(doc, &input), Some(input))
         };
         let Some(model) = model else {
             let sentence = "Tap a model, or draw a lasso around part of one, to optimize it.";
@@ -249,21 +249,6 @@ impl OptimizeTool {
             ToolOutput::Revise(self.op(model))
         }
     }
-}
-
-/// The model a lasso is drawn around: the one under its centroid, else under any of its
-/// samples.
-fn lasso_model(doc: &Document, lasso: &StrokeInput) -> Option<usize> {
-    let points: Vec<DVec2> = lasso.points().iter().map(|p| p.pos).collect();
-    let inside = centroid(&points);
-    std::iter::once(inside).chain(points).find_map(|p| {
-        let probe = StrokeInput {
-            viewport: lasso.viewport,
-            camera: lasso.camera,
-            stroke: vec![[p.x, p.y, 0.5]],
-        };
-        model_under(doc, &probe)
-    })
 }
 
 /// A drop-down for one setting: `(value, label, hint)` per choice.

@@ -11,6 +11,7 @@ use glam::DVec2;
 
 use super::{AddCurveInput, Document, Model, Op, StrokeInput};
 use crate::curve::is_closed_loop;
+use crate::curve::polyline::centroid;
 use crate::geometry::raycast;
 
 /// How far apart, in CSS px, a stroke's ends may be for it to read as closed.
@@ -64,9 +65,21 @@ pub fn starts_on_model(doc: &Document, input: &StrokeInput) -> bool {
 /// The index of the model nearest the eye under the stroke's first point (a tap), if any.
 pub fn model_under(doc: &Document, input: &StrokeInput) -> Option<usize> {
     let &[x, y, _] = input.stroke.first()?;
-    let (origin, dir) = input
-        .camera
-        .ray_in_world(DVec2::new(x, y), input.viewport_size());
+    model_at(doc, input, DVec2::new(x, y))
+}
+
+/// The index of the model a closed stroke (a lasso) is drawn around: the one under its
+/// centroid, else under the first of its samples that lies over a model.
+pub fn model_in_lasso(doc: &Document, lasso: &StrokeInput) -> Option<usize> {
+    let points: Vec<DVec2> = lasso.points().iter().map(|p| p.pos).collect();
+    std::iter::once(centroid(&points))
+        .chain(points)
+        .find_map(|screen| model_at(doc, lasso, screen))
+}
+
+/// The index of the model nearest the eye under `screen`, seen in the stroke's view.
+fn model_at(doc: &Document, input: &StrokeInput, screen: DVec2) -> Option<usize> {
+    let (origin, dir) = input.camera.ray_in_world(screen, input.viewport_size());
     let hits =
         doc.models.iter().enumerate().filter_map(|(i, model)| {
             raycast(&model.mesh, origin, dir).map(|hit| (hit.distance, i))
@@ -123,6 +136,31 @@ mod tests {
                 })
                 .collect(),
         }
+    }
+
+    #[test]
+    fn a_lasso_finds_the_model_it_is_drawn_around_even_off_its_centre() {
+        let sphere = Model {
+            mesh: crate::mesh::primitives::icosphere(0.5, 2),
+            curves: Vec::new(),
+            name: None,
+            appearance: None,
+        };
+        let mut doc = Document::default();
+        doc.models.push(std::sync::Arc::new(sphere));
+        let centre = Camera::default()
+            .screen_from_world(glam::DVec3::ZERO, DVec2::new(800.0, 600.0))
+            .unwrap()
+            .truncate();
+        // Around the sphere; then a crescent whose centroid misses it but whose samples cross
+        // it; then a loop in empty space.
+        assert_eq!(model_in_lasso(&doc, &circle(centre, 200.0, 1.0)), Some(0));
+        let crescent = circle(centre + DVec2::new(400.0, 0.0), 400.0, 0.6);
+        assert_eq!(model_in_lasso(&doc, &crescent), Some(0));
+        assert_eq!(
+            model_in_lasso(&doc, &circle(DVec2::new(60.0, 60.0), 30.0, 1.0)),
+            None
+        );
     }
 
     #[test]

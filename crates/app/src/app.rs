@@ -26,7 +26,7 @@ use crate::input::router::{InputRouter, Routed};
 use crate::panels;
 use crate::render::geometry::pressure_width;
 use crate::render::{SceneCallback, SceneGeometry, SceneRenderer, Uniforms, ViewOptions};
-use crate::tools::{Mode, ToolEvent, ToolOutput, ToolSet, ViewCtx};
+use crate::tools::{Mark, Mode, ToolEvent, ToolOutput, ToolSet, ViewCtx};
 
 /// How long a status message stays up, in seconds.
 const STATUS_SECONDS: f64 = 6.0;
@@ -620,8 +620,8 @@ impl SketchApp {
             hint_ui(ui, viewport, what);
         }
         let camera = self.shared.borrow().camera.camera();
-        if let Some(lasso) = self.tools.lasso(&camera) {
-            stroke_ui(ui, viewport, lasso, egui::Color32::from_rgb(110, 220, 150));
+        for mark in self.tools.marks(&camera) {
+            mark_ui(ui, viewport, &mark);
         }
         if let Some(raw) = self.stroke_preview() {
             stroke_ui(ui, viewport, raw, egui::Color32::from_rgb(242, 199, 82));
@@ -693,6 +693,26 @@ fn stroke_ui(ui: &egui::Ui, viewport: egui::Rect, raw: &[StrokePoint], color: eg
         ui.painter()
             .circle_filled(to_screen(&pair[1]), width * 0.5, color);
     }
+}
+
+/// A lasso (a line) or a brush stroke (a translucent band as wide as the brush) of the
+/// optimize tool: green for what moves, orange for features that hold.
+fn mark_ui(ui: &egui::Ui, viewport: egui::Rect, mark: &Mark) {
+    let color = match mark.features {
+        false => egui::Color32::from_rgb(110, 220, 150),
+        true => egui::Color32::from_rgb(240, 150, 60),
+    };
+    let Some(radius) = mark.radius else {
+        return stroke_ui(ui, viewport, &mark.points, color);
+    };
+    let points: Vec<egui::Pos2> = (mark.points.iter())
+        .map(|p| viewport.min + egui::vec2(p.pos.x as f32, p.pos.y as f32))
+        .collect();
+    let band = egui::Stroke::new(2.0 * radius as f32, color.gamma_multiply(0.35));
+    match points.as_slice() {
+        [only] => ui.painter().circle_filled(*only, radius as f32, band.color),
+        _ => ui.painter().add(egui::Shape::line(points, band)),
+    };
 }
 
 impl eframe::App for SketchApp {

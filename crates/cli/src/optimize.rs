@@ -33,7 +33,7 @@ pub fn run(args: &[&str]) -> anyhow::Result<()> {
             .apply(Op::Optimize(OptimizeInput {
                 model,
                 settings: request.settings,
-                region: None,
+                ..OptimizeInput::default()
             }))
             .with_context(|| format!("Could not optimize model {model} of {}", request.input))?;
         let after = editor.document().models[model].mesh.positions();

@@ -12,7 +12,7 @@ use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use sketchmesh_core::mesh::{Mesh, primitives};
-use sketchmesh_core::optimize::{OptimizeParams, Optimizer, optimize};
+use sketchmesh_core::optimize::{OptimizeParams, Optimizer, Selection, optimize};
 
 #[path = "common/scan.rs"]
 mod scan;
@@ -39,8 +39,8 @@ fn bench_optimize(c: &mut Criterion) {
     group.sample_size(10);
     for (name, mesh) in &cases {
         let id = BenchmarkId::from_parameter(format!("{name}_{}", mesh.n_vertices()));
-        let mut optimizer =
-            Optimizer::new(mesh, &OptimizeParams::default(), None).expect("factors");
+        let mut optimizer = Optimizer::new(mesh, &OptimizeParams::default(), &Selection::default())
+            .expect("factors");
         let mut scale = 1.0;
         group.bench_function(id, |b| {
             b.iter(|| {
@@ -57,8 +57,8 @@ fn bench_optimize(c: &mut Criterion) {
     group.sample_size(20);
     for (name, mesh) in &cases {
         let id = BenchmarkId::from_parameter(format!("{name}_{}", mesh.n_vertices()));
-        let mut optimizer =
-            Optimizer::new(mesh, &OptimizeParams::default(), None).expect("factors");
+        let mut optimizer = Optimizer::new(mesh, &OptimizeParams::default(), &Selection::default())
+            .expect("factors");
         let mut shown = optimizer.solve(1.0).expect("solves");
         let mut scale = 0.5;
         group.bench_function(id, |b| {

@@ -12,7 +12,7 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::time::Instant;
 
-use sketchmesh_core::optimize::{OptimizeParams, Optimizer};
+use sketchmesh_core::optimize::{OptimizeParams, Optimizer, Selection};
 
 #[path = "../benches/common/export.rs"]
 mod export;
@@ -31,10 +31,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mesh = scan("stanford_bunny.glb").ok_or("the shared test data is missing")?;
     let params = OptimizeParams::default();
     let mut factor_times = Vec::new();
-    let mut optimizer = Optimizer::new(&mesh, &params, None)?;
+    let mut optimizer = Optimizer::new(&mesh, &params, &Selection::default())?;
     for _ in 0..RUNS {
         let start = Instant::now();
-        optimizer = Optimizer::new(&mesh, &params, None)?;
+        optimizer = Optimizer::new(&mesh, &params, &Selection::default())?;
         factor_times.push(start.elapsed().as_secs_f64());
     }
     let mut solve_times = Vec::new();

@@ -25,6 +25,7 @@ pub use context::{ToolOutput, ViewCtx};
 pub use mode::Mode;
 
 use curve_stroke::CurveStrokeTool;
+pub use optimize::Mark;
 use optimize::OptimizeTool;
 pub use oversketch::OversketchSettings;
 use oversketch::{HandlePreview, OversketchTool};
@@ -120,7 +121,8 @@ impl ToolSet {
     pub fn preview(&self) -> Option<&[StrokePoint]> {
         match self.mode {
             Mode::Sketch => self.sketch.preview(),
-            Mode::Pull | Mode::Optimize => None,
+            Mode::Pull => None,
+            Mode::Optimize => self.optimize.preview(),
             Mode::Erase | Mode::CurveType | Mode::Rub => self.curve_stroke.preview(),
             Mode::Oversketch => self.oversketch.preview(),
         }
@@ -131,11 +133,12 @@ impl ToolSet {
         self.sketch.waiting()
     }
 
-    /// The optimize tool's lasso, while the view is the one it was drawn in.
-    pub fn lasso(&self, camera: &Camera) -> Option<&[StrokePoint]> {
+    /// The optimize tool's lasso and brush strokes, while the view is the one each was drawn
+    /// in.
+    pub fn marks(&self, camera: &Camera) -> Vec<Mark> {
         match self.mode {
-            Mode::Optimize => self.optimize.lasso(camera),
-            _ => None,
+            Mode::Optimize => self.optimize.marks(camera),
+            _ => Vec::new(),
         }
     }
 

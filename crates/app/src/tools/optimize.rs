@@ -1,6 +1,7 @@
 //! The optimize tool (Nealen's dissertation ch. 6): tap a model (or draw a lasso around part
-//! of one), choose the mode and the weights, drag the amount; the model previews each
-//! setting, and Apply commits the last one as one undoable `optimize` op.
+//! of one, or paint over it), choose the mode and the weights, drag the amount; the model
+//! previews each setting, and Apply commits the last one as one undoable `optimize` op.
+//! Painting with the brush adds to the area that moves, or tags features that hold.
 //!
 //! The tap begins an `optimize` edit as a gesture (as a pull is begun at pointer-down);
 //! every change in the panel revises its op ([`ToolOutput::Revise`]) and the app's next step
@@ -11,7 +12,7 @@
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::document::{
-    Document, Op, OptimizeInput, StrokeInput, model_in_lasso, model_under,
+    BrushInput, Document, Op, OptimizeInput, StrokeInput, model_in_lasso, model_under,
 };
 use sketchmesh_core::optimize::{
     FeatureFalloff, LaplacianKind, Mode as OptimizeMode, OptimizeParams, WeightScheme,
@@ -24,51 +25,168 @@ use crate::input::router::ToolEvent;
 /// The slider's range for the scale `s` (the thesis's positional weights lie in `[0, s]`).
 const SCALE_RANGE: std::ops::RangeInclusive<f64> = 0.05..=4.0;
 
+/// The brush's radius range in CSS px (at a mouse's pressure; a pen widens and narrows it).
+const BRUSH_RANGE: std::ops::RangeInclusive<f64> = 6.0..=80.0;
+
+/// What a stroke that is not a tap does.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+enum StrokeUse {
+    /// A closed lasso around what moves (it replaces the previous one).
+    #[default]
+    Lasso,
+    /// Paint over more of what moves.
+    PaintArea,
+    /// Paint over features that hold their place.
+    PaintFeatures,
+}
+
+/// A lasso or brush stroke of the open preview, as shown on screen.
+#[derive(Debug)]
+pub struct Mark {
+    /// The samples, in the view they were drawn in.
+    pub points: Vec<StrokePoint>,
+    /// The brush's radius in CSS px; `None` for the lasso.
+    pub radius: Option<f64>,
+    /// Whether it marks features that hold (else what moves).
+    pub features: bool,
+}
+
 /// The optimize tool's state: the settings, and the model being previewed.
-#[derive(Debug, Default)]
+#[derive(Debug)]
 pub struct OptimizeTool {
     draw: DrawTool,
     settings: OptimizeParams,
+    stroke_use: StrokeUse,
+    /// The brush's radius in CSS px.
+    brush_radius: f64,
     /// The model whose preview is open, if any.
     model: Option<usize>,
     /// The lasso bounding what moves, if one was drawn, and its samples for display.
     region: Option<(StrokeInput, Vec<StrokePoint>)>,
+    /// Brush strokes over more of what moves.
+    painted: Vec<BrushInput>,
+    /// Brush strokes over features that hold.
+    painted_features: Vec<BrushInput>,
+}
+
+impl Default for OptimizeTool {
+    fn default() -> Self {
+        OptimizeTool {
+            draw: DrawTool::default(),
+            settings: OptimizeParams::default(),
+            stroke_use: StrokeUse::default(),
+            brush_radius: 20.0,
+            model: None,
+            region: None,
+            painted: Vec::new(),
+            painted_features: Vec::new(),
+        }
+    }
 }
 
 impl OptimizeTool {
     /// Feeds one event: a tap on a model opens its preview of the whole model, a lasso its
-    /// preview of what the lasso holds (an open preview of another model is applied first).
+    /// preview of what the lasso holds, a brush stroke adds to what moves or holds (an open
+    /// preview of another model is applied first).
     pub fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
         let Some(input) = self.draw.capture(event, view) else {
             return ToolOutput::None;
         };
-        let (model, region) = if is_tap(&input) {
-            (model_under(doc, &input), None)
-        } else {
-            (model_in_lasso(doc, &input), Some(input))
+        let tap = is_tap(&input);
+        let model = match tap {
+            true => model_under(doc, &input),
+            false => model_in_lasso(doc, &input),
         };
         let Some(model) = model else {
-            let sentence = "Tap a model, or draw a lasso around part of one, to optimize it.";
+            let sentence =
+                "Tap a model, or draw a lasso around or paint over part of one, to optimize it.";
             return ToolOutput::Refused(String::from(sentence));
         };
-        let unchanged = self.model == Some(model) && region.is_none() && self.region.is_none();
-        self.region = region.map(|r| {
-            let points = r.points();
-            (r, points)
-        });
         let is_open = self.model.replace(model) == Some(model);
-        match (unchanged, is_open) {
-            (true, _) => ToolOutput::None,
-            (false, true) => ToolOutput::Revise(self.op(model)),
-            (false, false) => ToolOutput::Begin(self.op(model)),
+        if !is_open {
+            self.clear_marks();
+        }
+        let changed = match (tap, self.stroke_use) {
+            (true, _) => self.clear_area(),
+            (false, StrokeUse::Lasso) => {
+                let points = input.points();
+                self.region = Some((input, points));
+                true
+            }
+            (false, use_) => {
+                let brush = BrushInput {
+                    stroke: input,
+                    radius: self.brush_radius,
+                };
+                match use_ {
+                    StrokeUse::PaintFeatures => self.painted_features.push(brush),
+                    _ => self.painted.push(brush),
+                }
+                true
+            }
+        };
+        match (is_open, changed) {
+            (false, _) => ToolOutput::Begin(self.op(model)),
+            (true, true) => ToolOutput::Revise(self.op(model)),
+            (true, false) => ToolOutput::None,
         }
     }
 
-    /// The lasso bounding the preview, for display while the view is the one it was drawn
-    /// in (it is kept in screen points).
-    pub fn lasso(&self, camera: &Camera) -> Option<&[StrokePoint]> {
-        let (input, points) = self.region.as_ref()?;
-        (input.camera == *camera).then_some(points.as_slice())
+    /// Drops the lasso and the painted area, so that all of the model moves; returns whether
+    /// either was there.
+    fn clear_area(&mut self) -> bool {
+        let had = self.region.is_some() || !self.painted.is_empty();
+        self.region = None;
+        self.painted.clear();
+        had
+    }
+
+    /// Forgets every mark: lasso, painted area and painted features.
+    fn clear_marks(&mut self) {
+        self.region = None;
+        self.painted.clear();
+        self.painted_features.clear();
+    }
+
+    /// The lasso and brush strokes of the preview, for display while the view is the one
+    /// each was drawn in (they are kept in screen points).
+    pub fn marks(&self, camera: &Camera) -> Vec<Mark> {
+        let lasso = (self.region.iter())
+            .filter(|(input, _)| input.camera == *camera)
+            .map(|(_, points)| Mark {
+                points: points.clone(),
+                radius: None,
+                features: false,
+            });
+        let brush = |features: bool| {
+            move |b: &BrushInput| {
+                (b.stroke.camera == *camera).then(|| Mark {
+                    points: b.stroke.points(),
+                    radius: Some(b.radius),
+                    features,
+                })
+            }
+        };
+        let painting = (self.stroke_use != StrokeUse::Lasso)
+            .then(|| self.draw.preview())
+            .flatten()
+            .map(|points| Mark {
+                points: points.to_vec(),
+                radius: Some(self.brush_radius),
+                features: self.stroke_use == StrokeUse::PaintFeatures,
+            });
+        lasso
+            .chain(self.painted.iter().filter_map(brush(false)))
+            .chain(self.painted_features.iter().filter_map(brush(true)))
+            .chain(painting)
+            .collect()
+    }
+
+    /// The lasso being drawn, for live display (a brush stroke being painted is a mark).
+    pub fn preview(&self) -> Option<&[StrokePoint]> {
+        (self.stroke_use == StrokeUse::Lasso)
+            .then(|| self.draw.preview())
+            .flatten()
     }
 
     fn op(&self, model: usize) -> Op {
@@ -76,6 +194,8 @@ impl OptimizeTool {
             model,
             settings: self.settings,
             region: self.region.as_ref().map(|(input, _)| input.clone()),
+            painted: self.painted.clone(),
+            painted_features: self.painted_features.clone(),
         })
     }
 
@@ -92,7 +212,7 @@ impl OptimizeTool {
 
     /// Applies the open preview, if any.
     pub fn confirm(&mut self) -> ToolOutput {
-        self.region = None;
+        self.clear_marks();
         match self.model.take() {
             Some(_) => ToolOutput::Finish,
             None => ToolOutput::None,
@@ -103,13 +223,14 @@ impl OptimizeTool {
     pub fn cancel(&mut self) {
         self.draw = DrawTool::Idle;
         self.model = None;
-        self.region = None;
+        self.clear_marks();
     }
 
     /// What the tool asks for while no model is previewed.
     pub fn hint(&self) -> Option<&'static str> {
         self.model.is_none().then_some(
-            "Tap a model, or draw a lasso around part of one, to preview its optimization",
+            "Tap a model, or draw a lasso around or paint over part of one, to preview its \
+             optimization",
         )
     }
 
@@ -216,16 +337,52 @@ impl OptimizeTool {
             ui.toggle_value(&mut s.quality, "Fix slivers")
                 .on_hover_text("Vertices of poor triangles move more freely (§6.5.2)");
         }
+        combo(
+            ui,
+            "optimize-strokes",
+            &mut self.stroke_use,
+            &[
+                (
+                    StrokeUse::Lasso,
+                    "Lasso",
+                    "A stroke around part of a model: only that part moves",
+                ),
+                (
+                    StrokeUse::PaintArea,
+                    "Paint area",
+                    "Strokes over a model paint what moves",
+                ),
+                (
+                    StrokeUse::PaintFeatures,
+                    "Paint edges",
+                    "Strokes over a model paint features that hold their place",
+                ),
+            ],
+        );
+        if self.stroke_use != StrokeUse::Lasso {
+            ui.add(egui::Slider::new(&mut self.brush_radius, BRUSH_RANGE).text("Brush"))
+                .on_hover_text("The brush's radius in points; a pen's pressure widens it");
+        }
         let Some(model) = self.model else {
             return ToolOutput::None;
         };
-        if self.region.is_some()
+        let area_marked = self.region.is_some() || !self.painted.is_empty();
+        if area_marked
             && ui
                 .button("Whole model")
-                .on_hover_text("Drop the lasso: optimize all of the model")
+                .on_hover_text("Drop the lasso and the painted area: optimize all of the model")
                 .clicked()
         {
-            self.region = None;
+            self.clear_area();
+            return ToolOutput::Revise(self.op(model));
+        }
+        if !self.painted_features.is_empty()
+            && ui
+                .button("Clear edges")
+                .on_hover_text("Forget the painted features")
+                .clicked()
+        {
+            self.painted_features.clear();
             return ToolOutput::Revise(self.op(model));
         }
         if ui

@@ -39,8 +39,8 @@ pub use intent::{
     starts_on_model,
 };
 pub use op::{
-    AddCurveInput, CurveTypeInput, FileInput, ImportInput, Op, OptimizeInput, OversketchFit,
-    OversketchInput, StrokeInput,
+    AddCurveInput, BrushInput, CurveTypeInput, FileInput, ImportInput, Op, OptimizeInput,
+    OversketchFit, OversketchInput, StrokeInput,
 };
 pub use oversketch::OutlinePiece;
 pub use session::{SESSION_FORMAT, SESSION_VERSION, Session};

@@ -112,7 +112,7 @@ impl Op {
 /// An `optimize` op: which model, and the settings at the top level beside it
 /// (`{"op":"optimize","model":0,"mode":"shape","weights":"cdf","scale":1.0}`); settings
 /// left out take their defaults.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct OptimizeInput {
     /// Index of the model in the document.
     pub model: usize,
@@ -123,6 +123,23 @@ pub struct OptimizeInput {
     /// rest keep their place. Without it the whole model is optimized.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub region: Option<StrokeInput>,
+    /// Brush strokes painted over vertices that may move, added to the lasso's.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub painted: Vec<BrushInput>,
+    /// Brush strokes painted over features to keep (see [`crate::optimize::Selection`]).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub painted_features: Vec<BrushInput>,
+}
+
+/// A brush stroke painted on screen: the stroke in its view, and the brush's radius in CSS px
+/// at a mouse's pressure (see [`crate::optimize::region::brushed_vertices`]).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct BrushInput {
+    /// The stroke, its view and its samples beside `radius`.
+    #[serde(flatten)]
+    pub stroke: StrokeInput,
+    /// The brush's radius in CSS px.
+    pub radius: f64,
 }
 
 /// An `add_curve` op: the stroke and which kind of curve it makes.
@@ -397,6 +414,8 @@ mod tests {
                 model: 0,
                 settings: OptimizeParams::default(),
                 region: None,
+                painted: Vec::new(),
+                painted_features: Vec::new(),
             }),
             Op::Undo,
             Op::Redo,

@@ -10,9 +10,10 @@
 
 use glam::DVec3;
 
-use super::{CommandError, Document, Model, OptimizeInput};
-use crate::optimize::region::lasso_vertices;
-use crate::optimize::{OptimizeError, Optimizer};
+use super::{BrushInput, CommandError, Document, Model, OptimizeInput, StrokeInput};
+use crate::mesh::Mesh;
+use crate::optimize::region::{brushed_vertices, lasso_vertices};
+use crate::optimize::{OptimizeError, Optimizer, Selection};
 
 /// The index of the model and the model with its vertices optimized; its triangles, curves
 /// (chains of vertices, so they follow) and appearance stay.
@@ -27,21 +28,66 @@ pub(super) fn optimize_op(
     Ok((input.model, with_positions(doc, input.model, &positions)))
 }
 
-/// The optimizer for `input`: its model, settings and region.
+/// The optimizer for `input`: its model, settings and the vertices its lasso and brush
+/// strokes mark.
 fn new_optimizer(doc: &Document, input: &OptimizeInput) -> Result<Optimizer, CommandError> {
     let mesh = &target(doc, input.model)?.mesh;
-    let movable = match &input.region {
-        Some(lasso) => {
-            let viewport = lasso.checked_viewport()?;
-            let points: Vec<_> = lasso.points().iter().map(|p| p.pos).collect();
-            if points.len() < 3 || points.iter().any(|p| !p.is_finite()) {
+    let lassoed = (input.region.as_ref())
+        .map(|lasso| lassoed_vertices(mesh, lasso))
+        .transpose()?;
+    let selection = Selection {
+        movable: union(
+            lassoed
+                .into_iter()
+                .chain(painted_vertices(mesh, &input.painted)?),
+        ),
+        features: union(painted_vertices(mesh, &input.painted_features)?),
+    };
+    Ok(Optimizer::new(mesh, &input.settings, &selection)?)
+}
+
+/// The vertices of `mesh` inside `lasso`.
+///
+/// Errors: [`CommandError::BadView`] for its view, [`OptimizeError::EmptyRegion`] for
+/// fewer than three finite samples.
+fn lassoed_vertices(mesh: &Mesh, lasso: &StrokeInput) -> Result<Vec<bool>, CommandError> {
+    let viewport = lasso.checked_viewport()?;
+    let points: Vec<_> = lasso.points().iter().map(|p| p.pos).collect();
+    if points.len() < 3 || points.iter().any(|p| !p.is_finite()) {
+        return Err(OptimizeError::EmptyRegion.into());
+    }
+    Ok(lasso_vertices(mesh, &lasso.camera, viewport, &points))
+}
+
+/// The vertices of `mesh` each of `strokes` covers.
+///
+/// Errors: [`CommandError::BadView`] for a stroke's view, [`OptimizeError::EmptyRegion`]
+/// for a stroke without samples or with a radius that is not positive and finite.
+fn painted_vertices(mesh: &Mesh, strokes: &[BrushInput]) -> Result<Vec<Vec<bool>>, CommandError> {
+    strokes
+        .iter()
+        .map(|brush| {
+            let viewport = brush.stroke.checked_viewport()?;
+            let points = brush.stroke.points();
+            let usable = brush.radius.is_finite() && brush.radius > 0.0;
+            if !usable || points.is_empty() || points.iter().any(|p| !p.pos.is_finite()) {
                 return Err(OptimizeError::EmptyRegion.into());
             }
-            Some(lasso_vertices(mesh, &lasso.camera, viewport, &points))
-        }
-        None => None,
-    };
-    Ok(Optimizer::new(mesh, &input.settings, movable.as_deref())?)
+            let camera = &brush.stroke.camera;
+            Ok(brushed_vertices(
+                mesh,
+                camera,
+                viewport,
+                &points,
+                brush.radius,
+            ))
+        })
+        .collect()
+}
+
+/// The vertices any of `masks` marks; `None` without masks.
+fn union(masks: impl IntoIterator<Item = Vec<bool>>) -> Option<Vec<bool>> {
+    (masks.into_iter()).reduce(|a, b| a.iter().zip(&b).map(|(&x, &y)| x || y).collect())
 }
 
 /// A live optimization of one model: what it shows and the optimizer behind it.
@@ -126,9 +172,12 @@ fn optimizer_for<'a>(
     base: &Document,
     input: &OptimizeInput,
 ) -> Result<(&'a mut Optimizer, bool), CommandError> {
-    let same_target = built
-        .as_ref()
-        .is_some_and(|b| b.model == input.model && b.region == input.region);
+    let same_target = built.as_ref().is_some_and(|b| {
+        b.model == input.model
+            && b.region == input.region
+            && b.painted == input.painted
+            && b.painted_features == input.painted_features
+    });
     let keep = same_target && slot.as_ref().is_some_and(|o| o.serves(&input.settings));
     Ok(match (slot, keep) {
         (Some(kept), true) => (kept, true),

@@ -15,7 +15,8 @@ pub enum OptimizeError {
     Empty,
     /// The region to optimize holds no vertex of the model.
     #[error(
-        "the lasso holds no vertex of the model that faces you; draw it around part of the model"
+        "the lasso or the painted area holds no vertex of the model that faces you; draw it \
+         around or over part of the model"
     )]
     EmptyRegion,
     /// The sparse factorization failed.

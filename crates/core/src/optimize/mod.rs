@@ -128,13 +128,25 @@ impl Default for OptimizeParams {
     }
 }
 
+/// Which vertices the user marked for one optimization (see [`region`]).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Selection {
+    /// Per vertex: whether it may move; all may when `None`. The rest keep their place.
+    pub movable: Option<Vec<bool>>,
+    /// Per vertex: whether the user tagged it as a feature to keep (§6.6: "vertices the user
+    /// tags"): its Laplacian row is dropped and its positional weight is the full `s`, as the
+    /// most curved vertices get with `features` (§6.5.3), so it holds its place while its
+    /// neighbours move around it.
+    pub features: Option<Vec<bool>>,
+}
+
 /// The optimized positions of `mesh` (one per vertex, same order; the triangles stay).
 ///
 /// Errors: [`OptimizeError::InvalidScale`] for a scale that is not positive and finite,
 /// [`OptimizeError::Empty`] for a mesh without faces, [`OptimizeError::Solve`] when the
 /// factorization fails.
 pub fn optimize(mesh: &Mesh, params: &OptimizeParams) -> Result<Vec<DVec3>, OptimizeError> {
-    Optimizer::new(mesh, params, None)?.solve(params.scale)
+    Optimizer::new(mesh, params, &Selection::default())?.solve(params.scale)
 }
 
 #[cfg(test)]
@@ -280,7 +292,7 @@ mod tests {
                 features: true,
                 ..OptimizeParams::default()
             };
-            let mut optimizer = Optimizer::new(&mesh, &params, None).unwrap();
+            let mut optimizer = Optimizer::new(&mesh, &params, &Selection::default()).unwrap();
             let first = optimizer.solve(1.0).unwrap();
             for scale in [0.3, 2.5] {
                 let fresh = optimize(&mesh, &OptimizeParams { scale, ..params }).unwrap();
@@ -309,7 +321,7 @@ mod tests {
             mode: Mode::Smooth,
             ..OptimizeParams::default()
         };
-        let mut optimizer = Optimizer::new(&mesh, &params, None).unwrap();
+        let mut optimizer = Optimizer::new(&mesh, &params, &Selection::default()).unwrap();
         let mut shown = optimizer.solve(1.0).unwrap();
         for scale in [0.5, 0.2, 0.8] {
             let mut calls = 1;
@@ -332,7 +344,7 @@ mod tests {
             tangent_plane: true,
             ..OptimizeParams::default()
         };
-        let mut optimizer = Optimizer::new(&mesh, &coupled, None).unwrap();
+        let mut optimizer = Optimizer::new(&mesh, &coupled, &Selection::default()).unwrap();
         assert!(optimizer.refine(0.5, &mut shown).unwrap());
         assert_eq!(
             shown,
@@ -360,7 +372,11 @@ mod tests {
                 tangent_plane,
                 ..OptimizeParams::default()
             };
-            let mut optimizer = Optimizer::new(&mesh, &params, Some(&movable)).unwrap();
+            let selection = Selection {
+                movable: Some(movable.clone()),
+                features: None,
+            };
+            let mut optimizer = Optimizer::new(&mesh, &params, &selection).unwrap();
             let mut shown = optimizer.solve(1.0).unwrap();
             while !optimizer.refine(0.4, &mut shown).unwrap() {}
             for result in [shown.clone(), optimizer.solve(0.4).unwrap()] {
@@ -373,8 +389,11 @@ mod tests {
                 assert!(moved.count() > movable.iter().filter(|&&m| m).count() / 2);
             }
         }
-        let nothing = vec![false; mesh.n_vertices()];
-        let refused = Optimizer::new(&mesh, &OptimizeParams::default(), Some(&nothing));
+        let nothing = Selection {
+            movable: Some(vec![false; mesh.n_vertices()]),
+            features: None,
+        };
+        let refused = Optimizer::new(&mesh, &OptimizeParams::default(), &nothing);
         assert_eq!(refused.err(), Some(OptimizeError::EmptyRegion));
     }
 
@@ -475,6 +494,28 @@ mod tests {
             };
             assert!(kept_error < bound, "{falloff:?}: {kept_error}° off");
         }
+        // The same edges tagged by the user instead (what a brush over them marks).
+        let on_edge = |p: DVec3| {
+            (p.abs() - DVec3::splat(0.5))
+                .abs()
+                .cmple(DVec3::splat(1e-9))
+        };
+        let tagged = Selection {
+            movable: None,
+            features: Some(
+                cube.positions()
+                    .iter()
+                    .map(|&p| on_edge(p).bitmask().count_ones() >= 2)
+                    .collect(),
+            ),
+        };
+        let params = smooth(false, FeatureFalloff::Linear);
+        let kept = Optimizer::new(&noisy, &params, &tagged)
+            .unwrap()
+            .solve(0.3)
+            .unwrap();
+        let kept_error = worst_edge_angle_error(&noisy, &kept, &cube);
+        assert!(kept_error < 10.0, "tagged edges: {kept_error}° off");
     }
 
     #[test]

@@ -10,7 +10,7 @@ use glam::DVec3;
 
 use super::refine::Refinement;
 use super::system::Rows;
-use super::{OptimizeError, OptimizeParams};
+use super::{OptimizeError, OptimizeParams, Selection};
 use crate::mesh::Mesh;
 use crate::solve::{Prefactored, SparseMatrix};
 
@@ -39,28 +39,28 @@ impl std::fmt::Debug for Optimizer {
 }
 
 impl Optimizer {
-    /// Builds and factors the system of `mesh` with `params`; only the vertices `movable`
-    /// marks move (all of them when `None`), the rest keep their place.
+    /// Builds and factors the system of `mesh` with `params`; only the vertices `selection`
+    /// leaves movable move, and the features it tags hold.
     ///
     /// Errors: [`OptimizeError::InvalidScale`], [`OptimizeError::Empty`],
     /// [`OptimizeError::EmptyRegion`], or the solver's.
     pub fn new(
         mesh: &Mesh,
         params: &OptimizeParams,
-        movable: Option<&[bool]>,
+        selection: &Selection,
     ) -> Result<Optimizer, OptimizeError> {
         check_scale(params.scale)?;
         if mesh.n_faces() == 0 {
             return Err(OptimizeError::Empty);
         }
-        let fixed: Vec<bool> = match movable {
+        let fixed: Vec<bool> = match &selection.movable {
             Some(movable) => movable.iter().map(|&m| !m).collect(),
             None => vec![false; mesh.n_vertices()],
         };
         if fixed.len() != mesh.n_vertices() || fixed.iter().all(|&f| f) {
             return Err(OptimizeError::EmptyRegion);
         }
-        let rows = Rows::new(mesh, params);
+        let rows = Rows::new(mesh, params, selection.features.as_deref());
         let a = rows.matrix(params.scale);
         let unknowns_fixed: Vec<bool> = match rows.is_coupled() {
             true => fixed.iter().flat_map(|&f| [f; 3]).collect(),

@@ -30,10 +30,11 @@ pub(super) struct Rows {
 }
 
 impl Rows {
-    /// The rows for `mesh` and `params` (whose `scale` is ignored: see [`Rows::matrix`]).
-    pub(super) fn new(mesh: &Mesh, params: &OptimizeParams) -> Rows {
+    /// The rows for `mesh` and `params` (whose `scale` is ignored: see [`Rows::matrix`]);
+    /// the vertices `tagged` marks are features that hold (see [`super::Selection`]).
+    pub(super) fn new(mesh: &Mesh, params: &OptimizeParams, tagged: Option<&[bool]>) -> Rows {
         let kappa = curvature_magnitudes(mesh);
-        let (mut positional, row_weights) = match (params.features, params.feature_falloff) {
+        let (mut positional, mut row_weights) = match (params.features, params.feature_falloff) {
             (false, _) => (
                 positional_weights(&kappa, params.weights, 1.0),
                 vec![1.0; mesh.n_vertices()],
@@ -56,6 +57,13 @@ impl Rows {
             for (w, t) in positional.iter_mut().zip(worst_radius_ratios(mesh)) {
                 *w *= t;
             }
+        }
+        let tagged = tagged.into_iter().flatten();
+        for ((w, row), _) in (positional.iter_mut().zip(&mut row_weights))
+            .zip(tagged)
+            .filter(|(_, t)| **t)
+        {
+            (*w, *row) = (1.0, 0.0);
         }
         let (laplacian, target) = match params.mode {
             Mode::Shape => (uniform_laplacian(mesh), cotan_coordinates(mesh)),

@@ -8,11 +8,12 @@ use std::f64::consts::TAU;
 
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
-use sketchmesh_core::document::OptimizeInput;
 use sketchmesh_core::document::{
-    AddCurveInput, CommandError, Editor, Op, OversketchFit, OversketchInput, Progress, StrokeInput,
+    AddCurveInput, BrushInput, CommandError, Editor, Op, OptimizeInput, OversketchFit,
+    OversketchInput, Progress, StrokeInput,
 };
-use sketchmesh_core::optimize::{Mode, OptimizeParams};
+use sketchmesh_core::optimize::region::brushed_vertices;
+use sketchmesh_core::optimize::{Mode, OptimizeParams, Optimizer, Selection};
 use sketchmesh_core::oversketch::OversketchRoi;
 
 const VIEWPORT: [f64; 2] = [800.0, 600.0];
@@ -243,7 +244,7 @@ fn an_optimization_previews_each_setting_and_commits_the_last_without_solving_ag
                 scale,
                 ..OptimizeParams::default()
             },
-            region: None,
+            ..OptimizeInput::default()
         })
     };
     let mut edit = editor.begin_gesture(op(1.0, Mode::Smooth)).unwrap();
@@ -318,6 +319,7 @@ fn an_optimization_in_a_lasso_moves_only_what_the_lasso_holds() {
                 ..OptimizeParams::default()
             },
             region: Some(input(square)),
+            ..OptimizeInput::default()
         })
     };
     editor.apply(lasso(50.0)).unwrap();
@@ -353,6 +355,73 @@ fn an_optimization_in_a_lasso_moves_only_what_the_lasso_holds() {
     let refused = editor.apply(far).unwrap_err();
     assert!(refused.to_string().contains("lasso"), "{refused}");
     assert_eq!(editor.document(), &kept);
+    let replayed = Editor::replay_json(&editor.session_json()).unwrap();
+    assert_eq!(replayed.document(), editor.document());
+}
+
+/// A brush stroke painted across the shape bounds what smoothing moves to the band under it;
+/// a second stroke painted over part of that band tags features: the op gives what the
+/// optimizer gives with the vertices each brush covers (the features' effect is measured on
+/// a cube's edges in `core::optimize`); the session replays both.
+#[test]
+fn a_painted_area_bounds_the_optimization_and_painted_features_are_tagged() {
+    let mut editor = Editor::new();
+    editor.apply(session()[1](&editor)).unwrap();
+    let before = editor.document().clone();
+    let mesh = &before.models[0].mesh;
+    let brush = |a: DVec2, b: DVec2| BrushInput {
+        stroke: input(segment(a, b)),
+        radius: 20.0,
+    };
+    let band = brush(CENTRE - DVec2::X * 100.0, CENTRE + DVec2::X * 100.0);
+    let keep = brush(CENTRE - DVec2::X * 30.0, CENTRE + DVec2::X * 30.0);
+    let settings = OptimizeParams {
+        mode: Mode::Smooth,
+        scale: 0.1,
+        ..OptimizeParams::default()
+    };
+    let op = |painted_features: Vec<BrushInput>| {
+        Op::Optimize(OptimizeInput {
+            model: 0,
+            settings,
+            painted: vec![band.clone()],
+            painted_features,
+            ..OptimizeInput::default()
+        })
+    };
+    editor.apply(op(Vec::new())).unwrap();
+    let mut moved = 0;
+    let after = editor.document().models[0].mesh.positions().to_vec();
+    for (p, q) in mesh.positions().iter().zip(&after) {
+        if p != q {
+            moved += 1;
+            let offset = (screen(*p) - CENTRE).abs();
+            assert!(offset.x <= 120.0 && offset.y <= 30.0, "moved at {offset}");
+        }
+    }
+    assert!(moved > 10, "{moved} vertices moved");
+    editor.undo().unwrap();
+    editor.apply(op(vec![keep.clone()])).unwrap();
+    let covered = |b: &BrushInput| {
+        let viewport = DVec2::from(VIEWPORT);
+        brushed_vertices(
+            mesh,
+            &b.stroke.camera,
+            viewport,
+            &b.stroke.points(),
+            b.radius,
+        )
+    };
+    let selection = Selection {
+        movable: Some(covered(&band)),
+        features: Some(covered(&keep)),
+    };
+    let expected = Optimizer::new(mesh, &settings, &selection)
+        .unwrap()
+        .solve(settings.scale)
+        .unwrap();
+    assert_eq!(editor.document().models[0].mesh.positions(), expected);
+    assert_ne!(editor.document().models[0].mesh.positions(), after);
     let replayed = Editor::replay_json(&editor.session_json()).unwrap();
     assert_eq!(replayed.document(), editor.document());
 }

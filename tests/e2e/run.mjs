@@ -621,7 +621,7 @@ test('curve tools with the pen: pull (live preview), add a curve, make it sharp,
   }
 });
 
-test('optimize (M): a tap previews the shape optimized, Esc drops it, Enter commits one op, undo restores', () => withShape(async ({ fresh, created }) => {
+test('optimize (M): a tap previews the shape optimized, Esc drops it, Enter commits one op, undo restores, a painted band bounds it', () => withShape(async ({ fresh, created }) => {
     const c = ELLIPSE.c;
     const lastOp = () => api(fresh.page, 'session').then((json) => JSON.parse(json).ops.at(-1) ?? {});
     const glb = () => fresh.page.evaluate(() => Array.from(window.sketchmesh.exportGlb()));
@@ -669,6 +669,24 @@ test('optimize (M): a tap previews the shape optimized, Esc drops it, Enter comm
     await fresh.page.keyboard.press('Control+z');
     await frames(fresh.page, 3);
     assert.deepEqual(await glb(), original, 'undo restores the shape bit for bit');
+    // B: strokes paint what moves. A band painted across the middle moves; the rest holds.
+    await fresh.page.keyboard.press('b');
+    const band = [];
+    for (let x = c.x - 120; x <= c.x + 120; x += 8) band.push({ x, y: c.y, force: 0.5 });
+    await penStroke(fresh.cdp, band);
+    await frames(fresh.page, 6);
+    await fresh.page.keyboard.press('Enter');
+    const painted = await until(lastOp, (o) => o.op === 'optimize', 10_000);
+    assert.equal(painted.painted?.length, 1, 'the op carries the painted stroke');
+    assert.ok(painted.painted[0].radius > 0 && !painted.region, 'a brush radius, no lasso');
+    await frames(fresh.page, 3);
+    const paintedShot = await screenshot(fresh.page, out('optimize-painted.png'));
+    const far = inside.filter((p) => Math.abs(p.y - c.y) > 50);
+    const near = inside.filter((p) => Math.abs(p.y - c.y) < 15 && Math.abs(p.x - c.x) < 100);
+    const farMoved = changedFraction(before, paintedShot, far, { radius: 0 });
+    const nearMoved = changedFraction(before, paintedShot, near, { radius: 0 });
+    console.log(`    painted band: ${(100 * nearMoved).toFixed(2)}% changed under it, ${(100 * farMoved).toFixed(2)}% away from it`);
+    assert.ok(nearMoved > 0.01 && farMoved < 0.2 * nearMoved, 'only the painted band moves');
     assert.deepEqual(fresh.errors, [], 'console errors while optimizing');
 }));
 

@@ -413,6 +413,9 @@ impl SketchApp {
                 self.take_output(nudged, now);
             }
         }
+        if pressed(Key::B) {
+            self.tools.next_stroke_use();
+        }
         if pressed(Key::F) {
             self.frame_all();
         }

@@ -27,6 +27,10 @@ const SHORTCUTS: &[(&str, &str)] = &[
         "Optimize: tap a model (or lasso part of one) to preview better triangles or smoothing",
     ),
     ("[ and ]", "Optimize: less or more hold (the amount s)"),
+    (
+        "B",
+        "Optimize: strokes lasso a part, paint what moves, or paint edges that hold",
+    ),
     ("Enter", "Optimize: apply the preview"),
     ("Esc", "Drop what is in progress (a preview, a drag)"),
     ("W", "Wireframe on/off"),

@@ -86,6 +86,14 @@ impl ToolSet {
         }
     }
 
+    /// The optimize tool's strokes do the next thing: lasso, paint the area, paint features
+    /// (the B key).
+    pub fn next_stroke_use(&mut self) {
+        if self.mode == Mode::Optimize {
+            self.optimize.next_stroke_use();
+        }
+    }
+
     /// What the active tool asks the user to do next, if anything.
     pub fn hint(&self) -> Option<&'static str> {
         match self.mode {

@@ -210,6 +210,15 @@ impl OptimizeTool {
         }
     }
 
+    /// Strokes do the next thing: lasso, paint the area, paint features, lasso again.
+    pub fn next_stroke_use(&mut self) {
+        self.stroke_use = match self.stroke_use {
+            StrokeUse::Lasso => StrokeUse::PaintArea,
+            StrokeUse::PaintArea => StrokeUse::PaintFeatures,
+            StrokeUse::PaintFeatures => StrokeUse::Lasso,
+        };
+    }
+
     /// Applies the open preview, if any.
     pub fn confirm(&mut self) -> ToolOutput {
         self.clear_marks();

@@ -670,7 +670,14 @@ test('optimize (M): a tap previews the shape optimized, Esc drops it, Enter comm
     await frames(fresh.page, 3);
     assert.deepEqual(await glb(), original, 'undo restores the shape bit for bit');
     // B: strokes paint what moves. A band painted across the middle moves; the rest holds.
+    // Less hold ([ four times: s = 0.41), so that the band's triangles change visibly.
     await fresh.page.keyboard.press('b');
+    for (let i = 0; i < 4; i++) {
+      await fresh.page.keyboard.press('[');
+      await frames(fresh.page, 1);
+    }
+    await frames(fresh.page, 3);
+    const unpainted = await screenshot(fresh.page, out('optimize-unpainted.png'));
     const band = [];
     for (let x = c.x - 120; x <= c.x + 120; x += 8) band.push({ x, y: c.y, force: 0.5 });
     await penStroke(fresh.cdp, band);
@@ -683,10 +690,13 @@ test('optimize (M): a tap previews the shape optimized, Esc drops it, Enter comm
     const paintedShot = await screenshot(fresh.page, out('optimize-painted.png'));
     const far = inside.filter((p) => Math.abs(p.y - c.y) > 50);
     const near = inside.filter((p) => Math.abs(p.y - c.y) < 15 && Math.abs(p.x - c.x) < 100);
-    const farMoved = changedFraction(before, paintedShot, far, { radius: 0 });
-    const nearMoved = changedFraction(before, paintedShot, near, { radius: 0 });
+    const farMoved = changedFraction(unpainted, paintedShot, far, { radius: 0 });
+    const nearMoved = changedFraction(unpainted, paintedShot, near, { radius: 0 });
     console.log(`    painted band: ${(100 * nearMoved).toFixed(2)}% changed under it, ${(100 * farMoved).toFixed(2)}% away from it`);
-    assert.ok(nearMoved > 0.01 && farMoved < 0.2 * nearMoved, 'only the painted band moves');
+    // The band's triangles were good already, so few of its pixels change; away from it the
+    // vertices keep their positions bit for bit, so no pixel may.
+    assert.ok(nearMoved > 0.003, `the painted band moves (${nearMoved})`);
+    assert.ok(farMoved < 0.001, `nothing away from the band moves (${farMoved})`);
     assert.deepEqual(fresh.errors, [], 'console errors while optimizing');
 }));
 

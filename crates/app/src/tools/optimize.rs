@@ -368,53 +368,57 @@ impl OptimizeTool {
                 ),
             ],
         );
-        if self.stroke_use != StrokeUse::Lasso {
-            ui.add(egui::Slider::new(&mut self.brush_radius, BRUSH_RANGE).text("Brush"))
-                .on_hover_text("The brush's radius in points; a pen's pressure widens it");
-        }
+        let painting = self.stroke_use != StrokeUse::Lasso;
+        let brush = egui::Slider::new(&mut self.brush_radius, BRUSH_RANGE).text("Brush");
+        ui.add_enabled(painting, brush)
+            .on_hover_text("The brush's radius in points; a pen's pressure widens it");
+        // The buttons are always there (disabled without a preview), so that the toolbar
+        // keeps its height, and the view its place, when a preview opens or is applied.
+        let open = self.model.is_some();
+        let area_marked = self.region.is_some() || !self.painted.is_empty();
+        let whole = button(
+            ui,
+            open && area_marked,
+            "Whole model",
+            "Drop the lasso and the painted area: optimize all of the model",
+        );
+        let clear_edges = button(
+            ui,
+            open && !self.painted_features.is_empty(),
+            "Clear edges",
+            "Forget the painted features",
+        );
+        let apply = button(ui, open, "Apply", "Keep this result: one undo step (Enter)");
+        let cancel = button(ui, open, "Cancel", "Leave the model as it was (Esc)");
         let Some(model) = self.model else {
             return ToolOutput::None;
         };
-        let area_marked = self.region.is_some() || !self.painted.is_empty();
-        if area_marked
-            && ui
-                .button("Whole model")
-                .on_hover_text("Drop the lasso and the painted area: optimize all of the model")
-                .clicked()
-        {
-            self.clear_area();
-            return ToolOutput::Revise(self.op(model));
-        }
-        if !self.painted_features.is_empty()
-            && ui
-                .button("Clear edges")
-                .on_hover_text("Forget the painted features")
-                .clicked()
-        {
-            self.painted_features.clear();
-            return ToolOutput::Revise(self.op(model));
-        }
-        if ui
-            .button("Apply")
-            .on_hover_text("Keep this result: one undo step (Enter)")
-            .clicked()
-        {
+        if apply {
             return self.confirm();
         }
-        if ui
-            .button("Cancel")
-            .on_hover_text("Leave the model as it was (Esc)")
-            .clicked()
-        {
+        if cancel {
             self.cancel();
             return ToolOutput::Cancel;
         }
-        if self.settings == before {
-            ToolOutput::None
-        } else {
+        if whole {
+            self.clear_area();
+        }
+        if clear_edges {
+            self.painted_features.clear();
+        }
+        if whole || clear_edges || self.settings != before {
             ToolOutput::Revise(self.op(model))
+        } else {
+            ToolOutput::None
         }
     }
+}
+
+/// A button that is `enabled` or greyed out; whether it was clicked.
+fn button(ui: &mut egui::Ui, enabled: bool, label: &str, hint: &str) -> bool {
+    ui.add_enabled(enabled, egui::Button::new(label))
+        .on_hover_text(hint)
+        .clicked()
 }
 
 /// A drop-down for one setting: `(value, label, hint)` per choice.

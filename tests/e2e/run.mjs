@@ -700,6 +700,68 @@ test('optimize (M): a tap previews the shape optimized, Esc drops it, Enter comm
     assert.deepEqual(fresh.errors, [], 'console errors while optimizing');
 }));
 
+test('autosave: create and pull, reload: the same document, session, view and history; a corrupt record is set aside with a sentence', () => withShape(async ({ fresh, created }) => {
+  const c = ELLIPSE.c;
+  const session = () => api(fresh.page, 'session');
+  const lastOp = () => session().then((json) => JSON.parse(json).ops.at(-1) ?? {});
+  const glb = () => fresh.page.evaluate(() => Array.from(window.sketchmesh.exportGlb()));
+  await until(lastOp, (o) => o.op === 'create', 15_000);
+  const beforePull = await glb();
+  await fresh.page.keyboard.press('p');
+  const drag = [];
+  for (let i = 0; i <= 16; i++) drag.push({ x: c.x + 170 + 5 * i, y: c.y, force: 0.5 });
+  await penStroke(fresh.cdp, drag);
+  assert.equal((await until(lastOp, (o) => o.op === 'pull', 15_000)).op, 'pull', 'the drag pulled');
+  const pulled = { stats: await api(fresh.page, 'stats'), session: await session(), camera: await api(fresh.page, 'camera') };
+  // The autosave follows within half a second; then the page goes away and comes back.
+  await sleep(1200);
+  await frames(fresh.page, 2);
+  await fresh.page.reload({ waitUntil: 'load' });
+  await fresh.page.waitForFunction(() => typeof window.sketchmesh?.stats === 'function', null, { timeout: 15_000 });
+  const restored = await until(() => api(fresh.page, 'stats'), (s) => s.models === 1, 15_000);
+  assert.deepEqual(restored, pulled.stats, 'the reloaded page has the pulled shape');
+  assert.equal(await session(), pulled.session, 'the same session');
+  assert.deepEqual(await api(fresh.page, 'camera'), pulled.camera, 'the same view');
+  await api(fresh.page, 'undo');
+  assert.deepEqual(await api(fresh.page, 'stats'), created, 'undo after the reload gives the shape before the pull');
+  assert.deepEqual(await glb(), beforePull, 'bit for bit');
+  await frames(fresh.page, 3);
+  await screenshot(fresh.page, out('autosave-restored.png'));
+  // A corrupt record: the page starts empty, says why, and keeps the record aside.
+  await sleep(1200);
+  await fresh.page.evaluate(() => new Promise((resolve, reject) => {
+    const request = indexedDB.open('sketchmesh', 1);
+    request.onsuccess = () => {
+      const transaction = request.result.transaction('autosave', 'readwrite');
+      transaction.objectStore('autosave').put('{"session": "not a session", "camera": 7}', 'current');
+      transaction.oncomplete = resolve;
+      transaction.onerror = () => reject(transaction.error);
+    };
+    request.onerror = () => reject(request.error);
+  }));
+  const warnings = [];
+  fresh.page.on('console', (msg) => warnings.push(msg.text()));
+  await fresh.page.reload({ waitUntil: 'load' });
+  await fresh.page.waitForFunction(() => typeof window.sketchmesh?.stats === 'function', null, { timeout: 15_000 });
+  const keys = await until(
+    () => fresh.page.evaluate(() => new Promise((resolve) => {
+      const request = indexedDB.open('sketchmesh', 1);
+      request.onsuccess = () => {
+        const all = request.result.transaction('autosave').objectStore('autosave').getAllKeys();
+        all.onsuccess = () => resolve(all.result);
+      };
+    })),
+    (k) => k.some((key) => key.startsWith('set-aside-')),
+    5000,
+  );
+  assert.ok(keys.some((key) => key.startsWith('set-aside-')) && !keys.includes('current'), `the record is set aside: ${keys}`);
+  assert.equal((await api(fresh.page, 'stats')).models, 0, 'the page starts empty');
+  assert.ok(warnings.some((w) => w.includes('could not be restored')), `a sentence says why: ${warnings}`);
+  await frames(fresh.page, 3);
+  await screenshot(fresh.page, out('autosave-set-aside.png'));
+  assert.deepEqual(fresh.errors, [], 'console errors around the reloads');
+}));
+
 const failed = await runAll();
 clearTimeout(watchdog);
 await browser.close();

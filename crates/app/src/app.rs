@@ -18,6 +18,7 @@ use sketchmesh_core::document::{Edit, Editor, ImportInput, Op, Progress};
 use sketchmesh_core::optimize::quality_report;
 use sketchmesh_core::oversketch::OversketchRoi;
 
+use crate::autosave;
 use crate::camera::OrbitCamera;
 use crate::clock;
 use crate::files::{self, ImportQueue};
@@ -47,6 +48,19 @@ pub struct Shared {
     pub imports: ImportQueue,
     /// Recent costs of edits, for the page benchmark.
     pub timings: clock::Timings,
+    /// The tool in use; the page's restore sets it, and the app follows.
+    pub mode: Mode,
+    /// When to autosave.
+    pub autosave: autosave::Schedule,
+    /// A sentence for the user from outside the app (the page's restore), shown next frame.
+    pub notice: Option<String>,
+}
+
+impl Shared {
+    /// The autosave record of what is shown now.
+    pub fn autosave_record(&self) -> autosave::Record {
+        autosave::Record::new(&self.editor, self.camera, self.mode)
+    }
 }
 
 /// The Sketchmesh app.
@@ -112,6 +126,9 @@ impl SketchApp {
                 backend,
                 imports: ImportQueue::default(),
                 timings: clock::Timings::default(),
+                mode: Mode::default(),
+                autosave: autosave::Schedule::default(),
+                notice: None,
             })),
             router: InputRouter::default(),
             tools: ToolSet::default(),
@@ -313,7 +330,44 @@ impl SketchApp {
             self.cancel_gesture();
         }
         let dropped = self.tools.set_mode(mode);
+        self.shared.borrow_mut().mode = mode;
         self.take_output(dropped, now);
+    }
+
+    /// Follows what the page changed from outside: the tool a restore chose, a sentence.
+    fn follow_page(&mut self, now: f64) {
+        let (mode, notice) = {
+            let mut shared = self.shared.borrow_mut();
+            (shared.mode, shared.notice.take())
+        };
+        if mode != self.tools.mode() {
+            self.set_mode(mode, now);
+        }
+        if let Some(notice) = notice {
+            self.set_status(notice, now);
+        }
+    }
+
+    /// Hands the document to the page's autosave when it is due, and keeps frames coming
+    /// while a change waits for it.
+    #[cfg(target_arch = "wasm32")]
+    fn autosave(&mut self, ctx: &egui::Context, now: f64) {
+        let record = {
+            let mut shared = self.shared.borrow_mut();
+            let revision = shared.editor.revision();
+            if !shared.autosave.due(revision, now) {
+                if shared.autosave.is_pending(revision) {
+                    ctx.request_repaint_after(std::time::Duration::from_secs_f64(
+                        autosave::INTERVAL,
+                    ));
+                }
+                return;
+            }
+            shared.autosave_record()
+        };
+        if let Err(why) = crate::web::write_autosave(&record) {
+            self.set_status(format!("Could not autosave: {why}"), now);
+        }
     }
 
     fn set_status(&mut self, message: String, now: f64) {
@@ -537,11 +591,10 @@ impl SketchApp {
                 .add(egui_wgpu::Callback::new_paint_callback(viewport, callback));
         }
         self.live_stroke_ui(ui, viewport);
+        let idle = self.stroke_preview().is_none() && self.edit.is_none();
         if let Some((status, _)) = &self.status {
             status_ui(ui, viewport, status);
-        }
-        let idle = self.stroke_preview().is_none() && self.edit.is_none();
-        if self.shared.borrow().editor.document().is_empty() && idle {
+        } else if self.shared.borrow().editor.document().is_empty() && idle {
             ui.painter().text(
                 viewport.center_bottom() - egui::vec2(0.0, 48.0),
                 egui::Align2::CENTER_CENTER,
@@ -681,7 +734,7 @@ fn status_ui(ui: &egui::Ui, viewport: egui::Rect, text: &str) {
     let pos = viewport.center_bottom() - egui::vec2(0.5 * size.x, size.y + 18.0);
     let band = egui::Rect::from_min_size(pos, size).expand(8.0);
     ui.painter()
-        .rect_filled(band, 6.0, egui::Color32::from_black_alpha(190));
+        .rect_filled(band, 6.0, egui::Color32::from_rgb(20, 21, 25));
     ui.painter().galley(pos, galley, color);
 }
 
@@ -724,6 +777,9 @@ impl eframe::App for SketchApp {
         self.shortcuts(&ctx);
         self.run_imports(&ctx);
         let now = ctx.input(|i| i.time);
+        self.follow_page(now);
+        #[cfg(target_arch = "wasm32")]
+        self.autosave(&ctx, now);
         if self.status.as_ref().is_some_and(|(_, until)| *until < now) {
             self.status = None;
         }

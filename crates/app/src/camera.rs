@@ -17,7 +17,7 @@ const MAX_PITCH: f64 = 1.5;
 const WHEEL_POINTS_PER_DOUBLING: f64 = 400.0;
 
 /// A perspective camera orbiting a target.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct OrbitCamera {
     /// Point looked at and orbited around.
     pub target: DVec3,

@@ -5,6 +5,7 @@
 //! (`web.rs`, the `start` entry point the page calls).
 
 pub mod app;
+pub mod autosave;
 pub mod camera;
 pub mod clock;
 pub mod files;

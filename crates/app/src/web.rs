@@ -12,6 +12,7 @@ use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
 use crate::app::{Shared, SketchApp};
+use crate::autosave::Record;
 use crate::input::web_pointer::WebPointer;
 
 /// Starts Sketchmesh on the canvas with id `canvas_id`.
@@ -133,9 +134,94 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
             .into_js_value(),
         )?;
     }
+    let (s, c) = (shared.clone(), ctx.clone());
+    set(
+        "restore",
+        Closure::<dyn Fn(Option<String>) -> Result<(), JsValue>>::new(
+            move |text: Option<String>| {
+                let result = restore(&mut s.borrow_mut(), text.as_deref());
+                c.request_repaint();
+                result.map_err(|e| js_error(&e))
+            },
+        )
+        .into_js_value(),
+    )?;
+    let s = shared.clone();
+    set(
+        "flushAutosave",
+        Closure::<dyn Fn() -> Result<(), JsValue>>::new(move || {
+            let mut shared = s.borrow_mut();
+            let revision = shared.editor.revision();
+            if !shared.autosave.is_pending(revision) {
+                return Ok(());
+            }
+            write_autosave(&shared.autosave_record()).map_err(|e| js_error(&e))?;
+            shared
+                .autosave
+                .mark_saved(revision, js_sys::Date::now() / 1000.0);
+            Ok(())
+        })
+        .into_js_value(),
+    )?;
+    let (s, c) = (shared.clone(), ctx.clone());
+    set(
+        "notify",
+        Closure::<dyn Fn(String)>::new(move |sentence: String| {
+            s.borrow_mut().notice = Some(sentence);
+            c.request_repaint();
+        })
+        .into_js_value(),
+    )?;
     let window = web_sys::window().ok_or_else(|| JsValue::from_str("No window."))?;
     Reflect::set(&window, &JsValue::from_str("sketchmesh"), &api)?;
     Ok(())
+}
+
+/// Takes the page's autosave record, if it has one: the document, view and tool it holds
+/// replace the empty start, and autosaving begins. A record that does not replay changes
+/// nothing and is refused with a sentence (the page sets it aside, then calls again without).
+fn restore(shared: &mut Shared, text: Option<&str>) -> Result<(), String> {
+    if let Some(text) = text {
+        let restored = serde_json::from_str::<Record>(text)
+            .map_err(|e| format!("the autosave record is not readable ({e})"))
+            .and_then(|record| Ok((record.replay()?, record)));
+        match restored {
+            Ok((editor, record)) => {
+                shared.editor = editor;
+                shared.camera = record.camera;
+                shared.mode = record.mode;
+            }
+            Err(why) => {
+                let sentence = format!(
+                    "The autosaved work could not be restored: {why}. It was set aside; the \
+                     page starts empty."
+                );
+                shared.notice = Some(sentence.clone());
+                return Err(sentence);
+            }
+        }
+    }
+    let revision = shared.editor.revision();
+    shared.autosave.start(revision);
+    Ok(())
+}
+
+/// Hands `record` to the page's store (`window.sketchmeshAutosave.save`, from
+/// `web/autosave.js`), which writes it to IndexedDB without blocking the frame.
+///
+/// Errors: a sentence when the page has no store or the call throws at once.
+pub fn write_autosave(record: &Record) -> Result<(), String> {
+    let text = serde_json::to_string(record).map_err(|e| e.to_string())?;
+    let window = web_sys::window().ok_or("there is no window")?;
+    let store = Reflect::get(&window, &JsValue::from_str("sketchmeshAutosave"))
+        .map_err(|_| "the page has no autosave store")?;
+    let save: js_sys::Function = Reflect::get(&store, &JsValue::from_str("save"))
+        .ok()
+        .and_then(|f| f.dyn_into().ok())
+        .ok_or("the page has no autosave store")?;
+    save.call1(&store, &JsValue::from_str(&text))
+        .map(|_| ())
+        .map_err(|e| format!("{e:?}"))
 }
 
 fn getter(f: impl Fn() -> Result<JsValue, JsValue> + 'static) -> JsValue {

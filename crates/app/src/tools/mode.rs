@@ -4,7 +4,8 @@
 use egui::Key;
 
 /// Which tool pointer gestures go to.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
 pub enum Mode {
     /// Draw shapes (closed strokes on empty canvas), curves on shapes, and ink.
     #[default]

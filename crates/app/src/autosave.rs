@@ -1,0 +1,144 @@
+//! Autosave: what is written so that a reload, a closed tab or a discarded background tab
+//! loses nothing, and when it is written.
+//!
+//! The record is the session (which replays exactly, with its undo and redo history), the
+//! camera and the tool. The page writes it to IndexedDB (`web/autosave.js`, asynchronous, so
+//! the write itself never holds a frame) at most [`INTERVAL`] after a change, and when the
+//! page is hidden; on start the page hands it back (`window.sketchmesh.restore`), and a
+//! record that does not replay is set aside with a sentence. Only committed ops are saved:
+//! an edit in progress (a drag, a preview) is not part of the document until it ends, so a
+//! page left in the middle of one comes back in the last complete state.
+
+use serde::{Deserialize, Serialize};
+use sketchmesh_core::document::Editor;
+
+use crate::camera::OrbitCamera;
+use crate::tools::Mode;
+
+/// Longest time in seconds from a change to its autosave.
+pub const INTERVAL: f64 = 0.5;
+
+/// One autosave: the document's session, the view and the tool.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Record {
+    /// The session file's text (`docs/session-format.md`).
+    pub session: String,
+    /// The view.
+    pub camera: OrbitCamera,
+    /// The tool in use.
+    pub mode: Mode,
+}
+
+impl Record {
+    /// The record of `editor` seen through `camera` with `mode`.
+    pub fn new(editor: &Editor, camera: OrbitCamera, mode: Mode) -> Record {
+        Record {
+            session: editor.session_json(),
+            camera,
+            mode,
+        }
+    }
+
+    /// The editor the record's session replays to.
+    ///
+    /// Errors: a sentence saying why the session does not replay.
+    pub fn replay(&self) -> Result<Editor, String> {
+        Editor::replay_json(&self.session).map_err(|e| e.to_string())
+    }
+}
+
+/// When to autosave: not before the page has offered its last record (so that an empty
+/// start does not overwrite it), then whenever the document's revision moved and the last
+/// write is [`INTERVAL`] old.
+#[derive(Debug, Default)]
+pub struct Schedule {
+    /// The revision last written (or restored); `None` until the page offered its record.
+    saved: Option<u64>,
+    /// When the last write happened.
+    saved_at: f64,
+}
+
+impl Schedule {
+    /// The page has offered its record (restored or not): from now on `revision` is what
+    /// is saved.
+    pub fn start(&mut self, revision: u64) {
+        self.saved = Some(revision);
+    }
+
+    /// Whether to write now, at time `now` in seconds, the document at `revision`; a write
+    /// is then assumed to happen.
+    pub fn due(&mut self, revision: u64, now: f64) -> bool {
+        let changed = self.saved.is_some_and(|saved| saved != revision);
+        let due = changed && now - self.saved_at >= INTERVAL;
+        if due {
+            self.mark_saved(revision, now);
+        }
+        due
+    }
+
+    /// Whether a change waits for its write (the app keeps frames coming until it is due).
+    pub fn is_pending(&self, revision: u64) -> bool {
+        self.saved.is_some_and(|saved| saved != revision)
+    }
+
+    /// The document at `revision` was written at `now` (also by a flush when the page hides).
+    pub fn mark_saved(&mut self, revision: u64, now: f64) {
+        if self.saved.is_some() {
+            self.saved = Some(revision);
+            self.saved_at = now;
+        }
+    }
+
+    /// Whether the page has offered its record yet.
+    pub fn is_started(&self) -> bool {
+        self.saved.is_some()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn nothing_is_written_before_the_page_offered_its_record_then_changes_are() {
+        let mut schedule = Schedule::default();
+        assert!(
+            !schedule.due(3, 10.0),
+            "an empty start must not overwrite the record"
+        );
+        schedule.start(3);
+        assert!(!schedule.due(3, 10.0), "unchanged");
+        assert!(schedule.is_pending(4));
+        assert!(schedule.due(4, 10.0));
+        assert!(!schedule.is_pending(4));
+        // A change right after a write waits for the interval, then is written.
+        assert!(!schedule.due(5, 10.0 + INTERVAL / 2.0));
+        assert!(schedule.is_pending(5));
+        assert!(schedule.due(5, 10.0 + INTERVAL));
+    }
+
+    #[test]
+    fn a_record_round_trips_through_json_and_replays() {
+        let mut editor = Editor::new();
+        editor
+            .apply(sketchmesh_core::document::Op::Stroke(
+                sketchmesh_core::document::StrokeInput {
+                    viewport: [800.0, 600.0],
+                    camera: sketchmesh_core::camera::Camera::default(),
+                    stroke: vec![[10.0, 10.0, 0.5], [60.0, 40.0, 0.5], [90.0, 20.0, 0.5]],
+                },
+            ))
+            .unwrap_or_else(|e| panic!("ink: {e}"));
+        let record = Record::new(&editor, OrbitCamera::default(), Mode::Optimize);
+        let json = serde_json::to_string(&record).unwrap_or_else(|e| panic!("{e}"));
+        let back: Record = serde_json::from_str(&json).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(back, record);
+        let replayed = back.replay().unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(replayed.document(), editor.document());
+        let corrupt = Record {
+            session: String::from("{\"format\": 7"),
+            ..record
+        };
+        assert!(!corrupt.replay().unwrap_err().is_empty());
+    }
+}

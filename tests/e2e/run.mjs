@@ -408,10 +408,10 @@ test('a dropped .glb imports and is framed; Export downloads a valid file; bad f
     assert.match(download.suggestedFilename(), /^sketchmesh-\d{8}-\d{4}\.glb$/);
     await download.saveAs(out('download.glb'));
     const downloaded = readFileSync(out('download.glb'));
-    // The toolbar's Export button (at its place in the 1280 px wide toolbar) does the same.
+    // The toolbar's Export button (the second, at its place in the 1280 px wide toolbar) does the same.
     const [clicked] = await Promise.all([
       fresh.page.waitForEvent('download', { timeout: 10_000 }),
-      fresh.page.mouse.click(196, 20),
+      fresh.page.mouse.click(112, 20),
     ]);
     await clicked.saveAs(out('download-button.glb'));
     assert.ok(readFileSync(out('download-button.glb')).equals(downloaded), 'the Export button downloads the same file');
@@ -760,6 +760,44 @@ test('autosave: create and pull, reload: the same document, session, view and hi
   await frames(fresh.page, 3);
   await screenshot(fresh.page, out('autosave-set-aside.png'));
   assert.deepEqual(fresh.errors, [], 'console errors around the reloads');
+}));
+
+test('session files: Ctrl+Shift+S downloads the session; dropping it in a fresh profile gives the same document; a broken one changes nothing', () => withShape(async ({ fresh, created }) => {
+  const session = await api(fresh.page, 'session');
+  const [download] = await Promise.all([
+    fresh.page.waitForEvent('download', { timeout: 10_000 }),
+    fresh.page.keyboard.press('Control+Shift+S'),
+  ]);
+  assert.match(download.suggestedFilename(), /^sketchmesh-\d{8}-\d{4}\.sketchmesh\.json$/);
+  const saved = out('session.sketchmesh.json');
+  await download.saveAs(saved);
+  assert.equal(readFileSync(saved, 'utf8'), session, 'the file is the session');
+  const other = await openApp(browser, url, gpu);
+  try {
+    // Drops `file` on the canvas, as a person dragging it from their files would.
+    const pick = (file) => other.page.evaluate(async ([name, text]) => {
+      const transfer = new DataTransfer();
+      transfer.items.add(new File([text], name, { type: 'application/json' }));
+      const canvas = document.getElementById('sketchmesh_canvas');
+      for (const type of ['dragenter', 'dragover', 'drop']) {
+        canvas.dispatchEvent(new DragEvent(type, { dataTransfer: transfer, bubbles: true, cancelable: true }));
+      }
+    }, [file.split('/').at(-1), readFileSync(file, 'utf8')]);
+    const broken = out('broken.sketchmesh.json');
+    writeFileSync(broken, '{"format": "sketchmesh-session", "version": 1, "ops": [{"op": "nope"}]}');
+    await pick(broken);
+    await frames(other.page, 6);
+    assert.equal((await api(other.page, 'stats')).models, 0, 'a broken session changes nothing');
+    await pick(saved);
+    const opened = await until(() => api(other.page, 'stats'), (s) => s.models === 1, 15_000);
+    assert.deepEqual(opened, created, 'the same shape in the fresh profile');
+    assert.equal(await api(other.page, 'session'), session, 'the same session');
+    await frames(other.page, 4);
+    await screenshot(other.page, out('session-opened.png'));
+    assert.deepEqual(other.errors, [], 'console errors while opening sessions');
+  } finally {
+    await other.context.close();
+  }
 }));
 
 const failed = await runAll();

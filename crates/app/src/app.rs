@@ -97,7 +97,7 @@ pub struct SketchApp {
     status: Option<(String, f64)>,
     has_renderer: bool,
     /// An import announced this frame, parsed in the next one.
-    announced_import: Option<ImportInput>,
+    announced_import: Option<files::Incoming>,
     /// Frame the view once the geometry has been rebuilt (after an import).
     frame_after_rebuild: bool,
 }
@@ -381,33 +381,83 @@ impl SketchApp {
         let dropped = ctx.input(|i| i.raw.dropped_files.clone());
         let imports = self.shared.borrow().imports.clone();
         files::accept_dropped(dropped, &imports, ctx);
-        if let Some(input) = self.announced_import.take() {
-            let name = input.files[0].name.clone();
-            self.status = None;
-            self.apply_now(Op::Import(input), now);
-            if self.status.is_none() {
-                self.set_status(format!("Imported {name}."), now);
-                self.frame_after_rebuild = true;
+        if let Some(incoming) = self.announced_import.take() {
+            match incoming {
+                files::Incoming::Import(input) => self.import_now(input, now),
+                files::Incoming::Session { name, bytes } => self.open_session(&name, bytes, now),
             }
         }
-        if let Some(input) = imports.borrow_mut().pop_front() {
-            let bytes: usize = input
-                .files
-                .iter()
-                .filter_map(|f| f.data.as_ref())
-                .map(|d| d.len())
-                .sum();
-            self.set_status(
-                format!(
-                    "Importing {} ({:.1} MB)…",
-                    input.files[0].name,
-                    bytes as f64 / 1e6
+        if let Some(incoming) = imports.borrow_mut().pop_front() {
+            let (name, bytes): (&str, usize) = match &incoming {
+                files::Incoming::Import(input) => (
+                    &input.files[0].name,
+                    (input.files.iter())
+                        .filter_map(|f| f.data.as_ref())
+                        .map(|d| d.len())
+                        .sum(),
                 ),
-                now,
-            );
-            self.announced_import = Some(input);
+                files::Incoming::Session { name, bytes } => (name, bytes.len()),
+            };
+            let what = format!("Opening {name} ({:.1} MB)…", bytes as f64 / 1e6);
+            self.set_status(what, now);
+            self.announced_import = Some(incoming);
             ctx.request_repaint();
         }
+    }
+
+    fn import_now(&mut self, input: ImportInput, now: f64) {
+        let name = input.files[0].name.clone();
+        self.status = None;
+        self.apply_now(Op::Import(input), now);
+        if self.status.is_none() {
+            self.set_status(format!("Imported {name}."), now);
+            self.frame_after_rebuild = true;
+        }
+    }
+
+    /// Opens a session file in place of the document (its history comes with it). A file
+    /// that does not replay changes nothing. In the page, a document that had work in it is
+    /// first set aside in the browser's storage, as a broken autosave is (issue 18's
+    /// documents panel will list it); the autosave then follows the opened session.
+    fn open_session(&mut self, name: &str, bytes: Vec<u8>, now: f64) {
+        let replayed = String::from_utf8(bytes)
+            .map_err(|_| String::from("it is not text"))
+            .and_then(|text| Editor::replay_json(&text).map_err(|e| e.to_string()));
+        let editor = match replayed {
+            Ok(editor) => editor,
+            Err(why) => {
+                let sentence = format!("Could not open {name}: {why}. Nothing changed.");
+                return self.set_status(sentence, now);
+            }
+        };
+        self.cancel_gesture();
+        let had_work = !self.shared.borrow().editor.document().is_empty();
+        #[cfg(target_arch = "wasm32")]
+        if had_work {
+            let record = self.shared.borrow().autosave_record();
+            if let Err(why) = crate::web::set_aside_autosave(&record) {
+                let sentence =
+                    format!("Did not open {name}: the work shown could not be kept ({why}).");
+                return self.set_status(sentence, now);
+            }
+        }
+        self.shared.borrow_mut().editor = editor;
+        self.frame_after_rebuild = true;
+        let kept = match had_work {
+            true => " The previous document was kept in this browser's storage.",
+            false => "",
+        };
+        self.set_status(format!("Opened {name}.{kept}"), now);
+    }
+
+    fn save_session(&mut self, now: f64) {
+        self.finish_edit(now);
+        let text = self.shared.borrow().editor.session_json();
+        let message = match files::download(text.as_bytes(), files::Download::Session) {
+            Ok(name) => format!("Saved the session as {name}."),
+            Err(error) => format!("Could not save the session: {error}"),
+        };
+        self.set_status(message, now);
     }
 
     fn import_files(&mut self, ctx: &egui::Context) {
@@ -420,7 +470,7 @@ impl SketchApp {
     fn export(&mut self, now: f64) {
         self.finish_edit(now);
         let bytes = sketchmesh_core::io::write_glb(self.shared.borrow().editor.document());
-        let message = match files::download(&bytes) {
+        let message = match files::download(&bytes, files::Download::Glb) {
             Ok(name) => format!("Exported {name} ({:.1} MB).", bytes.len() as f64 / 1e6),
             Err(error) => format!("Could not export: {error}"),
         };
@@ -445,6 +495,12 @@ impl SketchApp {
         }
         if ctx.input_mut(|i| i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::O))) {
             self.import_files(ctx);
+        }
+        let save_session = ctx.input_mut(|i| {
+            i.consume_shortcut(&shortcut(Modifiers::COMMAND | Modifiers::SHIFT, Key::S))
+        });
+        if save_session {
+            self.save_session(now);
         }
         let export = ctx.input_mut(|i| {
             i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::S))
@@ -804,6 +860,7 @@ impl eframe::App for SketchApp {
             }
             Some(panels::toolbar::Action::Import) => self.import_files(&ctx),
             Some(panels::toolbar::Action::Export) => self.export(now),
+            Some(panels::toolbar::Action::SaveSession) => self.save_session(now),
             Some(panels::toolbar::Action::Mode(mode)) => self.set_mode(mode, now),
             Some(panels::toolbar::Action::Tool(output)) => self.take_output(*output, now),
             None => {}

@@ -1,4 +1,5 @@
-//! Files in and out: dropped and picked files become import ops, exports become downloads.
+//! Files in and out: dropped and picked files become import ops or open sessions, exports and
+//! saved sessions become downloads.
 //!
 //! Browsers read files asynchronously, so files arrive in an [`ImportQueue`] that the app
 //! drains at the start of a frame; the app shows "Importing…" for a frame before it parses,
@@ -11,8 +12,54 @@ use std::sync::Arc;
 
 use sketchmesh_core::document::{FileInput, ImportInput};
 
-/// Imports waiting for the next frame.
-pub type ImportQueue = Rc<RefCell<VecDeque<ImportInput>>>;
+/// Files waiting for the next frame.
+pub type ImportQueue = Rc<RefCell<VecDeque<Incoming>>>;
+
+/// What a drop or the picker brought.
+#[derive(Debug)]
+pub enum Incoming {
+    /// glTF files to import into the document.
+    Import(ImportInput),
+    /// A session file (`.json`) to open in place of the document.
+    Session {
+        /// The file's name.
+        name: String,
+        /// Its bytes (UTF-8 JSON, if it is what it says).
+        bytes: Vec<u8>,
+    },
+}
+
+/// A session file among `files` (the first `.json`), else their glTF import, else `None`.
+pub fn incoming(mut files: Vec<(String, Vec<u8>)>) -> Option<Incoming> {
+    let session = files
+        .iter()
+        .position(|(name, _)| name.to_ascii_lowercase().ends_with(".json"));
+    match session {
+        Some(index) => {
+            let (name, bytes) = files.swap_remove(index);
+            Some(Incoming::Session { name, bytes })
+        }
+        None => import_input(files).map(Incoming::Import),
+    }
+}
+
+/// A kind of file the app writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Download {
+    /// The document as glTF binary.
+    Glb,
+    /// The session (`docs/session-format.md`).
+    Session,
+}
+
+impl Download {
+    fn extension(self) -> &'static str {
+        match self {
+            Download::Glb => "glb",
+            Download::Session => "sketchmesh.json",
+        }
+    }
+}
 
 /// The files of one import, main file (.glb or .gltf) first; `None` if none is glTF.
 pub fn import_input(mut files: Vec<(String, Vec<u8>)>) -> Option<ImportInput> {
@@ -33,9 +80,17 @@ pub fn import_input(mut files: Vec<(String, Vec<u8>)>) -> Option<ImportInput> {
     })
 }
 
-/// `sketchmesh-YYYYMMDD-HHMM.glb` for a local date and time.
-pub fn export_file_name(year: i32, month: u32, day: u32, hour: u32, minute: u32) -> String {
-    format!("sketchmesh-{year:04}{month:02}{day:02}-{hour:02}{minute:02}.glb")
+/// `sketchmesh-YYYYMMDD-HHMM.<extension>` for a local date and time.
+pub fn file_name(
+    kind: Download,
+    year: i32,
+    month: u32,
+    day: u32,
+    hour: u32,
+    minute: u32,
+) -> String {
+    let extension = kind.extension();
+    format!("sketchmesh-{year:04}{month:02}{day:02}-{hour:02}{minute:02}.{extension}")
 }
 
 /// Queues files dropped on the app (read asynchronously in the browser).
@@ -76,8 +131,8 @@ pub fn accept_dropped(
 }
 
 fn queue_files(files: Vec<(String, Vec<u8>)>, queue: &ImportQueue, ctx: &egui::Context) {
-    if let Some(input) = import_input(files) {
-        queue.borrow_mut().push_back(input);
+    if let Some(incoming) = incoming(files) {
+        queue.borrow_mut().push_back(incoming);
         ctx.request_repaint();
     }
 }
@@ -98,7 +153,7 @@ pub fn pick_files(queue: &ImportQueue, ctx: &egui::Context) -> Result<(), String
         .map_err(|_| "not an input element")?;
     input.set_type("file");
     input.set_multiple(true);
-    input.set_accept(".glb,.gltf,.bin,.png,.jpg,.jpeg");
+    input.set_accept(".glb,.gltf,.bin,.png,.jpg,.jpeg,.json");
     let (queue, ctx, target) = (queue.clone(), ctx.clone(), input.clone());
     let on_change = Closure::once_into_js(move || {
         let Some(list) = target.files() else { return };
@@ -130,11 +185,12 @@ pub fn pick_files(_queue: &ImportQueue, _ctx: &egui::Context) -> Result<(), Stri
 
 /// Offers `bytes` as a download named for the current local time; returns the name.
 #[cfg(target_arch = "wasm32")]
-pub fn download(bytes: &[u8]) -> Result<String, String> {
+pub fn download(bytes: &[u8], kind: Download) -> Result<String, String> {
     use wasm_bindgen::JsCast as _;
     let describe = |e: wasm_bindgen::JsValue| format!("{e:?}");
     let now = js_sys::Date::new_0();
-    let name = export_file_name(
+    let name = file_name(
+        kind,
         now.get_full_year() as i32,
         now.get_month() + 1,
         now.get_date(),
@@ -143,7 +199,10 @@ pub fn download(bytes: &[u8]) -> Result<String, String> {
     );
     let parts = js_sys::Array::of1(&js_sys::Uint8Array::from(bytes));
     let options = web_sys::BlobPropertyBag::new();
-    options.set_type("model/gltf-binary");
+    options.set_type(match kind {
+        Download::Glb => "model/gltf-binary",
+        Download::Session => "application/json",
+    });
     let blob = web_sys::Blob::new_with_u8_array_sequence_and_options(&parts, &options)
         .map_err(describe)?;
     let url = web_sys::Url::create_object_url_with_blob(&blob).map_err(describe)?;
@@ -164,14 +223,15 @@ pub fn download(bytes: &[u8]) -> Result<String, String> {
 
 /// Writes `bytes` to the working directory, named for the current UTC time.
 #[cfg(not(target_arch = "wasm32"))]
-pub fn download(bytes: &[u8]) -> Result<String, String> {
+pub fn download(bytes: &[u8], kind: Download) -> Result<String, String> {
     let seconds = std::time::SystemTime::now()
         .duration_since(std::time::UNIX_EPOCH)
         .map_err(|e| e.to_string())?
         .as_secs();
     let (year, month, day) = civil_from_days((seconds / 86_400) as i64);
     let minutes = (seconds % 86_400) / 60;
-    let name = export_file_name(
+    let name = file_name(
+        kind,
         year,
         month,
         day,
@@ -214,10 +274,31 @@ mod tests {
     }
 
     #[test]
+    fn a_json_file_is_a_session_to_open() {
+        let files = vec![
+            (String::from("a.glb"), vec![1]),
+            (String::from("work.sketchmesh.JSON"), vec![b'{']),
+        ];
+        match incoming(files) {
+            Some(Incoming::Session { name, bytes }) => {
+                assert_eq!((name.as_str(), bytes), ("work.sketchmesh.JSON", vec![b'{']));
+            }
+            other => panic!("expected a session, got {other:?}"),
+        }
+        let glb = incoming(vec![(String::from("a.glb"), vec![1])]);
+        assert!(matches!(glb, Some(Incoming::Import(_))));
+        assert!(incoming(vec![(String::from("a.txt"), vec![])]).is_none());
+    }
+
+    #[test]
     fn names_and_dates() {
         assert_eq!(
-            export_file_name(2026, 11, 2, 9, 5),
+            file_name(Download::Glb, 2026, 11, 2, 9, 5),
             "sketchmesh-20261102-0905.glb"
+        );
+        assert_eq!(
+            file_name(Download::Session, 2026, 11, 2, 9, 5),
+            "sketchmesh-20261102-0905.sketchmesh.json"
         );
         #[cfg(not(target_arch = "wasm32"))]
         {

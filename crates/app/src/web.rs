@@ -206,20 +206,34 @@ fn restore(shared: &mut Shared, text: Option<&str>) -> Result<(), String> {
     Ok(())
 }
 
+/// Keeps `record` in the page's store under a key of its own (the work shown, before a
+/// session file replaces it).
+///
+/// Errors: a sentence when the page has no store or the call throws at once.
+pub fn set_aside_autosave(record: &Record) -> Result<(), String> {
+    call_store("setAside", record)
+}
+
 /// Hands `record` to the page's store (`window.sketchmeshAutosave.save`, from
 /// `web/autosave.js`), which writes it to IndexedDB without blocking the frame.
 ///
 /// Errors: a sentence when the page has no store or the call throws at once.
 pub fn write_autosave(record: &Record) -> Result<(), String> {
+    call_store("save", record)
+}
+
+/// Calls `window.sketchmeshAutosave[method]` with `record` as JSON text.
+fn call_store(method: &str, record: &Record) -> Result<(), String> {
     let text = serde_json::to_string(record).map_err(|e| e.to_string())?;
     let window = web_sys::window().ok_or("there is no window")?;
     let store = Reflect::get(&window, &JsValue::from_str("sketchmeshAutosave"))
         .map_err(|_| "the page has no autosave store")?;
-    let save: js_sys::Function = Reflect::get(&store, &JsValue::from_str("save"))
+    let function: js_sys::Function = Reflect::get(&store, &JsValue::from_str(method))
         .ok()
         .and_then(|f| f.dyn_into().ok())
         .ok_or("the page has no autosave store")?;
-    save.call1(&store, &JsValue::from_str(&text))
+    function
+        .call1(&store, &JsValue::from_str(&text))
         .map(|_| ())
         .map_err(|e| format!("{e:?}"))
 }

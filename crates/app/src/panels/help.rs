@@ -2,8 +2,12 @@
 
 /// Keyboard shortcuts, as shown.
 const SHORTCUTS: &[(&str, &str)] = &[
-    ("Ctrl+O", "Import glTF (or drop files on the page)"),
+    (
+        "Ctrl+O",
+        "Import glTF or open a session (or drop files on the page)",
+    ),
     ("Ctrl+S, Ctrl+E", "Export .glb"),
+    ("Ctrl+Shift+S", "Save the session (.sketchmesh.json)"),
     ("Ctrl+Z", "Undo"),
     ("Ctrl+Shift+Z, Ctrl+Y", "Redo"),
     ("F", "Frame everything"),

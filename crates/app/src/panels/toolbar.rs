@@ -22,6 +22,8 @@ pub enum Action {
     Import,
     /// Download the document as .glb.
     Export,
+    /// Download the session as .sketchmesh.json.
+    SaveSession,
     /// Switch to a tool.
     Mode(Mode),
     /// The active tool's panel asked for this.
@@ -45,8 +47,7 @@ pub fn toolbar_ui(
     ui.spacing_mut().interact_size.y = TOUCH_TARGET;
     ui.spacing_mut().button_padding = egui::vec2(10.0, 6.0);
     ui.horizontal_wrapped(|ui| {
-        ui.strong("Sketchmesh");
-        ui.separator();
+        // No title: the page's is enough, and the row needs the room for the buttons.
         let mut button = |ui: &mut egui::Ui, enabled: bool, label: &str, hint: &str, a: Action| {
             let response = ui.add_enabled(
                 enabled,
@@ -60,7 +61,8 @@ pub fn toolbar_ui(
             ui,
             true,
             "Import",
-            "Import a .glb or .gltf file (Ctrl+O), or drop one on the page",
+            "Import a .glb or .gltf file, or open a saved session (.sketchmesh.json) (Ctrl+O); \
+             or drop one on the page",
             Action::Import,
         );
         button(
@@ -69,6 +71,14 @@ pub fn toolbar_ui(
             "Export",
             "Download everything as .glb (Ctrl+S)",
             Action::Export,
+        );
+        button(
+            ui,
+            editor.can_undo() || editor.can_redo(),
+            "Save",
+            "Save the session, every step of it, to replay or to open elsewhere \
+             (.sketchmesh.json, Ctrl+Shift+S)",
+            Action::SaveSession,
         );
         ui.separator();
         button(ui, editor.can_undo(), "Undo", "Undo (Ctrl+Z)", Action::Undo);

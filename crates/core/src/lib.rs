@@ -9,7 +9,8 @@
 //! 1. the ground floor: [`camera`], [`curve`] (screen strokes), [`mesh`], [`solve`] and
 //!    [`geometry`] (which builds on `mesh` and `solve`);
 //! 2. the modeling techniques: [`fibermesh`], [`deform`], [`silhouette`], [`oversketch`]
-//!    (which bends with `deform` along `silhouette`s) and [`optimize`];
+//!    (which bends with `deform` along `silhouette`s), [`feature`] (which solves with
+//!    `deform`'s system) and [`optimize`];
 //! 3. [`model`]: what a document holds, as plain data;
 //! 4. [`io`]: glTF files in and out of the model;
 //! 5. [`document`]: editing it, with ops, undo history and sessions.
@@ -18,6 +19,7 @@ pub mod camera;
 pub mod curve;
 pub mod deform;
 pub mod document;
+pub mod feature;
 pub mod fibermesh;
 pub mod geometry;
 pub mod io;

@@ -242,6 +242,43 @@ impl LaplacianEdit {
         Ok(())
     }
 
+    /// The vertices whose Laplacian coordinates the system holds (the ROI, then its first
+    /// anchor ring), each with its rest coordinate `δ_i` (normalised cotangent weights).
+    pub fn laplacian_rows(&self) -> impl ExactSizeIterator<Item = (VertexId, DVec3)> + '_ {
+        let rows = &self.region_vertices[..self.rings.n_rows()];
+        rows.iter().copied().zip(self.rest_delta.iter().copied())
+    }
+
+    /// The ROI's vertices, in the order of [`LaplacianEdit::prescribed_displacement`]'s
+    /// result.
+    pub fn roi_vertices(&self) -> &[VertexId] {
+        &self.region_vertices[..self.n_roi]
+    }
+
+    /// How far each ROI vertex moves when the Laplacian coordinate of each row vertex
+    /// changes by `change` (in the order of [`LaplacianEdit::laplacian_rows`]) and the
+    /// handles and anchors stay: Nealen's prescribed Laplacians (Eq. 4.4, §4.4), the
+    /// least-squares solution of `L d = Δδ`. Linear in `change`, so a caller whose targets
+    /// vary along a line solves once and scales.
+    ///
+    /// Errors: [`SolveError::DimensionMismatch`] when `change` has the wrong length.
+    pub fn prescribed_displacement(&mut self, change: &[DVec3]) -> Result<Vec<DVec3>, SolveError> {
+        let n_rows = self.rings.n_rows();
+        check_len("change", n_rows, change.len())?;
+        self.rhs[..n_rows].copy_from_slice(change);
+        self.rhs[n_rows..].fill(DVec3::ZERO);
+        self.fixed_values.fill(DVec3::ZERO);
+        let n_equations = n_rows + self.soft_rows.len();
+        let (exact, fixed_values) = (&mut self.exact, &self.fixed_values);
+        self.solver.solve_with(
+            &self.rhs[..n_equations],
+            fixed_values,
+            &mut self.displacement,
+            |u| exact.correct(u, fixed_values, |_| DVec3::ZERO),
+        )?;
+        Ok(self.displacement[..self.n_roi].to_vec())
+    }
+
     /// Number of ROI vertices (free unknowns, counting vertex handles).
     pub fn n_roi(&self) -> usize {
         self.n_roi

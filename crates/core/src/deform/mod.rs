@@ -60,6 +60,7 @@ mod params;
 mod region;
 mod rotation;
 
+pub(crate) use cotan_weights::OneRingWeights;
 pub use error::DeformError;
 pub use handle::HandlePoint;
 pub use laplacian_edit::LaplacianEdit;

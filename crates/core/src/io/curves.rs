@@ -14,8 +14,7 @@
 //! FiberMesh solver and the curve tools need. A point farther from every vertex than the
 //! mesh's longest edge is not on the surface; its curve is left out.
 
-use std::cmp::Reverse;
-use std::collections::{BinaryHeap, HashMap};
+use std::collections::HashMap;
 
 use glam::DVec3;
 use rustc_hash::FxHashMap;
@@ -206,48 +205,17 @@ fn join(mesh: &Mesh, chain: &mut Vec<VertexId>, v: VertexId) -> Option<()> {
         None => chain.push(v),
         Some(&last) if last == v => {}
         Some(&last) if is_edge(mesh, last, v) => chain.push(v),
-        Some(&last) => chain.extend(shortest_path(mesh, last, v)?.into_iter().skip(1)),
+        Some(&last) => {
+            let length = |a: VertexId, b: VertexId| mesh.position(a).distance(mesh.position(b));
+            let path = mesh.shortest_path(last, v, |_| true, length)?;
+            chain.extend(path.into_iter().skip(1));
+        }
     }
     Some(())
 }
 
 fn is_edge(mesh: &Mesh, a: VertexId, b: VertexId) -> bool {
     mesh.vertex_neighbors(a).any(|w| w == b)
-}
-
-/// The vertices of a shortest edge path from `from` to `to` (Dijkstra over edge lengths),
-/// both included; `None` when they are not connected.
-fn shortest_path(mesh: &Mesh, from: VertexId, to: VertexId) -> Option<Vec<VertexId>> {
-    let mut distance: FxHashMap<VertexId, f64> = FxHashMap::default();
-    let mut previous: FxHashMap<VertexId, VertexId> = FxHashMap::default();
-    // Distances are non-negative, so their bit patterns order like the numbers.
-    let mut queue = BinaryHeap::new();
-    distance.insert(from, 0.0);
-    queue.push(Reverse((0f64.to_bits(), from.0)));
-    while let Some(Reverse((bits, v))) = queue.pop() {
-        let (v, d) = (VertexId(v), f64::from_bits(bits));
-        if v == to {
-            let mut path = vec![to];
-            while let Some(&p) = previous.get(path.last()?) {
-                path.push(p);
-            }
-            path.reverse();
-            return Some(path);
-        }
-        if distance.get(&v).is_some_and(|&best| d > best) {
-            continue;
-        }
-        let p = mesh.position(v);
-        for w in mesh.vertex_neighbors(v) {
-            let dw = d + p.distance(mesh.position(w));
-            if distance.get(&w).is_none_or(|&best| dw < best) {
-                distance.insert(w, dw);
-                previous.insert(w, v);
-                queue.push(Reverse((dw.to_bits(), w.0)));
-            }
-        }
-    }
-    None
 }
 
 #[cfg(test)]

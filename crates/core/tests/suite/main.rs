@@ -7,6 +7,7 @@ mod curve_edit;
 mod deform;
 mod edit;
 mod editor_properties;
+mod feature;
 mod fibermesh;
 mod gltf_import;
 mod gltf_testdata;

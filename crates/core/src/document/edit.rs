@@ -62,6 +62,7 @@ use glam::DVec3;
 
 use super::create::CreateJob;
 use super::curve_edit::PullPreview;
+use super::feature::FeaturePreview;
 use super::optimize::OptimizePreview;
 use super::outcome::{Outcome, outcome, with_model};
 use super::oversketch::{OutlinePiece, OutlinePreview};
@@ -134,6 +135,8 @@ enum Work {
     Outline(Box<OutlinePreview>),
     /// An optimization's live result, following the op's settings.
     Optimize(Box<OptimizePreview>),
+    /// A feature sketch's live shape, following the op's amount.
+    Feature(Box<FeaturePreview>),
     /// A creation, refining step by step.
     Create(Box<CreateJob>),
     /// Nothing computed yet: the next step computes the result whole.
@@ -159,6 +162,7 @@ impl Work {
             Op::Pull(input) => Work::Pull(Box::new(PullPreview::start(base, input)?)),
             Op::Oversketch(input) => Work::Outline(Box::new(OutlinePreview::new(input))),
             Op::Optimize(input) => Work::Optimize(Box::new(OptimizePreview::start(base, input)?)),
+            Op::SketchFeature(_) => Work::Feature(Box::new(FeaturePreview::new())),
             _ => Work::Gesture,
         })
     }
@@ -253,6 +257,7 @@ impl Edit {
                 (Work::Pull(preview), _) => preview.step(stroke)?,
                 (Work::Outline(preview), _) => preview.step(base, stroke),
                 (Work::Optimize(preview), Op::Optimize(input)) => preview.step(base, input)?,
+                (Work::Feature(preview), Op::SketchFeature(input)) => preview.step(base, input)?,
                 _ => None,
             };
             return Ok(match stepped {
@@ -283,6 +288,15 @@ impl Edit {
                     return Ok((Progress::Working, true));
                 };
                 self.work = Work::Done(with_model(base, model));
+                Ok((Progress::Done, true))
+            }
+            // A feature's drag ended: its kept edit gives the exact result.
+            Work::Feature(preview) => {
+                let Op::SketchFeature(input) = op else {
+                    self.work = Work::complete(base, op)?;
+                    return Ok((Progress::Working, true));
+                };
+                self.work = Work::Done(with_model(base, preview.result(base, input)?));
                 Ok((Progress::Done, true))
             }
             // A gesture ended: its preview goes, and the committed result begins.
@@ -369,7 +383,7 @@ impl Edit {
         }
     }
 
-    /// A pull's or an optimization's preview: the index of a model of [`Edit::document`]
+    /// A pull's, an optimization's or a feature's preview: the index of a model of [`Edit::document`]
     /// and where its vertices are drawn (the same topology).
     pub fn moved_model(&self) -> Option<(usize, &[DVec3])> {
         match &self.work {
@@ -378,6 +392,16 @@ impl Edit {
                 Op::Optimize(input) => Some(preview.moved(input)),
                 _ => None,
             },
+            Work::Feature(preview) => preview.moved(),
+            _ => None,
+        }
+    }
+
+    /// The amount a feature's preview shows when the one asked for would fold the surface
+    /// over (the committed result is held there too).
+    pub fn limited_amount(&self) -> Option<f64> {
+        match &self.work {
+            Work::Feature(preview) => preview.limited_to(),
             _ => None,
         }
     }

@@ -1,6 +1,7 @@
 //! Why an op was refused: one error for every op, each message a sentence for the user.
 
 use crate::curve::StrokeError;
+use crate::feature::FeatureError;
 use crate::fibermesh::CreateError;
 use crate::fibermesh::add_curve::AddCurveError;
 use crate::fibermesh::curve_pull::PullError;
@@ -70,6 +71,9 @@ pub enum CommandError {
     /// An op names a model the document does not have.
     #[error("There is no model {0} in the document.")]
     NoSuchModel(usize),
+    /// A feature sketch was refused.
+    #[error("{0}")]
+    Feature(#[from] FeatureError),
     /// A mesh optimization was refused.
     #[error("The mesh could not be optimized: {0}.")]
     Optimize(#[from] OptimizeError),

@@ -17,6 +17,7 @@ mod curve_edit;
 mod edit;
 mod editor;
 mod error;
+mod feature;
 mod history;
 mod intent;
 mod op;
@@ -40,7 +41,7 @@ pub use intent::{
 };
 pub use op::{
     AddCurveInput, BrushInput, CurveTypeInput, FileInput, ImportInput, Op, OptimizeInput,
-    OversketchFit, OversketchInput, StrokeInput,
+    OversketchFit, OversketchInput, SketchFeatureInput, StrokeInput,
 };
 pub use oversketch::OutlinePiece;
 pub use session::{SESSION_FORMAT, SESSION_VERSION, Session};

@@ -9,6 +9,7 @@ use super::CommandError;
 use crate::camera::Camera;
 use crate::curve::StrokePoint;
 use crate::deform::HandleFit;
+use crate::feature::FeatureKind;
 use crate::optimize::OptimizeParams;
 use crate::oversketch::{ManualHandle, OversketchRoi, SOFT_FIT_WEIGHT};
 
@@ -41,6 +42,9 @@ pub enum Op {
     /// Move a model's vertices by Laplacian mesh optimization (better triangles, or
     /// smoothing); its triangles and curves stay.
     Optimize(OptimizeInput),
+    /// Sketch a feature on a model's surface: a ridge or ravine along the sketch, a bump or
+    /// valley, a flattening or suggestive contours over its region.
+    SketchFeature(SketchFeatureInput),
     /// Undo the last change.
     Undo,
     /// Redo the last undone change.
@@ -61,6 +65,7 @@ impl Op {
         "set_curve_type",
         "rub",
         "optimize",
+        "sketch_feature",
         "undo",
         "redo",
     ];
@@ -78,6 +83,7 @@ impl Op {
             Op::SetCurveType(_) => "set_curve_type",
             Op::Rub(_) => "rub",
             Op::Optimize(_) => "optimize",
+            Op::SketchFeature(_) => "sketch_feature",
             Op::Undo => "undo",
             Op::Redo => "redo",
         }
@@ -92,6 +98,7 @@ impl Op {
             Op::Oversketch(input) => Some(&input.stroke),
             Op::AddCurve(input) => Some(&input.stroke),
             Op::SetCurveType(input) => Some(&input.stroke),
+            Op::SketchFeature(input) => Some(&input.stroke),
             Op::Import(_) | Op::Optimize(_) | Op::Undo | Op::Redo => None,
         }
     }
@@ -104,6 +111,7 @@ impl Op {
             Op::Oversketch(input) => Some(&mut input.stroke),
             Op::AddCurve(input) => Some(&mut input.stroke),
             Op::SetCurveType(input) => Some(&mut input.stroke),
+            Op::SketchFeature(input) => Some(&mut input.stroke),
             Op::Import(_) | Op::Optimize(_) | Op::Undo | Op::Redo => None,
         }
     }
@@ -129,6 +137,47 @@ pub struct OptimizeInput {
     /// Brush strokes painted over features to keep (see [`crate::optimize::Selection`]).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub painted_features: Vec<BrushInput>,
+}
+
+/// A `sketch_feature` op: the sketch on the surface, what it makes, how much, and the
+/// optional region.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SketchFeatureInput {
+    /// Viewport size `[width, height]` in CSS px.
+    pub viewport: [f64; 2],
+    /// The camera the sketch was drawn with.
+    pub camera: Camera,
+    /// Raw samples `[x, y, pressure]` of the sketch on the surface, as in [`StrokeInput`].
+    pub stroke: Vec<[f64; 3]>,
+    /// What the sketch makes.
+    pub kind: FeatureKind,
+    /// For a ridge or bump, the factor applied to the Laplacians (1 leaves the surface as
+    /// the embedded sketch left it, 0 flattens, a negative factor makes a ravine or
+    /// valley); for suggestive contours the angle in degrees; ignored when flattening.
+    /// Left out: the neutral amount.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub amount: Option<f64>,
+    /// The closed lasso `[[x, y], …]` (first point not repeated) around the region that may
+    /// move; left out: a band along the sketch.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub region: Option<Vec<[f64; 2]>>,
+}
+
+impl SketchFeatureInput {
+    /// The amount, or the kind's neutral one.
+    pub fn amount(&self) -> f64 {
+        self.amount.unwrap_or(self.kind.neutral_amount())
+    }
+
+    /// The sketch's stroke part.
+    pub fn stroke_input(&self) -> StrokeInput {
+        StrokeInput {
+            viewport: self.viewport,
+            camera: self.camera,
+            stroke: self.stroke.clone(),
+        }
+    }
 }
 
 /// A brush stroke painted on screen: the stroke in its view, and the brush's radius in CSS px

@@ -10,6 +10,7 @@
 
 use glam::DVec3;
 
+use super::outcome::{target, with_positions};
 use super::{BrushInput, CommandError, Document, Model, OptimizeInput, StrokeInput};
 use crate::mesh::Mesh;
 use crate::optimize::region::{brushed_vertices, lasso_vertices};
@@ -187,18 +188,4 @@ fn optimizer_for<'a>(
             (optimizer, false)
         }
     })
-}
-
-fn target(doc: &Document, index: usize) -> Result<&Model, CommandError> {
-    doc.models
-        .get(index)
-        .map(|model| &**model)
-        .ok_or(CommandError::NoSuchModel(index))
-}
-
-/// Model `index` of `doc` with its vertices at `positions`.
-fn with_positions(doc: &Document, index: usize, positions: &[DVec3]) -> Model {
-    let mut next = Model::clone(&doc.models[index]);
-    next.mesh.positions_mut().copy_from_slice(positions);
-    next
 }

@@ -4,6 +4,7 @@
 use std::sync::Arc;
 
 use super::create::CreateJob;
+use super::feature::feature_op;
 use super::optimize::optimize_op;
 use super::oversketch::oversketch_op;
 use super::{CommandError, Document, ImportInput, Model, Op, SketchCurve, StrokeInput, curve_edit};
@@ -56,6 +57,7 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
         Op::SetCurveType(input) => replaced(curve_edit::set_curve_type_op(base, input)?),
         Op::Rub(input) => replaced(curve_edit::rub_op(base, input)?),
         Op::Optimize(input) => replaced(optimize_op(base, input)?),
+        Op::SketchFeature(input) => replaced(feature_op(base, input)?),
         Op::Undo => Outcome::Undo,
         Op::Redo => Outcome::Redo,
     })
@@ -63,6 +65,24 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
 
 /// Processes the stroke in screen space and projects each point onto the plane through the
 /// camera target facing the camera.
+/// Model `index` of `doc`.
+///
+/// Errors: [`CommandError::NoSuchModel`].
+pub(super) fn target(doc: &Document, index: usize) -> Result<&Model, CommandError> {
+    doc.models
+        .get(index)
+        .map(|model| &**model)
+        .ok_or(CommandError::NoSuchModel(index))
+}
+
+/// Model `index` of `doc` with its vertices at `positions`; its triangles, curves (chains
+/// of vertices, so they follow) and appearance stay.
+pub(super) fn with_positions(doc: &Document, index: usize, positions: &[glam::DVec3]) -> Model {
+    let mut next = Model::clone(&doc.models[index]);
+    next.mesh.positions_mut().copy_from_slice(positions);
+    next
+}
+
 /// `base` with model `index` replaced.
 pub(super) fn with_model(base: &Document, (index, model): (usize, Model)) -> Outcome {
     let mut next = base.clone();

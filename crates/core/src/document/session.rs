@@ -177,7 +177,8 @@ fn has_no_fields(op: &Op) -> bool {
         | Op::Erase(_)
         | Op::SetCurveType(_)
         | Op::Rub(_)
-        | Op::Optimize(_) => false,
+        | Op::Optimize(_)
+        | Op::SketchFeature(_) => false,
         Op::Undo | Op::Redo => true,
     }
 }

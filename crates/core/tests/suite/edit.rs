@@ -10,8 +10,9 @@ use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
     AddCurveInput, BrushInput, CommandError, Editor, Op, OptimizeInput, OversketchFit,
-    OversketchInput, Progress, StrokeInput,
+    OversketchInput, Progress, SketchFeatureInput, StrokeInput,
 };
+use sketchmesh_core::feature::{FeatureError, FeatureKind};
 use sketchmesh_core::optimize::region::brushed_vertices;
 use sketchmesh_core::optimize::{Mode, OptimizeParams, Optimizer, Selection};
 use sketchmesh_core::oversketch::OversketchRoi;
@@ -509,4 +510,58 @@ fn an_edit_finished_after_the_document_changed_is_computed_again() {
     in_order.apply(first).unwrap();
     assert_eq!(editor.document(), in_order.document());
     assert_eq!(editor.session_json(), in_order.session_json());
+}
+
+/// A ridge dragged up and down by hand (the app's live preview: the op revised with each
+/// amount, one step each) commits the very mesh `apply` makes of the final op; the session
+/// replays it; an amount that is not a number is refused and changes nothing; undo restores.
+#[test]
+fn a_dragged_feature_commits_what_apply_makes() {
+    let mut editor = Editor::new();
+    editor.apply(session()[1](&editor)).unwrap();
+    let before = editor.document().clone();
+    let sketch = input(segment(CENTRE - DVec2::X * 80.0, CENTRE + DVec2::X * 80.0));
+    let op = |kind: FeatureKind, amount: f64| {
+        Op::SketchFeature(SketchFeatureInput {
+            viewport: sketch.viewport,
+            camera: sketch.camera,
+            stroke: sketch.stroke.clone(),
+            kind,
+            amount: Some(amount),
+            region: None,
+        })
+    };
+    for (kind, amounts) in [
+        (FeatureKind::Ridge, [1.0, 3.0, 8.0, -2.0, 5.0]),
+        (FeatureKind::Suggestive, [0.0, 30.0, 90.0, -45.0, 60.0]),
+    ] {
+        let mut edit = editor.begin_gesture(op(kind, amounts[0])).unwrap();
+        let mut previews = Vec::new();
+        for &amount in &amounts {
+            edit.revise(op(kind, amount));
+            assert_eq!(edit.step().unwrap(), Progress::Waiting);
+            let (model, shown) = edit.moved_model().expect("a preview");
+            assert_eq!(model, 0);
+            previews.push(shown.to_vec());
+        }
+        assert_ne!(previews[1], previews[2], "the preview follows the amount");
+        edit.finish(&mut editor).unwrap();
+        let committed = editor.document().models[0].mesh.positions().to_vec();
+        assert_eq!(&committed, previews.last().unwrap());
+        let mut applied = Editor::new();
+        applied.apply(session()[1](&applied)).unwrap();
+        applied.apply(op(kind, *amounts.last().unwrap())).unwrap();
+        assert_eq!(applied.document(), editor.document());
+        let replayed = Editor::replay_json(&editor.session_json()).unwrap();
+        assert_eq!(replayed.document(), editor.document());
+        editor.undo().unwrap();
+        assert_eq!(editor.document(), &before);
+    }
+    let n_ops = editor.ops().len();
+    let refused = editor.apply(op(FeatureKind::Ridge, f64::NAN)).unwrap_err();
+    assert_eq!(
+        refused,
+        CommandError::Feature(FeatureError::AmountNotFinite)
+    );
+    assert_eq!((editor.document(), editor.ops().len()), (&before, n_ops));
 }

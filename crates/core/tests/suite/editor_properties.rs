@@ -51,8 +51,10 @@ use proptest::prelude::*;
 use proptest::test_runner::{Config, FileFailurePersistence, RngSeed, TestRunner};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    CommandError, ControlCurve, Document, Editor, Model, Op, OversketchFit, StrokeInput,
+    CommandError, ControlCurve, Document, Editor, Model, Op, OversketchFit, SketchFeatureInput,
+    StrokeInput,
 };
+use sketchmesh_core::feature::FeatureKind;
 use sketchmesh_core::geometry::{Bvh, vertex_normals};
 use sketchmesh_core::mesh::primitives;
 use sketchmesh_core::oversketch::{OversketchRoi, pick_handle};
@@ -174,6 +176,15 @@ enum Step {
         soft: bool,
         part: bool,
         manual: Manual,
+    },
+    /// A feature sketched across the middle of a model as seen.
+    Feature {
+        view: View,
+        model: usize,
+        kind: u8,
+        direction: f64,
+        span: f64,
+        amount: f64,
     },
     /// A curve tool or an over-sketch far from every model: refused.
     Stray {
@@ -301,9 +312,28 @@ fn step() -> impl Strategy<Value = Step> {
                 manual,
             }
         });
+    let feature = (
+        view(),
+        0usize..8,
+        0u8..4,
+        0.0..std::f64::consts::PI,
+        0.1..0.6f64,
+        -3.0..6.0f64,
+    )
+        .prop_map(
+            |(view, model, kind, direction, span, amount)| Step::Feature {
+                view,
+                model,
+                kind,
+                direction,
+                span,
+                amount,
+            },
+        );
     prop_oneof![
         2 => outline_step().prop_map(Step::Create),
         1 => import,
+        2 => feature,
         3 => pull,
         3 => add,
         2 => erase,
@@ -583,6 +613,35 @@ fn op_for(step: &Step, document: &Document) -> Op {
                 }
             };
             oversketch(VIEWPORT, camera, &stroke, fit, roi, handle)
+        }
+        Step::Feature {
+            view,
+            model,
+            kind,
+            direction,
+            span,
+            amount,
+        } => {
+            let camera = view.camera();
+            let kind = FeatureKind::ALL[usize::from(*kind) % FeatureKind::ALL.len()];
+            let (centre, radius) = pick_model(document, *model)
+                .and_then(|model| projection(model, &camera))
+                .unwrap_or((nowhere()[0], 10.0));
+            let half = span * radius * DVec2::from_angle(*direction);
+            let stroke = input(camera, &segment(centre - half, centre + half));
+            let angle = 30.0 * amount;
+            Op::SketchFeature(SketchFeatureInput {
+                viewport: stroke.viewport,
+                camera,
+                stroke: stroke.stroke,
+                kind,
+                amount: Some(if kind == FeatureKind::Suggestive {
+                    angle
+                } else {
+                    *amount
+                }),
+                region: None,
+            })
         }
         Step::Stray { kind } => {
             let (camera, points) = (Camera::default(), nowhere());

@@ -15,6 +15,7 @@ use eframe::egui_wgpu;
 use egui::{Key, KeyboardShortcut, Modifiers};
 use sketchmesh_core::curve::{StrokePoint, process_stroke};
 use sketchmesh_core::document::{Edit, Editor, ImportInput, Op, Progress};
+use sketchmesh_core::feature::FeatureKind;
 use sketchmesh_core::optimize::quality_report;
 use sketchmesh_core::oversketch::OversketchRoi;
 
@@ -223,6 +224,9 @@ impl SketchApp {
             Ok(Progress::Working | Progress::Waiting) => ctx.request_repaint(),
             Err(e) => {
                 self.edit = None;
+                if was_gesture {
+                    self.tools.gesture_refused();
+                }
                 self.set_status(e.to_string(), now);
             }
         }
@@ -319,6 +323,13 @@ impl SketchApp {
                     edit.end_gesture();
                 }
             }
+            ToolOutput::FinishWith(op) => match gesture {
+                Some(edit) if edit.op().name() == op.name() => {
+                    edit.revise(op);
+                    edit.end_gesture();
+                }
+                _ => self.begin(op, false, now),
+            },
             ToolOutput::Cancel => self.cancel_gesture(),
             ToolOutput::Refused(message) => self.set_status(message, now),
         }
@@ -711,6 +722,9 @@ impl SketchApp {
         if let Some(hint) = self.tools.hint() {
             hint_ui(ui, viewport, hint);
         }
+        if let Some(amount) = self.edit.as_ref().and_then(feature_amount) {
+            hint_ui(ui, viewport, &amount);
+        }
         let picked = self
             .tools
             .handle()
@@ -769,6 +783,26 @@ fn outline_ui(
 }
 
 /// What the active tool asks for next, centred at the top of the viewport.
+/// A feature drag's amount as the user reads it, and where folding holds it back.
+fn feature_amount(edit: &Edit) -> Option<String> {
+    let Op::SketchFeature(input) = edit.op() else {
+        return None;
+    };
+    let say = |amount: f64| match input.kind {
+        FeatureKind::Suggestive => format!("{amount:.0}°"),
+        FeatureKind::Flatten => String::from("flat"),
+        _ => format!("× {amount:.1}"),
+    };
+    let asked = say(input.amount());
+    Some(match edit.limited_amount() {
+        Some(held) => format!(
+            "{asked}: held at {}, more would fold the surface over",
+            say(held)
+        ),
+        None => asked,
+    })
+}
+
 fn hint_ui(ui: &egui::Ui, viewport: egui::Rect, text: &str) {
     ui.painter().text(
         viewport.center_top() + egui::vec2(0.0, 28.0),

@@ -262,3 +262,54 @@ fn an_oversketch_stroke_shows_its_outline_piece_then_commits_what_replay_gives()
         "the over-sketch committed in the app differs from apply"
     );
 }
+
+#[test]
+fn a_ridge_sketched_and_dragged_in_the_app_is_its_session_replayed() {
+    let mut h = harness();
+    h.run();
+    let center = pos2(450.0, 340.0);
+    draw_ellipse(&mut h, center);
+    h.key_press(egui::Key::D);
+    h.run();
+    // The sketch, across the middle of the shape: nothing changes yet.
+    let before = h.render().expect("render");
+    h.event(Event::PointerMoved(center - vec2(90.0, 0.0)));
+    press(&h, center - vec2(90.0, 0.0), PointerButton::Primary, true);
+    h.step();
+    for i in 1..=30 {
+        h.event(Event::PointerMoved(
+            center + vec2(-90.0 + 6.0 * i as f32, 0.0),
+        ));
+        h.step();
+    }
+    press(&h, center + vec2(90.0, 0.0), PointerButton::Primary, false);
+    h.run();
+    let ops = |h: &Harness<'_, SketchApp>| h.state().shared().borrow().editor.ops().len();
+    assert_eq!(ops(&h), 1, "a sketch alone commits nothing");
+    // The drag upwards raises the ridge while the pointer is down.
+    let grab = center + vec2(0.0, 80.0);
+    h.event(Event::PointerMoved(grab));
+    press(&h, grab, PointerButton::Primary, true);
+    h.step();
+    for i in 1..=10 {
+        h.event(Event::PointerMoved(grab - vec2(0.0, 9.0 * i as f32)));
+        h.step();
+    }
+    let dragging = h.render().expect("render");
+    save(&dragging, "feature-ridge-preview");
+    assert_eq!(ops(&h), 1, "nothing committed while dragging");
+    let moved = changed_pixels(&before, &dragging);
+    assert!(moved > 200, "the ridge preview changed only {moved} pixels");
+    press(&h, grab - vec2(0.0, 90.0), PointerButton::Primary, false);
+    h.run();
+    let shared = h.state().shared();
+    let last = shared.borrow().editor.ops().last().cloned();
+    let Some(sketchmesh_core::document::Op::SketchFeature(input)) = last else {
+        panic!("the last op is {last:?}");
+    };
+    assert_eq!(input.amount, Some(7.0), "a 90 px drag up is a factor of 7");
+    assert!(
+        replays_bit_for_bit(&h),
+        "the feature committed in the app differs from apply"
+    );
+}

@@ -122,6 +122,13 @@ pub fn toolbar_ui(
                 oversketch_options_ui(ui, tools.oversketch_settings_mut());
                 ui.separator();
             }
+            Mode::Feature => {
+                let output = tools.feature_ui(ui);
+                if output != ToolOutput::None {
+                    action = Some(Action::Tool(Box::new(output)));
+                }
+                ui.separator();
+            }
             Mode::Optimize => {
                 let output = tools.optimize_ui(ui);
                 if output != ToolOutput::None {

@@ -34,6 +34,9 @@ pub enum ToolOutput {
     /// The gesture ended without a sample (a panel's Apply): apply its op as one undoable
     /// step.
     Finish,
+    /// The gesture ended with these last settings (a drag's release): preview them, then
+    /// apply the op as one undoable step.
+    FinishWith(Op),
     /// Drop the gesture: nothing changes.
     Cancel,
     /// The gesture did nothing; tell the user why.

@@ -4,12 +4,13 @@
 //! editor, so one gesture is one undo step and every edit replays from the session. A tool
 //! whose op previews while it is drawn (pull, over-sketch) begins it as a gesture
 //! ([`ToolOutput::Begin`]) and feeds it samples; the app runs it as it runs every edit.
-//! [`ToolSet`] holds one tool per [`Mode`] (FiberMesh's five tools, over-sketch and
-//! optimize) and routes events to the active one.
+//! [`ToolSet`] holds one tool per [`Mode`] (FiberMesh's five tools, over-sketch, feature
+//! sketching and optimize) and routes events to the active one.
 
 mod context;
 pub mod curve_stroke;
 pub mod draw;
+pub mod feature;
 pub mod mode;
 pub mod optimize;
 pub mod oversketch;
@@ -25,6 +26,7 @@ pub use context::{ToolOutput, ViewCtx};
 pub use mode::Mode;
 
 use curve_stroke::CurveStrokeTool;
+use feature::FeatureTool;
 pub use optimize::Mark;
 use optimize::OptimizeTool;
 pub use oversketch::OversketchSettings;
@@ -41,6 +43,7 @@ pub struct ToolSet {
     curve_stroke: CurveStrokeTool,
     oversketch: OversketchTool,
     optimize: OptimizeTool,
+    feature: FeatureTool,
 }
 
 impl ToolSet {
@@ -68,6 +71,16 @@ impl ToolSet {
     /// The optimize tool's panel; what the user did there.
     pub fn optimize_ui(&mut self, ui: &mut egui::Ui) -> ToolOutput {
         self.optimize.settings_ui(ui)
+    }
+
+    /// The feature tool's panel; what the user did there.
+    pub fn feature_ui(&mut self, ui: &mut egui::Ui) -> ToolOutput {
+        self.feature.settings_ui(ui)
+    }
+
+    /// The edit a tool's gesture began was refused: the tool starts over.
+    pub fn gesture_refused(&mut self) {
+        self.feature.cancel();
     }
 
     /// Confirms what the active tool holds open (Enter): an optimization's preview.
@@ -99,6 +112,7 @@ impl ToolSet {
         match self.mode {
             Mode::Oversketch => self.oversketch.hint(),
             Mode::Optimize => self.optimize.hint(),
+            Mode::Feature => self.feature.hint(),
             _ => None,
         }
     }
@@ -109,6 +123,7 @@ impl ToolSet {
         self.curve_stroke.cancel();
         self.oversketch.cancel();
         self.optimize.cancel();
+        self.feature.cancel();
         self.sketch.cancel()
     }
 
@@ -122,6 +137,7 @@ impl ToolSet {
             }
             Mode::Oversketch => self.oversketch.on_event(event, view, doc),
             Mode::Optimize => self.optimize.on_event(event, view, doc),
+            Mode::Feature => self.feature.on_event(event, view, doc),
         }
     }
 
@@ -133,6 +149,7 @@ impl ToolSet {
             Mode::Optimize => self.optimize.preview(),
             Mode::Erase | Mode::CurveType | Mode::Rub => self.curve_stroke.preview(),
             Mode::Oversketch => self.oversketch.preview(),
+            Mode::Feature => self.feature.preview(),
         }
     }
 
@@ -141,11 +158,12 @@ impl ToolSet {
         self.sketch.waiting()
     }
 
-    /// The optimize tool's lasso and brush strokes, while the view is the one each was drawn
-    /// in.
+    /// The optimize tool's lasso and brush strokes, or the feature tool's region and sketch,
+    /// while the view is the one each was drawn in.
     pub fn marks(&self, camera: &Camera) -> Vec<Mark> {
         match self.mode {
             Mode::Optimize => self.optimize.marks(camera),
+            Mode::Feature => self.feature.marks(camera),
             _ => Vec::new(),
         }
     }

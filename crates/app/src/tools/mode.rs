@@ -1,5 +1,6 @@
 //! The tool modes: FiberMesh's five tools (sketch, deform, erase, type change, rub;
-//! thesis §3.2), over-sketch and optimize, with their toolbar labels and keys.
+//! thesis §3.2), over-sketch, feature sketching and optimize, with their toolbar labels and
+//! keys.
 
 use egui::Key;
 
@@ -22,17 +23,20 @@ pub enum Mode {
     Oversketch,
     /// Better triangles or less noise on a model (Laplacian mesh optimization).
     Optimize,
+    /// Sketch a ridge, bump, flattening or suggestive contours onto a model.
+    Feature,
 }
 
 impl Mode {
     /// Every mode, in toolbar order.
-    pub const ALL: [Mode; 7] = [
+    pub const ALL: [Mode; 8] = [
         Mode::Sketch,
         Mode::Pull,
         Mode::Erase,
         Mode::CurveType,
         Mode::Rub,
         Mode::Oversketch,
+        Mode::Feature,
         Mode::Optimize,
     ];
 
@@ -46,6 +50,7 @@ impl Mode {
             Mode::Rub => "Rub",
             Mode::Oversketch => "Over-sketch",
             Mode::Optimize => "Optimize",
+            Mode::Feature => "Feature",
         }
     }
 
@@ -59,6 +64,7 @@ impl Mode {
             Mode::Rub => Key::U,
             Mode::Oversketch => Key::O,
             Mode::Optimize => Key::M,
+            Mode::Feature => Key::D,
         }
     }
 
@@ -75,6 +81,9 @@ impl Mode {
             Mode::Oversketch => "Draw near an outline where you want it to be",
             Mode::Optimize => {
                 "Tap a model: even out its triangles or smooth it, preview the amount, Apply"
+            }
+            Mode::Feature => {
+                "Sketch on a model, then drag: a ridge or ravine, a bump or valley, flattening, suggestive contours"
             }
         }
     }

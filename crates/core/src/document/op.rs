@@ -466,6 +466,14 @@ mod tests {
                 painted: Vec::new(),
                 painted_features: Vec::new(),
             }),
+            Op::SketchFeature(SketchFeatureInput {
+                viewport: [1.0, 1.0],
+                camera: Camera::default(),
+                stroke: Vec::new(),
+                kind: FeatureKind::Ridge,
+                amount: None,
+                region: None,
+            }),
             Op::Undo,
             Op::Redo,
         ];

@@ -80,13 +80,16 @@ mod tests {
         let total: f64 = path.windows(2).map(|p| length(p[0], p[1])).sum();
         assert_eq!(path.len(), 7);
         assert!((total - 2f64.sqrt()).abs() < 1e-12);
-        // Only the bottom row and right column allowed: the path is that L.
+        // Only the bottom row and right column allowed: the path is that L, cutting its
+        // corner along the one diagonal between them.
         let on_edge = |v: VertexId| v.0 / 7 == 0 || v.0 % 7 == 6;
         let round = mesh
             .shortest_path(at(0, 0), at(6, 6), on_edge, length)
             .unwrap();
-        assert_eq!(round.len(), 13);
+        assert_eq!(round.len(), 12);
         assert!(round.iter().all(|&v| on_edge(v)));
+        let total: f64 = round.windows(2).map(|p| length(p[0], p[1])).sum();
+        assert!((total - (10.0 + 2f64.sqrt()) / 6.0).abs() < 1e-12);
         // Nothing allowed between two far vertices: no path.
         assert!(
             mesh.shortest_path(at(0, 0), at(6, 6), |_| false, length)

@@ -700,6 +700,50 @@ test('optimize (M): a tap previews the shape optimized, Esc drops it, Enter comm
     assert.deepEqual(fresh.errors, [], 'console errors while optimizing');
 }));
 
+test('feature (D): a sketch across a shape, then a drag up, raises a ridge under it only; undo restores; a sketch off the shape changes nothing', () => withShape(async ({ fresh, created }) => {
+    const c = ELLIPSE.c;
+    const lastOp = () => api(fresh.page, 'session').then((json) => JSON.parse(json).ops.at(-1) ?? {});
+    const glb = () => fresh.page.evaluate(() => Array.from(window.sketchmesh.exportGlb()));
+    await until(lastOp, (o) => o.op === 'create', 15_000);
+    const original = await glb();
+    await fresh.page.keyboard.press('d');
+    await frames(fresh.page, 3);
+    const before = await screenshot(fresh.page, out('feature-before.png'));
+    // A sketch starting beside the shape is refused at once: nothing is waiting for a drag.
+    await penStroke(fresh.cdp, line({ x: c.x - 260, y: c.y }, { x: c.x - 100, y: c.y }, 20).map((p) => ({ ...p, force: 0.5 })));
+    await frames(fresh.page, 3);
+    assert.equal((await lastOp()).op, 'create', 'a sketch off the shape is no op');
+    // The sketch across the middle, then the drag: up 90 px, a factor of 7.
+    await penStroke(fresh.cdp, line({ x: c.x - 100, y: c.y }, { x: c.x + 100, y: c.y }, 30).map((p) => ({ ...p, force: 0.5 })));
+    await frames(fresh.page, 3);
+    assert.equal((await lastOp()).op, 'create', 'a sketch alone is no op');
+    await penStroke(fresh.cdp, line({ x: c.x, y: c.y + 80 }, { x: c.x, y: c.y - 10 }, 15).map((p) => ({ ...p, force: 0.5 })));
+    const op = await until(lastOp, (o) => o.op === 'sketch_feature', 10_000);
+    assert.equal(op.op, 'sketch_feature', 'the release commits the feature');
+    assert.equal(op.kind, 'ridge');
+    assert.ok(Math.abs(op.amount - 7) < 0.01, `a 90 px drag up is a factor of 7 (${op.amount})`);
+    assert.deepEqual(await api(fresh.page, 'stats'), created, 'same vertices, triangles and curves');
+    await frames(fresh.page, 3);
+    const ridge = await screenshot(fresh.page, out('feature-ridge.png'));
+    const inside = [];
+    for (let x = c.x - 150; x <= c.x + 150; x += 3) {
+      for (let y = c.y - 100; y <= c.y + 100; y += 3) {
+        if (((x - c.x) / 160) ** 2 + ((y - c.y) / 110) ** 2 < 1) inside.push({ x, y });
+      }
+    }
+    const near = inside.filter((p) => Math.abs(p.y - c.y) < 12 && Math.abs(p.x - c.x) < 90);
+    const far = inside.filter((p) => Math.abs(p.y - c.y) > 70);
+    const nearChanged = changedFraction(before, ridge, near, { radius: 0, threshold: 20 });
+    const farChanged = changedFraction(before, ridge, far, { radius: 0, threshold: 20 });
+    console.log(`    ridge: ${(100 * nearChanged).toFixed(1)}% of the pixels along the sketch changed, ${(100 * farChanged).toFixed(2)}% away from it`);
+    assert.ok(nearChanged > 0.2, `the ridge shows along the sketch (${nearChanged})`);
+    assert.ok(farChanged < 0.001, `nothing away from the sketch moves (${farChanged})`);
+    await fresh.page.keyboard.press('Control+z');
+    await frames(fresh.page, 3);
+    assert.deepEqual(await glb(), original, 'undo restores the shape bit for bit');
+    assert.deepEqual(fresh.errors, [], 'console errors while sketching features');
+}));
+
 test('autosave: create and pull, reload: the same document, session, view and history; a corrupt record is set aside with a sentence', () => withShape(async ({ fresh, created }) => {
   const c = ELLIPSE.c;
   const session = () => api(fresh.page, 'session');

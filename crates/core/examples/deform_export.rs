@@ -18,7 +18,7 @@ use sketchmesh_core::deform::{EditParams, HandleFit, LaplacianEdit, Rotations};
 mod export;
 #[path = "../benches/common/oversketch.rs"]
 mod oversketch;
-use export::{RUNS, median_ms, vectors};
+use export::{RUNS, median_ms, vectors, write_mesh_and_roi};
 use oversketch::{oversketch_edit, sphere, targets};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -59,14 +59,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         median_ms(solve_times)
     );
 
-    let mut off = format!("OFF\n{} {} 0\n", mesh.n_vertices(), mesh.n_faces());
-    off += &vectors(mesh.positions());
-    for [a, b, c] in mesh.triangles() {
-        writeln!(off, "3 {a} {b} {c}")?;
-    }
-    std::fs::write(dir.join("mesh.off"), off)?;
-    let flags: String = roi.iter().map(|&r| if r { "1\n" } else { "0\n" }).collect();
-    std::fs::write(dir.join("roi.txt"), flags)?;
+    write_mesh_and_roi(&dir, &mesh, &roi)?;
     let handle_lines = handles.iter().fold(String::new(), |mut s, h| {
         let [v0, v1, v2] = h.vertices().map(|v| v.0);
         let [w0, w1, w2] = h.weights();

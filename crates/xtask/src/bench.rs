@@ -42,6 +42,11 @@ pub fn bench_command(workspace: &Workspace) -> anyhow::Result<()> {
     })?;
     summary += "\n## Laplacian mesh optimization against libigl (same normal equations)\n\n";
     summary += &libigl;
+    let libigl = steps.step("libigl comparison, feature", || {
+        libigl_comparison(workspace, "feature_export", "libigl_feature.py")
+    })?;
+    summary += "\n## Feature sketching's region system against libigl\n\n";
+    summary += &libigl;
 
     let web = steps.step("build-web --release", || {
         build::build_web(workspace, WebProfile::Release)
@@ -91,8 +96,9 @@ const LIBIGL_PACKAGES: &[&str] = &["libigl==2.6.3", "numpy<3", "scipy<2"];
 /// libigl's `min_quad_with_fixed` on the same problem (`benches/<script>`, which fails when
 /// the solutions differ by more than 1e-6 of the diagonal): both programs' reports, as
 /// markdown lines. The problems: the linear exact-handle Laplacian edit (`deform_export`,
-/// `libigl_compare.py`) and the Laplacian mesh optimization (`optimize_export`,
-/// `libigl_optimize.py`).
+/// `libigl_compare.py`), the Laplacian mesh optimization (`optimize_export`,
+/// `libigl_optimize.py`) and feature sketching's region system (`feature_export`,
+/// `libigl_feature.py`).
 fn libigl_comparison(workspace: &Workspace, example: &str, script: &str) -> anyhow::Result<String> {
     let venv = workspace.target_dir.join("libigl-venv");
     let python = venv.join("bin/python");

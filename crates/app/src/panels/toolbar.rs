@@ -103,11 +103,11 @@ pub fn toolbar_ui(
         button(
             ui,
             true,
-            "Reset view",
+            "Reset",
             "Back to the front view (R)",
             Action::ResetView,
         );
-        ui.toggle_value(&mut options.wireframe, "Wireframe")
+        ui.toggle_value(&mut options.wireframe, "Edges")
             .on_hover_text("Show mesh edges (W)");
         ui.toggle_value(&mut options.grid, "Grid")
             .on_hover_text("Show the ground grid (G)");

@@ -335,6 +335,62 @@ try {
     console.error(`WARNING: ${scanPath} is missing (the shared test data); the optimize timing is skipped`);
   }
 
+  // Feature sketching on the same scan: a lasso around most of the bunny as seen (its front
+  // half is the region), a sketch across it, then a pen drag that raises a bump. The first
+  // drag step places and embeds the sketch and factors the region; every later one re-weighs
+  // the kept solutions. Frame times come from the page's animation frames while dragging.
+  let feature = null;
+  if (scanPath && existsSync(scanPath)) {
+    await page.evaluate((data) => {
+      window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
+      window.sketchmesh.loadGlb(new Uint8Array(data), 'bunny.glb');
+      window.sketchmesh.timings();
+    }, [...readFileSync(scanPath)]);
+    await sleep(500);
+    await page.keyboard.press('f');
+    await page.keyboard.press('d');
+    await sleep(300);
+    const c = await page.evaluate(() => {
+      const r = document.querySelector('canvas').getBoundingClientRect();
+      return { x: r.left + r.width / 2, y: r.top + (r.height + 80) / 2 + 20 };
+    });
+    await page.getByText('Bump', { exact: true }).click();
+    const loop = Array.from({ length: 61 }, (_, i) => {
+      const a = (2 * Math.PI * i) / 60;
+      return { x: c.x + 260 * Math.cos(a), y: c.y + 220 * Math.sin(a), force: 0.5 };
+    });
+    await penStroke(cdp, loop, 8);
+    await penStroke(cdp, Array.from({ length: 31 }, (_, i) => ({ x: c.x - 90 + 6 * i, y: c.y, force: 0.5 })), 8);
+    await sleep(200);
+    const pen = { pointerType: 'pen', button: 'left', force: 0.5 };
+    const grab = { x: c.x, y: c.y + 150 };
+    await page.evaluate(() => { window.__bench.frames = []; window.__bench.recording = true; });
+    await cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', ...grab, buttons: 1, clickCount: 1, ...pen });
+    for (let i = 1; i <= 40; i++) {
+      await sleep(16);
+      await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', x: grab.x, y: grab.y - 1.5 * i, buttons: 1, ...pen });
+    }
+    await sleep(100);
+    const frames = await page.evaluate(() => { window.__bench.recording = false; return window.__bench.frames; });
+    await screenshot(page, join(OUT_DIR, 'bench-feature-drag.png'));
+    await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', x: grab.x, y: grab.y - 60, buttons: 0, clickCount: 1, ...pen });
+    await page.waitForFunction(() => JSON.parse(window.sketchmesh.session()).ops.at(-1)?.op === 'sketch_feature', null, { timeout: 30_000, polling: 50 })
+      .catch(() => {});
+    const t = await api(page, 'timings');
+    const drag = frames.slice(1).map((f, i) => f - frames[i]);
+    // The first frames of the drag carry the setup; the rest are the drag proper.
+    const later = drag.slice(3).sort((a, b) => a - b);
+    const steps = [...(t.sketch_feature?.frame_ms ?? [])].sort((a, b) => a - b);
+    feature = {
+      committed: JSON.parse(await api(page, 'session')).ops.at(-1)?.op === 'sketch_feature',
+      first_ms: round(t.sketch_feature?.begin_ms.at(-1) ?? null),
+      step_ms: { n: steps.length, p50: round(steps[Math.floor(steps.length / 2)] ?? null), max: round(steps.at(-1) ?? null) },
+      drag_frame_ms: { n: later.length, p50: round(later[Math.floor(later.length / 2)] ?? null), max: round(later.at(-1) ?? null) },
+      apply_ms: round(t.sketch_feature?.finish_ms.at(-1) ?? null),
+    };
+    console.error(`feature: ${JSON.stringify(feature)}`);
+  }
+
   const deltas = timing.frames.slice(1).map((t, i) => t - timing.frames[i]);
   const sorted = [...deltas].sort((a, b) => a - b);
   const quantile = (q) => (sorted.length ? sorted[Math.min(sorted.length - 1, Math.floor(q * sorted.length))] : null);
@@ -356,6 +412,7 @@ try {
     pulls,
     oversketch,
     optimize,
+    feature,
   };
   console.log(JSON.stringify(report));
 } finally {

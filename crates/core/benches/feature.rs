@@ -13,8 +13,6 @@ use sketchmesh_core::feature::{FeatureEdit, FeatureKind};
 
 #[path = "common/feature.rs"]
 mod feature;
-#[path = "common/oversketch.rs"]
-mod oversketch;
 
 fn bench_feature(c: &mut Criterion) {
     let mesh = feature::sphere();

@@ -16,9 +16,12 @@ use sketchmesh_core::deform::{EditParams, HandleFit, LaplacianEdit, Rotations};
 
 #[path = "../benches/common/export.rs"]
 mod export;
+#[path = "../benches/common/off.rs"]
+mod off;
 #[path = "../benches/common/oversketch.rs"]
 mod oversketch;
-use export::{RUNS, median_ms, vectors, write_mesh_and_roi};
+use export::{RUNS, median_ms, vectors};
+use off::write_mesh_and_roi;
 use oversketch::{oversketch_edit, sphere, targets};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

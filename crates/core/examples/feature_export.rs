@@ -23,9 +23,10 @@ use sketchmesh_core::feature::{FeatureEdit, FeatureKind};
 mod export;
 #[path = "../benches/common/feature.rs"]
 mod feature;
-#[path = "../benches/common/oversketch.rs"]
-mod oversketch;
-use export::{RUNS, median_ms, vectors, write_mesh_and_roi};
+#[path = "../benches/common/off.rs"]
+mod off;
+use export::{RUNS, median_ms, vectors};
+use off::write_mesh_and_roi;
 
 /// The bump's factor.
 const AMOUNT: f64 = 3.0;

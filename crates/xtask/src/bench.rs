@@ -374,12 +374,33 @@ fn page_table(page: &Value, wasm_gzip_size: u64) -> String {
             ms("/optimize/apply_ms"),
         ),
     ];
+    let feature_rows = [
+        (
+            "feature (bump on the bunny), first drag step (place, embed, factor, solve)",
+            ms("/feature/first_ms"),
+        ),
+        (
+            "feature, drag step (solutions re-weighed), median",
+            ms("/feature/step_ms/p50"),
+        ),
+        ("feature, drag step, max", ms("/feature/step_ms/max")),
+        (
+            "feature, frame while dragging, median",
+            ms("/feature/drag_frame_ms/p50"),
+        ),
+        (
+            "feature, frame while dragging, max",
+            ms("/feature/drag_frame_ms/max"),
+        ),
+    ]
+    .map(|(name, value)| (name.to_owned(), value));
     let rows = rows
         .into_iter()
         .map(|(name, value)| (name.to_owned(), value))
         .chain(pull_rows)
         .chain(oversketch_rows)
-        .chain(optimize_rows);
+        .chain(optimize_rows)
+        .chain(feature_rows);
     for (name, value) in rows {
         // Writing to a String cannot fail.
         let _ = writeln!(table, "| {name} | {value} |");

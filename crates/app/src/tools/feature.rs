@@ -96,15 +96,15 @@ impl FeatureTool {
         if is_tap(&input) {
             return ToolOutput::None;
         }
-        if model_under(doc, &input).is_none() {
-            let sentence = "Start the sketch on a model: the feature goes where you draw on it.";
-            return ToolOutput::Refused(String::from(sentence));
-        }
         let points = input.points();
         let region = self.region.as_ref().filter(|(c, _)| *c == input.camera);
         if region.is_none() && is_closed_loop(&points, CLOSE_TOLERANCE_PX) {
             self.region = Some((input.camera, points));
             return ToolOutput::None;
+        }
+        if model_under(doc, &input).is_none() {
+            let sentence = "Start the sketch on a model: the feature goes where you draw on it.";
+            return ToolOutput::Refused(String::from(sentence));
         }
         let sketch = SketchFeatureInput {
             viewport: input.viewport,

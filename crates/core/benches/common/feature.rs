@@ -1,19 +1,25 @@
 //! The feature sketches shared by `benches/feature.rs` and `examples/feature_export.rs`: on a
-//! 40,962-vertex icosphere seen from the front, a sketch across its middle, alone (a ridge in
+//! 40,962-vertex icosphere seen from the front (orthographic), a sketch across its middle, alone (a ridge in
 //! a 40 px band) and inside a lasso around the whole front half (about 20k vertices, the
 //! issue's region size).
 
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::feature::Sketch;
+use sketchmesh_core::mesh::{Mesh, primitives};
 
-pub use crate::oversketch::sphere;
+/// The icosphere the sketches are drawn on (6 subdivisions, 40,962 vertices).
+pub fn sphere() -> Mesh {
+    primitives::icosphere(1.0, 6)
+}
 
 const VIEWPORT: DVec2 = DVec2::new(1000.0, 1000.0);
 
+/// An orthographic view, so that the lasso around the outline holds the whole front half.
 fn camera() -> Camera {
     Camera {
         eye: DVec3::new(0.0, 0.0, 3.0),
+        ortho_height: Some(2.4),
         ..Camera::default()
     }
 }

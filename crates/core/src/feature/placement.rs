@@ -1,6 +1,7 @@
 //! Where a sketch lands: the vertices that may move and the edge path under the sketch
 //! (§4.2, §4.4.1 steps 1–2).
 
+use std::cell::Cell;
 use std::collections::VecDeque;
 
 use glam::{DVec2, DVec3};
@@ -92,7 +93,8 @@ pub(super) fn place(
     if start == end {
         return Err(FeatureError::TooShort);
     }
-    let (region, distance) = grow_region(mesh, normals, sketch, &points, &hits, screen);
+    let distance = SketchDistance::new(mesh.n_vertices(), &points, &screen);
+    let region = grow_region(mesh, normals, sketch, &hits, &screen, &distance);
     if region.iter().filter(|&&r| r).count() < 3 {
         return Err(FeatureError::RegionMissesSketch);
     }
@@ -101,7 +103,7 @@ pub(super) fn place(
             (Some(sa), Some(sb)) => sa.distance(sb),
             _ => f64::INFINITY,
         };
-        distance[a.index()] + distance[b.index()] + LENGTH_COST * length
+        distance.of(a) + distance.of(b) + LENGTH_COST * length
     };
     let path = mesh
         .shortest_path(start, end, |v| region[v.index()], cost)
@@ -158,35 +160,31 @@ fn hit_vertices(
 
 /// The region that may move, grown over the mesh's edges from the faces under the sketch
 /// through the vertices that face the camera and lie inside the lasso (or within
-/// [`BAND_PX`] of the sketch), and each reached vertex's distance (px) to the sketch
-/// (infinite for the others). Growing over edges, not testing every vertex, keeps a part
+/// [`BAND_PX`] of the sketch). Growing over edges, not testing every vertex, keeps a part
 /// behind the sketch (the far side of a thin ear) out, and costs what the region holds.
 fn grow_region(
     mesh: &Mesh,
     normals: &[DVec3],
     sketch: &Sketch,
-    points: &[DVec2],
     hits: &[[VertexId; 3]],
-    screen: impl Fn(VertexId) -> Option<DVec2>,
-) -> (Vec<bool>, Vec<f64>) {
+    screen: &impl Fn(VertexId) -> Option<DVec2>,
+    distance: &SketchDistance<'_>,
+) -> Vec<bool> {
     let mut region = vec![false; mesh.n_vertices()];
-    let mut distance = vec![f64::INFINITY; mesh.n_vertices()];
     let mut queue: VecDeque<VertexId> = VecDeque::new();
     let mut visited = vec![false; mesh.n_vertices()];
-    let admits = |v: VertexId, s: DVec2, d: f64| {
-        let faces_the_eye =
-            normals[v.index()].dot(toward_eye(&sketch.camera, mesh.position(v))) > 0.0;
-        let inside = match &sketch.region {
-            Some(lasso) => contains(lasso, s),
-            None => d <= BAND_PX,
-        };
-        faces_the_eye && inside
+    let admits = |v: VertexId, s: DVec2| {
+        let p = mesh.position(v);
+        let faces_the_eye = normals[v.index()].dot(toward_eye(&sketch.camera, p)) > 0.0;
+        faces_the_eye
+            && match &sketch.region {
+                Some(lasso) => contains(lasso, s),
+                None => distance.of(v) <= BAND_PX,
+            }
     };
+    // The vertices under the sketch are in, whatever their normals say.
     for &v in hits.iter().flatten() {
         if !std::mem::replace(&mut visited[v.index()], true) {
-            // The vertices under the sketch are in, whatever their normals say.
-            distance[v.index()] =
-                screen(v).map_or(f64::INFINITY, |s| distance_to_polyline(s, points));
             region[v.index()] = true;
             queue.push_back(v);
         }
@@ -196,16 +194,43 @@ fn grow_region(
             if std::mem::replace(&mut visited[w.index()], true) {
                 continue;
             }
-            let Some(s) = screen(w) else { continue };
-            let d = distance_to_polyline(s, points);
-            if admits(w, s, d) {
-                distance[w.index()] = d;
+            if screen(w).is_some_and(|s| admits(w, s)) {
                 region[w.index()] = true;
                 queue.push_back(w);
             }
         }
     }
-    (region, distance)
+    region
+}
+
+/// Each vertex's distance (px) on screen to the sketch, computed when first asked for: the
+/// band needs it for the vertices it tries, the path for those its search reaches, and a
+/// lasso's region for none.
+struct SketchDistance<'a> {
+    known: Vec<Cell<f64>>,
+    points: &'a [DVec2],
+    screen: &'a dyn Fn(VertexId) -> Option<DVec2>,
+}
+
+impl<'a> SketchDistance<'a> {
+    fn new(n: usize, points: &'a [DVec2], screen: &'a dyn Fn(VertexId) -> Option<DVec2>) -> Self {
+        SketchDistance {
+            known: vec![Cell::new(f64::NAN); n],
+            points,
+            screen,
+        }
+    }
+
+    /// The distance of `v` (infinite behind the eye).
+    fn of(&self, v: VertexId) -> f64 {
+        let slot = &self.known[v.index()];
+        if slot.get().is_nan() {
+            let d =
+                (self.screen)(v).map_or(f64::INFINITY, |s| distance_to_polyline(s, self.points));
+            slot.set(d);
+        }
+        slot.get()
+    }
 }
 
 /// The direction from `p` toward the viewer: to the eye, or against the view direction of

@@ -354,7 +354,8 @@ try {
       const r = document.querySelector('canvas').getBoundingClientRect();
       return { x: r.left + r.width / 2, y: r.top + (r.height + 80) / 2 + 20 };
     });
-    await page.getByText('Bump', { exact: true }).click();
+    // The toolbar's second row, drawn by egui on the canvas: the Bump button.
+    await page.mouse.click(96, 98);
     const loop = Array.from({ length: 61 }, (_, i) => {
       const a = (2 * Math.PI * i) / 60;
       return { x: c.x + 260 * Math.cos(a), y: c.y + 220 * Math.sin(a), force: 0.5 };

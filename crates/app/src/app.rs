@@ -55,9 +55,25 @@ pub struct Shared {
     pub autosave: autosave::Schedule,
     /// A sentence for the user from outside the app (the page's restore), shown next frame.
     pub notice: Option<String>,
+    /// Editors that replaced the first one (see [`autosave::Revision`]).
+    opened: u64,
 }
 
 impl Shared {
+    /// Replaces the document and its history by `editor`'s (a session opened or restored).
+    pub fn open(&mut self, editor: Editor) {
+        self.editor = editor;
+        self.opened += 1;
+    }
+
+    /// Which document is shown: changes with every op, and when another editor comes in.
+    pub fn revision(&self) -> autosave::Revision {
+        autosave::Revision {
+            opened: self.opened,
+            edits: self.editor.revision(),
+        }
+    }
+
     /// The autosave record of what is shown now.
     pub fn autosave_record(&self) -> autosave::Record {
         autosave::Record::new(&self.editor, self.camera, self.mode)
@@ -78,7 +94,7 @@ pub struct SketchApp {
     geometry: Arc<SceneGeometry>,
     /// What `geometry` was built from: the editor's revision, and the edit's number and
     /// revision when it shows another document than the editor's.
-    geometry_source: (u64, Option<(u64, u64)>),
+    geometry_source: (autosave::Revision, Option<(u64, u64)>),
     /// The edit generation whose moved model `geometry` shows, if it shows one (it is rebuilt
     /// when the edit stops moving it).
     shown_motion: Option<u64>,
@@ -130,6 +146,7 @@ impl SketchApp {
                 mode: Mode::default(),
                 autosave: autosave::Schedule::default(),
                 notice: None,
+                opened: 0,
             })),
             router: InputRouter::default(),
             tools: ToolSet::default(),
@@ -138,7 +155,14 @@ impl SketchApp {
             egui_pointer: Default::default(),
             web_samples: Default::default(),
             geometry: Arc::new(SceneGeometry::default()),
-            geometry_source: (u64::MAX, None),
+            // Nothing built yet: no document has this revision.
+            geometry_source: (
+                autosave::Revision {
+                    opened: u64::MAX,
+                    edits: u64::MAX,
+                },
+                None,
+            ),
             shown_motion: None,
             moved_normals: Vec::new(),
             edit: None,
@@ -365,7 +389,7 @@ impl SketchApp {
     fn autosave(&mut self, ctx: &egui::Context, now: f64) {
         let record = {
             let mut shared = self.shared.borrow_mut();
-            let revision = shared.editor.revision();
+            let revision = shared.revision();
             if !shared.autosave.due(revision, now) {
                 if shared.autosave.is_pending(revision) {
                     ctx.request_repaint_after(std::time::Duration::from_secs_f64(
@@ -452,7 +476,7 @@ impl SketchApp {
                 return self.set_status(sentence, now);
             }
         }
-        self.shared.borrow_mut().editor = editor;
+        self.shared.borrow_mut().open(editor);
         self.frame_after_rebuild = true;
         let kept = match had_work {
             true => " The previous document was kept in this browser's storage.",
@@ -678,7 +702,7 @@ impl SketchApp {
     fn update_geometry(&mut self) {
         let edit = self.edit.as_ref();
         let source = (
-            self.shared.borrow().editor.revision(),
+            self.shared.borrow().revision(),
             edit.map(Edit::revision)
                 .filter(|&revision| revision != 0)
                 .map(|revision| (self.edits_begun, revision)),

@@ -47,13 +47,25 @@ impl Record {
     }
 }
 
+/// Which document the app shows: how many times its editor was replaced (a session opened,
+/// a restore, the page's `replay`), and that editor's own revision. The editor's revision
+/// alone repeats when another editor replaces it (both at their third op, say), and then
+/// neither the view nor the autosave would notice the change.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Revision {
+    /// Editors that replaced the first one.
+    pub opened: u64,
+    /// The editor's revision.
+    pub edits: u64,
+}
+
 /// When to autosave: not before the page has offered its last record (so that an empty
 /// start does not overwrite it), then whenever the document's revision moved and the last
 /// write is [`INTERVAL`] old.
 #[derive(Debug, Default)]
 pub struct Schedule {
     /// The revision last written (or restored); `None` until the page offered its record.
-    saved: Option<u64>,
+    saved: Option<Revision>,
     /// When the last write happened.
     saved_at: f64,
 }
@@ -61,13 +73,13 @@ pub struct Schedule {
 impl Schedule {
     /// The page has offered its record (restored or not): from now on `revision` is what
     /// is saved.
-    pub fn start(&mut self, revision: u64) {
+    pub fn start(&mut self, revision: Revision) {
         self.saved = Some(revision);
     }
 
     /// Whether to write now, at time `now` in seconds, the document at `revision`; a write
     /// is then assumed to happen.
-    pub fn due(&mut self, revision: u64, now: f64) -> bool {
+    pub fn due(&mut self, revision: Revision, now: f64) -> bool {
         let changed = self.saved.is_some_and(|saved| saved != revision);
         let due = changed && now - self.saved_at >= INTERVAL;
         if due {
@@ -77,12 +89,12 @@ impl Schedule {
     }
 
     /// Whether a change waits for its write (the app keeps frames coming until it is due).
-    pub fn is_pending(&self, revision: u64) -> bool {
+    pub fn is_pending(&self, revision: Revision) -> bool {
         self.saved.is_some_and(|saved| saved != revision)
     }
 
     /// The document at `revision` was written at `now` (also by a flush when the page hides).
-    pub fn mark_saved(&mut self, revision: u64, now: f64) {
+    pub fn mark_saved(&mut self, revision: Revision, now: f64) {
         if self.saved.is_some() {
             self.saved = Some(revision);
             self.saved_at = now;
@@ -101,20 +113,28 @@ mod tests {
 
     #[test]
     fn nothing_is_written_before_the_page_offered_its_record_then_changes_are() {
+        let at = |edits| Revision { opened: 0, edits };
         let mut schedule = Schedule::default();
         assert!(
-            !schedule.due(3, 10.0),
+            !schedule.due(at(3), 10.0),
             "an empty start must not overwrite the record"
         );
-        schedule.start(3);
-        assert!(!schedule.due(3, 10.0), "unchanged");
-        assert!(schedule.is_pending(4));
-        assert!(schedule.due(4, 10.0));
-        assert!(!schedule.is_pending(4));
+        schedule.start(at(3));
+        assert!(!schedule.due(at(3), 10.0), "unchanged");
+        assert!(schedule.is_pending(at(4)));
+        assert!(schedule.due(at(4), 10.0));
+        assert!(!schedule.is_pending(at(4)));
         // A change right after a write waits for the interval, then is written.
-        assert!(!schedule.due(5, 10.0 + INTERVAL / 2.0));
-        assert!(schedule.is_pending(5));
-        assert!(schedule.due(5, 10.0 + INTERVAL));
+        assert!(!schedule.due(at(5), 10.0 + INTERVAL / 2.0));
+        assert!(schedule.is_pending(at(5)));
+        assert!(schedule.due(at(5), 10.0 + INTERVAL));
+        // Another editor at the same revision is another document.
+        let opened = Revision {
+            opened: 1,
+            edits: 5,
+        };
+        assert!(schedule.is_pending(opened));
+        assert!(schedule.due(opened, 10.0 + 2.0 * INTERVAL));
     }
 
     #[test]

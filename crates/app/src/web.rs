@@ -95,7 +95,7 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
         Closure::<dyn Fn(String) -> Result<(), JsValue>>::new(move |session: String| {
             let editor = sketchmesh_core::document::Editor::replay_json(&session)
                 .map_err(|e| js_error(&e.to_string()))?;
-            s.borrow_mut().editor = editor;
+            s.borrow_mut().open(editor);
             c.request_repaint();
             Ok(())
         })
@@ -151,7 +151,7 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
         "flushAutosave",
         Closure::<dyn Fn() -> Result<(), JsValue>>::new(move || {
             let mut shared = s.borrow_mut();
-            let revision = shared.editor.revision();
+            let revision = shared.revision();
             if !shared.autosave.is_pending(revision) {
                 return Ok(());
             }
@@ -187,7 +187,7 @@ fn restore(shared: &mut Shared, text: Option<&str>) -> Result<(), String> {
             .and_then(|record| Ok((record.replay()?, record)));
         match restored {
             Ok((editor, record)) => {
-                shared.editor = editor;
+                shared.open(editor);
                 shared.camera = record.camera;
                 shared.mode = record.mode;
             }
@@ -201,7 +201,7 @@ fn restore(shared: &mut Shared, text: Option<&str>) -> Result<(), String> {
             }
         }
     }
-    let revision = shared.editor.revision();
+    let revision = shared.revision();
     shared.autosave.start(revision);
     Ok(())
 }

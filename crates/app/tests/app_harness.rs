@@ -313,3 +313,35 @@ fn a_ridge_sketched_and_dragged_in_the_app_is_its_session_replayed() {
         "the feature committed in the app differs from apply"
     );
 }
+
+/// Another editor at the same revision (a session opened, a restore, the page's `replay`) is
+/// another document: the view shows it. The editor's revision alone did not tell them apart,
+/// and the view kept showing the old one.
+#[test]
+fn an_opened_session_at_the_same_revision_is_shown() {
+    let mut h = harness();
+    h.run();
+    drag(
+        &mut h,
+        pos2(250.0, 300.0),
+        pos2(650.0, 320.0),
+        PointerButton::Primary,
+    );
+    let first = h.render().expect("render");
+    let session = h.state().shared().borrow().editor.session_json();
+    let moved = session.replace("[250", "[150").replace("[650", "[750");
+    assert_ne!(moved, session, "the session names the stroke's ends");
+    let other = sketchmesh_core::document::Editor::replay_json(&moved).expect("replays");
+    assert_eq!(
+        other.revision(),
+        h.state().shared().borrow().editor.revision()
+    );
+    h.state().shared().borrow_mut().open(other);
+    h.run();
+    let opened = h.render().expect("render");
+    let changed = changed_pixels(&first, &opened);
+    assert!(
+        changed > 500,
+        "the opened document is not shown ({changed} pixels changed)"
+    );
+}

@@ -336,6 +336,37 @@ test('deviceScaleFactor 2: the canvas backing store is twice the CSS size and re
   }
 });
 
+test('tablet (820x1180, DPR 2, touch): a finger-drawn outline creates a model; a two-finger tap undoes it, a three-finger tap redoes it', async () => {
+  const tabletBrowser = await launch(gpu, { deviceScaleFactor: 2 });
+  try {
+    const tablet = await openApp(tabletBrowser, url, gpu, { width: 820, height: 1180, deviceScaleFactor: 2 });
+    const c = { x: 410, y: 640 };
+    const outline = Array.from({ length: 61 }, (_, i) => {
+      const a = (2 * Math.PI * i) / 60;
+      return { x: c.x + 170 * Math.cos(a), y: c.y + 120 * Math.sin(a) };
+    });
+    await touchGesture(tablet.cdp, [outline], 16);
+    const created = await until(() => api(tablet.page, 'stats'), (s) => s.models === 1, 15_000);
+    assert.equal(created.models, 1, 'the finger-drawn outline made a shape');
+    await frames(tablet.page, 3);
+    await screenshot(tablet.page, out('tablet-created.png'), { scale: 'device' });
+    const still = (p) => [p, p];
+    await touchGesture(tablet.cdp, [still({ x: c.x - 60, y: c.y }), still({ x: c.x + 60, y: c.y })], 30);
+    const undone = await until(() => api(tablet.page, 'stats'), (s) => s.models === 0);
+    assert.equal(undone.models, 0, 'a two-finger tap undoes the creation');
+    await touchGesture(tablet.cdp, [still({ x: c.x - 80, y: c.y }), still({ x: c.x, y: c.y - 40 }), still({ x: c.x + 80, y: c.y })], 30);
+    const redone = await until(() => api(tablet.page, 'stats'), (s) => s.models === 1);
+    assert.deepEqual(redone, created, 'a three-finger tap redoes it');
+    // A slow two-finger press is no tap: nothing changes.
+    await touchGesture(tablet.cdp, [line({ x: c.x - 60, y: c.y }, { x: c.x - 60, y: c.y }, 12), line({ x: c.x + 60, y: c.y }, { x: c.x + 60, y: c.y }, 12)], 40);
+    await frames(tablet.page, 3);
+    assert.deepEqual(await api(tablet.page, 'stats'), created, 'a slow two-finger press changes nothing');
+    assert.deepEqual(tablet.errors, [], 'console errors on the tablet page');
+  } finally {
+    await tabletBrowser.close();
+  }
+});
+
 test('a closed pen outline becomes a lit 3D shape with its blue curve; undo removes it; export validates', async () => {
   const fresh = await openApp(browser, url, gpu);
   try {

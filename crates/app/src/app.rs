@@ -25,6 +25,7 @@ use crate::clock;
 use crate::files::{self, ImportQueue};
 use crate::input::PointerSample;
 use crate::input::router::{InputRouter, Routed};
+use crate::input::taps::TapCommand;
 use crate::panels;
 use crate::render::geometry::pressure_width;
 use crate::render::{SceneCallback, SceneGeometry, SceneRenderer, Uniforms, ViewOptions};
@@ -626,6 +627,8 @@ impl SketchApp {
                         .borrow_mut()
                         .camera
                         .apply(*action, viewport.height().into()),
+                    Routed::Tap(TapCommand::Undo) => self.undo(now),
+                    Routed::Tap(TapCommand::Redo) => self.begin(Op::Redo, false, now),
                     Routed::Tool(event) => {
                         // A new gesture acts on the document with the edit in progress
                         // committed (a shape still refining is finished first).

@@ -9,6 +9,7 @@
 pub mod egui_pointer;
 pub mod gestures;
 pub mod router;
+pub mod taps;
 #[cfg(target_arch = "wasm32")]
 pub mod web_pointer;
 

@@ -16,6 +16,7 @@ use std::collections::BTreeMap;
 use egui::{Pos2, Vec2};
 
 use super::gestures::{NavAction, TwoFingerDrag, TwoFingerGesture};
+use super::taps::{TapCommand, TapDetector};
 use super::{Phase, PointerKind, PointerSample, buttons};
 
 /// An input for the active tool.
@@ -38,6 +39,8 @@ pub enum Routed {
     Tool(ToolEvent),
     /// To the camera.
     Nav(NavAction),
+    /// A multi-finger tap: undo or redo.
+    Tap(TapCommand),
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -58,6 +61,7 @@ pub struct InputRouter {
     two_finger: Option<TwoFingerGesture>,
     /// Set after a two-finger gesture until all fingers lift.
     touches_spent: bool,
+    taps: TapDetector,
 }
 
 impl InputRouter {
@@ -111,6 +115,12 @@ impl InputRouter {
     }
 
     fn route_touch(&mut self, s: &PointerSample, starts_in_viewport: bool, out: &mut Vec<Routed>) {
+        let starts_a_sequence = s.phase == Phase::Down && self.touches.is_empty();
+        if (starts_in_viewport || !starts_a_sequence)
+            && let Some(command) = self.taps.follow(s)
+        {
+            out.push(Routed::Tap(command));
+        }
         match s.phase {
             Phase::Down => {
                 if !starts_in_viewport && self.touches.is_empty() {
@@ -279,6 +289,29 @@ mod tests {
         assert_eq!(
             out,
             vec![Routed::Nav(NavAction::Orbit(egui::vec2(50.0, 20.0)))]
+        );
+    }
+
+    #[test]
+    fn a_two_finger_tap_undoes_and_leaves_no_stroke() {
+        let mut router = InputRouter::default();
+        let t = PointerKind::Touch;
+        let out = route_all(
+            &mut router,
+            &[
+                sample(1, t, Phase::Down, 100.0, 100.0),
+                sample(2, t, Phase::Down, 200.0, 100.0),
+                sample(2, t, Phase::Up, 200.0, 100.0),
+                sample(1, t, Phase::Up, 100.0, 100.0),
+            ],
+        );
+        assert_eq!(
+            out,
+            vec![
+                Routed::Tool(ToolEvent::Begin(sample(1, t, Phase::Down, 100.0, 100.0))),
+                Routed::Tool(ToolEvent::Cancel),
+                Routed::Tap(TapCommand::Undo),
+            ]
         );
     }
 

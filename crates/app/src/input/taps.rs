@@ -1,0 +1,163 @@
+//! Multi-finger taps, the shortcuts of tablet drawing apps (Procreate, Nomad, Concepts): two
+//! fingers tapped together undo, three redo.
+//!
+//! A tap is a touch sequence, from the first finger down to the last one up, that lasts at
+//! most [`TAP_SECONDS`] and in which no finger moves more than [`TAP_TRAVEL`] points from
+//! where it went down; the most fingers down at once say which tap it was. The fingers
+//! also start a two-finger gesture (navigation) meanwhile, but one that moved less than the
+//! gestures' thresholds did nothing, and the stroke the first finger began is cancelled
+//! when the second lands, so a tap leaves no trace but its command.
+
+use std::collections::BTreeMap;
+
+use egui::Pos2;
+
+use super::{Phase, PointerSample};
+
+/// Longest tap, first finger down to last finger up, in seconds.
+pub const TAP_SECONDS: f64 = 0.25;
+/// Farthest a finger of a tap may move, in points.
+pub const TAP_TRAVEL: f32 = 10.0;
+
+/// What a multi-finger tap asks for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TapCommand {
+    /// Two fingers: undo.
+    Undo,
+    /// Three fingers: redo.
+    Redo,
+}
+
+/// The touch sequence in progress, if any.
+#[derive(Debug, Default)]
+pub struct TapDetector {
+    /// Where each finger down went down.
+    down: BTreeMap<i64, Pos2>,
+    /// When the sequence's first finger went down.
+    started: f64,
+    /// The most fingers down at once.
+    most: usize,
+    /// Whether the sequence is still a tap.
+    is_tap: bool,
+}
+
+impl TapDetector {
+    /// Follows one touch sample; returns the command when it ends a tap.
+    pub fn follow(&mut self, s: &PointerSample) -> Option<TapCommand> {
+        match s.phase {
+            Phase::Down => {
+                if self.down.is_empty() {
+                    *self = TapDetector {
+                        started: s.time,
+                        is_tap: true,
+                        ..TapDetector::default()
+                    };
+                }
+                self.down.insert(s.id, s.pos_in_screen);
+                self.most = self.most.max(self.down.len());
+                None
+            }
+            Phase::Move => {
+                let moved = self
+                    .down
+                    .get(&s.id)
+                    .is_some_and(|start| start.distance(s.pos_in_screen) > TAP_TRAVEL);
+                if moved {
+                    self.is_tap = false;
+                }
+                None
+            }
+            Phase::Up | Phase::Cancel => {
+                self.down.remove(&s.id)?;
+                if s.phase == Phase::Cancel || s.time - self.started > TAP_SECONDS {
+                    self.is_tap = false;
+                }
+                if !self.down.is_empty() || !std::mem::take(&mut self.is_tap) {
+                    return None;
+                }
+                match self.most {
+                    2 => Some(TapCommand::Undo),
+                    3 => Some(TapCommand::Redo),
+                    _ => None,
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::input::PointerKind;
+
+    fn touch(id: i64, phase: Phase, x: f32, time: f64) -> PointerSample {
+        PointerSample {
+            id,
+            phase,
+            pos_in_screen: egui::pos2(x, 100.0),
+            pressure: 0.5,
+            kind: PointerKind::Touch,
+            buttons: 0,
+            time,
+        }
+    }
+
+    fn run(samples: &[PointerSample]) -> Vec<TapCommand> {
+        let mut taps = TapDetector::default();
+        samples.iter().filter_map(|s| taps.follow(s)).collect()
+    }
+
+    #[test]
+    fn two_fingers_undo_and_three_redo() {
+        let two = [
+            touch(1, Phase::Down, 100.0, 0.0),
+            touch(2, Phase::Down, 200.0, 0.02),
+            touch(1, Phase::Move, 103.0, 0.05),
+            touch(2, Phase::Up, 200.0, 0.12),
+            touch(1, Phase::Up, 103.0, 0.14),
+        ];
+        assert_eq!(run(&two), [TapCommand::Undo]);
+        let three = [
+            touch(1, Phase::Down, 100.0, 0.0),
+            touch(2, Phase::Down, 200.0, 0.01),
+            touch(3, Phase::Down, 300.0, 0.02),
+            touch(1, Phase::Up, 100.0, 0.1),
+            touch(2, Phase::Up, 200.0, 0.1),
+            touch(3, Phase::Up, 300.0, 0.11),
+        ];
+        assert_eq!(run(&three), [TapCommand::Redo]);
+    }
+
+    #[test]
+    fn slow_moving_or_single_touches_are_not_taps() {
+        let slow = [
+            touch(1, Phase::Down, 100.0, 0.0),
+            touch(2, Phase::Down, 200.0, 0.02),
+            touch(2, Phase::Up, 200.0, 0.3),
+            touch(1, Phase::Up, 100.0, 0.31),
+        ];
+        assert_eq!(run(&slow), []);
+        let pinch = [
+            touch(1, Phase::Down, 100.0, 0.0),
+            touch(2, Phase::Down, 200.0, 0.02),
+            touch(2, Phase::Move, 230.0, 0.05),
+            touch(2, Phase::Up, 230.0, 0.1),
+            touch(1, Phase::Up, 100.0, 0.12),
+        ];
+        assert_eq!(run(&pinch), []);
+        let one = [
+            touch(1, Phase::Down, 100.0, 0.0),
+            touch(1, Phase::Up, 100.0, 0.05),
+        ];
+        assert_eq!(run(&one), []);
+        // A tap after a slow sequence still counts: each sequence starts afresh.
+        let mut samples = slow.to_vec();
+        samples.extend([
+            touch(3, Phase::Down, 100.0, 1.0),
+            touch(4, Phase::Down, 150.0, 1.01),
+            touch(3, Phase::Up, 100.0, 1.1),
+            touch(4, Phase::Up, 150.0, 1.1),
+        ]);
+        assert_eq!(run(&samples), [TapCommand::Undo]);
+    }
+}

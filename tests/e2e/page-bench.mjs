@@ -355,7 +355,7 @@ try {
       return { x: r.left + r.width / 2, y: r.top + (r.height + 80) / 2 + 20 };
     });
     // The toolbar's second row, drawn by egui on the canvas: the Bump button.
-    await page.mouse.click(96, 98);
+    await page.mouse.click(96, 59);
     const loop = Array.from({ length: 61 }, (_, i) => {
       const a = (2 * Math.PI * i) / 60;
       return { x: c.x + 260 * Math.cos(a), y: c.y + 220 * Math.sin(a), force: 0.5 };

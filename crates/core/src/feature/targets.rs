@@ -5,12 +5,18 @@
 //! weighs them.
 //!
 //! - **Ridge** (sharp, on the path) and **bump** (smooth, on the whole region): the factor
-//!   `a` gives `δ' = δ + (a − 1)·g` with `g = δ + w·c·n`, where `w = max(0, 1 − |δ|/c)`.
-//!   On a curved surface `g ≈ δ`, a scaled cotangent Laplacian (1 changes nothing, 0
-//!   flattens, a negative factor turns a ridge into a ravine). Where the Laplacian vanishes
-//!   (a flat part) the scaled normal takes over, as Nealen prescribes: the factor then adds
-//!   `(a − 1)·c` along the normal. `c` is [`FLAT_LAPLACIAN`] times the mean length of the
-//!   path's edges, about the Laplacian of a gentle curve at that sampling.
+//!   `a` gives `δ'_i = δ_i + (a − 1)·s·n_i`, where `s` is the mean of the Laplacians' normal
+//!   parts `δ·n` over the path (the region, for a bump) and `n_i` the vertex normal. So 1
+//!   changes nothing, 0 takes away the mean curvature there (flattens what is evenly
+//!   curved), a negative factor turns a ridge into a ravine, and above 1 scales it up. This
+//!   is Nealen's scaled Laplacian with his two fixes folded in: scaled normals where the
+//!   Laplacian vanishes, and one amount for the whole sketch (his absolute variant), which
+//!   suits a sketch along which curvature varies and keeps a scan's noise from being scaled
+//!   with it. `|s|` is at least [`FLAT_LAPLACIAN`] times the mean length of the path's edges
+//!   (the sign kept, raising on a flat part): the Laplacian of a gentle curve at that
+//!   sampling. A feature's height then grows with the band's width, not with the mesh's
+//!   resolution (a line of Laplacian `t` per vertex raises a tent about `2 t w / h` high over
+//!   a band `w` wide with edges `h` long, and `t` grows with `h`).
 //! - **Flatten**: `δ' = 0` on the region.
 //! - **Suggestive**: each Laplacian turns by the angle `θ` about the axis `r̂` of the radial
 //!   plane of its path vertex (through the path vertex, spanned by its normal and the view
@@ -27,8 +33,8 @@ use super::placement::toward_eye;
 use crate::camera::Camera;
 use crate::mesh::{Mesh, VertexId};
 
-/// The flat-part Laplacian scale `c`, per length of a path edge.
-pub const FLAT_LAPLACIAN: f64 = 0.02;
+/// The least normal Laplacian `|s|` of a ridge or bump, per length of a path edge.
+pub const FLAT_LAPLACIAN: f64 = 0.05;
 
 /// The system's rows, as the feature sees them.
 pub(super) struct Rows<'a> {
@@ -50,34 +56,28 @@ pub(super) fn bases(
     path: &[VertexId],
 ) -> Vec<Vec<DVec3>> {
     let in_region = |v: VertexId| rows.region[v.index()];
+    let each = |f: &dyn Fn(VertexId, DVec3) -> DVec3| -> Vec<DVec3> {
+        rows.rows.iter().map(|&(v, delta)| f(v, delta)).collect()
+    };
     let on_path = {
         let mut mask = vec![false; mesh.n_vertices()];
         path.iter().for_each(|v| mask[v.index()] = true);
         mask
     };
-    let c = FLAT_LAPLACIAN * mean_edge(mesh, path);
-    let raised = |v: VertexId, delta: DVec3| {
-        let w = (1.0 - delta.length() / c).max(0.0);
-        delta + w * c * rows.normals[v.index()]
-    };
-    let each = |f: &dyn Fn(VertexId, DVec3) -> DVec3| -> Vec<DVec3> {
-        rows.rows.iter().map(|&(v, delta)| f(v, delta)).collect()
+    let least = FLAT_LAPLACIAN * mean_edge(mesh, path);
+    let raised = |inside: &dyn Fn(VertexId) -> bool| {
+        let s = normal_part(rows, inside, least);
+        each(&|v, _| {
+            if inside(v) {
+                s * rows.normals[v.index()]
+            } else {
+                DVec3::ZERO
+            }
+        })
     };
     match kind {
-        FeatureKind::Ridge => vec![each(&|v, d| {
-            if on_path[v.index()] {
-                raised(v, d)
-            } else {
-                DVec3::ZERO
-            }
-        })],
-        FeatureKind::Bump => vec![each(&|v, d| {
-            if in_region(v) {
-                raised(v, d)
-            } else {
-                DVec3::ZERO
-            }
-        })],
+        FeatureKind::Ridge => vec![raised(&|v| on_path[v.index()])],
+        FeatureKind::Bump => vec![raised(&in_region)],
         FeatureKind::Flatten => vec![each(&|v, d| if in_region(v) { -d } else { DVec3::ZERO })],
         FeatureKind::Suggestive => {
             let axes = radial_axes(mesh, camera, rows.normals, path);
@@ -133,6 +133,24 @@ fn radial_axes(
             (p, axis.normalize_or_zero())
         })
         .collect()
+}
+
+/// The mean of `δ·n` over the rows `inside` takes, at least `least` in size (its sign kept;
+/// positive when it is zero).
+fn normal_part(rows: &Rows<'_>, inside: &dyn Fn(VertexId) -> bool, least: f64) -> f64 {
+    let (sum, count) = (rows.rows.iter())
+        .filter(|(v, _)| inside(*v))
+        .fold((0.0, 0usize), |(sum, count), &(v, delta)| {
+            (sum + delta.dot(rows.normals[v.index()]), count + 1)
+        });
+    let mean = sum / count.max(1) as f64;
+    if mean.abs() >= least {
+        mean
+    } else if mean < 0.0 {
+        -least
+    } else {
+        least
+    }
 }
 
 /// The mean length of the path's edges.

@@ -6,6 +6,7 @@
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::polyline::distance_to_polyline;
+use sketchmesh_core::deform::{EditParams, HandleFit, LaplacianEdit, Rotations};
 use sketchmesh_core::feature::{FeatureEdit, FeatureError, FeatureKind, Sketch};
 use sketchmesh_core::geometry::vertex_normals;
 use sketchmesh_core::mesh::{Mesh, TriSoup, VertexId, primitives};
@@ -245,10 +246,33 @@ fn turning_by_pi_equals_scaling_by_minus_one() {
         ..base
     };
     let turned = FeatureEdit::new(&mesh, &sketch, FeatureKind::Suggestive).unwrap();
-    let scaled = FeatureEdit::new(&mesh, &sketch, FeatureKind::Bump).unwrap();
-    let (a, b) = (turned.shape(180.0).unwrap(), scaled.shape(-1.0).unwrap());
-    assert_eq!((a.limited_to, b.limited_to), (None, None));
-    let worst = (a.positions.iter().zip(&b.positions))
+    let a = turned.shape(180.0).unwrap();
+    assert_eq!(a.limited_to, None);
+    // Scaling by −1: the same region system with every region Laplacian negated.
+    let mut embedded = mesh.clone();
+    embedded.positions_mut().copy_from_slice(turned.embedded());
+    let mut roi = vec![false; mesh.n_vertices()];
+    turned.roi().iter().for_each(|v| roi[v.index()] = true);
+    let params = EditParams {
+        fit: HandleFit::Exact,
+        rotations: Rotations::None,
+    };
+    let mut system = LaplacianEdit::new(&embedded, &roi, &[], params).unwrap();
+    let change: Vec<DVec3> = (system.laplacian_rows())
+        .map(|(v, delta)| {
+            if roi[v.index()] {
+                -2.0 * delta
+            } else {
+                DVec3::ZERO
+            }
+        })
+        .collect();
+    let mut scaled = turned.embedded().to_vec();
+    let displacement = system.prescribed_displacement(&change).unwrap();
+    for (v, d) in system.roi_vertices().iter().zip(displacement) {
+        scaled[v.index()] += d;
+    }
+    let worst = (a.positions.iter().zip(&scaled))
         .map(|(p, q)| p.distance(*q))
         .fold(0.0, f64::max);
     let moved = (a.positions.iter().zip(turned.embedded()))

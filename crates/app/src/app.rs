@@ -830,14 +830,20 @@ fn feature_amount(edit: &Edit) -> Option<String> {
     })
 }
 
+/// What to do next, at the top of the view, wrapped to its width (a phone's is narrow).
 fn hint_ui(ui: &egui::Ui, viewport: egui::Rect, text: &str) {
-    ui.painter().text(
-        viewport.center_top() + egui::vec2(0.0, 28.0),
-        egui::Align2::CENTER_CENTER,
-        text,
+    let color = egui::Color32::from_white_alpha(200);
+    let width = (viewport.width() - 40.0).max(80.0);
+    let mut job = egui::text::LayoutJob::simple(
+        text.to_owned(),
         egui::FontId::proportional(16.0),
-        egui::Color32::from_white_alpha(200),
+        color,
+        width,
     );
+    job.halign = egui::Align::Center;
+    let galley = ui.painter().layout_job(job);
+    ui.painter()
+        .galley(viewport.center_top() + egui::vec2(0.0, 18.0), galley, color);
 }
 
 /// The latest message, at the bottom of the view on a dark band, wrapped to its width: the

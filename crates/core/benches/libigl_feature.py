@@ -20,7 +20,7 @@ import igl
 import numpy as np
 import scipy.sparse as sp
 
-from libigl_common import RUNS, median_ms
+from libigl_common import RUNS, median_ms, precompute, region_rows
 
 
 def main(directory):
@@ -31,16 +31,7 @@ def main(directory):
     n = v.shape[0]
 
     def build():
-        cot = igl.cotmatrix(v, f).tocsr()
-        w = (cot - sp.diags(cot.diagonal())).tocsr()
-        w.data = np.maximum(w.data, 0.0)
-        inv_degree = 1.0 / np.asarray(w.sum(axis=1)).ravel()
-        laplacian = sp.identity(n, format="csr") - sp.diags(inv_degree) @ w
-        adjacency = w.copy()
-        adjacency.data[:] = 1.0
-        ring1 = (adjacency @ roi.astype(float) > 0) & ~roi
-        row_ids = np.flatnonzero(roi | ring1)
-        rows = laplacian[row_ids]
+        rows, row_ids = region_rows(v, f, roi)
         change = (amount - 1.0) * (rows @ v) * roi[row_ids][:, None]
         return (2.0 * (rows.T @ rows)).tocsc(), -2.0 * (rows.T @ change)
 
@@ -50,12 +41,7 @@ def main(directory):
     aeq = sp.csc_matrix((0, n))
     beq = np.zeros((0, 3))
 
-    def precompute():
-        data = igl.min_quad_with_fixed_data()
-        igl.min_quad_with_fixed_precompute(q, known, aeq, True, data)
-        return data
-
-    data, factor_ms = median_ms(precompute)
+    data, factor_ms = median_ms(lambda: precompute(q, known, aeq))
     d, solve_ms = median_ms(lambda: igl.min_quad_with_fixed_solve(data, b, y, beq))
     x = v + d
 

@@ -36,6 +36,10 @@ const SHORTCUTS: &[(&str, &str)] = &[
         "Optimize: strokes lasso a part, paint what moves, or paint edges that hold",
     ),
     ("Enter", "Optimize: apply the preview"),
+    (
+        "D",
+        "Feature: sketch on a model, then drag for a ridge, bump or suggestive contours",
+    ),
     ("Esc", "Drop what is in progress (a preview, a drag)"),
     ("W", "Wireframe on/off"),
     ("G", "Grid on/off"),
@@ -58,6 +62,8 @@ const GESTURES: &[(&str, &str)] = &[
         "Orbit; fingers never draw once a pen is seen",
     ),
     ("Two fingers (after a pen)", "Drag to pan, pinch to zoom"),
+    ("Two-finger tap", "Undo"),
+    ("Three-finger tap", "Redo"),
 ];
 
 /// Shows the help window while `open` is set.

@@ -844,6 +844,32 @@ test('autosave: create and pull, reload: the same document, session, view and hi
   assert.deepEqual(fresh.errors, [], 'console errors around the reloads');
 }));
 
+test('a panic (forced through the test API) shows a message with a bug report and Reload; the reload restores the work from before it', () => withShape(async ({ fresh, created }) => {
+    await fresh.page.evaluate(() => window.sketchmesh.flushAutosave());
+    const thrown = await fresh.page.evaluate(() => {
+      try {
+        window.sketchmesh.panicForTest();
+        return null;
+      } catch (e) {
+        return String(e);
+      }
+    });
+    assert.ok(thrown, 'the panic ends the call with an error');
+    const failure = await fresh.page.evaluate(() => ({
+      shown: !document.getElementById('failure').hidden,
+      text: document.getElementById('failure-message').textContent,
+    }));
+    console.log(`    message: ${failure.text.slice(0, 100)}`);
+    assert.ok(failure.shown, 'the failure message shows');
+    assert.match(failure.text, /^Sketchmesh .* stopped because of a bug: a panic forced by the browser suite \(at .*\)\.$/);
+    await screenshot(fresh.page, out('panic.png'));
+    await fresh.page.click('#failure-reload');
+    await fresh.page.waitForFunction(() => window.sketchmesh?.stats?.().models === 1, null, { timeout: 20_000, polling: 100 });
+    assert.deepEqual(await api(fresh.page, 'stats'), created, 'the reload restores the shape');
+    const hidden = await fresh.page.evaluate(() => document.getElementById('failure').hidden);
+    assert.ok(hidden, 'the reloaded page runs without the message');
+}));
+
 test('session files: Ctrl+Shift+S downloads the session; dropping it in a fresh profile gives the same document; a broken one changes nothing', () => withShape(async ({ fresh, created }) => {
   const session = await api(fresh.page, 'session');
   const [download] = await Promise.all([

@@ -27,7 +27,10 @@ pub async fn start(canvas_id: String) -> Result<(), JsValue> {
         .ok_or_else(|| JsValue::from_str(&format!("No element with id {canvas_id:?}.")))?
         .dyn_into::<web_sys::HtmlCanvasElement>()?;
     let listen_on = canvas.clone();
-    eframe::WebRunner::new()
+    // eframe's panic hook logs a panic and stops the app; ours, after it, tells the page.
+    let runner = eframe::WebRunner::new();
+    tell_the_page_on_panic();
+    runner
         .start(
             canvas,
             eframe::WebOptions::default(),
@@ -46,6 +49,29 @@ pub async fn start(canvas_id: String) -> Result<(), JsValue> {
             }),
         )
         .await
+}
+
+/// Chains a panic hook after the installed one (eframe's, which logs the panic and stops the
+/// app) that hands the page a sentence (`window.sketchmeshPanicked`, in `index.html`): it
+/// shows it with "Copy bug report" and "Reload", and writes no more autosaves, so the record
+/// of the last committed op is what the reload restores.
+fn tell_the_page_on_panic() {
+    let logged = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        logged(info);
+        let what = info.payload_as_str().unwrap_or("an unknown failure");
+        let place = info.location().map(ToString::to_string).unwrap_or_default();
+        let sentence = format!(
+            "Sketchmesh {} stopped because of a bug: {what} (at {place}).",
+            env!("CARGO_PKG_VERSION")
+        );
+        let notice = web_sys::window()
+            .and_then(|window| Reflect::get(&window, &JsValue::from_str("sketchmeshPanicked")).ok())
+            .and_then(|notice| notice.dyn_into::<js_sys::Function>().ok());
+        if let Some(notice) = notice {
+            let _ = notice.call1(&JsValue::NULL, &JsValue::from_str(&sentence));
+        }
+    }));
 }
 
 fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(), JsValue> {
@@ -171,6 +197,12 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
             c.request_repaint();
         })
         .into_js_value(),
+    )?;
+    // The browser suite's forced failure (issue 18): never in the shipped page.
+    #[cfg(feature = "test-api")]
+    set(
+        "panicForTest",
+        Closure::<dyn Fn()>::new(|| panic!("a panic forced by the browser suite")).into_js_value(),
     )?;
     let window = web_sys::window().ok_or_else(|| JsValue::from_str("No window."))?;
     Reflect::set(&window, &JsValue::from_str("sketchmesh"), &api)?;

@@ -27,7 +27,7 @@ const WASM_OPT_ARGS: &[&str] = &["-Oz"];
 /// How to build the page.
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
 pub enum WebProfile {
-    /// `release` profile, no wasm-opt: quick, for tests.
+    /// `release` profile, no wasm-opt, the page API's test-only calls: quick, for tests.
     Release,
     /// `wasm-release` profile (opt-level z, fat LTO) plus `wasm-opt -Oz`: smallest, for serving.
     Ship,
@@ -69,12 +69,17 @@ pub fn build_web(workspace: &Workspace, profile: WebProfile) -> anyhow::Result<W
     }
 
     let cargo_profile = profile.cargo_profile();
+    let features: &[&str] = match profile {
+        WebProfile::Release => &["--features", "test-api"],
+        WebProfile::Ship => &[],
+    };
     run(
         "building the wasm",
         cargo()
             .current_dir(&workspace.root)
             .args(["build", "-p", PACKAGE, "--lib", "--target", WASM_TARGET])
-            .args(["--profile", cargo_profile]),
+            .args(["--profile", cargo_profile])
+            .args(features),
     )?;
     let cargo_wasm = workspace
         .target_dir

@@ -68,6 +68,24 @@ function onEllipse(a0 = 0, a1 = 2 * Math.PI, n = 60, push = () => 0, force = 0.6
   });
 }
 
+/** The last op of `page`'s session (`{}` when there is none). */
+const lastOpOf = (page) => api(page, 'session').then((json) => JSON.parse(json).ops.at(-1) ?? {});
+
+/** `page`'s document as .glb bytes. */
+const glbOf = (page) => page.evaluate(() => Array.from(window.sketchmesh.exportGlb()));
+
+/** Points every 3 px inside the shape that the ELLIPSE outline creates, as first seen. */
+function insideShape() {
+  const { c } = ELLIPSE;
+  const inside = [];
+  for (let x = c.x - 150; x <= c.x + 150; x += 3) {
+    for (let y = c.y - 100; y <= c.y + 100; y += 3) {
+      if (((x - c.x) / 160) ** 2 + ((y - c.y) / 110) ** 2 < 1) inside.push({ x, y });
+    }
+  }
+  return inside;
+}
+
 /** A pen loop around the centre (most of a circle), pressure rising and falling. */
 function penLoop() {
   const n = 40;
@@ -528,7 +546,7 @@ test('manual over-sketch (K): pick an outline piece, redraw it; pick a curve on 
     await fresh.page.keyboard.press('k');
     await frames(fresh.page, 3);
     const before = await screenshot(fresh.page, out('manual-before.png'));
-    const lastOp = () => api(fresh.page, 'session').then((json) => JSON.parse(json).ops.at(-1) ?? {});
+    const lastOp = () => lastOpOf(fresh.page);
     // Pick: along the outline from -40 to +40 degrees. Nothing changes yet.
     await penStroke(fresh.cdp, onEllipse(-0.7, 0.7, 30, () => 0, 0.5));
     await frames(fresh.page, 3);
@@ -550,7 +568,7 @@ test('manual over-sketch (K): pick an outline piece, redraw it; pick a curve on 
     assert.ok(r0 < 100, `outside the original outline is background, got red ${r0}`);
     assert.ok(r1 > 120 && r1 >= b1, `the picked outline moved out: clay at ${probe.x}, got rgb(${r1}, ${g1}, ${b1})`);
     // A curve across the front, then its new place 25 px higher.
-    const positions = () => fresh.page.evaluate(() => Array.from(window.sketchmesh.exportGlb()));
+    const positions = () => glbOf(fresh.page);
     const beforeLift = await positions();
     const across = line({ x: c.x - 80, y: c.y + 10 }, { x: c.x + 80, y: c.y + 10 }, 30);
     await penStroke(fresh.cdp, across);
@@ -580,7 +598,7 @@ test('curve tools with the pen: pull (live preview), add a curve, make it sharp,
     const c = ELLIPSE.c;
     const outline = onEllipse();
     await penStroke(fresh.cdp, outline);
-    const lastOp = () => api(fresh.page, 'session').then((json) => JSON.parse(json).ops.at(-1) ?? {});
+    const lastOp = () => lastOpOf(fresh.page);
     const waitOp = async (name, ms = 15_000) => {
       const op = await until(lastOp, (o) => o.op === name, ms);
       assert.equal(op.op, name, `the gesture became a "${name}" op`);
@@ -661,8 +679,8 @@ test('curve tools with the pen: pull (live preview), add a curve, make it sharp,
 
 test('optimize (M): a tap previews the shape optimized, Esc drops it, Enter commits one op, undo restores, a painted band bounds it', () => withShape(async ({ fresh, created }) => {
     const c = ELLIPSE.c;
-    const lastOp = () => api(fresh.page, 'session').then((json) => JSON.parse(json).ops.at(-1) ?? {});
-    const glb = () => fresh.page.evaluate(() => Array.from(window.sketchmesh.exportGlb()));
+    const lastOp = () => lastOpOf(fresh.page);
+    const glb = () => glbOf(fresh.page);
     await until(lastOp, (o) => o.op === 'create', 15_000);
     const original = await glb();
     // Wireframe on, so that moved vertices show as moved lines.
@@ -675,12 +693,7 @@ test('optimize (M): a tap previews the shape optimized, Esc drops it, Enter comm
       await frames(fresh.page, 6);
     };
     // Sample points inside the shape, away from the hint line above it.
-    const inside = [];
-    for (let x = c.x - 150; x <= c.x + 150; x += 3) {
-      for (let y = c.y - 100; y <= c.y + 100; y += 3) {
-        if (((x - c.x) / 160) ** 2 + ((y - c.y) / 110) ** 2 < 1) inside.push({ x, y });
-      }
-    }
+    const inside = insideShape();
     await tap();
     const preview = await screenshot(fresh.page, out('optimize-preview.png'));
     const moved = changedFraction(before, preview, inside, { radius: 0 });
@@ -740,8 +753,8 @@ test('optimize (M): a tap previews the shape optimized, Esc drops it, Enter comm
 
 test('feature (D): a sketch across a shape, then a drag up, raises a ridge under it only; undo restores; a sketch off the shape changes nothing', () => withShape(async ({ fresh, created }) => {
     const c = ELLIPSE.c;
-    const lastOp = () => api(fresh.page, 'session').then((json) => JSON.parse(json).ops.at(-1) ?? {});
-    const glb = () => fresh.page.evaluate(() => Array.from(window.sketchmesh.exportGlb()));
+    const lastOp = () => lastOpOf(fresh.page);
+    const glb = () => glbOf(fresh.page);
     await until(lastOp, (o) => o.op === 'create', 15_000);
     const original = await glb();
     await fresh.page.keyboard.press('d');
@@ -763,12 +776,7 @@ test('feature (D): a sketch across a shape, then a drag up, raises a ridge under
     assert.deepEqual(await api(fresh.page, 'stats'), created, 'same vertices, triangles and curves');
     await frames(fresh.page, 3);
     const ridge = await screenshot(fresh.page, out('feature-ridge.png'));
-    const inside = [];
-    for (let x = c.x - 150; x <= c.x + 150; x += 3) {
-      for (let y = c.y - 100; y <= c.y + 100; y += 3) {
-        if (((x - c.x) / 160) ** 2 + ((y - c.y) / 110) ** 2 < 1) inside.push({ x, y });
-      }
-    }
+    const inside = insideShape();
     const near = inside.filter((p) => Math.abs(p.y - c.y) < 12 && Math.abs(p.x - c.x) < 90);
     const far = inside.filter((p) => Math.abs(p.y - c.y) > 70);
     const nearChanged = changedFraction(before, ridge, near, { radius: 0, threshold: 20 });
@@ -786,7 +794,7 @@ test('autosave: create and pull, reload: the same document, session, view and hi
   const c = ELLIPSE.c;
   const session = () => api(fresh.page, 'session');
   const lastOp = () => session().then((json) => JSON.parse(json).ops.at(-1) ?? {});
-  const glb = () => fresh.page.evaluate(() => Array.from(window.sketchmesh.exportGlb()));
+  const glb = () => glbOf(fresh.page);
   await until(lastOp, (o) => o.op === 'create', 15_000);
   const beforePull = await glb();
   await fresh.page.keyboard.press('p');

@@ -6,7 +6,7 @@
 //! normalised cotangent Laplacian rows of the region and its first anchor ring, unknowns the
 //! region's displacements, anchors fixed, right-hand side the change of the Laplacian
 //! coordinates (here a bump's, `(a − 1) δ` on the region). We time building and factoring it
-//! (`LaplacianEdit::new`) and one solve (`prescribed_displacement`); `FeatureEdit::new`, which
+//! (`FeatureEdit::region_system`, a `LaplacianEdit`) and one solve (`prescribed_displacement`); `FeatureEdit::new`, which
 //! also places and embeds the sketch, is timed by the criterion bench.
 //!
 //! Run: `cargo run --release -p sketchmesh-core --example feature_export -- /tmp/feature_compare`
@@ -16,7 +16,6 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use glam::DVec3;
-use sketchmesh_core::deform::{EditParams, HandleFit, LaplacianEdit, Rotations};
 use sketchmesh_core::feature::{FeatureEdit, FeatureKind};
 
 #[path = "../benches/common/export.rs"]
@@ -44,16 +43,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     mesh.positions_mut().copy_from_slice(placed.embedded());
     let mut roi = vec![false; mesh.n_vertices()];
     placed.roi().iter().for_each(|v| roi[v.index()] = true);
-    let params = EditParams {
-        fit: HandleFit::Exact,
-        rotations: Rotations::None,
-    };
-
     let mut factor_times = Vec::new();
-    let mut system = LaplacianEdit::new(&mesh, &roi, &[], params)?;
+    let mut system = placed.region_system(&sphere)?;
     for _ in 0..RUNS {
         let start = Instant::now();
-        system = LaplacianEdit::new(&mesh, &roi, &[], params)?;
+        system = placed.region_system(&sphere)?;
         factor_times.push(start.elapsed().as_secs_f64());
     }
     let change: Vec<DVec3> = system

@@ -59,11 +59,7 @@ impl FeatureEdit {
         let mut shaped = mesh.clone();
         shaped.positions_mut().copy_from_slice(&embedded);
         let normals = vertex_normals(&shaped);
-        let params = EditParams {
-            fit: HandleFit::Exact,
-            rotations: Rotations::None,
-        };
-        let mut system = LaplacianEdit::new(&shaped, &placed.region, &[], params)?;
+        let mut system = region_system(&shaped, &placed.region)?;
         let rows: Vec<(VertexId, DVec3)> = system.laplacian_rows().collect();
         let rows = Rows {
             rows: &rows,
@@ -84,6 +80,19 @@ impl FeatureEdit {
             roi,
             solutions,
         })
+    }
+
+    /// The region's Laplacian system on `mesh` (the mesh the edit was made for) with the
+    /// sketch embedded, as this edit factored it: to check it against another solver, or to
+    /// prescribe other Laplacians on the same region.
+    ///
+    /// Errors: [`DeformError`] when it cannot be factored (it could when the edit was made).
+    pub fn region_system(&self, mesh: &Mesh) -> Result<LaplacianEdit, DeformError> {
+        let mut shaped = mesh.clone();
+        shaped.positions_mut().copy_from_slice(&self.embedded);
+        let mut region = vec![false; mesh.n_vertices()];
+        self.roi.iter().for_each(|v| region[v.index()] = true);
+        region_system(&shaped, &region)
     }
 
     /// The kind of feature.
@@ -167,6 +176,16 @@ impl FeatureEdit {
             after.dot(before) <= FOLD_COS * after.length() * before.length()
         })
     }
+}
+
+/// The Laplacian system of `region` on `mesh`, anchored by the rest: no handles, no
+/// rotations (the feature prescribes the Laplacians itself).
+fn region_system(mesh: &Mesh, region: &[bool]) -> Result<LaplacianEdit, DeformError> {
+    let params = EditParams {
+        fit: HandleFit::Exact,
+        rotations: Rotations::None,
+    };
+    LaplacianEdit::new(mesh, region, &[], params)
 }
 
 /// The faces of `mesh` with a vertex in `region`: their corners and normals.

@@ -6,7 +6,6 @@
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::polyline::distance_to_polyline;
-use sketchmesh_core::deform::{EditParams, HandleFit, LaplacianEdit, Rotations};
 use sketchmesh_core::feature::{FeatureEdit, FeatureError, FeatureKind, Sketch};
 use sketchmesh_core::geometry::vertex_normals;
 use sketchmesh_core::mesh::{Mesh, TriSoup, VertexId, primitives};
@@ -249,18 +248,11 @@ fn turning_by_pi_equals_scaling_by_minus_one() {
     let a = turned.shape(180.0).unwrap();
     assert_eq!(a.limited_to, None);
     // Scaling by −1: the same region system with every region Laplacian negated.
-    let mut embedded = mesh.clone();
-    embedded.positions_mut().copy_from_slice(turned.embedded());
-    let mut roi = vec![false; mesh.n_vertices()];
-    turned.roi().iter().for_each(|v| roi[v.index()] = true);
-    let params = EditParams {
-        fit: HandleFit::Exact,
-        rotations: Rotations::None,
-    };
-    let mut system = LaplacianEdit::new(&embedded, &roi, &[], params).unwrap();
+    let mut system = turned.region_system(&mesh).unwrap();
+    let in_region: std::collections::HashSet<VertexId> = turned.roi().iter().copied().collect();
     let change: Vec<DVec3> = (system.laplacian_rows())
         .map(|(v, delta)| {
-            if roi[v.index()] {
+            if in_region.contains(&v) {
                 -2.0 * delta
             } else {
                 DVec3::ZERO

@@ -173,6 +173,19 @@ export async function touchGesture(cdp, tracks, gapMs = 30) {
   await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
 }
 
+/**
+ * A touch tap via CDP: every finger down at its point together, and up `ms` later, with the
+ * events stamped at those times (as a touch screen stamps them), so a busy frame that delays
+ * their delivery does not make the tap look long.
+ */
+export async function touchTap(cdp, points, ms = 60) {
+  const down = Date.now() / 1000;
+  const touchPoints = points.map((p, id) => ({ x: p.x, y: p.y, id, radiusX: 8, radiusY: 8, force: 0.5 }));
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints, timestamp: down });
+  await sleep(ms);
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [], timestamp: down + ms / 1000 });
+}
+
 /** `n + 1` evenly spaced points from `a` to `b`. */
 export function line(a, b, n) {
   return Array.from({ length: n + 1 }, (_, i) => ({

@@ -16,7 +16,7 @@ import { fileURLToPath } from 'node:url';
 import {
   EXPECTED_BACKEND, OUT_DIR, api, camera, cameraDistance, changedFraction, distinctColours, frames,
   imageChangedFraction, launch, line, maxDiffNear, nonBackgroundFraction, openApp, penStroke, screenshot,
-  settings, sleep, touchGesture,
+  settings, sleep, touchGesture, touchTap,
 } from './lib.mjs';
 
 const WATCHDOG_MS = 240_000;
@@ -369,12 +369,11 @@ test('tablet (820x1180, DPR 2, touch): a finger-drawn outline creates a model; a
     const created = await until(() => api(tablet.page, 'stats'), (s) => s.models === 1, 15_000);
     assert.equal(created.models, 1, 'the finger-drawn outline made a shape');
     await screenshot(tablet.page, out('tablet-created.png'));
-    // Fingers down together and up 10 ms later, once the page is idle: a busy frame on this
-    // software renderer delays the events, and a tap must be over within 250 ms.
+    // Fingers down together and up 60 ms later, stamped so: a frame of this page on the
+    // software renderer takes most of a second and delays the events' delivery.
     const tap = async (fingers) => {
       await frames(tablet.page, 2);
-      await sleep(200);
-      await touchGesture(tablet.cdp, fingers.map((p) => [p]), 10);
+      await touchTap(tablet.cdp, fingers);
     };
     await tap([{ x: c.x - 60, y: c.y }, { x: c.x + 60, y: c.y }]);
     const undone = await until(() => api(tablet.page, 'stats'), (s) => s.models === 0);

@@ -21,12 +21,14 @@ use crate::oversketch::{
 const PREVIEW_EVERY: usize = 8;
 
 /// Over-sketches the model whose outline the stroke matches best (highest match score
-/// among the models that accept it), returning its index and its new version: new
-/// positions, and control curves embedded in the mesh following their vertices.
+/// among the models that accept it), returning its index and its new version. Where a
+/// control curve draws the redrawn outline (automatic, exact, near the handle), the curve
+/// moves and the surface settles through it ([`curve_edit::oversketch_curve`]); elsewhere
+/// the mesh bends, and control curves, chains of its vertices, follow them.
 ///
 /// Errors: [`CommandError::BadView`], [`CommandError::StrokeTooShort`],
-/// [`CommandError::StrokeNotFinite`], or the most telling refusal over all models
-/// (a failed edit, then a doubtful match, then no match).
+/// [`CommandError::StrokeNotFinite`], a failed settle of a moved curve, or the most telling
+/// refusal over all models (a failed edit, then a doubtful match, then no match).
 pub(super) fn oversketch_op(
     document: &Document,
     input: &OversketchInput,
@@ -38,18 +40,32 @@ pub(super) fn oversketch_op(
         fit: input.fit.handle_fit(),
         roi: input.roi,
     };
-    let mut best: Option<(usize, Oversketched)> = None;
+    let mut best: Option<(usize, Candidate, f64)> = None;
     let mut refusal = OversketchError::NoMatch;
+    let mut failed_curve: Option<CommandError> = None;
     for (index, model) in document.models.iter().enumerate() {
         let (mesh, camera) = (&model.mesh, &input.camera);
-        let result = match &input.handle {
-            Some(handle) => oversketch_manual(mesh, camera, viewport, handle, &stroke, options),
-            None => oversketch_with(mesh, camera, viewport, &stroke, options),
+        let along_curve = (input.handle.is_none() && options == BendOptions::EXACT)
+            .then(|| curve_edit::oversketch_curve(model, camera, viewport, &stroke))
+            .flatten();
+        let result = match (along_curve, &input.handle) {
+            (Some(Ok((model, score))), _) => Ok((Candidate::Curve(model), score)),
+            (Some(Err(error)), _) => {
+                failed_curve = Some(error);
+                continue;
+            }
+            (None, Some(handle)) => {
+                oversketch_manual(mesh, camera, viewport, handle, &stroke, options)
+                    .map(Candidate::scored)
+            }
+            (None, None) => {
+                oversketch_with(mesh, camera, viewport, &stroke, options).map(Candidate::scored)
+            }
         };
         match result {
-            Ok(result) => {
-                if best.as_ref().is_none_or(|(_, b)| result.score > b.score) {
-                    best = Some((index, result));
+            Ok((candidate, score)) => {
+                if best.as_ref().is_none_or(|(_, _, b)| score > *b) {
+                    best = Some((index, candidate, score));
                 }
             }
             Err(error) => {
@@ -59,13 +75,35 @@ pub(super) fn oversketch_op(
             }
         }
     }
-    let (index, result) = best.ok_or(refusal)?;
-    let mut model = Model::clone(&document.models[index]);
-    model
-        .mesh
-        .positions_mut()
-        .copy_from_slice(&result.positions);
-    Ok((index, model))
+    let Some((index, candidate, _)) = best else {
+        return Err(failed_curve.unwrap_or(refusal.into()));
+    };
+    match candidate {
+        Candidate::Curve(model) => Ok((index, model)),
+        Candidate::Mesh(result) => {
+            let mut model = Model::clone(&document.models[index]);
+            model
+                .mesh
+                .positions_mut()
+                .copy_from_slice(&result.positions);
+            Ok((index, model))
+        }
+    }
+}
+
+/// One model's over-sketch: its curve moved and the surface settled, or its mesh bent
+/// (control curves, chains of its vertices, follow them).
+enum Candidate {
+    Curve(Model),
+    Mesh(Oversketched),
+}
+
+impl Candidate {
+    /// A bent mesh and its match score.
+    fn scored(result: Oversketched) -> (Candidate, f64) {
+        let score = result.score;
+        (Candidate::Mesh(result), score)
+    }
 }
 
 /// How much a refusal tells the user: a failed edit, then a doubtful match, then none.

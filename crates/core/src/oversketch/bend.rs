@@ -31,10 +31,13 @@ use super::{
     roi_from_displacements,
 };
 use crate::camera::Camera;
-use crate::curve::polyline::relative_arclengths;
+use crate::curve::polyline::{
+    closest_point, cumulative_lengths, distance_to_polyline, length, point_at, relative_arclengths,
+};
 use crate::deform::{DeformError, EditParams, HandleFit, HandlePoint, LaplacianEdit};
+use crate::geometry::Bvh;
 use crate::mesh::{Mesh, VertexId};
-use crate::silhouette::SilhouettePoint;
+use crate::silhouette::{SilhouettePoint, outline_edges};
 
 /// The ROI grows within spheres of this many times each handle displacement: twice the
 /// thesis's radius ([`super::ROI_RADIUS_FACTOR`]). The band of `band_handles` moves
@@ -43,6 +46,12 @@ use crate::silhouette::SilhouettePoint;
 /// change more than under a naive falloff (measured on the bumpy torus: relative Laplacian
 /// change 2.30 against 2.11 naive at radius 1, 1.28 at 1.5, 0.80 at 2).
 pub const ROI_FACTOR: f64 = 2.0;
+
+/// The ROI reaches at least this many mean edge lengths from the handle. Spheres as large
+/// as the displacements alone hold hardly more than the band on a coarse scan pushed a few
+/// pixels (spot's back pushed in 8 px: 113 vertices, all of them band), so nothing is free
+/// to bend, and edges just outside the ROI stay sticking out of the new outline (5 px).
+pub const MIN_ROI_EDGES: f64 = 3.0;
 
 /// A handle on the mesh as the user sees it: what an over-sketch moves onto its stroke.
 pub(super) struct HandleCurve {
@@ -100,8 +109,9 @@ impl BendOptions {
 /// Bends `mesh` so that `handle` lands on `stroke` (simplified, screen CSS px): the new
 /// positions and the ROI size.
 ///
-/// Errors: [`OversketchError::NoPart`] when a part ROI is asked for and none stands out,
-/// [`OversketchError::Deform`] when the edit fails.
+/// Errors: [`OversketchError::LowConfidence`] when the handle runs [`ROI_REACH_PX`] or
+/// farther from the stroke, [`OversketchError::NoPart`] when a part ROI is asked for and
+/// none stands out, [`OversketchError::Deform`] when the edit fails.
 pub(super) fn bend(
     mesh: &Mesh,
     camera: &Camera,
@@ -110,18 +120,32 @@ pub(super) fn bend(
     stroke: &[DVec2],
     options: BendOptions,
 ) -> Result<(Vec<DVec3>, usize), OversketchError> {
+    if handle
+        .screen
+        .iter()
+        .any(|&p| distance_to_polyline(p, stroke) >= ROI_REACH_PX)
+    {
+        return Err(OversketchError::LowConfidence);
+    }
     let targets = handle_targets(camera, viewport, handle, stroke);
+    let least_reach = MIN_ROI_EDGES * mesh.mean_edge_length() / ROI_FACTOR;
     let displaced: Vec<(VertexId, f64)> = handle
         .points
         .iter()
         .zip(&targets)
         .flat_map(|(point, target)| {
             let displacement = target.distance(point.position(mesh.positions()));
-            point.vertices().map(|v| (v, displacement))
+            point
+                .vertices()
+                .map(move |v| (v, displacement.max(least_reach)))
         })
         .collect();
     let roi = match options.roi {
-        OversketchRoi::NearHandle => roi_from_displacements(mesh, &displaced, ROI_FACTOR),
+        OversketchRoi::NearHandle => {
+            let mut roi = roi_from_displacements(mesh, &displaced, ROI_FACTOR);
+            keep_near(mesh, camera, viewport, stroke, &mut roi);
+            roi
+        }
         OversketchRoi::Part => {
             let vertices: Vec<VertexId> = displaced.iter().map(|&(v, _)| v).collect();
             part_roi(mesh, &vertices).ok_or(OversketchError::NoPart)?
@@ -141,43 +165,180 @@ pub(super) fn bend(
     let mut positions = vec![DVec3::ZERO; mesh.n_vertices()];
     edit.deform(&targets, &mut positions)
         .map_err(DeformError::from)?;
+    if handle.is_silhouette && options.fit == HandleFit::Exact {
+        let widths = blend_widths(camera, viewport, handle, stroke);
+        for _ in 0..SNAP_PASSES {
+            snap_outline(mesh, camera, viewport, &roi, stroke, widths, &mut positions)?;
+        }
+    }
     Ok((positions, roi_size))
 }
 
+/// A near-handle ROI never reaches this far (px on screen) from the stroke, and a handle
+/// that does is refused. A stroke drawn over two pieces of outline at once (both ears of the
+/// bunny, whose outline jumps between them) matched a handle whose displacements were large,
+/// and their spheres moved the whole face.
+pub const ROI_REACH_PX: f64 = 150.0;
+
+/// Takes out of `roi` the vertices drawn [`ROI_REACH_PX`] or farther from `stroke`.
+fn keep_near(mesh: &Mesh, camera: &Camera, viewport: DVec2, stroke: &[DVec2], roi: &mut [bool]) {
+    for v in mesh.vertices() {
+        if roi[v.index()] {
+            roi[v.index()] = camera
+                .screen_from_world(mesh.position(v), viewport)
+                .is_some_and(|p| distance_to_polyline(p.truncate(), stroke) < ROI_REACH_PX);
+        }
+    }
+}
+
+/// Passes of [`snap_outline`] after the bend.
+const SNAP_PASSES: usize = 4;
+
+/// Outline vertices farther than this from the stroke (px) are other parts of the outline
+/// and are left to the Laplacian.
+const SNAP_REACH_PX: f64 = 8.0;
+
+/// Puts the outline as rendered onto the stroke. The bend moves the smooth silhouette's
+/// crossing points and the band around them; the rendered outline is made of whole mesh
+/// edges whose ends can sit several pixels off the smooth silhouette on a coarse scan
+/// (spot's back: up to 5 px), and the band carries that offset along. Here the vertices of
+/// the bent mesh's visible edge silhouettes near the stroke become the handles, each moved
+/// onto its nearest stroke point (blended as the targets are at the stroke's ends), and the
+/// region is edited again from the bent shape.
+fn snap_outline(
+    mesh: &Mesh,
+    camera: &Camera,
+    viewport: DVec2,
+    roi: &[bool],
+    stroke: &[DVec2],
+    widths: [f64; 2],
+    positions: &mut [DVec3],
+) -> Result<(), OversketchError> {
+    let mut bent = mesh.clone();
+    bent.positions_mut().copy_from_slice(positions);
+    let cumulative = cumulative_lengths(stroke);
+    let total = cumulative[cumulative.len() - 1];
+    let forward = camera.forward();
+    let mut points = Vec::new();
+    let mut targets = Vec::new();
+    for (v, screen, spacing) in outline_vertices(&bent, camera, viewport, roi) {
+        let closest = closest_point(stroke, &cumulative, screen);
+        if closest.distance > SNAP_REACH_PX {
+            continue;
+        }
+        // Outline edges are chords of the stroke: a vertex on the stroke leaves each
+        // chord's middle inside the bend by its sagitta. Moving the vertex outwards by half
+        // of it halves the worst gap. `bulge` is the sagitta of a chord twice as long, four
+        // times an edge's, so half an edge's sagitta is an eighth of it.
+        let s = closest.arclength;
+        let chord_middle = 0.5
+            * (point_at(stroke, &cumulative, s - spacing)
+                + point_at(stroke, &cumulative, s + spacing));
+        let bulge = closest.point - chord_middle;
+        let on_stroke = closest.point + bulge / 8.0;
+        let weight = blend_at(s / total, widths);
+        let target = screen.lerp(on_stroke, weight);
+        points.push(HandlePoint::vertex(v));
+        targets.push(unproject_at_depth(
+            camera,
+            viewport,
+            target,
+            bent.position(v),
+            forward,
+        ));
+    }
+    if points.is_empty() {
+        return Ok(());
+    }
+    let mut edit = LaplacianEdit::new(&bent, roi, &points, EditParams::default())?;
+    edit.deform(&targets, positions)
+        .map_err(DeformError::from)?;
+    Ok(())
+}
+
+/// The ROI's vertices on the visible outline of `mesh`, each with where it is drawn and the
+/// mean screen length of its outline edges, in vertex order.
+fn outline_vertices(
+    mesh: &Mesh,
+    camera: &Camera,
+    viewport: DVec2,
+    roi: &[bool],
+) -> Vec<(VertexId, DVec2, f64)> {
+    let mut ends: std::collections::BTreeMap<VertexId, (DVec2, f64, f64)> = Default::default();
+    for edge in outline_edges(mesh, &Bvh::new(mesh), camera, viewport) {
+        let length = edge.screen[0].distance(edge.screen[1]);
+        for (v, screen) in edge.vertices.into_iter().zip(edge.screen) {
+            if roi[v.index()] {
+                let entry = ends.entry(v).or_insert((screen, 0.0, 0.0));
+                entry.1 += length;
+                entry.2 += 1.0;
+            }
+        }
+    }
+    ends.into_iter()
+        .map(|(v, (screen, sum, count))| (v, screen, sum / count))
+        .collect()
+}
+
 /// Each handle point's target: the stroke point at the same relative arclength, blended at
-/// the ends for a silhouette, at the handle point's depth.
+/// the ends for a silhouette ([`outline_targets`]), at the handle point's depth.
 fn handle_targets(
     camera: &Camera,
     viewport: DVec2,
     handle: &HandleCurve,
     stroke: &[DVec2],
 ) -> Vec<DVec3> {
-    let mapped = map_to_stroke(&handle.screen, stroke);
-    // Unsmoothed: where each world point is drawn now.
-    let projected: Vec<DVec2> = handle
-        .worlds
+    if handle.is_silhouette {
+        return outline_targets(camera, viewport, &handle.worlds, &handle.screen, stroke);
+    }
+    let forward = camera.forward();
+    map_to_stroke(&handle.screen, stroke)
+        .into_iter()
+        .zip(&handle.worlds)
+        .map(|(target, &world)| unproject_at_depth(camera, viewport, target, world, forward))
+        .collect()
+}
+
+/// Where a piece of outline goes when `stroke` (screen CSS px) redraws it: each point
+/// (`worlds`, drawn at `screen`, in the stroke's direction) to the stroke point at the same
+/// relative arclength, blended into where it is now at the ends ([`blend_weight`], over
+/// [`end_widths`]), on the plane through it facing the camera.
+pub fn outline_targets(
+    camera: &Camera,
+    viewport: DVec2,
+    worlds: &[DVec3],
+    screen: &[DVec2],
+    stroke: &[DVec2],
+) -> Vec<DVec3> {
+    let mapped = map_to_stroke(screen, stroke);
+    let projected = projected_points(camera, viewport, worlds, screen);
+    let widths = end_widths(&projected, &mapped);
+    let forward = camera.forward();
+    relative_arclengths(screen)
+        .into_iter()
+        .enumerate()
+        .map(|(k, r)| {
+            let target = projected[k].lerp(mapped[k], blend_at(r, widths));
+            unproject_at_depth(camera, viewport, target, worlds[k], forward)
+        })
+        .collect()
+}
+
+/// Where each of `worlds` is drawn now: unsmoothed, unlike a silhouette point's `screen`
+/// (used where a point does not project).
+fn projected_points(
+    camera: &Camera,
+    viewport: DVec2,
+    worlds: &[DVec3],
+    screen: &[DVec2],
+) -> Vec<DVec2> {
+    worlds
         .iter()
-        .zip(&handle.screen)
+        .zip(screen)
         .map(|(&world, &screen)| {
             camera
                 .screen_from_world(world, viewport)
                 .map_or(screen, |p| p.truncate())
-        })
-        .collect();
-    let weights = if handle.is_silhouette {
-        let gaps = [
-            projected[0].distance(mapped[0]),
-            projected[projected.len() - 1].distance(mapped[mapped.len() - 1]),
-        ];
-        blend_weights(&handle.screen, gaps)
-    } else {
-        vec![1.0; mapped.len()]
-    };
-    let forward = camera.forward();
-    (0..handle.worlds.len())
-        .map(|k| {
-            let target_screen = projected[k].lerp(mapped[k], weights[k]);
-            unproject_at_depth(camera, viewport, target_screen, handle.worlds[k], forward)
         })
         .collect()
 }
@@ -220,21 +381,48 @@ fn band_handles(
 /// full [`BLEND_WIDTH`]; narrower gaps blend over proportionally less.
 pub const BLEND_GAP_PX: f64 = 10.0;
 
-/// SEED's blend weight at each point's relative arclength along `handle`, with the blend
-/// width at each end scaled by that end's gap (px) between the handle and the stroke: a
-/// stroke that starts on the outline needs no blend there and is followed all the way.
-fn blend_weights(handle: &[DVec2], gaps: [f64; 2]) -> Vec<f64> {
-    let [start_width, end_width] = gaps.map(|gap| BLEND_WIDTH * (gap / BLEND_GAP_PX).min(1.0));
-    relative_arclengths(handle)
-        .into_iter()
-        .map(|r| {
-            if r < 0.5 {
-                blend_weight(r, start_width)
-            } else {
-                blend_weight(r, end_width)
-            }
-        })
-        .collect()
+/// Each end blends over at least this many px of the handle (at most [`BLEND_WIDTH`] of
+/// it): a stroke that starts right on the outline but leaves it at an angle would otherwise
+/// make a corner there.
+pub const MIN_BLEND_PX: f64 = 20.0;
+
+/// The blend widths (fractions of the handle's arclength) at its two ends:
+/// `BLEND_WIDTH × min(1, gap / BLEND_GAP_PX)`, at least [`MIN_BLEND_PX`] and at most
+/// [`BLEND_WIDTH`], with `gap` the distance between where the handle's end is drawn
+/// (`projected`) and its target on the stroke (`mapped`): a stroke that starts on the
+/// outline is followed almost from its start.
+fn end_widths(projected: &[DVec2], mapped: &[DVec2]) -> [f64; 2] {
+    let least = MIN_BLEND_PX / length(projected).max(f64::MIN_POSITIVE);
+    let gaps = [
+        projected[0].distance(mapped[0]),
+        projected[projected.len() - 1].distance(mapped[mapped.len() - 1]),
+    ];
+    gaps.map(|gap| {
+        (BLEND_WIDTH * (gap / BLEND_GAP_PX).min(1.0))
+            .max(least)
+            .min(BLEND_WIDTH)
+    })
+}
+
+/// [`end_widths`] of a silhouette handle and its stroke.
+fn blend_widths(
+    camera: &Camera,
+    viewport: DVec2,
+    handle: &HandleCurve,
+    stroke: &[DVec2],
+) -> [f64; 2] {
+    let mapped = map_to_stroke(&handle.screen, stroke);
+    let projected = projected_points(camera, viewport, &handle.worlds, &handle.screen);
+    end_widths(&projected, &mapped)
+}
+
+/// SEED's blend weight at relative arclength `r`, with the blend `widths` at the two ends.
+fn blend_at(r: f64, [start_width, end_width]: [f64; 2]) -> f64 {
+    if r < 0.5 {
+        blend_weight(r, start_width)
+    } else {
+        blend_weight(r, end_width)
+    }
 }
 
 /// The point on the picking ray through `screen` at the depth of `world`: on the plane
@@ -274,16 +462,28 @@ mod tests {
 
     #[test]
     fn blend_weights_vanish_at_the_ends_only() {
-        let handle: Vec<DVec2> = (0..11).map(|i| DVec2::new(i as f64, 0.0)).collect();
+        let handle: Vec<DVec2> = (0..11).map(|i| DVec2::new(20.0 * i as f64, 0.0)).collect();
+        // A handle 200 px long whose targets lie `gaps` above its ends.
+        let blend_weights = |handle: &[DVec2], gaps: [f64; 2]| -> Vec<f64> {
+            let mut mapped = handle.to_vec();
+            mapped[0].y += gaps[0];
+            mapped[10].y += gaps[1];
+            let widths = end_widths(handle, &mapped);
+            relative_arclengths(handle)
+                .into_iter()
+                .map(|r| blend_at(r, widths))
+                .collect()
+        };
         let w = blend_weights(&handle, [BLEND_GAP_PX, 2.0 * BLEND_GAP_PX]);
         assert_eq!(w[0], 0.0);
         assert_eq!(w[10], 0.0);
         assert_eq!(w[5], 1.0);
-        assert!((w[1] - 0.5f64.sqrt()).abs() < 1e-12);
-        // Half the gap, half the blend; no gap, no blend.
+        assert!((w[1] - 0.5).abs() < 1e-12);
+        // Half the gap, half the blend; no gap, the least blend: MIN_BLEND_PX, one point.
         let w = blend_weights(&handle, [0.5 * BLEND_GAP_PX, 0.0]);
         assert_eq!(w[0], 0.0);
         assert_eq!(w[1], 1.0);
-        assert_eq!(w[10], 1.0);
+        assert_eq!(w[10], 0.0);
+        assert_eq!(w[9], 1.0);
     }
 }

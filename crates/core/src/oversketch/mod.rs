@@ -36,7 +36,9 @@ mod scoring;
 mod track;
 mod turning;
 
-pub use bend::{BLEND_GAP_PX, BendOptions, ROI_FACTOR};
+pub use bend::{
+    BLEND_GAP_PX, BendOptions, MIN_BLEND_PX, MIN_ROI_EDGES, ROI_FACTOR, outline_targets,
+};
 pub use candidate::MatchParams;
 pub use error::OversketchError;
 pub use manual::{

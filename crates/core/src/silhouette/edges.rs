@@ -17,7 +17,7 @@ use glam::{DVec2, DVec3};
 use super::visibility::{MARGIN_EDGES, OFFSET_EDGES, ray_origin};
 use crate::camera::Camera;
 use crate::geometry::{Bvh, face_normals};
-use crate::mesh::{FaceId, HalfedgeId, Mesh};
+use crate::mesh::{FaceId, HalfedgeId, Mesh, VertexId};
 
 /// The visible edge silhouettes of `mesh` seen by `camera` in a viewport of `viewport` CSS
 /// px, as screen segments (CSS px, y down), in no particular order; `bvh` must be built for
@@ -28,6 +28,23 @@ pub fn edge_silhouettes(
     camera: &Camera,
     viewport: DVec2,
 ) -> Vec<[DVec2; 2]> {
+    outline_edges(mesh, bvh, camera, viewport)
+        .into_iter()
+        .map(|edge| edge.screen)
+        .collect()
+}
+
+/// A visible edge silhouette: a mesh edge on the outline as rendered.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OutlineEdge {
+    /// Its ends.
+    pub vertices: [VertexId; 2],
+    /// Its ends on screen (CSS px, y down).
+    pub screen: [DVec2; 2],
+}
+
+/// [`edge_silhouettes`] with the mesh edge each segment is.
+pub fn outline_edges(mesh: &Mesh, bvh: &Bvh, camera: &Camera, viewport: DVec2) -> Vec<OutlineEdge> {
     if !camera.is_valid() {
         return Vec::new();
     }
@@ -47,7 +64,8 @@ pub fn edge_silhouettes(
             None if is_front[f.index()] => normals[f.index()],
             _ => continue,
         };
-        let [a, b] = [mesh.position(mesh.tail(h)), mesh.position(mesh.head(h))];
+        let vertices = [mesh.tail(h), mesh.head(h)];
+        let [a, b] = vertices.map(|v| mesh.position(v));
         if !is_seen(mesh, bvh, camera, a, b, outward.normalize_or_zero()) {
             continue;
         }
@@ -55,7 +73,10 @@ pub fn edge_silhouettes(
             camera.screen_from_world(a, viewport),
             camera.screen_from_world(b, viewport),
         ) {
-            segments.push([pa.truncate(), pb.truncate()]);
+            segments.push(OutlineEdge {
+                vertices,
+                screen: [pa.truncate(), pb.truncate()],
+            });
         }
     }
     segments

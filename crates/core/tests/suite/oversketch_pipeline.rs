@@ -775,3 +775,286 @@ fn a_manual_oversketch_op_replays_and_a_lost_handle_is_refused() {
     );
     assert_eq!(*editor.document(), before);
 }
+
+/// The first model of a mesh in the shared test data.
+fn scan(name: &str) -> Option<Mesh> {
+    let dir = crate::common::testdata()?;
+    let bytes = std::fs::read(dir.join("meshes").join(name)).unwrap();
+    let file = sketchmesh_core::io::ImportFile {
+        name,
+        bytes: &bytes,
+    };
+    let imported = sketchmesh_core::io::import_gltf(&file, &[], &Default::default()).unwrap();
+    Some(imported.models[0].mesh.clone())
+}
+
+/// A camera looking at the whole of `mesh` from `direction`, its outline filling about
+/// half of the viewport.
+fn camera_from(mesh: &Mesh, direction: DVec3) -> Camera {
+    let (lo, hi) = mesh.bounding_box().unwrap();
+    let centre = 0.5 * (lo + hi);
+    let radius = 0.5 * (hi - lo).length();
+    Camera {
+        eye: centre + direction.normalize() * 2.5 * radius,
+        target: centre,
+        ..Camera::default()
+    }
+}
+
+/// A stroke over the piece of `outline` (open or closed) centred on its point `anchor`,
+/// `half_span` points either side, pushed by `push · sin(π u)` px towards `outward`,
+/// smoothed and resampled every 1 px.
+fn pushed_piece(
+    outline: &[DVec2],
+    anchor: usize,
+    half_span: usize,
+    push: f64,
+    outward: DVec2,
+) -> Vec<DVec2> {
+    let piece =
+        &outline[anchor.saturating_sub(half_span)..(anchor + half_span + 1).min(outline.len())];
+    let count = piece.len();
+    let pushed: Vec<DVec2> = (0..count)
+        .map(|k| {
+            let before = piece[k.saturating_sub(1)];
+            let after = piece[(k + 1).min(count - 1)];
+            let mut normal = (after - before).perp().normalize();
+            if normal.dot(outward) < 0.0 {
+                normal = -normal;
+            }
+            let u = k as f64 / (count - 1) as f64;
+            piece[k] + normal * push * (PI * u).sin()
+        })
+        .collect();
+    resample(&smooth(&pushed, 4), 1.0)
+}
+
+/// The topmost point (smallest y) of any of `outlines` among those whose x lies within
+/// `[from, to]` of their width: the outline's index and the point's.
+fn top_between(outlines: &[Vec<DVec2>], from: f64, to: f64) -> (usize, usize) {
+    let (lo, hi) = outlines
+        .iter()
+        .flatten()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+            (lo.min(p.x), hi.max(p.x))
+        });
+    let range = (lo + from * (hi - lo))..=(lo + to * (hi - lo));
+    outlines
+        .iter()
+        .enumerate()
+        .flat_map(|(i, outline)| outline.iter().enumerate().map(move |(k, p)| (i, k, *p)))
+        .filter(|(_, _, p)| range.contains(&p.x))
+        .min_by(|a, b| a.2.y.total_cmp(&b.2.y))
+        .map(|(i, k, _)| (i, k))
+        .unwrap()
+}
+
+/// Redrawing part of the back of spot seen from either side (pushed out and in, short and
+/// long strokes), and an ear of the bunny from several sides: the outline as rendered lands
+/// within 2 px of the stroke over its middle 80%, as on generated shapes.
+#[test]
+fn scan_outlines_land_on_the_stroke() {
+    // Mesh, view direction, where along the outline's width its top is redrawn, points of
+    // outline either side, push (px, outwards).
+    let cases = [
+        ("spot.glb", DVec3::X, (0.25, 0.45), 25, 12.0),
+        ("spot.glb", DVec3::NEG_X, (0.55, 0.75), 25, 12.0),
+        ("spot.glb", DVec3::X, (0.25, 0.45), 40, -8.0),
+        ("spot.glb", DVec3::NEG_X, (0.55, 0.75), 40, -8.0),
+        ("spot.glb", DVec3::NEG_X, (0.55, 0.75), 35, 20.0),
+        ("stanford_bunny.glb", DVec3::Z, (0.0, 1.0), 30, 10.0),
+        ("stanford_bunny.glb", DVec3::Z, (0.0, 1.0), 20, 20.0),
+        ("stanford_bunny.glb", DVec3::X, (0.0, 1.0), 30, 10.0),
+        ("stanford_bunny.glb", DVec3::NEG_X, (0.0, 1.0), 30, 15.0),
+        (
+            "stanford_bunny.glb",
+            DVec3::new(1.0, 0.0, 1.0),
+            (0.0, 1.0),
+            30,
+            15.0,
+        ),
+    ];
+    for (name, direction, (from, to), half_span, push) in cases {
+        let Some(mesh) = scan(name) else { return };
+        let camera = camera_from(&mesh, direction);
+        let all = outlines(&mesh, &camera);
+        let (which, anchor) = top_between(&all, from, to);
+        let stroke = pushed_piece(&all[which], anchor, half_span, push, DVec2::NEG_Y);
+        let result = oversketch(&mesh, &camera, VIEWPORT, &stroke)
+            .unwrap_or_else(|e| panic!("{name} from {direction}: {e}"));
+        let worst = worst_middle_distance(&mesh, &result.positions, &camera, &stroke);
+        eprintln!(
+            "{name} from {direction}: stroke {:.0} px pushed {push} px, ROI {}, worst {worst:.2} px",
+            length(&stroke),
+            result.roi_size
+        );
+        assert!(worst < 2.0, "{name} from {direction}: worst {worst} px");
+    }
+}
+
+/// The turning (degrees) of `polyline` at arclength `s`: the angle between the chords from
+/// `s − half` to `s` and from `s` to `s + half`.
+fn turning_at(polyline: &[DVec2], cumulative: &[f64], s: f64, half: f64) -> f64 {
+    use sketchmesh_core::curve::polyline::point_at;
+    let [a, b, c] = [s - half, s, s + half].map(|t| point_at(polyline, cumulative, t));
+    (b - a).angle_to(c - b).abs().to_degrees()
+}
+
+/// The largest turning over a `2 · half` px window of the outline piece nearest `at`, within
+/// `reach` px of it along the outline.
+fn largest_turning_near(outlines: &[Vec<DVec2>], at: DVec2, half: f64, reach: f64) -> f64 {
+    use sketchmesh_core::curve::polyline::closest_point;
+    let (outline, cumulative, closest) = outlines
+        .iter()
+        .filter(|o| o.len() >= 2)
+        .map(|o| {
+            let cumulative = cumulative_lengths(o);
+            let closest = closest_point(o, &cumulative, at);
+            (o, cumulative, closest)
+        })
+        .min_by(|a, b| a.2.distance.total_cmp(&b.2.distance))
+        .unwrap();
+    let steps = (2.0 * reach) as usize;
+    (0..=steps)
+        .map(|k| closest.arclength - reach + k as f64)
+        .map(|s| turning_at(outline, &cumulative, s, half))
+        .fold(0.0, f64::max)
+}
+
+/// A created ellipse over-sketched with a gentle bump on top: at each end of the stroke the
+/// new outline turns no more than 10° beyond the larger of the old outline's turning there
+/// and the stroke's own turning over its first (last) 20 px; and the control curve that was
+/// the outline is the outline still.
+#[test]
+fn an_oversketched_ellipse_joins_its_outline_without_a_kink() {
+    let ellipse: Vec<[f64; 3]> = (0..=160)
+        .map(|k| {
+            let a = TAU * k as f64 / 160.0;
+            [500.0 + 260.0 * a.cos(), 500.0 + 140.0 * a.sin(), 0.5]
+        })
+        .collect();
+    let mut editor = Editor::new();
+    editor
+        .apply(Op::Create(StrokeInput {
+            viewport: VIEWPORT.to_array(),
+            camera: Camera::default(),
+            stroke: ellipse,
+        }))
+        .unwrap();
+    let camera = Camera::default();
+    let before = outlines(&editor.document().models[0].mesh, &camera);
+    let outline = longest_outline(&editor.document().models[0].mesh, &camera);
+    // Drawn a little above the outline, as a hand does: its ends start 6 px off it.
+    let stroke: Vec<DVec2> = pushed_stroke(&outline, DVec2::NEG_Y, 40, 25.0)
+        .into_iter()
+        .map(|p| p - DVec2::new(0.0, 6.0))
+        .collect();
+    editor.apply(oversketch_op(&stroke)).unwrap();
+    let model = &editor.document().models[0];
+    let after = outlines(&model.mesh, &camera);
+    let stroke_cumulative = cumulative_lengths(&stroke);
+    let total = length(&stroke);
+    for (end, stroke_turning) in [
+        (
+            stroke[0],
+            turning_at(&stroke, &stroke_cumulative, 10.0, 10.0),
+        ),
+        (
+            stroke[stroke.len() - 1],
+            turning_at(&stroke, &stroke_cumulative, total - 10.0, 10.0),
+        ),
+    ] {
+        let old = largest_turning_near(&before, end, 5.0, 15.0);
+        let new = largest_turning_near(&after, end, 5.0, 15.0);
+        eprintln!(
+            "end {end}: new outline turns {new:.1}°, old {old:.1}°, stroke {stroke_turning:.1}°"
+        );
+        assert!(new <= old.max(stroke_turning) + 10.0, "a kink of {new}°");
+    }
+    let worst = worst_middle_distance(&model.mesh, model.mesh.positions(), &camera, &stroke);
+    let curve_off = model.curves[0]
+        .points(&model.mesh)
+        .iter()
+        .filter_map(|&p| camera.screen_from_world(p, VIEWPORT))
+        .map(|p| p.truncate())
+        .filter(|p| distance_to_polyline(*p, &stroke) < 30.0)
+        .map(|p| {
+            after
+                .iter()
+                .map(|o| distance_to_polyline(p, o))
+                .fold(f64::INFINITY, f64::min)
+        })
+        .fold(0.0, f64::max);
+    eprintln!(
+        "outline at most {worst:.2} px off the stroke; control curve at most {curve_off:.2} px off the outline"
+    );
+    assert!(worst < 2.0, "the outline is {worst} px off the stroke");
+    assert!(
+        curve_off < 1.0,
+        "the curve is {curve_off} px off the outline"
+    );
+}
+
+/// A stroke over both of the bunny's ears at once, whose outline jumps between them: it is
+/// refused, or it changes only the outline near it (vertices 150 px or more from the stroke
+/// stay exactly where they were).
+#[test]
+fn a_stroke_over_two_pieces_of_outline_keeps_the_rest() {
+    let Some(mesh) = scan("stanford_bunny.glb") else {
+        return;
+    };
+    let camera = camera_from(&mesh, DVec3::Z);
+    let all = outlines(&mesh, &camera);
+    // The ear behind, then the ear in front, as seen from the side.
+    let ears = [(0.15, 0.35), (0.4, 0.6)].map(|(from, to)| top_between(&all, from, to));
+    let tips = ears.map(|(which, k)| all[which][k]);
+    let mut strokes: Vec<Vec<DVec2>> = [(0.0, 5.0), (3.0, 10.0), (10.0, 20.0), (0.0, 40.0)]
+        .into_iter()
+        .map(|(lift, bulge)| {
+            let arc: Vec<DVec2> = (0..=100)
+                .map(|k| {
+                    let u = k as f64 / 100.0;
+                    tips[0].lerp(tips[1], u) - DVec2::new(0.0, lift + bulge * (PI * u).sin())
+                })
+                .collect();
+            resample(&arc, 1.0)
+        })
+        .collect();
+    // Along the top of each ear, 6 px above, joined across the gap.
+    let over_both: Vec<DVec2> = ears
+        .iter()
+        .flat_map(|&(which, k)| {
+            let outline = &all[which];
+            outline[k.saturating_sub(12)..(k + 13).min(outline.len())].to_vec()
+        })
+        .map(|p| p - DVec2::new(0.0, 6.0))
+        .collect();
+    strokes.push(resample(&over_both, 1.0));
+    for stroke in strokes {
+        let result = match oversketch(&mesh, &camera, VIEWPORT, &stroke) {
+            Ok(result) => result,
+            Err(refusal) => {
+                eprintln!("refused: {refusal}");
+                continue;
+            }
+        };
+        let far_and_moved = mesh
+            .vertices()
+            .filter(|&v| {
+                let p = camera
+                    .screen_from_world(mesh.position(v), VIEWPORT)
+                    .unwrap();
+                distance_to_polyline(p.truncate(), &stroke) >= 150.0
+            })
+            .filter(|&v| result.positions[v.index()] != mesh.position(v))
+            .count();
+        eprintln!(
+            "applied: ROI {}, {far_and_moved} far vertices moved",
+            result.roi_size
+        );
+        assert_eq!(
+            far_and_moved, 0,
+            "vertices 150 px or more from the stroke moved"
+        );
+    }
+}

@@ -15,12 +15,14 @@
 
 mod add;
 mod constraints;
+mod oversketch;
 mod pull;
 mod settle;
 mod shared;
 
 pub use add::add_curve_op;
 pub use constraints::{curve_type_toggle, erase_op, rub_op, set_curve_type_op};
+pub(super) use oversketch::oversketch_curve;
 pub(super) use pull::PullPreview;
 pub use pull::pull_op;
 pub use shared::CURVE_PICK_RADIUS_PX;

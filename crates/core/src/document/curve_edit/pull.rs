@@ -187,7 +187,7 @@ impl PullPreview {
 /// How far from the grabbed point (along the surface) a pull with a peel of `peel_radius`
 /// moves the surface: [`REGION_PER_PEEL`] peel radii, at least [`MIN_REGION`] of the
 /// model's size.
-fn region_radius(mesh: &crate::mesh::Mesh, peel_radius: f64) -> f64 {
+pub(super) fn region_radius(mesh: &crate::mesh::Mesh, peel_radius: f64) -> f64 {
     (REGION_PER_PEEL * peel_radius).max(MIN_REGION * bounding_diagonal(mesh))
 }
 

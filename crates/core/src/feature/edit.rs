@@ -3,7 +3,7 @@
 
 use glam::DVec3;
 
-use super::placement::place;
+use super::placement::{Placed, place};
 use super::targets::{Rows, bases, coefficients};
 use super::{FeatureError, FeatureKind, Sketch, embedding};
 use crate::deform::{DeformError, EditParams, HandleFit, LaplacianEdit, Rotations};
@@ -18,6 +18,43 @@ const BOUND_STEPS: u32 = 10;
 /// (cosine of 80°): a steeper wall is a fold on screen, and the ridge or ravine it belongs
 /// to is taller than five times its foot is wide.
 const FOLD_COS: f64 = 0.174;
+
+/// Places `sketch` on `mesh` and embeds it: where it lies and every vertex's position with
+/// the path on the sketch.
+///
+/// Errors: the sketch's refusals (see [`FeatureError`]), or a relaxation that cannot be
+/// solved.
+fn embed(mesh: &Mesh, sketch: &Sketch) -> Result<(Placed, Vec<DVec3>), FeatureError> {
+    let normals = vertex_normals(mesh);
+    let placed = place(mesh, &Bvh::new(mesh), &normals, sketch)?;
+    let targets = embedding::on_sketch(mesh, &normals, sketch, &placed.points, &placed.path);
+    let embedded = embedding::relax(mesh, &placed.region, &placed.path, &targets)
+        .map_err(DeformError::from)?;
+    Ok((placed, embedded))
+}
+
+/// A sketch on the surface made part of the mesh (§4.4.1): the edge path under it, and every
+/// vertex's position with the path moved onto the sketch and its surroundings relaxed. What
+/// a feature starts from, and the manual over-sketch's curve on the surface.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Embedded {
+    /// The edge path, from the sketch's first point to its last.
+    pub path: Vec<VertexId>,
+    /// Every vertex of the mesh.
+    pub positions: Vec<DVec3>,
+}
+
+/// Embeds `sketch` in `mesh`; see [`Embedded`].
+///
+/// Errors: the sketch's refusals (see [`FeatureError`]), or a relaxation that cannot be
+/// solved.
+pub fn embed_sketch(mesh: &Mesh, sketch: &Sketch) -> Result<Embedded, FeatureError> {
+    let (placed, positions) = embed(mesh, sketch)?;
+    Ok(Embedded {
+        path: placed.path,
+        positions,
+    })
+}
 
 /// A feature sketch on one mesh, ready to shape: see the [module docs](super).
 #[derive(Clone, Debug)]
@@ -51,11 +88,7 @@ impl FeatureEdit {
     /// Errors: the sketch's refusals (see [`FeatureError`]), or a region that cannot be
     /// solved.
     pub fn new(mesh: &Mesh, sketch: &Sketch, kind: FeatureKind) -> Result<Self, FeatureError> {
-        let normals = vertex_normals(mesh);
-        let placed = place(mesh, &Bvh::new(mesh), &normals, sketch)?;
-        let targets = embedding::on_sketch(mesh, &normals, sketch, &placed.points, &placed.path);
-        let embedded = embedding::relax(mesh, &placed.region, &placed.path, &targets)
-            .map_err(DeformError::from)?;
+        let (placed, embedded) = embed(mesh, sketch)?;
         let mut shaped = mesh.clone();
         shaped.positions_mut().copy_from_slice(&embedded);
         let normals = vertex_normals(&shaped);

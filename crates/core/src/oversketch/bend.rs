@@ -107,7 +107,7 @@ impl BendOptions {
 }
 
 /// Bends `mesh` so that `handle` lands on `stroke` (simplified, screen CSS px): the new
-/// positions and the ROI size.
+/// positions and the ROI (one flag per vertex).
 ///
 /// Errors: [`OversketchError::LowConfidence`] when the handle runs [`ROI_REACH_PX`] or
 /// farther from the stroke, [`OversketchError::NoPart`] when a part ROI is asked for and
@@ -119,7 +119,7 @@ pub(super) fn bend(
     handle: &HandleCurve,
     stroke: &[DVec2],
     options: BendOptions,
-) -> Result<(Vec<DVec3>, usize), OversketchError> {
+) -> Result<(Vec<DVec3>, Vec<bool>), OversketchError> {
     if handle
         .screen
         .iter()
@@ -151,7 +151,6 @@ pub(super) fn bend(
             part_roi(mesh, &vertices).ok_or(OversketchError::NoPart)?
         }
     };
-    let roi_size = roi.iter().filter(|&&r| r).count();
     let (points, targets) = if handle.is_silhouette {
         band_handles(mesh, &roi, &handle.points, &targets)
     } else {
@@ -171,7 +170,7 @@ pub(super) fn bend(
             snap_outline(mesh, camera, viewport, &roi, stroke, widths, &mut positions)?;
         }
     }
-    Ok((positions, roi_size))
+    Ok((positions, roi))
 }
 
 /// A near-handle ROI never reaches this far (px on screen) from the stroke, and a handle

@@ -6,13 +6,15 @@
 //!   nearest the stroke's ends ([`ManualHandle::Silhouette`]); the ends can then be dragged
 //!   to crop it (the `from`/`to` points move, `via` keeps the side of a closed outline);
 //! - drawn over the model anywhere else, it is a curve on the surface
-//!   ([`ManualHandle::Surface`]): each point cast onto the mesh along its picking ray.
+//!   ([`ManualHandle::Surface`]), embedded in the mesh as a feature sketch is (§4.4.1: the
+//!   edge path under it, moved onto it).
 //!
 //! The second stroke is the handle's new shape ([`oversketch_manual`]). A silhouette piece
 //! moves as in the automatic over-sketch (targets blended at the ends, the band around it
-//! carried along); a surface curve goes onto the stroke whole, its points constrained
-//! inside their triangles (Eq. 4.2). Both handles are kept as screen points, so a session
-//! replays them exactly with the same camera.
+//! carried along); a surface curve goes onto the stroke whole, its path vertices
+//! constrained (or, when it cannot be embedded, its points inside their triangles, Eq.
+//! 4.2). Both handles are kept as screen points, so a session replays them exactly with the
+//! same camera.
 
 use glam::{DVec2, DVec3};
 use serde::{Deserialize, Serialize};
@@ -26,6 +28,7 @@ use crate::curve::polyline::{
     closest_point, cumulative_lengths, distance_to_polyline, point_at, resample,
 };
 use crate::deform::HandlePoint;
+use crate::feature::{Embedded, Sketch, embed_sketch};
 use crate::geometry::Bvh;
 use crate::mesh::Mesh;
 
@@ -90,7 +93,7 @@ pub fn pick_handle(
     }
     let handle = ManualHandle::Surface { points: stroke };
     let on_surface = resolve(mesh, camera, viewport, &handle)?;
-    (on_surface.points.len() >= 2).then_some(handle)
+    (on_surface.curve.points.len() >= 2).then_some(handle)
 }
 
 /// The handle as it would move, on screen (CSS px), for highlighting; `None` when it no
@@ -101,7 +104,7 @@ pub fn manual_handle_preview(
     viewport: DVec2,
     handle: &ManualHandle,
 ) -> Option<Vec<DVec2>> {
-    resolve(mesh, camera, viewport, handle).map(|curve| curve.screen)
+    resolve(mesh, camera, viewport, handle).map(|resolved| resolved.curve.screen)
 }
 
 /// Moves `handle` onto `stroke` (its new shape, screen points in drawing order) and bends
@@ -129,7 +132,8 @@ pub fn oversketch_manual(
         .zip(stroke.last())
         .filter(|(a, b)| a != b)
         .ok_or(OversketchError::NoMatch)?;
-    let curve = resolve(mesh, camera, viewport, handle).ok_or(OversketchError::HandleLost)?;
+    let Resolved { curve, embedded } =
+        resolve(mesh, camera, viewport, handle).ok_or(OversketchError::HandleLost)?;
     let (first, last) = (curve.screen[0], curve.screen[curve.screen.len() - 1]);
     let curve = if start.distance(last) + end.distance(first)
         < start.distance(first) + end.distance(last)
@@ -138,13 +142,37 @@ pub fn oversketch_manual(
     } else {
         curve
     };
-    let (positions, roi_size) = bend(mesh, camera, viewport, &curve, &stroke, options)?;
+    let Some(embedded) = embedded else {
+        let (positions, roi) = bend(mesh, camera, viewport, &curve, &stroke, options)?;
+        return Ok(Oversketched {
+            positions,
+            handle: curve.screen,
+            roi_size: roi.iter().filter(|&&r| r).count(),
+            score: 1.0,
+        });
+    };
+    let mut on_curve = mesh.clone();
+    on_curve.positions_mut().copy_from_slice(&embedded);
+    let (positions, roi) = bend(&on_curve, camera, viewport, &curve, &stroke, options)?;
+    // The embedding moved the path's surroundings too: they belong to the region.
+    let roi_size = roi
+        .iter()
+        .zip(mesh.positions().iter().zip(&embedded))
+        .filter(|&(&r, (a, b))| r || a != b)
+        .count();
     Ok(Oversketched {
         positions,
         handle: curve.screen,
         roi_size,
         score: 1.0,
     })
+}
+
+/// A handle found on the mesh: its curve, and for a curve on the surface, every vertex's
+/// position with the curve embedded (the curve's points are then those vertices).
+struct Resolved {
+    curve: HandleCurve,
+    embedded: Option<Vec<DVec3>>,
 }
 
 /// The handle's points on the mesh as seen now; `None` (or fewer than two points) when the
@@ -154,14 +182,15 @@ fn resolve(
     camera: &Camera,
     viewport: DVec2,
     handle: &ManualHandle,
-) -> Option<HandleCurve> {
-    let curve = match handle {
-        ManualHandle::Silhouette { from, via, to } => {
-            silhouette_piece(mesh, camera, viewport, [*from, *via, *to])?
-        }
+) -> Option<Resolved> {
+    let resolved = match handle {
+        ManualHandle::Silhouette { from, via, to } => Resolved {
+            curve: silhouette_piece(mesh, camera, viewport, [*from, *via, *to])?,
+            embedded: None,
+        },
         ManualHandle::Surface { points } => surface_curve(mesh, camera, viewport, points),
     };
-    (curve.points.len() >= 2).then_some(curve)
+    (resolved.curve.points.len() >= 2).then_some(resolved)
 }
 
 /// The piece of the silhouette nearest `via` between the points nearest `from` and `to`,
@@ -212,9 +241,47 @@ fn silhouette_piece(
     )))
 }
 
+/// A curve drawn on the surface, embedded as feature sketches are (§4.4.1): the edge path
+/// under it with its vertices moved onto it ([`embed_sketch`]), so that the handle is made
+/// of mesh vertices lying on the curve as drawn. A curve the embedding refuses (one that
+/// leaves the mesh or folds back) is taken as drawn instead: its points inside their
+/// triangles ([`points_in_faces`], Eq. 4.2).
+fn surface_curve(mesh: &Mesh, camera: &Camera, viewport: DVec2, points: &[DVec2]) -> Resolved {
+    let sketch = Sketch {
+        camera: *camera,
+        viewport,
+        points: points.to_vec(),
+        region: None,
+    };
+    let Ok(Embedded { path, positions }) = embed_sketch(mesh, &sketch) else {
+        return Resolved {
+            curve: points_in_faces(mesh, camera, viewport, points),
+            embedded: None,
+        };
+    };
+    let worlds: Vec<DVec3> = path.iter().map(|v| positions[v.index()]).collect();
+    let screen = worlds
+        .iter()
+        .map(|&p| {
+            camera
+                .screen_from_world(p, viewport)
+                .map_or(DVec2::ZERO, |s| s.truncate())
+        })
+        .collect();
+    Resolved {
+        curve: HandleCurve {
+            points: path.iter().map(|&v| HandlePoint::vertex(v)).collect(),
+            worlds,
+            screen,
+            is_silhouette: false,
+        },
+        embedded: Some(positions),
+    }
+}
+
 /// The points where the rays through `points` (resampled every
 /// [`SURFACE_HANDLE_SPACING_PX`]) first meet the mesh, one per triangle.
-fn surface_curve(mesh: &Mesh, camera: &Camera, viewport: DVec2, points: &[DVec2]) -> HandleCurve {
+fn points_in_faces(mesh: &Mesh, camera: &Camera, viewport: DVec2, points: &[DVec2]) -> HandleCurve {
     let bvh = Bvh::new(mesh);
     let mut curve = HandleCurve {
         points: Vec::new(),

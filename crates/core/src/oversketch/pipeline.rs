@@ -83,11 +83,11 @@ pub fn oversketch_with(
         return Err(OversketchError::LowConfidence);
     }
     let handle = HandleCurve::of_silhouette(&found.points);
-    let (positions, roi_size) = bend(mesh, camera, viewport, &handle, &found.stroke, options)?;
+    let (positions, roi) = bend(mesh, camera, viewport, &handle, &found.stroke, options)?;
     Ok(Oversketched {
         positions,
         handle: handle.screen,
-        roi_size,
+        roi_size: roi.iter().filter(|&&r| r).count(),
         score: found.score,
     })
 }

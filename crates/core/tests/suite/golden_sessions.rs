@@ -62,8 +62,9 @@ use sketchmesh_core::oversketch::{ManualHandle, OversketchRoi, pick_handle};
 /// `oversketch_part_roi`, when over-sketching was made to land the rendered outline on the
 /// stroke without seams (issue 19): the outline's vertices are snapped onto the stroke after
 /// the bend, the ends blend with a smoothstep over at least 20 px, the near-handle region
-/// reaches at least three edges and never 150 px past the stroke, and a created model's
-/// control curve is moved and the surface settled instead of the mesh bent.
+/// reaches at least three edges and never 150 px past the stroke, a created model's
+/// control curve is moved and the surface settled instead of the mesh bent, and a manual
+/// handle drawn on the surface is embedded in the mesh as a feature sketch is.
 /// Sessions allowed to differ slightly from their golden, each with the reason: an entry
 /// needs a refactor that had to reorder floating-point operations, named here.
 const ALLOWANCES: &[(&str, &str)] = &[];

@@ -2,7 +2,7 @@
 //! switches, status.
 
 use sketchmesh_core::document::{Editor, OversketchFit};
-use sketchmesh_core::oversketch::OversketchRoi;
+use sketchmesh_core::oversketch::{OutlineKind, OversketchRoi};
 
 use crate::render::ViewOptions;
 use crate::tools::{Mode, OversketchSettings, ToolOutput, ToolSet};
@@ -162,6 +162,12 @@ fn oversketch_options_ui(ui: &mut egui::Ui, settings: &mut OversketchSettings) {
                 moves, farther for a longer pull (A)";
     let roi = [OversketchRoi::Part, OversketchRoi::NearHandle];
     toggle_between(ui, &mut settings.roi, roi, "Whole part", hint);
+    if settings.manual {
+        let hint = "On: pick the outline as drawn, along mesh edges: a sharp crest seen \
+                    edge-on, such as a ridge. Off: the smooth silhouette between them";
+        let outline = [OutlineKind::Edge, OutlineKind::Smooth];
+        toggle_between(ui, &mut settings.outline, outline, "Edge outline", hint);
+    }
 }
 
 /// A toggle button for a setting with two values, `[on, off]`.

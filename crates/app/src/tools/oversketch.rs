@@ -18,7 +18,7 @@ use glam::DVec2;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{Document, Op, OversketchFit, OversketchInput, StrokeInput};
 use sketchmesh_core::oversketch::{
-    ManualHandle, OversketchRoi, manual_handle_preview, pick_handle,
+    ManualHandle, OutlineKind, OversketchRoi, manual_handle_preview, pick_handle,
 };
 
 use super::context::{ToolOutput, ViewCtx};
@@ -49,6 +49,9 @@ pub struct OversketchSettings {
     pub manual: bool,
     /// Which region may move.
     pub roi: OversketchRoi,
+    /// Which outline a manual pick takes: the smooth silhouette, or the mesh edges as
+    /// rendered (a sharp crest seen edge-on).
+    pub outline: OutlineKind,
 }
 
 /// A handle picked in manual mode, with the view it was picked in.
@@ -132,10 +135,15 @@ impl OversketchTool {
             self.handle = None;
             return ToolOutput::Commit(self.op(input, Some(picked.handle)));
         }
-        let picked = doc
-            .models
-            .iter()
-            .find_map(|model| pick_handle(&model.mesh, &input.camera, viewport, &stroke));
+        let picked = doc.models.iter().find_map(|model| {
+            pick_handle(
+                &model.mesh,
+                &input.camera,
+                viewport,
+                &stroke,
+                self.settings.outline,
+            )
+        });
         let Some(handle) = picked else {
             return ToolOutput::Refused(String::from(
                 "Draw along an outline, or across the model, to pick what moves.",
@@ -153,7 +161,13 @@ impl OversketchTool {
     /// The pick with one end moved, when `stroke` starts at an end of a picked outline piece
     /// and runs along the outline (a crop); `None` when it is the piece's new shape.
     fn cropped(&self, picked: &Picked, stroke: &[DVec2], doc: &Document) -> Option<Picked> {
-        let ManualHandle::Silhouette { from, via, to } = picked.handle else {
+        let ManualHandle::Silhouette {
+            from,
+            via,
+            to,
+            outline,
+        } = picked.handle
+        else {
             return None;
         };
         let shown = &self.handle.as_ref()?.points;
@@ -165,14 +179,30 @@ impl OversketchTool {
         }
         let is_along = doc.models.iter().any(|model| {
             matches!(
-                pick_handle(&model.mesh, &picked.camera, picked.viewport, stroke),
+                pick_handle(
+                    &model.mesh,
+                    &picked.camera,
+                    picked.viewport,
+                    stroke,
+                    outline
+                ),
                 Some(ManualHandle::Silhouette { .. })
             )
         });
         let handle = if to_last < to_first {
-            ManualHandle::Silhouette { from, via, to: end }
+            ManualHandle::Silhouette {
+                from,
+                via,
+                to: end,
+                outline,
+            }
         } else {
-            ManualHandle::Silhouette { from: end, via, to }
+            ManualHandle::Silhouette {
+                from: end,
+                via,
+                to,
+                outline,
+            }
         };
         is_along.then(|| Picked {
             handle,

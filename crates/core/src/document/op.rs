@@ -403,6 +403,7 @@ impl StrokeInput {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::oversketch::OutlineKind;
 
     fn stroke() -> StrokeInput {
         StrokeInput {
@@ -441,6 +442,7 @@ mod tests {
                     from: DVec2::ZERO,
                     via: DVec2::X,
                     to: DVec2::ONE,
+                    outline: OutlineKind::Edge,
                 }),
             }),
             Op::Pull(stroke()),

@@ -31,6 +31,7 @@ use crate::deform::HandlePoint;
 use crate::feature::{Embedded, Sketch, embed_sketch};
 use crate::geometry::Bvh;
 use crate::mesh::Mesh;
+use crate::silhouette::{OutlineChain, Silhouette, outline_chains};
 
 /// A pick stroke whose ends and [`PICK_SHARE`] of its points lie this close (px) to one
 /// silhouette picks that silhouette; a `via` point this close to a silhouette finds it again.
@@ -57,6 +58,9 @@ pub enum ManualHandle {
         via: DVec2,
         /// The other end.
         to: DVec2,
+        /// Which outline the piece is taken from.
+        #[serde(default, skip_serializing_if = "OutlineKind::is_smooth")]
+        outline: OutlineKind,
     },
     /// A curve on the surface: the points where these screen points' rays meet the mesh.
     Surface {
@@ -65,8 +69,29 @@ pub enum ManualHandle {
     },
 }
 
-/// The handle a pick stroke selects: a silhouette piece when the stroke's ends and
-/// [`PICK_SHARE`] of its points lie within [`PICK_DISTANCE_PX`] of one visible silhouette,
+/// Which outline a manual handle is picked from (Nealen §4.3).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum OutlineKind {
+    /// The smooth silhouette: where the interpolated normals turn edge-on, inside the
+    /// faces; it follows a smooth surface between its vertices.
+    #[default]
+    Smooth,
+    /// The edge silhouette: the mesh edges between faces turned towards and away from the
+    /// eye, the outline as rendered. A sharp crest seen edge-on (a ridge, a camel's nose) is
+    /// one, where the smooth silhouette may pass beside it or not at all.
+    Edge,
+}
+
+impl OutlineKind {
+    /// Whether this is the default (for serde's `skip_serializing_if`).
+    pub fn is_smooth(&self) -> bool {
+        *self == OutlineKind::Smooth
+    }
+}
+
+/// The handle a pick stroke selects: a piece of the `outline` when the stroke's ends and
+/// [`PICK_SHARE`] of its points lie within [`PICK_DISTANCE_PX`] of one visible outline,
 /// else a curve on the surface when at least two of its points hit the mesh. `None`
 /// otherwise.
 pub fn pick_handle(
@@ -74,10 +99,11 @@ pub fn pick_handle(
     camera: &Camera,
     viewport: DVec2,
     stroke: &[DVec2],
+    outline: OutlineKind,
 ) -> Option<ManualHandle> {
     let stroke = simplify_stroke(stroke);
     let (&from, &to) = (stroke.first()?, stroke.last()?);
-    let (_, polylines) = seen_silhouettes(mesh, camera, viewport);
+    let polylines = SeenOutline::new(mesh, camera, viewport, outline).polylines;
     let samples = resample(&stroke, 2.0);
     let follows = |polyline: &Vec<DVec2>| {
         if polyline.len() < 2 {
@@ -89,7 +115,12 @@ pub fn pick_handle(
     };
     if from.distance(to) > 0.0 && polylines.iter().any(follows) {
         let via = stroke_midpoint(&stroke);
-        return Some(ManualHandle::Silhouette { from, via, to });
+        return Some(ManualHandle::Silhouette {
+            from,
+            via,
+            to,
+            outline,
+        });
     }
     let handle = ManualHandle::Surface { points: stroke };
     let on_surface = resolve(mesh, camera, viewport, &handle)?;
@@ -184,8 +215,13 @@ fn resolve(
     handle: &ManualHandle,
 ) -> Option<Resolved> {
     let resolved = match handle {
-        ManualHandle::Silhouette { from, via, to } => Resolved {
-            curve: silhouette_piece(mesh, camera, viewport, [*from, *via, *to])?,
+        ManualHandle::Silhouette {
+            from,
+            via,
+            to,
+            outline,
+        } => Resolved {
+            curve: silhouette_piece(mesh, camera, viewport, *outline, [*from, *via, *to])?,
             embedded: None,
         },
         ManualHandle::Surface { points } => surface_curve(mesh, camera, viewport, points),
@@ -193,15 +229,17 @@ fn resolve(
     (resolved.curve.points.len() >= 2).then_some(resolved)
 }
 
-/// The piece of the silhouette nearest `via` between the points nearest `from` and `to`,
+/// The piece of the `outline` nearest `via` between the points nearest `from` and `to`,
 /// the way round that passes `via`.
 fn silhouette_piece(
     mesh: &Mesh,
     camera: &Camera,
     viewport: DVec2,
+    outline: OutlineKind,
     [from, via, to]: [DVec2; 3],
 ) -> Option<HandleCurve> {
-    let (curves, polylines) = seen_silhouettes(mesh, camera, viewport);
+    let seen = SeenOutline::new(mesh, camera, viewport, outline);
+    let polylines = &seen.polylines;
     let nearest = polylines
         .iter()
         .enumerate()
@@ -234,11 +272,86 @@ fn silhouette_piece(
         .into_iter()
         .map(|(index, _)| index)
         .collect();
-    Some(HandleCurve::of_silhouette(&piece_points(
-        &curves[nearest.0],
-        polyline.len(),
-        &indices,
-    )))
+    Some(seen.piece(mesh, nearest.0, &indices))
+}
+
+/// The visible outlines of one kind as seen, with their screen polylines (a closed one
+/// repeats its first point at the end, as matching expects).
+struct SeenOutline {
+    curves: Curves,
+    polylines: Vec<Vec<DVec2>>,
+}
+
+/// The outlines behind [`SeenOutline::polylines`].
+enum Curves {
+    Smooth(Vec<Silhouette>),
+    Edge(Vec<OutlineChain>),
+}
+
+impl SeenOutline {
+    fn new(mesh: &Mesh, camera: &Camera, viewport: DVec2, outline: OutlineKind) -> Self {
+        match outline {
+            OutlineKind::Smooth => {
+                let (curves, polylines) = seen_silhouettes(mesh, camera, viewport);
+                SeenOutline {
+                    curves: Curves::Smooth(curves),
+                    polylines,
+                }
+            }
+            OutlineKind::Edge => {
+                let chains = outline_chains(mesh, &Bvh::new(mesh), camera, viewport);
+                let polylines = chains
+                    .iter()
+                    .map(|chain| {
+                        let mut points = chain.screen.clone();
+                        if chain.closed {
+                            points.push(points[0]);
+                        }
+                        points
+                    })
+                    .collect();
+                SeenOutline {
+                    curves: Curves::Edge(chains),
+                    polylines,
+                }
+            }
+        }
+    }
+
+    /// The handle along outline `which` at fractional polyline `indices`: silhouette
+    /// points inside their edges, or the chain's vertices, each once.
+    fn piece(&self, mesh: &Mesh, which: usize, indices: &[f64]) -> HandleCurve {
+        let polyline_len = self.polylines[which].len();
+        match &self.curves {
+            Curves::Smooth(curves) => {
+                HandleCurve::of_silhouette(&piece_points(&curves[which], polyline_len, indices))
+            }
+            Curves::Edge(chains) => {
+                let chain = &chains[which];
+                let n = chain.vertices.len();
+                let mut ks: Vec<usize> = Vec::new();
+                for &index in indices {
+                    // The repeated closing point of a closed chain is its vertex 0.
+                    let k = (index.round() as usize).min(polyline_len - 1) % n;
+                    if !ks.contains(&k) {
+                        ks.push(k);
+                    }
+                }
+                HandleCurve {
+                    points: ks
+                        .iter()
+                        .map(|&k| HandlePoint::vertex(chain.vertices[k]))
+                        .collect(),
+                    worlds: ks
+                        .iter()
+                        .map(|&k| mesh.position(chain.vertices[k]))
+                        .collect(),
+                    screen: ks.iter().map(|&k| chain.screen[k]).collect(),
+                    is_silhouette: true,
+                }
+            }
+        }
+    }
 }
 
 /// A curve drawn on the surface, embedded as feature sketches are (§4.4.1): the edge path

@@ -42,8 +42,8 @@ pub use bend::{
 pub use candidate::MatchParams;
 pub use error::OversketchError;
 pub use manual::{
-    ManualHandle, PICK_DISTANCE_PX, PICK_SHARE, SURFACE_HANDLE_SPACING_PX, manual_handle_preview,
-    oversketch_manual, pick_handle,
+    ManualHandle, OutlineKind, PICK_DISTANCE_PX, PICK_SHARE, SURFACE_HANDLE_SPACING_PX,
+    manual_handle_preview, oversketch_manual, pick_handle,
 };
 pub use mapping::{BLEND_WIDTH, blend_ends, blend_weight, map_point_to_stroke, map_to_stroke};
 pub use matching::{Match, STROKE_SPACING_PX, STROKE_TOLERANCE_PX, match_stroke, simplify_stroke};

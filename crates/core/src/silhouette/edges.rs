@@ -12,6 +12,8 @@
 //! [`super::visibility::OFFSET_EDGES`] edge lengths along the mean of its faces' normals,
 //! as for smooth silhouette points.
 
+use std::collections::{BTreeMap, BTreeSet};
+
 use glam::{DVec2, DVec3};
 
 use super::visibility::{MARGIN_EDGES, OFFSET_EDGES, ray_origin};
@@ -82,6 +84,86 @@ pub fn outline_edges(mesh: &Mesh, bvh: &Bvh, camera: &Camera, viewport: DVec2) -
     segments
 }
 
+/// A run of visible edge silhouettes joined end to end: the outline as rendered, as a
+/// polyline of mesh vertices.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OutlineChain {
+    /// The vertices in order (a closed chain does not repeat its first).
+    pub vertices: Vec<VertexId>,
+    /// Where each is drawn (CSS px, y down).
+    pub screen: Vec<DVec2>,
+    /// Whether the last vertex joins the first.
+    pub closed: bool,
+}
+
+/// The visible edge silhouettes ([`outline_edges`]) joined into chains: each runs between
+/// two vertices where the outline ends or branches (or round a loop), in vertex order of
+/// its start, so the same mesh and view give the same chains.
+pub fn outline_chains(
+    mesh: &Mesh,
+    bvh: &Bvh,
+    camera: &Camera,
+    viewport: DVec2,
+) -> Vec<OutlineChain> {
+    let edges = outline_edges(mesh, bvh, camera, viewport);
+    let mut neighbours: BTreeMap<VertexId, Vec<VertexId>> = BTreeMap::new();
+    let mut screen: BTreeMap<VertexId, DVec2> = BTreeMap::new();
+    for edge in &edges {
+        let [a, b] = edge.vertices;
+        neighbours.entry(a).or_default().push(b);
+        neighbours.entry(b).or_default().push(a);
+        screen.insert(a, edge.screen[0]);
+        screen.insert(b, edge.screen[1]);
+    }
+    let key = |a: VertexId, b: VertexId| if a < b { (a, b) } else { (b, a) };
+    let mut walked: BTreeSet<(VertexId, VertexId)> = BTreeSet::new();
+    let walk = |start: VertexId, next: VertexId, walked: &mut BTreeSet<_>| {
+        let mut vertices = vec![start];
+        let (mut previous, mut current) = (start, next);
+        walked.insert(key(start, next));
+        loop {
+            if current == start {
+                return (vertices, true);
+            }
+            vertices.push(current);
+            let around = &neighbours[&current];
+            let onward = (around.len() == 2)
+                .then(|| around.iter().copied().find(|&w| w != previous))
+                .flatten()
+                .filter(|&w| !walked.contains(&key(current, w)));
+            let Some(w) = onward else {
+                return (vertices, false);
+            };
+            walked.insert(key(current, w));
+            (previous, current) = (current, w);
+        }
+    };
+    let mut chains = Vec::new();
+    // Open runs first, from every end or branch; then the loops left over.
+    let ends: Vec<VertexId> = neighbours
+        .iter()
+        .filter(|(_, around)| around.len() != 2)
+        .map(|(&v, _)| v)
+        .collect();
+    let starts = ends
+        .into_iter()
+        .chain(neighbours.keys().copied().collect::<Vec<_>>());
+    for start in starts {
+        for next in neighbours[&start].clone() {
+            if !walked.contains(&key(start, next)) {
+                let (vertices, closed) = walk(start, next, &mut walked);
+                let screen = vertices.iter().map(|v| screen[v]).collect();
+                chains.push(OutlineChain {
+                    vertices,
+                    screen,
+                    closed,
+                });
+            }
+        }
+    }
+    chains
+}
+
 /// Whether face `f` (unit normal `normal`) turns its front towards the eye.
 fn faces_viewer(mesh: &Mesh, camera: &Camera, normal: DVec3, f: FaceId) -> bool {
     match camera.ortho_height {
@@ -144,5 +226,19 @@ mod tests {
         let mut ends: Vec<DVec2> = segments.iter().flatten().copied().collect();
         ends.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
         assert!(ends.chunks(2).all(|pair| pair[0] == pair[1]));
+        // Joined, they are one loop through every segment.
+        let chains = outline_chains(&mesh, &bvh, &camera, viewport);
+        assert_eq!(chains.len(), 1);
+        assert!(chains[0].closed);
+        assert_eq!(chains[0].vertices.len(), segments.len());
+        let n = chains[0].screen.len();
+        for k in 0..n {
+            let (a, b) = (chains[0].screen[k], chains[0].screen[(k + 1) % n]);
+            assert!(
+                segments
+                    .iter()
+                    .any(|s| (s[0] == a && s[1] == b) || (s[0] == b && s[1] == a))
+            );
+        }
     }
 }

@@ -32,7 +32,7 @@ mod visibility;
 
 use glam::DVec2;
 
-pub use edges::{OutlineEdge, edge_silhouettes, outline_edges};
+pub use edges::{OutlineChain, OutlineEdge, edge_silhouettes, outline_chains, outline_edges};
 pub use points::{Silhouette, SilhouettePoint};
 
 use crate::camera::Camera;

@@ -57,7 +57,7 @@ use sketchmesh_core::document::{
 use sketchmesh_core::feature::FeatureKind;
 use sketchmesh_core::geometry::{Bvh, vertex_normals};
 use sketchmesh_core::mesh::primitives;
-use sketchmesh_core::oversketch::{OversketchRoi, pick_handle};
+use sketchmesh_core::oversketch::{OutlineKind, OversketchRoi, pick_handle};
 
 /// Ops per case at most (the first is a create or an import).
 const MAX_OPS: usize = 10;
@@ -600,13 +600,13 @@ fn op_for(step: &Step, document: &Document) -> Op {
                 Manual::Automatic => None,
                 Manual::Silhouette => {
                     let on = pushed_stroke(&outline, direction, half_span, 0.0);
-                    pick_handle(mesh, &camera, VIEWPORT, &on)
+                    pick_handle(mesh, &camera, VIEWPORT, &on, OutlineKind::Smooth)
                 }
                 Manual::Surface => {
                     let (centre, radius) = projection(model, &camera).unwrap_or_default();
                     let half = 0.4 * radius * direction;
                     let line = segment(centre - half, centre + half);
-                    let handle = pick_handle(mesh, &camera, VIEWPORT, &line);
+                    let handle = pick_handle(mesh, &camera, VIEWPORT, &line, OutlineKind::Smooth);
                     let moved: Vec<DVec2> =
                         line.iter().map(|&p| p + direction.perp() * *push).collect();
                     return oversketch(VIEWPORT, camera, &moved, fit, roi, handle);

@@ -40,7 +40,7 @@ use serde_json::{Value, json};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{CurveKind, Document, Editor, Op, OversketchFit, Session};
 use sketchmesh_core::mesh::primitives;
-use sketchmesh_core::oversketch::{ManualHandle, OversketchRoi, pick_handle};
+use sketchmesh_core::oversketch::{ManualHandle, OutlineKind, OversketchRoi, pick_handle};
 
 /// Re-recorded on purpose: `import_created`'s golden, when control curves became chains of
 /// vertices (issue 15). The import now turns the file's curve points into a vertex chain and
@@ -673,7 +673,7 @@ fn oversketch_imported() -> Editor {
     let mesh = editor.document().models[0].mesh.clone();
     let outline = longest_outline(&mesh, &camera, SQUARE).unwrap();
     let on_outline = pushed_stroke(&outline, DVec2::NEG_X, 20, 0.0);
-    let handle = pick_handle(&mesh, &camera, SQUARE, &on_outline).unwrap();
+    let handle = pick_handle(&mesh, &camera, SQUARE, &on_outline, OutlineKind::Smooth).unwrap();
     assert!(
         matches!(handle, ManualHandle::Silhouette { .. }),
         "{handle:?}"
@@ -691,7 +691,7 @@ fn oversketch_imported() -> Editor {
             .collect()
     };
     let mesh = editor.document().models[0].mesh.clone();
-    let handle = pick_handle(&mesh, &camera, SQUARE, &line(40.0)).unwrap();
+    let handle = pick_handle(&mesh, &camera, SQUARE, &line(40.0), OutlineKind::Smooth).unwrap();
     assert!(matches!(handle, ManualHandle::Surface { .. }), "{handle:?}");
     apply(
         &mut editor,

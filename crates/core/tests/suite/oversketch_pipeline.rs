@@ -21,9 +21,9 @@ use sketchmesh_core::geometry::{Bvh, cotan_laplacian};
 use sketchmesh_core::io::write_glb;
 use sketchmesh_core::mesh::{Mesh, primitives};
 use sketchmesh_core::oversketch::{
-    BendOptions, ManualHandle, OversketchError, OversketchRoi, Oversketched, SOFT_FIT_WEIGHT,
-    manual_handle_preview, oversketch, oversketch_manual, oversketch_with, pick_handle,
-    preview_handle,
+    BendOptions, ManualHandle, OutlineKind, OversketchError, OversketchRoi, Oversketched,
+    SOFT_FIT_WEIGHT, manual_handle_preview, oversketch, oversketch_manual, oversketch_with,
+    pick_handle, preview_handle,
 };
 use sketchmesh_core::silhouette::{edge_silhouettes, silhouettes};
 
@@ -629,7 +629,7 @@ fn a_picked_silhouette_piece_moves_onto_its_new_shape_and_crops() {
     let camera = Camera::default();
     let outline = longest_outline(&mesh, &camera);
     let along = pushed_stroke(&outline, DVec2::X, 60, 0.0);
-    let handle = pick_handle(&mesh, &camera, VIEWPORT, &along).unwrap();
+    let handle = pick_handle(&mesh, &camera, VIEWPORT, &along, OutlineKind::Smooth).unwrap();
     let ManualHandle::Silhouette { from, .. } = handle else {
         panic!("a stroke along the outline should pick it, got {handle:?}");
     };
@@ -647,6 +647,7 @@ fn a_picked_silhouette_piece_moves_onto_its_new_shape_and_crops() {
         from,
         via: along[along.len() / 4],
         to: half,
+        outline: OutlineKind::Smooth,
     };
     let preview = manual_handle_preview(&mesh, &camera, VIEWPORT, &cropped).unwrap();
     assert!(preview.last().unwrap().distance(half) < 3.0);
@@ -669,6 +670,7 @@ fn a_picked_silhouette_piece_moves_onto_its_new_shape_and_crops() {
         from,
         via: far_side,
         to: half,
+        outline: OutlineKind::Smooth,
     };
     let long = manual_handle_preview(&mesh, &camera, VIEWPORT, &long_way).unwrap();
     assert!(
@@ -693,7 +695,7 @@ fn a_curve_drawn_on_the_surface_moves_to_its_new_position_at_its_depth() {
             .collect()
     };
     let drawn = line(0.0);
-    let handle = pick_handle(&mesh, &camera, VIEWPORT, &drawn).unwrap();
+    let handle = pick_handle(&mesh, &camera, VIEWPORT, &drawn, OutlineKind::Smooth).unwrap();
     assert!(matches!(handle, ManualHandle::Surface { .. }), "{handle:?}");
     let moved_to = line(-30.0);
     let result = oversketch_manual(
@@ -708,7 +710,10 @@ fn a_curve_drawn_on_the_surface_moves_to_its_new_position_at_its_depth() {
     assert_outside_unmoved(&mesh, &result);
     // The handle is the curve embedded: mesh vertices moved onto it as drawn.
     for &p in &result.handle {
-        assert!(distance_to_polyline(p, &drawn) < 0.1, "{p} off the drawn curve");
+        assert!(
+            distance_to_polyline(p, &drawn) < 0.1,
+            "{p} off the drawn curve"
+        );
     }
     let mut bent = mesh.clone();
     bent.positions_mut().copy_from_slice(&result.positions);
@@ -738,7 +743,7 @@ fn a_manual_oversketch_op_replays_and_a_lost_handle_is_refused() {
     let camera = Camera::default();
     let outline = longest_outline(&mesh, &camera);
     let along = pushed_stroke(&outline, DVec2::X, 40, 0.0);
-    let handle = pick_handle(&mesh, &camera, VIEWPORT, &along).unwrap();
+    let handle = pick_handle(&mesh, &camera, VIEWPORT, &along, OutlineKind::Smooth).unwrap();
     let stroke = pushed_stroke(&outline, DVec2::X, 40, 30.0);
     let op = |handle: ManualHandle| {
         Op::Oversketch(OversketchInput {
@@ -776,6 +781,7 @@ fn a_manual_oversketch_op_replays_and_a_lost_handle_is_refused() {
         from: DVec2::new(5.0, 5.0),
         via: DVec2::new(10.0, 5.0),
         to: DVec2::new(15.0, 5.0),
+        outline: OutlineKind::Smooth,
     };
     assert_eq!(
         editor.apply(op(nowhere)),
@@ -1065,4 +1071,79 @@ fn a_stroke_over_two_pieces_of_outline_keeps_the_rest() {
             "vertices 150 px or more from the stroke moved"
         );
     }
+}
+
+/// The camel-nose workflow (Nealen Fig. 4.2): a ridge sketched down the front of a sphere,
+/// then seen from the side, where its crest is the outline as rendered. Picked as an edge
+/// outline and redrawn farther out, the rendered outline lands on the new stroke; the far
+/// side of the sphere stays.
+#[test]
+fn a_ridge_seen_edge_on_is_an_outline_the_oversketch_edits() {
+    use sketchmesh_core::feature::{FeatureEdit, FeatureKind, Sketch};
+    let sphere = primitives::icosphere(1.0, 5);
+    let front = Camera::default();
+    let centre = 0.5 * VIEWPORT;
+    let down: Vec<DVec2> = (0..=60)
+        .map(|k| centre + DVec2::new(0.0, -120.0 + 4.0 * k as f64))
+        .collect();
+    let sketch = Sketch {
+        camera: front,
+        viewport: VIEWPORT,
+        points: down,
+        region: None,
+    };
+    let ridge = FeatureEdit::new(&sphere, &sketch, FeatureKind::Ridge).unwrap();
+    let mut mesh = sphere.clone();
+    let shaped = ridge.shape(4.0).unwrap();
+    mesh.positions_mut().copy_from_slice(&shaped.positions);
+
+    // From the right side the crest is the outline's left edge (the front of the sphere).
+    let side = Camera {
+        eye: DVec3::new(front.eye.length(), 0.0, 0.0),
+        ..front
+    };
+    let chains =
+        sketchmesh_core::silhouette::outline_chains(&mesh, &Bvh::new(&mesh), &side, VIEWPORT);
+    let crest: Vec<DVec2> = chains
+        .iter()
+        .flat_map(|c| c.screen.iter().copied())
+        .filter(|p| (p.y - centre.y).abs() < 60.0 && p.x < centre.x)
+        .collect();
+    let leftmost = crest.iter().map(|p| p.x).fold(f64::INFINITY, f64::min);
+    let along: Vec<DVec2> = (0..=40)
+        .map(|k| DVec2::new(leftmost + 0.5, centre.y - 40.0 + 2.0 * k as f64))
+        .collect();
+    let handle = pick_handle(&mesh, &side, VIEWPORT, &along, OutlineKind::Edge).unwrap();
+    assert!(
+        matches!(
+            handle,
+            ManualHandle::Silhouette {
+                outline: OutlineKind::Edge,
+                ..
+            }
+        ),
+        "{handle:?}"
+    );
+    // The crest pushed 20 px further out, smoothly.
+    let redrawn: Vec<DVec2> = along
+        .iter()
+        .enumerate()
+        .map(|(k, &p)| p - DVec2::new(20.0 * (PI * k as f64 / 40.0).sin(), 0.0))
+        .collect();
+    let result = oversketch_manual(
+        &mesh,
+        &side,
+        VIEWPORT,
+        &handle,
+        &redrawn,
+        BendOptions::EXACT,
+    )
+    .unwrap();
+    assert_outside_unmoved(&mesh, &result);
+    let worst = worst_middle_distance(&mesh, &result.positions, &side, &redrawn);
+    eprintln!(
+        "camel nose: crest at x {leftmost:.1}, ROI {}, worst {worst:.2} px",
+        result.roi_size
+    );
+    assert!(worst < 2.0, "the outline is {worst} px off the stroke");
 }

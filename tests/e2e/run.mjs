@@ -496,7 +496,7 @@ test('a dropped .glb imports and is framed; Export downloads a valid file; bad f
   }
 });
 
-test('over-sketch mode: a stroke beyond a shape\'s outline pulls the outline to it; undo restores it', async () => {
+test('over-sketch mode: a stroke beyond a shape\'s outline pulls the outline to it, without seams; undo restores it', async () => {
   const fresh = await openApp(browser, url, gpu);
   try {
     const c = ELLIPSE.c;
@@ -520,7 +520,11 @@ test('over-sketch mode: a stroke beyond a shape\'s outline pulls the outline to 
     );
     console.log(`    over-sketch applied ${Date.now() - released} ms after release (including polling)`);
     assert.equal(session.ops.at(-1).op, 'oversketch', 'the stroke became an oversketch op');
-    assert.deepEqual(await api(fresh.page, 'stats'), created, 'same vertices and triangles, only moved');
+    // The created shape's curve drew that outline: it moved, and the surface around it was
+    // settled and remeshed through it (as after a pull), so the counts change a little.
+    const moved = await api(fresh.page, 'stats');
+    assert.equal(moved.curves, created.curves, 'the curve is kept');
+    assert.ok(Math.abs(moved.vertices - created.vertices) < 0.1 * created.vertices, `vertices ${created.vertices} -> ${moved.vertices}`);
     await frames(fresh.page, 3);
     const after = await screenshot(fresh.page, out('oversketch.png'));
     const px = (img, x, y) => Array.from(img.data.slice((y * img.width + x) * 4, (y * img.width + x) * 4 + 3));
@@ -530,6 +534,29 @@ test('over-sketch mode: a stroke beyond a shape\'s outline pulls the outline to 
     const [r1, g1, b1] = px(after, probe.x, probe.y);
     assert.ok(r0 < 100, `outside the original outline is background, got red ${r0}`);
     assert.ok(r1 > 120 && r1 >= b1, `the outline moved out to the stroke: clay at ${probe.x}, got rgb(${r1}, ${g1}, ${b1})`);
+    // Without seams: over the stroke's middle 80%, 4 px inside it is the shape (clay, or the
+    // blue curve that draws the outline) and 4 px outside it is what was there before (the
+    // background: no notch, and no curve or sliver of surface beyond the outline).
+    const isShape = ([r, , b]) => r > 100 || b > 150;
+    const along = [];
+    for (let k = 0; k + 1 < stroke.length; k += 1) {
+      for (const t of [0, 0.5]) {
+        along.push({ x: stroke[k].x + t * (stroke[k + 1].x - stroke[k].x), y: stroke[k].y + t * (stroke[k + 1].y - stroke[k].y) });
+      }
+    }
+    const seams = [];
+    along.slice(Math.floor(0.1 * along.length), Math.ceil(0.9 * along.length)).forEach((p) => {
+      const d = { x: p.x - c.x, y: p.y - c.y };
+      const len = Math.hypot(d.x, d.y);
+      const at = (s) => [Math.round(p.x + (s * d.x) / len), Math.round(p.y + (s * d.y) / len)];
+      const inside = px(after, ...at(-4));
+      const [ox, oy] = at(4);
+      const outside = px(after, ox, oy);
+      const was = px(before, ox, oy);
+      if (!isShape(inside)) seams.push(`inside ${at(-4)} rgb(${inside})`);
+      if (outside.some((v, i) => Math.abs(v - was[i]) > 40)) seams.push(`outside ${[ox, oy]} rgb(${outside}) was rgb(${was})`);
+    });
+    assert.deepEqual(seams, [], 'the new outline lies on the stroke, within 4 px either side');
     await fresh.page.keyboard.press('Control+z');
     await frames(fresh.page, 3);
     const undone = await screenshot(fresh.page, out('oversketch-undone.png'));

@@ -37,7 +37,7 @@ use crate::curve::polyline::{
 use crate::deform::{DeformError, EditParams, HandleFit, HandlePoint, LaplacianEdit};
 use crate::geometry::Bvh;
 use crate::mesh::{Mesh, VertexId};
-use crate::silhouette::{SilhouettePoint, outline_edges};
+use crate::silhouette::{SilhouettePoint, outline_edges_touching};
 
 /// The ROI grows within spheres of this many times each handle displacement: twice the
 /// thesis's radius ([`super::ROI_RADIUS_FACTOR`]). The band of `band_handles` moves
@@ -151,7 +151,25 @@ pub(super) fn bend(
             part_roi(mesh, &vertices).ok_or(OversketchError::NoPart)?
         }
     };
-    let (points, targets) = if handle.is_silhouette {
+    let snaps = handle.is_silhouette && options.fit == HandleFit::Exact;
+    let bvh = Bvh::new(mesh);
+    let (points, targets) = if snaps {
+        let (points, band) = band_handles(mesh, &roi, &handle.points, &targets);
+        let outline = outline_vertices(mesh, &bvh, camera, viewport, &roi);
+        let motions = HandleMotions {
+            points: &handle.points,
+            targets: &targets,
+        };
+        // Only the outline along the handle: elsewhere (the far side of a bent horn) the
+        // outline runs over other vertices once bent.
+        let along = outline
+            .iter()
+            .filter(|&&(_, screen, _)| {
+                distance_to_polyline(screen, &handle.screen) <= SNAP_REACH_PX
+            })
+            .map(|&(v, _, _)| v);
+        motions.with_outline(mesh, along, points, band)
+    } else if handle.is_silhouette {
         band_handles(mesh, &roi, &handle.points, &targets)
     } else {
         (handle.points.clone(), targets)
@@ -164,10 +182,23 @@ pub(super) fn bend(
     let mut positions = vec![DVec3::ZERO; mesh.n_vertices()];
     edit.deform(&targets, &mut positions)
         .map_err(DeformError::from)?;
-    if handle.is_silhouette && options.fit == HandleFit::Exact {
-        let widths = blend_widths(camera, viewport, handle, stroke);
+    if snaps {
+        let mut snap = Snap {
+            bent: mesh.clone(),
+            bvh,
+            roi: &roi,
+            widths: blend_widths(camera, viewport, handle, stroke),
+            handle_of: points
+                .iter()
+                .enumerate()
+                .map(|(k, point)| (point.vertices()[0], k))
+                .collect(),
+        };
+        let mut targets = targets;
         for _ in 0..SNAP_PASSES {
-            snap_outline(mesh, camera, viewport, &roi, stroke, widths, &mut positions)?;
+            snap.retarget(camera, viewport, stroke, &positions, &mut targets);
+            edit.deform(&targets, &mut positions)
+                .map_err(DeformError::from)?;
         }
     }
     Ok((positions, roi))
@@ -191,7 +222,7 @@ fn keep_near(mesh: &Mesh, camera: &Camera, viewport: DVec2, stroke: &[DVec2], ro
 }
 
 /// Passes of [`snap_outline`] after the bend.
-const SNAP_PASSES: usize = 4;
+const SNAP_PASSES: usize = 1;
 
 /// Outline vertices farther than this from the stroke (px) are other parts of the outline
 /// and are left to the Laplacian.
@@ -200,71 +231,75 @@ const SNAP_REACH_PX: f64 = 8.0;
 /// Puts the outline as rendered onto the stroke. The bend moves the smooth silhouette's
 /// crossing points and the band around them; the rendered outline is made of whole mesh
 /// edges whose ends can sit several pixels off the smooth silhouette on a coarse scan
-/// (spot's back: up to 5 px), and the band carries that offset along. Here the vertices of
-/// the bent mesh's visible edge silhouettes near the stroke become the handles, each moved
-/// onto its nearest stroke point (blended as the targets are at the stroke's ends), and the
-/// region is edited again from the bent shape.
-fn snap_outline(
-    mesh: &Mesh,
-    camera: &Camera,
-    viewport: DVec2,
-    roi: &[bool],
-    stroke: &[DVec2],
+/// (spot's back: up to 5 px), and the band carries that offset along. The band's vertices
+/// that are on the bent mesh's visible edge silhouettes near the stroke are retargeted onto
+/// it (blended as the targets are at the stroke's ends), and the edit is solved again with
+/// the same factorization: a back-substitution, not a new edit.
+struct Snap<'a> {
+    /// The mesh with the bent positions of the last solve.
+    bent: Mesh,
+    /// Its BVH, refitted to them.
+    bvh: Bvh,
+    /// The region that may move.
+    roi: &'a [bool],
+    /// The blend widths of the handle's ends.
     widths: [f64; 2],
-    positions: &mut [DVec3],
-) -> Result<(), OversketchError> {
-    let mut bent = mesh.clone();
-    bent.positions_mut().copy_from_slice(positions);
-    let cumulative = cumulative_lengths(stroke);
-    let total = cumulative[cumulative.len() - 1];
-    let forward = camera.forward();
-    let mut points = Vec::new();
-    let mut targets = Vec::new();
-    for (v, screen, spacing) in outline_vertices(&bent, camera, viewport, roi) {
-        let closest = closest_point(stroke, &cumulative, screen);
-        if closest.distance > SNAP_REACH_PX {
-            continue;
-        }
-        // Outline edges are chords of the stroke: a vertex on the stroke leaves each
-        // chord's middle inside the bend by its sagitta. Moving the vertex outwards by half
-        // of it halves the worst gap. `bulge` is the sagitta of a chord twice as long, four
-        // times an edge's, so half an edge's sagitta is an eighth of it.
-        let s = closest.arclength;
-        let chord_middle = 0.5
-            * (point_at(stroke, &cumulative, s - spacing)
-                + point_at(stroke, &cumulative, s + spacing));
-        let bulge = closest.point - chord_middle;
-        let on_stroke = closest.point + bulge / 8.0;
-        let weight = blend_at(s / total, widths);
-        let target = screen.lerp(on_stroke, weight);
-        points.push(HandlePoint::vertex(v));
-        targets.push(unproject_at_depth(
-            camera,
-            viewport,
-            target,
-            bent.position(v),
-            forward,
-        ));
-    }
-    if points.is_empty() {
-        return Ok(());
-    }
-    let mut edit = LaplacianEdit::new(&bent, roi, &points, EditParams::default())?;
-    edit.deform(&targets, positions)
-        .map_err(DeformError::from)?;
-    Ok(())
+    /// The handle index of each band vertex.
+    handle_of: std::collections::BTreeMap<VertexId, usize>,
 }
 
-/// The ROI's vertices on the visible outline of `mesh`, each with where it is drawn and the
-/// mean screen length of its outline edges, in vertex order.
+impl Snap<'_> {
+    /// New targets for the band vertices on the outline of `positions`.
+    fn retarget(
+        &mut self,
+        camera: &Camera,
+        viewport: DVec2,
+        stroke: &[DVec2],
+        positions: &[DVec3],
+        targets: &mut [DVec3],
+    ) {
+        self.bent.positions_mut().copy_from_slice(positions);
+        self.bvh.refit(&self.bent);
+        let cumulative = cumulative_lengths(stroke);
+        let total = cumulative[cumulative.len() - 1];
+        let forward = camera.forward();
+        let outline = outline_vertices(&self.bent, &self.bvh, camera, viewport, self.roi);
+        for (v, screen, spacing) in outline {
+            let Some(&k) = self.handle_of.get(&v) else {
+                continue;
+            };
+            let closest = closest_point(stroke, &cumulative, screen);
+            if closest.distance > SNAP_REACH_PX {
+                continue;
+            }
+            // Outline edges are chords of the stroke: a vertex on the stroke leaves each
+            // chord's middle inside the bend by its sagitta. Moving the vertex outwards by
+            // half of it halves the worst gap. `bulge` is the sagitta of a chord twice as
+            // long, four times an edge's, so half an edge's sagitta is an eighth of it.
+            let s = closest.arclength;
+            let chord_middle = 0.5
+                * (point_at(stroke, &cumulative, s - spacing)
+                    + point_at(stroke, &cumulative, s + spacing));
+            let on_stroke = closest.point + (closest.point - chord_middle) / 8.0;
+            let target = screen.lerp(on_stroke, blend_at(s / total, self.widths));
+            targets[k] =
+                unproject_at_depth(camera, viewport, target, positions[v.index()], forward);
+        }
+    }
+}
+
+/// The vertices of `roi` on the visible outline of `mesh` (`bvh` fitted to it), each with
+/// where it is drawn and the mean screen length of its outline edges, in vertex order.
 fn outline_vertices(
     mesh: &Mesh,
+    bvh: &Bvh,
     camera: &Camera,
     viewport: DVec2,
     roi: &[bool],
 ) -> Vec<(VertexId, DVec2, f64)> {
     let mut ends: std::collections::BTreeMap<VertexId, (DVec2, f64, f64)> = Default::default();
-    for edge in outline_edges(mesh, &Bvh::new(mesh), camera, viewport) {
+    let edges = outline_edges_touching(mesh, bvh, camera, viewport, |v| roi[v.index()]);
+    for edge in edges {
         let length = edge.screen[0].distance(edge.screen[1]);
         for (v, screen) in edge.vertices.into_iter().zip(edge.screen) {
             if roi[v.index()] {
@@ -277,6 +312,46 @@ fn outline_vertices(
     ends.into_iter()
         .map(|(v, (screen, sum, count))| (v, screen, sum / count))
         .collect()
+}
+
+/// The handle points of a silhouette and their targets, before the band spreads them.
+struct HandleMotions<'a> {
+    points: &'a [HandlePoint],
+    targets: &'a [DVec3],
+}
+
+impl HandleMotions<'_> {
+    /// `points` and `targets` (the band's) with the `outline` vertices that are not handles
+    /// yet added, each moved as the handle point nearest it, so that the snap can later put
+    /// them onto the stroke without a new factorization.
+    fn with_outline(
+        &self,
+        mesh: &Mesh,
+        outline: impl Iterator<Item = VertexId>,
+        mut points: Vec<HandlePoint>,
+        mut targets: Vec<DVec3>,
+    ) -> (Vec<HandlePoint>, Vec<DVec3>) {
+        let taken: std::collections::BTreeSet<VertexId> =
+            points.iter().map(|p| p.vertices()[0]).collect();
+        let worlds: Vec<DVec3> = self
+            .points
+            .iter()
+            .map(|p| p.position(mesh.positions()))
+            .collect();
+        for v in outline.filter(|v| !taken.contains(v)) {
+            let p = mesh.position(v);
+            let nearest = (0..worlds.len())
+                .min_by(|&a, &b| {
+                    worlds[a]
+                        .distance_squared(p)
+                        .total_cmp(&worlds[b].distance_squared(p))
+                })
+                .unwrap_or(0);
+            points.push(HandlePoint::vertex(v));
+            targets.push(p + self.targets[nearest] - worlds[nearest]);
+        }
+        (points, targets)
+    }
 }
 
 /// Each handle point's target: the stroke point at the same relative arclength, blended at

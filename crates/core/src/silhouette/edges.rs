@@ -18,7 +18,7 @@ use glam::{DVec2, DVec3};
 
 use super::visibility::{MARGIN_EDGES, OFFSET_EDGES, ray_origin};
 use crate::camera::Camera;
-use crate::geometry::{Bvh, face_normals};
+use crate::geometry::{Bvh, face_normal};
 use crate::mesh::{FaceId, HalfedgeId, Mesh, VertexId};
 
 /// The visible edge silhouettes of `mesh` seen by `camera` in a viewport of `viewport` CSS
@@ -47,26 +47,44 @@ pub struct OutlineEdge {
 
 /// [`edge_silhouettes`] with the mesh edge each segment is.
 pub fn outline_edges(mesh: &Mesh, bvh: &Bvh, camera: &Camera, viewport: DVec2) -> Vec<OutlineEdge> {
+    outline_edges_touching(mesh, bvh, camera, viewport, |_| true)
+}
+
+/// [`outline_edges`] with at least one end where `keep` says: the occlusion rays, most of
+/// the cost, are cast only for those (an over-sketch looks at its region only).
+pub fn outline_edges_touching(
+    mesh: &Mesh,
+    bvh: &Bvh,
+    camera: &Camera,
+    viewport: DVec2,
+    keep: impl Fn(VertexId) -> bool,
+) -> Vec<OutlineEdge> {
     if !camera.is_valid() {
         return Vec::new();
     }
-    let normals = face_normals(mesh);
-    let is_front: Vec<bool> = mesh
-        .faces()
-        .map(|f| faces_viewer(mesh, camera, normals[f.index()], f))
-        .collect();
+    // Face normals and sides only where asked: a region's outline costs the region.
+    let side = |f: FaceId| {
+        let n = face_normal(mesh, f);
+        (n, faces_viewer(mesh, camera, n, f))
+    };
     let mut segments = Vec::new();
     for h in (0..mesh.n_halfedges() as u32).map(HalfedgeId) {
-        let f = mesh.face(h);
+        let vertices = [mesh.tail(h), mesh.head(h)];
+        if !vertices.into_iter().any(&keep) {
+            continue;
+        }
+        let (n, is_front) = side(mesh.face(h));
+        if !is_front {
+            continue;
+        }
         let outward = match mesh.twin(h) {
             // Each interior edge once, from its front-facing side.
-            Some(twin) if is_front[f.index()] && !is_front[mesh.face(twin).index()] => {
-                normals[f.index()] + normals[mesh.face(twin).index()]
-            }
-            None if is_front[f.index()] => normals[f.index()],
-            _ => continue,
+            Some(twin) => match side(mesh.face(twin)) {
+                (m, false) => n + m,
+                _ => continue,
+            },
+            None => n,
         };
-        let vertices = [mesh.tail(h), mesh.head(h)];
         let [a, b] = vertices.map(|v| mesh.position(v));
         if !is_seen(mesh, bvh, camera, a, b, outward.normalize_or_zero()) {
             continue;

@@ -32,7 +32,10 @@ mod visibility;
 
 use glam::DVec2;
 
-pub use edges::{OutlineChain, OutlineEdge, edge_silhouettes, outline_chains, outline_edges};
+pub use edges::{
+    OutlineChain, OutlineEdge, edge_silhouettes, outline_chains, outline_edges,
+    outline_edges_touching,
+};
 pub use points::{Silhouette, SilhouettePoint};
 
 use crate::camera::Camera;

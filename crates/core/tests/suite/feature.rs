@@ -372,7 +372,12 @@ fn bad_sketches_are_refused_with_a_sentence() {
 #[test]
 fn a_ridge_on_scans_follows_the_sketch_and_keeps_the_rest() {
     let Some(dir) = testdata() else { return };
-    for name in ["spot.glb", "stanford_bunny.glb"] {
+    for name in [
+        "spot.glb",
+        "stanford_bunny.glb",
+        "nefertiti.glb",
+        "igea.glb",
+    ] {
         let bytes = std::fs::read(dir.join("meshes").join(name)).unwrap();
         let file = sketchmesh_core::io::ImportFile {
             name,

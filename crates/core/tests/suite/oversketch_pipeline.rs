@@ -589,14 +589,13 @@ fn roi_is_bounded_by_the_displacements() {
     );
 }
 
-#[test]
-fn control_curves_follow_their_vertices() {
-    // A created model keeps its outline as a control curve through mesh vertices; seen from
-    // the camera it was drawn with, that outline is the silhouette.
-    let circle: Vec<[f64; 3]> = (0..=120)
+/// An editor with one shape created from an ellipse outline (semi-axes `rx`, `ry` px,
+/// `n` samples) drawn round the middle of the viewport with the default camera.
+fn created(rx: f64, ry: f64, n: usize) -> Editor {
+    let outline: Vec<[f64; 3]> = (0..=n)
         .map(|k| {
-            let a = TAU * k as f64 / 120.0;
-            [500.0 + 180.0 * a.cos(), 500.0 + 180.0 * a.sin(), 0.5]
+            let a = TAU * k as f64 / n as f64;
+            [500.0 + rx * a.cos(), 500.0 + ry * a.sin(), 0.5]
         })
         .collect();
     let mut editor = Editor::new();
@@ -604,9 +603,17 @@ fn control_curves_follow_their_vertices() {
         .apply(Op::Create(StrokeInput {
             viewport: VIEWPORT.to_array(),
             camera: Camera::default(),
-            stroke: circle,
+            stroke: outline,
         }))
         .unwrap();
+    editor
+}
+
+#[test]
+fn control_curves_follow_their_vertices() {
+    // A created model keeps its outline as a control curve through mesh vertices; seen from
+    // the camera it was drawn with, that outline is the silhouette.
+    let mut editor = created(180.0, 180.0, 120);
     let before = editor.document().models[0].clone();
     assert!(!before.curves.is_empty() && !before.curves[0].vertices.is_empty());
     let outline = longest_outline(&before.mesh, &Camera::default());
@@ -942,20 +949,7 @@ fn largest_turning_near(outlines: &[Vec<DVec2>], at: DVec2, half: f64, reach: f6
 /// the outline is the outline still.
 #[test]
 fn an_oversketched_ellipse_joins_its_outline_without_a_kink() {
-    let ellipse: Vec<[f64; 3]> = (0..=160)
-        .map(|k| {
-            let a = TAU * k as f64 / 160.0;
-            [500.0 + 260.0 * a.cos(), 500.0 + 140.0 * a.sin(), 0.5]
-        })
-        .collect();
-    let mut editor = Editor::new();
-    editor
-        .apply(Op::Create(StrokeInput {
-            viewport: VIEWPORT.to_array(),
-            camera: Camera::default(),
-            stroke: ellipse,
-        }))
-        .unwrap();
+    let mut editor = created(260.0, 140.0, 160);
     let camera = Camera::default();
     let before = outlines(&editor.document().models[0].mesh, &camera);
     let outline = longest_outline(&editor.document().models[0].mesh, &camera);

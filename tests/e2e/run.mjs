@@ -391,6 +391,40 @@ test('tablet (820x1180, DPR 2, touch): a finger-drawn outline creates a model; a
   }
 });
 
+test('phone (390x844, DPR 2, touch): the toolbar is two rows that scroll sideways, with the file and view buttons behind a menu; a finger outline creates a model', async () => {
+  const phoneBrowser = await launch(gpu, { deviceScaleFactor: 2 });
+  try {
+    const phone = await openApp(phoneBrowser, url, gpu, { width: 390, height: 844, deviceScaleFactor: 2 });
+    const px = (img, x, y) => Array.from(img.data.slice((y * img.width + x) * 4, (y * img.width + x) * 4 + 3));
+    const shot = await screenshot(phone.page, out('phone.png'));
+    // The toolbar's height: down its left margin until the view's colours begin.
+    const panel = px(shot, 2, 2);
+    let height = 0;
+    while (height < shot.height && px(shot, 2, height).every((v, i) => Math.abs(v - panel[i]) < 12)) height += 1;
+    console.log(`    toolbar ${height} px of 844`);
+    assert.ok(height > 40 && height < 0.15 * 844, `the toolbar is ${height} px tall`);
+    // The menu button opens the file and view buttons over the view.
+    await touchTap(phone.cdp, [{ x: 22, y: 20 }]);
+    await frames(phone.page, 3);
+    const menu = await screenshot(phone.page, out('phone-menu.png'));
+    assert.ok(maxDiffNear(shot, menu, 35, 150, 10) > 40, 'the menu opened below its button');
+    await touchTap(phone.cdp, [{ x: 300, y: 700 }]);
+    await frames(phone.page, 3);
+    const c = { x: 195, y: 450 };
+    const outline = Array.from({ length: 13 }, (_, i) => {
+      const a = (2 * Math.PI * i) / 12;
+      return { x: c.x + 120 * Math.cos(a), y: c.y + 90 * Math.sin(a) };
+    });
+    await touchGesture(phone.cdp, [outline], 16);
+    const created = await until(() => api(phone.page, 'stats'), (s) => s.models === 1, 15_000);
+    assert.equal(created.models, 1, 'the finger-drawn outline made a shape');
+    await screenshot(phone.page, out('phone-created.png'));
+    assert.deepEqual(phone.errors, [], 'console errors on the phone page');
+  } finally {
+    await phoneBrowser.close();
+  }
+});
+
 test('a closed pen outline becomes a lit 3D shape with its blue curve; undo removes it; export validates', async () => {
   const fresh = await openApp(browser, url, gpu);
   try {

@@ -689,13 +689,10 @@ impl SketchApp {
         if let Some((status, _)) = &self.status {
             status_ui(ui, viewport, status);
         } else if self.shared.borrow().editor.document().is_empty() && idle {
-            ui.painter().text(
-                viewport.center_bottom() - egui::vec2(0.0, 48.0),
-                egui::Align2::CENTER_CENTER,
-                "Draw a closed outline to make a shape. Two fingers or right-drag orbit.",
-                egui::FontId::proportional(16.0),
-                egui::Color32::from_white_alpha(110),
-            );
+            let text = "Draw a closed outline to make a shape. Two fingers or right-drag orbit.";
+            let galley = centered_galley(ui, viewport, text, egui::Color32::from_white_alpha(110));
+            let pos = viewport.center_bottom() - egui::vec2(0.0, 40.0 + galley.size().y);
+            ui.painter().galley(pos, galley, egui::Color32::WHITE);
         }
     }
 
@@ -833,6 +830,19 @@ fn feature_amount(edit: &Edit) -> Option<String> {
 /// What to do next, at the top of the view, wrapped to its width (a phone's is narrow).
 fn hint_ui(ui: &egui::Ui, viewport: egui::Rect, text: &str) {
     let color = egui::Color32::from_white_alpha(200);
+    let galley = centered_galley(ui, viewport, text, color);
+    ui.painter()
+        .galley(viewport.center_top() + egui::vec2(0.0, 18.0), galley, color);
+}
+
+/// `text` laid out centred and wrapped to the view's width, to be drawn at the view's
+/// horizontal middle.
+fn centered_galley(
+    ui: &egui::Ui,
+    viewport: egui::Rect,
+    text: &str,
+    color: egui::Color32,
+) -> std::sync::Arc<egui::Galley> {
     let width = (viewport.width() - 40.0).max(80.0);
     let mut job = egui::text::LayoutJob::simple(
         text.to_owned(),
@@ -841,9 +851,7 @@ fn hint_ui(ui: &egui::Ui, viewport: egui::Rect, text: &str) {
         width,
     );
     job.halign = egui::Align::Center;
-    let galley = ui.painter().layout_job(job);
-    ui.painter()
-        .galley(viewport.center_top() + egui::vec2(0.0, 18.0), galley, color);
+    ui.painter().layout_job(job)
 }
 
 /// The latest message, at the bottom of the view on a dark band, wrapped to its width: the

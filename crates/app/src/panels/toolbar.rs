@@ -33,7 +33,12 @@ pub enum Action {
 /// Minimum touch target, in points, so buttons are easy to hit with a finger.
 const TOUCH_TARGET: f32 = 36.0;
 
-/// Shows the toolbar; wraps onto more rows on narrow screens.
+/// Below this width (points) the toolbar is two rows that scroll sideways, with the file and
+/// view buttons in a menu: wrapped, it took four rows, a third of a phone's screen.
+const NARROW: f32 = 700.0;
+
+/// Shows the toolbar: two rows, the tools and the mode's options; on a wide screen they wrap,
+/// on a narrow one they scroll sideways and the file and view buttons sit in a menu (☰).
 pub fn toolbar_ui(
     ui: &mut egui::Ui,
     editor: &Editor,
@@ -44,50 +49,36 @@ pub fn toolbar_ui(
     let mut action = None;
     let mut picked_mode = None;
     let mode = tools.mode();
+    let narrow = ui.available_width() < NARROW;
     ui.spacing_mut().interact_size.y = TOUCH_TARGET;
     ui.spacing_mut().button_padding = egui::vec2(10.0, 6.0);
-    ui.horizontal_wrapped(|ui| {
-        // No title: the page's is enough, and the row needs the room for the buttons.
-        let mut button = |ui: &mut egui::Ui, enabled: bool, label: &str, hint: &str, a: Action| {
-            let response = ui.add_enabled(
-                enabled,
-                egui::Button::new(label).min_size(egui::vec2(TOUCH_TARGET, TOUCH_TARGET)),
-            );
-            if response.on_hover_text(hint).clicked() {
-                action = Some(a);
-            }
-        };
+    row(ui, narrow, "tools", |ui| {
+        if narrow {
+            ui.menu_button("☰", |ui| {
+                file_buttons(ui, editor, &mut action);
+                ui.separator();
+                view_buttons(ui, options, show_help, &mut action);
+            });
+        } else {
+            // No title: the page's is enough, and the row needs the room for the buttons.
+            file_buttons(ui, editor, &mut action);
+            ui.separator();
+        }
         button(
             ui,
-            true,
-            "Import",
-            "Import a .glb or .gltf file, or open a saved session (.sketchmesh.json) (Ctrl+O); \
-             or drop one on the page",
-            Action::Import,
+            editor.can_undo(),
+            "Undo",
+            "Undo (Ctrl+Z)",
+            Action::Undo,
+            &mut action,
         );
-        button(
-            ui,
-            !editor.document().is_empty(),
-            "Export",
-            "Download everything as .glb (Ctrl+S)",
-            Action::Export,
-        );
-        button(
-            ui,
-            editor.can_undo() || editor.can_redo(),
-            "Save",
-            "Save the session, every step of it, to replay or to open elsewhere \
-             (.sketchmesh.json, Ctrl+Shift+S)",
-            Action::SaveSession,
-        );
-        ui.separator();
-        button(ui, editor.can_undo(), "Undo", "Undo (Ctrl+Z)", Action::Undo);
         button(
             ui,
             editor.can_redo(),
             "Redo",
             "Redo (Ctrl+Shift+Z or Ctrl+Y)",
             Action::Redo,
+            &mut action,
         );
         ui.separator();
         for m in Mode::ALL {
@@ -98,25 +89,15 @@ pub fn toolbar_ui(
                 picked_mode = Some(m);
             }
         }
-        ui.separator();
-        button(ui, true, "Frame", "Frame everything (F)", Action::FrameAll);
-        button(
-            ui,
-            true,
-            "Reset",
-            "Back to the front view (R)",
-            Action::ResetView,
-        );
-        ui.toggle_value(&mut options.wireframe, "Edges")
-            .on_hover_text("Show mesh edges (W)");
-        ui.toggle_value(&mut options.grid, "Grid")
-            .on_hover_text("Show the ground grid (G)");
-        ui.toggle_value(show_help, "Help")
-            .on_hover_text("Shortcuts and gestures (H)");
+        if !narrow {
+            ui.separator();
+            view_buttons(ui, options, show_help, &mut action);
+        }
     });
     // The second row, always there so that the viewport keeps its size whatever the mode:
-    // the mode's options and the document's size. (Messages show over the view.)
-    ui.horizontal_wrapped(|ui| {
+    // the mode's options and, on a wide screen, the document's size. (Messages show over
+    // the view.)
+    row(ui, narrow, "options", |ui| {
         match mode {
             Mode::Oversketch => {
                 oversketch_options_ui(ui, tools.oversketch_settings_mut());
@@ -139,12 +120,115 @@ pub fn toolbar_ui(
             _ => {}
         }
         let stats = editor.document().stats();
-        ui.label(format!(
+        let size = format!(
             "{} models · {} vertices · {} triangles · {} curves",
             stats.models, stats.vertices, stats.triangles, stats.curves
-        ));
+        );
+        if narrow {
+            ui.label(format!("{} vertices", stats.vertices))
+                .on_hover_text(size);
+        } else {
+            ui.label(size);
+        }
     });
     action.or(picked_mode.map(Action::Mode))
+}
+
+/// One toolbar row: wrapped onto more lines, or on a `narrow` screen one line that scrolls
+/// sideways (a finger drags it).
+fn row(ui: &mut egui::Ui, narrow: bool, id: &str, add: impl FnOnce(&mut egui::Ui)) {
+    if narrow {
+        egui::ScrollArea::horizontal().id_salt(id).show(ui, |ui| {
+            ui.horizontal(add);
+        });
+    } else {
+        ui.horizontal_wrapped(add);
+    }
+}
+
+/// A button at least [`TOUCH_TARGET`] square that sets `action` to `a` when pressed.
+fn button(
+    ui: &mut egui::Ui,
+    enabled: bool,
+    label: &str,
+    hint: &str,
+    a: Action,
+    action: &mut Option<Action>,
+) {
+    let response = ui.add_enabled(
+        enabled,
+        egui::Button::new(label).min_size(egui::vec2(TOUCH_TARGET, TOUCH_TARGET)),
+    );
+    if response.on_hover_text(hint).clicked() {
+        *action = Some(a);
+    }
+}
+
+/// Import, Export and Save.
+fn file_buttons(ui: &mut egui::Ui, editor: &Editor, action: &mut Option<Action>) {
+    button(
+        ui,
+        true,
+        "Import",
+        "Import a .glb or .gltf file, or open a saved session (.sketchmesh.json) (Ctrl+O); \
+         or drop one on the page",
+        Action::Import,
+        action,
+    );
+    button(
+        ui,
+        !editor.document().is_empty(),
+        "Export",
+        "Download everything as .glb (Ctrl+S)",
+        Action::Export,
+        action,
+    );
+    button(
+        ui,
+        editor.can_undo() || editor.can_redo(),
+        "Save",
+        "Save the session, every step of it, to replay or to open elsewhere \
+         (.sketchmesh.json, Ctrl+Shift+S)",
+        Action::SaveSession,
+        action,
+    );
+}
+
+/// Frame, Reset and the view switches.
+fn view_buttons(
+    ui: &mut egui::Ui,
+    options: &mut ViewOptions,
+    show_help: &mut bool,
+    action: &mut Option<Action>,
+) {
+    button(
+        ui,
+        true,
+        "Frame",
+        "Frame everything (F)",
+        Action::FrameAll,
+        action,
+    );
+    button(
+        ui,
+        true,
+        "Reset",
+        "Back to the front view (R)",
+        Action::ResetView,
+        action,
+    );
+    toggle(ui, &mut options.wireframe, "Edges", "Show mesh edges (W)");
+    toggle(ui, &mut options.grid, "Grid", "Show the ground grid (G)");
+    toggle(ui, show_help, "Help", "Shortcuts and gestures (H)");
+}
+
+/// A toggle button at least [`TOUCH_TARGET`] square (in the narrow screen's menu too).
+fn toggle(ui: &mut egui::Ui, value: &mut bool, label: &str, hint: &str) {
+    let button =
+        egui::Button::selectable(*value, label).min_size(egui::vec2(TOUCH_TARGET, TOUCH_TARGET));
+    if ui.add(button).on_hover_text(hint).clicked() {
+        *value = !*value;
+    }
 }
 
 /// The over-sketch mode's switches: manual handle picking, the fit and the region.

@@ -5,13 +5,14 @@
 //! 1. Targets: each handle point goes to the stroke point at the same relative arclength
 //!    ([`map_to_stroke`]) and is unprojected at its own depth, onto the plane through its
 //!    world position facing the camera. A silhouette piece is blended back towards where it
-//!    is at the ends ([`blend_weight`], SEED Eq. 6); unlike SEED's fixed [`BLEND_WIDTH`],
-//!    each end blends over `BLEND_WIDTH × min(1, gap / BLEND_GAP_PX)` of the handle, `gap`
-//!    being how far the stroke's end lies from the handle's, so a stroke that starts on the
-//!    outline is followed right from its start. Blending starts from the handle point's
-//!    *unsmoothed* projection (its world position on screen): the middle lands on the stroke
-//!    exactly and the ends stay exactly where they were.
-//! 2. The ROI grown within spheres of radius [`ROI_FACTOR`] times the handle displacements
+//!    is at the ends ([`blend_weight`], a smoothstep; SEED Eq. 6); unlike SEED's fixed
+//!    [`BLEND_WIDTH`], each end blends over `BLEND_WIDTH × min(1, gap / BLEND_GAP_PX)` of the
+//!    handle, at least [`MIN_BLEND_PX`], `gap` being how far the stroke's end lies from the
+//!    handle's, so a stroke that starts on the outline is followed almost from its start.
+//!    Blending starts from the handle point's *unsmoothed* projection (its world position on
+//!    screen): the middle lands on the stroke exactly and the ends stay where they were.
+//! 2. The ROI grown within spheres of radius [`ROI_FACTOR`] times the handle displacements,
+//!    at least [`MIN_ROI_EDGES`] edges, never [`ROI_REACH_PX`] past the stroke
 //!    ([`roi_from_displacements`]), or the part the handle lies on ([`part_roi`]).
 //! 3. Constraints: for a silhouette, not the crossing points themselves but the band of
 //!    vertices around them ([`band_handles`]), translated with the nearby handle points, so
@@ -20,9 +21,12 @@
 //!    the stroke, but the new outline runs elsewhere: on a bumpy torus, 2.35 px off the
 //!    stroke by the smoothed silhouette and 3.3 px by the rendered outline (edge
 //!    silhouettes), even after matching and pinning the bent outline a second time; with
-//!    the band, 1.83 px by the rendered outline. A curve on the surface is pinned as drawn,
-//!    each point inside its triangle (Eq. 4.2).
+//!    the band, 1.83 px by the rendered outline. A curve on the surface is pinned as the
+//!    manual handle resolved it (its embedded path's vertices, or points inside triangles).
 //! 4. A detail-preserving edit with rotations ([`EditParams::default`]), exact or soft.
+//! 5. With exact handles on a silhouette, the outline as rendered is snapped onto the stroke
+//!    (see `Snap`): its vertices along the handle were pinned with the band, and those on the
+//!    bent outline get targets on the stroke for one more solve with the same factorization.
 
 use glam::{DVec2, DVec3};
 
@@ -151,11 +155,11 @@ pub(super) fn bend(
             part_roi(mesh, &vertices).ok_or(OversketchError::NoPart)?
         }
     };
-    let snaps = handle.is_silhouette && options.fit == HandleFit::Exact;
-    let bvh = Bvh::new(mesh);
-    let (points, targets) = if snaps {
+    // Only an exact silhouette handle snaps the outline, which needs a BVH.
+    let bvh = (handle.is_silhouette && options.fit == HandleFit::Exact).then(|| Bvh::new(mesh));
+    let (points, targets) = if let Some(bvh) = &bvh {
         let (points, band) = band_handles(mesh, &roi, &handle.points, &targets);
-        let outline = outline_vertices(mesh, &bvh, camera, viewport, &roi);
+        let outline = outline_vertices(mesh, bvh, camera, viewport, &roi);
         let motions = HandleMotions {
             points: &handle.points,
             targets: &targets,
@@ -182,7 +186,7 @@ pub(super) fn bend(
     let mut positions = vec![DVec3::ZERO; mesh.n_vertices()];
     edit.deform(&targets, &mut positions)
         .map_err(DeformError::from)?;
-    if snaps {
+    if let Some(bvh) = bvh {
         let mut snap = Snap {
             bent: mesh.clone(),
             bvh,

@@ -6,7 +6,9 @@
 // whose canvas shows up in screenshots; all five flags are needed, and WebGL2 is gone with them.
 
 import { mkdirSync } from 'node:fs';
-import { dirname, join } from 'node:path';
+import { readFile } from 'node:fs/promises';
+import { createServer } from 'node:http';
+import { dirname, extname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 import { chromium } from 'playwright-core';
@@ -103,6 +105,44 @@ export async function openApp(browser, url, gpu, { width = 1280, height = 720, d
   }
   await frames(page, 2);
   return { context, page, cdp, errors, startupMs: Date.now() - started };
+}
+
+/** Content types of the page's files, for `serveDirectory`. */
+const TYPES = {
+  '.html': 'text/html; charset=utf-8', '.js': 'text/javascript', '.wasm': 'application/wasm',
+  '.json': 'application/json', '.webmanifest': 'application/manifest+json', '.svg': 'image/svg+xml',
+  '.png': 'image/png',
+};
+
+/**
+ * Serves the files of `dir` on a free port of 127.0.0.1 (a server a test can stop, as the
+ * offline case does). Returns `{ url, close }`; `close` drops open connections too.
+ */
+export async function serveDirectory(root) {
+  const dir = resolve(root);
+  const server = createServer(async (request, response) => {
+    const path = new URL(request.url, 'http://x').pathname;
+    const file = join(dir, path.endsWith('/') ? `${path}index.html` : path);
+    if (!file.startsWith(dir)) return response.writeHead(404).end();
+    try {
+      const body = await readFile(file);
+      response.writeHead(200, { 'Content-Type': TYPES[extname(file)] ?? 'application/octet-stream', 'Cache-Control': 'no-cache' });
+      response.end(body);
+    } catch {
+      response.writeHead(404).end();
+    }
+  });
+  await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
+  let closed = false;
+  return {
+    url: `http://127.0.0.1:${server.address().port}/`,
+    close: () => {
+      if (closed) return Promise.resolve();
+      closed = true;
+      server.closeAllConnections();
+      return new Promise((resolve) => server.close(() => resolve()));
+    },
+  };
 }
 
 /** Waits for `n` animation frames in the page, then a short pause for the compositor. */

@@ -16,12 +16,14 @@ import { fileURLToPath } from 'node:url';
 import {
   EXPECTED_BACKEND, OUT_DIR, api, camera, cameraDistance, changedFraction, distinctColours, frames,
   imageChangedFraction, launch, line, maxDiffNear, nonBackgroundFraction, openApp, penStroke, screenshot,
-  settings, sleep, touchGesture, touchTap,
+  serveDirectory, settings, sleep, touchGesture, touchTap,
 } from './lib.mjs';
 
 const WATCHDOG_MS = 240_000;
 const { url, gpu } = settings();
 const out = (name) => join(OUT_DIR, `${gpu}-${name}`);
+/** The built page that `cargo xtask test` serves (the offline case serves it itself). */
+const DIST = process.env.SKETCHMESH_DIST ?? join(dirname(fileURLToPath(import.meta.url)), '..', '..', 'dist');
 
 // ---------------------------------------------------------------------------------------------
 // A tiny sequential runner.
@@ -52,6 +54,10 @@ async function runAll() {
 // 3D view fills the rest).
 
 const CENTRE = { x: 660, y: 380 };
+
+/** The toolbar's File menu button, and its Documents item once it is open. */
+const FILE_MENU = { x: 28, y: 20 };
+const DOCUMENTS_ITEM = { x: 56, y: 102 };
 
 /** The ellipse the shape tests draw: centre, radii. */
 const ELLIPSE = { c: { x: 640, y: 400 }, rx: 170, ry: 120 };
@@ -497,10 +503,12 @@ test('a dropped .glb imports and is framed; Export downloads a valid file; bad f
     assert.match(download.suggestedFilename(), /^sketchmesh-\d{8}-\d{4}\.glb$/);
     await download.saveAs(out('download.glb'));
     const downloaded = readFileSync(out('download.glb'));
-    // The toolbar's Export button (the second, at its place in the 1280 px wide toolbar) does the same.
+    // The toolbar's File menu's Export (at their places in the 1280 px wide toolbar) does the same.
+    await fresh.page.mouse.click(FILE_MENU.x, FILE_MENU.y);
+    await frames(fresh.page, 3);
     const [clicked] = await Promise.all([
       fresh.page.waitForEvent('download', { timeout: 10_000 }),
-      fresh.page.mouse.click(112, 20),
+      fresh.page.mouse.click(36, 189),
     ]);
     await clicked.saveAs(out('download-button.glb'));
     assert.ok(readFileSync(out('download-button.glb')).equals(downloaded), 'the Export button downloads the same file');
@@ -879,23 +887,25 @@ test('autosave: create and pull, reload: the same document, session, view and hi
   await screenshot(fresh.page, out('autosave-restored.png'));
   // A corrupt record: the page starts empty, says why, and keeps the record aside.
   await sleep(1200);
-  await fresh.page.evaluate(() => new Promise((resolve, reject) => {
-    const request = indexedDB.open('sketchmesh', 1);
+  const [kept] = await api(fresh.page, 'documents');
+  assert.ok(kept?.shown, 'the document shown is kept');
+  await fresh.page.evaluate((id) => new Promise((resolve, reject) => {
+    const request = indexedDB.open('sketchmesh');
     request.onsuccess = () => {
-      const transaction = request.result.transaction('autosave', 'readwrite');
-      transaction.objectStore('autosave').put('{"session": "not a session", "camera": 7}', 'current');
+      const transaction = request.result.transaction('records', 'readwrite');
+      transaction.objectStore('records').put('{"session": "not a session", "camera": 7}', id);
       transaction.oncomplete = resolve;
       transaction.onerror = () => reject(transaction.error);
     };
     request.onerror = () => reject(request.error);
-  }));
+  }), kept.id);
   const warnings = [];
   fresh.page.on('console', (msg) => warnings.push(msg.text()));
   await fresh.page.reload({ waitUntil: 'load' });
   await fresh.page.waitForFunction(() => typeof window.sketchmesh?.stats === 'function', null, { timeout: 15_000 });
   const keys = await until(
     () => fresh.page.evaluate(() => new Promise((resolve) => {
-      const request = indexedDB.open('sketchmesh', 1);
+      const request = indexedDB.open('sketchmesh');
       request.onsuccess = () => {
         const all = request.result.transaction('autosave').objectStore('autosave').getAllKeys();
         all.onsuccess = () => resolve(all.result);
@@ -904,7 +914,8 @@ test('autosave: create and pull, reload: the same document, session, view and hi
     (k) => k.some((key) => key.startsWith('set-aside-')),
     5000,
   );
-  assert.ok(keys.some((key) => key.startsWith('set-aside-')) && !keys.includes('current'), `the record is set aside: ${keys}`);
+  assert.ok(keys.some((key) => key.startsWith('set-aside-')), `the record is set aside: ${keys}`);
+  assert.deepEqual(await api(fresh.page, 'documents'), [], 'and its document is no longer listed');
   assert.equal((await api(fresh.page, 'stats')).models, 0, 'the page starts empty');
   assert.ok(warnings.some((w) => w.includes('could not be restored')), `a sentence says why: ${warnings}`);
   await frames(fresh.page, 3);
@@ -975,6 +986,140 @@ test('session files: Ctrl+Shift+S downloads the session; dropping it in a fresh 
     await other.context.close();
   }
 }));
+
+test('documents: New keeps the shape and starts empty; the panel lists both with thumbnails; Open, rename and delete; a reload shows the one last shown', () => withShape(async ({ fresh, created }) => {
+  const { page, cdp } = fresh;
+  await until(() => lastOpOf(page), (o) => o.op === 'create', 15_000);
+  const egg = await api(page, 'session');
+  await api(page, 'newDocument');
+  assert.deepEqual(await api(page, 'stats'), { models: 0, vertices: 0, triangles: 0, curves: 0 }, 'New starts empty');
+  let kept = await api(page, 'documents');
+  assert.equal(kept.length, 1, 'the shape is kept');
+  assert.ok(!kept[0].shown && kept[0].thumbnail, `kept with a thumbnail, not shown: ${JSON.stringify(kept)}`);
+  // A second, smaller shape in the new document.
+  const c = { x: 420, y: 420 };
+  const circle = Array.from({ length: 41 }, (_, i) => {
+    const a = (2 * Math.PI * i) / 40;
+    return { x: c.x + 90 * Math.cos(a), y: c.y + 90 * Math.sin(a), force: 0.6 };
+  });
+  await penStroke(cdp, circle);
+  await until(() => lastOpOf(page), (o) => o.op === 'create', 15_000);
+  const ball = await api(page, 'stats');
+  assert.equal(ball.models, 1, 'the second document has its own shape');
+  kept = await until(() => api(page, 'documents'), (d) => d.length === 2, 3000);
+  assert.equal(kept.length, 2, 'the new document is kept within a second');
+  assert.ok(kept[0].shown, 'the one shown was changed last');
+  // The panel, from the toolbar's File menu.
+  await page.mouse.click(FILE_MENU.x, FILE_MENU.y);
+  await frames(page, 3);
+  await page.mouse.click(DOCUMENTS_ITEM.x, DOCUMENTS_ITEM.y);
+  await page.waitForSelector('#documents:not([hidden]) li.shown img', { timeout: 5000 });
+  const rows = await page.$$eval('#documents li', (items) => items.map((item) => ({
+    name: item.querySelector('input.name').value,
+    shown: item.classList.contains('shown'),
+    image: item.querySelector('img') != null,
+  })));
+  assert.equal(rows.length, 2);
+  assert.ok(rows.every((row) => row.image), `both have thumbnails: ${JSON.stringify(rows)}`);
+  // The thumbnails show the shapes: light pixels of the lit surface on the dark view.
+  const light = await page.$$eval('#documents li img', (images) => images.map((image) => {
+    const canvas = document.createElement('canvas');
+    canvas.width = image.naturalWidth;
+    canvas.height = image.naturalHeight;
+    const context = canvas.getContext('2d');
+    context.drawImage(image, 0, 0);
+    const { data } = context.getImageData(0, 0, canvas.width, canvas.height);
+    let count = 0;
+    for (let i = 0; i < data.length; i += 4) if (data[i] > 150 && data[i + 1] > 150) count++;
+    return count / (data.length / 4);
+  }));
+  assert.ok(light.every((f) => f > 0.005 && f < 0.5), `the thumbnails show a shape: ${light}`);
+  await screenshot(page, out('documents-panel.png'));
+  // Rename the egg, then open it.
+  await page.fill('#documents li:not(.shown) input.name', 'Egg');
+  await page.press('#documents li:not(.shown) input.name', 'Enter');
+  await page.click('#documents li:not(.shown) button.open');
+  await until(() => api(page, 'stats'), (s) => s.models === 1 && s.vertices === created.vertices, 5000);
+  assert.equal(await api(page, 'session'), egg, 'Open brings the egg back, history and all');
+  assert.ok(await page.evaluate(() => document.getElementById('documents').hidden), 'the panel closed');
+  kept = await api(page, 'documents');
+  assert.deepEqual(kept.map((d) => [d.name, d.shown]).sort(), [['Egg', true], [kept.find((d) => !d.shown).name, false]].sort());
+  await api(page, 'undo');
+  assert.equal((await api(page, 'stats')).models, 0, 'undo works in the reopened document');
+  await api(page, 'redo');
+  const reopened = await api(page, 'session');
+  // Delete the ball: the first tap arms the button, the second deletes.
+  await page.evaluate(() => window.sketchmeshDocuments.show());
+  await page.waitForSelector('#documents:not([hidden]) li:not(.shown) button.delete');
+  await page.click('#documents li:not(.shown) button.delete');
+  assert.equal((await api(page, 'documents')).length, 2, 'one tap deletes nothing');
+  await page.click('#documents li:not(.shown) button.delete.armed');
+  kept = await until(() => api(page, 'documents'), (d) => d.length === 1, 3000);
+  assert.deepEqual(kept.map((d) => d.name), ['Egg'], 'the ball is gone');
+  await page.keyboard.press('Escape');
+  assert.ok(await page.evaluate(() => document.getElementById('documents').hidden), 'Escape closes the panel');
+  await page.reload({ waitUntil: 'load' });
+  await page.waitForFunction(() => window.sketchmesh?.stats?.().models === 1, null, { timeout: 15_000, polling: 100 });
+  assert.equal(await api(page, 'session'), reopened, 'a reload shows the egg, with its undo and redo');
+  assert.deepEqual(fresh.errors, [], 'console errors with documents');
+}));
+
+test('navigate away in the middle of a creation, come back: the last complete state, with its history', () => withShape(async ({ fresh, created }) => {
+  const { page, cdp } = fresh;
+  await until(() => lastOpOf(page), (o) => o.op === 'create', 15_000);
+  const session = await api(page, 'session');
+  // A second, large outline: its creation runs over many frames; the page goes away at once.
+  const c = { x: 300, y: 420 };
+  const outline = Array.from({ length: 61 }, (_, i) => {
+    const a = (2 * Math.PI * i) / 60;
+    return { x: c.x + 140 * Math.cos(a), y: c.y + 200 * Math.sin(a), force: 0.6 };
+  });
+  await penStroke(cdp, outline, 8);
+  const during = await api(page, 'stats');
+  assert.equal(during.models, 1, 'the page left while the second shape was still being made');
+  await page.goto('about:blank');
+  await page.goBack({ waitUntil: 'load' });
+  await page.waitForFunction(() => window.sketchmesh?.stats?.().models >= 1, null, { timeout: 15_000, polling: 100 });
+  await frames(page, 4);
+  assert.deepEqual(await api(page, 'stats'), created, 'the first shape only');
+  assert.equal(await api(page, 'session'), session, 'the session of the last complete state');
+  await api(page, 'undo');
+  assert.equal((await api(page, 'stats')).models, 0, 'and its history');
+  assert.deepEqual(fresh.errors, [], 'console errors around the navigation');
+}));
+
+test('offline: after one visit, with the server stopped, a reload opens the app and creating a shape works', async () => {
+  const server = await serveDirectory(DIST);
+  const visit = await openApp(browser, server.url, gpu);
+  try {
+    await visit.page.waitForFunction(() => navigator.serviceWorker?.controller != null, null, { timeout: 30_000 });
+    const cached = await visit.page.evaluate(async () => {
+      const keys = await caches.keys();
+      const cache = await caches.open(keys.find((key) => key.startsWith('sketchmesh-')));
+      return (await cache.keys()).map((request) => new URL(request.url).pathname);
+    });
+    assert.ok(cached.includes('/sketchmesh_app_bg.wasm') && cached.includes('/'), `the app's files are cached: ${cached}`);
+    const manifest = await visit.page.evaluate(async () => {
+      const link = document.querySelector('link[rel=manifest]');
+      return (await fetch(link.href)).json();
+    });
+    assert.equal(manifest.display, 'standalone');
+    assert.ok(manifest.icons.some((icon) => icon.sizes === '512x512'), 'installable: a 512 px icon');
+    await server.close();
+    await visit.page.reload({ waitUntil: 'load' });
+    await visit.page.waitForFunction(() => typeof window.sketchmesh?.stats === 'function', null, { timeout: 15_000 });
+    await frames(visit.page, 2);
+    await penStroke(visit.cdp, onEllipse());
+    const made = await until(() => api(visit.page, 'stats'), (s) => s.models === 1, 15_000);
+    assert.equal(made.models, 1, 'a shape is made offline');
+    await frames(visit.page, 3);
+    await screenshot(visit.page, out('offline.png'));
+    assert.deepEqual(visit.errors, [], 'console errors offline');
+  } finally {
+    await visit.context.close();
+    await server.close();
+  }
+});
 
 const failed = await runAll();
 clearTimeout(watchdog);

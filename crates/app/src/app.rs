@@ -56,6 +56,8 @@ pub struct Shared {
     pub autosave: autosave::Schedule,
     /// A sentence for the user from outside the app (the page's restore), shown next frame.
     pub notice: Option<String>,
+    /// Thumbnails of the view the page asked for (`window.sketchmesh.thumbnail()`).
+    pub thumbnails: crate::thumbnail::Capture,
     /// Editors that replaced the first one (see [`autosave::Revision`]).
     opened: u64,
 }
@@ -67,6 +69,12 @@ impl Shared {
         self.opened += 1;
     }
 
+    /// Starts an empty document in the default view, keeping the tool.
+    pub fn open_empty(&mut self) {
+        self.open(Editor::new());
+        self.camera = OrbitCamera::default();
+    }
+
     /// Which document is shown: changes with every op, and when another editor comes in.
     pub fn revision(&self) -> autosave::Revision {
         autosave::Revision {
@@ -75,9 +83,11 @@ impl Shared {
         }
     }
 
-    /// The autosave record of what is shown now.
-    pub fn autosave_record(&self) -> autosave::Record {
-        autosave::Record::new(&self.editor, self.camera, self.mode)
+    /// The autosave record of what is shown now, or `None` for a document without ops: an
+    /// empty page is not a document worth keeping.
+    pub fn autosave_record(&self) -> Option<autosave::Record> {
+        let has_work = !self.editor.ops().is_empty();
+        has_work.then(|| autosave::Record::new(&self.editor, self.camera, self.mode))
     }
 }
 
@@ -118,6 +128,11 @@ pub struct SketchApp {
     announced_import: Option<files::Incoming>,
     /// Frame the view once the geometry has been rebuilt (after an import).
     frame_after_rebuild: bool,
+    /// The document the tools work on (see [`autosave::Revision::opened`]): when the page
+    /// replaces it, the edit in progress belongs to the old one and is dropped.
+    opened: u64,
+    /// The 3D view's rectangle last frame, in points (thumbnails are cut to it).
+    view_rect: egui::Rect,
 }
 
 impl SketchApp {
@@ -147,6 +162,7 @@ impl SketchApp {
                 mode: Mode::default(),
                 autosave: autosave::Schedule::default(),
                 notice: None,
+                thumbnails: Default::default(),
                 opened: 0,
             })),
             router: InputRouter::default(),
@@ -179,6 +195,8 @@ impl SketchApp {
             has_renderer,
             announced_import: None,
             frame_after_rebuild: false,
+            opened: 0,
+            view_rect: egui::Rect::NOTHING,
         }
     }
 
@@ -370,12 +388,21 @@ impl SketchApp {
         self.take_output(dropped, now);
     }
 
-    /// Follows what the page changed from outside: the tool a restore chose, a sentence.
+    /// Follows what the page changed from outside: another document (the edit in progress
+    /// and the tool's gesture were the old one's, and go), the tool a restore chose, a
+    /// sentence.
     fn follow_page(&mut self, now: f64) {
-        let (mode, notice) = {
+        let (opened, mode, notice) = {
             let mut shared = self.shared.borrow_mut();
-            (shared.mode, shared.notice.take())
+            (shared.revision().opened, shared.mode, shared.notice.take())
         };
+        if opened != self.opened {
+            self.opened = opened;
+            self.cancel_gesture();
+            self.edit = None;
+            let dropped = self.tools.cancel();
+            self.take_output(dropped, now);
+        }
         if mode != self.tools.mode() {
             self.set_mode(mode, now);
         }
@@ -400,6 +427,9 @@ impl SketchApp {
                 return;
             }
             shared.autosave_record()
+        };
+        let Some(record) = record else {
+            return;
         };
         if let Err(why) = crate::web::write_autosave(&record) {
             self.set_status(format!("Could not autosave: {why}"), now);
@@ -451,10 +481,9 @@ impl SketchApp {
         }
     }
 
-    /// Opens a session file in place of the document (its history comes with it). A file
-    /// that does not replay changes nothing. In the page, a document that had work in it is
-    /// first set aside in the browser's storage, as a broken autosave is (issue 18's
-    /// documents panel will list it); the autosave then follows the opened session.
+    /// Opens a session file as a document of its own (its history comes with it). A file
+    /// that does not replay changes nothing. In the page, the document shown is kept first
+    /// (the documents panel lists it) and the autosave then follows the opened one.
     fn open_session(&mut self, name: &str, bytes: Vec<u8>, now: f64) {
         let replayed = String::from_utf8(bytes)
             .map_err(|_| String::from("it is not text"))
@@ -467,11 +496,14 @@ impl SketchApp {
             }
         };
         self.cancel_gesture();
-        let had_work = !self.shared.borrow().editor.document().is_empty();
+        let record = self.shared.borrow().autosave_record();
+        let had_work = record.is_some();
         #[cfg(target_arch = "wasm32")]
-        if had_work {
-            let record = self.shared.borrow().autosave_record();
-            if let Err(why) = crate::web::set_aside_autosave(&record) {
+        {
+            let title = name
+                .trim_end_matches(".json")
+                .trim_end_matches(".sketchmesh");
+            if let Err(why) = crate::web::keep_and_start(record.as_ref(), title) {
                 let sentence =
                     format!("Did not open {name}: the work shown could not be kept ({why}).");
                 return self.set_status(sentence, now);
@@ -480,10 +512,22 @@ impl SketchApp {
         self.shared.borrow_mut().open(editor);
         self.frame_after_rebuild = true;
         let kept = match had_work {
-            true => " The previous document was kept in this browser's storage.",
+            true => " The previous document is kept under Documents.",
             false => "",
         };
         self.set_status(format!("Opened {name}.{kept}"), now);
+    }
+
+    /// The page's documents panel: `"show"` it, or `"newDocument"` (which keeps the document
+    /// shown). The desktop build has no store, and its toolbar disables both.
+    fn page_documents(&mut self, method: &str, now: f64) {
+        self.finish_edit(now);
+        #[cfg(target_arch = "wasm32")]
+        if let Err(why) = crate::web::documents(method) {
+            self.set_status(format!("Could not open the documents: {why}"), now);
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        let _ = method;
     }
 
     fn save_session(&mut self, now: f64) {
@@ -685,8 +729,11 @@ impl SketchApp {
                 .add(egui_wgpu::Callback::new_paint_callback(viewport, callback));
         }
         self.live_stroke_ui(ui, viewport);
+        self.view_rect = viewport;
         let idle = self.stroke_preview().is_none() && self.edit.is_none();
-        if let Some((status, _)) = &self.status {
+        if self.shared.borrow().thumbnails.is_capturing() {
+            // A thumbnail is being taken: the shapes only.
+        } else if let Some((status, _)) = &self.status {
             status_ui(ui, viewport, status);
         } else if self.shared.borrow().editor.document().is_empty() && idle {
             let text = "Draw a closed outline to make a shape. Two fingers or right-drag orbit.";
@@ -933,6 +980,8 @@ impl eframe::App for SketchApp {
             Some(panels::toolbar::Action::ResetView) => {
                 self.shared.borrow_mut().camera = OrbitCamera::default()
             }
+            Some(panels::toolbar::Action::NewDocument) => self.page_documents("newDocument", now),
+            Some(panels::toolbar::Action::Documents) => self.page_documents("show", now),
             Some(panels::toolbar::Action::Import) => self.import_files(&ctx),
             Some(panels::toolbar::Action::Export) => self.export(now),
             Some(panels::toolbar::Action::SaveSession) => self.save_session(now),
@@ -941,6 +990,10 @@ impl eframe::App for SketchApp {
             None => {}
         }
         egui::CentralPanel::no_frame().show(ui, |ui| self.viewport_ui(ui));
+        self.shared
+            .borrow_mut()
+            .thumbnails
+            .run(&ctx, self.view_rect);
         let backend = self.shared.borrow().backend.clone();
         panels::help::help_ui(&ctx, &mut self.show_help, &backend, self.router.pen_seen());
     }

@@ -12,6 +12,7 @@ pub mod files;
 pub mod input;
 pub mod panels;
 pub mod render;
+pub mod thumbnail;
 pub mod tools;
 #[cfg(target_arch = "wasm32")]
 pub mod web;

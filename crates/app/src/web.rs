@@ -181,7 +181,9 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
             if !shared.autosave.is_pending(revision) {
                 return Ok(());
             }
-            write_autosave(&shared.autosave_record()).map_err(|e| js_error(&e))?;
+            if let Some(record) = shared.autosave_record() {
+                write_autosave(&record).map_err(|e| js_error(&e))?;
+            }
             shared
                 .autosave
                 .mark_saved(revision, js_sys::Date::now() / 1000.0);
@@ -198,6 +200,19 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
         })
         .into_js_value(),
     )?;
+    let (s, c) = (shared.clone(), ctx.clone());
+    set(
+        "thumbnail",
+        getter(move || {
+            let promise = js_sys::Promise::new(&mut |resolve, _reject| {
+                s.borrow_mut().thumbnails.ask(Box::new(move |thumbnail| {
+                    let _ = resolve.call1(&JsValue::NULL, &thumbnail_object(thumbnail));
+                }));
+            });
+            c.request_repaint();
+            Ok(promise.into())
+        }),
+    )?;
     // The browser suite's forced failure (issue 18): never in the shipped page.
     #[cfg(feature = "test-api")]
     set(
@@ -209,9 +224,10 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
     Ok(())
 }
 
-/// Takes the page's autosave record, if it has one: the document, view and tool it holds
-/// replace the empty start, and autosaving begins. A record that does not replay changes
-/// nothing and is refused with a sentence (the page sets it aside, then calls again without).
+/// Opens a document from the page's store: the document, view and tool of the record, or
+/// with none an empty document, replace what is shown, and autosaving (to the document the
+/// page now has open) begins. A record that does not replay changes nothing and is refused
+/// with a sentence (the page sets it aside, then calls again without).
 fn restore(shared: &mut Shared, text: Option<&str>) -> Result<(), String> {
     if let Some(text) = text {
         let restored = serde_json::from_str::<Record>(text)
@@ -232,18 +248,30 @@ fn restore(shared: &mut Shared, text: Option<&str>) -> Result<(), String> {
                 return Err(sentence);
             }
         }
+    } else if !shared.editor.ops().is_empty() {
+        // Empty already (the page's start, where a stroke may be under way): nothing to drop.
+        shared.open_empty();
     }
     let revision = shared.revision();
     shared.autosave.start(revision);
     Ok(())
 }
 
-/// Keeps `record` in the page's store under a key of its own (the work shown, before a
-/// session file replaces it).
+/// Keeps the document shown (`record`, or nothing when it has no ops) in the page's store and
+/// makes a new document, named `title`, the one the autosave writes to: a session file opened
+/// becomes a document of its own.
 ///
 /// Errors: a sentence when the page has no store or the call throws at once.
-pub fn set_aside_autosave(record: &Record) -> Result<(), String> {
-    call_store("setAside", record)
+pub fn keep_and_start(record: Option<&Record>, title: &str) -> Result<(), String> {
+    let text = match record {
+        Some(record) => JsValue::from_str(&record_text(record)?),
+        None => JsValue::NULL,
+    };
+    call_page(
+        "sketchmeshAutosave",
+        "keep",
+        &[text, JsValue::from_str(title)],
+    )
 }
 
 /// Hands `record` to the page's store (`window.sketchmeshAutosave.save`, from
@@ -251,23 +279,50 @@ pub fn set_aside_autosave(record: &Record) -> Result<(), String> {
 ///
 /// Errors: a sentence when the page has no store or the call throws at once.
 pub fn write_autosave(record: &Record) -> Result<(), String> {
-    call_store("save", record)
+    let text = JsValue::from_str(&record_text(record)?);
+    call_page("sketchmeshAutosave", "save", &[text])
 }
 
-/// Calls `window.sketchmeshAutosave[method]` with `record` as JSON text.
-fn call_store(method: &str, record: &Record) -> Result<(), String> {
-    let text = serde_json::to_string(record).map_err(|e| e.to_string())?;
+/// The documents panel (`web/documents.js`): `"show"` opens it, `"newDocument"` keeps the
+/// document shown and starts an empty one.
+///
+/// Errors: a sentence when the page has no panel.
+pub fn documents(method: &str) -> Result<(), String> {
+    call_page("sketchmeshDocuments", method, &[])
+}
+
+fn record_text(record: &Record) -> Result<String, String> {
+    serde_json::to_string(record).map_err(|e| e.to_string())
+}
+
+/// Calls `window[object][method](...args)`.
+fn call_page(object: &str, method: &str, args: &[JsValue]) -> Result<(), String> {
+    let missing = || format!("the page has no {object}.{method}");
     let window = web_sys::window().ok_or("there is no window")?;
-    let store = Reflect::get(&window, &JsValue::from_str("sketchmeshAutosave"))
-        .map_err(|_| "the page has no autosave store")?;
-    let function: js_sys::Function = Reflect::get(&store, &JsValue::from_str(method))
+    let target = Reflect::get(&window, &JsValue::from_str(object)).map_err(|_| missing())?;
+    let function: js_sys::Function = Reflect::get(&target, &JsValue::from_str(method))
         .ok()
         .and_then(|f| f.dyn_into().ok())
-        .ok_or("the page has no autosave store")?;
+        .ok_or_else(missing)?;
+    let args: js_sys::Array = args.iter().collect();
     function
-        .call1(&store, &JsValue::from_str(&text))
+        .apply(&target, &args)
         .map(|_| ())
         .map_err(|e| format!("{e:?}"))
+}
+
+/// `{width, height, pixels}`, the pixels an `Uint8ClampedArray` ready for `ImageData`.
+fn thumbnail_object(thumbnail: &crate::thumbnail::Thumbnail) -> JsValue {
+    let object = Object::new();
+    let pixels = js_sys::Uint8ClampedArray::from(thumbnail.rgba.as_slice());
+    for (key, value) in [
+        ("width", JsValue::from(thumbnail.width as u32)),
+        ("height", JsValue::from(thumbnail.height as u32)),
+        ("pixels", pixels.into()),
+    ] {
+        let _ = Reflect::set(&object, &JsValue::from_str(key), &value);
+    }
+    object.into()
 }
 
 fn getter(f: impl Fn() -> Result<JsValue, JsValue> + 'static) -> JsValue {

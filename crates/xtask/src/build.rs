@@ -115,6 +115,8 @@ pub fn build_web(workspace: &Workspace, profile: WebProfile) -> anyhow::Result<W
         copy_dir(&static_dir, &dist)?;
     }
 
+    write_service_worker(&dist)?;
+
     let js = dist.join(format!("{OUT_NAME}.js"));
     let wasm_gzip_size = gzip_next_to(&wasm)?;
     let js_gzip_size = gzip_next_to(&js)?;
@@ -176,6 +178,37 @@ fn wasm_opt_cached(workspace: &Workspace, input: &Path, cache: &Path) -> anyhow:
     // Written last, so an interrupted wasm-opt is redone next time.
     fs::write(&key_file, key).context("writing the wasm-opt cache key")?;
     Ok(output)
+}
+
+/// The service worker (`web/sw.js`, copied into `dist/`) caches the page's files for offline
+/// use: fills in the list of those files and a version that changes whenever one of them
+/// does, so that browsers fetch the new ones (and only then).
+fn write_service_worker(dist: &Path) -> anyhow::Result<()> {
+    let worker = dist.join("sw.js");
+    let template = fs::read_to_string(&worker).context("reading web/sw.js")?;
+    let mut files = Vec::new();
+    for entry in fs::read_dir(dist).context("listing dist/")? {
+        let name = entry?.file_name().to_string_lossy().into_owned();
+        if name != "sw.js" && !name.ends_with(".gz") {
+            files.push(name);
+        }
+    }
+    files.sort();
+    // The hash of each file's name and contents' hash.
+    let mut listing = String::new();
+    for name in &files {
+        let bytes = fs::read(dist.join(name)).with_context(|| format!("reading dist/{name}"))?;
+        listing.push_str(&format!("{name} {:016x}\n", fnv1a64(&bytes)));
+    }
+    let version = fnv1a64(listing.as_bytes());
+    let urls: Vec<String> = std::iter::once(String::from("./")).chain(files).collect();
+    let filled = template
+        .replace("__SKETCHMESH_VERSION__", &format!("{version:016x}"))
+        .replace("__SKETCHMESH_FILES__", &serde_json::to_string(&urls)?);
+    if filled == template {
+        bail!("web/sw.js has no __SKETCHMESH_VERSION__ or __SKETCHMESH_FILES__ to fill in");
+    }
+    fs::write(&worker, filled).context("writing dist/sw.js")
 }
 
 /// 64-bit FNV-1a: a cache key, not a defence against collisions made on purpose.
@@ -289,6 +322,38 @@ mod tests {
             "only the output and its key: {leftovers:?}"
         );
         fs::remove_dir_all(&root).unwrap();
+    }
+
+    #[test]
+    fn the_service_worker_lists_the_files_and_versions_their_contents() {
+        let dist = std::env::temp_dir().join(format!("xtask-sw-{}", std::process::id()));
+        let template =
+            "const VERSION = \"__SKETCHMESH_VERSION__\";\nconst FILES = __SKETCHMESH_FILES__;\n";
+        let build = |wasm: &[u8]| {
+            recreate_dir(&dist).unwrap();
+            fs::write(dist.join("sw.js"), template).unwrap();
+            fs::write(dist.join("index.html"), "<html>").unwrap();
+            fs::write(dist.join("app_bg.wasm"), wasm).unwrap();
+            fs::write(dist.join("app_bg.wasm.gz"), b"gz").unwrap();
+            write_service_worker(&dist).unwrap();
+            fs::read_to_string(dist.join("sw.js")).unwrap()
+        };
+        let first = build(b"\0asm one");
+        assert!(
+            first.contains(r#"const FILES = ["./","app_bg.wasm","index.html"];"#),
+            "no .gz, no sw.js: {first}"
+        );
+        let version = |text: &str| text.lines().next().unwrap_or_default().to_owned();
+        assert_eq!(version(&first).len(), "const VERSION = \"\";".len() + 16);
+        assert_eq!(version(&build(b"\0asm one")), version(&first), "same files");
+        assert_ne!(
+            version(&build(b"\0asm two")),
+            version(&first),
+            "a changed file"
+        );
+        fs::write(dist.join("sw.js"), "no placeholders").unwrap();
+        assert!(write_service_worker(&dist).is_err());
+        fs::remove_dir_all(&dist).unwrap();
     }
 
     #[test]

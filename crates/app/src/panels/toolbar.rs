@@ -18,6 +18,10 @@ pub enum Action {
     FrameAll,
     /// Back to the default view.
     ResetView,
+    /// Keep the document and start an empty one.
+    NewDocument,
+    /// Show the documents kept in this browser.
+    Documents,
     /// Pick glTF files to import.
     Import,
     /// Download the document as .glb.
@@ -34,11 +38,12 @@ pub enum Action {
 const TOUCH_TARGET: f32 = 36.0;
 
 /// Below this width (points) the toolbar is two rows that scroll sideways, with the file and
-/// view buttons in a menu: wrapped, it took four rows, a third of a phone's screen.
+/// view buttons in one menu: wrapped, it took four rows, a third of a phone's screen.
 const NARROW: f32 = 700.0;
 
-/// Shows the toolbar: two rows, the tools and the mode's options; on a wide screen they wrap,
-/// on a narrow one they scroll sideways and the file and view buttons sit in a menu (☰).
+/// Shows the toolbar: two rows, the tools and the mode's options; on a wide screen they wrap
+/// and the file buttons sit in a File menu, on a narrow one they scroll sideways and the file
+/// and view buttons sit in one menu (☰).
 pub fn toolbar_ui(
     ui: &mut egui::Ui,
     editor: &Editor,
@@ -61,7 +66,7 @@ pub fn toolbar_ui(
             });
         } else {
             // No title: the page's is enough, and the row needs the room for the buttons.
-            file_buttons(ui, editor, &mut action);
+            ui.menu_button("File", |ui| file_buttons(ui, editor, &mut action));
             ui.separator();
         }
         button(
@@ -164,12 +169,31 @@ fn button(
     }
 }
 
-/// Import, Export and Save.
+/// New, Documents, Import, Export and Save.
 fn file_buttons(ui: &mut egui::Ui, editor: &Editor, action: &mut Option<Action>) {
+    // The documents live in the page's storage: the desktop build has none.
+    let has_store = cfg!(target_arch = "wasm32");
+    button(
+        ui,
+        has_store,
+        "New",
+        "Keep this document under Documents and start an empty one",
+        Action::NewDocument,
+        action,
+    );
+    button(
+        ui,
+        has_store,
+        "Documents…",
+        "The documents kept in this browser: open, rename or delete them",
+        Action::Documents,
+        action,
+    );
+    ui.separator();
     button(
         ui,
         true,
-        "Import",
+        "Import…",
         "Import a .glb or .gltf file, or open a saved session (.sketchmesh.json) (Ctrl+O); \
          or drop one on the page",
         Action::Import,
@@ -186,7 +210,7 @@ fn file_buttons(ui: &mut egui::Ui, editor: &Editor, action: &mut Option<Action>)
     button(
         ui,
         editor.can_undo() || editor.can_redo(),
-        "Save",
+        "Save session",
         "Save the session, every step of it, to replay or to open elsewhere \
          (.sketchmesh.json, Ctrl+Shift+S)",
         Action::SaveSession,

@@ -1,0 +1,112 @@
+// Starts Sketchmesh in the page: the wasm app, the documents it restores and keeps, the
+// failure notice, and the service worker that makes the page open offline.
+
+import init, { start } from "./sketchmesh_app.js";
+import * as store from "./store.js";
+import * as documents from "./documents.js";
+
+const loading = document.getElementById("loading");
+
+// Ctrl+S and Ctrl+O are Sketchmesh's export and import, not the browser's save and open.
+addEventListener("keydown", (e) => {
+  if ((e.ctrlKey || e.metaKey) && ["s", "o", "e"].includes(e.key.toLowerCase())) e.preventDefault();
+});
+// A file dropped beside the canvas must not make the browser navigate away from the work.
+for (const type of ["dragover", "drop"]) addEventListener(type, (e) => e.preventDefault());
+
+const notify = (sentence) => window.sketchmesh?.notify(sentence);
+
+// The app hands its autosave record here (see crates/app/src/autosave.rs), and the documents
+// panel's buttons (crates/app/src/panels/toolbar.rs) here.
+window.sketchmeshAutosave = {
+  save: (text) => store.save(text).catch((e) => notify(`Could not autosave your work: ${e?.message ?? e}`)),
+  keep: (text, name) => store.keep(text, name).catch((e) => notify(`Could not keep the previous document: ${e?.message ?? e}`)),
+};
+window.sketchmeshDocuments = {
+  show: () => documents.show(),
+  newDocument: () => documents.newDocument().catch((e) => notify(`Could not start a new document: ${e?.message ?? e}`)),
+};
+
+// A panic in the wasm stops the app (its hook calls this): say so, offer a bug report and a
+// reload, and write no more autosaves, so the record of the last finished change stays.
+let panicked = false;
+window.sketchmeshPanicked = (sentence) => {
+  panicked = true;
+  document.getElementById("failure-message").textContent = sentence;
+  document.getElementById("failure").hidden = false;
+  document.getElementById("failure-reload").onclick = () => location.reload();
+  document.getElementById("failure-copy").onclick = async (e) => {
+    const session = await store.record(store.shownId()).catch(() => null);
+    const report = { sentence, browser: navigator.userAgent, page: location.href, autosave: session };
+    try {
+      await navigator.clipboard.writeText(JSON.stringify(report, null, 2));
+      e.target.textContent = "Copied";
+    } catch {
+      e.target.textContent = "Could not copy";
+    }
+  };
+};
+const flush = () => { if (!panicked) window.sketchmesh.flushAutosave(); };
+
+// Restores the document shown last; a record that does not restore is set aside (the app has
+// said so) and the page starts empty. Without IndexedDB the page starts empty too.
+async function restore() {
+  let record = null;
+  try {
+    record = await store.load();
+  } catch (e) {
+    console.warn("No document store:", e);
+  }
+  try {
+    window.sketchmesh.restore(record);
+  } catch (e) {
+    console.warn(e);
+    await store.setAside(record).catch((e) => console.warn(e));
+    window.sketchmesh.restore(null);
+  }
+  // Closing or hiding the page writes the latest change at once.
+  addEventListener("pagehide", flush);
+  document.addEventListener("visibilitychange", () => {
+    if (document.visibilityState === "hidden") flush();
+  });
+  // Asks the browser not to evict the documents under storage pressure.
+  navigator.storage?.persist?.().catch(() => {});
+}
+
+// The page API's document calls (README, "Page API").
+function extendPageApi() {
+  Object.assign(window.sketchmesh, {
+    newDocument: () => documents.newDocument(),
+    documents: () => documents.documents(),
+    openDocument: (id) => documents.openDocument(id),
+  });
+}
+
+// The service worker keeps the app's files, so that the page opens offline after one visit.
+// A new version is fetched in the background and taken on the next load; the page says so.
+async function registerServiceWorker() {
+  if (!("serviceWorker" in navigator)) return;
+  const registration = await navigator.serviceWorker.register("sw.js");
+  registration.addEventListener("updatefound", () => {
+    const worker = registration.installing;
+    worker?.addEventListener("statechange", () => {
+      if (worker.state === "activated" && navigator.serviceWorker.controller) {
+        notify("A new version of Sketchmesh is ready: it opens the next time you load the page.");
+      }
+    });
+  });
+}
+
+try {
+  await init();
+  await start("sketchmesh_canvas");
+  loading.remove();
+  extendPageApi();
+  documents.install();
+  await restore();
+} catch (e) {
+  loading.classList.add("error");
+  loading.textContent = "Sketchmesh could not start: " + (e && e.message ? e.message : e);
+  console.error(e);
+}
+registerServiceWorker().catch((e) => console.warn("No service worker:", e));

@@ -14,7 +14,11 @@ addEventListener("keydown", (e) => {
 // A file dropped beside the canvas must not make the browser navigate away from the work.
 for (const type of ["dragover", "drop"]) addEventListener(type, (e) => e.preventDefault());
 
-const notify = (sentence) => window.sketchmesh?.notify(sentence);
+// Says `sentence` over the view, and in the console for bug reports.
+const notify = (sentence) => {
+  console.warn(sentence);
+  window.sketchmesh?.notify(sentence);
+};
 
 // The app hands its autosave record here (see crates/app/src/autosave.rs), and the documents
 // panel's buttons (crates/app/src/panels/toolbar.rs) here.

@@ -62,7 +62,15 @@ async function transact(names, mode, work) {
   return new Promise((resolve, reject) => {
     const transaction = db.transaction(names, mode);
     const stores = Object.fromEntries(names.map((name) => [name, transaction.objectStore(name)]));
-    const result = work(stores);
+    let result;
+    try {
+      result = work(stores);
+    } catch (error) {
+      // A request refused at once (a full store can refuse the put itself).
+      transaction.abort();
+      reject(storageError(error));
+      return;
+    }
     transaction.oncomplete = () => resolve(result instanceof IDBRequest ? result.result : result);
     transaction.onerror = () => reject(storageError(transaction.error));
     transaction.onabort = () => reject(storageError(transaction.error));

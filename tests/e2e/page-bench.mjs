@@ -18,6 +18,78 @@ const STROKE_POINTS = 90;
 const { url, gpu } = settings();
 
 const browser = await launch(gpu);
+
+/**
+ * The autosave of a 100k-triangle document (Nefertiti, 99,938 triangles, imported): the longest
+ * frame while a change is written (the session with the import's bytes is what is serialized),
+ * the app's own time for each write (serialized and handed to IndexedDB's queue), and the
+ * restore on reload (from `window.sketchmesh` appearing to the document shown, and from
+ * navigation).
+ */
+async function autosaveBench() {
+  const file = join(process.env.SKETCHMESH_TESTDATA ?? '../shared/testdata', 'meshes', 'nefertiti.glb');
+  if (!existsSync(file)) {
+    console.error(`autosave: SKIPPED, ${file} is missing (set SKETCHMESH_TESTDATA)`);
+    return { skipped: `${file} is missing` };
+  }
+  const context = await browser.newContext({ viewport: { width: 1280, height: 720 } });
+  await context.addInitScript(() => {
+    const bench = { frames: [], recording: false, apiAt: null, shownAt: null };
+    window.__bench = bench;
+    const tick = (t) => {
+      if (bench.apiAt === null && window.sketchmesh) bench.apiAt = performance.now();
+      if (bench.shownAt === null && window.sketchmesh?.stats?.().models > 0) bench.shownAt = performance.now();
+      if (bench.recording) bench.frames.push(t);
+      requestAnimationFrame(tick);
+    };
+    requestAnimationFrame(tick);
+  });
+  const page = await context.newPage();
+  try {
+    await page.goto(url, { waitUntil: 'load' });
+    await page.waitForFunction(() => window.sketchmesh?.stats !== undefined, null, { timeout: 30_000 });
+    const triangles = await page.evaluate((data) => {
+      window.sketchmesh.loadGlb(new Uint8Array(data), 'nefertiti.glb');
+      return window.sketchmesh.stats().triangles;
+    }, [...readFileSync(file)]);
+    await sleep(1500);
+    // An undo is written at once (the last write is old); a redo 100 ms later waits for the
+    // half-second interval, so its write has a frame of its own, apart from the redo's
+    // rebuild of the view: the frames from 250 ms after the redo hold the write and no rebuild.
+    const frames = await page.evaluate(async () => {
+      const b = window.__bench;
+      window.sketchmesh.timings();
+      window.sketchmesh.undo();
+      await new Promise((resolve) => setTimeout(resolve, 100));
+      b.frames = [];
+      b.recording = true;
+      window.sketchmesh.redo();
+      const redoneAt = performance.now();
+      await new Promise((resolve) => setTimeout(resolve, 1500));
+      b.recording = false;
+      return b.frames.filter((t) => t > redoneAt + 250);
+    });
+    const longest = Math.max(...frames.slice(1).map((t, i) => t - frames[i]));
+    const writes = (await api(page, 'timings')).autosave?.frame_ms ?? [];
+    const bytes = await page.evaluate(() => window.sketchmesh.session().length);
+    await sleep(500);
+    await page.reload({ waitUntil: 'load' });
+    await page.waitForFunction(() => window.__bench.shownAt !== null, null, { timeout: 30_000, polling: 50 });
+    const restore = await page.evaluate(() => ({ fromApi: window.__bench.shownAt - window.__bench.apiAt, fromNavigation: window.__bench.shownAt }));
+    return {
+      triangles,
+      session_bytes: bytes,
+      longest_frame_while_saving_ms: round(longest),
+      frames: frames.length,
+      writes: writes.length,
+      write_ms: round(Math.max(...writes)),
+      restore_ms: round(restore.fromApi),
+      load_to_document_ms: round(restore.fromNavigation),
+    };
+  } finally {
+    await context.close();
+  }
+}
 try {
   const context = await browser.newContext({ viewport: { width: 1280, height: 720 }, hasTouch: true });
   // Runs before the page's scripts: records every animation frame's timestamp (ms since navigation
@@ -392,6 +464,9 @@ try {
     console.error(`feature: ${JSON.stringify(feature)}`);
   }
 
+  const autosave = await autosaveBench();
+  console.error(`autosave: ${JSON.stringify(autosave)}`);
+
   const deltas = timing.frames.slice(1).map((t, i) => t - timing.frames[i]);
   const sorted = [...deltas].sort((a, b) => a - b);
   const quantile = (q) => (sorted.length ? sorted[Math.min(sorted.length - 1, Math.floor(q * sorted.length))] : null);
@@ -414,6 +489,7 @@ try {
     oversketch,
     optimize,
     feature,
+    autosave,
   };
   console.log(JSON.stringify(report));
 } finally {

@@ -19,7 +19,7 @@ import {
   serveDirectory, settings, sleep, touchGesture, touchTap,
 } from './lib.mjs';
 
-const WATCHDOG_MS = 240_000;
+const WATCHDOG_MS = 420_000;
 const { url, gpu } = settings();
 const out = (name) => join(OUT_DIR, `${gpu}-${name}`);
 /** The built page that `cargo xtask test` serves (the offline case serves it itself). */
@@ -1062,6 +1062,23 @@ test('documents: New keeps the shape and starts empty; the panel lists both with
   await page.waitForFunction(() => window.sketchmesh?.stats?.().models === 1, null, { timeout: 15_000, polling: 100 });
   assert.equal(await api(page, 'session'), reopened, 'a reload shows the egg, with its undo and redo');
   assert.deepEqual(fresh.errors, [], 'console errors with documents');
+}));
+
+test('a full store: the autosave says so in a sentence, and the document stays as it is', () => withShape(async ({ fresh, created }) => {
+  const { page } = fresh;
+  await until(() => lastOpOf(page), (o) => o.op === 'create', 15_000);
+  const warnings = [];
+  page.on('console', (msg) => warnings.push(msg.text()));
+  await page.evaluate(() => {
+    IDBObjectStore.prototype.put = () => { throw new DOMException('The quota has been exceeded.', 'QuotaExceededError'); };
+  });
+  await api(page, 'undo');
+  await until(async () => warnings, (w) => w.some((text) => text.includes('storage for Sketchmesh is full')), 3000);
+  assert.ok(warnings.some((w) => /^Could not autosave your work: this browser's storage for Sketchmesh is full: delete documents/.test(w)), `a sentence: ${warnings}`);
+  await api(page, 'redo');
+  assert.deepEqual(await api(page, 'stats'), created, 'the document is as it was');
+  await frames(page, 3);
+  await screenshot(page, out('storage-full.png'));
 }));
 
 test('navigate away in the middle of a creation, come back: the last complete state, with its history', () => withShape(async ({ fresh, created }) => {

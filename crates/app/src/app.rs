@@ -415,7 +415,7 @@ impl SketchApp {
     /// while a change waits for it.
     #[cfg(target_arch = "wasm32")]
     fn autosave(&mut self, ctx: &egui::Context, now: f64) {
-        let record = {
+        let (record, started) = {
             let mut shared = self.shared.borrow_mut();
             let revision = shared.revision();
             if !shared.autosave.due(revision, now) {
@@ -426,12 +426,21 @@ impl SketchApp {
                 }
                 return;
             }
-            shared.autosave_record()
+            let started = clock::now_ms();
+            (shared.autosave_record(), started)
         };
         let Some(record) = record else {
             return;
         };
-        if let Err(why) = crate::web::write_autosave(&record) {
+        let written = crate::web::write_autosave(&record);
+        // The frame's share of the write: the session serialized and handed to the page's
+        // queue (the page benchmark reads it as "autosave").
+        let ms = clock::now_ms() - started;
+        clock::record(
+            &mut self.shared.borrow_mut().timings.of("autosave").frame_ms,
+            ms,
+        );
+        if let Err(why) = written {
             self.set_status(format!("Could not autosave: {why}"), now);
         }
     }

@@ -93,7 +93,8 @@ impl Schedule {
         self.saved.is_some_and(|saved| saved != revision)
     }
 
-    /// The document at `revision` was written at `now` (also by a flush when the page hides).
+    /// The document at `revision` was written at `now`, in the seconds of the frames' clock that
+    /// [`Schedule::due`] is given (also by a flush when the page hides).
     pub fn mark_saved(&mut self, revision: Revision, now: f64) {
         if self.saved.is_some() {
             self.saved = Some(revision);

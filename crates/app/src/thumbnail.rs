@@ -81,11 +81,21 @@ type Screenshot = Arc<egui::ColorImage>;
 #[derive(Default)]
 pub struct Capture {
     waiters: Vec<Waiter>,
-    /// Where the screenshot callback (which must be `Send`) leaves the image.
-    slot: Arc<Mutex<Option<Screenshot>>>,
+    /// Where the screenshot callback (which must be `Send`) leaves the image, with the number
+    /// of its request.
+    slot: Arc<Mutex<Option<(u64, Screenshot)>>>,
+    /// Requests made: a screenshot that arrives after its request was given up is not taken
+    /// for a later one's.
+    requests: u64,
     /// Whether a screenshot was requested and has not arrived.
     requested: bool,
+    /// Frames since the screenshot was requested.
+    frames_waited: u32,
 }
+
+/// Frames after which a screenshot that has not arrived is given up (the page waits a few
+/// seconds and goes on without a thumbnail; the view shows its hints again).
+const GIVE_UP_FRAMES: u32 = 300;
 
 impl Capture {
     /// Asks for a thumbnail of the view; `done` gets it after the next frames are painted.
@@ -100,12 +110,16 @@ impl Capture {
     }
 
     /// Runs once per frame: requests the screenshot the waiters need, and hands them the
-    /// thumbnail of `view` once it has arrived.
+    /// thumbnail of `view` once it has arrived. Frames keep coming meanwhile: the read-back
+    /// completes in a later frame (on WebGL2, only when the device is polled again).
     pub fn run(&mut self, ctx: &egui::Context, view: egui::Rect) {
         if self.waiters.is_empty() {
             return;
         }
-        let arrived = self.slot.lock().map(|mut slot| slot.take()).unwrap_or(None);
+        ctx.request_repaint();
+        let arrived = (self.slot.lock().map(|mut slot| slot.take()).unwrap_or(None))
+            .filter(|(request, _)| *request == self.requests)
+            .map(|(_, image)| image);
         match arrived {
             Some(image) => {
                 self.requested = false;
@@ -114,17 +128,23 @@ impl Capture {
                     done(&thumbnail);
                 }
             }
-            None if !self.requested => {
+            None if self.requested && self.frames_waited >= GIVE_UP_FRAMES => {
+                self.requested = false;
+                self.waiters.clear();
+            }
+            None if self.requested => self.frames_waited += 1,
+            None => {
                 self.requested = true;
-                let (slot, repaint) = (self.slot.clone(), ctx.clone());
+                self.frames_waited = 0;
+                self.requests += 1;
+                let (slot, repaint, request) = (self.slot.clone(), ctx.clone(), self.requests);
                 ctx.request_screenshot(move |image| {
                     if let Ok(mut slot) = slot.lock() {
-                        *slot = Some(image);
+                        *slot = Some((request, image));
                     }
                     repaint.request_repaint();
                 });
             }
-            None => {}
         }
     }
 }

@@ -172,7 +172,7 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
         )
         .into_js_value(),
     )?;
-    let s = shared.clone();
+    let (s, c) = (shared.clone(), ctx.clone());
     set(
         "flushAutosave",
         Closure::<dyn Fn() -> Result<(), JsValue>>::new(move || {
@@ -184,9 +184,9 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
             if let Some(record) = shared.autosave_record() {
                 write_autosave(&record).map_err(|e| js_error(&e))?;
             }
-            shared
-                .autosave
-                .mark_saved(revision, js_sys::Date::now() / 1000.0);
+            // The frames' clock, which the schedule compares with (not the wall clock).
+            let now = c.input(|i| i.time);
+            shared.autosave.mark_saved(revision, now);
             Ok(())
         })
         .into_js_value(),

@@ -90,11 +90,13 @@ function extendPageApi() {
 // A new version is fetched in the background and taken on the next load; the page says so.
 async function registerServiceWorker() {
   if (!("serviceWorker" in navigator)) return;
+  // Without a worker at load this is the first visit: the one installing is not an update.
+  const isUpdate = navigator.serviceWorker.controller != null;
   const registration = await navigator.serviceWorker.register("sw.js");
   registration.addEventListener("updatefound", () => {
     const worker = registration.installing;
     worker?.addEventListener("statechange", () => {
-      if (worker.state === "activated" && navigator.serviceWorker.controller) {
+      if (worker.state === "activated" && isUpdate) {
         notify("A new version of Sketchmesh is ready: it opens the next time you load the page.");
       }
     });

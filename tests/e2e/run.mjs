@@ -9,7 +9,8 @@
 // case failed.
 
 import assert from 'node:assert/strict';
-import { existsSync, readFileSync, writeFileSync } from 'node:fs';
+import { cpSync, existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
@@ -430,6 +431,66 @@ test('phone (390x844, DPR 2, touch): the toolbar is two rows that scroll sideway
     await phoneBrowser.close();
   }
 });
+
+test('pen with a resting palm: exactly one model, no ink from the palm, the view unmoved; a pen hovering shows its cursor', async () => {
+  const fresh = await openApp(browser, url, gpu);
+  try {
+    const { page, cdp } = fresh;
+    const view = await api(page, 'camera');
+    const outline = onEllipse();
+    // The pen comes near (hovering, no button), the palm lands, wide, and rests while the pen draws.
+    const hover = { pointerType: 'pen', button: 'none', buttons: 0 };
+    await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', x: 300, y: 300, ...hover });
+    await frames(page, 3);
+    const hovering = await screenshot(page, out('pen-hover.png'));
+    await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', x: outline[0].x, y: outline[0].y, ...hover });
+    await frames(page, 3);
+    const moved = await screenshot(page, out('pen-hover-moved.png'));
+    assert.ok(maxDiffNear(hovering, moved, 300, 300, 8) > 60, 'a cursor where the pen hovers, gone when it moves on');
+    const palm = (type, x, y) => cdp.send('Input.dispatchTouchEvent', {
+      type, touchPoints: type === 'touchEnd' ? [] : [{ x, y, radiusX: 30, radiusY: 24, force: 0.3, id: 7 }],
+    });
+    await palm('touchStart', 1000, 560);
+    await palm('touchMove', 1010, 570);
+    await penStroke(cdp, outline);
+    await palm('touchMove', 1040, 590);
+    await palm('touchEnd');
+    const made = await until(() => api(page, 'stats'), (s) => s.models === 1, 15_000);
+    assert.equal(made.models, 1, 'the pen made one model');
+    await frames(page, 3);
+    const ops = JSON.parse(await api(page, 'session')).ops.map((o) => o.op);
+    assert.deepEqual(ops, ['create'], 'the palm left no ink');
+    assert.deepEqual(await api(page, 'camera'), view, 'the palm did not move the view');
+    await screenshot(page, out('palm.png'));
+    assert.deepEqual(fresh.errors, [], 'console errors with a palm');
+  } finally {
+    await fresh.context.close();
+  }
+});
+
+test('the pen\'s barrel button erases a curve whatever the tool; the tool stays', () => withShape(async ({ fresh }) => {
+  const { page, cdp } = fresh;
+  await until(() => lastOpOf(page), (o) => o.op === 'create', 15_000);
+  const c = ELLIPSE.c;
+  const across = line({ x: c.x - 90, y: c.y + 10 }, { x: c.x + 90, y: c.y + 10 }, 30).map((p) => ({ ...p, force: 0.5 }));
+  await penStroke(cdp, across);
+  await until(() => lastOpOf(page), (o) => o.op === 'add_curve', 15_000);
+  assert.equal((await api(page, 'stats')).curves, 2, 'a second curve');
+  // A pen press with the barrel button (a pointerdown whose buttons are 2).
+  const barrel = { pointerType: 'pen', button: 'right', force: 0.5 };
+  await cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', x: across[0].x, y: across[0].y, buttons: 2, clickCount: 1, ...barrel });
+  for (const p of across.slice(1)) {
+    await sleep(20);
+    await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', x: p.x, y: p.y, buttons: 2, ...barrel });
+  }
+  await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', x: across.at(-1).x, y: across.at(-1).y, buttons: 0, clickCount: 1, ...barrel });
+  assert.equal((await until(() => lastOpOf(page), (o) => o.op === 'erase', 15_000)).op, 'erase', 'the barrel stroke erased');
+  assert.equal((await api(page, 'stats')).curves, 1, 'the added curve is gone');
+  // The tool is still Sketch: the next plain stroke adds a curve again.
+  await penStroke(cdp, across);
+  assert.equal((await until(() => lastOpOf(page), (o) => o.op === 'add_curve', 15_000)).op, 'add_curve', 'the tool stayed Sketch');
+  assert.deepEqual(fresh.errors, [], 'console errors with the barrel button');
+}));
 
 test('a closed pen outline becomes a lit 3D shape with its blue curve; undo removes it; export validates', async () => {
   const fresh = await openApp(browser, url, gpu);
@@ -1105,9 +1166,14 @@ test('navigate away in the middle of a creation, come back: the last complete st
   assert.deepEqual(fresh.errors, [], 'console errors around the navigation');
 }));
 
-test('offline: after one visit, with the server stopped, a reload opens the app and creating a shape works', async () => {
-  const server = await serveDirectory(DIST);
+test('offline: after one visit, with the server stopped, a reload opens the app and creating a shape works; a new version is taken on the next load, with a notice', async () => {
+  // A copy of the page, so that the case can publish a "new version" of it.
+  const site = mkdtempSync(join(tmpdir(), 'sketchmesh-site-'));
+  cpSync(DIST, site, { recursive: true });
+  const server = await serveDirectory(site);
   const visit = await openApp(browser, server.url, gpu);
+  const warnings = [];
+  visit.page.on('console', (msg) => warnings.push(msg.text()));
   try {
     await visit.page.waitForFunction(() => navigator.serviceWorker?.controller != null, null, { timeout: 30_000 });
     const cached = await visit.page.evaluate(async () => {
@@ -1122,6 +1188,19 @@ test('offline: after one visit, with the server stopped, a reload opens the app 
     });
     assert.equal(manifest.display, 'standalone');
     assert.ok(manifest.icons.some((icon) => icon.sizes === '512x512'), 'installable: a 512 px icon');
+    assert.ok(!warnings.some((w) => w.includes('new version')), 'no update notice on a first visit');
+    // A new version: the page loaded next still runs the old one and says a new one is ready;
+    // the load after that runs it.
+    const worker = join(site, 'sw.js');
+    writeFileSync(worker, readFileSync(worker, 'utf8').replace(/const VERSION = "([0-9a-f]+)"/, 'const VERSION = "$1-next"'));
+    writeFileSync(join(site, 'index.html'), readFileSync(join(site, 'index.html'), 'utf8').replace('<title>Sketchmesh</title>', '<title>Sketchmesh next</title>'));
+    await visit.page.reload({ waitUntil: 'load' });
+    assert.equal(await visit.page.title(), 'Sketchmesh', 'the reload runs the cached version');
+    await until(async () => warnings, (w) => w.some((text) => text.includes('A new version of Sketchmesh is ready')), 15_000);
+    assert.ok(warnings.some((w) => w.includes('A new version of Sketchmesh is ready')), `the page says a new version is ready: ${warnings}`);
+    await visit.page.reload({ waitUntil: 'load' });
+    assert.equal(await visit.page.title(), 'Sketchmesh next', 'the next load runs the new version');
+    await visit.page.waitForFunction(() => typeof window.sketchmesh?.stats === 'function', null, { timeout: 15_000 });
     await server.close();
     await visit.page.reload({ waitUntil: 'load' });
     await visit.page.waitForFunction(() => typeof window.sketchmesh?.stats === 'function', null, { timeout: 15_000 });
@@ -1135,6 +1214,7 @@ test('offline: after one visit, with the server stopped, a reload opens the app 
   } finally {
     await visit.context.close();
     await server.close();
+    rmSync(site, { recursive: true, force: true });
   }
 });
 

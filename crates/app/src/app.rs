@@ -133,6 +133,9 @@ pub struct SketchApp {
     opened: u64,
     /// The 3D view's rectangle last frame, in points (thumbnails are cut to it).
     view_rect: egui::Rect,
+    /// The tool to go back to when the pen's eraser stroke (eraser end or barrel button)
+    /// in progress ends.
+    erasing_from: Option<Mode>,
 }
 
 impl SketchApp {
@@ -197,6 +200,7 @@ impl SketchApp {
             frame_after_rebuild: false,
             opened: 0,
             view_rect: egui::Rect::NOTHING,
+            erasing_from: None,
         }
     }
 
@@ -683,6 +687,14 @@ impl SketchApp {
                     Routed::Tap(TapCommand::Undo) => self.undo(now),
                     Routed::Tap(TapCommand::Redo) => self.begin(Op::Redo, false, now),
                     Routed::Tool(event) => {
+                        // The pen's eraser erases whatever the tool, for one stroke.
+                        if let ToolEvent::Begin(sample) = event
+                            && sample.is_eraser()
+                            && self.tools.mode() != Mode::Erase
+                        {
+                            self.erasing_from = Some(self.tools.mode());
+                            self.set_mode(Mode::Erase, now);
+                        }
                         // A new gesture acts on the document with the edit in progress
                         // committed (a shape still refining is finished first).
                         if matches!(event, ToolEvent::Begin(_)) {
@@ -698,6 +710,11 @@ impl SketchApp {
                             self.tools.on_event(event, &view, shared.editor.document())
                         };
                         self.take_output(output, now);
+                        if matches!(event, ToolEvent::End(_) | ToolEvent::Cancel)
+                            && let Some(mode) = self.erasing_from.take()
+                        {
+                            self.set_mode(mode, now);
+                        }
                     }
                 }
             }
@@ -738,6 +755,16 @@ impl SketchApp {
                 .add(egui_wgpu::Callback::new_paint_callback(viewport, callback));
         }
         self.live_stroke_ui(ui, viewport);
+        if let Some(at) = self.router.pen_hover().filter(|at| viewport.contains(*at)) {
+            // Where the pen would touch: a ring that shows on light and dark alike.
+            let painter = ui.painter();
+            painter.circle_stroke(
+                at,
+                5.0,
+                egui::Stroke::new(3.0, egui::Color32::from_black_alpha(140)),
+            );
+            painter.circle_stroke(at, 5.0, egui::Stroke::new(1.5, egui::Color32::WHITE));
+        }
         self.view_rect = viewport;
         let idle = self.stroke_preview().is_none() && self.edit.is_none();
         if self.shared.borrow().thumbnails.is_capturing() {

@@ -46,6 +46,7 @@ impl EguiPointer {
                 pressure: 0.5,
                 kind: PointerKind::Mouse,
                 buttons: self.held,
+                contact: 0.0,
                 time: input.time,
             });
         }

@@ -47,6 +47,8 @@ pub mod buttons {
     pub const SECONDARY: u16 = 2;
     /// Middle button (wheel press).
     pub const MIDDLE: u16 = 4;
+    /// A pen's eraser end.
+    pub const ERASER: u16 = 32;
 }
 
 /// One normalized pointer sample, in egui points (CSS pixels at zoom 1), y down.
@@ -64,11 +66,19 @@ pub struct PointerSample {
     pub kind: PointerKind,
     /// Buttons held, as a [`buttons`] mask.
     pub buttons: u16,
+    /// A touch's contact size in points: the larger of its width and height (0 when the
+    /// device does not say, and for mice and pens). Palms are large.
+    pub contact: f32,
     /// Time stamp in seconds.
     pub time: f64,
 }
 
 impl PointerSample {
+    /// Whether this is a pen's eraser end, or a pen with its barrel button held: both erase.
+    pub fn is_eraser(&self) -> bool {
+        self.kind == PointerKind::Pen && self.buttons & (buttons::ERASER | buttons::SECONDARY) != 0
+    }
+
     /// Pressure used for drawing: devices that report none (or a constant 0/1) get 0.5.
     pub fn drawing_pressure(kind: PointerKind, reported: f32) -> f32 {
         match kind {

@@ -6,18 +6,26 @@
 //! - touch before any pen: one finger uses the tool, two fingers navigate
 //!   ([`TwoFingerDrag::Orbit`]); a second finger landing mid-stroke cancels that stroke,
 //!   since it was the start of a gesture, not a drawing;
-//! - touch after a pen: touches never draw; one finger orbits, two pan and pinch.
+//! - touch after a pen: touches never draw; one finger orbits, two pan and pinch;
+//! - a palm: a touch whose contact is wider than [`PALM_CONTACT`] points, landing while a pen
+//!   is near or was used in the last [`PALM_PEN_SECONDS`], is ignored from down to up: it
+//!   neither draws nor moves the view.
 //!
 //! After a two-finger gesture, the remaining finger does nothing until every finger has
 //! lifted, so lifting one finger a little early never leaves a stray stroke.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 
 use egui::{Pos2, Vec2};
 
 use super::gestures::{NavAction, TwoFingerDrag, TwoFingerGesture};
 use super::taps::{TapCommand, TapDetector};
 use super::{Phase, PointerKind, PointerSample, buttons};
+
+/// A touch wider than this (points) near a pen is a resting palm.
+pub const PALM_CONTACT: f32 = 20.0;
+/// How long after the pen's last sample (down, moving or hovering) a wide touch is a palm.
+pub const PALM_PEN_SECONDS: f64 = 1.0;
 
 /// An input for the active tool.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -62,12 +70,23 @@ pub struct InputRouter {
     /// Set after a two-finger gesture until all fingers lift.
     touches_spent: bool,
     taps: TapDetector,
+    /// When the pen was last seen (down, moving or hovering), in seconds.
+    pen_last_seen: Option<f64>,
+    /// Touches taken for palms, ignored until they lift.
+    palms: BTreeSet<i64>,
+    /// Where the pen hovers, if it does.
+    pen_hover: Option<Pos2>,
 }
 
 impl InputRouter {
     /// Whether a pen has been seen, so touch only navigates.
     pub fn pen_seen(&self) -> bool {
         self.pen_seen
+    }
+
+    /// Where the pen hovers over the view, when the browser reports it.
+    pub fn pen_hover(&self) -> Option<Pos2> {
+        self.pen_hover
     }
 
     /// Whether any finger is on the screen.
@@ -78,9 +97,17 @@ impl InputRouter {
     /// Routes one sample. `starts_in_viewport` says whether a `Down` lands on the 3D view
     /// rather than on a panel; samples of pointers that went down elsewhere are dropped.
     pub fn route(&mut self, s: &PointerSample, starts_in_viewport: bool, out: &mut Vec<Routed>) {
-        if s.kind == PointerKind::Pen && !self.pen_seen {
-            self.pen_seen = true;
-            self.cancel_touch_strokes(out);
+        if s.kind == PointerKind::Pen {
+            if !self.pen_seen {
+                self.pen_seen = true;
+                self.cancel_touch_strokes(out);
+            }
+            self.pen_last_seen = Some(s.time);
+            let hovers = s.phase == Phase::Move && s.buttons == 0;
+            self.pen_hover = hovers.then_some(s.pos_in_screen);
+        }
+        if s.kind == PointerKind::Touch && self.is_palm(s) {
+            return;
         }
         match s.kind {
             PointerKind::Touch => self.route_touch(s, starts_in_viewport, out),
@@ -211,6 +238,21 @@ impl InputRouter {
         }
     }
 
+    /// Whether touch sample `s` belongs to a palm (see the module's rules): a palm is known
+    /// from its down, and forgotten when it lifts.
+    fn is_palm(&mut self, s: &PointerSample) -> bool {
+        let pen_near = self
+            .pen_last_seen
+            .is_some_and(|seen| s.time - seen <= PALM_PEN_SECONDS);
+        if s.phase == Phase::Down && s.contact > PALM_CONTACT && pen_near {
+            self.palms.insert(s.id);
+        }
+        match s.phase {
+            Phase::Up | Phase::Cancel => self.palms.remove(&s.id),
+            Phase::Down | Phase::Move => self.palms.contains(&s.id),
+        }
+    }
+
     fn tool_busy(&self) -> bool {
         self.drags.values().any(|(d, _)| *d == Drag::Tool)
     }
@@ -247,6 +289,7 @@ mod tests {
             } else {
                 buttons::PRIMARY
             },
+            contact: 0.0,
             time: 0.0,
         }
     }
@@ -290,6 +333,73 @@ mod tests {
             out,
             vec![Routed::Nav(NavAction::Orbit(egui::vec2(50.0, 20.0)))]
         );
+    }
+
+    #[test]
+    fn a_wide_touch_near_the_pen_is_a_palm_and_does_nothing() {
+        let mut router = InputRouter::default();
+        let (pen, touch) = (PointerKind::Pen, PointerKind::Touch);
+        let at = |s: PointerSample, time: f64, contact: f32| PointerSample { time, contact, ..s };
+        let hover = PointerSample {
+            buttons: 0,
+            ..sample(9, pen, Phase::Move, 300.0, 300.0)
+        };
+        route_all(&mut router, &[at(hover, 0.0, 0.0)]);
+        assert_eq!(
+            router.pen_hover(),
+            Some(pos2(300.0, 300.0)),
+            "the pen hovers"
+        );
+        // The palm lands while the pen hovers, rests and shifts while the pen draws.
+        let out = route_all(
+            &mut router,
+            &[
+                at(sample(1, touch, Phase::Down, 500.0, 500.0), 0.2, 45.0),
+                at(sample(9, pen, Phase::Down, 300.0, 300.0), 0.3, 0.0),
+                at(sample(1, touch, Phase::Move, 540.0, 520.0), 0.4, 45.0),
+                at(sample(9, pen, Phase::Move, 340.0, 310.0), 0.5, 0.0),
+                at(sample(9, pen, Phase::Up, 340.0, 310.0), 0.6, 0.0),
+                at(sample(1, touch, Phase::Up, 540.0, 520.0), 0.9, 45.0),
+            ],
+        );
+        assert_eq!(router.pen_hover(), None, "no hover while the pen is down");
+        assert!(
+            out.iter().all(|r| matches!(r, Routed::Tool(_))),
+            "only the pen's stroke: {out:?}"
+        );
+        assert_eq!(out.len(), 3);
+        // A finger near the pen still navigates; a wide touch long after the pen does too.
+        for (id, time, contact) in [(2, 1.0, 8.0), (3, 5.0, 45.0)] {
+            let out = route_all(
+                &mut router,
+                &[
+                    at(sample(id, touch, Phase::Down, 100.0, 100.0), time, contact),
+                    at(sample(id, touch, Phase::Move, 150.0, 120.0), time, contact),
+                    at(sample(id, touch, Phase::Up, 150.0, 120.0), time, contact),
+                ],
+            );
+            assert_eq!(
+                out,
+                vec![Routed::Nav(NavAction::Orbit(egui::vec2(50.0, 20.0)))],
+                "touch {id}"
+            );
+        }
+    }
+
+    #[test]
+    fn the_pen_erases_with_its_eraser_end_or_barrel_button() {
+        let pen = |buttons| PointerSample {
+            buttons,
+            ..sample(9, PointerKind::Pen, Phase::Down, 0.0, 0.0)
+        };
+        assert!(!pen(buttons::PRIMARY).is_eraser());
+        assert!(pen(buttons::ERASER).is_eraser());
+        assert!(pen(buttons::PRIMARY | buttons::SECONDARY).is_eraser());
+        let mouse = PointerSample {
+            buttons: buttons::SECONDARY,
+            ..sample(1, PointerKind::Mouse, Phase::Down, 0.0, 0.0)
+        };
+        assert!(!mouse.is_eraser(), "a mouse's right button orbits");
     }
 
     #[test]

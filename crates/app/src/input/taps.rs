@@ -98,6 +98,7 @@ mod tests {
             pressure: 0.5,
             kind: PointerKind::Touch,
             buttons: 0,
+            contact: 0.0,
             time,
         }
     }

@@ -35,10 +35,17 @@ impl WebPointer {
             ("pointermove", Phase::Move),
             ("pointerup", Phase::Up),
             ("pointercancel", Phase::Cancel),
+            // A hovering pen that leaves: its cursor goes (other pointers' leaves are not
+            // cancels: a captured drag goes on outside the canvas).
+            ("pointerleave", Phase::Cancel),
         ] {
+            let is_leave = name == "pointerleave";
             let (queue, wake, target) = (queue.clone(), wake.clone(), canvas.clone());
             let closure = Closure::<dyn FnMut(web_sys::PointerEvent)>::new(
                 move |e: web_sys::PointerEvent| {
+                    if is_leave && (e.pointer_type() != "pen" || e.buttons() != 0) {
+                        return;
+                    }
                     if phase == Phase::Down {
                         // Keep receiving this pointer's moves when it leaves the canvas.
                         let _ = target.set_pointer_capture(e.pointer_id());
@@ -88,6 +95,10 @@ fn sample(e: &web_sys::PointerEvent, phase: Phase, origin: &web_sys::DomRect) ->
         pressure: PointerSample::drawing_pressure(kind, e.pressure()),
         kind,
         buttons: e.buttons(),
+        contact: match kind {
+            PointerKind::Touch => fractional(e, "width").max(fractional(e, "height")) as f32,
+            _ => 0.0,
+        },
         time: e.time_stamp() / 1000.0,
     }
 }

@@ -64,6 +64,14 @@ const GESTURES: &[(&str, &str)] = &[
     ("Two fingers (after a pen)", "Drag to pan, pinch to zoom"),
     ("Two-finger tap", "Undo"),
     ("Three-finger tap", "Redo"),
+    (
+        "Pen eraser end or barrel button",
+        "Erase curves, whatever the tool",
+    ),
+    (
+        "A palm resting near the pen",
+        "Ignored: it neither draws nor moves the view",
+    ),
 ];
 
 /// Shows the help window while `open` is set.

@@ -142,6 +142,7 @@ mod tests {
             pressure,
             kind: PointerKind::Pen,
             buttons: 1,
+            contact: 0.0,
             time: 0.0,
         }
     }

@@ -293,6 +293,7 @@ mod tests {
             pressure: 0.5,
             kind: PointerKind::Pen,
             buttons: 1,
+            contact: 0.0,
             time: 0.0,
         }
     }

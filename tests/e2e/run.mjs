@@ -468,6 +468,41 @@ test('pen with a resting palm: exactly one model, no ink from the palm, the view
   }
 });
 
+test('a one-finger double tap on empty canvas frames everything; on a model it does not', () => withShape(async ({ fresh }) => {
+  const { page, cdp } = fresh;
+  await until(() => lastOpOf(page), (o) => o.op === 'create', 15_000);
+  await page.keyboard.press('f');
+  await frames(page, 2);
+  const framed = await api(page, 'camera');
+  // egui spreads a wheel's scroll over frames: wait until the view stops moving.
+  const zoomOut = async () => {
+    await page.mouse.move(ELLIPSE.c.x, ELLIPSE.c.y);
+    await page.mouse.wheel(0, 600);
+    let last = null;
+    for (let i = 0; i < 40; i++) {
+      await frames(page, 3);
+      const now = JSON.stringify(await api(page, 'camera'));
+      if (now === last) break;
+      last = now;
+    }
+  };
+  const doubleTap = async (at) => {
+    await touchTap(cdp, [at]);
+    await sleep(120);
+    await touchTap(cdp, [at]);
+    await frames(page, 3);
+  };
+  await zoomOut();
+  const away = await api(page, 'camera');
+  assert.ok(cameraDistance(away) > cameraDistance(framed) * 1.05, 'the wheel zoomed out');
+  await doubleTap(ELLIPSE.c);
+  assert.deepEqual(await api(page, 'camera'), away, 'a double tap on the model leaves the view');
+  await doubleTap({ x: 150, y: 600 });
+  assert.deepEqual(await api(page, 'camera'), framed, 'a double tap on empty canvas frames the shape');
+  const ops = JSON.parse(await api(page, 'session')).ops.map((o) => o.op);
+  assert.deepEqual(ops, ['create'], 'the taps left no ink');
+}));
+
 test('the pen\'s barrel button erases a curve whatever the tool; the tool stays', () => withShape(async ({ fresh }) => {
   const { page, cdp } = fresh;
   await until(() => lastOpOf(page), (o) => o.op === 'create', 15_000);

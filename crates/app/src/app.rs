@@ -14,7 +14,9 @@ use std::sync::Arc;
 use eframe::egui_wgpu;
 use egui::{Key, KeyboardShortcut, Modifiers};
 use sketchmesh_core::curve::{StrokePoint, process_stroke};
-use sketchmesh_core::document::{Edit, Editor, ImportInput, Op, Progress};
+use sketchmesh_core::document::{
+    Edit, Editor, ImportInput, Op, Progress, StrokeInput, model_under,
+};
 use sketchmesh_core::feature::FeatureKind;
 use sketchmesh_core::optimize::quality_report;
 use sketchmesh_core::oversketch::OversketchRoi;
@@ -686,6 +688,7 @@ impl SketchApp {
                         .apply(*action, viewport.height().into()),
                     Routed::Tap(TapCommand::Undo) => self.undo(now),
                     Routed::Tap(TapCommand::Redo) => self.begin(Op::Redo, false, now),
+                    Routed::Tap(TapCommand::DoubleTap(at)) => self.double_tap(*at, viewport),
                     Routed::Tool(event) => {
                         // The pen's eraser erases whatever the tool, for one stroke.
                         if let ToolEvent::Begin(sample) = event
@@ -718,6 +721,21 @@ impl SketchApp {
                     }
                 }
             }
+        }
+    }
+
+    /// A one-finger double tap at `at`: on empty canvas it frames everything, as in 3D apps
+    /// on tablets; on a model it does nothing more than its taps did.
+    fn double_tap(&mut self, at: egui::Pos2, viewport: egui::Rect) {
+        let relative = at - viewport.min;
+        let size = viewport.size();
+        let tap = StrokeInput {
+            viewport: [size.x.into(), size.y.into()],
+            camera: self.shared.borrow().camera.camera(),
+            stroke: vec![[relative.x.into(), relative.y.into(), 0.5]],
+        };
+        if model_under(self.shared.borrow().editor.document(), &tap).is_none() {
+            self.frame_all();
         }
     }
 

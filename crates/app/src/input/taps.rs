@@ -1,5 +1,5 @@
-//! Multi-finger taps, the shortcuts of tablet drawing apps (Procreate, Nomad, Concepts): two
-//! fingers tapped together undo, three redo.
+//! Taps, the shortcuts of tablet drawing apps (Procreate, Nomad, Concepts): two fingers
+//! tapped together undo, three redo, and one finger tapped twice frames everything.
 //!
 //! A tap is a touch sequence, from the first finger down to the last one up, that lasts at
 //! most [`TAP_SECONDS`] and in which no finger moves more than [`TAP_TRAVEL`] points from
@@ -18,14 +18,21 @@ use super::{Phase, PointerSample};
 pub const TAP_SECONDS: f64 = 0.25;
 /// Farthest a finger of a tap may move, in points.
 pub const TAP_TRAVEL: f32 = 10.0;
+/// Longest time from the end of a one-finger tap to the end of the next for a double tap,
+/// in seconds.
+pub const DOUBLE_TAP_SECONDS: f64 = 0.4;
+/// Farthest the second tap of a double tap may land from the first, in points.
+pub const DOUBLE_TAP_REACH: f32 = 30.0;
 
-/// What a multi-finger tap asks for.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// What a tap asks for.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum TapCommand {
     /// Two fingers: undo.
     Undo,
     /// Three fingers: redo.
     Redo,
+    /// One finger, twice, here: frame everything (if it is not on a model).
+    DoubleTap(Pos2),
 }
 
 /// The touch sequence in progress, if any.
@@ -39,6 +46,8 @@ pub struct TapDetector {
     most: usize,
     /// Whether the sequence is still a tap.
     is_tap: bool,
+    /// When and where the last one-finger tap ended, until a double tap uses it.
+    single: Option<(f64, Pos2)>,
 }
 
 impl TapDetector {
@@ -50,6 +59,7 @@ impl TapDetector {
                     *self = TapDetector {
                         started: s.time,
                         is_tap: true,
+                        single: self.single,
                         ..TapDetector::default()
                     };
                 }
@@ -72,16 +82,39 @@ impl TapDetector {
                 if s.phase == Phase::Cancel || s.time - self.started > TAP_SECONDS {
                     self.is_tap = false;
                 }
-                if !self.down.is_empty() || !std::mem::take(&mut self.is_tap) {
+                if !self.down.is_empty() {
+                    return None;
+                }
+                let was_tap = std::mem::take(&mut self.is_tap);
+                // Anything but a one-finger tap between two taps makes them no double tap.
+                if !was_tap || self.most != 1 {
+                    self.single = None;
+                }
+                if !was_tap {
                     return None;
                 }
                 match self.most {
+                    1 => self.single_tap(s.time, s.pos_in_screen),
                     2 => Some(TapCommand::Undo),
                     3 => Some(TapCommand::Redo),
                     _ => None,
                 }
             }
         }
+    }
+}
+
+impl TapDetector {
+    /// A one-finger tap ended at `time` at `at`: the second of a double tap, or the first.
+    fn single_tap(&mut self, time: f64, at: Pos2) -> Option<TapCommand> {
+        let is_second = self.single.take().is_some_and(|(then, there)| {
+            time - then <= DOUBLE_TAP_SECONDS && there.distance(at) <= DOUBLE_TAP_REACH
+        });
+        if is_second {
+            return Some(TapCommand::DoubleTap(at));
+        }
+        self.single = Some((time, at));
+        None
     }
 }
 
@@ -106,6 +139,41 @@ mod tests {
     fn run(samples: &[PointerSample]) -> Vec<TapCommand> {
         let mut taps = TapDetector::default();
         samples.iter().filter_map(|s| taps.follow(s)).collect()
+    }
+
+    #[test]
+    fn one_finger_twice_at_one_place_is_a_double_tap() {
+        let tap = |x: f32, t: f64| {
+            [
+                touch(1, Phase::Down, x, t),
+                touch(1, Phase::Up, x, t + 0.08),
+            ]
+        };
+        let twice: Vec<PointerSample> = [tap(100.0, 0.0), tap(110.0, 0.3)].concat();
+        assert_eq!(
+            run(&twice),
+            [TapCommand::DoubleTap(egui::pos2(110.0, 100.0))]
+        );
+        let slow: Vec<PointerSample> = [tap(100.0, 0.0), tap(100.0, 0.6)].concat();
+        assert_eq!(run(&slow), [], "too slow");
+        let apart: Vec<PointerSample> = [tap(100.0, 0.0), tap(180.0, 0.3)].concat();
+        assert_eq!(run(&apart), [], "too far apart");
+        // Three taps: one double tap, and the third starts afresh.
+        let thrice: Vec<PointerSample> =
+            [tap(100.0, 0.0), tap(100.0, 0.3), tap(100.0, 0.6)].concat();
+        assert_eq!(run(&thrice).len(), 1);
+        // A drag between two taps is no double tap.
+        let dragged = [
+            tap(100.0, 0.0).to_vec(),
+            vec![
+                touch(1, Phase::Down, 100.0, 0.1),
+                touch(1, Phase::Move, 160.0, 0.15),
+                touch(1, Phase::Up, 160.0, 0.2),
+            ],
+            tap(100.0, 0.3).to_vec(),
+        ]
+        .concat();
+        assert_eq!(run(&dragged), [], "{dragged:?}");
     }
 
     #[test]

@@ -64,6 +64,7 @@ const GESTURES: &[(&str, &str)] = &[
     ("Two fingers (after a pen)", "Drag to pan, pinch to zoom"),
     ("Two-finger tap", "Undo"),
     ("Three-finger tap", "Redo"),
+    ("Double tap on empty canvas", "Frame everything"),
     (
         "Pen eraser end or barrel button",
         "Erase curves, whatever the tool",

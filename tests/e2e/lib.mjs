@@ -216,10 +216,10 @@ export async function touchGesture(cdp, tracks, gapMs = 30) {
 /**
  * A touch tap via CDP: every finger down at its point together, and up `ms` later, with the
  * events stamped at those times (as a touch screen stamps them), so a busy frame that delays
- * their delivery does not make the tap look long.
+ * their delivery does not make the tap look long. `down` (seconds, `Date.now()` based) sets
+ * when the fingers go down, for taps that must lie a given time apart.
  */
-export async function touchTap(cdp, points, ms = 60) {
-  const down = Date.now() / 1000;
+export async function touchTap(cdp, points, ms = 60, down = Date.now() / 1000) {
   const touchPoints = points.map((p, id) => ({ x: p.x, y: p.y, id, radiusX: 8, radiusY: 8, force: 0.5 }));
   await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints, timestamp: down });
   await sleep(ms);

@@ -468,6 +468,57 @@ test('pen with a resting palm: exactly one model, no ink from the palm, the view
   }
 });
 
+/** A .glb of a tetrahedron with one triangle given twice: it imports repaired, with a note. */
+function tetraWithDuplicateGlb() {
+  const positions = new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1]);
+  const indices = new Uint16Array([0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3, 1, 2, 3]);
+  const bin = Buffer.concat([Buffer.from(positions.buffer), Buffer.from(indices.buffer), Buffer.alloc(2)]);
+  const json = Buffer.from(JSON.stringify({
+    asset: { version: '2.0' }, scene: 0, scenes: [{ nodes: [0] }], nodes: [{ mesh: 0, name: 'tetra' }],
+    meshes: [{ primitives: [{ attributes: { POSITION: 0 }, indices: 1 }] }],
+    accessors: [
+      { bufferView: 0, componentType: 5126, count: 4, type: 'VEC3', min: [0, 0, 0], max: [1, 1, 1] },
+      { bufferView: 1, componentType: 5123, count: 15, type: 'SCALAR' },
+    ],
+    bufferViews: [{ buffer: 0, byteLength: 48 }, { buffer: 0, byteOffset: 48, byteLength: 30 }],
+    buffers: [{ byteLength: bin.length }],
+  }));
+  const padded = Buffer.concat([json, Buffer.alloc((4 - (json.length % 4)) % 4, 0x20)]);
+  const header = Buffer.alloc(12);
+  header.writeUInt32LE(0x46546c67, 0);
+  header.writeUInt32LE(2, 4);
+  header.writeUInt32LE(12 + 8 + padded.length + 8 + bin.length, 8);
+  const chunk = (data, type) => {
+    const head = Buffer.alloc(8);
+    head.writeUInt32LE(data.length, 0);
+    head.writeUInt32LE(type, 4);
+    return Buffer.concat([head, data]);
+  };
+  return Buffer.concat([header, chunk(padded, 0x4e4f534a), chunk(bin, 0x004e4942)]);
+}
+
+test('an import that needed repairs says so in a notes panel; OK or Escape dismisses it', async () => {
+  const fresh = await openApp(browser, url, gpu);
+  try {
+    const { page } = fresh;
+    const before = await screenshot(page, out('notes-before.png'));
+    await page.evaluate((bytes) => window.sketchmesh.loadGlb(new Uint8Array(bytes), 'tetra.glb'), [...tetraWithDuplicateGlb()]);
+    await frames(page, 4);
+    const notes = await api(page, 'notes');
+    assert.equal(notes?.length, 1, `one note: ${JSON.stringify(notes)}`);
+    assert.match(notes[0], /^tetra was not a clean manifold surface: dropped 0 degenerate and 1 duplicate triangles/);
+    const shown = await screenshot(page, out('notes.png'));
+    assert.ok(maxDiffNear(before, shown, 640, 140, 30) > 40, 'the panel shows at the top of the view');
+    await page.keyboard.press('Escape');
+    await frames(page, 3);
+    assert.equal(await api(page, 'notes'), null, 'Escape dismissed it');
+    assert.equal((await api(page, 'stats')).models, 1, 'the repaired tetrahedron is in');
+    assert.deepEqual(fresh.errors, [], 'console errors with notes');
+  } finally {
+    await fresh.context.close();
+  }
+});
+
 test('a one-finger double tap on empty canvas frames everything; on a model it does not', () => withShape(async ({ fresh }) => {
   const { page, cdp } = fresh;
   await until(() => lastOpOf(page), (o) => o.op === 'create', 15_000);
@@ -486,10 +537,11 @@ test('a one-finger double tap on empty canvas frames everything; on a model it d
       last = now;
     }
   };
+  // The taps' event times are given, 0.2 s apart, so that a busy page cannot stretch them.
   const doubleTap = async (at) => {
-    await touchTap(cdp, [at]);
-    await sleep(120);
-    await touchTap(cdp, [at]);
+    const t0 = Date.now() / 1000;
+    await touchTap(cdp, [at], 60, t0);
+    await touchTap(cdp, [at], 60, t0 + 0.2);
     await frames(page, 3);
   };
   await zoomOut();

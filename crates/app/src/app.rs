@@ -60,6 +60,8 @@ pub struct Shared {
     pub notice: Option<String>,
     /// Thumbnails of the view the page asked for (`window.sketchmesh.thumbnail()`).
     pub thumbnails: crate::thumbnail::Capture,
+    /// The notes panel (an import's repairs), which the page API reads too.
+    pub notes: panels::notes::Notes,
     /// Editors that replaced the first one (see [`autosave::Revision`]).
     opened: u64,
 }
@@ -168,6 +170,7 @@ impl SketchApp {
                 autosave: autosave::Schedule::default(),
                 notice: None,
                 thumbnails: Default::default(),
+                notes: Default::default(),
                 opened: 0,
             })),
             router: InputRouter::default(),
@@ -1050,6 +1053,11 @@ impl eframe::App for SketchApp {
             .run(&ctx, self.view_rect);
         let backend = self.shared.borrow().backend.clone();
         panels::help::help_ui(&ctx, &mut self.show_help, &backend, self.router.pen_seen());
+        let mut shared = self.shared.borrow_mut();
+        let revision = shared.revision();
+        let Shared { editor, notes, .. } = &mut *shared;
+        notes.follow((revision.opened, revision.edits), editor.notes());
+        panels::notes::notes_ui(&ctx, notes);
     }
 }
 

@@ -1,4 +1,5 @@
-//! Panels around the 3D view: the toolbar and the help window.
+//! Panels around the 3D view: the toolbar, the help window and the notes.
 
 pub mod help;
+pub mod notes;
 pub mod toolbar;

@@ -231,7 +231,8 @@ impl Edit {
                     self.generation += 1;
                     if matches!(
                         self.work,
-                        Work::Create(_) | Work::Done(Outcome::Document(_))
+                        Work::Create(_)
+                            | Work::Done(Outcome::Document(_) | Outcome::Imported { .. })
                     ) {
                         self.revision += 1;
                     }
@@ -378,7 +379,7 @@ impl Edit {
     pub fn document(&self) -> &Document {
         match &self.work {
             Work::Create(job) => job.document(),
-            Work::Done(Outcome::Document(next)) => next,
+            Work::Done(Outcome::Document(next) | Outcome::Imported { next, .. }) => next,
             _ => &self.base,
         }
     }

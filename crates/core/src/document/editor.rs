@@ -14,6 +14,9 @@ pub struct Editor {
     history: History,
     log: Vec<Op>,
     revision: u64,
+    /// What the last op wants the user to know (an import's repairs and textures left
+    /// behind); empty after any other op.
+    notes: Vec<String>,
 }
 
 impl Editor {
@@ -27,10 +30,16 @@ impl Editor {
     /// Errors: [`CommandError::NothingToUndo`], [`CommandError::NothingToRedo`]; nothing
     /// changes then.
     pub(super) fn commit(&mut self, op: Op, outcome: Outcome) -> Result<(), CommandError> {
+        let mut notes = Vec::new();
         match outcome {
             Outcome::Document(next) => {
                 let before = std::mem::replace(&mut self.document, next);
                 self.history.record(before);
+            }
+            Outcome::Imported { next, notes: said } => {
+                let before = std::mem::replace(&mut self.document, next);
+                self.history.record(before);
+                notes = said;
             }
             Outcome::Undo => {
                 if !self.history.undo(&mut self.document) {
@@ -45,7 +54,14 @@ impl Editor {
         }
         self.log.push(op);
         self.revision += 1;
+        self.notes = notes;
         Ok(())
+    }
+
+    /// What the last op wants the user to know, as sentences: an import's repairs and the
+    /// textures it left behind. Empty after any other op.
+    pub fn notes(&self) -> &[String] {
+        &self.notes
     }
 
     /// Undoes the last change; the same as `apply(Op::Undo)`.

@@ -16,6 +16,14 @@ use crate::io::{ImportFile, ImportLimits, Imported, import_gltf};
 pub(super) enum Outcome {
     /// The next document; the current one goes on the undo history.
     Document(Document),
+    /// An import's next document, with what the user may want to know about it (repairs
+    /// made, textures left behind).
+    Imported {
+        /// The next document, as for [`Outcome::Document`].
+        next: Document,
+        /// Sentences for the user.
+        notes: Vec<String>,
+    },
     /// Go back to the last undo snapshot.
     Undo,
     /// Go forward to the last redo snapshot.
@@ -48,7 +56,10 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
                 .extend(imported.sketches.into_iter().map(Arc::new));
             next.point_clouds
                 .extend(imported.point_clouds.into_iter().map(Arc::new));
-            Outcome::Document(next)
+            Outcome::Imported {
+                next,
+                notes: imported.notes,
+            }
         }
         Op::Oversketch(input) => replaced(oversketch_op(base, input)?),
         Op::Pull(input) => replaced(curve_edit::pull_op(base, input)?),

@@ -507,8 +507,9 @@ fn points_and_lines_are_kept() {
     assert_eq!(imported.sketches[0].points.len(), 3);
 }
 
-#[test]
-fn hand_written_curve_extras_become_edge_chains_or_are_left_out() {
+/// A tetrahedron with three hand-written curves: one near its vertices, one on them, one far
+/// off its surface.
+fn tetra_with_curve_extras() -> Asset {
     let mut asset = Asset::new();
     let mesh = asset.tetra_mesh(UNSIGNED_SHORT);
     let curves = json!([
@@ -523,7 +524,12 @@ fn hand_written_curve_extras_become_edge_chains_or_are_left_out() {
         "mesh": mesh,
         "extras": {"sketchmesh": {"version": 1, "curves": curves}},
     }));
-    let imported = import(&asset.glb()).unwrap();
+    asset
+}
+
+#[test]
+fn hand_written_curve_extras_become_edge_chains_or_are_left_out() {
+    let imported = import(&tetra_with_curve_extras().glb()).unwrap();
     let model = &imported.models[0];
     assert_eq!(model.curves.len(), 2);
     let (snapped, exact) = (&model.curves[0], &model.curves[1]);
@@ -564,6 +570,24 @@ fn import_op(name: &str, bytes: Vec<u8>) -> Op {
             data: Some(Arc::new(bytes)),
         }],
     })
+}
+
+#[test]
+fn the_editor_keeps_an_imports_notes_until_the_next_op() {
+    let mut editor = Editor::new();
+    editor
+        .apply(import_op("curves.glb", tetra_with_curve_extras().glb()))
+        .unwrap();
+    let expected = import(&tetra_with_curve_extras().glb()).unwrap().notes;
+    assert_eq!(editor.notes(), expected.as_slice());
+    assert_eq!(editor.notes().len(), 2);
+    editor.undo().unwrap();
+    assert!(editor.notes().is_empty(), "an undo says nothing");
+    editor.redo().unwrap();
+    assert!(
+        editor.notes().is_empty(),
+        "nor does a redo: the notes were said once"
+    );
 }
 
 /// An editor with one sketch, to check that refused imports change nothing.

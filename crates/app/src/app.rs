@@ -1009,6 +1009,7 @@ fn mark_ui(ui: &egui::Ui, viewport: egui::Rect, mark: &Mark) {
 impl eframe::App for SketchApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         let ctx = ui.ctx().clone();
+        self.shared.borrow_mut().notes.take_escape(&ctx);
         self.shortcuts(&ctx);
         self.run_imports(&ctx);
         let now = ctx.input(|i| i.time);

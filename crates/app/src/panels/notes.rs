@@ -24,12 +24,24 @@ impl Notes {
     }
 }
 
-/// Shows the panel while there are notes; OK or Escape dismisses it.
+impl Notes {
+    /// Escape dismisses the panel while it shows (taking the key: it drops no gesture
+    /// then). Runs before the app's shortcuts.
+    pub fn take_escape(&mut self, ctx: &egui::Context) {
+        let escape =
+            |i: &mut egui::InputState| i.consume_key(egui::Modifiers::NONE, egui::Key::Escape);
+        if self.shown.is_some() && ctx.input_mut(escape) {
+            self.shown = None;
+        }
+    }
+}
+
+/// Shows the panel while there are notes; OK dismisses it (Escape too: [`Notes::take_escape`]).
 pub fn notes_ui(ctx: &egui::Context, notes: &mut Notes) {
     let Some(sentences) = &notes.shown else {
         return;
     };
-    let mut dismissed = ctx.input(|i| i.key_pressed(egui::Key::Escape));
+    let mut dismissed = false;
     egui::Window::new("Notes on the import")
         .collapsible(false)
         .resizable(false)

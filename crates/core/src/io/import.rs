@@ -22,7 +22,7 @@ use super::parse::parse;
 use super::resources::{Buffers, load_buffers, resolve};
 use super::scene::{NodeGeometry, Surface, read_nodes};
 use super::weld::weld;
-use crate::mesh::{FaceId, Mesh, TriSoup, make_manifold};
+use crate::mesh::{FaceId, Mesh, RepairReport, TriSoup, make_manifold};
 use crate::model::{
     AlphaMode, Appearance, Image, Material, Model, PointCloud, SketchCurve, Texture, positions_hash,
 };
@@ -179,12 +179,39 @@ fn weld_and_repair(
             "the triangles of {name} cannot be repaired: {error}"
         ))
     })?;
-    let report = repaired.report;
-    notes.push(format!(
-        "{name} was not a clean manifold surface: dropped {} degenerate and {} duplicate triangles, turned {} triangles, split {} vertices and detached {} triangles.",
-        report.degenerate, report.duplicates, report.flipped, report.split_vertices, report.detached
-    ));
+    notes.push(repair_note(name, &repaired.report));
     Ok((repaired.mesh, repaired.face_source))
+}
+
+/// "spot was not a clean manifold surface: 2 duplicate triangles were dropped and 1 vertex
+/// was split.", naming only what the repair did.
+fn repair_note(name: &str, report: &RepairReport) -> String {
+    let count = |n: usize, what: &str| match n {
+        1 => format!("1 {what}"),
+        _ => format!("{n} {what}s"),
+    };
+    let was = |n: usize| if n == 1 { "was" } else { "were" };
+    let done: Vec<String> = [
+        (report.degenerate, "degenerate triangle", "dropped"),
+        (report.duplicates, "duplicate triangle", "dropped"),
+        (
+            report.flipped,
+            "triangle",
+            "turned over to match the others",
+        ),
+        (report.split_vertices, "vertex", "split where surfaces met"),
+        (report.detached, "triangle", "detached from the rest"),
+    ]
+    .into_iter()
+    .filter(|&(n, _, _)| n > 0)
+    .map(|(n, what, how)| format!("{} {} {how}", count(n, what), was(n)))
+    .collect();
+    let said = match done.as_slice() {
+        [] => String::from("it was rebuilt"),
+        [only] => only.clone(),
+        [rest @ .., last] => format!("{} and {last}", rest.join(", ")),
+    };
+    format!("{name} was not a clean manifold surface: {said}.")
 }
 
 /// Tells the user about curves that had to be moved onto the mesh or left out.
@@ -397,5 +424,29 @@ fn mime_from_uri(uri: &str) -> String {
         String::from("image/jpeg")
     } else {
         String::from("an unknown image type")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_repair_note_names_only_what_was_done() {
+        let report = |duplicates, split_vertices, detached| RepairReport {
+            duplicates,
+            split_vertices,
+            detached,
+            ..RepairReport::default()
+        };
+        assert_eq!(
+            repair_note("tetra", &report(1, 0, 0)),
+            "tetra was not a clean manifold surface: 1 duplicate triangle was dropped."
+        );
+        assert_eq!(
+            repair_note("scan", &report(2, 1, 3)),
+            "scan was not a clean manifold surface: 2 duplicate triangles were dropped, 1 vertex \
+             was split where surfaces met and 3 triangles were detached from the rest."
+        );
     }
 }

@@ -5,6 +5,7 @@ use crate::feature::FeatureError;
 use crate::fibermesh::CreateError;
 use crate::fibermesh::add_curve::AddCurveError;
 use crate::fibermesh::curve_pull::PullError;
+use crate::fibermesh::cut::CutError;
 use crate::io::GltfError;
 use crate::mesh::remesh::RemeshError;
 use crate::optimize::OptimizeError;
@@ -62,6 +63,9 @@ pub enum CommandError {
     /// A curve could not be put on the surface.
     #[error("{0}")]
     AddCurve(#[from] AddCurveError),
+    /// A stroke did not cut a model.
+    #[error("{0}")]
+    Cut(#[from] CutError),
     /// The surface could not be remeshed after a curve edit.
     #[error("{0}")]
     Remesh(#[from] RemeshError),

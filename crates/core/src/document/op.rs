@@ -33,6 +33,9 @@ pub enum Op {
     /// Put a new smooth control curve on a model: the stroke drawn on it (open), a closed
     /// stroke on it, or a stroke across it (a cross-section loop).
     AddCurve(AddCurveInput),
+    /// Cut a model with the surface swept by a stroke drawn across it from beside it to beside
+    /// it: the part smaller on screen goes, the opening gets a flat cap with a sharp rim.
+    Cut(StrokeInput),
     /// Remove the parts of control curves the stroke passes over; the surface re-optimizes.
     Erase(StrokeInput),
     /// Make the parts of control curves the stroke passes over sharp or smooth.
@@ -61,6 +64,7 @@ impl Op {
         "oversketch",
         "pull",
         "add_curve",
+        "cut",
         "erase",
         "set_curve_type",
         "rub",
@@ -79,6 +83,7 @@ impl Op {
             Op::Oversketch(_) => "oversketch",
             Op::Pull(_) => "pull",
             Op::AddCurve(_) => "add_curve",
+            Op::Cut(_) => "cut",
             Op::Erase(_) => "erase",
             Op::SetCurveType(_) => "set_curve_type",
             Op::Rub(_) => "rub",
@@ -94,7 +99,7 @@ impl Op {
     pub fn stroke(&self) -> Option<&[[f64; 3]]> {
         match self {
             Op::Stroke(input) | Op::Create(input) | Op::Pull(input) => Some(&input.stroke),
-            Op::Erase(input) | Op::Rub(input) => Some(&input.stroke),
+            Op::Erase(input) | Op::Rub(input) | Op::Cut(input) => Some(&input.stroke),
             Op::Oversketch(input) => Some(&input.stroke),
             Op::AddCurve(input) => Some(&input.stroke),
             Op::SetCurveType(input) => Some(&input.stroke),
@@ -107,7 +112,7 @@ impl Op {
     pub fn stroke_mut(&mut self) -> Option<&mut Vec<[f64; 3]>> {
         match self {
             Op::Stroke(input) | Op::Create(input) | Op::Pull(input) => Some(&mut input.stroke),
-            Op::Erase(input) | Op::Rub(input) => Some(&mut input.stroke),
+            Op::Erase(input) | Op::Rub(input) | Op::Cut(input) => Some(&mut input.stroke),
             Op::Oversketch(input) => Some(&mut input.stroke),
             Op::AddCurve(input) => Some(&mut input.stroke),
             Op::SetCurveType(input) => Some(&mut input.stroke),

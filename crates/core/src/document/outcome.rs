@@ -64,6 +64,7 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
         Op::Oversketch(input) => replaced(oversketch_op(base, input)?),
         Op::Pull(input) => replaced(curve_edit::pull_op(base, input)?),
         Op::AddCurve(input) => replaced(curve_edit::add_curve_op(base, input)?),
+        Op::Cut(input) => replaced(curve_edit::cut_op(base, input)?),
         Op::Erase(input) => replaced(curve_edit::erase_op(base, input)?),
         Op::SetCurveType(input) => replaced(curve_edit::set_curve_type_op(base, input)?),
         Op::Rub(input) => replaced(curve_edit::rub_op(base, input)?),

@@ -174,6 +174,7 @@ fn has_no_fields(op: &Op) -> bool {
         | Op::Oversketch(_)
         | Op::Pull(_)
         | Op::AddCurve(_)
+        | Op::Cut(_)
         | Op::Erase(_)
         | Op::SetCurveType(_)
         | Op::Rub(_)

@@ -45,6 +45,7 @@ use crate::curve::polyline::simplify;
 use crate::geometry::Bvh;
 use crate::mesh::{Mesh, VertexId};
 use embedding::Embedding;
+use level_set::ZeroSet;
 use project::{Projector, SurfacePoint};
 
 /// A cross-section stroke is resampled every this many px, then simplified by
@@ -200,6 +201,18 @@ fn cross_section(
     embedding: &mut Embedding,
     stroke: &[DVec2],
 ) -> Result<Option<Vec<VertexId>>, AddCurveError> {
+    let (hits, polyline) = crossing(projector, stroke)?;
+    let distances = screen_distances(projector, &embedding.mesh, &polyline);
+    let curve = level_set::cross_section(embedding, &distances, &hits);
+    curve.map(Some).ok_or(AddCurveError::DoesNotCross)
+}
+
+/// The stroke's hits on the visible surface and its simplified polyline, once it is known
+/// to run from beside the shape across it to beside it.
+fn crossing(
+    projector: &Projector,
+    stroke: &[DVec2],
+) -> Result<(Vec<DVec3>, Vec<DVec2>), AddCurveError> {
     let (Some(&first), Some(&last)) = (stroke.first(), stroke.last()) else {
         return Err(AddCurveError::DoesNotCross);
     };
@@ -215,14 +228,61 @@ fn cross_section(
     if hits.is_empty() || !ends_miss || polyline.len() < 2 {
         return Err(AddCurveError::DoesNotCross);
     }
-    let distances = level_set::screen_distances(
-        embedding.mesh.positions(),
+    Ok((hits, polyline))
+}
+
+/// The signed screen distance of every vertex of `mesh` to the stroke's polyline.
+fn screen_distances(projector: &Projector, mesh: &Mesh, polyline: &[DVec2]) -> Vec<f64> {
+    level_set::screen_distances(
+        mesh.positions(),
         projector.camera,
         projector.viewport,
-        &polyline,
-    );
-    let curve = level_set::cross_section(embedding, &distances, &hits);
-    curve.map(Some).ok_or(AddCurveError::DoesNotCross)
+        polyline,
+    )
+}
+
+/// A mesh split along the whole surface swept by the view rays through a stroke drawn
+/// across it: what [`CurveShape::CrossSection`] embeds, with every loop of the cut and the
+/// side of every face, for cutting the shape in two.
+pub(crate) struct Slice {
+    /// The split mesh: every input vertex keeps its index and position.
+    pub mesh: Mesh,
+    /// Every edge split, as in [`Embedded::split_edges`].
+    pub split_edges: Vec<(VertexId, VertexId, VertexId)>,
+    /// The faces' sides and the loops between them.
+    pub zero_set: ZeroSet,
+    /// The stroke as it was cut with (simplified), in screen px.
+    pub polyline: Vec<DVec2>,
+}
+
+/// Splits `mesh` along the surface swept by `stroke`, which must run from beside the shape
+/// across it to beside it.
+///
+/// Errors: [`AddCurveError::DoesNotCross`] when it does not, or the cut holds no loop.
+pub(crate) fn slice(
+    mesh: &Mesh,
+    camera: &Camera,
+    viewport: DVec2,
+    stroke: &[DVec2],
+) -> Result<Slice, AddCurveError> {
+    let projector = Projector {
+        mesh,
+        bvh: Bvh::new(mesh),
+        camera,
+        viewport,
+    };
+    let (_, polyline) = crossing(&projector, stroke)?;
+    let distances = screen_distances(&projector, mesh, &polyline);
+    let mut embedding = Embedding::new(mesh);
+    let zero_set = level_set::split_zero_set(&mut embedding, &distances)
+        .filter(|zero_set| !zero_set.loops.is_empty())
+        .ok_or(AddCurveError::DoesNotCross)?;
+    Ok(Slice {
+        mesh: embedding.mesh,
+        split_edges: embedding.splits,
+        zero_set,
+        polyline,
+    })
 }
 
 #[cfg(test)]

@@ -53,6 +53,7 @@ pub mod add_curve;
 mod control_curve;
 pub mod curve_pull;
 pub mod curve_tools;
+pub mod cut;
 mod error;
 mod fair_surface;
 mod fair_systems;

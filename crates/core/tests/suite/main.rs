@@ -16,3 +16,4 @@ mod optimize;
 mod oversketch;
 mod oversketch_pipeline;
 mod silhouette;
+mod topology;

@@ -1,15 +1,13 @@
 //! Adding a control curve (thesis §3.2.1, Fig. 3.4): the stroke becomes an edge chain on the
 //! model it was drawn on, the mesh is remeshed around it, and the surface settles.
 
-use glam::DVec2;
-
 use super::settle::{Change, remesh_and_settle};
-use super::shared::{bounding_diagonal, has_curves, replaced, screen_stroke};
+use super::shared::{
+    bounding_diagonal, has_curves, insert_on_edge, model_crossed, replaced, screen_stroke,
+};
 use crate::document::{AddCurveInput, CommandError, Document, StrokeInput};
 use crate::fibermesh::add_curve::{CurveShape, add_curve};
 use crate::fibermesh::{ControlCurve, CurveKind};
-use crate::geometry::Bvh;
-use crate::mesh::VertexId;
 use crate::model::Model;
 
 /// How far from a new curve (as a fraction of the model's size) the surface settles after
@@ -28,7 +26,8 @@ const ADD_REGION: f64 = 0.1;
 pub fn add_curve_op(doc: &Document, input: &AddCurveInput) -> Result<(usize, Model), CommandError> {
     let stroke_input = StrokeInput::of_add_curve(input);
     let stroke = screen_stroke(&stroke_input, 2)?;
-    let index = model_under(doc, &stroke_input, &stroke).ok_or(CommandError::NotOnModel)?;
+    let index =
+        model_crossed(doc, &stroke_input, &stroke, has_curves).ok_or(CommandError::NotOnModel)?;
     let model = &doc.models[index];
     let shape = match (input.closed, input.cross_section) {
         (_, true) => CurveShape::CrossSection,
@@ -59,46 +58,4 @@ pub fn add_curve_op(doc: &Document, input: &AddCurveInput) -> Result<(usize, Mod
     };
     let (mesh, curves) = remesh_and_settle(&embedded.mesh, &curves, change)?;
     Ok((index, replaced(model, mesh, curves)))
-}
-
-/// Inserts `new` between consecutive vertices `a` and `b` of `curve` (either order,
-/// including the closing edge), where an embedding split that curve edge.
-fn insert_on_edge(curve: &mut ControlCurve, a: VertexId, b: VertexId, new: VertexId) {
-    let n = curve.vertices.len();
-    let n_edges = if curve.is_closed {
-        n
-    } else {
-        n.saturating_sub(1)
-    };
-    let is_edge = |k: usize| {
-        let (p, q) = (curve.vertices[k], curve.vertices[(k + 1) % n]);
-        (p, q) == (a, b) || (p, q) == (b, a)
-    };
-    if let Some(k) = (0..n_edges).find(|&k| is_edge(k)) {
-        curve.vertices.insert(k + 1, new);
-    }
-}
-
-/// The model with curves that most stroke samples hit, if any sample hits one.
-fn model_under(doc: &Document, input: &StrokeInput, stroke: &[DVec2]) -> Option<usize> {
-    let viewport = input.viewport_size();
-    let rays: Vec<_> = stroke
-        .iter()
-        .map(|&s| input.camera.ray_in_world(s, viewport))
-        .collect();
-    doc.models
-        .iter()
-        .enumerate()
-        .filter(|(_, model)| has_curves(model))
-        .map(|(index, model)| {
-            let bvh = Bvh::new(&model.mesh);
-            let hits = rays
-                .iter()
-                .filter(|&&(origin, dir)| bvh.raycast(&model.mesh, origin, dir).is_some())
-                .count();
-            (hits, index)
-        })
-        .filter(|&(hits, _)| hits > 0)
-        .max()
-        .map(|(_, index)| index)
 }

@@ -15,6 +15,7 @@
 
 mod add;
 mod constraints;
+mod cut;
 mod oversketch;
 mod pull;
 mod settle;
@@ -22,6 +23,7 @@ mod shared;
 
 pub use add::add_curve_op;
 pub use constraints::{curve_type_toggle, erase_op, rub_op, set_curve_type_op};
+pub use cut::cut_op;
 pub(super) use oversketch::oversketch_curve;
 pub(super) use pull::PullPreview;
 pub use pull::pull_op;

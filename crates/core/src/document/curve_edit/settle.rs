@@ -36,7 +36,7 @@ pub(super) struct Change<'a> {
 
 impl Change<'_> {
     /// The region as a vertex mask of `mesh`.
-    fn region(&self, mesh: &Mesh) -> Vec<bool> {
+    pub(super) fn region(&self, mesh: &Mesh) -> Vec<bool> {
         region_around(mesh, self.around, self.radius)
     }
 }
@@ -96,6 +96,41 @@ pub(super) fn remesh_and_settle(
     curves: &[ControlCurve],
     change: Change<'_>,
 ) -> Result<(Mesh, Vec<ControlCurve>), CommandError> {
+    remesh_and_settle_within(mesh, curves, &change.region(mesh))
+}
+
+/// [`remesh_and_settle`] in the region `region` (a vertex mask) rather than a change's.
+pub(super) fn remesh_and_settle_within(
+    mesh: &Mesh,
+    curves: &[ControlCurve],
+    region: &[bool],
+) -> Result<(Mesh, Vec<ControlCurve>), CommandError> {
+    let (mut mesh, curves, is_new) = remesh(mesh, curves, region)?;
+    let mut surface = FairSurface::new_regional(&mesh, &curves, &is_new, &is_new)
+        .map_err(CommandError::Surface)?;
+    surface
+        .run(mesh.positions_mut(), ITERATIONS_AFTER_REMESH, TOLERANCE)
+        .map_err(CommandError::Surface)?;
+    Ok((mesh, curves))
+}
+
+/// Remeshes `region` (a vertex mask) as [`remesh_and_settle`] does, without settling: for
+/// a model whose surface no curves define (the `curves` are only kept as edge chains).
+pub(super) fn remesh_only(
+    mesh: &Mesh,
+    curves: &[ControlCurve],
+    region: &[bool],
+) -> Result<Mesh, CommandError> {
+    Ok(remesh(mesh, curves, region)?.0)
+}
+
+/// `region` (a vertex mask) remeshed with every curve kept as an edge chain: the mesh, the
+/// curves on it, and which of its vertices the remesh made.
+fn remesh(
+    mesh: &Mesh,
+    curves: &[ControlCurve],
+    region: &[bool],
+) -> Result<(Mesh, Vec<ControlCurve>, Vec<bool>), CommandError> {
     let chains: Vec<Chain> = curves
         .iter()
         .map(|c| Chain {
@@ -104,7 +139,7 @@ pub(super) fn remesh_and_settle(
         })
         .collect();
     let params = RemeshParams::keep_resolution(mesh);
-    let remeshed = remesh_within(mesh, &chains, &params, &change.region(mesh))?;
+    let remeshed = remesh_within(mesh, &chains, &params, region)?;
     let curves: Vec<ControlCurve> = curves
         .iter()
         .zip(remeshed.chains)
@@ -114,11 +149,5 @@ pub(super) fn remesh_and_settle(
             kind: curve.kind,
         })
         .collect();
-    let mut mesh = remeshed.mesh;
-    let mut surface = FairSurface::new_regional(&mesh, &curves, &remeshed.is_new, &remeshed.is_new)
-        .map_err(CommandError::Surface)?;
-    surface
-        .run(mesh.positions_mut(), ITERATIONS_AFTER_REMESH, TOLERANCE)
-        .map_err(CommandError::Surface)?;
-    Ok((mesh, curves))
+    Ok((remeshed.mesh, curves, remeshed.is_new))
 }

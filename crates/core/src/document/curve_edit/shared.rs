@@ -6,6 +6,7 @@ use glam::DVec2;
 use crate::document::{CommandError, Document, StrokeInput};
 use crate::fibermesh::ControlCurve;
 use crate::fibermesh::curve_tools::VisibleCurves;
+use crate::geometry::Bvh;
 use crate::mesh::{Mesh, VertexId};
 use crate::model::Model;
 
@@ -88,4 +89,51 @@ pub(super) fn replaced(model: &Model, mesh: Mesh, curves: Vec<ControlCurve>) -> 
         name: model.name.clone(),
         appearance: model.appearance.clone(),
     }
+}
+
+/// Inserts `new` between consecutive vertices `a` and `b` of `curve` (either order,
+/// including the closing edge), where an embedding split that curve edge.
+pub(super) fn insert_on_edge(curve: &mut ControlCurve, a: VertexId, b: VertexId, new: VertexId) {
+    let n = curve.vertices.len();
+    let n_edges = if curve.is_closed {
+        n
+    } else {
+        n.saturating_sub(1)
+    };
+    let is_edge = |k: usize| {
+        let (p, q) = (curve.vertices[k], curve.vertices[(k + 1) % n]);
+        (p, q) == (a, b) || (p, q) == (b, a)
+    };
+    if let Some(k) = (0..n_edges).find(|&k| is_edge(k)) {
+        curve.vertices.insert(k + 1, new);
+    }
+}
+
+/// The model for which `accept` holds that most stroke samples hit, if any sample hits one.
+pub(super) fn model_crossed(
+    doc: &Document,
+    input: &StrokeInput,
+    stroke: &[DVec2],
+    accept: impl Fn(&Model) -> bool,
+) -> Option<usize> {
+    let viewport = input.viewport_size();
+    let rays: Vec<_> = stroke
+        .iter()
+        .map(|&s| input.camera.ray_in_world(s, viewport))
+        .collect();
+    doc.models
+        .iter()
+        .enumerate()
+        .filter(|(_, model)| accept(model))
+        .map(|(index, model)| {
+            let bvh = Bvh::new(&model.mesh);
+            let hits = rays
+                .iter()
+                .filter(|&&(origin, dir)| bvh.raycast(&model.mesh, origin, dir).is_some())
+                .count();
+            (hits, index)
+        })
+        .filter(|&(hits, _)| hits > 0)
+        .max()
+        .map(|(_, index)| index)
 }

@@ -21,7 +21,7 @@ const SNAP_CROSSING: f64 = 0.05;
 /// The signed screen distance (px) of every vertex to the stroke polyline (at least two
 /// points), its first and last segments extended to lines. Vertices behind the eye count
 /// as far on the positive side.
-pub(super) fn screen_distances(
+pub(crate) fn screen_distances(
     positions: &[DVec3],
     camera: &Camera,
     viewport: DVec2,
@@ -60,14 +60,19 @@ fn signed_distance(polyline: &[DVec2], p: DVec2) -> f64 {
     best.0.copysign(best.1)
 }
 
-/// Embeds the zero set of the per-vertex `distances` and returns its loop nearest to any
-/// of the points `near` (the stroke's hits on the visible surface), or `None` if the zero
-/// set holds no closed loop.
-pub(super) fn cross_section(
-    embedding: &mut Embedding,
-    distances: &[f64],
-    near: &[DVec3],
-) -> Option<Vec<VertexId>> {
+/// A mesh split along the zero set of a per-vertex value.
+pub(crate) struct ZeroSet {
+    /// Whether each face (of the split mesh) lies on the positive side.
+    pub is_positive: Vec<bool>,
+    /// The closed loops of the zero set, as vertex cycles with a positive face on the left of
+    /// each edge `loop[k] → loop[k + 1]`.
+    pub loops: Vec<Vec<VertexId>>,
+}
+
+/// Embeds the zero set of the per-vertex `distances` into the mesh: every edge whose ends
+/// have opposite signs is split at its linear zero (or the zero snaps onto a near end).
+/// `None` when a split fails.
+pub(crate) fn split_zero_set(embedding: &mut Embedding, distances: &[f64]) -> Option<ZeroSet> {
     let mut value = distances.to_vec();
     snap_near_zero(&embedding.mesh, &mut value);
     for (a, b) in undirected_edges(&embedding.mesh) {
@@ -84,6 +89,19 @@ pub(super) fn cross_section(
         .map(|t| is_positive_face(t, &value, distances))
         .collect();
     let loops = boundary_loops(mesh, &is_positive);
+    Some(ZeroSet { is_positive, loops })
+}
+
+/// Embeds the zero set of the per-vertex `distances` and returns its loop nearest to any
+/// of the points `near` (the stroke's hits on the visible surface), or `None` if the zero
+/// set holds no closed loop.
+pub(super) fn cross_section(
+    embedding: &mut Embedding,
+    distances: &[f64],
+    near: &[DVec3],
+) -> Option<Vec<VertexId>> {
+    let zero_set = split_zero_set(embedding, distances)?;
+    let mesh = &embedding.mesh;
     let gap = |curve: &Vec<VertexId>| {
         let mut gap = f64::INFINITY;
         for &v in curve {
@@ -93,7 +111,8 @@ pub(super) fn cross_section(
         }
         gap
     };
-    loops
+    zero_set
+        .loops
         .into_iter()
         .map(|curve| (gap(&curve), curve))
         .min_by(|x, y| x.0.total_cmp(&y.0))

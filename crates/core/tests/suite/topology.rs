@@ -1,0 +1,191 @@
+//! FiberMesh's topology operations through the document (issue 16): a cut of a created shape
+//! and of a real scan leaves a closed manifold with a flat cap whose rim is a sharp curve,
+//! nothing beyond the cut, every curve an edge chain; it undoes and replays exactly, and a
+//! stroke that does not cross is refused with the document untouched.
+
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use std::f64::consts::TAU;
+
+use glam::{DVec2, DVec3};
+use sketchmesh_core::camera::Camera;
+use sketchmesh_core::document::{CommandError, Editor, Model, Op, StrokeInput};
+use sketchmesh_core::fibermesh::cut::CutError;
+use sketchmesh_core::geometry::enclosed_volume;
+use sketchmesh_core::io::{ImportFile, ImportLimits, import_gltf};
+
+use crate::common::{import_mesh, samples, segment, testdata};
+
+const VIEWPORT: DVec2 = DVec2::new(800.0, 600.0);
+const CENTRE: DVec2 = DVec2::new(400.0, 300.0);
+
+fn input(camera: Camera, points: &[DVec2]) -> StrokeInput {
+    StrokeInput {
+        viewport: VIEWPORT.to_array(),
+        camera,
+        stroke: samples(points.iter().copied()),
+    }
+}
+
+fn created_circle() -> Editor {
+    let circle: Vec<DVec2> = (0..=80)
+        .map(|i| CENTRE + 150.0 * DVec2::from_angle(TAU * f64::from(i) / 80.0))
+        .collect();
+    let mut editor = Editor::new();
+    editor
+        .apply(Op::Create(input(Camera::default(), &circle)))
+        .unwrap();
+    editor
+}
+
+/// A vertical cut at screen x = `x`, from above the view's middle to below it.
+fn vertical_cut(camera: Camera, x: f64) -> Op {
+    let stroke = segment(DVec2::new(x, 20.0), DVec2::new(x, 580.0));
+    Op::Cut(input(camera, &stroke))
+}
+
+/// How far past screen x = `x` (px) the farthest vertex of the model lies.
+fn past(model: &Model, camera: &Camera, x: f64) -> f64 {
+    model
+        .mesh
+        .positions()
+        .iter()
+        .map(|&p| camera.screen_from_world(p, VIEWPORT).unwrap().x - x)
+        .fold(f64::MIN, f64::max)
+}
+
+/// Closed, manifold, genus 0, every curve a chain of mesh edges.
+fn assert_closed_and_embedded(model: &Model) {
+    let mesh = &model.mesh;
+    mesh.validate().unwrap();
+    assert!(mesh.is_closed());
+    assert_eq!(mesh.genus(), Some(0));
+    for curve in &model.curves {
+        let n = curve.vertices.len();
+        let links = if curve.is_closed { n } else { n - 1 };
+        for k in 0..links {
+            let (a, b) = (curve.vertices[k], curve.vertices[(k + 1) % n]);
+            assert!(mesh.find_edge(a, b).is_some(), "{a:?}–{b:?} is no edge");
+        }
+    }
+}
+
+#[test]
+fn a_cut_across_a_created_shape_leaves_a_flat_cap_with_a_sharp_rim() {
+    let mut editor = created_circle();
+    let before = editor.document().clone();
+    let volume_before = enclosed_volume(&before.models[0].mesh);
+    let camera = Camera::default();
+    let x = CENTRE.x + 60.0;
+    editor.apply(vertical_cut(camera, x)).unwrap();
+    let model = &editor.document().models[0];
+    assert_closed_and_embedded(model);
+    let rim = model.curves.last().unwrap();
+    assert!(rim.is_closed && rim.is_sharp());
+    // The outline curve lost its part past the cut: one open smooth piece is left.
+    let smooth: Vec<_> = model.curves.iter().filter(|c| !c.is_sharp()).collect();
+    assert_eq!(smooth.len(), 1);
+    assert!(!smooth[0].is_closed);
+    // The rim lies on the cutting surface, and the surface settled behind it.
+    for p in rim.points(&model.mesh) {
+        let s = camera.screen_from_world(p, VIEWPORT).unwrap();
+        assert!((s.x - x).abs() < 1e-6, "rim point at x = {}", s.x);
+    }
+    let past = past(model, &camera, x);
+    assert!(past < 0.05, "a vertex lies {past} px past the cut");
+    let volume = enclosed_volume(&model.mesh);
+    assert!(volume < 0.95 * volume_before && volume > 0.5 * volume_before);
+    // Undo gives the shape back bit for bit; replay gives the cut bit for bit.
+    let cut = editor.document().clone();
+    editor.apply(Op::Undo).unwrap();
+    assert_eq!(editor.document(), &before);
+    editor.apply(Op::Redo).unwrap();
+    assert_eq!(editor.document(), &cut);
+    let replayed = Editor::replay_json(&editor.session_json()).unwrap();
+    assert_eq!(replayed.document(), &cut);
+}
+
+#[test]
+fn a_cut_shape_stays_editable_with_curves_and_a_second_cut() {
+    let mut editor = created_circle();
+    let camera = Camera::default();
+    editor.apply(vertical_cut(camera, CENTRE.x + 60.0)).unwrap();
+    let across = segment(
+        CENTRE - DVec2::new(250.0, 40.0),
+        CENTRE + DVec2::new(250.0, -40.0),
+    );
+    editor.apply(Op::Cut(input(camera, &across))).unwrap();
+    let model = &editor.document().models[0];
+    assert_closed_and_embedded(model);
+    assert_eq!(model.curves.iter().filter(|c| c.is_sharp()).count(), 2);
+    // The first rim lost its part past the second cut: it is open now, the second closed.
+    let rims: Vec<_> = model.curves.iter().filter(|c| c.is_sharp()).collect();
+    assert!(!rims[0].is_closed && rims[1].is_closed);
+    let json = editor.session_json();
+    assert!(json.contains(r#""op":"cut""#));
+    let replayed = Editor::replay_json(&json).unwrap();
+    assert_eq!(replayed.document(), editor.document());
+}
+
+#[test]
+fn strokes_that_do_not_cut_are_refused_and_change_nothing() {
+    let mut editor = created_circle();
+    let before = editor.document().clone();
+    let json = editor.session_json();
+    let camera = Camera::default();
+    let from_inside = segment(CENTRE, CENTRE + DVec2::new(0.0, 280.0));
+    let beside = segment(DVec2::new(700.0, 20.0), DVec2::new(700.0, 580.0));
+    let refusals = [
+        (from_inside, CommandError::Cut(CutError::DoesNotCross)),
+        (beside, CommandError::NotOnModel),
+    ];
+    for (stroke, expected) in refusals {
+        let error = editor.apply(Op::Cut(input(camera, &stroke))).unwrap_err();
+        assert_eq!(error, expected);
+        assert!(!error.to_string().is_empty());
+        assert_eq!(editor.document(), &before);
+        assert_eq!(editor.session_json(), json);
+    }
+}
+
+#[test]
+fn a_cut_through_a_real_scan_closes_it_with_a_flat_cap() {
+    let Some(dir) = testdata() else {
+        return;
+    };
+    let bytes = std::fs::read(dir.join("meshes/spot.glb")).unwrap();
+    let file = ImportFile {
+        name: "spot.glb",
+        bytes: &bytes,
+    };
+    let imported = import_gltf(&file, &[], &ImportLimits::default()).unwrap();
+    let spot = &imported.models[0].mesh;
+    let (lo, hi) = spot.bounding_box().unwrap();
+    let centre = 0.5 * (lo + hi);
+    let camera = Camera {
+        eye: centre + DVec3::Z * 2.5 * lo.distance(hi),
+        target: centre,
+        ..Camera::default()
+    };
+    let mut editor = Editor::new();
+    editor.apply(import_mesh("spot.glb", spot)).unwrap();
+    // Through the head: spot faces +x, so the smaller part past the line is the head.
+    let head = camera
+        .screen_from_world(
+            DVec3::new(hi.x - 0.25 * (hi.x - lo.x), centre.y, centre.z),
+            VIEWPORT,
+        )
+        .unwrap();
+    editor.apply(vertical_cut(camera, head.x)).unwrap();
+    let model = &editor.document().models[0];
+    assert!(model.curves.is_empty(), "an imported model gets no curves");
+    assert_closed_and_embedded(model);
+    let past = past(model, &camera, head.x);
+    assert!(past < 0.05, "a vertex lies {past} px past the cut");
+    let volume = enclosed_volume(&model.mesh);
+    let whole = enclosed_volume(spot);
+    assert!(
+        volume < 0.97 * whole && volume > 0.6 * whole,
+        "{volume} of {whole}"
+    );
+}

@@ -725,6 +725,12 @@ impl SketchApp {
                 }
             }
         }
+        // A stroke across a shape cuts it when no tap follows in time.
+        let (output, wait) = self.tools.poll(now);
+        self.take_output(output, now);
+        if let Some(seconds) = wait {
+            ctx.request_repaint_after(std::time::Duration::from_secs_f64(seconds));
+        }
     }
 
     /// A one-finger double tap at `at`: on empty canvas it frames everything, as in 3D apps

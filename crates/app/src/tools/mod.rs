@@ -153,6 +153,15 @@ impl ToolSet {
         }
     }
 
+    /// Called every frame with the frame's clock (s): what a waiting stroke becomes when its
+    /// tap is late, and how long until the next such moment.
+    pub fn poll(&mut self, now: f64) -> (ToolOutput, Option<f64>) {
+        match self.mode {
+            Mode::Sketch => self.sketch.poll(now),
+            _ => (ToolOutput::None, None),
+        }
+    }
+
     /// A sketch stroke waiting for a confirming tap, shown until then.
     pub fn waiting(&self) -> Option<(&[StrokePoint], &'static str)> {
         self.sketch.waiting()

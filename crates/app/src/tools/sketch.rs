@@ -1,19 +1,40 @@
 //! The sketch tool (FiberMesh §3.2.1): what a stroke means is read from the stroke in core
 //! ([`op_for_stroke`]); a closed curve on a shape and a cross-section wait for a confirming
-//! tap, as in the thesis, and stay ink if something else comes instead.
+//! tap, as in the thesis. A closed curve stays ink if something else comes instead; a
+//! cross-section is a cut unless the tap comes within [`CUT_WAIT_SECONDS`] (the thesis' "a
+//! cutting stroke followed by a click" adds the curve).
 
 use sketchmesh_core::curve::StrokePoint;
-use sketchmesh_core::document::{Document, Op, StrokeInput, ink_instead, needs_tap, op_for_stroke};
+use sketchmesh_core::document::{
+    Document, Op, StrokeInput, cut_instead, ink_instead, is_cross_section, needs_tap, op_for_stroke,
+};
 
 use super::context::{ToolOutput, ViewCtx};
 use super::draw::{DrawTool, is_tap};
 use crate::input::router::ToolEvent;
+
+/// How long a stroke across a shape waits for the tap that makes it a cross-section curve
+/// before it cuts: a little longer than a double tap's gap, so a deliberate tap makes it.
+pub const CUT_WAIT_SECONDS: f64 = 0.6;
 
 /// A stroke that waits for its confirming tap.
 #[derive(Clone, Debug)]
 struct Waiting {
     op: Op,
     points: Vec<StrokePoint>,
+    /// When a cross-section becomes a cut, once the first frame after it has seen the clock.
+    deadline: Option<f64>,
+}
+
+impl Waiting {
+    /// What the stroke becomes when its tap does not come.
+    fn without_tap(self) -> Op {
+        if is_cross_section(&self.op) {
+            cut_instead(self.op)
+        } else {
+            ink_instead(self.op)
+        }
+    }
 }
 
 /// The sketch tool's state.
@@ -29,16 +50,17 @@ impl SketchTool {
         let Some(input) = self.draw.capture(event, view) else {
             return ToolOutput::None;
         };
-        let held = self.waiting.take().map(|w| w.op);
+        let held = self.waiting.take();
         if is_tap(&input) {
-            return held.map_or(ToolOutput::None, ToolOutput::Commit);
+            return held.map_or(ToolOutput::None, |w| ToolOutput::Commit(w.op));
         }
         let op = op_for_stroke(doc, input);
-        let mut ops: Vec<Op> = held.map(ink_instead).into_iter().collect();
+        let mut ops: Vec<Op> = held.map(Waiting::without_tap).into_iter().collect();
         if needs_tap(&op) {
             self.waiting = Some(Waiting {
                 points: stroke_points(&op),
                 op,
+                deadline: None,
             });
         } else {
             ops.push(op);
@@ -48,6 +70,26 @@ impl SketchTool {
             1 => ToolOutput::Commit(ops.remove(0)),
             _ => ToolOutput::CommitAll(ops),
         }
+    }
+
+    /// Called every frame with the frame's clock (s): a cross-section whose tap did not come
+    /// in time becomes a cut. Returns how long until it does, for the next frame, if one
+    /// waits.
+    pub fn poll(&mut self, now: f64) -> (ToolOutput, Option<f64>) {
+        let drawing = self.draw.preview().is_some();
+        let Some(waiting) = self.waiting.as_mut().filter(|w| is_cross_section(&w.op)) else {
+            return (ToolOutput::None, None);
+        };
+        let deadline = *waiting.deadline.get_or_insert(now + CUT_WAIT_SECONDS);
+        if drawing {
+            // The next stroke may be the tap: its end decides.
+            return (ToolOutput::None, None);
+        }
+        if now < deadline {
+            return (ToolOutput::None, Some(deadline - now));
+        }
+        let cut = self.waiting.take().map(Waiting::without_tap);
+        (cut.map_or(ToolOutput::None, ToolOutput::Commit), None)
     }
 
     /// Drops a stroke in progress; a stroke waiting for a tap becomes ink.
@@ -66,9 +108,9 @@ impl SketchTool {
     /// The stroke waiting for a tap, and what the tap will do.
     pub fn waiting(&self) -> Option<(&[StrokePoint], &'static str)> {
         let waiting = self.waiting.as_ref()?;
-        let what = match &waiting.op {
-            Op::AddCurve(input) if input.cross_section => "Tap to add a cross-section curve",
-            _ => "Tap to add a closed curve",
+        let what = match is_cross_section(&waiting.op) {
+            true => "Cutting… tap now to add a cross-section curve instead",
+            false => "Tap to add a closed curve",
         };
         Some((&waiting.points, what))
     }
@@ -79,5 +121,138 @@ fn stroke_points(op: &Op) -> Vec<StrokePoint> {
     match op {
         Op::AddCurve(input) => StrokeInput::of_add_curve(input).points(),
         _ => Vec::new(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use egui::{Rect, pos2};
+    use sketchmesh_core::camera::Camera;
+    use sketchmesh_core::document::Editor;
+
+    use super::*;
+    use crate::input::{Phase, PointerKind, PointerSample};
+
+    fn pen(phase: Phase, x: f32, y: f32) -> PointerSample {
+        PointerSample {
+            id: 1,
+            phase,
+            pos_in_screen: pos2(x, y),
+            pressure: 0.5,
+            kind: PointerKind::Pen,
+            buttons: 1,
+            contact: 0.0,
+            time: 0.0,
+        }
+    }
+
+    fn view() -> ViewCtx {
+        ViewCtx {
+            camera: Camera::default(),
+            viewport: Rect::from_min_max(pos2(0.0, 40.0), pos2(800.0, 640.0)),
+        }
+    }
+
+    /// A document with a shape created from a circle of 150 px around the view's centre.
+    fn shape() -> Editor {
+        let circle = (0..=80)
+            .map(|i| {
+                let a = std::f64::consts::TAU * f64::from(i) / 80.0;
+                [400.0 + 150.0 * a.cos(), 300.0 + 150.0 * a.sin(), 0.5]
+            })
+            .collect();
+        let mut editor = Editor::new();
+        let input = StrokeInput {
+            viewport: [800.0, 600.0],
+            camera: Camera::default(),
+            stroke: circle,
+        };
+        editor.apply(Op::Create(input)).unwrap();
+        editor
+    }
+
+    /// Draws a straight stroke in `steps` moves (a single point is a tap).
+    fn draw(tool: &mut SketchTool, doc: &Document, from: (f32, f32), to: (f32, f32)) -> ToolOutput {
+        let v = view();
+        tool.on_event(&ToolEvent::Begin(pen(Phase::Down, from.0, from.1)), &v, doc);
+        let steps = 30;
+        for k in 1..steps {
+            let t = k as f32 / steps as f32;
+            let (x, y) = (from.0 + t * (to.0 - from.0), from.1 + t * (to.1 - from.1));
+            tool.on_event(&ToolEvent::Move(pen(Phase::Move, x, y)), &v, doc);
+        }
+        tool.on_event(&ToolEvent::End(pen(Phase::Up, to.0, to.1)), &v, doc)
+    }
+
+    #[test]
+    fn a_stroke_across_a_shape_cuts_when_no_tap_comes_in_time() {
+        let editor = shape();
+        let doc = editor.document();
+        let mut tool = SketchTool::default();
+        let across = draw(&mut tool, doc, (100.0, 340.0), (700.0, 340.0));
+        assert_eq!(across, ToolOutput::None);
+        assert!(
+            tool.waiting()
+                .is_some_and(|(_, what)| what.contains("cross-section"))
+        );
+        let (output, left) = tool.poll(10.0);
+        assert_eq!(output, ToolOutput::None);
+        assert!((left.unwrap() - CUT_WAIT_SECONDS).abs() < 1e-9);
+        let (output, left) = tool.poll(10.3);
+        assert_eq!(output, ToolOutput::None);
+        assert!((left.unwrap() - 0.3).abs() < 1e-9);
+        let (output, left) = tool.poll(10.0 + CUT_WAIT_SECONDS);
+        assert!(
+            matches!(output, ToolOutput::Commit(Op::Cut(_))),
+            "{output:?}"
+        );
+        assert_eq!(left, None);
+        assert!(tool.waiting().is_none());
+    }
+
+    #[test]
+    fn a_tap_in_time_makes_the_stroke_a_cross_section_curve() {
+        let editor = shape();
+        let doc = editor.document();
+        let mut tool = SketchTool::default();
+        draw(&mut tool, doc, (100.0, 340.0), (700.0, 340.0));
+        tool.poll(10.0);
+        let v = view();
+        tool.on_event(&ToolEvent::Begin(pen(Phase::Down, 400.0, 500.0)), &v, doc);
+        // The deadline passes while the finger is down: its end decides.
+        assert_eq!(tool.poll(11.0), (ToolOutput::None, None));
+        let tap = tool.on_event(&ToolEvent::End(pen(Phase::Up, 400.0, 500.0)), &v, doc);
+        assert!(
+            matches!(&tap, ToolOutput::Commit(Op::AddCurve(input)) if input.cross_section),
+            "{tap:?}"
+        );
+    }
+
+    #[test]
+    fn a_closed_curve_without_its_tap_stays_ink_and_never_cuts() {
+        let editor = shape();
+        let doc = editor.document();
+        let mut tool = SketchTool::default();
+        let v = view();
+        let loop_points: Vec<(f32, f32)> = (0..=40)
+            .map(|i| {
+                let a = std::f32::consts::TAU * i as f32 / 40.0;
+                (400.0 + 50.0 * a.cos(), 340.0 + 50.0 * a.sin())
+            })
+            .collect();
+        tool.on_event(
+            &ToolEvent::Begin(pen(Phase::Down, loop_points[0].0, loop_points[0].1)),
+            &v,
+            doc,
+        );
+        for &(x, y) in &loop_points[1..] {
+            tool.on_event(&ToolEvent::Move(pen(Phase::Move, x, y)), &v, doc);
+        }
+        let (x, y) = loop_points[40];
+        tool.on_event(&ToolEvent::End(pen(Phase::Up, x, y)), &v, doc);
+        assert!(tool.waiting().is_some());
+        assert_eq!(tool.poll(10.0), (ToolOutput::None, None));
+        assert_eq!(tool.poll(20.0), (ToolOutput::None, None));
+        assert!(matches!(tool.cancel(), ToolOutput::Commit(Op::Stroke(_))));
     }
 }

@@ -2,10 +2,11 @@
 //!
 //! FiberMesh's sketch tool reads intent from the stroke itself (thesis §3.2.1, Fig. 3.4): a
 //! closed stroke drawn on empty canvas creates a shape; a stroke that starts on a shape with
-//! control curves adds a curve to it (a closed one after a confirming tap); a stroke from
-//! beside a shape across it adds a cross-section loop after a confirming tap (the gesture the
-//! thesis uses to get a handle for fatness). Without the tap those two stay ink, so nothing
-//! the user drew is lost. Anything else is ink on the drawing plane.
+//! control curves adds a curve to it (a closed one after a confirming tap, without which it
+//! stays ink, so nothing the user drew is lost); a stroke from beside a shape across it cuts
+//! the shape, unless a tap follows at once, which makes it a cross-section loop instead (the
+//! gesture the thesis uses to get a handle for fatness). Anything else is ink on the drawing
+//! plane.
 
 use glam::DVec2;
 
@@ -47,6 +48,19 @@ pub fn op_for_stroke(doc: &Document, input: StrokeInput) -> Op {
 /// cross-section.
 pub fn needs_tap(op: &Op) -> bool {
     matches!(op, Op::AddCurve(input) if input.closed || input.cross_section)
+}
+
+/// Whether `op` is a cross-section, which becomes a cut when no tap comes ([`cut_instead`]).
+pub fn is_cross_section(op: &Op) -> bool {
+    matches!(op, Op::AddCurve(input) if input.cross_section)
+}
+
+/// The cut for a cross-section stroke whose tap did not come; other ops stay as they are.
+pub fn cut_instead(op: Op) -> Op {
+    match op {
+        Op::AddCurve(input) if input.cross_section => Op::Cut(StrokeInput::of_add_curve(&input)),
+        other => other,
+    }
 }
 
 /// The ink op for a stroke whose confirming tap did not come.

@@ -36,8 +36,8 @@ pub use edit::{Edit, Progress};
 pub use editor::Editor;
 pub use error::CommandError;
 pub use intent::{
-    CLOSE_TOLERANCE_PX, ink_instead, model_in_lasso, model_under, needs_tap, op_for_stroke,
-    starts_on_model,
+    CLOSE_TOLERANCE_PX, cut_instead, ink_instead, is_cross_section, model_in_lasso, model_under,
+    needs_tap, op_for_stroke, starts_on_model,
 };
 pub use op::{
     AddCurveInput, BrushInput, CurveTypeInput, FileInput, ImportInput, Op, OptimizeInput,

@@ -458,6 +458,7 @@ mod tests {
                 closed: true,
                 cross_section: false,
             }),
+            Op::Cut(stroke()),
             Op::Erase(stroke()),
             Op::SetCurveType(CurveTypeInput {
                 viewport: [1.0, 1.0],

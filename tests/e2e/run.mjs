@@ -1007,6 +1007,54 @@ test('feature (D): a sketch across a shape, then a drag up, raises a ridge under
     assert.deepEqual(fresh.errors, [], 'console errors while sketching features');
 }));
 
+test('cut: a pen stroke across a shape cuts off the part past it after a moment, with a red rim; a tap right after makes a cross-section curve instead; undo restores', () => withShape(async ({ fresh }) => {
+    const c = ELLIPSE.c;
+    const lastOp = () => lastOpOf(fresh.page);
+    await until(lastOp, (o) => o.op === 'create', 15_000);
+    const original = await glbOf(fresh.page);
+    await frames(fresh.page, 3);
+    const before = await screenshot(fresh.page, out('cut-before.png'));
+    const x = c.x + 90;
+    const across = line({ x, y: c.y - 200 }, { x, y: c.y + 200 }, 40).map((p) => ({ ...p, force: 0.5 }));
+    const drawn = Date.now();
+    await penStroke(fresh.cdp, across);
+    const cut = await until(lastOp, (o) => o.op === 'cut', 10_000);
+    assert.equal(cut.op, 'cut', 'with no tap, the stroke across cuts');
+    const timings = await api(fresh.page, 'timings');
+    console.log(`    cut committed ${Date.now() - drawn} ms after the stroke began; the op took ${JSON.stringify(timings.cut)} ms`);
+    const stats = await api(fresh.page, 'stats');
+    assert.equal(stats.models, 1);
+    assert.equal(stats.curves, 2, 'the outline piece that is left and the sharp rim');
+    assert.equal(stats.triangles, 2 * stats.vertices - 4, `closed genus-0 mesh: ${JSON.stringify(stats)}`);
+    await frames(fresh.page, 3);
+    const after = await screenshot(fresh.page, out('cut.png'));
+    const px = (img, px, py) => Array.from(img.data.slice((py * img.width + px) * 4, (py * img.width + px) * 4 + 3));
+    const past = insideShape().filter((p) => p.x > x + 12);
+    const kept = insideShape().filter((p) => p.x < x - 60);
+    const isClay = ([r, g]) => r > 120 && g > 110;
+    const gone = past.filter((p) => isClay(px(before, p.x, p.y)) && !isClay(px(after, p.x, p.y))).length / past.length;
+    const keptChanged = changedFraction(before, after, kept, { radius: 0, threshold: 20 });
+    console.log(`    ${(100 * gone).toFixed(1)}% of the shape past the stroke is background; ${(100 * keptChanged).toFixed(2)}% of the kept side changed`);
+    assert.ok(gone > 0.97, `the part past the stroke is gone (${gone})`);
+    assert.ok(keptChanged < 0.01, `the kept side looks as before (${keptChanged})`);
+    const reds = across.filter((p) => Math.abs(p.y - c.y) < 90).filter((p) => [-3, -2, -1, 0, 1].some((d) => {
+      const [r, g, b] = px(after, Math.round(p.x) + d, Math.round(p.y));
+      return r > 170 && g < 120 && b < 120;
+    })).length;
+    assert.ok(reds > 10, `the rim is a sharp (red) curve (${reds} samples)`);
+    await fresh.page.keyboard.press('Control+z');
+    await frames(fresh.page, 3);
+    assert.deepEqual(await glbOf(fresh.page), original, 'undo restores the shape bit for bit');
+    // The same stroke and a tap right after: a cross-section curve, no cut.
+    await penStroke(fresh.cdp, across);
+    await penStroke(fresh.cdp, [{ x: c.x - 300, y: c.y + 250, force: 0.5 }], 0);
+    const curve = await until(lastOp, (o) => o.op === 'add_curve' || o.op === 'cut', 10_000);
+    assert.equal(curve.op, 'add_curve', 'the tap makes it a cross-section curve');
+    assert.equal(curve.cross_section, true);
+    assert.equal((await api(fresh.page, 'stats')).curves, 2, 'the shape is whole, with a second curve');
+    assert.deepEqual(fresh.errors, [], 'console errors while cutting');
+}));
+
 test('autosave: create and pull, reload: the same document, session, view and history; a corrupt record is set aside with a sentence', () => withShape(async ({ fresh, created }) => {
   const c = ELLIPSE.c;
   const session = () => api(fresh.page, 'session');

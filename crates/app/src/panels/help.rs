@@ -66,6 +66,10 @@ const GESTURES: &[(&str, &str)] = &[
     ("Three-finger tap", "Redo"),
     ("Double tap on empty canvas", "Frame everything"),
     (
+        "Sketch: a stroke across a shape",
+        "Cut off the part past it; a tap right after makes a cross-section curve instead",
+    ),
+    (
         "Pen eraser end or barrel button",
         "Erase curves, whatever the tool",
     ),

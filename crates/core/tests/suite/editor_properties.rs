@@ -2,7 +2,7 @@
 //! keep every invariant the document promises.
 //!
 //! Each case starts with a creation or an import, then applies up to [`MAX_OPS`] − 1 more
-//! ops drawn from create, import, pull, add_curve (open, closed, cross-section), erase,
+//! ops drawn from create, import, pull, add_curve (open, closed, cross-section), cut, erase,
 //! set_curve_type, rub, over-sketch (automatic or with a picked handle, exact or soft,
 //! near-handle or part ROI), undo and redo. A step is stored as parameters (an outline's
 //! centre and radius, which model, which curve, where along it, how far to drag...) and is
@@ -153,6 +153,14 @@ enum Step {
         extent: f64,
         noise: f64,
     },
+    /// A straight cut across a model as seen, `offset` (in radii of its projection) from its
+    /// centre across the stroke.
+    Cut {
+        view: View,
+        model: usize,
+        angle: f64,
+        offset: f64,
+    },
     Erase {
         view: View,
         along: Along,
@@ -277,6 +285,14 @@ fn step() -> impl Strategy<Value = Step> {
                 noise,
             },
         );
+    let cut = (view(), 0usize..8, 0.0..std::f64::consts::PI, -0.5..0.5f64).prop_map(
+        |(view, model, angle, offset)| Step::Cut {
+            view,
+            model,
+            angle,
+            offset,
+        },
+    );
     let erase = (view(), along()).prop_map(|(view, along)| Step::Erase { view, along });
     let set_type = (view(), along(), any::<bool>())
         .prop_map(|(view, along, sharp)| Step::SetType { view, along, sharp });
@@ -336,11 +352,12 @@ fn step() -> impl Strategy<Value = Step> {
         2 => feature,
         3 => pull,
         3 => add,
+        2 => cut,
         2 => erase,
         2 => set_type,
         2 => rub,
         3 => oversketch,
-        1 => (0u8..6).prop_map(|kind| Step::Stray { kind }),
+        1 => (0u8..7).prop_map(|kind| Step::Stray { kind }),
         1 => Just(Step::Undo),
         1 => Just(Step::Redo),
         2 => (1usize..4, 1usize..4).prop_map(|(undos, redos)| Step::UndoRedo { undos, redos }),
@@ -533,6 +550,22 @@ fn op_for(step: &Step, document: &Document) -> Op {
             };
             add_curve(VIEWPORT, camera, &tremble(points, *noise), closed, cross)
         }
+        Step::Cut {
+            view,
+            model,
+            angle,
+            offset,
+        } => {
+            let camera = view.camera();
+            let place = pick_model(document, *model).and_then(|m| projection(m, &camera));
+            let Some((centre, radius)) = place else {
+                return Op::Cut(input(camera, &nowhere()));
+            };
+            let u = DVec2::from_angle(*angle);
+            let middle = centre + *offset * radius * u.perp();
+            let half = 1.6 * radius * u;
+            Op::Cut(input(camera, &segment(middle - half, middle + half)))
+        }
         Step::Erase { view, along } => {
             let camera = view.camera();
             let points = stretch(document, *along, &camera).unwrap_or_else(nowhere);
@@ -651,6 +684,7 @@ fn op_for(step: &Step, document: &Document) -> Op {
                 2 => Op::Erase(input(camera, &points)),
                 3 => set_type(VIEWPORT, camera, &points, true),
                 4 => Op::Rub(input(camera, &points)),
+                5 => Op::Cut(input(camera, &points)),
                 _ => oversketch(
                     VIEWPORT,
                     camera,

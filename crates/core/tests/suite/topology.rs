@@ -137,7 +137,7 @@ fn strokes_that_do_not_cut_are_refused_and_change_nothing() {
     let beside = segment(DVec2::new(700.0, 20.0), DVec2::new(700.0, 580.0));
     let refusals = [
         (from_inside, CommandError::Cut(CutError::DoesNotCross)),
-        (beside, CommandError::NotOnModel),
+        (beside, CommandError::Cut(CutError::DoesNotCross)),
     ];
     for (stroke, expected) in refusals {
         let error = editor.apply(Op::Cut(input(camera, &stroke))).unwrap_err();

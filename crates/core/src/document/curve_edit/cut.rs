@@ -12,7 +12,7 @@ use super::shared::{
     bounding_diagonal, has_curves, insert_on_edge, model_crossed, replaced, screen_stroke,
 };
 use crate::document::{CommandError, Document, StrokeInput};
-use crate::fibermesh::cut::cut;
+use crate::fibermesh::cut::{CutError, cut};
 use crate::fibermesh::{ControlCurve, CurveKind};
 use crate::mesh::{Mesh, VertexId};
 use crate::model::Model;
@@ -23,14 +23,14 @@ const CUT_REGION: f64 = 0.1;
 
 /// Applies a `cut` op: returns the index of the model cut and its new version.
 ///
-/// The model is the one with curves the stroke crosses in most samples. Its curves keep the
+/// The model is the one the stroke crosses in most samples. Its curves keep the
 /// parts on the kept side; each cap's rim becomes a sharp curve, as in the thesis.
 ///
-/// Errors: the stroke's; [`CommandError::NotOnModel`] when it crosses no model with curves;
-/// [`CommandError::Cut`] when the cut is refused; remesher and solver failures.
+/// Errors: the stroke's; [`CommandError::Cut`] when it crosses no model or the cut is
+/// refused; remesher and solver failures.
 pub fn cut_op(doc: &Document, input: &StrokeInput) -> Result<(usize, Model), CommandError> {
     let stroke = screen_stroke(input, 2)?;
-    let index = model_crossed(doc, input, &stroke, |_| true).ok_or(CommandError::NotOnModel)?;
+    let index = model_crossed(doc, input, &stroke, |_| true).ok_or(CutError::DoesNotCross)?;
     let model = &doc.models[index];
     let cut = cut(&model.mesh, &input.camera, input.viewport_size(), &stroke)?;
     let mut curves = model.curves.clone();

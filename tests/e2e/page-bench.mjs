@@ -265,8 +265,31 @@ try {
       return { n: sorted.length, mean: round(mean), p50: round(at(0.5)), p95: round(at(0.95)), max: round(sorted.at(-1) ?? null) };
     };
     const pull = t.pull ?? { begin_ms: [], frame_ms: [], finish_ms: [] };
-    pulls.push({ vertices, grab_ms: round(pull.begin_ms.at(-1) ?? null), frame_ms: stats(pull.frame_ms), release_ms: round(pull.finish_ms.at(-1) ?? null) });
-    console.error(`pull at ${vertices} vertices: ${JSON.stringify(pulls.at(-1))}`);
+    // A cut across the same shape, left of the pull, with the pen in the sketch tool: the
+    // stroke waits 0.6 s for a tap, then cuts; the app times the op itself.
+    await page.keyboard.press('s');
+    const box = await page.evaluate(() => {
+      const r = document.querySelector('canvas').getBoundingClientRect();
+      return { x: r.left + r.width / 2, y: r.top + r.height / 2 };
+    });
+    const cutX = box.x - 0.6 * 260;
+    await cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', x: cutX, y: box.y - 240, buttons: 1, clickCount: 1, ...pen });
+    for (let i = 1; i <= 40; i++) {
+      await sleep(16);
+      await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', x: cutX, y: box.y - 240 + 12 * i, buttons: 1, ...pen });
+    }
+    await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', x: cutX, y: box.y + 240, buttons: 0, clickCount: 1, ...pen });
+    await page.waitForFunction(() => JSON.parse(window.sketchmesh.session()).ops.at(-1)?.op === 'cut', null, { timeout: 30_000, polling: 50 })
+      .catch(() => console.error(`the cut at ${vertices} vertices was not applied`));
+    const cut = (await api(page, 'timings')).cut;
+    pulls.push({
+      vertices,
+      grab_ms: round(pull.begin_ms.at(-1) ?? null),
+      frame_ms: stats(pull.frame_ms),
+      release_ms: round(pull.finish_ms.at(-1) ?? null),
+      cut_ms: round(cut?.finish_ms.at(-1) ?? null),
+    });
+    console.error(`pull and cut at ${vertices} vertices: ${JSON.stringify(pulls.at(-1))}`);
   }
 
   // An over-sketch of the 36,864-vertex bumpy torus (SKETCHMESH_OVERSKETCH_FIXTURE), seen down

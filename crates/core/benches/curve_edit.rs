@@ -5,7 +5,12 @@
 //! back-substitution of the region), and the committed `pull` op at release (deformation,
 //! regional settle, remesh, settle).
 //! Targets: a drag frame under 16 ms at 10k and under 33 ms at 40k in the browser; release
-//! under 250 ms at 10k. Run with
+//! under 250 ms at 10k.
+//!
+//! Also the `cut` op (issue 16) on the same shapes: a vertical stroke across the ellipse a
+//! fifth of its half-width from its right end, from above it to below it; the whole op
+//! (level set, caps, remesh and settle of the band). Target: under 100 ms at 10k natively.
+//! Run with
 //! `cargo bench -p sketchmesh-core --bench curve_edit -- --warm-up-time 1 --measurement-time 3`.
 
 use std::hint::black_box;
@@ -88,5 +93,35 @@ fn bench_curve_edit(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench_curve_edit);
+/// A vertical stroke across the ellipse at a fifth of its half-width from its right end.
+fn cut_stroke() -> StrokeInput {
+    let x = VIEWPORT.x / 2.0 + 0.8 * HALF_AXES.x;
+    let (top, bottom) = (
+        VIEWPORT.y / 2.0 - 1.5 * HALF_AXES.y,
+        VIEWPORT.y / 2.0 + 1.5 * HALF_AXES.y,
+    );
+    StrokeInput {
+        viewport: VIEWPORT.to_array(),
+        camera: Camera::default(),
+        stroke: (0..=60)
+            .map(|i| [x, top + (bottom - top) * f64::from(i) / 60.0, 0.5])
+            .collect(),
+    }
+}
+
+fn bench_cut(c: &mut Criterion) {
+    let mut group = c.benchmark_group("cut");
+    group.sample_size(10);
+    for n in [10_000, 40_000] {
+        let editor = ellipse_editor(n).expect("the ellipse inflates and imports");
+        let vertices = editor.document().stats().vertices;
+        let cut = Op::Cut(cut_stroke());
+        group.bench_with_input(BenchmarkId::new("op", vertices), &editor, |b, editor| {
+            b.iter(|| editor.clone().apply(black_box(cut.clone())).expect("cut"));
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench_curve_edit, bench_cut);
 criterion_main!(benches);

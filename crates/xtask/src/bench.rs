@@ -340,6 +340,10 @@ fn page_table(page: &Value, wasm_gzip_size: u64) -> String {
                 format!("pull at {vertices} vertices, release to committed"),
                 ms("/release_ms"),
             ),
+            (
+                format!("cut at {vertices} vertices, the op alone"),
+                ms("/cut_ms"),
+            ),
         ]
     });
     let vertices = text("/oversketch/vertices");

@@ -61,7 +61,8 @@ impl Download {
     }
 }
 
-/// The files of one import, main file (.glb or .gltf) first; `None` if none is glTF.
+/// The files of one import, main file (.glb or .gltf) first, to land beside what the
+/// document holds; `None` if none is glTF.
 pub fn import_input(mut files: Vec<(String, Vec<u8>)>) -> Option<ImportInput> {
     let is_main = |name: &str| {
         let name = name.to_ascii_lowercase();
@@ -77,6 +78,7 @@ pub fn import_input(mut files: Vec<(String, Vec<u8>)>) -> Option<ImportInput> {
                 data: Some(Arc::new(bytes)),
             })
             .collect(),
+        beside: true,
     })
 }
 

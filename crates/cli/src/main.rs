@@ -121,7 +121,10 @@ fn convert(in_path: &Path, out_path: &Path) -> anyhow::Result<()> {
     let files = read_gltf(in_path)?;
     let mut editor = Editor::new();
     editor
-        .apply(Op::Import(ImportInput { files }))
+        .apply(Op::Import(ImportInput {
+            files,
+            beside: false,
+        }))
         .with_context(|| format!("Could not import {}", in_path.display()))?;
     let what = format!("Converted {}", in_path.display());
     write_document(&editor, out_path, &what)

@@ -24,7 +24,10 @@ pub fn run(args: &[&str]) -> anyhow::Result<()> {
     let files = read_gltf(Path::new(request.input))?;
     let mut editor = Editor::new();
     editor
-        .apply(Op::Import(ImportInput { files }))
+        .apply(Op::Import(ImportInput {
+            files,
+            beside: false,
+        }))
         .with_context(|| format!("Could not import {}", request.input))?;
     let mut reports = Vec::new();
     for model in 0..editor.document().models.len() {

@@ -308,6 +308,7 @@ mod tests {
                     name: String::from("doc.glb"),
                     data: Some(std::sync::Arc::new(sketchmesh_core::io::write_glb(doc))),
                 }],
+                beside: false,
             };
             editor.apply(Op::Import(input)).unwrap();
         }

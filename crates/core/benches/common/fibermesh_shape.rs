@@ -52,6 +52,7 @@ pub fn ellipse_editor(target_vertices: usize) -> Result<Editor, Box<dyn std::err
             name: "ellipse.glb".to_owned(),
             data: Some(Arc::new(write_glb(&document))),
         }],
+        beside: false,
     }))?;
     Ok(editor)
 }

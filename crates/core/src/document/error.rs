@@ -63,6 +63,9 @@ pub enum CommandError {
     /// A curve could not be put on the surface.
     #[error("{0}")]
     AddCurve(#[from] AddCurveError),
+    /// A transform's matrix is not finite, not affine, or flattens the model.
+    #[error("That transform cannot be applied: it must be finite and must not flatten the model.")]
+    BadTransform,
     /// A stroke did not cut a model.
     #[error("{0}")]
     Cut(#[from] CutError),

@@ -12,6 +12,7 @@
 //! of the editor's interface. This is the top layer: it uses the techniques (FiberMesh,
 //! over-sketch) and `io` (the `import` op), and nothing below uses it.
 
+mod arrange;
 mod create;
 mod curve_edit;
 mod edit;
@@ -40,8 +41,8 @@ pub use intent::{
     needs_tap, op_for_stroke, starts_on_model,
 };
 pub use op::{
-    AddCurveInput, BrushInput, CurveTypeInput, FileInput, ImportInput, Op, OptimizeInput,
-    OversketchFit, OversketchInput, SketchFeatureInput, StrokeInput,
+    AddCurveInput, BrushInput, CurveTypeInput, FileInput, ImportInput, ModelInput, Op,
+    OptimizeInput, OversketchFit, OversketchInput, SketchFeatureInput, StrokeInput, TransformInput,
 };
 pub use oversketch::OutlinePiece;
 pub use session::{SESSION_FORMAT, SESSION_VERSION, Session};

@@ -38,6 +38,12 @@ pub enum Op {
     Cut(StrokeInput),
     /// Remove the parts of control curves the stroke passes over; the surface re-optimizes.
     Erase(StrokeInput),
+    /// Move, rotate, scale or mirror a model by an affine matrix.
+    Transform(TransformInput),
+    /// Remove a model.
+    Delete(ModelInput),
+    /// Add a copy of a model beside it.
+    Duplicate(ModelInput),
     /// Make the parts of control curves the stroke passes over sharp or smooth.
     SetCurveType(CurveTypeInput),
     /// Smooth the control curves near the stroke; each back-and-forth pass smooths more.
@@ -66,6 +72,9 @@ impl Op {
         "add_curve",
         "cut",
         "erase",
+        "transform",
+        "delete",
+        "duplicate",
         "set_curve_type",
         "rub",
         "optimize",
@@ -84,6 +93,9 @@ impl Op {
             Op::Pull(_) => "pull",
             Op::AddCurve(_) => "add_curve",
             Op::Cut(_) => "cut",
+            Op::Transform(_) => "transform",
+            Op::Delete(_) => "delete",
+            Op::Duplicate(_) => "duplicate",
             Op::Erase(_) => "erase",
             Op::SetCurveType(_) => "set_curve_type",
             Op::Rub(_) => "rub",
@@ -104,7 +116,13 @@ impl Op {
             Op::AddCurve(input) => Some(&input.stroke),
             Op::SetCurveType(input) => Some(&input.stroke),
             Op::SketchFeature(input) => Some(&input.stroke),
-            Op::Import(_) | Op::Optimize(_) | Op::Undo | Op::Redo => None,
+            Op::Import(_)
+            | Op::Optimize(_)
+            | Op::Transform(_)
+            | Op::Delete(_)
+            | Op::Duplicate(_)
+            | Op::Undo
+            | Op::Redo => None,
         }
     }
 
@@ -117,9 +135,34 @@ impl Op {
             Op::AddCurve(input) => Some(&mut input.stroke),
             Op::SetCurveType(input) => Some(&mut input.stroke),
             Op::SketchFeature(input) => Some(&mut input.stroke),
-            Op::Import(_) | Op::Optimize(_) | Op::Undo | Op::Redo => None,
+            Op::Import(_)
+            | Op::Optimize(_)
+            | Op::Transform(_)
+            | Op::Delete(_)
+            | Op::Duplicate(_)
+            | Op::Undo
+            | Op::Redo => None,
         }
     }
+}
+
+/// A `transform` op: `{"op":"transform","model":0,"matrix":[16 numbers]}`, the matrix
+/// column-major (glTF's order), affine and invertible.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TransformInput {
+    /// Index of the model in the document.
+    pub model: usize,
+    /// The 4×4 matrix, column by column.
+    pub matrix: [f64; 16],
+}
+
+/// An op on one whole model (`delete`, `duplicate`): `{"op":"delete","model":0}`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ModelInput {
+    /// Index of the model in the document.
+    pub model: usize,
 }
 
 /// An `optimize` op: which model, and the settings at the top level beside it
@@ -286,6 +329,10 @@ pub struct CurveTypeInput {
 pub struct ImportInput {
     /// The files, main file first.
     pub files: Vec<FileInput>,
+    /// Whether what the file brings lands beside the document's contents rather than where
+    /// the file puts it (the app's imports; sessions from before it was there lack it).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub beside: bool,
 }
 
 /// One file of an import: its name and, once loaded, its bytes (base64 in JSON).
@@ -436,6 +483,7 @@ mod tests {
                     name: String::from("a.glb"),
                     data: Some(Arc::new(vec![1, 2, 3])),
                 }],
+                beside: false,
             }),
             Op::Oversketch(OversketchInput {
                 viewport: [1.0, 1.0],
@@ -460,6 +508,12 @@ mod tests {
             }),
             Op::Cut(stroke()),
             Op::Erase(stroke()),
+            Op::Transform(TransformInput {
+                model: 0,
+                matrix: glam::DMat4::IDENTITY.to_cols_array(),
+            }),
+            Op::Delete(ModelInput { model: 0 }),
+            Op::Duplicate(ModelInput { model: 0 }),
             Op::SetCurveType(CurveTypeInput {
                 viewport: [1.0, 1.0],
                 camera: Camera::default(),
@@ -506,6 +560,7 @@ mod tests {
                     data: None,
                 },
             ],
+            beside: false,
         });
         let json = serde_json::to_string(&op).unwrap();
         assert_eq!(

@@ -3,6 +3,7 @@
 
 use std::sync::Arc;
 
+use super::arrange::{delete_op, duplicate_op, place_beside, transform_op};
 use super::create::CreateJob;
 use super::feature::feature_op;
 use super::optimize::optimize_op;
@@ -48,7 +49,10 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
             Outcome::Document(job.into_document())
         }
         Op::Import(input) => {
-            let imported = import_files(input)?;
+            let mut imported = import_files(input)?;
+            if input.beside {
+                place_beside(base, &mut imported);
+            }
             let mut next = base.clone();
             next.models
                 .extend(imported.models.into_iter().map(Arc::new));
@@ -65,6 +69,9 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
         Op::Pull(input) => replaced(curve_edit::pull_op(base, input)?),
         Op::AddCurve(input) => replaced(curve_edit::add_curve_op(base, input)?),
         Op::Cut(input) => replaced(curve_edit::cut_op(base, input)?),
+        Op::Transform(input) => replaced(transform_op(base, input)?),
+        Op::Delete(input) => delete_op(base, input)?,
+        Op::Duplicate(input) => duplicate_op(base, input)?,
         Op::Erase(input) => replaced(curve_edit::erase_op(base, input)?),
         Op::SetCurveType(input) => replaced(curve_edit::set_curve_type_op(base, input)?),
         Op::Rub(input) => replaced(curve_edit::rub_op(base, input)?),

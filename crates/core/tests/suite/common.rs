@@ -244,6 +244,7 @@ pub fn import_document(name: &str, document: &Document) -> Op {
             name: name.to_owned(),
             data: Some(Arc::new(write_glb(document))),
         }],
+        beside: false,
     })
 }
 

@@ -2,7 +2,8 @@
 //! keep every invariant the document promises.
 //!
 //! Each case starts with a creation or an import, then applies up to [`MAX_OPS`] − 1 more
-//! ops drawn from create, import, pull, add_curve (open, closed, cross-section), cut, erase,
+//! ops drawn from create, import, pull, add_curve (open, closed, cross-section), cut,
+//! transform, delete, duplicate, erase,
 //! set_curve_type, rub, over-sketch (automatic or with a picked handle, exact or soft,
 //! near-handle or part ROI), undo and redo. A step is stored as parameters (an outline's
 //! centre and radius, which model, which curve, where along it, how far to drag...) and is
@@ -46,13 +47,13 @@ use crate::common::{
     Digest, add_curve, digest, import_document, longest_outline, outline, oversketch,
     pushed_stroke, screen, segment, set_type, stroke_input,
 };
-use glam::{DVec2, DVec3};
+use glam::{DMat4, DQuat, DVec2, DVec3};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, FileFailurePersistence, RngSeed, TestRunner};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    CommandError, ControlCurve, Document, Editor, Model, Op, OversketchFit, SketchFeatureInput,
-    StrokeInput,
+    CommandError, ControlCurve, Document, Editor, Model, ModelInput, Op, OversketchFit,
+    SketchFeatureInput, StrokeInput, TransformInput,
 };
 use sketchmesh_core::feature::FeatureKind;
 use sketchmesh_core::geometry::{Bvh, vertex_normals};
@@ -160,6 +161,15 @@ enum Step {
         model: usize,
         angle: f64,
         offset: f64,
+    },
+    /// 0: a transform (turned `angle` about +Y, scaled by `scale`, moved by `shift`, mirrored
+    /// in x when `scale` is negative), 1: a delete, 2: a duplicate of a model.
+    Arrange {
+        model: usize,
+        kind: u8,
+        angle: f64,
+        scale: f64,
+        shift: DVec2,
     },
     Erase {
         view: View,
@@ -293,6 +303,20 @@ fn step() -> impl Strategy<Value = Step> {
             offset,
         },
     );
+    let arrange = (
+        0usize..8,
+        0u8..3,
+        -1.0..1.0f64,
+        prop_oneof![4 => 0.5..2.0f64, 1 => -1.5..-0.7f64],
+        (-1.0..1.0f64, -1.0..1.0f64),
+    )
+        .prop_map(|(model, kind, angle, scale, (x, y))| Step::Arrange {
+            model,
+            kind,
+            angle,
+            scale,
+            shift: DVec2::new(x, y),
+        });
     let erase = (view(), along()).prop_map(|(view, along)| Step::Erase { view, along });
     let set_type = (view(), along(), any::<bool>())
         .prop_map(|(view, along, sharp)| Step::SetType { view, along, sharp });
@@ -353,6 +377,7 @@ fn step() -> impl Strategy<Value = Step> {
         3 => pull,
         3 => add,
         2 => cut,
+        2 => arrange,
         2 => erase,
         2 => set_type,
         2 => rub,
@@ -565,6 +590,32 @@ fn op_for(step: &Step, document: &Document) -> Op {
             let middle = centre + *offset * radius * u.perp();
             let half = 1.6 * radius * u;
             Op::Cut(input(camera, &segment(middle - half, middle + half)))
+        }
+        Step::Arrange {
+            model,
+            kind,
+            angle,
+            scale,
+            shift,
+        } => {
+            let n = document.models.len().max(1);
+            let model = model % n;
+            match kind {
+                0 => {
+                    let mirror = DVec3::new(scale.signum(), 1.0, 1.0);
+                    let matrix = DMat4::from_scale_rotation_translation(
+                        mirror * scale.abs(),
+                        DQuat::from_rotation_y(*angle),
+                        shift.extend(0.0),
+                    );
+                    Op::Transform(TransformInput {
+                        model,
+                        matrix: matrix.to_cols_array(),
+                    })
+                }
+                1 => Op::Delete(ModelInput { model }),
+                _ => Op::Duplicate(ModelInput { model }),
+            }
         }
         Step::Erase { view, along } => {
             let camera = view.camera();

@@ -569,6 +569,7 @@ fn import_op(name: &str, bytes: Vec<u8>) -> Op {
             name: name.to_owned(),
             data: Some(Arc::new(bytes)),
         }],
+        beside: false,
     })
 }
 

@@ -492,6 +492,7 @@ fn import_op(mesh: &Mesh) -> Op {
             name: String::from("sphere.glb"),
             data: Some(Arc::new(write_glb(&document))),
         }],
+        beside: false,
     })
 }
 

@@ -1,15 +1,18 @@
-//! FiberMesh's topology operations through the document (issue 16): a cut of a created shape
-//! and of a real scan leaves a closed manifold with a flat cap whose rim is a sharp curve,
-//! nothing beyond the cut, every curve an edge chain; it undoes and replays exactly, and a
-//! stroke that does not cross is refused with the document untouched.
+//! FiberMesh's topology operations and moving models through the document (issue 16): a cut
+//! of a created shape and of a real scan leaves a closed manifold with a flat cap whose rim
+//! is a sharp curve, nothing beyond the cut, every curve an edge chain; it undoes and replays
+//! exactly, and a stroke that does not cross is refused with the document untouched. Models
+//! are moved, mirrored, duplicated and deleted exactly, and an import lands beside them.
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use std::f64::consts::TAU;
 
-use glam::{DVec2, DVec3};
+use glam::{DMat4, DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
-use sketchmesh_core::document::{CommandError, Editor, Model, Op, StrokeInput};
+use sketchmesh_core::document::{
+    CommandError, Editor, Model, ModelInput, Op, StrokeInput, TransformInput,
+};
 use sketchmesh_core::fibermesh::cut::CutError;
 use sketchmesh_core::geometry::enclosed_volume;
 use sketchmesh_core::io::{ImportFile, ImportLimits, import_gltf};
@@ -188,4 +191,156 @@ fn a_cut_through_a_real_scan_closes_it_with_a_flat_cap() {
         volume < 0.97 * whole && volume > 0.6 * whole,
         "{volume} of {whole}"
     );
+}
+
+// ---------------------------------------------------------------------------------------
+// Moving, deleting and duplicating models
+// ---------------------------------------------------------------------------------------
+
+fn bounds(model: &Model) -> (DVec3, DVec3) {
+    model.mesh.bounding_box().unwrap()
+}
+
+#[test]
+fn a_transform_moves_rotates_and_scales_a_model_with_its_curves() {
+    let mut editor = created_circle();
+    let before = editor.document().models[0].clone();
+    let volume = enclosed_volume(&before.mesh);
+    let matrix = DMat4::from_scale_rotation_translation(
+        DVec3::splat(1.5),
+        glam::DQuat::from_rotation_y(0.7),
+        DVec3::new(2.0, -1.0, 0.5),
+    );
+    editor
+        .apply(Op::Transform(TransformInput {
+            model: 0,
+            matrix: matrix.to_cols_array(),
+        }))
+        .unwrap();
+    let after = &editor.document().models[0];
+    for (p, q) in before.mesh.positions().iter().zip(after.mesh.positions()) {
+        assert!(matrix.transform_point3(*p).distance(*q) < 1e-12);
+    }
+    assert_eq!(
+        after.curves, before.curves,
+        "curves are vertex chains and follow"
+    );
+    assert_eq!(after.mesh.triangles(), before.mesh.triangles());
+    let scaled = enclosed_volume(&after.mesh);
+    assert!((scaled / (1.5f64.powi(3) * volume) - 1.0).abs() < 1e-9);
+    let replayed = Editor::replay_json(&editor.session_json()).unwrap();
+    assert_eq!(replayed.document(), editor.document());
+}
+
+#[test]
+fn a_mirror_keeps_the_surface_facing_out() {
+    let mut editor = created_circle();
+    let volume = enclosed_volume(&editor.document().models[0].mesh);
+    let mirror = DMat4::from_scale(DVec3::new(-1.0, 1.0, 1.0));
+    editor
+        .apply(Op::Transform(TransformInput {
+            model: 0,
+            matrix: mirror.to_cols_array(),
+        }))
+        .unwrap();
+    let mesh = &editor.document().models[0].mesh;
+    mesh.validate().unwrap();
+    assert!(
+        (enclosed_volume(mesh) / volume - 1.0).abs() < 1e-9,
+        "still outward"
+    );
+}
+
+#[test]
+fn bad_transforms_are_refused_and_change_nothing() {
+    let mut editor = created_circle();
+    let before = editor.document().clone();
+    let mut not_finite = DMat4::IDENTITY.to_cols_array();
+    not_finite[12] = f64::NAN;
+    let flat = DMat4::from_scale(DVec3::new(1.0, 0.0, 1.0)).to_cols_array();
+    let mut projective = DMat4::IDENTITY.to_cols_array();
+    projective[3] = 0.5;
+    for matrix in [not_finite, flat, projective] {
+        let error = editor
+            .apply(Op::Transform(TransformInput { model: 0, matrix }))
+            .unwrap_err();
+        assert_eq!(error, CommandError::BadTransform);
+        assert_eq!(editor.document(), &before);
+    }
+    let missing = Op::Transform(TransformInput {
+        model: 3,
+        matrix: DMat4::IDENTITY.to_cols_array(),
+    });
+    assert_eq!(
+        editor.apply(missing).unwrap_err(),
+        CommandError::NoSuchModel(3)
+    );
+    let error = editor
+        .apply(Op::Delete(ModelInput { model: 1 }))
+        .unwrap_err();
+    assert_eq!(error, CommandError::NoSuchModel(1));
+}
+
+#[test]
+fn duplicate_puts_a_copy_beside_and_delete_removes_one_undoably() {
+    let mut editor = created_circle();
+    editor
+        .apply(Op::Duplicate(ModelInput { model: 0 }))
+        .unwrap();
+    let models = &editor.document().models;
+    assert_eq!(models.len(), 2);
+    let ((lo, hi), (copy_lo, _)) = (bounds(&models[0]), bounds(&models[1]));
+    assert!(copy_lo.x > hi.x, "the copy lies beside the original");
+    assert!((copy_lo.x - lo.x - 1.2 * (hi.x - lo.x)).abs() < 1e-9);
+    assert_eq!(models[1].curves, models[0].curves);
+    let both = editor.document().clone();
+    editor.apply(Op::Delete(ModelInput { model: 0 })).unwrap();
+    assert_eq!(editor.document().models.len(), 1);
+    assert_eq!(editor.document().models[0], both.models[1]);
+    editor.apply(Op::Undo).unwrap();
+    assert_eq!(editor.document(), &both);
+    let replayed = Editor::replay_json(&editor.session_json()).unwrap();
+    assert_eq!(replayed.document(), editor.document());
+}
+
+#[test]
+fn an_import_beside_lands_next_to_the_models_and_into_an_empty_document_stays() {
+    let sphere = sketchmesh_core::mesh::primitives::icosphere(1.0, 2);
+    let beside = |op: Op| match op {
+        Op::Import(mut input) => {
+            input.beside = true;
+            Op::Import(input)
+        }
+        other => other,
+    };
+    // Sessions from before the field import where the file says (the .glb holds f32).
+    let mut old = Editor::new();
+    old.apply(import_mesh("a.glb", &sphere)).unwrap();
+    old.apply(import_mesh("b.glb", &sphere)).unwrap();
+    let as_read = old.document().models[0].mesh.positions().to_vec();
+    assert_eq!(old.document().models[1].mesh.positions(), as_read);
+    let mut editor = Editor::new();
+    editor.apply(beside(import_mesh("a.glb", &sphere))).unwrap();
+    let first = editor.document().models[0].mesh.positions();
+    assert_eq!(
+        first, as_read,
+        "into an empty document the file's coordinates stay"
+    );
+    editor.apply(beside(import_mesh("b.glb", &sphere))).unwrap();
+    let models = &editor.document().models;
+    let ((lo, hi), (new_lo, new_hi)) = (bounds(&models[0]), bounds(&models[1]));
+    let gap = new_lo.x - hi.x;
+    assert!(
+        (gap - 0.1 * (hi.x - lo.x)).abs() < 1e-12,
+        "beside, a tenth of their size apart ({gap})"
+    );
+    assert!((new_lo.y - lo.y).abs() < 1e-12, "on the same floor");
+    assert!(
+        (new_hi.z + new_lo.z - hi.z - lo.z).abs() < 1e-12,
+        "centred in depth"
+    );
+    let json = editor.session_json();
+    assert!(json.contains(r#""beside":true"#));
+    let replayed = Editor::replay_json(&json).unwrap();
+    assert_eq!(replayed.document(), editor.document());
 }

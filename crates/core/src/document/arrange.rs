@@ -1,0 +1,170 @@
+//! Arranging models (issue 16): moving, rotating and scaling one by an affine matrix,
+//! deleting one, duplicating one, and placing an import beside what the document holds.
+//!
+//! A model's curves are chains of its vertices, so they follow any of these as they are. A
+//! mirroring matrix (negative determinant) would turn the surface inside out, so its
+//! triangles are reversed as well: the model stays outward-facing.
+
+use std::sync::Arc;
+
+use glam::{DMat3, DMat4, DVec3};
+
+use super::outcome::{Outcome, target};
+use super::{CommandError, Document, ModelInput, TransformInput};
+use crate::io::Imported;
+use crate::mesh::Mesh;
+use crate::model::Model;
+
+/// A matrix whose 3×3 part has a determinant below this (relative to its columns' lengths
+/// cubed) flattens the model: refused as singular.
+const MIN_RELATIVE_DETERMINANT: f64 = 1e-9;
+
+/// The gap between an imported file and the models beside it, as a fraction of the larger
+/// of the two.
+const IMPORT_GAP: f64 = 0.1;
+
+/// A duplicate lands this many of the model's widths along +x from it.
+const DUPLICATE_SHIFT: f64 = 1.2;
+
+/// Applies a `transform` op: model `input.model` with `input.matrix` applied.
+///
+/// Errors: [`CommandError::NoSuchModel`]; [`CommandError::BadTransform`] when the matrix is
+/// not finite, not affine or singular.
+pub(super) fn transform_op(
+    doc: &Document,
+    input: &TransformInput,
+) -> Result<(usize, Model), CommandError> {
+    let model = target(doc, input.model)?;
+    let matrix = DMat4::from_cols_array(&input.matrix);
+    let determinant = checked_determinant(&matrix)?;
+    Ok((input.model, transformed(model, &matrix, determinant)?))
+}
+
+/// Applies a `delete` op.
+///
+/// Errors: [`CommandError::NoSuchModel`].
+pub(super) fn delete_op(doc: &Document, input: &ModelInput) -> Result<Outcome, CommandError> {
+    target(doc, input.model)?;
+    let mut next = doc.clone();
+    next.models.remove(input.model);
+    Ok(Outcome::Document(next))
+}
+
+/// Applies a `duplicate` op: a copy of the model, [`DUPLICATE_SHIFT`] of its widths along
+/// +x, added after the others.
+///
+/// Errors: [`CommandError::NoSuchModel`].
+pub(super) fn duplicate_op(doc: &Document, input: &ModelInput) -> Result<Outcome, CommandError> {
+    let model = target(doc, input.model)?;
+    let width = model
+        .mesh
+        .bounding_box()
+        .map_or(1.0, |(lo, hi)| (hi.x - lo.x).max(f64::EPSILON));
+    let mut copy = model.clone();
+    let shift = DVec3::X * DUPLICATE_SHIFT * width;
+    for p in copy.mesh.positions_mut() {
+        *p += shift;
+    }
+    let mut next = doc.clone();
+    next.models.push(Arc::new(copy));
+    Ok(Outcome::Document(next))
+}
+
+/// Moves what a file brought in beside the document's contents (along +x, a gap of
+/// [`IMPORT_GAP`] between them, standing on the same floor and centred in depth), so that
+/// it does not land inside them. Into an empty document it stays where the file put it.
+pub(super) fn place_beside(doc: &Document, imported: &mut Imported) {
+    let here = bounds(
+        doc.models.iter().map(|m| m.mesh.positions()).chain(
+            doc.point_clouds
+                .iter()
+                .map(|c| c.positions.as_slice())
+                .chain(doc.sketches.iter().map(|s| s.points.as_slice())),
+        ),
+    );
+    let coming = bounds(
+        imported
+            .models
+            .iter()
+            .map(|m| m.mesh.positions())
+            .chain(imported.point_clouds.iter().map(|c| c.positions.as_slice()))
+            .chain(imported.sketches.iter().map(|s| s.points.as_slice())),
+    );
+    let (Some((lo, hi)), Some((new_lo, new_hi))) = (here, coming) else {
+        return;
+    };
+    let gap = IMPORT_GAP * (hi - lo).max_element().max((new_hi - new_lo).max_element());
+    let offset = DVec3::new(
+        hi.x + gap - new_lo.x,
+        lo.y - new_lo.y,
+        0.5 * (lo.z + hi.z) - 0.5 * (new_lo.z + new_hi.z),
+    );
+    let moved = imported
+        .models
+        .iter_mut()
+        .flat_map(|m| m.mesh.positions_mut().iter_mut())
+        .chain(
+            imported
+                .point_clouds
+                .iter_mut()
+                .flat_map(|c| c.positions.iter_mut()),
+        )
+        .chain(
+            imported
+                .sketches
+                .iter_mut()
+                .flat_map(|s| s.points.iter_mut()),
+        );
+    for p in moved {
+        *p += offset;
+    }
+}
+
+/// The bounding box of all the points, if there are any.
+fn bounds<'a>(sets: impl Iterator<Item = &'a [DVec3]>) -> Option<(DVec3, DVec3)> {
+    sets.flatten().fold(None, |bounds, &p| match bounds {
+        None => Some((p, p)),
+        Some((lo, hi)) => Some((lo.min(p), hi.max(p))),
+    })
+}
+
+/// The determinant of the matrix's linear part, once the matrix is known to be a finite,
+/// invertible affine map.
+fn checked_determinant(matrix: &DMat4) -> Result<f64, CommandError> {
+    let bottom = matrix.row(3);
+    let affine = bottom == glam::DVec4::W;
+    let linear = DMat3::from_mat4(*matrix);
+    let determinant = linear.determinant();
+    let scale = [linear.x_axis, linear.y_axis, linear.z_axis]
+        .map(DVec3::length)
+        .into_iter()
+        .fold(0.0, f64::max);
+    let invertible = determinant.abs() > MIN_RELATIVE_DETERMINANT * scale.powi(3);
+    if matrix.is_finite() && affine && invertible {
+        Ok(determinant)
+    } else {
+        Err(CommandError::BadTransform)
+    }
+}
+
+/// `model` with `matrix` applied to its vertices, its triangles reversed when the matrix
+/// mirrors (`determinant < 0`).
+fn transformed(model: &Model, matrix: &DMat4, determinant: f64) -> Result<Model, CommandError> {
+    let mut next = model.clone();
+    for p in next.mesh.positions_mut() {
+        *p = matrix.transform_point3(*p);
+    }
+    if determinant < 0.0 {
+        next.mesh = reversed(&next.mesh)?;
+    }
+    Ok(next)
+}
+
+/// The mesh with every triangle's orientation reversed; vertex ids stay.
+fn reversed(mesh: &Mesh) -> Result<Mesh, CommandError> {
+    let mut soup = mesh.to_soup();
+    for t in &mut soup.triangles {
+        t.swap(1, 2);
+    }
+    Mesh::from_soup(&soup).map_err(|_| CommandError::BadTransform)
+}

@@ -1055,6 +1055,63 @@ test('cut: a pen stroke across a shape cuts off the part past it after a moment,
     assert.deepEqual(fresh.errors, [], 'console errors while cutting');
 }));
 
+test('move (V) by touch: a tap selects a shape and shows its handles; dragging it moves it, the square scales it, Delete removes it; undo restores each', async () => {
+  const fresh = await openApp(browser, url, gpu);
+  try {
+    const c = ELLIPSE.c;
+    // Drawn with a finger, so that fingers keep going to the tool (no pen is seen).
+    await touchGesture(fresh.cdp, [onEllipse(0, 2 * Math.PI, 24)], 16);
+    await until(() => lastOpOf(fresh.page), (o) => o.op === 'create', 15_000);
+    const original = await glbOf(fresh.page);
+    await fresh.page.keyboard.press('v');
+    await frames(fresh.page, 2);
+    const before = await screenshot(fresh.page, out('move-before.png'));
+    await touchTap(fresh.cdp, [c]);
+    await frames(fresh.page, 3);
+    const selected = await screenshot(fresh.page, out('move-selected.png'));
+    const px = (img, x, y) => Array.from(img.data.slice((y * img.width + x) * 4, (y * img.width + x) * 4 + 3));
+    const orange = (img) => {
+      let n = 0;
+      for (let y = 90; y < img.height; y += 2) {
+        for (let x = 0; x < img.width; x += 2) {
+          const [r, g, b] = px(img, x, y);
+          if (r > 220 && g > 130 && g < 200 && b < 110) n++;
+        }
+      }
+      return n;
+    };
+    assert.ok(orange(before) < 20, 'no handles before a model is selected');
+    assert.ok(orange(selected) > 150, `a tap selects the shape: its handles show (${orange(selected)} orange samples)`);
+    // Drag the shape 200 px right by its body.
+    await touchGesture(fresh.cdp, [line(c, { x: c.x + 200, y: c.y }, 20)], 30);
+    const moved = await until(() => lastOpOf(fresh.page), (o) => o.op === 'transform', 10_000);
+    assert.equal(moved.op, 'transform', 'the drag commits a transform');
+    assert.ok(Math.abs(moved.matrix[12]) > 0.1, `it moves the shape (${moved.matrix.slice(12, 15)})`);
+    await frames(fresh.page, 3);
+    const after = await screenshot(fresh.page, out('move-moved.png'));
+    const isClay = ([r, g]) => r > 120 && g > 110;
+    assert.ok(isClay(px(before, c.x - 140, c.y)) && !isClay(px(after, c.x - 140, c.y)), 'its left end left its place');
+    assert.ok(!isClay(px(before, c.x + 330, c.y)) && isClay(px(after, c.x + 330, c.y)), 'it is drawn 200 px to the right');
+    // The scale square: 30 px outside the ring (radius 160 px here), down and to the right.
+    const middle = { x: c.x + 200, y: c.y };
+    const square = { x: middle.x + 190 / Math.SQRT2, y: middle.y + 190 / Math.SQRT2 };
+    await touchGesture(fresh.cdp, [line(square, { x: middle.x + (0.7 * 190) / Math.SQRT2, y: middle.y + (0.7 * 190) / Math.SQRT2 }, 10)], 30);
+    const scaled = await until(() => lastOpOf(fresh.page), (o) => o.op === 'transform' && Math.abs(o.matrix[0] - 0.7) < 0.05, 10_000);
+    assert.ok(Math.abs(scaled.matrix[0] - 0.7) < 0.05, `the square scales it to 0.7 (${scaled.matrix[0]})`);
+    await fresh.page.keyboard.press('Delete');
+    const deleted = await until(() => api(fresh.page, 'stats'), (st) => st.models === 0);
+    assert.equal(deleted.models, 0, 'Delete removes the selected shape');
+    for (let i = 0; i < 3; i++) {
+      await fresh.page.keyboard.press('Control+z');
+      await frames(fresh.page, 2);
+    }
+    assert.deepEqual(await glbOf(fresh.page), original, 'three undos give the shape back where it was, bit for bit');
+    assert.deepEqual(fresh.errors, [], 'console errors while moving');
+  } finally {
+    await fresh.context.close();
+  }
+});
+
 test('autosave: create and pull, reload: the same document, session, view and history; a corrupt record is set aside with a sentence', () => withShape(async ({ fresh, created }) => {
   const c = ELLIPSE.c;
   const session = () => api(fresh.page, 'session');

@@ -15,7 +15,7 @@ use eframe::egui_wgpu;
 use egui::{Key, KeyboardShortcut, Modifiers};
 use sketchmesh_core::curve::{StrokePoint, process_stroke};
 use sketchmesh_core::document::{
-    Edit, Editor, ImportInput, Op, Progress, StrokeInput, model_under,
+    Edit, Editor, GizmoHandle, ImportInput, Op, Progress, StrokeInput, model_under,
 };
 use sketchmesh_core::feature::FeatureKind;
 use sketchmesh_core::optimize::quality_report;
@@ -624,6 +624,12 @@ impl SketchApp {
         if pressed(Key::B) {
             self.tools.next_stroke_use();
         }
+        if pressed(Key::Delete) || pressed(Key::Backspace) {
+            let deleted = self
+                .tools
+                .delete_selected(self.shared.borrow().editor.document());
+            self.take_output(deleted, now);
+        }
         if pressed(Key::F) {
             self.frame_all();
         }
@@ -853,9 +859,11 @@ impl SketchApp {
     /// Highlights the silhouette piece an over-sketch stroke would replace (shown by the edit
     /// in progress), or the picked handle with its ends marked, and says what to do next.
     fn handle_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
-        if let Some(hint) = self.tools.hint() {
+        let hint = self.tools.hint(self.shared.borrow().editor.document());
+        if let Some(hint) = hint {
             hint_ui(ui, viewport, hint);
         }
+        self.gizmo_ui(ui, viewport);
         if let Some(amount) = self.edit.as_ref().and_then(feature_amount) {
             hint_ui(ui, viewport, &amount);
         }
@@ -869,6 +877,34 @@ impl SketchApp {
         for (points, confident, croppable) in picked.into_iter().chain(outline) {
             outline_ui(ui, viewport, points, confident, croppable);
         }
+    }
+
+    /// The move tool's handles around the selected model: the ring that turns it, the square
+    /// that scales it, a dot at its middle; the one being dragged is drawn brighter.
+    fn gizmo_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
+        let camera = self.shared.borrow().camera.camera();
+        let size = glam::DVec2::new(viewport.width().into(), viewport.height().into());
+        let gizmo = {
+            let shared = self.shared.borrow();
+            self.tools.gizmo(shared.editor.document(), &camera, size)
+        };
+        let Some((gizmo, dragged)) = gizmo else {
+            return;
+        };
+        let at = |p: glam::DVec2| viewport.min + egui::vec2(p.x as f32, p.y as f32);
+        let colour = |handle| match dragged == Some(handle) {
+            true => egui::Color32::from_rgb(255, 214, 120),
+            false => egui::Color32::from_rgb(240, 160, 60),
+        };
+        let painter = ui.painter();
+        painter.circle_stroke(
+            at(gizmo.centre),
+            gizmo.radius as f32,
+            egui::Stroke::new(5.0, colour(GizmoHandle::Turn)),
+        );
+        painter.circle_filled(at(gizmo.centre), 7.0, colour(GizmoHandle::Move));
+        let square = egui::Rect::from_center_size(at(gizmo.scale_handle()), egui::vec2(22.0, 22.0));
+        painter.rect_filled(square, 3.0, colour(GizmoHandle::Scale));
     }
 
     /// Draws the stroke in progress, smoothed as it will be stored, with pressure widths.

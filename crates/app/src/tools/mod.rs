@@ -7,6 +7,7 @@
 //! [`ToolSet`] holds one tool per [`Mode`] (FiberMesh's five tools, over-sketch, feature
 //! sketching and optimize) and routes events to the active one.
 
+pub mod arrange;
 mod context;
 pub mod curve_stroke;
 pub mod draw;
@@ -25,6 +26,7 @@ pub use crate::input::router::ToolEvent;
 pub use context::{ToolOutput, ViewCtx};
 pub use mode::Mode;
 
+use arrange::ArrangeTool;
 use curve_stroke::CurveStrokeTool;
 use feature::FeatureTool;
 pub use optimize::Mark;
@@ -44,6 +46,7 @@ pub struct ToolSet {
     oversketch: OversketchTool,
     optimize: OptimizeTool,
     feature: FeatureTool,
+    arrange: ArrangeTool,
 }
 
 impl ToolSet {
@@ -78,6 +81,35 @@ impl ToolSet {
         self.feature.settings_ui(ui)
     }
 
+    /// The move tool's panel; what the user did there.
+    pub fn arrange_ui(&mut self, ui: &mut egui::Ui, doc: &Document) -> ToolOutput {
+        self.arrange.settings_ui(ui, doc)
+    }
+
+    /// Deletes what the active tool has selected (the Delete key): the move tool's model.
+    pub fn delete_selected(&mut self, doc: &Document) -> ToolOutput {
+        match self.mode {
+            Mode::Move => self.arrange.delete(doc),
+            _ => ToolOutput::None,
+        }
+    }
+
+    /// The move tool's handles, to draw, with the one being dragged.
+    pub fn gizmo(
+        &self,
+        doc: &Document,
+        camera: &Camera,
+        viewport: glam::DVec2,
+    ) -> Option<(
+        sketchmesh_core::document::Gizmo,
+        Option<sketchmesh_core::document::GizmoHandle>,
+    )> {
+        match self.mode {
+            Mode::Move => self.arrange.gizmo(doc, camera, viewport),
+            _ => None,
+        }
+    }
+
     /// The edit a tool's gesture began was refused: the tool starts over.
     pub fn gesture_refused(&mut self) {
         self.feature.cancel();
@@ -108,11 +140,12 @@ impl ToolSet {
     }
 
     /// What the active tool asks the user to do next, if anything.
-    pub fn hint(&self) -> Option<&'static str> {
+    pub fn hint(&self, doc: &Document) -> Option<&'static str> {
         match self.mode {
             Mode::Oversketch => self.oversketch.hint(),
             Mode::Optimize => self.optimize.hint(),
             Mode::Feature => self.feature.hint(),
+            Mode::Move => self.arrange.hint(doc),
             _ => None,
         }
     }
@@ -124,6 +157,7 @@ impl ToolSet {
         self.oversketch.cancel();
         self.optimize.cancel();
         self.feature.cancel();
+        self.arrange.cancel();
         self.sketch.cancel()
     }
 
@@ -138,6 +172,7 @@ impl ToolSet {
             Mode::Oversketch => self.oversketch.on_event(event, view, doc),
             Mode::Optimize => self.optimize.on_event(event, view, doc),
             Mode::Feature => self.feature.on_event(event, view, doc),
+            Mode::Move => self.arrange.on_event(event, view, doc),
         }
     }
 
@@ -150,6 +185,7 @@ impl ToolSet {
             Mode::Erase | Mode::CurveType | Mode::Rub => self.curve_stroke.preview(),
             Mode::Oversketch => self.oversketch.preview(),
             Mode::Feature => self.feature.preview(),
+            Mode::Move => None,
         }
     }
 

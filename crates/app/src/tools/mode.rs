@@ -1,6 +1,6 @@
 //! The tool modes: FiberMesh's five tools (sketch, deform, erase, type change, rub;
-//! thesis §3.2), over-sketch, feature sketching and optimize, with their toolbar labels and
-//! keys.
+//! thesis §3.2), over-sketch, feature sketching, optimize and moving models, with their
+//! toolbar labels and keys.
 
 use egui::Key;
 
@@ -25,11 +25,13 @@ pub enum Mode {
     Optimize,
     /// Sketch a ridge, bump, flattening or suggestive contours onto a model.
     Feature,
+    /// Select a model and move, turn or scale it; delete or duplicate it.
+    Move,
 }
 
 impl Mode {
     /// Every mode, in toolbar order.
-    pub const ALL: [Mode; 8] = [
+    pub const ALL: [Mode; 9] = [
         Mode::Sketch,
         Mode::Pull,
         Mode::Erase,
@@ -38,6 +40,7 @@ impl Mode {
         Mode::Oversketch,
         Mode::Feature,
         Mode::Optimize,
+        Mode::Move,
     ];
 
     /// The toolbar label.
@@ -51,6 +54,7 @@ impl Mode {
             Mode::Oversketch => "Over-sketch",
             Mode::Optimize => "Optimize",
             Mode::Feature => "Feature",
+            Mode::Move => "Move",
         }
     }
 
@@ -65,6 +69,7 @@ impl Mode {
             Mode::Oversketch => Key::O,
             Mode::Optimize => Key::M,
             Mode::Feature => Key::D,
+            Mode::Move => Key::V,
         }
     }
 
@@ -85,6 +90,7 @@ impl Mode {
             Mode::Feature => {
                 "Sketch on a model, then drag: a ridge or ravine, a bump or valley, flattening, suggestive contours"
             }
+            Mode::Move => "Tap a model, then drag it, its ring or its square: move, turn, scale",
         }
     }
 }

@@ -40,6 +40,57 @@ pub(super) fn transform_op(
     Ok((input.model, transformed(model, &matrix, determinant)?))
 }
 
+/// A transform's live preview while its handle is dragged: the model's vertices moved by
+/// the op's latest matrix (the committed op computes the same positions).
+#[derive(Debug)]
+pub(super) struct TransformPreview {
+    model: usize,
+    positions: Vec<DVec3>,
+    /// The matrix the positions show.
+    shown: Option<[f64; 16]>,
+}
+
+impl TransformPreview {
+    /// The preview of `input` on `base`, showing the model as it is.
+    ///
+    /// Errors: [`CommandError::NoSuchModel`].
+    pub(super) fn start(base: &Document, input: &TransformInput) -> Result<Self, CommandError> {
+        let model = target(base, input.model)?;
+        Ok(TransformPreview {
+            model: input.model,
+            positions: model.mesh.positions().to_vec(),
+            shown: None,
+        })
+    }
+
+    /// Moves the vertices by the op's matrix if it changed: `Some(false)` when it did (the
+    /// preview waits for the next), `None` when nothing changed.
+    ///
+    /// Errors: [`CommandError::BadTransform`] for a matrix the op would refuse.
+    pub(super) fn step(
+        &mut self,
+        base: &Document,
+        input: &TransformInput,
+    ) -> Result<Option<bool>, CommandError> {
+        if self.shown == Some(input.matrix) {
+            return Ok(None);
+        }
+        let matrix = DMat4::from_cols_array(&input.matrix);
+        checked_determinant(&matrix)?;
+        let rest = target(base, self.model)?.mesh.positions();
+        for (p, &r) in self.positions.iter_mut().zip(rest) {
+            *p = matrix.transform_point3(r);
+        }
+        self.shown = Some(input.matrix);
+        Ok(Some(false))
+    }
+
+    /// The model's index and where its vertices are drawn.
+    pub(super) fn moved(&self) -> (usize, &[DVec3]) {
+        (self.model, &self.positions)
+    }
+}
+
 /// Applies a `delete` op.
 ///
 /// Errors: [`CommandError::NoSuchModel`].

@@ -60,6 +60,7 @@
 
 use glam::DVec3;
 
+use super::arrange::TransformPreview;
 use super::create::CreateJob;
 use super::curve_edit::PullPreview;
 use super::feature::FeaturePreview;
@@ -137,6 +138,8 @@ enum Work {
     Optimize(Box<OptimizePreview>),
     /// A feature sketch's live shape, following the op's amount.
     Feature(Box<FeaturePreview>),
+    /// A model moving with a dragged handle, following the op's matrix.
+    Transform(Box<TransformPreview>),
     /// A creation, refining step by step.
     Create(Box<CreateJob>),
     /// Nothing computed yet: the next step computes the result whole.
@@ -163,6 +166,9 @@ impl Work {
             Op::Oversketch(input) => Work::Outline(Box::new(OutlinePreview::new(input))),
             Op::Optimize(input) => Work::Optimize(Box::new(OptimizePreview::start(base, input)?)),
             Op::SketchFeature(_) => Work::Feature(Box::new(FeaturePreview::new())),
+            Op::Transform(input) => {
+                Work::Transform(Box::new(TransformPreview::start(base, input)?))
+            }
             _ => Work::Gesture,
         })
     }
@@ -259,6 +265,7 @@ impl Edit {
                 (Work::Outline(preview), _) => preview.step(base, stroke),
                 (Work::Optimize(preview), Op::Optimize(input)) => preview.step(base, input)?,
                 (Work::Feature(preview), Op::SketchFeature(input)) => preview.step(base, input)?,
+                (Work::Transform(preview), Op::Transform(input)) => preview.step(base, input)?,
                 _ => None,
             };
             return Ok(match stepped {
@@ -301,7 +308,11 @@ impl Edit {
                 Ok((Progress::Done, true))
             }
             // A gesture ended: its preview goes, and the committed result begins.
-            Work::Gesture | Work::Pull(_) | Work::Outline(_) | Work::Failed(_) => {
+            Work::Gesture
+            | Work::Pull(_)
+            | Work::Outline(_)
+            | Work::Transform(_)
+            | Work::Failed(_) => {
                 self.work = Work::complete(base, op)?;
                 Ok((Progress::Working, true))
             }
@@ -384,8 +395,8 @@ impl Edit {
         }
     }
 
-    /// A pull's, an optimization's or a feature's preview: the index of a model of [`Edit::document`]
-    /// and where its vertices are drawn (the same topology).
+    /// A pull's, an optimization's, a feature's or a transform's preview: the index of a model
+    /// of [`Edit::document`] and where its vertices are drawn (the same topology).
     pub fn moved_model(&self) -> Option<(usize, &[DVec3])> {
         match &self.work {
             Work::Pull(preview) => Some(preview.moved()),
@@ -394,6 +405,7 @@ impl Edit {
                 _ => None,
             },
             Work::Feature(preview) => preview.moved(),
+            Work::Transform(preview) => Some(preview.moved()),
             _ => None,
         }
     }

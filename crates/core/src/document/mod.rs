@@ -19,6 +19,7 @@ mod edit;
 mod editor;
 mod error;
 mod feature;
+mod gizmo;
 mod history;
 mod intent;
 mod op;
@@ -36,6 +37,7 @@ pub use curve_edit::{CURVE_PICK_RADIUS_PX, curve_type_toggle};
 pub use edit::{Edit, Progress};
 pub use editor::Editor;
 pub use error::CommandError;
+pub use gizmo::{Gizmo, GizmoHandle, HANDLE_REACH_PX};
 pub use intent::{
     CLOSE_TOLERANCE_PX, cut_instead, ink_instead, is_cross_section, model_in_lasso, model_under,
     needs_tap, op_for_stroke, starts_on_model,

@@ -1,0 +1,207 @@
+//! The move tool (issue 16): tap a model to select it; its handles (a ring to turn it, a
+//! square to scale it, the inside of the ring or the model itself to move it) follow the
+//! pen, a finger or the mouse with a live preview, and the release commits one `transform`
+//! op. Delete and Duplicate act on the selection. The handles' geometry, and the matrix a
+//! drag makes, are core's ([`Gizmo`]).
+
+use glam::{DMat4, DVec2};
+use sketchmesh_core::camera::Camera;
+use sketchmesh_core::document::{
+    Document, Gizmo, GizmoHandle, ModelInput, Op, StrokeInput, TransformInput, model_under,
+};
+
+use super::context::{ToolOutput, ViewCtx};
+use super::draw::point;
+use crate::input::router::ToolEvent;
+
+/// A press that moves less than this (px) before it lifts is a tap: it selects.
+const TAP_RADIUS_PX: f64 = 10.0;
+
+/// A handle being dragged.
+#[derive(Clone, Copy, Debug)]
+struct Drag {
+    model: usize,
+    handle: GizmoHandle,
+    gizmo: Gizmo,
+    camera: Camera,
+    viewport: DVec2,
+    from: DVec2,
+    matrix: DMat4,
+}
+
+/// The move tool's state.
+#[derive(Clone, Debug, Default)]
+pub struct ArrangeTool {
+    /// The selected model's index, if any.
+    selected: Option<usize>,
+    /// Where a press that took no handle went down: it selects if it is a tap.
+    press: Option<DVec2>,
+    drag: Option<Drag>,
+}
+
+impl ArrangeTool {
+    /// Feeds one event; see the module docs.
+    pub fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
+        let size = view.viewport.size();
+        let viewport = DVec2::new(size.x.into(), size.y.into());
+        match event {
+            ToolEvent::Begin(s) => {
+                let at = point(s, view).pos;
+                self.press = None;
+                let Some(drag) = self.grab(doc, &view.camera, viewport, at) else {
+                    self.press = Some(at);
+                    return ToolOutput::None;
+                };
+                self.drag = Some(drag);
+                ToolOutput::Begin(transform(drag.model, DMat4::IDENTITY))
+            }
+            ToolEvent::Move(s) => match self.drag.as_mut() {
+                Some(drag) => {
+                    let to = point(s, view).pos;
+                    drag.matrix =
+                        drag.gizmo
+                            .drag(drag.handle, &drag.camera, drag.viewport, drag.from, to);
+                    ToolOutput::Revise(transform(drag.model, drag.matrix))
+                }
+                None => ToolOutput::None,
+            },
+            ToolEvent::End(s) => {
+                let at = point(s, view).pos;
+                if let Some(drag) = self.drag.take() {
+                    if at.distance(drag.from) < TAP_RADIUS_PX && drag.handle == GizmoHandle::Move {
+                        // A tap on the selected model: nothing moves.
+                        return ToolOutput::Cancel;
+                    }
+                    let matrix =
+                        drag.gizmo
+                            .drag(drag.handle, &drag.camera, drag.viewport, drag.from, at);
+                    return ToolOutput::FinishWith(transform(drag.model, matrix));
+                }
+                if let Some(down) = self.press.take()
+                    && at.distance(down) < TAP_RADIUS_PX
+                {
+                    self.selected = model_at(doc, &view.camera, viewport, at);
+                }
+                ToolOutput::None
+            }
+            ToolEvent::Cancel => self.cancel(),
+        }
+    }
+
+    /// The handle of the selected model under `at`, or the model itself (moving it), as a
+    /// drag about to start.
+    fn grab(&self, doc: &Document, camera: &Camera, viewport: DVec2, at: DVec2) -> Option<Drag> {
+        let model = self.selected.filter(|&i| i < doc.models.len())?;
+        let gizmo = Gizmo::of(&doc.models[model], camera, viewport)?;
+        let handle = gizmo.handle_at(at).or_else(|| {
+            (model_at(doc, camera, viewport, at) == Some(model)).then_some(GizmoHandle::Move)
+        })?;
+        Some(Drag {
+            model,
+            handle,
+            gizmo,
+            camera: *camera,
+            viewport,
+            from: at,
+            matrix: DMat4::IDENTITY,
+        })
+    }
+
+    /// Drops a drag in progress.
+    pub fn cancel(&mut self) -> ToolOutput {
+        self.press = None;
+        match self.drag.take() {
+            Some(_) => ToolOutput::Cancel,
+            None => ToolOutput::None,
+        }
+    }
+
+    /// The handles to draw: those of the selected model as it is shown (moved by the drag in
+    /// progress), with the handle being dragged.
+    pub fn gizmo(
+        &self,
+        doc: &Document,
+        camera: &Camera,
+        viewport: DVec2,
+    ) -> Option<(Gizmo, Option<GizmoHandle>)> {
+        if let Some(drag) = &self.drag {
+            let moved = drag.matrix.transform_point3(drag.gizmo.pivot);
+            let centre = camera.screen_from_world(moved, viewport)?.truncate();
+            let scale = drag.matrix.transform_vector3(glam::DVec3::X).length();
+            let gizmo = Gizmo {
+                pivot: moved,
+                centre,
+                radius: drag.gizmo.radius * scale,
+            };
+            return Some((gizmo, Some(drag.handle)));
+        }
+        let model = self.selected.filter(|&i| i < doc.models.len())?;
+        Some((Gizmo::of(&doc.models[model], camera, viewport)?, None))
+    }
+
+    /// What the tool asks the user to do next.
+    pub fn hint(&self, doc: &Document) -> Option<&'static str> {
+        match self.selected.filter(|&i| i < doc.models.len()) {
+            None => Some("Tap a model to move, turn or scale it"),
+            Some(_) if self.drag.is_none() => {
+                Some("Drag the model to move it, the ring to turn it, the square to scale it")
+            }
+            Some(_) => None,
+        }
+    }
+
+    /// The panel: Delete and Duplicate for the selection.
+    pub fn settings_ui(&mut self, ui: &mut egui::Ui, doc: &Document) -> ToolOutput {
+        let selected = self.selected.filter(|&i| i < doc.models.len());
+        let size = egui::vec2(44.0, 44.0);
+        let delete = ui.add_enabled(
+            selected.is_some(),
+            egui::Button::new("Delete").min_size(size),
+        );
+        if delete
+            .on_hover_text("Delete the selected model (Delete)")
+            .clicked()
+        {
+            return self.delete(doc);
+        }
+        let duplicate = ui.add_enabled(
+            selected.is_some(),
+            egui::Button::new("Duplicate").min_size(size),
+        );
+        if duplicate
+            .on_hover_text("Add a copy beside the selected model")
+            .clicked()
+            && let Some(model) = selected
+        {
+            self.selected = Some(doc.models.len());
+            return ToolOutput::Commit(Op::Duplicate(ModelInput { model }));
+        }
+        ToolOutput::None
+    }
+
+    /// Deletes the selected model, if any.
+    pub fn delete(&mut self, doc: &Document) -> ToolOutput {
+        match self.selected.take().filter(|&i| i < doc.models.len()) {
+            Some(model) => ToolOutput::Commit(Op::Delete(ModelInput { model })),
+            None => ToolOutput::None,
+        }
+    }
+}
+
+/// A `transform` op of `model` by `matrix`.
+fn transform(model: usize, matrix: DMat4) -> Op {
+    Op::Transform(TransformInput {
+        model,
+        matrix: matrix.to_cols_array(),
+    })
+}
+
+/// The model nearest the eye under `at`, if any.
+fn model_at(doc: &Document, camera: &Camera, viewport: DVec2, at: DVec2) -> Option<usize> {
+    let tap = StrokeInput {
+        viewport: viewport.to_array(),
+        camera: *camera,
+        stroke: vec![[at.x, at.y, 0.5]],
+    };
+    model_under(doc, &tap)
+}

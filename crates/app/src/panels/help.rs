@@ -40,6 +40,11 @@ const SHORTCUTS: &[(&str, &str)] = &[
         "D",
         "Feature: sketch on a model, then drag for a ridge, bump or suggestive contours",
     ),
+    (
+        "V",
+        "Move: tap a model, drag it to move, its ring to turn, its square to scale",
+    ),
+    ("Delete, Backspace", "Move: delete the selected model"),
     ("Esc", "Drop what is in progress (a preview, a drag)"),
     ("W", "Wireframe on/off"),
     ("G", "Grid on/off"),

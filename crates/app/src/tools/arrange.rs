@@ -205,3 +205,101 @@ fn model_at(doc: &Document, camera: &Camera, viewport: DVec2, at: DVec2) -> Opti
     };
     model_under(doc, &tap)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::input::Phase;
+    use crate::tools::test_support::{pen, shape, view};
+
+    fn event(tool: &mut ArrangeTool, doc: &Document, event: ToolEvent) -> ToolOutput {
+        tool.on_event(&event, &view(), doc)
+    }
+
+    fn tap(tool: &mut ArrangeTool, doc: &Document, x: f32, y: f32) -> ToolOutput {
+        event(tool, doc, ToolEvent::Begin(pen(Phase::Down, x, y)));
+        event(tool, doc, ToolEvent::End(pen(Phase::Up, x, y)))
+    }
+
+    #[test]
+    fn a_tap_selects_and_a_drag_of_the_model_previews_then_commits_a_move() {
+        let editor = shape();
+        let doc = editor.document();
+        let mut tool = ArrangeTool::default();
+        assert!(
+            tool.gizmo(doc, &Camera::default(), DVec2::new(800.0, 600.0))
+                .is_none()
+        );
+        assert_eq!(tap(&mut tool, doc, 400.0, 340.0), ToolOutput::None);
+        let (gizmo, dragged) = tool
+            .gizmo(doc, &Camera::default(), DVec2::new(800.0, 600.0))
+            .unwrap();
+        assert!((gizmo.centre - DVec2::new(400.0, 300.0)).length() < 1.0);
+        assert_eq!(dragged, None);
+        let begun = event(
+            &mut tool,
+            doc,
+            ToolEvent::Begin(pen(Phase::Down, 420.0, 340.0)),
+        );
+        assert!(
+            matches!(begun, ToolOutput::Begin(Op::Transform(_))),
+            "{begun:?}"
+        );
+        let revised = event(
+            &mut tool,
+            doc,
+            ToolEvent::Move(pen(Phase::Move, 470.0, 340.0)),
+        );
+        let ToolOutput::Revise(Op::Transform(input)) = revised else {
+            panic!("expected a revised transform, got {revised:?}");
+        };
+        assert!(
+            input.matrix[12] > 0.0 && input.matrix[13].abs() < 1e-9,
+            "moves right"
+        );
+        let ended = event(&mut tool, doc, ToolEvent::End(pen(Phase::Up, 520.0, 340.0)));
+        let ToolOutput::FinishWith(Op::Transform(last)) = ended else {
+            panic!("expected the committed transform, got {ended:?}");
+        };
+        assert!(last.matrix[12] > input.matrix[12]);
+    }
+
+    #[test]
+    fn a_tap_on_empty_canvas_deselects_and_delete_needs_a_selection() {
+        let editor = shape();
+        let doc = editor.document();
+        let mut tool = ArrangeTool::default();
+        assert_eq!(tool.delete(doc), ToolOutput::None);
+        tap(&mut tool, doc, 400.0, 340.0);
+        tap(&mut tool, doc, 760.0, 80.0);
+        assert!(
+            tool.gizmo(doc, &Camera::default(), DVec2::new(800.0, 600.0))
+                .is_none()
+        );
+        // Without a selection a drag on the model is no edit: it may be a tap.
+        let pressed = event(
+            &mut tool,
+            doc,
+            ToolEvent::Begin(pen(Phase::Down, 400.0, 340.0)),
+        );
+        assert_eq!(pressed, ToolOutput::None);
+        event(&mut tool, doc, ToolEvent::End(pen(Phase::Up, 400.0, 340.0)));
+        let deleted = tool.delete(doc);
+        assert!(matches!(
+            deleted,
+            ToolOutput::Commit(Op::Delete(ModelInput { model: 0 }))
+        ));
+    }
+
+    #[test]
+    fn a_tap_on_the_selected_model_moves_nothing() {
+        let editor = shape();
+        let doc = editor.document();
+        let mut tool = ArrangeTool::default();
+        tap(&mut tool, doc, 400.0, 340.0);
+        assert!(matches!(
+            tap(&mut tool, doc, 400.0, 340.0),
+            ToolOutput::Cancel
+        ));
+    }
+}

@@ -17,6 +17,8 @@ pub mod optimize;
 pub mod oversketch;
 pub mod pull;
 pub mod sketch;
+#[cfg(test)]
+mod test_support;
 
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::StrokePoint;

@@ -126,50 +126,9 @@ fn stroke_points(op: &Op) -> Vec<StrokePoint> {
 
 #[cfg(test)]
 mod tests {
-    use egui::{Rect, pos2};
-    use sketchmesh_core::camera::Camera;
-    use sketchmesh_core::document::Editor;
-
     use super::*;
-    use crate::input::{Phase, PointerKind, PointerSample};
-
-    fn pen(phase: Phase, x: f32, y: f32) -> PointerSample {
-        PointerSample {
-            id: 1,
-            phase,
-            pos_in_screen: pos2(x, y),
-            pressure: 0.5,
-            kind: PointerKind::Pen,
-            buttons: 1,
-            contact: 0.0,
-            time: 0.0,
-        }
-    }
-
-    fn view() -> ViewCtx {
-        ViewCtx {
-            camera: Camera::default(),
-            viewport: Rect::from_min_max(pos2(0.0, 40.0), pos2(800.0, 640.0)),
-        }
-    }
-
-    /// A document with a shape created from a circle of 150 px around the view's centre.
-    fn shape() -> Editor {
-        let circle = (0..=80)
-            .map(|i| {
-                let a = std::f64::consts::TAU * f64::from(i) / 80.0;
-                [400.0 + 150.0 * a.cos(), 300.0 + 150.0 * a.sin(), 0.5]
-            })
-            .collect();
-        let mut editor = Editor::new();
-        let input = StrokeInput {
-            viewport: [800.0, 600.0],
-            camera: Camera::default(),
-            stroke: circle,
-        };
-        editor.apply(Op::Create(input)).unwrap();
-        editor
-    }
+    use crate::input::Phase;
+    use crate::tools::test_support::{pen, shape, view};
 
     /// Draws a straight stroke in `steps` moves (a single point is a tap).
     fn draw(tool: &mut SketchTool, doc: &Document, from: (f32, f32), to: (f32, f32)) -> ToolOutput {

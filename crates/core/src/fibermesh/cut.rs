@@ -8,7 +8,7 @@
 //! between the sides are the rims. The caps are meshed in 2D on the cutting surface laid
 //! flat (`cap.rs`), and the kept faces and the caps are built into one closed mesh, so a cut
 //! that would leave anything else (a ring-shaped or folded section, a bowtie where the
-//! surface touches the cut) is refused instead.
+//! surface touches the cut, a cap through another part of the shape) is refused instead.
 
 mod cap;
 mod error;
@@ -20,6 +20,7 @@ use glam::DVec2;
 use crate::camera::Camera;
 use crate::curve::polyline::{contains, self_crossings};
 use crate::fibermesh::add_curve::{Slice, slice};
+use crate::geometry::Bvh;
 use crate::mesh::{Mesh, TriSoup, VertexId};
 use cap::{Unrolling, mesh_cap};
 
@@ -101,6 +102,14 @@ pub fn cut(
     let mut is_cap = vec![false; mesh.n_vertices()];
     for v in remap[first_cap_vertex..].iter().flatten() {
         is_cap[v.index()] = true;
+    }
+    let in_cap = |f| {
+        mesh.face_vertices(f)
+            .iter()
+            .any(|v: &VertexId| is_cap[v.index()])
+    };
+    if !Bvh::new(&mesh).crossing_faces(&mesh, in_cap).is_empty() {
+        return Err(CutError::CapCrosses);
     }
     let rims = zero_set
         .loops

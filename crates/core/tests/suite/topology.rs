@@ -14,7 +14,7 @@ use sketchmesh_core::document::{
     CommandError, Editor, Model, ModelInput, Op, StrokeInput, TransformInput,
 };
 use sketchmesh_core::fibermesh::cut::CutError;
-use sketchmesh_core::geometry::enclosed_volume;
+use sketchmesh_core::geometry::{Bvh, enclosed_volume};
 use sketchmesh_core::io::{ImportFile, ImportLimits, import_gltf};
 
 use crate::common::{import_mesh, samples, segment, testdata};
@@ -57,12 +57,15 @@ fn past(model: &Model, camera: &Camera, x: f64) -> f64 {
         .fold(f64::MIN, f64::max)
 }
 
-/// Closed, manifold, genus 0, every curve a chain of mesh edges.
+/// Closed, manifold, genus 0, no triangle through another, every curve a chain of mesh
+/// edges.
 fn assert_closed_and_embedded(model: &Model) {
     let mesh = &model.mesh;
     mesh.validate().unwrap();
     assert!(mesh.is_closed());
     assert_eq!(mesh.genus(), Some(0));
+    let crossing = Bvh::new(mesh).crossing_faces(mesh, |_| true);
+    assert!(crossing.is_empty(), "triangles cross: {crossing:?}");
     for curve in &model.curves {
         let n = curve.vertices.len();
         let links = if curve.is_closed { n } else { n - 1 };

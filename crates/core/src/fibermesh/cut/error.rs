@@ -21,6 +21,10 @@ pub enum CutError {
     /// The cut section is too thin to mesh.
     #[error("The cut section is too thin to close; cut where the shape is thicker.")]
     ThinSection,
+    /// A cap would pass through the rest of the surface (a section that runs into a part
+    /// of the shape behind it).
+    #[error("The cut's cap would pass through the shape; cut elsewhere.")]
+    CapCrosses,
     /// The result would not be a closed manifold mesh (a bug or a degenerate cut).
     #[error("The cut would leave a broken surface ({0}); try another stroke.")]
     Broken(MeshError),

@@ -12,6 +12,7 @@
 mod build;
 mod nearest;
 mod node;
+mod overlap;
 
 use glam::DVec3;
 

@@ -1,12 +1,14 @@
 //! The sketch tool (FiberMesh §3.2.1): what a stroke means is read from the stroke in core
 //! ([`op_for_stroke`]); a closed curve on a shape and a cross-section wait for a confirming
-//! tap, as in the thesis. A closed curve stays ink if something else comes instead; a
-//! cross-section is a cut unless the tap comes within [`CUT_WAIT_SECONDS`] (the thesis' "a
-//! cutting stroke followed by a click" adds the curve).
+//! tap, as in the thesis. A closed curve followed by a second closed loop on a shape (drawn
+//! after orbiting to the far side) drills a tunnel between them; followed by anything else
+//! it stays ink. A cross-section is a cut unless the tap comes within [`CUT_WAIT_SECONDS`]
+//! (the thesis' "a cutting stroke followed by a click" adds the curve).
 
 use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::document::{
-    Document, Op, StrokeInput, cut_instead, ink_instead, is_cross_section, needs_tap, op_for_stroke,
+    Document, Op, StrokeInput, cut_instead, ink_instead, is_cross_section, needs_tap,
+    op_for_stroke, tunnel_from,
 };
 
 use super::context::{ToolOutput, ViewCtx};
@@ -55,6 +57,9 @@ impl SketchTool {
             return held.map_or(ToolOutput::None, |w| ToolOutput::Commit(w.op));
         }
         let op = op_for_stroke(doc, input);
+        if let Some(tunnel) = held.as_ref().and_then(|w| tunnel_from(&w.op, &op)) {
+            return ToolOutput::Commit(tunnel);
+        }
         let mut ops: Vec<Op> = held.map(Waiting::without_tap).into_iter().collect();
         if needs_tap(&op) {
             self.waiting = Some(Waiting {
@@ -110,7 +115,7 @@ impl SketchTool {
         let waiting = self.waiting.as_ref()?;
         let what = match is_cross_section(&waiting.op) {
             true => "Cutting… tap now to add a cross-section curve instead",
-            false => "Tap to add a closed curve",
+            false => "Tap to add a closed curve, or draw a loop on the far side to drill a tunnel",
         };
         Some((&waiting.points, what))
     }
@@ -213,5 +218,41 @@ mod tests {
         assert_eq!(tool.poll(10.0), (ToolOutput::None, None));
         assert_eq!(tool.poll(20.0), (ToolOutput::None, None));
         assert!(matches!(tool.cancel(), ToolOutput::Commit(Op::Stroke(_))));
+    }
+
+    #[test]
+    fn a_second_loop_instead_of_the_tap_drills_a_tunnel() {
+        let editor = shape();
+        let doc = editor.document();
+        let mut tool = SketchTool::default();
+        let v = view();
+        let mut draw_loop = |cx: f32| {
+            let points: Vec<(f32, f32)> = (0..=40)
+                .map(|i| {
+                    let a = std::f32::consts::TAU * i as f32 / 40.0;
+                    (cx + 30.0 * a.cos(), 340.0 + 30.0 * a.sin())
+                })
+                .collect();
+            tool.on_event(
+                &ToolEvent::Begin(pen(Phase::Down, points[0].0, points[0].1)),
+                &v,
+                doc,
+            );
+            for &(x, y) in &points[1..] {
+                tool.on_event(&ToolEvent::Move(pen(Phase::Move, x, y)), &v, doc);
+            }
+            tool.on_event(
+                &ToolEvent::End(pen(Phase::Up, points[40].0, points[40].1)),
+                &v,
+                doc,
+            )
+        };
+        assert_eq!(draw_loop(360.0), ToolOutput::None);
+        let second = draw_loop(440.0);
+        assert!(
+            matches!(second, ToolOutput::Commit(Op::Tunnel(_))),
+            "{second:?}"
+        );
+        assert!(tool.waiting().is_none());
     }
 }

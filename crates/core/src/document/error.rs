@@ -6,6 +6,7 @@ use crate::fibermesh::CreateError;
 use crate::fibermesh::add_curve::AddCurveError;
 use crate::fibermesh::curve_pull::PullError;
 use crate::fibermesh::cut::CutError;
+use crate::fibermesh::tunnel::TunnelError;
 use crate::io::GltfError;
 use crate::mesh::remesh::RemeshError;
 use crate::optimize::OptimizeError;
@@ -66,6 +67,9 @@ pub enum CommandError {
     /// A transform's matrix is not finite, not affine, or flattens the model.
     #[error("That transform cannot be applied: it must be finite and must not flatten the model.")]
     BadTransform,
+    /// Two loops did not make a tunnel.
+    #[error("{0}")]
+    Tunnel(#[from] TunnelError),
     /// A stroke did not cut a model.
     #[error("{0}")]
     Cut(#[from] CutError),

@@ -3,14 +3,15 @@
 //! FiberMesh's sketch tool reads intent from the stroke itself (thesis §3.2.1, Fig. 3.4): a
 //! closed stroke drawn on empty canvas creates a shape; a stroke that starts on a shape with
 //! control curves adds a curve to it (a closed one after a confirming tap, without which it
-//! stays ink, so nothing the user drew is lost); a stroke from beside a shape across it cuts
+//! stays ink, so nothing the user drew is lost; a second closed loop instead of the tap
+//! drills a tunnel between the two); a stroke from beside a shape across it cuts
 //! the shape, unless a tap follows at once, which makes it a cross-section loop instead (the
 //! gesture the thesis uses to get a handle for fatness). Anything else is ink on the drawing
 //! plane.
 
 use glam::DVec2;
 
-use super::{AddCurveInput, Document, Model, Op, StrokeInput};
+use super::{AddCurveInput, Document, Model, Op, StrokeInput, TunnelInput};
 use crate::curve::is_closed_loop;
 use crate::curve::polyline::centroid;
 use crate::geometry::raycast;
@@ -53,6 +54,21 @@ pub fn needs_tap(op: &Op) -> bool {
 /// Whether `op` is a cross-section, which becomes a cut when no tap comes ([`cut_instead`]).
 pub fn is_cross_section(op: &Op) -> bool {
     matches!(op, Op::AddCurve(input) if input.cross_section)
+}
+
+/// The tunnel two closed loops on shapes make, drawn one after the other without the tap
+/// that would make the first a curve: `None` unless both are such loops.
+pub fn tunnel_from(first: &Op, second: &Op) -> Option<Op> {
+    let is_loop =
+        |op: &Op| matches!(op, Op::AddCurve(input) if input.closed && !input.cross_section);
+    match (first, second) {
+        (Op::AddCurve(a), Op::AddCurve(b)) if is_loop(first) && is_loop(second) => {
+            Some(Op::Tunnel(TunnelInput {
+                strokes: [StrokeInput::of_add_curve(a), StrokeInput::of_add_curve(b)],
+            }))
+        }
+        _ => None,
+    }
 }
 
 /// The cut for a cross-section stroke whose tap did not come; other ops stay as they are.

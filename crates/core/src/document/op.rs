@@ -38,6 +38,9 @@ pub enum Op {
     Cut(StrokeInput),
     /// Remove the parts of control curves the stroke passes over; the surface re-optimizes.
     Erase(StrokeInput),
+    /// Drill a hole through a model between two closed loops drawn on it (usually on
+    /// opposite sides, the second after orbiting).
+    Tunnel(TunnelInput),
     /// Move, rotate, scale or mirror a model by an affine matrix.
     Transform(TransformInput),
     /// Remove a model.
@@ -72,6 +75,7 @@ impl Op {
         "add_curve",
         "cut",
         "erase",
+        "tunnel",
         "transform",
         "delete",
         "duplicate",
@@ -93,6 +97,7 @@ impl Op {
             Op::Pull(_) => "pull",
             Op::AddCurve(_) => "add_curve",
             Op::Cut(_) => "cut",
+            Op::Tunnel(_) => "tunnel",
             Op::Transform(_) => "transform",
             Op::Delete(_) => "delete",
             Op::Duplicate(_) => "duplicate",
@@ -118,6 +123,7 @@ impl Op {
             Op::SketchFeature(input) => Some(&input.stroke),
             Op::Import(_)
             | Op::Optimize(_)
+            | Op::Tunnel(_)
             | Op::Transform(_)
             | Op::Delete(_)
             | Op::Duplicate(_)
@@ -137,6 +143,7 @@ impl Op {
             Op::SketchFeature(input) => Some(&mut input.stroke),
             Op::Import(_)
             | Op::Optimize(_)
+            | Op::Tunnel(_)
             | Op::Transform(_)
             | Op::Delete(_)
             | Op::Duplicate(_)
@@ -144,6 +151,15 @@ impl Op {
             | Op::Redo => None,
         }
     }
+}
+
+/// A `tunnel` op: `{"op":"tunnel","strokes":[first loop, second loop]}`, each loop a closed
+/// stroke on the model with its view (`{viewport, camera, stroke}`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TunnelInput {
+    /// The two loops, in the order they were drawn.
+    pub strokes: [StrokeInput; 2],
 }
 
 /// A `transform` op: `{"op":"transform","model":0,"matrix":[16 numbers]}`, the matrix
@@ -508,6 +524,9 @@ mod tests {
             }),
             Op::Cut(stroke()),
             Op::Erase(stroke()),
+            Op::Tunnel(TunnelInput {
+                strokes: [stroke(), stroke()],
+            }),
             Op::Transform(TransformInput {
                 model: 0,
                 matrix: glam::DMat4::IDENTITY.to_cols_array(),

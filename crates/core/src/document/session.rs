@@ -175,6 +175,7 @@ fn has_no_fields(op: &Op) -> bool {
         | Op::Pull(_)
         | Op::AddCurve(_)
         | Op::Cut(_)
+        | Op::Tunnel(_)
         | Op::Transform(_)
         | Op::Delete(_)
         | Op::Duplicate(_)

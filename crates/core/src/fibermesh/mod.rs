@@ -63,6 +63,7 @@ mod outline;
 mod plane;
 mod region;
 mod triangulate;
+pub mod tunnel;
 
 use glam::DVec2;
 

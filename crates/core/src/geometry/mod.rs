@@ -26,5 +26,6 @@ pub use laplacian::{
 pub use normals::{
     face_normal, face_normals, vertex_normals, vertex_normals_into, vertex_normals_of,
 };
+pub(crate) use raycast::segment_crosses_triangle;
 pub use raycast::{RayHit, raycast};
 pub use shape_diameter::{SDF_RAYS, shape_diameter};

@@ -39,6 +39,18 @@ pub fn raycast(mesh: &Mesh, origin: DVec3, dir: DVec3) -> Option<RayHit> {
     best
 }
 
+/// Whether the segment from `from` to `to` passes through the triangle `a b c` (a touch at
+/// `from` does not count).
+pub(crate) fn segment_crosses_triangle(
+    from: DVec3,
+    to: DVec3,
+    a: DVec3,
+    b: DVec3,
+    c: DVec3,
+) -> bool {
+    intersect_triangle(from, to - from, a, b, c).is_some_and(|(t, _, _)| t <= 1.0)
+}
+
 /// Möller–Trumbore: `(t, u, v)` with the hit at `a + u (b − a) + v (c − a)`.
 pub(crate) fn intersect_triangle(
     origin: DVec3,

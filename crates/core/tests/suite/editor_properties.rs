@@ -3,7 +3,7 @@
 //!
 //! Each case starts with a creation or an import, then applies up to [`MAX_OPS`] − 1 more
 //! ops drawn from create, import, pull, add_curve (open, closed, cross-section), cut,
-//! transform, delete, duplicate, erase,
+//! tunnel, transform, delete, duplicate, erase,
 //! set_curve_type, rub, over-sketch (automatic or with a picked handle, exact or soft,
 //! near-handle or part ROI), undo and redo. A step is stored as parameters (an outline's
 //! centre and radius, which model, which curve, where along it, how far to drag...) and is
@@ -53,7 +53,7 @@ use proptest::test_runner::{Config, FileFailurePersistence, RngSeed, TestRunner}
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
     CommandError, ControlCurve, Document, Editor, Model, ModelInput, Op, OversketchFit,
-    SketchFeatureInput, StrokeInput, TransformInput,
+    SketchFeatureInput, StrokeInput, TransformInput, TunnelInput,
 };
 use sketchmesh_core::feature::FeatureKind;
 use sketchmesh_core::geometry::{Bvh, vertex_normals};
@@ -161,6 +161,12 @@ enum Step {
         model: usize,
         angle: f64,
         offset: f64,
+    },
+    /// Loops of `radius` (a fraction of the model's size on screen) around its middle, seen
+    /// from the front and from behind.
+    Tunnel {
+        model: usize,
+        radius: f64,
     },
     /// 0: a transform (turned `angle` about +Y, scaled by `scale`, moved by `shift`, mirrored
     /// in x when `scale` is negative), 1: a delete, 2: a duplicate of a model.
@@ -303,6 +309,8 @@ fn step() -> impl Strategy<Value = Step> {
             offset,
         },
     );
+    let tunnel =
+        (0usize..8, 0.1..0.4f64).prop_map(|(model, radius)| Step::Tunnel { model, radius });
     let arrange = (
         0usize..8,
         0u8..3,
@@ -378,6 +386,7 @@ fn step() -> impl Strategy<Value = Step> {
         3 => add,
         2 => cut,
         2 => arrange,
+        1 => tunnel,
         2 => erase,
         2 => set_type,
         2 => rub,
@@ -590,6 +599,31 @@ fn op_for(step: &Step, document: &Document) -> Op {
             let middle = centre + *offset * radius * u.perp();
             let half = 1.6 * radius * u;
             Op::Cut(input(camera, &segment(middle - half, middle + half)))
+        }
+        Step::Tunnel { model, radius } => {
+            let views = [
+                View {
+                    yaw: 0.0,
+                    pitch: 0.0,
+                },
+                View {
+                    yaw: std::f64::consts::PI,
+                    pitch: 0.0,
+                },
+            ];
+            let strokes = views.map(|view| {
+                let camera = view.camera();
+                let place = pick_model(document, *model).and_then(|m| projection(m, &camera));
+                let (centre, size) = place.unwrap_or((nowhere()[0], 10.0));
+                let ring: Vec<DVec2> = (0..=48)
+                    .map(|i| {
+                        let a = std::f64::consts::TAU * f64::from(i) / 48.0;
+                        centre + radius * size * DVec2::from_angle(a)
+                    })
+                    .collect();
+                input(camera, &ring)
+            });
+            Op::Tunnel(TunnelInput { strokes })
         }
         Step::Arrange {
             model,

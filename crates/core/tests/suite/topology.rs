@@ -11,7 +11,7 @@ use std::f64::consts::TAU;
 use glam::{DMat4, DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    CommandError, Editor, Model, ModelInput, Op, StrokeInput, TransformInput,
+    CommandError, Editor, Model, ModelInput, Op, StrokeInput, TransformInput, TunnelInput,
 };
 use sketchmesh_core::fibermesh::cut::CutError;
 use sketchmesh_core::geometry::{Bvh, enclosed_volume};
@@ -60,10 +60,16 @@ fn past(model: &Model, camera: &Camera, x: f64) -> f64 {
 /// Closed, manifold, genus 0, no triangle through another, every curve a chain of mesh
 /// edges.
 fn assert_closed_and_embedded(model: &Model) {
+    assert_closed_of_genus(model, 0);
+}
+
+/// Closed, manifold, of genus `genus`, no triangle through another, every curve a chain of
+/// mesh edges.
+fn assert_closed_of_genus(model: &Model, genus: u32) {
     let mesh = &model.mesh;
     mesh.validate().unwrap();
     assert!(mesh.is_closed());
-    assert_eq!(mesh.genus(), Some(0));
+    assert_eq!(mesh.genus(), Some(genus));
     let crossing = Bvh::new(mesh).crossing_faces(mesh, |_| true);
     assert!(crossing.is_empty(), "triangles cross: {crossing:?}");
     for curve in &model.curves {
@@ -346,4 +352,71 @@ fn an_import_beside_lands_next_to_the_models_and_into_an_empty_document_stays() 
     assert!(json.contains(r#""beside":true"#));
     let replayed = Editor::replay_json(&json).unwrap();
     assert_eq!(replayed.document(), editor.document());
+}
+
+// ---------------------------------------------------------------------------------------
+// Tunnels
+// ---------------------------------------------------------------------------------------
+
+/// A closed loop of `radius` px around the view's centre.
+fn loop_around_centre(camera: Camera, radius: f64) -> StrokeInput {
+    let points: Vec<DVec2> = (0..=48)
+        .map(|i| CENTRE + radius * DVec2::from_angle(TAU * f64::from(i) / 48.0))
+        .collect();
+    input(camera, &points)
+}
+
+fn behind() -> Camera {
+    Camera {
+        eye: DVec3::new(0.0, 0.0, -5.0),
+        ..Camera::default()
+    }
+}
+
+#[test]
+fn loops_on_the_front_and_the_back_of_a_shape_drill_a_smooth_tunnel() {
+    let mut editor = created_circle();
+    let before = editor.document().clone();
+    let volume_before = enclosed_volume(&before.models[0].mesh);
+    let strokes = [
+        loop_around_centre(Camera::default(), 40.0),
+        loop_around_centre(behind(), 40.0),
+    ];
+    editor.apply(Op::Tunnel(TunnelInput { strokes })).unwrap();
+    let model = &editor.document().models[0];
+    assert_closed_of_genus(model, 1);
+    let loops: Vec<_> = model.curves.iter().skip(1).collect();
+    assert_eq!(loops.len(), 2);
+    assert!(loops.iter().all(|c| c.is_closed && !c.is_sharp()));
+    let volume = enclosed_volume(&model.mesh);
+    assert!(
+        volume < 0.98 * volume_before && volume > 0.5 * volume_before,
+        "{volume} of {volume_before}"
+    );
+    // The view straight through the hole: the ray down the axis meets nothing.
+    let hit = sketchmesh_core::geometry::raycast(&model.mesh, DVec3::new(0.0, 0.0, 5.0), -DVec3::Z);
+    assert!(hit.is_none(), "the tunnel is open: {hit:?}");
+    let tunnelled = editor.document().clone();
+    editor.apply(Op::Undo).unwrap();
+    assert_eq!(editor.document(), &before);
+    editor.apply(Op::Redo).unwrap();
+    let replayed = Editor::replay_json(&editor.session_json()).unwrap();
+    assert_eq!(replayed.document(), &tunnelled);
+}
+
+#[test]
+fn a_second_loop_beside_the_first_on_the_same_side_is_refused_or_drills_inside() {
+    let mut editor = created_circle();
+    let before = editor.document().clone();
+    let far = Op::Tunnel(TunnelInput {
+        strokes: [
+            loop_around_centre(Camera::default(), 40.0),
+            input(
+                Camera::default(),
+                &segment(DVec2::new(700.0, 50.0), DVec2::new(760.0, 80.0)),
+            ),
+        ],
+    });
+    assert!(editor.apply(far).is_err());
+    assert_eq!(editor.document(), &before);
 }

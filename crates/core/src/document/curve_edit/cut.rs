@@ -9,12 +9,11 @@
 
 use super::settle::{Change, remesh_and_settle_within, remesh_only};
 use super::shared::{
-    bounding_diagonal, has_curves, insert_on_edge, model_crossed, replaced, screen_stroke,
+    bounding_diagonal, carried_over, has_curves, model_crossed, replaced, screen_stroke,
 };
 use crate::document::{CommandError, Document, StrokeInput};
 use crate::fibermesh::cut::{CutError, cut};
 use crate::fibermesh::{ControlCurve, CurveKind};
-use crate::mesh::{Mesh, VertexId};
 use crate::model::Model;
 
 /// How far from the rims (as a fraction of the model's size) the surface is remeshed and
@@ -33,16 +32,7 @@ pub fn cut_op(doc: &Document, input: &StrokeInput) -> Result<(usize, Model), Com
     let index = model_crossed(doc, input, &stroke, |_| true).ok_or(CutError::DoesNotCross)?;
     let model = &doc.models[index];
     let cut = cut(&model.mesh, &input.camera, input.viewport_size(), &stroke)?;
-    let mut curves = model.curves.clone();
-    for &(a, b, new) in &cut.split_edges {
-        for curve in &mut curves {
-            insert_on_edge(curve, a, b, new);
-        }
-    }
-    let mut curves: Vec<ControlCurve> = curves
-        .iter()
-        .flat_map(|curve| kept_pieces(curve, &cut.remap, &cut.mesh))
-        .collect();
+    let mut curves = carried_over(&model.curves, &cut.split_edges, &cut.remap, &cut.mesh);
     curves.extend(cut.rims.iter().map(|rim| ControlCurve {
         vertices: rim.clone(),
         is_closed: true,
@@ -65,53 +55,4 @@ pub fn cut_op(doc: &Document, input: &StrokeInput) -> Result<(usize, Model), Com
         (remesh_only(&cut.mesh, &curves, &band)?, Vec::new())
     };
     Ok((index, replaced(model, mesh, curves)))
-}
-
-/// The runs of `curve` that the cut kept, in the cut mesh's numbering: a closed curve cut
-/// open becomes open runs, each of at least two vertices joined by mesh edges.
-fn kept_pieces(curve: &ControlCurve, remap: &[Option<VertexId>], mesh: &Mesh) -> Vec<ControlCurve> {
-    let mapped: Vec<Option<VertexId>> = curve.vertices.iter().map(|v| remap[v.index()]).collect();
-    let n = mapped.len();
-    let joined = |k: usize| match (mapped[k], mapped[(k + 1) % n]) {
-        (Some(a), Some(b)) => mesh.find_edge(a, b).is_some(),
-        _ => false,
-    };
-    let n_links = if curve.is_closed {
-        n
-    } else {
-        n.saturating_sub(1)
-    };
-    if n > 0 && (0..n_links).all(joined) {
-        let vertices = mapped.into_iter().flatten().collect();
-        return vec![ControlCurve {
-            vertices,
-            ..curve.clone()
-        }];
-    }
-    // Start after a break, so that a closed curve's run across its first vertex stays whole.
-    let start = if curve.is_closed {
-        (0..n).find(|&k| !joined(k)).map_or(0, |k| k + 1)
-    } else {
-        0
-    };
-    let mut pieces = Vec::new();
-    let mut run: Vec<VertexId> = Vec::new();
-    for step in 0..n {
-        let k = (start + step) % n;
-        if let Some(v) = mapped[k] {
-            run.push(v);
-        }
-        let last = step + 1 == n;
-        if last || !joined(k) {
-            if run.len() >= 2 {
-                pieces.push(ControlCurve {
-                    vertices: std::mem::take(&mut run),
-                    is_closed: false,
-                    kind: curve.kind,
-                });
-            }
-            run.clear();
-        }
-    }
-    pieces
 }

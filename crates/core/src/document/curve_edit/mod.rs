@@ -20,6 +20,7 @@ mod oversketch;
 mod pull;
 mod settle;
 mod shared;
+mod tunnel;
 
 pub use add::add_curve_op;
 pub use constraints::{curve_type_toggle, erase_op, rub_op, set_curve_type_op};
@@ -29,3 +30,4 @@ pub(super) use pull::PullPreview;
 pub use pull::pull_op;
 pub use shared::CURVE_PICK_RADIUS_PX;
 pub(crate) use shared::screen_stroke;
+pub use tunnel::tunnel_op;

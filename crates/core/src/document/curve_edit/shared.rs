@@ -137,3 +137,73 @@ pub(super) fn model_crossed(
         .max()
         .map(|(_, index)| index)
 }
+
+/// `curves` after an op that split edges (`split_edges`, as an embedding logs them), removed
+/// vertices and renumbered the rest (`remap`) into `mesh`: each curve gets the split
+/// vertices on its edges, then keeps its runs that survive.
+pub(super) fn carried_over(
+    curves: &[ControlCurve],
+    split_edges: &[(VertexId, VertexId, VertexId)],
+    remap: &[Option<VertexId>],
+    mesh: &Mesh,
+) -> Vec<ControlCurve> {
+    let mut curves = curves.to_vec();
+    for &(a, b, new) in split_edges {
+        for curve in &mut curves {
+            insert_on_edge(curve, a, b, new);
+        }
+    }
+    curves
+        .iter()
+        .flat_map(|curve| kept_pieces(curve, remap, mesh))
+        .collect()
+}
+
+/// The runs of `curve` that an op kept, in its new mesh's numbering: a closed curve cut
+/// open becomes open runs, each of at least two vertices joined by mesh edges.
+fn kept_pieces(curve: &ControlCurve, remap: &[Option<VertexId>], mesh: &Mesh) -> Vec<ControlCurve> {
+    let mapped: Vec<Option<VertexId>> = curve.vertices.iter().map(|v| remap[v.index()]).collect();
+    let n = mapped.len();
+    let joined = |k: usize| match (mapped[k], mapped[(k + 1) % n]) {
+        (Some(a), Some(b)) => mesh.find_edge(a, b).is_some(),
+        _ => false,
+    };
+    let n_links = if curve.is_closed {
+        n
+    } else {
+        n.saturating_sub(1)
+    };
+    if n > 0 && (0..n_links).all(joined) {
+        let vertices = mapped.into_iter().flatten().collect();
+        return vec![ControlCurve {
+            vertices,
+            ..curve.clone()
+        }];
+    }
+    // Start after a break, so that a closed curve's run across its first vertex stays whole.
+    let start = if curve.is_closed {
+        (0..n).find(|&k| !joined(k)).map_or(0, |k| k + 1)
+    } else {
+        0
+    };
+    let mut pieces = Vec::new();
+    let mut run: Vec<VertexId> = Vec::new();
+    for step in 0..n {
+        let k = (start + step) % n;
+        if let Some(v) = mapped[k] {
+            run.push(v);
+        }
+        let last = step + 1 == n;
+        if last || !joined(k) {
+            if run.len() >= 2 {
+                pieces.push(ControlCurve {
+                    vertices: std::mem::take(&mut run),
+                    is_closed: false,
+                    kind: curve.kind,
+                });
+            }
+            run.clear();
+        }
+    }
+    pieces
+}

@@ -11,7 +11,7 @@ use glam::DVec3;
 
 use super::Bvh;
 use super::node::{Aabb, triangle_box};
-use crate::geometry::raycast::intersect_triangle;
+use crate::geometry::segment_crosses_triangle;
 use crate::mesh::{FaceId, Mesh};
 
 impl Bvh {
@@ -72,11 +72,8 @@ fn cross(mesh: &Mesh, f: FaceId, g: FaceId) -> bool {
 }
 
 /// Whether an edge of triangle `edges` passes through triangle `target`.
-fn edge_pierces(edges: &[DVec3; 3], [a, b, c]: &[DVec3; 3]) -> bool {
-    (0..3).any(|k| {
-        let (from, to) = (edges[k], edges[(k + 1) % 3]);
-        intersect_triangle(from, to - from, *a, *b, *c).is_some_and(|(t, _, _)| t <= 1.0)
-    })
+fn edge_pierces(edges: &[DVec3; 3], &[a, b, c]: &[DVec3; 3]) -> bool {
+    (0..3).any(|k| segment_crosses_triangle(edges[k], edges[(k + 1) % 3], a, b, c))
 }
 
 #[cfg(test)]

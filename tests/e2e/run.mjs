@@ -1055,6 +1055,51 @@ test('cut: a pen stroke across a shape cuts off the part past it after a moment,
     assert.deepEqual(fresh.errors, [], 'console errors while cutting');
 }));
 
+test('tunnel: a pen loop on a shape, an orbit to its back and a second loop there drill a hole you can see through; undo restores', () => withShape(async ({ fresh }) => {
+    const c = ELLIPSE.c;
+    const lastOp = () => lastOpOf(fresh.page);
+    await until(lastOp, (o) => o.op === 'create', 15_000);
+    const original = await glbOf(fresh.page);
+    const loop = Array.from({ length: 41 }, (_, i) => {
+      const a = (2 * Math.PI * i) / 40;
+      return { x: c.x + 45 * Math.cos(a), y: c.y + 45 * Math.sin(a), force: 0.5 };
+    });
+    await penStroke(fresh.cdp, loop);
+    await frames(fresh.page, 2);
+    // Half a turn round the shape with the right mouse button (0.008 rad per px).
+    const turn = Math.round(Math.PI / 0.008);
+    const from = { x: c.x - turn / 2, y: c.y + 250 };
+    await fresh.cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', x: from.x, y: from.y, button: 'right', buttons: 2, clickCount: 1 });
+    for (let i = 1; i <= 20; i++) {
+      await fresh.cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', x: from.x + (turn * i) / 20, y: from.y, button: 'right', buttons: 2 });
+      await sleep(16);
+    }
+    await fresh.cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', x: from.x + turn, y: from.y, button: 'right', buttons: 0, clickCount: 1 });
+    await frames(fresh.page, 3);
+    const back = await screenshot(fresh.page, out('tunnel-back.png'));
+    await penStroke(fresh.cdp, loop);
+    const op = await until(lastOp, (o) => o.op === 'tunnel', 15_000);
+    assert.equal(op.op, 'tunnel', 'the second loop instead of a tap drills a tunnel');
+    const stats = await api(fresh.page, 'stats');
+    assert.equal(stats.triangles, 2 * stats.vertices, `a closed mesh of genus 1: ${JSON.stringify(stats)}`);
+    assert.equal(stats.curves, 3, 'the outline and both loops');
+    await frames(fresh.page, 3);
+    const through = await screenshot(fresh.page, out('tunnel.png'));
+    const px = (img, x, y) => Array.from(img.data.slice((y * img.width + x) * 4, (y * img.width + x) * 4 + 3));
+    const isClay = ([r, g]) => r > 120 && g > 110;
+    // Inside the loop: before, all shape; after, the hole shows the background through it
+    // (the default view looks a little down, so the far opening is seen above the near one).
+    const inLoop = insideShape().filter((p) => Math.hypot(p.x - c.x, p.y - c.y) < 40);
+    const dark = (img) => inLoop.filter((p) => Math.max(...px(img, p.x, p.y)) < 100).length / inLoop.length;
+    console.log(`    ${(100 * dark(through)).toFixed(1)}% of the loop shows the background through the hole`);
+    assert.ok(inLoop.every((p) => isClay(px(back, p.x, p.y))), 'before, the loop is all shape');
+    assert.ok(dark(through) > 0.02, `after, the background shows through the hole (${dark(through)})`);
+    await fresh.page.keyboard.press('Control+z');
+    await frames(fresh.page, 3);
+    assert.deepEqual(await glbOf(fresh.page), original, 'undo restores the shape bit for bit');
+    assert.deepEqual(fresh.errors, [], 'console errors while tunnelling');
+}));
+
 test('move (V) by touch: a tap selects a shape and shows its handles; dragging it moves it, the square scales it, Delete removes it; undo restores each', async () => {
   const fresh = await openApp(browser, url, gpu);
   try {

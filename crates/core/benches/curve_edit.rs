@@ -9,7 +9,10 @@
 //!
 //! Also the `cut` op (issue 16) on the same shapes: a vertical stroke across the ellipse a
 //! fifth of its half-width from its right end, from above it to below it; the whole op
-//! (level set, caps, remesh and settle of the band). Target: under 100 ms at 10k natively.
+//! (level set, caps, remesh and settle of the band). And the `tunnel` op: loops of 50 px
+//! around the middle seen from the front and from behind (embedding both, the tube, its
+//! fairing, the remesh and settle of the band). Target for both: under 100 ms at 10k
+//! natively.
 //! Run with
 //! `cargo bench -p sketchmesh-core --bench curve_edit -- --warm-up-time 1 --measurement-time 3`.
 
@@ -18,7 +21,7 @@ use std::hint::black_box;
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
-use sketchmesh_core::document::{Edit, Editor, Op, StrokeInput};
+use sketchmesh_core::document::{Edit, Editor, Op, StrokeInput, TunnelInput};
 
 #[path = "common/fibermesh_shape.rs"]
 mod fibermesh_shape;
@@ -123,5 +126,46 @@ fn bench_cut(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench_curve_edit, bench_cut);
+/// A loop of 50 px around the view's middle, seen through `camera`.
+fn middle_loop(camera: Camera) -> StrokeInput {
+    let centre = VIEWPORT / 2.0;
+    StrokeInput {
+        viewport: VIEWPORT.to_array(),
+        camera,
+        stroke: (0..=48)
+            .map(|i| {
+                let p =
+                    centre + 50.0 * DVec2::from_angle(std::f64::consts::TAU * f64::from(i) / 48.0);
+                [p.x, p.y, 0.5]
+            })
+            .collect(),
+    }
+}
+
+fn bench_tunnel(c: &mut Criterion) {
+    let mut group = c.benchmark_group("tunnel");
+    group.sample_size(10);
+    let behind = Camera {
+        eye: glam::DVec3::new(0.0, 0.0, -5.0),
+        ..Camera::default()
+    };
+    for n in [10_000, 40_000] {
+        let editor = ellipse_editor(n).expect("the ellipse inflates and imports");
+        let vertices = editor.document().stats().vertices;
+        let tunnel = Op::Tunnel(TunnelInput {
+            strokes: [middle_loop(Camera::default()), middle_loop(behind)],
+        });
+        group.bench_with_input(BenchmarkId::new("op", vertices), &editor, |b, editor| {
+            b.iter(|| {
+                editor
+                    .clone()
+                    .apply(black_box(tunnel.clone()))
+                    .expect("tunnel")
+            });
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench_curve_edit, bench_cut, bench_tunnel);
 criterion_main!(benches);

@@ -192,28 +192,36 @@ mod tests {
         );
     }
 
+    /// Draws a closed loop of `radius` around `(cx, 340)` in 40 moves.
+    fn draw_loop(tool: &mut SketchTool, doc: &Document, cx: f32, radius: f32) -> ToolOutput {
+        let v = view();
+        let points: Vec<(f32, f32)> = (0..=40)
+            .map(|i| {
+                let a = std::f32::consts::TAU * i as f32 / 40.0;
+                (cx + radius * a.cos(), 340.0 + radius * a.sin())
+            })
+            .collect();
+        tool.on_event(
+            &ToolEvent::Begin(pen(Phase::Down, points[0].0, points[0].1)),
+            &v,
+            doc,
+        );
+        for &(x, y) in &points[1..] {
+            tool.on_event(&ToolEvent::Move(pen(Phase::Move, x, y)), &v, doc);
+        }
+        tool.on_event(
+            &ToolEvent::End(pen(Phase::Up, points[40].0, points[40].1)),
+            &v,
+            doc,
+        )
+    }
+
     #[test]
     fn a_closed_curve_without_its_tap_stays_ink_and_never_cuts() {
         let editor = shape();
         let doc = editor.document();
         let mut tool = SketchTool::default();
-        let v = view();
-        let loop_points: Vec<(f32, f32)> = (0..=40)
-            .map(|i| {
-                let a = std::f32::consts::TAU * i as f32 / 40.0;
-                (400.0 + 50.0 * a.cos(), 340.0 + 50.0 * a.sin())
-            })
-            .collect();
-        tool.on_event(
-            &ToolEvent::Begin(pen(Phase::Down, loop_points[0].0, loop_points[0].1)),
-            &v,
-            doc,
-        );
-        for &(x, y) in &loop_points[1..] {
-            tool.on_event(&ToolEvent::Move(pen(Phase::Move, x, y)), &v, doc);
-        }
-        let (x, y) = loop_points[40];
-        tool.on_event(&ToolEvent::End(pen(Phase::Up, x, y)), &v, doc);
+        draw_loop(&mut tool, doc, 400.0, 50.0);
         assert!(tool.waiting().is_some());
         assert_eq!(tool.poll(10.0), (ToolOutput::None, None));
         assert_eq!(tool.poll(20.0), (ToolOutput::None, None));
@@ -225,30 +233,8 @@ mod tests {
         let editor = shape();
         let doc = editor.document();
         let mut tool = SketchTool::default();
-        let v = view();
-        let mut draw_loop = |cx: f32| {
-            let points: Vec<(f32, f32)> = (0..=40)
-                .map(|i| {
-                    let a = std::f32::consts::TAU * i as f32 / 40.0;
-                    (cx + 30.0 * a.cos(), 340.0 + 30.0 * a.sin())
-                })
-                .collect();
-            tool.on_event(
-                &ToolEvent::Begin(pen(Phase::Down, points[0].0, points[0].1)),
-                &v,
-                doc,
-            );
-            for &(x, y) in &points[1..] {
-                tool.on_event(&ToolEvent::Move(pen(Phase::Move, x, y)), &v, doc);
-            }
-            tool.on_event(
-                &ToolEvent::End(pen(Phase::Up, points[40].0, points[40].1)),
-                &v,
-                doc,
-            )
-        };
-        assert_eq!(draw_loop(360.0), ToolOutput::None);
-        let second = draw_loop(440.0);
+        assert_eq!(draw_loop(&mut tool, doc, 360.0, 30.0), ToolOutput::None);
+        let second = draw_loop(&mut tool, doc, 440.0, 30.0);
         assert!(
             matches!(second, ToolOutput::Commit(Op::Tunnel(_))),
             "{second:?}"

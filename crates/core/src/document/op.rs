@@ -141,14 +141,8 @@ impl Op {
             Op::AddCurve(input) => Some(&mut input.stroke),
             Op::SetCurveType(input) => Some(&mut input.stroke),
             Op::SketchFeature(input) => Some(&mut input.stroke),
-            Op::Import(_)
-            | Op::Optimize(_)
-            | Op::Tunnel(_)
-            | Op::Transform(_)
-            | Op::Delete(_)
-            | Op::Duplicate(_)
-            | Op::Undo
-            | Op::Redo => None,
+            // The ops without a stroke, listed one by one in `Op::stroke`.
+            _ => None,
         }
     }
 }

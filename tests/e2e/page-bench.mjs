@@ -266,7 +266,8 @@ try {
     };
     const pull = t.pull ?? { begin_ms: [], frame_ms: [], finish_ms: [] };
     // A cut across the same shape, left of the pull, with the pen in the sketch tool: the
-    // stroke waits 0.6 s for a tap, then cuts; the app times the op itself.
+    // stroke waits 0.6 s for a tap, then cuts; the app times the op itself (and the tunnel's
+    // below).
     await page.keyboard.press('s');
     const box = await page.evaluate(() => {
       const r = document.querySelector('canvas').getBoundingClientRect();
@@ -282,14 +283,44 @@ try {
     await page.waitForFunction(() => JSON.parse(window.sketchmesh.session()).ops.at(-1)?.op === 'cut', null, { timeout: 30_000, polling: 50 })
       .catch(() => console.error(`the cut at ${vertices} vertices was not applied`));
     const cut = (await api(page, 'timings')).cut;
+    // A tunnel through the middle: a pen loop, half a turn round the shape with the right
+    // mouse button (0.008 rad per px), the same loop on the far side.
+    const loop = Array.from({ length: 41 }, (_, i) => {
+      const a = (2 * Math.PI * i) / 40;
+      return { x: box.x + 40 * Math.cos(a), y: box.y + 40 * Math.sin(a) };
+    });
+    const drawLoop = async () => {
+      await cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', ...loop[0], buttons: 1, clickCount: 1, ...pen });
+      for (const point of loop.slice(1)) {
+        await sleep(16);
+        await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', ...point, buttons: 1, ...pen });
+      }
+      await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', ...loop.at(-1), buttons: 0, clickCount: 1, ...pen });
+    };
+    await drawLoop();
+    await sleep(200);
+    const turn = Math.round(Math.PI / 0.008);
+    const right = { button: 'right' };
+    await cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', x: box.x - turn / 2, y: box.y + 280, buttons: 2, clickCount: 1, ...right });
+    for (let i = 1; i <= 20; i++) {
+      await sleep(16);
+      await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', x: box.x - turn / 2 + (turn * i) / 20, y: box.y + 280, buttons: 2, ...right });
+    }
+    await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', x: box.x + turn / 2, y: box.y + 280, buttons: 0, clickCount: 1, ...right });
+    await sleep(200);
+    await drawLoop();
+    await page.waitForFunction(() => JSON.parse(window.sketchmesh.session()).ops.at(-1)?.op === 'tunnel', null, { timeout: 30_000, polling: 50 })
+      .catch(() => console.error(`the tunnel at ${vertices} vertices was not applied`));
+    const tunnel = (await api(page, 'timings')).tunnel;
     pulls.push({
       vertices,
       grab_ms: round(pull.begin_ms.at(-1) ?? null),
       frame_ms: stats(pull.frame_ms),
       release_ms: round(pull.finish_ms.at(-1) ?? null),
       cut_ms: round(cut?.finish_ms.at(-1) ?? null),
+      tunnel_ms: round(tunnel?.finish_ms.at(-1) ?? null),
     });
-    console.error(`pull and cut at ${vertices} vertices: ${JSON.stringify(pulls.at(-1))}`);
+    console.error(`pull, cut and tunnel at ${vertices} vertices: ${JSON.stringify(pulls.at(-1))}`);
   }
 
   // An over-sketch of the 36,864-vertex bumpy torus (SKETCHMESH_OVERSKETCH_FIXTURE), seen down

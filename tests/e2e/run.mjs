@@ -20,7 +20,7 @@ import {
   serveDirectory, settings, sleep, touchGesture, touchTap,
 } from './lib.mjs';
 
-const WATCHDOG_MS = 420_000;
+const WATCHDOG_MS = 600_000;
 const { url, gpu } = settings();
 const out = (name) => join(OUT_DIR, `${gpu}-${name}`);
 /** The built page that `cargo xtask test` serves (the offline case serves it itself). */

@@ -130,8 +130,9 @@ pub struct SketchApp {
     has_renderer: bool,
     /// An import announced this frame, parsed in the next one.
     announced_import: Option<files::Incoming>,
-    /// Frame the view once the geometry has been rebuilt (after an import).
-    frame_after_rebuild: bool,
+    /// Frame the view once the geometry has been rebuilt: the models from this index on
+    /// (an import's; 0 after opening a session: all of them).
+    frame_after_rebuild: Option<usize>,
     /// The document the tools work on (see [`autosave::Revision::opened`]): when the page
     /// replaces it, the edit in progress belongs to the old one and is dropped.
     opened: u64,
@@ -202,7 +203,7 @@ impl SketchApp {
             status: None,
             has_renderer,
             announced_import: None,
-            frame_after_rebuild: false,
+            frame_after_rebuild: None,
             opened: 0,
             view_rect: egui::Rect::NOTHING,
             erasing_from: None,
@@ -492,10 +493,11 @@ impl SketchApp {
     fn import_now(&mut self, input: ImportInput, now: f64) {
         let name = input.files[0].name.clone();
         self.status = None;
+        let first_new = self.shared.borrow().editor.document().models.len();
         self.apply_now(Op::Import(input), now);
         if self.status.is_none() {
             self.set_status(format!("Imported {name}."), now);
-            self.frame_after_rebuild = true;
+            self.frame_after_rebuild = Some(first_new);
         }
     }
 
@@ -528,7 +530,7 @@ impl SketchApp {
             }
         }
         self.shared.borrow_mut().open(editor);
-        self.frame_after_rebuild = true;
+        self.frame_after_rebuild = Some(0);
         let kept = match had_work {
             true => " The previous document is kept under Documents.",
             false => "",
@@ -671,6 +673,28 @@ impl SketchApp {
         match self.geometry.bounds {
             Some((min, max)) => shared.camera.frame(min, max),
             None => shared.camera = OrbitCamera::default(),
+        }
+    }
+
+    /// Frames the models from index `first` on (what an import brought, beside the others),
+    /// or everything when there are none (an import of points or lines only); the sketches
+    /// and point clouds around them are left out of view if they must.
+    fn frame_models_from(&mut self, first: usize) {
+        let bounds = {
+            let shared = self.shared.borrow();
+            let models = shared
+                .editor
+                .document()
+                .models
+                .get(first..)
+                .unwrap_or_default();
+            (models.iter())
+                .filter_map(|m| m.mesh.bounding_box())
+                .reduce(|(lo, hi), (a, b)| (lo.min(a), hi.max(b)))
+        };
+        match bounds {
+            Some((lo, hi)) => self.shared.borrow_mut().camera.frame(lo, hi),
+            None => self.frame_all(),
         }
     }
 
@@ -846,8 +870,11 @@ impl SketchApp {
             );
             self.shown_motion = Some(edit.generation());
         }
-        if rebuilt && std::mem::take(&mut self.frame_after_rebuild) {
-            self.frame_all();
+        if rebuilt && let Some(first) = self.frame_after_rebuild.take() {
+            match first {
+                0 => self.frame_all(),
+                first => self.frame_models_from(first),
+            }
         }
     }
 

@@ -344,6 +344,10 @@ fn page_table(page: &Value, wasm_gzip_size: u64) -> String {
                 format!("cut at {vertices} vertices, the op alone"),
                 ms("/cut_ms"),
             ),
+            (
+                format!("tunnel at {vertices} vertices, the op alone"),
+                ms("/tunnel_ms"),
+            ),
         ]
     });
     let vertices = text("/oversketch/vertices");

@@ -117,9 +117,8 @@ pub fn tunnel(mesh: &Mesh, first: LoopStroke, second: LoopStroke) -> Result<Tunn
     soup.triangles
         .extend(tube_triangles.iter().map(|t| t.map(corner)));
     let kept_vertices = soup.remove_unreferenced_vertices();
-    let result = Mesh::from_soup(&soup).map_err(|e| TunnelError::Broken(Some(e)))?;
+    let mut result = Mesh::from_soup(&soup).map_err(|e| TunnelError::Broken(Some(e)))?;
     let remap: Vec<Option<VertexId>> = kept_vertices.iter().map(|k| k.map(VertexId)).collect();
-    let mut result = result;
     let mut is_tube = vec![false; result.n_vertices()];
     for v in remap[n_split..].iter().flatten() {
         is_tube[v.index()] = true;

@@ -3,7 +3,7 @@
 
 use super::settle::{Change, remesh_and_settle};
 use super::shared::{
-    bounding_diagonal, has_curves, insert_on_edge, model_crossed, replaced, screen_stroke,
+    bounding_diagonal, has_curves, model_crossed, replaced, screen_stroke, with_splits,
 };
 use crate::document::{AddCurveInput, CommandError, Document, StrokeInput};
 use crate::fibermesh::add_curve::{CurveShape, add_curve};
@@ -41,12 +41,7 @@ pub fn add_curve_op(doc: &Document, input: &AddCurveInput) -> Result<(usize, Mod
         &stroke,
         shape,
     )?;
-    let mut curves = model.curves.clone();
-    for &(a, b, new) in &embedded.split_edges {
-        for curve in &mut curves {
-            insert_on_edge(curve, a, b, new);
-        }
-    }
+    let mut curves = with_splits(&model.curves, &embedded.split_edges);
     curves.push(ControlCurve {
         vertices: embedded.chain.clone(),
         is_closed: embedded.closed,

@@ -93,7 +93,7 @@ pub(super) fn replaced(model: &Model, mesh: Mesh, curves: Vec<ControlCurve>) -> 
 
 /// Inserts `new` between consecutive vertices `a` and `b` of `curve` (either order,
 /// including the closing edge), where an embedding split that curve edge.
-pub(super) fn insert_on_edge(curve: &mut ControlCurve, a: VertexId, b: VertexId, new: VertexId) {
+fn insert_on_edge(curve: &mut ControlCurve, a: VertexId, b: VertexId, new: VertexId) {
     let n = curve.vertices.len();
     let n_edges = if curve.is_closed {
         n
@@ -138,6 +138,21 @@ pub(super) fn model_crossed(
         .map(|(_, index)| index)
 }
 
+/// `curves` with the vertices that split their edges (`split_edges`, as an embedding logs
+/// them) inserted.
+pub(super) fn with_splits(
+    curves: &[ControlCurve],
+    split_edges: &[(VertexId, VertexId, VertexId)],
+) -> Vec<ControlCurve> {
+    let mut curves = curves.to_vec();
+    for &(a, b, new) in split_edges {
+        for curve in &mut curves {
+            insert_on_edge(curve, a, b, new);
+        }
+    }
+    curves
+}
+
 /// `curves` after an op that split edges (`split_edges`, as an embedding logs them), removed
 /// vertices and renumbered the rest (`remap`) into `mesh`: each curve gets the split
 /// vertices on its edges, then keeps its runs that survive.
@@ -147,13 +162,7 @@ pub(super) fn carried_over(
     remap: &[Option<VertexId>],
     mesh: &Mesh,
 ) -> Vec<ControlCurve> {
-    let mut curves = curves.to_vec();
-    for &(a, b, new) in split_edges {
-        for curve in &mut curves {
-            insert_on_edge(curve, a, b, new);
-        }
-    }
-    curves
+    with_splits(curves, split_edges)
         .iter()
         .flat_map(|curve| kept_pieces(curve, remap, mesh))
         .collect()

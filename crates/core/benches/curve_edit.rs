@@ -21,7 +21,7 @@ use std::hint::black_box;
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
-use sketchmesh_core::document::{Edit, Editor, Op, StrokeInput, TunnelInput};
+use sketchmesh_core::document::{Edit, Editor, Op, StrokeInput, StrokePairInput};
 
 #[path = "common/fibermesh_shape.rs"]
 mod fibermesh_shape;
@@ -152,7 +152,7 @@ fn bench_tunnel(c: &mut Criterion) {
     for n in [10_000, 40_000] {
         let editor = ellipse_editor(n).expect("the ellipse inflates and imports");
         let vertices = editor.document().stats().vertices;
-        let tunnel = Op::Tunnel(TunnelInput {
+        let tunnel = Op::Tunnel(StrokePairInput {
             strokes: [middle_loop(Camera::default()), middle_loop(behind)],
         });
         group.bench_with_input(BenchmarkId::new("op", vertices), &editor, |b, editor| {

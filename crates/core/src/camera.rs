@@ -210,10 +210,21 @@ impl Camera {
     /// facing the camera (the plane a new stroke is drawn on). `None` if it misses (a ray
     /// parallel to the plane or one pointing away, which a valid camera never produces).
     pub fn point_on_target_plane(&self, pos_in_screen: DVec2, viewport: DVec2) -> Option<DVec3> {
+        self.point_on_plane_through(self.target, pos_in_screen, viewport)
+    }
+
+    /// Where the picking ray through a screen position meets the plane through `through`
+    /// facing the camera; `None` as for [`Camera::point_on_target_plane`].
+    pub fn point_on_plane_through(
+        &self,
+        through: DVec3,
+        pos_in_screen: DVec2,
+        viewport: DVec2,
+    ) -> Option<DVec3> {
         let (origin, dir) = self.ray_in_world(pos_in_screen, viewport);
         let normal = self.forward();
         let denominator = dir.dot(normal);
-        let t = (self.target - origin).dot(normal) / denominator;
+        let t = (through - origin).dot(normal) / denominator;
         let point = origin + dir * t;
         (denominator > 0.0 && t > 0.0 && point.is_finite()).then_some(point)
     }

@@ -1,14 +1,15 @@
 //! The sketch tool (FiberMesh §3.2.1): what a stroke means is read from the stroke in core
 //! ([`op_for_stroke`]); a closed curve on a shape and a cross-section wait for a confirming
-//! tap, as in the thesis. A closed curve followed by a second closed loop on a shape (drawn
-//! after orbiting to the far side) drills a tunnel between them; followed by anything else
-//! it stays ink. A cross-section is a cut unless the tap comes within [`CUT_WAIT_SECONDS`]
+//! tap, as in the thesis. A closed curve followed by a stroke from near it out beside the
+//! shape and back to near it grows a limb with that silhouette; followed by a second
+//! closed loop on a shape (drawn after orbiting to the far side) it drills a tunnel between
+//! them; followed by anything else it stays ink. A cross-section is a cut unless the tap comes within [`CUT_WAIT_SECONDS`]
 //! (the thesis' "a cutting stroke followed by a click" adds the curve).
 
 use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::document::{
-    Document, Op, StrokeInput, cut_instead, ink_instead, is_cross_section, needs_tap,
-    op_for_stroke, tunnel_from,
+    Document, Op, StrokeInput, cut_instead, extrude_from, ink_instead, is_cross_section,
+    needs_tap, op_for_stroke, tunnel_from,
 };
 
 use super::context::{ToolOutput, ViewCtx};
@@ -55,6 +56,9 @@ impl SketchTool {
         let held = self.waiting.take();
         if is_tap(&input) {
             return held.map_or(ToolOutput::None, |w| ToolOutput::Commit(w.op));
+        }
+        if let Some(extrusion) = held.as_ref().and_then(|w| extrude_from(doc, &w.op, &input)) {
+            return ToolOutput::Commit(extrusion);
         }
         let op = op_for_stroke(doc, input);
         if let Some(tunnel) = held.as_ref().and_then(|w| tunnel_from(&w.op, &op)) {
@@ -115,7 +119,9 @@ impl SketchTool {
         let waiting = self.waiting.as_ref()?;
         let what = match is_cross_section(&waiting.op) {
             true => "Cutting… tap now to add a cross-section curve instead",
-            false => "Tap to add a closed curve, or draw a loop on the far side to drill a tunnel",
+            false => {
+                "Tap: a closed curve · out from the loop and back: a limb · a loop on the far side: a tunnel"
+            }
         };
         Some((&waiting.points, what))
     }
@@ -194,26 +200,43 @@ mod tests {
 
     /// Draws a closed loop of `radius` around `(cx, 340)` in 40 moves.
     fn draw_loop(tool: &mut SketchTool, doc: &Document, cx: f32, radius: f32) -> ToolOutput {
-        let v = view();
         let points: Vec<(f32, f32)> = (0..=40)
             .map(|i| {
                 let a = std::f32::consts::TAU * i as f32 / 40.0;
                 (cx + radius * a.cos(), 340.0 + radius * a.sin())
             })
             .collect();
-        tool.on_event(
-            &ToolEvent::Begin(pen(Phase::Down, points[0].0, points[0].1)),
-            &v,
-            doc,
-        );
+        draw_path(tool, doc, &points)
+    }
+
+    /// Draws a stroke through `points`.
+    fn draw_path(tool: &mut SketchTool, doc: &Document, points: &[(f32, f32)]) -> ToolOutput {
+        let v = view();
+        let (first, last) = (points[0], points[points.len() - 1]);
+        tool.on_event(&ToolEvent::Begin(pen(Phase::Down, first.0, first.1)), &v, doc);
         for &(x, y) in &points[1..] {
             tool.on_event(&ToolEvent::Move(pen(Phase::Move, x, y)), &v, doc);
         }
-        tool.on_event(
-            &ToolEvent::End(pen(Phase::Up, points[40].0, points[40].1)),
-            &v,
-            doc,
-        )
+        tool.on_event(&ToolEvent::End(pen(Phase::Up, last.0, last.1)), &v, doc)
+    }
+
+    #[test]
+    fn a_stroke_from_the_loop_out_and_back_instead_of_the_tap_extrudes() {
+        let editor = shape();
+        let doc = editor.document();
+        let mut tool = SketchTool::default();
+        assert_eq!(draw_loop(&mut tool, doc, 470.0, 25.0), ToolOutput::None);
+        // From the loop's top out past the shape's side and back to its bottom: the ends are
+        // as close as a closed loop's, but the stroke leaves the shape.
+        let silhouette: Vec<(f32, f32)> = (0..=40)
+            .map(|i| {
+                let a = std::f32::consts::PI * (i as f32 / 40.0 - 0.5);
+                (470.0 + 250.0 * a.cos(), 340.0 + 25.0 * a.sin())
+            })
+            .collect();
+        let out = draw_path(&mut tool, doc, &silhouette);
+        assert!(matches!(out, ToolOutput::Commit(Op::Extrude(_))), "{out:?}");
+        assert!(tool.waiting().is_none());
     }
 
     #[test]

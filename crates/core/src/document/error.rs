@@ -6,6 +6,7 @@ use crate::fibermesh::CreateError;
 use crate::fibermesh::add_curve::AddCurveError;
 use crate::fibermesh::curve_pull::PullError;
 use crate::fibermesh::cut::CutError;
+use crate::fibermesh::extrude::ExtrudeError;
 use crate::fibermesh::tunnel::TunnelError;
 use crate::io::GltfError;
 use crate::mesh::remesh::RemeshError;
@@ -70,6 +71,9 @@ pub enum CommandError {
     /// Two loops did not make a tunnel.
     #[error("{0}")]
     Tunnel(#[from] TunnelError),
+    /// A base loop and a silhouette did not grow a limb.
+    #[error("{0}")]
+    Extrude(#[from] ExtrudeError),
     /// A stroke did not cut a model.
     #[error("{0}")]
     Cut(#[from] CutError),

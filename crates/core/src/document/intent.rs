@@ -4,16 +4,19 @@
 //! closed stroke drawn on empty canvas creates a shape; a stroke that starts on a shape with
 //! control curves adds a curve to it (a closed one after a confirming tap, without which it
 //! stays ink, so nothing the user drew is lost; a second closed loop instead of the tap
-//! drills a tunnel between the two); a stroke from beside a shape across it cuts
+//! drills a tunnel between the two, and a stroke from near the loop out and back to near
+//! it grows a limb there, whose silhouette it is); a stroke from beside a shape across it cuts
 //! the shape, unless a tap follows at once, which makes it a cross-section loop instead (the
 //! gesture the thesis uses to get a handle for fatness). Anything else is ink on the drawing
 //! plane.
 
 use glam::DVec2;
 
-use super::{AddCurveInput, Document, Model, Op, StrokeInput, TunnelInput};
-use crate::curve::is_closed_loop;
+use super::{AddCurveInput, Document, Model, Op, StrokeInput, StrokePairInput};
+use crate::curve::polyline::distance_to_polyline;
+use crate::curve::{StrokePoint, is_closed_loop};
 use crate::curve::polyline::centroid;
+use crate::fibermesh::extrude::NEAR_BASE_PX;
 use crate::geometry::raycast;
 
 /// How far apart, in CSS px, a stroke's ends may be for it to read as closed.
@@ -63,12 +66,42 @@ pub fn tunnel_from(first: &Op, second: &Op) -> Option<Op> {
         |op: &Op| matches!(op, Op::AddCurve(input) if input.closed && !input.cross_section);
     match (first, second) {
         (Op::AddCurve(a), Op::AddCurve(b)) if is_loop(first) && is_loop(second) => {
-            Some(Op::Tunnel(TunnelInput {
+            Some(Op::Tunnel(StrokePairInput {
                 strokes: [StrokeInput::of_add_curve(a), StrokeInput::of_add_curve(b)],
             }))
         }
         _ => None,
     }
+}
+
+/// The extrusion a closed loop on a shape and a following stroke make when the stroke starts
+/// and ends within [`NEAR_BASE_PX`] of the loop and leaves the shapes on the way, both drawn
+/// in one view: the stroke is the new limb's silhouette. `None` otherwise. (Its ends may be
+/// as close as a closed loop's: what tells it from a tunnel's second loop is that it leaves
+/// the surface.)
+pub fn extrude_from(doc: &Document, first: &Op, second: &StrokeInput) -> Option<Op> {
+    let Op::AddCurve(base) = first else {
+        return None;
+    };
+    if !base.closed || base.cross_section || base.camera != second.camera {
+        return None;
+    }
+    let outline: Vec<DVec2> = (base.stroke.iter())
+        .chain(base.stroke.first())
+        .map(|&[x, y, _]| DVec2::new(x, y))
+        .collect();
+    let points = second.points();
+    let near = |p: Option<&StrokePoint>| {
+        p.is_some_and(|p| distance_to_polyline(p.pos, &outline) <= NEAR_BASE_PX)
+    };
+    let leaves = || {
+        (points.iter()).any(|p| !hits_model(doc, second, p.pos, |_| true))
+    };
+    (near(points.first()) && near(points.last()) && leaves()).then(|| {
+        Op::Extrude(StrokePairInput {
+            strokes: [StrokeInput::of_add_curve(base), second.clone()],
+        })
+    })
 }
 
 /// The cut for a cross-section stroke whose tap did not come; other ops stay as they are.

@@ -40,12 +40,12 @@ pub use error::CommandError;
 pub use gizmo::{Gizmo, GizmoHandle, HANDLE_REACH_PX};
 pub use intent::{
     CLOSE_TOLERANCE_PX, cut_instead, ink_instead, is_cross_section, model_in_lasso, model_under,
-    needs_tap, op_for_stroke, starts_on_model, tunnel_from,
+    extrude_from, needs_tap, op_for_stroke, starts_on_model, tunnel_from,
 };
 pub use op::{
     AddCurveInput, BrushInput, CurveTypeInput, FileInput, ImportInput, ModelInput, Op,
     OptimizeInput, OversketchFit, OversketchInput, SketchFeatureInput, StrokeInput, TransformInput,
-    TunnelInput,
+    StrokePairInput,
 };
 pub use oversketch::OutlinePiece;
 pub use session::{SESSION_FORMAT, SESSION_VERSION, Session};

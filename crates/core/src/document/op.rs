@@ -40,7 +40,10 @@ pub enum Op {
     Erase(StrokeInput),
     /// Drill a hole through a model between two closed loops drawn on it (usually on
     /// opposite sides, the second after orbiting).
-    Tunnel(TunnelInput),
+    Tunnel(StrokePairInput),
+    /// Grow a limb out of a model: a closed base loop drawn on it, then the limb's
+    /// silhouette from near one side of the loop out and back to near the other.
+    Extrude(StrokePairInput),
     /// Move, rotate, scale or mirror a model by an affine matrix.
     Transform(TransformInput),
     /// Remove a model.
@@ -76,6 +79,7 @@ impl Op {
         "cut",
         "erase",
         "tunnel",
+        "extrude",
         "transform",
         "delete",
         "duplicate",
@@ -98,6 +102,7 @@ impl Op {
             Op::AddCurve(_) => "add_curve",
             Op::Cut(_) => "cut",
             Op::Tunnel(_) => "tunnel",
+            Op::Extrude(_) => "extrude",
             Op::Transform(_) => "transform",
             Op::Delete(_) => "delete",
             Op::Duplicate(_) => "duplicate",
@@ -124,6 +129,7 @@ impl Op {
             Op::Import(_)
             | Op::Optimize(_)
             | Op::Tunnel(_)
+            | Op::Extrude(_)
             | Op::Transform(_)
             | Op::Delete(_)
             | Op::Duplicate(_)
@@ -147,12 +153,14 @@ impl Op {
     }
 }
 
-/// A `tunnel` op: `{"op":"tunnel","strokes":[first loop, second loop]}`, each loop a closed
-/// stroke on the model with its view (`{viewport, camera, stroke}`).
+/// The strokes of a `tunnel` op (`{"op":"tunnel","strokes":[first loop, second loop]}`,
+/// each loop a closed stroke on the model) or an `extrude` op
+/// (`{"op":"extrude","strokes":[base loop, silhouette]}`), each with its view
+/// (`{viewport, camera, stroke}`).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct TunnelInput {
-    /// The two loops, in the order they were drawn.
+pub struct StrokePairInput {
+    /// The two strokes, in the order they were drawn.
     pub strokes: [StrokeInput; 2],
 }
 
@@ -518,7 +526,10 @@ mod tests {
             }),
             Op::Cut(stroke()),
             Op::Erase(stroke()),
-            Op::Tunnel(TunnelInput {
+            Op::Tunnel(StrokePairInput {
+                strokes: [stroke(), stroke()],
+            }),
+            Op::Extrude(StrokePairInput {
                 strokes: [stroke(), stroke()],
             }),
             Op::Transform(TransformInput {

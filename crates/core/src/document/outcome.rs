@@ -70,6 +70,7 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
         Op::AddCurve(input) => replaced(curve_edit::add_curve_op(base, input)?),
         Op::Cut(input) => replaced(curve_edit::cut_op(base, input)?),
         Op::Tunnel(input) => replaced(curve_edit::tunnel_op(base, input)?),
+        Op::Extrude(input) => replaced(curve_edit::extrude_op(base, input)?),
         Op::Transform(input) => replaced(transform_op(base, input)?),
         Op::Delete(input) => delete_op(base, input)?,
         Op::Duplicate(input) => duplicate_op(base, input)?,

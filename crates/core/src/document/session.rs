@@ -176,6 +176,7 @@ fn has_no_fields(op: &Op) -> bool {
         | Op::AddCurve(_)
         | Op::Cut(_)
         | Op::Tunnel(_)
+        | Op::Extrude(_)
         | Op::Transform(_)
         | Op::Delete(_)
         | Op::Duplicate(_)

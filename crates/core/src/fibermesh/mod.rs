@@ -54,14 +54,17 @@ mod control_curve;
 pub mod curve_pull;
 pub mod curve_tools;
 pub mod cut;
+pub mod extrude;
 mod error;
 mod fair_surface;
 mod fair_systems;
 mod inflate;
 mod measure;
+mod opening;
 mod outline;
 mod plane;
 mod region;
+mod rings;
 mod triangulate;
 pub mod tunnel;
 
@@ -71,6 +74,7 @@ pub use control_curve::{ControlCurve, CurveKind};
 pub use error::CreateError;
 pub use fair_surface::{Convergence, FairSurface, RunSummary};
 pub use outline::{FINE_SPACING_PX, MAX_OVERSHOOT, MIN_AREA_PX2, MIN_ROUNDNESS};
+pub use opening::ViewedStroke;
 pub use plane::DrawingPlane;
 pub use region::{Region, nearest_vertices, region_around};
 

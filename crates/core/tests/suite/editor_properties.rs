@@ -53,7 +53,7 @@ use proptest::test_runner::{Config, FileFailurePersistence, RngSeed, TestRunner}
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
     CommandError, ControlCurve, Document, Editor, Model, ModelInput, Op, OversketchFit,
-    SketchFeatureInput, StrokeInput, TransformInput, TunnelInput,
+    SketchFeatureInput, StrokeInput, TransformInput, StrokePairInput,
 };
 use sketchmesh_core::feature::FeatureKind;
 use sketchmesh_core::geometry::{Bvh, vertex_normals};
@@ -623,7 +623,7 @@ fn op_for(step: &Step, document: &Document) -> Op {
                     .collect();
                 input(camera, &ring)
             });
-            Op::Tunnel(TunnelInput { strokes })
+            Op::Tunnel(StrokePairInput { strokes })
         }
         Step::Arrange {
             model,

@@ -11,7 +11,7 @@ use std::f64::consts::TAU;
 use glam::{DMat4, DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    CommandError, Editor, Model, ModelInput, Op, StrokeInput, TransformInput, TunnelInput,
+    CommandError, Editor, Model, ModelInput, Op, StrokeInput, TransformInput, StrokePairInput,
 };
 use sketchmesh_core::fibermesh::cut::CutError;
 use sketchmesh_core::geometry::{Bvh, enclosed_volume};
@@ -382,7 +382,7 @@ fn loops_on_the_front_and_the_back_of_a_shape_drill_a_smooth_tunnel() {
         loop_around_centre(Camera::default(), 40.0),
         loop_around_centre(behind(), 40.0),
     ];
-    editor.apply(Op::Tunnel(TunnelInput { strokes })).unwrap();
+    editor.apply(Op::Tunnel(StrokePairInput { strokes })).unwrap();
     let model = &editor.document().models[0];
     assert_closed_of_genus(model, 1);
     let loops: Vec<_> = model.curves.iter().skip(1).collect();
@@ -408,7 +408,7 @@ fn loops_on_the_front_and_the_back_of_a_shape_drill_a_smooth_tunnel() {
 fn a_second_loop_beside_the_first_on_the_same_side_is_refused_or_drills_inside() {
     let mut editor = created_circle();
     let before = editor.document().clone();
-    let far = Op::Tunnel(TunnelInput {
+    let far = Op::Tunnel(StrokePairInput {
         strokes: [
             loop_around_centre(Camera::default(), 40.0),
             input(
@@ -418,5 +418,88 @@ fn a_second_loop_beside_the_first_on_the_same_side_is_refused_or_drills_inside()
         ],
     });
     assert!(editor.apply(far).is_err());
+    assert_eq!(editor.document(), &before);
+}
+
+// ---------------------------------------------------------------------------------------
+// Extrusions
+// ---------------------------------------------------------------------------------------
+
+/// A base loop of `radius` px around `centre`, and a silhouette from its top out `reach` px
+/// to the right and back to its bottom (a half ellipse).
+fn extrusion(camera: Camera, centre: DVec2, radius: f64, reach: f64) -> (StrokeInput, Vec<DVec2>) {
+    let base: Vec<DVec2> = (0..=48)
+        .map(|i| centre + radius * DVec2::from_angle(TAU * f64::from(i) / 48.0))
+        .collect();
+    let silhouette: Vec<DVec2> = (0..=60)
+        .map(|i| {
+            let a = std::f64::consts::PI * (f64::from(i) / 60.0 - 0.5);
+            centre + DVec2::new(reach * a.cos(), radius * a.sin())
+        })
+        .collect();
+    (input(camera, &base), silhouette)
+}
+
+/// The distance (px) from `p` to the nearest point of the visible outlines of `model`.
+fn to_outline(model: &Model, camera: &Camera, p: DVec2) -> f64 {
+    crate::common::outlines(&model.mesh, camera, VIEWPORT)
+        .iter()
+        .flat_map(|line| line.windows(2).map(|w| (w[0], w[1])))
+        .map(|(a, b)| {
+            let t = ((p - a).dot(b - a) / (b - a).length_squared().max(1e-12)).clamp(0.0, 1.0);
+            p.distance(a + t * (b - a))
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// The size of a model on screen: its projected bounding box's diagonal.
+fn screen_size(model: &Model, camera: &Camera) -> f64 {
+    let points: Vec<DVec2> = (model.mesh.positions().iter())
+        .map(|&p| camera.screen_from_world(p, VIEWPORT).unwrap().truncate())
+        .collect();
+    let lo = points.iter().fold(DVec2::MAX, |a, &b| a.min(b));
+    let hi = points.iter().fold(DVec2::MIN, |a, &b| a.max(b));
+    lo.distance(hi)
+}
+
+#[test]
+fn a_loop_and_a_silhouette_grow_a_limb_whose_outline_follows_the_stroke() {
+    let mut editor = created_circle();
+    let before = editor.document().clone();
+    let camera = Camera::default();
+    let (base, silhouette) = extrusion(camera, CENTRE + DVec2::new(90.0, 0.0), 30.0, 160.0);
+    let strokes = [base, input(camera, &silhouette)];
+    editor.apply(Op::Extrude(StrokePairInput { strokes })).unwrap();
+    let model = &editor.document().models[0];
+    assert_closed_of_genus(model, 0);
+    let new: Vec<_> = model.curves.iter().skip(1).collect();
+    assert_eq!(new.len(), 2);
+    assert!(new[0].is_closed && new[0].is_sharp(), "the base loop is sharp");
+    assert!(!new[1].is_closed && !new[1].is_sharp(), "the silhouette is smooth");
+    // Beyond the body, the limb's outline follows the stroke within 3% of the model's size.
+    let tolerance = 0.03 * screen_size(model, &camera);
+    let beyond = silhouette.iter().filter(|p| p.x > CENTRE.x + 150.0);
+    let worst = beyond
+        .map(|&p| to_outline(model, &camera, p))
+        .fold(0.0, f64::max);
+    assert!(worst < tolerance, "the outline is {worst} px off the stroke (allowed {tolerance})");
+    let grown = editor.document().clone();
+    editor.apply(Op::Undo).unwrap();
+    assert_eq!(editor.document(), &before);
+    editor.apply(Op::Redo).unwrap();
+    let replayed = Editor::replay_json(&editor.session_json()).unwrap();
+    assert_eq!(replayed.document(), &grown);
+}
+
+#[test]
+fn a_silhouette_that_does_not_start_and_end_near_the_loop_is_refused() {
+    let mut editor = created_circle();
+    let before = editor.document().clone();
+    let camera = Camera::default();
+    let (base, _) = extrusion(camera, CENTRE + DVec2::new(90.0, 0.0), 30.0, 160.0);
+    let (_, elsewhere) = extrusion(camera, CENTRE + DVec2::new(-90.0, 0.0), 30.0, 160.0);
+    let strokes = [base, input(camera, &elsewhere)];
+    let error = editor.apply(Op::Extrude(StrokePairInput { strokes })).unwrap_err();
+    assert!(error.to_string().contains("near one side of the loop"), "{error}");
     assert_eq!(editor.document(), &before);
 }

@@ -16,6 +16,7 @@
 mod add;
 mod constraints;
 mod cut;
+mod extrude;
 mod oversketch;
 mod pull;
 mod settle;
@@ -25,6 +26,7 @@ mod tunnel;
 pub use add::add_curve_op;
 pub use constraints::{curve_type_toggle, erase_op, rub_op, set_curve_type_op};
 pub use cut::cut_op;
+pub use extrude::extrude_op;
 pub(super) use oversketch::oversketch_curve;
 pub(super) use pull::PullPreview;
 pub use pull::pull_op;

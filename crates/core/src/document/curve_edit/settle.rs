@@ -105,11 +105,41 @@ pub(super) fn remesh_and_settle_within(
     curves: &[ControlCurve],
     region: &[bool],
 ) -> Result<(Mesh, Vec<ControlCurve>), CommandError> {
-    let (mut mesh, curves, is_new) = remesh(mesh, curves, region)?;
+    let Remeshed {
+        mut mesh,
+        curves,
+        is_new,
+        ..
+    } = remesh(mesh, curves, region)?;
     let mut surface = FairSurface::new_regional(&mesh, &curves, &is_new, &is_new)
         .map_err(CommandError::Surface)?;
     surface
         .run(mesh.positions_mut(), ITERATIONS_AFTER_REMESH, TOLERANCE)
+        .map_err(CommandError::Surface)?;
+    Ok((mesh, curves))
+}
+
+/// Remeshes `region` (a vertex mask) and re-optimizes all of it, not only the vertices the
+/// remesh made: for a new part whose shape is a first guess (an extrusion's swept limb)
+/// and must become the fair surface through its curves. The Laplacian magnitudes it aims
+/// for are measured on the guess (a sweep of round rings is as curved as a limb that thick
+/// should be), except at the remesh's new vertices, which lie on chords and take the
+/// typical magnitude of the rest.
+pub(super) fn remesh_and_fair_within(
+    mesh: &Mesh,
+    curves: &[ControlCurve],
+    region: &[bool],
+) -> Result<(Mesh, Vec<ControlCurve>), CommandError> {
+    let Remeshed {
+        mut mesh,
+        curves,
+        is_new,
+        is_remeshed,
+    } = remesh(mesh, curves, region)?;
+    let mut surface = FairSurface::new_regional(&mesh, &curves, &is_remeshed, &is_new)
+        .map_err(CommandError::Surface)?;
+    surface
+        .run(mesh.positions_mut(), MAX_ITERATIONS, TOLERANCE)
         .map_err(CommandError::Surface)?;
     Ok((mesh, curves))
 }
@@ -121,16 +151,26 @@ pub(super) fn remesh_only(
     curves: &[ControlCurve],
     region: &[bool],
 ) -> Result<Mesh, CommandError> {
-    Ok(remesh(mesh, curves, region)?.0)
+    Ok(remesh(mesh, curves, region)?.mesh)
 }
 
-/// `region` (a vertex mask) remeshed with every curve kept as an edge chain: the mesh, the
-/// curves on it, and which of its vertices the remesh made.
+/// A model's mesh and curves after a remesh of a region.
+struct Remeshed {
+    mesh: Mesh,
+    /// The curves, as edge chains of `mesh`.
+    curves: Vec<ControlCurve>,
+    /// Which vertices the remesh made.
+    is_new: Vec<bool>,
+    /// Which vertices lie in the remeshed region.
+    is_remeshed: Vec<bool>,
+}
+
+/// `region` (a vertex mask) remeshed with every curve kept as an edge chain.
 fn remesh(
     mesh: &Mesh,
     curves: &[ControlCurve],
     region: &[bool],
-) -> Result<(Mesh, Vec<ControlCurve>, Vec<bool>), CommandError> {
+) -> Result<Remeshed, CommandError> {
     let chains: Vec<Chain> = curves
         .iter()
         .map(|c| Chain {
@@ -149,5 +189,10 @@ fn remesh(
             kind: curve.kind,
         })
         .collect();
-    Ok((remeshed.mesh, curves, remeshed.is_new))
+    Ok(Remeshed {
+        mesh: remeshed.mesh,
+        curves,
+        is_new: remeshed.is_new,
+        is_remeshed: remeshed.is_remeshed,
+    })
 }

@@ -4,7 +4,7 @@
 use glam::DVec2;
 
 use crate::document::{CommandError, Document, StrokeInput};
-use crate::fibermesh::ControlCurve;
+use crate::fibermesh::{ControlCurve, ViewedStroke};
 use crate::fibermesh::curve_tools::VisibleCurves;
 use crate::geometry::Bvh;
 use crate::mesh::{Mesh, VertexId};
@@ -29,6 +29,15 @@ pub(crate) fn screen_stroke(
         return Err(CommandError::StrokeTooShort);
     }
     Ok(input.points().iter().map(|p| p.pos).collect())
+}
+
+/// A stroke with its view, as the topology ops take it.
+pub(super) fn viewed<'a>(input: &'a StrokeInput, stroke: &'a [DVec2]) -> ViewedStroke<'a> {
+    ViewedStroke {
+        camera: &input.camera,
+        viewport: input.viewport_size(),
+        stroke,
+    }
 }
 
 /// Whether the curve ops may act on `model`: whether its shape is defined by curves.

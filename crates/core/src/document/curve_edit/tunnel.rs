@@ -2,14 +2,12 @@
 //! the curves carried over, both loops as new smooth curves, and the band around the tube
 //! remeshed and settled.
 
-use glam::DVec2;
-
 use super::settle::{Change, remesh_and_settle};
 use super::shared::{
-    bounding_diagonal, carried_over, has_curves, model_crossed, replaced, screen_stroke,
+    bounding_diagonal, carried_over, has_curves, model_crossed, replaced, screen_stroke, viewed,
 };
-use crate::document::{CommandError, Document, StrokeInput, TunnelInput};
-use crate::fibermesh::tunnel::{LoopStroke, TunnelError, tunnel};
+use crate::document::{CommandError, Document, StrokePairInput};
+use crate::fibermesh::tunnel::{TunnelError, tunnel};
 use crate::fibermesh::{ControlCurve, CurveKind};
 use crate::mesh::VertexId;
 use crate::model::Model;
@@ -23,7 +21,7 @@ const TUNNEL_REGION: f64 = 0.05;
 /// Errors: the strokes'; [`CommandError::NotOnModel`] when the first loop is on no model with
 /// curves; [`CommandError::Tunnel`] when the loops are refused (the second on another model
 /// among them); remesher and solver failures.
-pub fn tunnel_op(doc: &Document, input: &TunnelInput) -> Result<(usize, Model), CommandError> {
+pub fn tunnel_op(doc: &Document, input: &StrokePairInput) -> Result<(usize, Model), CommandError> {
     let [first, second] = &input.strokes;
     let (a, b) = (screen_stroke(first, 3)?, screen_stroke(second, 3)?);
     let index = model_crossed(doc, first, &a, has_curves).ok_or(CommandError::NotOnModel)?;
@@ -31,7 +29,7 @@ pub fn tunnel_op(doc: &Document, input: &TunnelInput) -> Result<(usize, Model), 
         return Err(TunnelError::NotFacing.into());
     }
     let model = &doc.models[index];
-    let drilled = tunnel(&model.mesh, loop_stroke(first, &a), loop_stroke(second, &b))?;
+    let drilled = tunnel(&model.mesh, viewed(first, &a), viewed(second, &b))?;
     let mut curves = carried_over(
         &model.curves,
         &drilled.split_edges,
@@ -54,13 +52,4 @@ pub fn tunnel_op(doc: &Document, input: &TunnelInput) -> Result<(usize, Model), 
     };
     let (mesh, curves) = remesh_and_settle(&mesh, &curves, change)?;
     Ok((index, replaced(model, mesh, curves)))
-}
-
-/// A loop's stroke as the tunnel takes it.
-fn loop_stroke<'a>(input: &'a StrokeInput, stroke: &'a [DVec2]) -> LoopStroke<'a> {
-    LoopStroke {
-        camera: &input.camera,
-        viewport: input.viewport_size(),
-        stroke,
-    }
 }

@@ -3,6 +3,7 @@
 use glam::{DVec2, DVec3};
 
 use super::*;
+use crate::camera::Camera;
 use crate::mesh::primitives::{icosphere, torus};
 
 const VIEWPORT: DVec2 = DVec2::new(800.0, 600.0);
@@ -26,8 +27,8 @@ fn ring(camera: &Camera, centre: DVec3, radius: f64) -> Vec<DVec2> {
         .collect()
 }
 
-fn stroke<'a>(camera: &'a Camera, points: &'a [DVec2]) -> LoopStroke<'a> {
-    LoopStroke {
+fn stroke<'a>(camera: &'a Camera, points: &'a [DVec2]) -> ViewedStroke<'a> {
+    ViewedStroke {
         camera,
         viewport: VIEWPORT,
         stroke: points,

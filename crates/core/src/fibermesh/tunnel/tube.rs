@@ -4,41 +4,7 @@
 
 use glam::DVec3;
 
-/// A closed polyline's point at arclength fraction `u` (any real; it wraps).
-fn point_at(ring: &[DVec3], cumulative: &[f64], u: f64) -> DVec3 {
-    let total = cumulative[ring.len()];
-    let s = u.rem_euclid(1.0) * total;
-    let k = cumulative
-        .partition_point(|&c| c <= s)
-        .saturating_sub(1)
-        .min(ring.len() - 1);
-    let span = cumulative[k + 1] - cumulative[k];
-    let t = if span > 0.0 {
-        (s - cumulative[k]) / span
-    } else {
-        0.0
-    };
-    ring[k].lerp(ring[(k + 1) % ring.len()], t)
-}
-
-/// Arclength at each vertex of a closed polyline, with the total last.
-fn closed_cumulative(ring: &[DVec3]) -> Vec<f64> {
-    let mut cumulative = vec![0.0];
-    for k in 0..ring.len() {
-        let step = ring[k].distance(ring[(k + 1) % ring.len()]);
-        cumulative.push(cumulative[k] + step);
-    }
-    cumulative
-}
-
-/// The arclength fraction of each vertex.
-fn fractions(cumulative: &[f64]) -> Vec<f64> {
-    let total = cumulative[cumulative.len() - 1].max(f64::MIN_POSITIVE);
-    cumulative[..cumulative.len() - 1]
-        .iter()
-        .map(|c| c / total)
-        .collect()
-}
+use crate::fibermesh::rings::{Ring, closed_cumulative, fractions, point_at, zip};
 
 /// The shift of `second`'s parametrization that brings it closest to `first`'s (sum of
 /// squared distances at `samples` points).
@@ -69,7 +35,7 @@ pub(super) fn tube(first: &[DVec3], second: &[DVec3], inner: usize) -> (Vec<DVec
     let (cf, cs) = (closed_cumulative(first), closed_cumulative(second));
     let (uf, us) = (fractions(&cf), fractions(&cs));
     // Each ring: its vertices' parameters (in the first ring's parametrization) and positions.
-    let mut rings: Vec<(Vec<f64>, Vec<DVec3>)> = vec![(uf.clone(), first.to_vec())];
+    let mut rings: Vec<Ring> = vec![(uf.clone(), first.to_vec())];
     let mut positions = Vec::new();
     for i in 1..=inner {
         let t = i as f64 / (inner + 1) as f64;
@@ -96,53 +62,6 @@ pub(super) fn tube(first: &[DVec3], second: &[DVec3], inner: usize) -> (Vec<DVec
         base = next_base;
     }
     (positions, triangles)
-}
-
-/// Triangles between two rings (parameters and positions), their vertices numbered from
-/// `a_base` and `b_base`: each step advances along the ring whose next vertex makes the
-/// shorter diagonal, starting from the vertices with the smallest parameters.
-fn zip(
-    (a_params, a): &(Vec<f64>, Vec<DVec3>),
-    (b_params, b): &(Vec<f64>, Vec<DVec3>),
-    a_base: u32,
-    b_base: u32,
-    triangles: &mut Vec<[u32; 3]>,
-) {
-    let start = |params: &[f64]| {
-        (0..params.len())
-            .min_by(|&i, &j| params[i].total_cmp(&params[j]))
-            .unwrap_or(0)
-    };
-    let (na, nb) = (a.len(), b.len());
-    let (a0, b0) = (start(a_params), start(b_params));
-    let (mut i, mut j) = (0, 0);
-    let at_a = |i: usize| (a0 + i) % na;
-    let at_b = |j: usize| (b0 + j) % nb;
-    while i < na || j < nb {
-        let advance_a = if i == na {
-            false
-        } else if j == nb {
-            true
-        } else {
-            a[at_a(i + 1)].distance_squared(b[at_b(j)])
-                <= a[at_a(i)].distance_squared(b[at_b(j + 1)])
-        };
-        if advance_a {
-            triangles.push([
-                a_base + at_a(i + 1) as u32,
-                a_base + at_a(i) as u32,
-                b_base + at_b(j) as u32,
-            ]);
-            i += 1;
-        } else {
-            triangles.push([
-                a_base + at_a(i) as u32,
-                b_base + at_b(j) as u32,
-                b_base + at_b(j + 1) as u32,
-            ]);
-            j += 1;
-        }
-    }
 }
 
 #[cfg(test)]

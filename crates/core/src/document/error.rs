@@ -7,6 +7,7 @@ use crate::fibermesh::add_curve::AddCurveError;
 use crate::fibermesh::curve_pull::PullError;
 use crate::fibermesh::cut::CutError;
 use crate::fibermesh::extrude::ExtrudeError;
+use crate::fibermesh::merge::MergeError;
 use crate::fibermesh::tunnel::TunnelError;
 use crate::io::GltfError;
 use crate::mesh::remesh::RemeshError;
@@ -74,6 +75,9 @@ pub enum CommandError {
     /// A base loop and a silhouette did not grow a limb.
     #[error("{0}")]
     Extrude(#[from] ExtrudeError),
+    /// Two models were not merged.
+    #[error("{0}")]
+    Merge(#[from] MergeError),
     /// A stroke did not cut a model.
     #[error("{0}")]
     Cut(#[from] CutError),

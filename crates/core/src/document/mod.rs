@@ -43,7 +43,7 @@ pub use intent::{
     extrude_from, needs_tap, op_for_stroke, starts_on_model, tunnel_from,
 };
 pub use op::{
-    AddCurveInput, BrushInput, CurveTypeInput, FileInput, ImportInput, ModelInput, Op,
+    AddCurveInput, BrushInput, CurveTypeInput, FileInput, ImportInput, MergeInput, ModelInput, Op,
     OptimizeInput, OversketchFit, OversketchInput, SketchFeatureInput, StrokeInput, TransformInput,
     StrokePairInput,
 };

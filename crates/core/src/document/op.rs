@@ -44,6 +44,9 @@ pub enum Op {
     /// Grow a limb out of a model: a closed base loop drawn on it, then the limb's
     /// silhouette from near one side of the loop out and back to near the other.
     Extrude(StrokePairInput),
+    /// Join two overlapping models into one along their intersection (the merged model
+    /// takes the lower index).
+    Merge(MergeInput),
     /// Move, rotate, scale or mirror a model by an affine matrix.
     Transform(TransformInput),
     /// Remove a model.
@@ -80,6 +83,7 @@ impl Op {
         "erase",
         "tunnel",
         "extrude",
+        "merge",
         "transform",
         "delete",
         "duplicate",
@@ -103,6 +107,7 @@ impl Op {
             Op::Cut(_) => "cut",
             Op::Tunnel(_) => "tunnel",
             Op::Extrude(_) => "extrude",
+            Op::Merge(_) => "merge",
             Op::Transform(_) => "transform",
             Op::Delete(_) => "delete",
             Op::Duplicate(_) => "duplicate",
@@ -130,6 +135,7 @@ impl Op {
             | Op::Optimize(_)
             | Op::Tunnel(_)
             | Op::Extrude(_)
+            | Op::Merge(_)
             | Op::Transform(_)
             | Op::Delete(_)
             | Op::Duplicate(_)
@@ -173,6 +179,14 @@ pub struct TransformInput {
     pub model: usize,
     /// The 4×4 matrix, column by column.
     pub matrix: [f64; 16],
+}
+
+/// A `merge` op: `{"op":"merge","models":[i,j]}`, indices in the document's model order.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MergeInput {
+    /// The two models; the merged one takes the lower index, the other goes.
+    pub models: [usize; 2],
 }
 
 /// An op on one whole model (`delete`, `duplicate`): `{"op":"delete","model":0}`.
@@ -532,6 +546,7 @@ mod tests {
             Op::Extrude(StrokePairInput {
                 strokes: [stroke(), stroke()],
             }),
+            Op::Merge(MergeInput { models: [0, 1] }),
             Op::Transform(TransformInput {
                 model: 0,
                 matrix: glam::DMat4::IDENTITY.to_cols_array(),

@@ -71,6 +71,13 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
         Op::Cut(input) => replaced(curve_edit::cut_op(base, input)?),
         Op::Tunnel(input) => replaced(curve_edit::tunnel_op(base, input)?),
         Op::Extrude(input) => replaced(curve_edit::extrude_op(base, input)?),
+        Op::Merge(input) => {
+            let (kept, gone, merged) = curve_edit::merge_op(base, input)?;
+            let mut next = base.clone();
+            next.models[kept] = Arc::new(merged);
+            next.models.remove(gone);
+            Outcome::Document(next)
+        }
         Op::Transform(input) => replaced(transform_op(base, input)?),
         Op::Delete(input) => delete_op(base, input)?,
         Op::Duplicate(input) => duplicate_op(base, input)?,

@@ -177,6 +177,7 @@ fn has_no_fields(op: &Op) -> bool {
         | Op::Cut(_)
         | Op::Tunnel(_)
         | Op::Extrude(_)
+        | Op::Merge(_)
         | Op::Transform(_)
         | Op::Delete(_)
         | Op::Duplicate(_)

@@ -241,16 +241,36 @@ fn screen_distances(projector: &Projector, mesh: &Mesh, polyline: &[DVec2]) -> V
     )
 }
 
-/// A mesh split along the whole surface swept by the view rays through a stroke drawn
-/// across it: what [`CurveShape::CrossSection`] embeds, with every loop of the cut and the
-/// side of every face, for cutting the shape in two.
-pub(crate) struct Slice {
+/// A mesh split along the zero set of a per-vertex value, with the side of every face.
+pub(crate) struct Split {
     /// The split mesh: every input vertex keeps its index and position.
     pub mesh: Mesh,
     /// Every edge split, as in [`Embedded::split_edges`].
     pub split_edges: Vec<(VertexId, VertexId, VertexId)>,
     /// The faces' sides and the loops between them.
     pub zero_set: ZeroSet,
+}
+
+/// Splits `mesh` along the zero set of `values` (one per vertex): every edge whose ends have
+/// opposite signs is split at its linear zero. `None` when a split fails or the zero set
+/// holds no loop.
+pub(crate) fn split_at_zero(mesh: &Mesh, values: &[f64]) -> Option<Split> {
+    let mut embedding = Embedding::new(mesh);
+    let zero_set = level_set::split_zero_set(&mut embedding, values)
+        .filter(|zero_set| !zero_set.loops.is_empty())?;
+    Some(Split {
+        mesh: embedding.mesh,
+        split_edges: embedding.splits,
+        zero_set,
+    })
+}
+
+/// A mesh split along the whole surface swept by the view rays through a stroke drawn
+/// across it: what [`CurveShape::CrossSection`] embeds, with every loop of the cut and the
+/// side of every face, for cutting the shape in two.
+pub(crate) struct Slice {
+    /// The split mesh and the sides of its faces.
+    pub split: Split,
     /// The stroke as it was cut with (simplified), in screen px.
     pub polyline: Vec<DVec2>,
 }
@@ -273,16 +293,8 @@ pub(crate) fn slice(
     };
     let (_, polyline) = crossing(&projector, stroke)?;
     let distances = screen_distances(&projector, mesh, &polyline);
-    let mut embedding = Embedding::new(mesh);
-    let zero_set = level_set::split_zero_set(&mut embedding, &distances)
-        .filter(|zero_set| !zero_set.loops.is_empty())
-        .ok_or(AddCurveError::DoesNotCross)?;
-    Ok(Slice {
-        mesh: embedding.mesh,
-        split_edges: embedding.splits,
-        zero_set,
-        polyline,
-    })
+    let split = split_at_zero(mesh, &distances).ok_or(AddCurveError::DoesNotCross)?;
+    Ok(Slice { split, polyline })
 }
 
 #[cfg(test)]

@@ -19,7 +19,7 @@ use glam::DVec2;
 
 use crate::camera::Camera;
 use crate::curve::polyline::{contains, self_crossings};
-use crate::fibermesh::add_curve::{Slice, slice};
+use crate::fibermesh::add_curve::{Slice, Split, slice};
 use crate::geometry::Bvh;
 use crate::mesh::{Mesh, TriSoup, VertexId};
 use cap::{Unrolling, mesh_cap};
@@ -54,9 +54,12 @@ pub fn cut(
         return Err(CutError::NotClosed);
     }
     let Slice {
-        mesh: split,
-        split_edges,
-        zero_set,
+        split:
+            Split {
+                mesh: split,
+                split_edges,
+                zero_set,
+            },
         polyline,
     } = slice(mesh, camera, viewport, stroke).map_err(|_| CutError::DoesNotCross)?;
     let keep_positive = keeps_positive(&split, &zero_set.is_positive, camera, viewport)?;

@@ -22,7 +22,7 @@ pub use error::ExtrudeError;
 use glam::{DVec2, DVec3};
 use rustc_hash::FxHashSet;
 
-use super::opening::{disk, is_inside, kept_forward, middle};
+use super::opening::{disk, kept_forward, middle};
 use crate::fibermesh::ViewedStroke;
 use crate::curve::polyline::{cumulative_lengths, point_at};
 use crate::fibermesh::add_curve::{CurveShape, add_curve};
@@ -73,7 +73,7 @@ pub fn extrude(
     let spacing = split.mean_edge_length();
     let sides = sides(&rim_positions, ends, silhouette, spacing)?;
     let tip = sides[sides.len() - 1].0;
-    if is_inside(&split, tip) {
+    if Bvh::new(&split).contains(&split, tip) {
         return Err(ExtrudeError::Inward);
     }
     let limb = limb::limb(&rim_positions, ends, &sides, spacing);

@@ -55,6 +55,7 @@ pub mod curve_pull;
 pub mod curve_tools;
 pub mod cut;
 pub mod extrude;
+pub mod merge;
 mod error;
 mod fair_surface;
 mod fair_systems;

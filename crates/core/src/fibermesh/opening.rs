@@ -6,7 +6,7 @@ use glam::{DVec2, DVec3};
 use rustc_hash::FxHashSet;
 
 use crate::camera::Camera;
-use crate::geometry::{face_area, segment_crosses_triangle};
+use crate::geometry::face_area;
 use crate::mesh::{FaceId, HalfedgeId, Mesh, VertexId};
 
 /// A stroke as seen through a camera: a loop on the surface, or an extrusion's silhouette.
@@ -74,19 +74,4 @@ pub(super) fn kept_forward(mesh: &Mesh, removed: &FxHashSet<FaceId>, chain: &[Ve
 /// The middle of a ring of points.
 pub(super) fn middle(ring: &[DVec3]) -> DVec3 {
     ring.iter().sum::<DVec3>() / ring.len().max(1) as f64
-}
-
-/// Whether `p` lies inside the closed `mesh`: a ray from it crosses the surface an odd
-/// number of times (the direction is skewed off the axes, so that it meets no edge of a
-/// generated mesh head on).
-pub(super) fn is_inside(mesh: &Mesh, p: DVec3) -> bool {
-    let far = p + DVec3::new(0.5773, 0.5774, 0.5775) * 1e6;
-    let crossings = mesh
-        .faces()
-        .filter(|&f| {
-            let [a, b, c] = mesh.face_positions(f);
-            segment_crosses_triangle(p, far, a, b, c)
-        })
-        .count();
-    crossings % 2 == 1
 }

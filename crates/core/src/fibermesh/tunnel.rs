@@ -4,20 +4,20 @@
 //!
 //! Each loop is embedded as a closed curve (`add_curve`), and the disk it bounds is removed:
 //! of the two sides of a loop, the one with less area (on a shape, the loop's inside). The
-//! two holes are joined by a tube (`tube.rs`) with rings about an edge length apart, its
+//! two holes are joined by a tube (`rings.rs`) with rings about an edge length apart, its
 //! ends faired into the surface (the squared Laplacians there least). The straight way between
 //! the loops' middles must stay inside the shape, and the result must be closed, manifold
 //! and free of crossing triangles: anything else is refused.
 
 mod error;
-mod tube;
 
 pub use error::TunnelError;
 
 use glam::DVec3;
 use rustc_hash::FxHashSet;
 
-use super::opening::{disk, is_inside, kept_forward, middle};
+use super::opening::{disk, kept_forward, middle};
+use super::rings::tube;
 use crate::fibermesh::ViewedStroke;
 use crate::fibermesh::add_curve::{CurveShape, add_curve};
 use crate::geometry::{Bvh, segment_crosses_triangle};
@@ -86,7 +86,7 @@ pub fn tunnel(mesh: &Mesh, first: ViewedStroke, second: ViewedStroke) -> Result<
     let inner = ((length / split.mean_edge_length()).round() as usize)
         .saturating_sub(1)
         .max(1);
-    let (inner_positions, tube_triangles) = tube::tube(&first_ring, &second_ring, inner);
+    let (inner_positions, tube_triangles) = tube(&first_ring, &second_ring, inner);
     let n_split = split.n_vertices();
     let n_first = rim_a.len() as u32;
     let n_inner = inner_positions.len() as u32;
@@ -208,9 +208,10 @@ fn check_facing(
         let [p, q, r] = mesh.face_positions(f);
         segment_crosses_triangle(from, to, p, q, r)
     });
+    let bvh = Bvh::new(mesh);
     let outside = [0.25, 0.5, 0.75]
         .iter()
-        .any(|&t| !is_inside(mesh, from.lerp(to, t)));
+        .any(|&t| !bvh.contains(mesh, from.lerp(to, t)));
     if blocked || outside {
         return Err(TunnelError::NotFacing);
     }

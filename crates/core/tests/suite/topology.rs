@@ -11,7 +11,8 @@ use std::f64::consts::TAU;
 use glam::{DMat4, DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    CommandError, Editor, Model, ModelInput, Op, StrokeInput, TransformInput, StrokePairInput,
+    CommandError, Editor, MergeInput, Model, ModelInput, Op, StrokeInput, StrokePairInput,
+    TransformInput,
 };
 use sketchmesh_core::fibermesh::cut::CutError;
 use sketchmesh_core::geometry::{Bvh, enclosed_volume};
@@ -501,5 +502,95 @@ fn a_silhouette_that_does_not_start_and_end_near_the_loop_is_refused() {
     let strokes = [base, input(camera, &elsewhere)];
     let error = editor.apply(Op::Extrude(StrokePairInput { strokes })).unwrap_err();
     assert!(error.to_string().contains("near one side of the loop"), "{error}");
+    assert_eq!(editor.document(), &before);
+}
+
+// ---------------------------------------------------------------------------------------
+// Merging
+// ---------------------------------------------------------------------------------------
+
+/// A document with the created circle and a smaller one created beside it, then moved
+/// `overlap` px (at the target plane) into it.
+fn two_shapes_overlapping(overlap: f64) -> Editor {
+    let mut editor = created_circle();
+    let beside: Vec<DVec2> = (0..=80)
+        .map(|i| CENTRE + DVec2::new(300.0, 0.0) + 100.0 * DVec2::from_angle(TAU * f64::from(i) / 80.0))
+        .collect();
+    editor
+        .apply(Op::Create(input(Camera::default(), &beside)))
+        .unwrap();
+    let camera = Camera::default();
+    let at = |x: f64| camera.point_on_target_plane(CENTRE + DVec2::new(x, 0.0), VIEWPORT).unwrap();
+    let shift = at(150.0 + 100.0 - overlap) - at(300.0);
+    editor
+        .apply(Op::Transform(TransformInput {
+            model: 1,
+            matrix: DMat4::from_translation(shift).to_cols_array(),
+        }))
+        .unwrap();
+    editor
+}
+
+/// The volume of the union of `meshes`: the cells of an `n³` grid over their bounding box
+/// whose centres lie inside any of them.
+fn union_volume(meshes: &[&sketchmesh_core::mesh::Mesh], n: usize) -> f64 {
+    let boxes: Vec<(DVec3, DVec3)> = meshes.iter().map(|m| m.bounding_box().unwrap()).collect();
+    let lo = boxes.iter().fold(DVec3::MAX, |a, b| a.min(b.0));
+    let hi = boxes.iter().fold(DVec3::MIN, |a, b| a.max(b.1));
+    let cell = (hi - lo) / n as f64;
+    let bvhs: Vec<Bvh> = meshes.iter().map(|m| Bvh::new(m)).collect();
+    let mut inside = 0usize;
+    for i in 0..n {
+        for j in 0..n {
+            for k in 0..n {
+                let p = lo + cell * (DVec3::new(i as f64, j as f64, k as f64) + 0.5);
+                inside += usize::from(meshes.iter().zip(&bvhs).any(|(m, b)| b.contains(m, p)));
+            }
+        }
+    }
+    inside as f64 * cell.x * cell.y * cell.z
+}
+
+#[test]
+fn two_overlapping_shapes_merge_into_one_that_keeps_the_union_s_volume() {
+    let mut editor = two_shapes_overlapping(60.0);
+    let before = editor.document().clone();
+    let (a, b) = (&before.models[0], &before.models[1]);
+    let union = union_volume(&[&a.mesh, &b.mesh], 64);
+    // Before the optimization: the parts joined as they are.
+    let raw = sketchmesh_core::fibermesh::merge::merge(&a.mesh, &b.mesh).unwrap();
+    let raw_volume = enclosed_volume(&raw.mesh);
+    assert!((raw_volume / union - 1.0).abs() < 0.02, "{raw_volume} against {union}");
+    editor.apply(Op::Merge(MergeInput { models: [1, 0] })).unwrap();
+    let doc = editor.document();
+    assert_eq!(doc.models.len(), 1);
+    let model = &doc.models[0];
+    assert_closed_of_genus(model, 0);
+    // Both outlines (each cut open where the other part was) and the seam.
+    let seam = model.curves.last().unwrap();
+    assert!(seam.is_closed && !seam.is_sharp());
+    assert!(model.curves.len() >= 3);
+    let volume = enclosed_volume(&model.mesh);
+    assert!((volume / union - 1.0).abs() < 0.05, "{volume} against {union}");
+    let merged = doc.clone();
+    editor.apply(Op::Undo).unwrap();
+    assert_eq!(editor.document(), &before);
+    editor.apply(Op::Redo).unwrap();
+    let replayed = Editor::replay_json(&editor.session_json()).unwrap();
+    assert_eq!(replayed.document(), &merged);
+}
+
+#[test]
+fn models_that_do_not_touch_are_not_merged() {
+    let mut editor = two_shapes_overlapping(-40.0);
+    let before = editor.document().clone();
+    let error = editor.apply(Op::Merge(MergeInput { models: [0, 1] })).unwrap_err();
+    assert!(error.to_string().contains("do not touch"), "{error}");
+    let same = editor.apply(Op::Merge(MergeInput { models: [1, 1] })).unwrap_err();
+    assert!(same.to_string().contains("two different"), "{same}");
+    assert!(matches!(
+        editor.apply(Op::Merge(MergeInput { models: [0, 7] })),
+        Err(CommandError::NoSuchModel(7))
+    ));
     assert_eq!(editor.document(), &before);
 }

@@ -3,7 +3,7 @@
 //! and the limb with a band around its base remeshed and re-optimized, so that the sweep
 //! becomes the fair surface through its curves and joins the shape smoothly.
 
-use super::settle::{Change, remesh_and_fair_within};
+use super::settle::{Aim, Change, remesh_and_fair_within};
 use super::shared::{
     bounding_diagonal, carried_over, has_curves, model_crossed, replaced, screen_stroke, viewed,
 };
@@ -47,7 +47,7 @@ pub fn extrude_op(doc: &Document, input: &StrokePairInput) -> Result<(usize, Mod
     for (inside, &limb) in region.iter_mut().zip(&grown.is_limb) {
         *inside |= limb;
     }
-    let (mesh, curves) = remesh_and_fair_within(&mesh, &curves, &region)?;
+    let (mesh, curves) = remesh_and_fair_within(&mesh, &curves, &region, Aim::Measured)?;
     Ok((index, replaced(model, mesh, curves)))
 }
 

@@ -119,16 +119,26 @@ pub(super) fn remesh_and_settle_within(
     Ok((mesh, curves))
 }
 
+/// The Laplacian magnitudes [`remesh_and_fair_within`] aims for in its region.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Aim {
+    /// Those of the surface as it is, except at the remesh's new vertices, which lie on
+    /// chords and take the typical magnitude of the rest: for a first guess of the right
+    /// girth (an extrusion's sweep of round rings is as curved as a limb that thick).
+    Measured,
+    /// The typical magnitude of the surface around the region everywhere in it: for a seam
+    /// whose crease should give way to a blend (a merge's).
+    Typical,
+}
+
 /// Remeshes `region` (a vertex mask) and re-optimizes all of it, not only the vertices the
-/// remesh made: for a new part whose shape is a first guess (an extrusion's swept limb)
-/// and must become the fair surface through its curves. The Laplacian magnitudes it aims
-/// for are measured on the guess (a sweep of round rings is as curved as a limb that thick
-/// should be), except at the remesh's new vertices, which lie on chords and take the
-/// typical magnitude of the rest.
+/// remesh made: for a new part whose shape is a first guess, which must become the fair
+/// surface through its curves.
 pub(super) fn remesh_and_fair_within(
     mesh: &Mesh,
     curves: &[ControlCurve],
     region: &[bool],
+    aim: Aim,
 ) -> Result<(Mesh, Vec<ControlCurve>), CommandError> {
     let Remeshed {
         mut mesh,
@@ -136,7 +146,11 @@ pub(super) fn remesh_and_fair_within(
         is_new,
         is_remeshed,
     } = remesh(mesh, curves, region)?;
-    let mut surface = FairSurface::new_regional(&mesh, &curves, &is_remeshed, &is_new)
+    let relax = match aim {
+        Aim::Measured => &is_new,
+        Aim::Typical => &is_remeshed,
+    };
+    let mut surface = FairSurface::new_regional(&mesh, &curves, &is_remeshed, relax)
         .map_err(CommandError::Surface)?;
     surface
         .run(mesh.positions_mut(), MAX_ITERATIONS, TOLERANCE)

@@ -10,6 +10,7 @@
 //! deformations).
 
 mod build;
+mod inside;
 mod nearest;
 mod node;
 mod overlap;

@@ -1,0 +1,84 @@
+#![allow(clippy::unwrap_used)]
+
+use glam::DVec3;
+
+use super::*;
+use crate::geometry::enclosed_volume;
+use crate::mesh::primitives::{icosphere, torus};
+
+fn moved(mut mesh: Mesh, by: DVec3) -> Mesh {
+    for p in mesh.positions_mut() {
+        *p += by;
+    }
+    mesh
+}
+
+/// The volume of the union of `meshes` by counting the centres of a grid of `n³` cells over
+/// their bounding box that lie inside any of them.
+fn union_volume(meshes: &[&Mesh], n: usize) -> f64 {
+    let boxes: Vec<(DVec3, DVec3)> = meshes.iter().map(|m| m.bounding_box().unwrap()).collect();
+    let lo = boxes.iter().fold(DVec3::MAX, |a, b| a.min(b.0));
+    let hi = boxes.iter().fold(DVec3::MIN, |a, b| a.max(b.1));
+    let cell = (hi - lo) / n as f64;
+    let bvhs: Vec<Bvh> = meshes.iter().map(|m| Bvh::new(m)).collect();
+    let mut inside = 0usize;
+    for i in 0..n {
+        for j in 0..n {
+            for k in 0..n {
+                let p = lo + cell * (DVec3::new(i as f64, j as f64, k as f64) + 0.5);
+                let hit = meshes.iter().zip(&bvhs).any(|(m, b)| b.contains(m, p));
+                inside += usize::from(hit);
+            }
+        }
+    }
+    inside as f64 * cell.x * cell.y * cell.z
+}
+
+#[test]
+fn two_overlapping_spheres_merge_into_one_closed_surface_of_their_union() {
+    let a = icosphere(1.0, 4);
+    let b = moved(icosphere(0.8, 4), DVec3::new(1.3, 0.2, 0.1));
+    let merged = merge(&a, &b).unwrap();
+    let mesh = &merged.mesh;
+    mesh.validate().unwrap();
+    assert!(mesh.is_closed());
+    assert_eq!(mesh.genus(), Some(0));
+    assert!(Bvh::new(mesh).crossing_faces(mesh, |_| true).is_empty());
+    assert_eq!(merged.seams.len(), 1);
+    let seam = &merged.seams[0];
+    for k in 0..seam.len() {
+        assert!(mesh.find_edge(seam[k], seam[(k + 1) % seam.len()]).is_some());
+    }
+    // The seam lies on the first sphere, the gap outside the second.
+    let gap = SEAM_GAP * a.mean_edge_length().min(b.mean_edge_length());
+    for &v in seam {
+        let p = mesh.position(v);
+        assert!((p.length() - 1.0).abs() < 0.005, "{p} off the first sphere");
+        let q = p - DVec3::new(1.3, 0.2, 0.1);
+        assert!((q.length() - 0.8 - gap).abs() < 0.005, "{p} off the second sphere");
+    }
+    // The merged volume is the union's, within 2%.
+    let union = union_volume(&[&a, &b], 48);
+    let volume = enclosed_volume(mesh);
+    assert!((volume / union - 1.0).abs() < 0.02, "{volume} against {union}");
+}
+
+#[test]
+fn a_sphere_through_a_torus_s_tube_makes_a_genus_one_shape_with_two_seams() {
+    let ring = torus(1.0, 0.35, 64, 24);
+    let ball = moved(icosphere(0.5, 4), DVec3::new(1.0, 0.0, 0.0));
+    let merged = merge(&ring, &ball).unwrap();
+    assert_eq!(merged.seams.len(), 2);
+    assert_eq!(merged.mesh.genus(), Some(1));
+    assert!(merged.mesh.is_closed());
+}
+
+#[test]
+fn shapes_apart_or_one_inside_the_other_are_refused() {
+    let a = icosphere(1.0, 3);
+    let far = moved(icosphere(1.0, 3), DVec3::new(3.0, 0.0, 0.0));
+    assert_eq!(merge(&a, &far).unwrap_err(), MergeError::NotTouching);
+    let small = icosphere(0.3, 3);
+    assert_eq!(merge(&a, &small).unwrap_err(), MergeError::NotTouching);
+    assert_eq!(merge(&small, &a).unwrap_err(), MergeError::Inside);
+}

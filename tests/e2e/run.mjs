@@ -58,6 +58,7 @@ const CENTRE = { x: 660, y: 380 };
 
 /** The toolbar's File menu button, and its Documents item once it is open. */
 const FILE_MENU = { x: 28, y: 20 };
+const MERGE_BUTTON = { x: 186, y: 63 };
 const DOCUMENTS_ITEM = { x: 56, y: 102 };
 
 /** The ellipse the shape tests draw: centre, radii. */
@@ -1099,6 +1100,90 @@ test('tunnel: a pen loop on a shape, an orbit to its back and a second loop ther
     assert.deepEqual(await glbOf(fresh.page), original, 'undo restores the shape bit for bit');
     assert.deepEqual(fresh.errors, [], 'console errors while tunnelling');
 }));
+
+test('extrude: a pen loop on a shape, then a stroke from it out past the outline and back, grows a limb there; undo restores', () => withShape(async ({ fresh }) => {
+  const c = ELLIPSE.c;
+  const lastOp = () => lastOpOf(fresh.page);
+  await until(lastOp, (o) => o.op === 'create', 15_000);
+  const original = await glbOf(fresh.page);
+  const before = await screenshot(fresh.page, out('extrude-before.png'));
+  const base = { x: c.x + 110, y: c.y };
+  const loop = Array.from({ length: 41 }, (_, i) => {
+    const a = (2 * Math.PI * i) / 40;
+    return { x: base.x + 28 * Math.cos(a), y: base.y + 28 * Math.sin(a), force: 0.5 };
+  });
+  await penStroke(fresh.cdp, loop);
+  await frames(fresh.page, 2);
+  // From the loop's top out 220 px to the right and back to its bottom: the limb's outline.
+  const silhouette = Array.from({ length: 41 }, (_, i) => {
+    const a = Math.PI * (i / 40 - 0.5);
+    return { x: base.x + 220 * Math.cos(a), y: base.y + 28 * Math.sin(a), force: 0.5 };
+  });
+  await penStroke(fresh.cdp, silhouette);
+  const op = await until(lastOp, (o) => o.op === 'extrude', 15_000);
+  assert.equal(op.op, 'extrude', 'the stroke out and back instead of a tap extrudes');
+  const stats = await api(fresh.page, 'stats');
+  assert.equal(stats.triangles, 2 * stats.vertices - 4, `a closed mesh of genus 0: ${JSON.stringify(stats)}`);
+  assert.equal(stats.curves, 3, 'the outline, the base loop and the silhouette');
+  await frames(fresh.page, 3);
+  const grown = await screenshot(fresh.page, out('extrude.png'));
+  const px = (img, x, y) => Array.from(img.data.slice((y * img.width + x) * 4, (y * img.width + x) * 4 + 3));
+  const isClay = ([r, g]) => r > 120 && g > 110;
+  // Along the limb's middle, past the shape's outline: background before, the limb after.
+  const along = [100, 140, 180].map((dx) => ({ x: base.x + dx, y: base.y }));
+  assert.ok(along.every((p) => !isClay(px(before, p.x, p.y))), 'before, nothing past the outline');
+  assert.ok(along.every((p) => isClay(px(grown, p.x, p.y))), 'after, the limb is drawn there');
+  // Well above and below the limb, still background: it is as thin as its silhouette.
+  assert.ok(!isClay(px(grown, base.x + 200, base.y - 70)) && !isClay(px(grown, base.x + 200, base.y + 70)), 'the limb keeps to its silhouette');
+  await fresh.page.keyboard.press('Control+z');
+  await frames(fresh.page, 3);
+  assert.deepEqual(await glbOf(fresh.page), original, 'undo restores the shape bit for bit');
+  assert.deepEqual(fresh.errors, [], 'console errors while extruding');
+}));
+
+test('merge by touch: a second shape moved into the first with the handles, then Merge, makes one closed shape; undo restores both', async () => {
+  const fresh = await openApp(browser, url, gpu);
+  try {
+    const c = ELLIPSE.c;
+    // Drawn with a finger, so that fingers keep going to the tool (no pen is seen).
+    await touchGesture(fresh.cdp, [onEllipse(0, 2 * Math.PI, 24)], 16);
+    await until(() => api(fresh.page, 'stats'), (st) => st.models === 1, 15_000);
+    const other = { x: c.x + 380, y: c.y };
+    const circle = Array.from({ length: 25 }, (_, i) => {
+      const a = (2 * Math.PI * i) / 24;
+      return { x: other.x + 80 * Math.cos(a), y: other.y + 80 * Math.sin(a) };
+    });
+    await touchGesture(fresh.cdp, [circle], 16);
+    await until(() => api(fresh.page, 'stats'), (st) => st.models === 2, 15_000);
+    const two = await glbOf(fresh.page);
+    await fresh.page.keyboard.press('v');
+    await frames(fresh.page, 2);
+    await touchTap(fresh.cdp, [other]);
+    await frames(fresh.page, 3);
+    await screenshot(fresh.page, out('merge-selected.png'));
+    // Drag the small shape 200 px left by its body, into the big one.
+    await touchGesture(fresh.cdp, [line(other, { x: other.x - 200, y: other.y }, 20)], 30);
+    await until(() => lastOpOf(fresh.page), (o) => o.op === 'transform', 10_000);
+    await frames(fresh.page, 3);
+    await screenshot(fresh.page, out('merge-moved.png'));
+    await touchTap(fresh.cdp, [MERGE_BUTTON]);
+    const op = await until(() => lastOpOf(fresh.page), (o) => o.op === 'merge', 15_000);
+    assert.equal(op.op, 'merge', 'Merge joins the selected shape with the one it overlaps');
+    const stats = await api(fresh.page, 'stats');
+    assert.equal(stats.models, 1, 'one model is left');
+    assert.equal(stats.triangles, 2 * stats.vertices - 4, `a closed mesh of genus 0: ${JSON.stringify(stats)}`);
+    await frames(fresh.page, 3);
+    await screenshot(fresh.page, out('merge.png'));
+    for (let i = 0; i < 2; i++) {
+      await fresh.page.keyboard.press('Control+z');
+      await frames(fresh.page, 2);
+    }
+    assert.deepEqual(await glbOf(fresh.page), two, 'two undos give both shapes back where they were, bit for bit');
+    assert.deepEqual(fresh.errors, [], 'console errors while merging');
+  } finally {
+    await fresh.context.close();
+  }
+});
 
 test('move (V) by touch: a tap selects a shape and shows its handles; dragging it moves it, the square scales it, Delete removes it; undo restores each', async () => {
   const fresh = await openApp(browser, url, gpu);

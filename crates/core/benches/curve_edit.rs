@@ -11,8 +11,13 @@
 //! fifth of its half-width from its right end, from above it to below it; the whole op
 //! (level set, caps, remesh and settle of the band). And the `tunnel` op: loops of 50 px
 //! around the middle seen from the front and from behind (embedding both, the tube, its
-//! fairing, the remesh and settle of the band). Target for both: under 100 ms at 10k
-//! natively.
+//! fairing, the remesh and settle of the band). The `extrude` op: a loop of a fifth of the
+//! ellipse's half-height at three fifths of its half-width right of the middle, and a
+//! silhouette from its top out to 1.6 half-widths and back to its bottom (embedding, the
+//! limb, the remesh and re-optimization of the limb and a band). The `merge` op: the ellipse
+//! and a copy moved to overlap it by half its width (signed distances, splits, seam, the
+//! remesh and re-optimization of the band), each part of the given size. Target for each:
+//! under 100 ms at 10k natively.
 //! Run with
 //! `cargo bench -p sketchmesh-core --bench curve_edit -- --warm-up-time 1 --measurement-time 3`.
 
@@ -21,7 +26,9 @@ use std::hint::black_box;
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
-use sketchmesh_core::document::{Edit, Editor, Op, StrokeInput, StrokePairInput};
+use sketchmesh_core::document::{
+    Edit, Editor, MergeInput, ModelInput, Op, StrokeInput, StrokePairInput, TransformInput,
+};
 
 #[path = "common/fibermesh_shape.rs"]
 mod fibermesh_shape;
@@ -167,5 +174,85 @@ fn bench_tunnel(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench_curve_edit, bench_cut, bench_tunnel);
+fn bench_extrude(c: &mut Criterion) {
+    let mut group = c.benchmark_group("extrude");
+    group.sample_size(10);
+    let base = VIEWPORT / 2.0 + DVec2::new(0.6 * HALF_AXES.x, 0.0);
+    let radius = 0.2 * HALF_AXES.y;
+    let reach = HALF_AXES.x;
+    let stroke = |points: Vec<DVec2>| StrokeInput {
+        viewport: VIEWPORT.to_array(),
+        camera: Camera::default(),
+        stroke: points.iter().map(|p| [p.x, p.y, 0.5]).collect(),
+    };
+    let base_loop: Vec<DVec2> = (0..=48)
+        .map(|i| base + radius * DVec2::from_angle(std::f64::consts::TAU * f64::from(i) / 48.0))
+        .collect();
+    let silhouette: Vec<DVec2> = (0..=60)
+        .map(|i| {
+            let a = std::f64::consts::PI * (f64::from(i) / 60.0 - 0.5);
+            base + DVec2::new(reach * a.cos(), radius * a.sin())
+        })
+        .collect();
+    let extrude = Op::Extrude(StrokePairInput {
+        strokes: [stroke(base_loop), stroke(silhouette)],
+    });
+    for n in [10_000, 40_000] {
+        let editor = ellipse_editor(n).expect("the ellipse inflates and imports");
+        let vertices = editor.document().stats().vertices;
+        group.bench_with_input(BenchmarkId::new("op", vertices), &editor, |b, editor| {
+            b.iter(|| {
+                editor
+                    .clone()
+                    .apply(black_box(extrude.clone()))
+                    .expect("extrude")
+            });
+        });
+    }
+    group.finish();
+}
+
+fn bench_merge(c: &mut Criterion) {
+    let mut group = c.benchmark_group("merge");
+    group.sample_size(10);
+    for n in [10_000, 40_000] {
+        let mut editor = ellipse_editor(n).expect("the ellipse inflates and imports");
+        let vertices = editor.document().stats().vertices;
+        let (lo, hi) = editor.document().models[0]
+            .mesh
+            .bounding_box()
+            .expect("a mesh");
+        let width = hi.x - lo.x;
+        // A duplicate lands 1.2 widths to the right; bring it back to overlap by half a width.
+        editor
+            .apply(Op::Duplicate(ModelInput { model: 0 }))
+            .expect("duplicate");
+        let back = glam::DMat4::from_translation(glam::DVec3::new(-0.7 * width, 0.0, 0.0));
+        editor
+            .apply(Op::Transform(TransformInput {
+                model: 1,
+                matrix: back.to_cols_array(),
+            }))
+            .expect("move");
+        let merge = Op::Merge(MergeInput { models: [0, 1] });
+        group.bench_with_input(BenchmarkId::new("op", vertices), &editor, |b, editor| {
+            b.iter(|| {
+                editor
+                    .clone()
+                    .apply(black_box(merge.clone()))
+                    .expect("merge")
+            });
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(
+    benches,
+    bench_curve_edit,
+    bench_cut,
+    bench_tunnel,
+    bench_extrude,
+    bench_merge
+);
 criterion_main!(benches);

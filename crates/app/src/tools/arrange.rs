@@ -1,13 +1,15 @@
 //! The move tool (issue 16): tap a model to select it; its handles (a ring to turn it, a
 //! square to scale it, the inside of the ring or the model itself to move it) follow the
 //! pen, a finger or the mouse with a live preview, and the release commits one `transform`
-//! op. Delete and Duplicate act on the selection. The handles' geometry, and the matrix a
+//! op. Delete and Duplicate act on the selection, and Merge joins it with the model it
+//! overlaps. The handles' geometry, and the matrix a
 //! drag makes, are core's ([`Gizmo`]).
 
 use glam::{DMat4, DVec2};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    Document, Gizmo, GizmoHandle, ModelInput, Op, StrokeInput, TransformInput, model_under,
+    Document, Gizmo, GizmoHandle, MergeInput, ModelInput, Op, StrokeInput, TransformInput,
+    model_under, overlapping_model,
 };
 
 use super::context::{ToolOutput, ViewCtx};
@@ -150,7 +152,7 @@ impl ArrangeTool {
         }
     }
 
-    /// The panel: Delete and Duplicate for the selection.
+    /// The panel: Delete, Duplicate and Merge for the selection.
     pub fn settings_ui(&mut self, ui: &mut egui::Ui, doc: &Document) -> ToolOutput {
         let selected = self.selected.filter(|&i| i < doc.models.len());
         let size = egui::vec2(44.0, 44.0);
@@ -175,6 +177,19 @@ impl ArrangeTool {
         {
             self.selected = Some(doc.models.len());
             return ToolOutput::Commit(Op::Duplicate(ModelInput { model }));
+        }
+        let partner = selected.and_then(|model| Some((model, overlapping_model(doc, model)?)));
+        let merge = ui.add_enabled(partner.is_some(), egui::Button::new("Merge").min_size(size));
+        if merge
+            .on_hover_text("Join the selected model with the one it overlaps")
+            .on_disabled_hover_text("Move the selected model into another to merge them")
+            .clicked()
+            && let Some((model, other)) = partner
+        {
+            self.selected = Some(model.min(other));
+            return ToolOutput::Commit(Op::Merge(MergeInput {
+                models: [model, other],
+            }));
         }
         ToolOutput::None
     }

@@ -8,8 +8,8 @@
 
 use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::document::{
-    Document, Op, StrokeInput, cut_instead, extrude_from, ink_instead, is_cross_section,
-    needs_tap, op_for_stroke, tunnel_from,
+    Document, Op, StrokeInput, cut_instead, extrude_from, ink_instead, is_cross_section, needs_tap,
+    op_for_stroke, tunnel_from,
 };
 
 use super::context::{ToolOutput, ViewCtx};
@@ -213,7 +213,11 @@ mod tests {
     fn draw_path(tool: &mut SketchTool, doc: &Document, points: &[(f32, f32)]) -> ToolOutput {
         let v = view();
         let (first, last) = (points[0], points[points.len() - 1]);
-        tool.on_event(&ToolEvent::Begin(pen(Phase::Down, first.0, first.1)), &v, doc);
+        tool.on_event(
+            &ToolEvent::Begin(pen(Phase::Down, first.0, first.1)),
+            &v,
+            doc,
+        );
         for &(x, y) in &points[1..] {
             tool.on_event(&ToolEvent::Move(pen(Phase::Move, x, y)), &v, doc);
         }

@@ -121,6 +121,23 @@ pub(super) fn duplicate_op(doc: &Document, input: &ModelInput) -> Result<Outcome
     Ok(Outcome::Document(next))
 }
 
+/// The other model that `index`'s overlaps most (by the volume their bounding boxes share),
+/// if any overlaps: the one the app offers to merge it with.
+pub fn overlapping_model(doc: &Document, index: usize) -> Option<usize> {
+    let boxes: Vec<Option<(DVec3, DVec3)>> =
+        (doc.models.iter()).map(|m| m.mesh.bounding_box()).collect();
+    let (lo, hi) = (*boxes.get(index)?)?;
+    let shared = |(l, h): (DVec3, DVec3)| {
+        let extent = h.min(hi) - l.max(lo);
+        (extent.min_element() > 0.0).then_some(extent.x * extent.y * extent.z)
+    };
+    (boxes.iter().enumerate())
+        .filter(|&(i, _)| i != index)
+        .filter_map(|(i, b)| Some((shared((*b)?)?, i)))
+        .max_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(_, i)| i)
+}
+
 /// Moves what a file brought in beside the document's contents (along +x, a gap of
 /// [`IMPORT_GAP`] between them, standing on the same floor and centred in depth), so that
 /// it does not land inside them. Into an empty document it stays where the file put it.

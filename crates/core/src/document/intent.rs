@@ -13,9 +13,9 @@
 use glam::DVec2;
 
 use super::{AddCurveInput, Document, Model, Op, StrokeInput, StrokePairInput};
+use crate::curve::polyline::centroid;
 use crate::curve::polyline::distance_to_polyline;
 use crate::curve::{StrokePoint, is_closed_loop};
-use crate::curve::polyline::centroid;
 use crate::fibermesh::extrude::NEAR_BASE_PX;
 use crate::geometry::raycast;
 
@@ -94,9 +94,7 @@ pub fn extrude_from(doc: &Document, first: &Op, second: &StrokeInput) -> Option<
     let near = |p: Option<&StrokePoint>| {
         p.is_some_and(|p| distance_to_polyline(p.pos, &outline) <= NEAR_BASE_PX)
     };
-    let leaves = || {
-        (points.iter()).any(|p| !hits_model(doc, second, p.pos, |_| true))
-    };
+    let leaves = || (points.iter()).any(|p| !hits_model(doc, second, p.pos, |_| true));
     (near(points.first()) && near(points.last()) && leaves()).then(|| {
         Op::Extrude(StrokePairInput {
             strokes: [StrokeInput::of_add_curve(base), second.clone()],

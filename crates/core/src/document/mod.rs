@@ -33,19 +33,20 @@ pub use crate::model::{
     AlphaMode, Appearance, ControlCurve, CurveKind, Document, Image, Material, Model, PointCloud,
     SketchCurve, Stats, Texture, positions_hash,
 };
+pub use arrange::overlapping_model;
 pub use curve_edit::{CURVE_PICK_RADIUS_PX, curve_type_toggle};
 pub use edit::{Edit, Progress};
 pub use editor::Editor;
 pub use error::CommandError;
 pub use gizmo::{Gizmo, GizmoHandle, HANDLE_REACH_PX};
 pub use intent::{
-    CLOSE_TOLERANCE_PX, cut_instead, ink_instead, is_cross_section, model_in_lasso, model_under,
-    extrude_from, needs_tap, op_for_stroke, starts_on_model, tunnel_from,
+    CLOSE_TOLERANCE_PX, cut_instead, extrude_from, ink_instead, is_cross_section, model_in_lasso,
+    model_under, needs_tap, op_for_stroke, starts_on_model, tunnel_from,
 };
 pub use op::{
     AddCurveInput, BrushInput, CurveTypeInput, FileInput, ImportInput, MergeInput, ModelInput, Op,
-    OptimizeInput, OversketchFit, OversketchInput, SketchFeatureInput, StrokeInput, TransformInput,
-    StrokePairInput,
+    OptimizeInput, OversketchFit, OversketchInput, SketchFeatureInput, StrokeInput,
+    StrokePairInput, TransformInput,
 };
 pub use oversketch::OutlinePiece;
 pub use session::{SESSION_FORMAT, SESSION_VERSION, Session};

@@ -23,8 +23,8 @@ use glam::{DVec2, DVec3};
 use rustc_hash::FxHashSet;
 
 use super::opening::{disk, kept_forward, middle};
-use crate::fibermesh::ViewedStroke;
 use crate::curve::polyline::{cumulative_lengths, point_at};
+use crate::fibermesh::ViewedStroke;
 use crate::fibermesh::add_curve::{CurveShape, add_curve};
 use crate::geometry::Bvh;
 use crate::mesh::{FaceId, Mesh, TriSoup, VertexId};
@@ -63,8 +63,14 @@ pub fn extrude(
     if !mesh.is_closed() {
         return Err(ExtrudeError::NotClosed);
     }
-    let embedded = add_curve(mesh, base.camera, base.viewport, base.stroke, CurveShape::Closed)
-        .map_err(ExtrudeError::Base)?;
+    let embedded = add_curve(
+        mesh,
+        base.camera,
+        base.viewport,
+        base.stroke,
+        CurveShape::Closed,
+    )
+    .map_err(ExtrudeError::Base)?;
     let split = embedded.mesh;
     let removed: FxHashSet<FaceId> = disk(&split, &embedded.chain).into_iter().collect();
     let rim = kept_forward(&split, &removed, &embedded.chain);

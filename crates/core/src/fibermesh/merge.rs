@@ -147,7 +147,9 @@ fn split_outside(mesh: &Mesh, other: &Mesh, gap: f64) -> Result<Split, MergeErro
             if outside_box > reach {
                 return outside_box;
             }
-            let distance = bvh.nearest(other, p).map_or(f64::MAX, |(q, _)| q.distance(p));
+            let distance = bvh
+                .nearest(other, p)
+                .map_or(f64::MAX, |(q, _)| q.distance(p));
             if bvh.contains(other, p) {
                 -distance
             } else {
@@ -189,9 +191,7 @@ fn paired(first: &Split, second: &Split) -> Result<Vec<usize>, MergeError> {
     };
     let (a, b) = (middles(first), middles(second));
     let pairs: Vec<usize> = (a.iter())
-        .filter_map(|p| {
-            (0..b.len()).min_by(|&i, &j| p.distance(b[i]).total_cmp(&p.distance(b[j])))
-        })
+        .filter_map(|p| (0..b.len()).min_by(|&i, &j| p.distance(b[i]).total_cmp(&p.distance(b[j]))))
         .collect();
     let mut taken = vec![false; b.len()];
     for &j in &pairs {

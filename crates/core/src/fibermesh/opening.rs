@@ -60,7 +60,11 @@ pub(super) fn disk(mesh: &Mesh, chain: &[VertexId]) -> Vec<FaceId> {
 }
 
 /// The chain ordered so that the kept faces hold its edges `k → k + 1`.
-pub(super) fn kept_forward(mesh: &Mesh, removed: &FxHashSet<FaceId>, chain: &[VertexId]) -> Vec<VertexId> {
+pub(super) fn kept_forward(
+    mesh: &Mesh,
+    removed: &FxHashSet<FaceId>,
+    chain: &[VertexId],
+) -> Vec<VertexId> {
     let forward = mesh
         .find_halfedge(chain[0], chain[1])
         .is_some_and(|h| !removed.contains(&mesh.face(h)));

@@ -123,7 +123,11 @@ pub(super) fn zip(
             })
             .collect::<Vec<_>>()
     };
-    zip_chains(&round(a_params, a, a_base), &round(b_params, b, b_base), triangles);
+    zip_chains(
+        &round(a_params, a, a_base),
+        &round(b_params, b, b_base),
+        triangles,
+    );
 }
 
 /// Triangles between two chains of (vertex, position) whose first vertices are to be joined

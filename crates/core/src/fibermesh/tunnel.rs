@@ -44,7 +44,11 @@ pub struct Tunnel {
 /// module docs.
 ///
 /// Errors: [`TunnelError`], as sentences for the user.
-pub fn tunnel(mesh: &Mesh, first: ViewedStroke, second: ViewedStroke) -> Result<Tunnel, TunnelError> {
+pub fn tunnel(
+    mesh: &Mesh,
+    first: ViewedStroke,
+    second: ViewedStroke,
+) -> Result<Tunnel, TunnelError> {
     if !mesh.is_closed() {
         return Err(TunnelError::NotClosed);
     }

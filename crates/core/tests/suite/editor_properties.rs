@@ -53,7 +53,7 @@ use proptest::test_runner::{Config, FileFailurePersistence, RngSeed, TestRunner}
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
     CommandError, ControlCurve, Document, Editor, Model, ModelInput, Op, OversketchFit,
-    SketchFeatureInput, StrokeInput, TransformInput, StrokePairInput,
+    SketchFeatureInput, StrokeInput, StrokePairInput, TransformInput,
 };
 use sketchmesh_core::feature::FeatureKind;
 use sketchmesh_core::geometry::{Bvh, vertex_normals};

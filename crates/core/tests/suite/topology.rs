@@ -383,7 +383,9 @@ fn loops_on_the_front_and_the_back_of_a_shape_drill_a_smooth_tunnel() {
         loop_around_centre(Camera::default(), 40.0),
         loop_around_centre(behind(), 40.0),
     ];
-    editor.apply(Op::Tunnel(StrokePairInput { strokes })).unwrap();
+    editor
+        .apply(Op::Tunnel(StrokePairInput { strokes }))
+        .unwrap();
     let model = &editor.document().models[0];
     assert_closed_of_genus(model, 1);
     let loops: Vec<_> = model.curves.iter().skip(1).collect();
@@ -470,20 +472,31 @@ fn a_loop_and_a_silhouette_grow_a_limb_whose_outline_follows_the_stroke() {
     let camera = Camera::default();
     let (base, silhouette) = extrusion(camera, CENTRE + DVec2::new(90.0, 0.0), 30.0, 160.0);
     let strokes = [base, input(camera, &silhouette)];
-    editor.apply(Op::Extrude(StrokePairInput { strokes })).unwrap();
+    editor
+        .apply(Op::Extrude(StrokePairInput { strokes }))
+        .unwrap();
     let model = &editor.document().models[0];
     assert_closed_of_genus(model, 0);
     let new: Vec<_> = model.curves.iter().skip(1).collect();
     assert_eq!(new.len(), 2);
-    assert!(new[0].is_closed && new[0].is_sharp(), "the base loop is sharp");
-    assert!(!new[1].is_closed && !new[1].is_sharp(), "the silhouette is smooth");
+    assert!(
+        new[0].is_closed && new[0].is_sharp(),
+        "the base loop is sharp"
+    );
+    assert!(
+        !new[1].is_closed && !new[1].is_sharp(),
+        "the silhouette is smooth"
+    );
     // Beyond the body, the limb's outline follows the stroke within 3% of the model's size.
     let tolerance = 0.03 * screen_size(model, &camera);
     let beyond = silhouette.iter().filter(|p| p.x > CENTRE.x + 150.0);
     let worst = beyond
         .map(|&p| to_outline(model, &camera, p))
         .fold(0.0, f64::max);
-    assert!(worst < tolerance, "the outline is {worst} px off the stroke (allowed {tolerance})");
+    assert!(
+        worst < tolerance,
+        "the outline is {worst} px off the stroke (allowed {tolerance})"
+    );
     let grown = editor.document().clone();
     editor.apply(Op::Undo).unwrap();
     assert_eq!(editor.document(), &before);
@@ -500,8 +513,13 @@ fn a_silhouette_that_does_not_start_and_end_near_the_loop_is_refused() {
     let (base, _) = extrusion(camera, CENTRE + DVec2::new(90.0, 0.0), 30.0, 160.0);
     let (_, elsewhere) = extrusion(camera, CENTRE + DVec2::new(-90.0, 0.0), 30.0, 160.0);
     let strokes = [base, input(camera, &elsewhere)];
-    let error = editor.apply(Op::Extrude(StrokePairInput { strokes })).unwrap_err();
-    assert!(error.to_string().contains("near one side of the loop"), "{error}");
+    let error = editor
+        .apply(Op::Extrude(StrokePairInput { strokes }))
+        .unwrap_err();
+    assert!(
+        error.to_string().contains("near one side of the loop"),
+        "{error}"
+    );
     assert_eq!(editor.document(), &before);
 }
 
@@ -514,13 +532,19 @@ fn a_silhouette_that_does_not_start_and_end_near_the_loop_is_refused() {
 fn two_shapes_overlapping(overlap: f64) -> Editor {
     let mut editor = created_circle();
     let beside: Vec<DVec2> = (0..=80)
-        .map(|i| CENTRE + DVec2::new(300.0, 0.0) + 100.0 * DVec2::from_angle(TAU * f64::from(i) / 80.0))
+        .map(|i| {
+            CENTRE + DVec2::new(300.0, 0.0) + 100.0 * DVec2::from_angle(TAU * f64::from(i) / 80.0)
+        })
         .collect();
     editor
         .apply(Op::Create(input(Camera::default(), &beside)))
         .unwrap();
     let camera = Camera::default();
-    let at = |x: f64| camera.point_on_target_plane(CENTRE + DVec2::new(x, 0.0), VIEWPORT).unwrap();
+    let at = |x: f64| {
+        camera
+            .point_on_target_plane(CENTRE + DVec2::new(x, 0.0), VIEWPORT)
+            .unwrap()
+    };
     let shift = at(150.0 + 100.0 - overlap) - at(300.0);
     editor
         .apply(Op::Transform(TransformInput {
@@ -560,8 +584,13 @@ fn two_overlapping_shapes_merge_into_one_that_keeps_the_union_s_volume() {
     // Before the optimization: the parts joined as they are.
     let raw = sketchmesh_core::fibermesh::merge::merge(&a.mesh, &b.mesh).unwrap();
     let raw_volume = enclosed_volume(&raw.mesh);
-    assert!((raw_volume / union - 1.0).abs() < 0.02, "{raw_volume} against {union}");
-    editor.apply(Op::Merge(MergeInput { models: [1, 0] })).unwrap();
+    assert!(
+        (raw_volume / union - 1.0).abs() < 0.02,
+        "{raw_volume} against {union}"
+    );
+    editor
+        .apply(Op::Merge(MergeInput { models: [1, 0] }))
+        .unwrap();
     let doc = editor.document();
     assert_eq!(doc.models.len(), 1);
     let model = &doc.models[0];
@@ -571,7 +600,10 @@ fn two_overlapping_shapes_merge_into_one_that_keeps_the_union_s_volume() {
     assert!(seam.is_closed && !seam.is_sharp());
     assert!(model.curves.len() >= 3);
     let volume = enclosed_volume(&model.mesh);
-    assert!((volume / union - 1.0).abs() < 0.05, "{volume} against {union}");
+    assert!(
+        (volume / union - 1.0).abs() < 0.05,
+        "{volume} against {union}"
+    );
     let merged = doc.clone();
     editor.apply(Op::Undo).unwrap();
     assert_eq!(editor.document(), &before);
@@ -584,9 +616,13 @@ fn two_overlapping_shapes_merge_into_one_that_keeps_the_union_s_volume() {
 fn models_that_do_not_touch_are_not_merged() {
     let mut editor = two_shapes_overlapping(-40.0);
     let before = editor.document().clone();
-    let error = editor.apply(Op::Merge(MergeInput { models: [0, 1] })).unwrap_err();
+    let error = editor
+        .apply(Op::Merge(MergeInput { models: [0, 1] }))
+        .unwrap_err();
     assert!(error.to_string().contains("do not touch"), "{error}");
-    let same = editor.apply(Op::Merge(MergeInput { models: [1, 1] })).unwrap_err();
+    let same = editor
+        .apply(Op::Merge(MergeInput { models: [1, 1] }))
+        .unwrap_err();
     assert!(same.to_string().contains("two different"), "{same}");
     assert!(matches!(
         editor.apply(Op::Merge(MergeInput { models: [0, 7] })),

@@ -50,4 +50,3 @@ pub fn extrude_op(doc: &Document, input: &StrokePairInput) -> Result<(usize, Mod
     let (mesh, curves) = remesh_and_fair_within(&mesh, &curves, &region, Aim::Measured)?;
     Ok((index, replaced(model, mesh, curves)))
 }
-

@@ -21,10 +21,7 @@ const MERGE_REGION: f64 = 0.08;
 ///
 /// Errors: [`CommandError::NoSuchModel`]; [`CommandError::Merge`] for one model named twice
 /// or models that do not merge; remesher and solver failures.
-pub fn merge_op(
-    doc: &Document,
-    input: &MergeInput,
-) -> Result<(usize, usize, Model), CommandError> {
+pub fn merge_op(doc: &Document, input: &MergeInput) -> Result<(usize, usize, Model), CommandError> {
     let [i, j] = input.models;
     target(doc, i)?;
     target(doc, j)?;
@@ -37,7 +34,12 @@ pub fn merge_op(
     let mesh = merged.mesh;
     let mut curves = Vec::new();
     for (part, model) in merged.parts.iter().zip([first, second]) {
-        curves.extend(carried_over(&model.curves, &part.split_edges, &part.remap, &mesh));
+        curves.extend(carried_over(
+            &model.curves,
+            &part.split_edges,
+            &part.remap,
+            &mesh,
+        ));
     }
     let seam_vertices: Vec<VertexId> = (mesh.vertices())
         .filter(|v| merged.is_seam[v.index()])

@@ -180,11 +180,7 @@ struct Remeshed {
 }
 
 /// `region` (a vertex mask) remeshed with every curve kept as an edge chain.
-fn remesh(
-    mesh: &Mesh,
-    curves: &[ControlCurve],
-    region: &[bool],
-) -> Result<Remeshed, CommandError> {
+fn remesh(mesh: &Mesh, curves: &[ControlCurve], region: &[bool]) -> Result<Remeshed, CommandError> {
     let chains: Vec<Chain> = curves
         .iter()
         .map(|c| Chain {

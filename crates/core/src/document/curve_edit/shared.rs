@@ -4,8 +4,8 @@
 use glam::DVec2;
 
 use crate::document::{CommandError, Document, StrokeInput};
-use crate::fibermesh::{ControlCurve, ViewedStroke};
 use crate::fibermesh::curve_tools::VisibleCurves;
+use crate::fibermesh::{ControlCurve, ViewedStroke};
 use crate::geometry::Bvh;
 use crate::mesh::{Mesh, VertexId};
 use crate::model::Model;

@@ -14,15 +14,15 @@ pub enum ExtrudeError {
     #[error("Only a closed shape can be extruded.")]
     NotClosed,
     /// The silhouette starts or ends far from the base loop, or at one place on it.
-    #[error(
-        "Start the silhouette near one side of the loop and end it near the other side."
-    )]
+    #[error("Start the silhouette near one side of the loop and end it near the other side.")]
     NotNearBase,
     /// The limb's tip would lie inside the shape.
     #[error("The limb would grow into the shape; draw its silhouette outside it.")]
     Inward,
     /// The limb would pass through the rest of the surface, or the result would not be a
     /// closed manifold mesh.
-    #[error("The limb would pass through the shape; draw the loop where it should leave the surface, nearer the outline.")]
+    #[error(
+        "The limb would pass through the shape; draw the loop where it should leave the surface, nearer the outline."
+    )]
     Broken(Option<MeshError>),
 }

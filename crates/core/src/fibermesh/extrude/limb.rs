@@ -41,7 +41,12 @@ impl SweptRing {
 /// `k → k + 1`) whose vertices `ends` lie under the silhouette's start and end. `sides`
 /// holds the silhouette's (left, right) pairs from the rim's ends (first) to the tip (last,
 /// both sides meeting); rings get vertices about `spacing` apart.
-pub(super) fn limb(rim: &[DVec3], ends: [usize; 2], sides: &[(DVec3, DVec3)], spacing: f64) -> Limb {
+pub(super) fn limb(
+    rim: &[DVec3],
+    ends: [usize; 2],
+    sides: &[(DVec3, DVec3)],
+    spacing: f64,
+) -> Limb {
     let n_rim = rim.len();
     let cumulative = closed_cumulative(rim);
     let params = fractions(&cumulative);
@@ -137,14 +142,20 @@ mod tests {
             .map(|k| {
                 let t = k as f64 / 6.0;
                 let half = 1.0 - t;
-                (DVec3::new(half, 2.0 * t, 0.0), DVec3::new(-half, 2.0 * t, 0.0))
+                (
+                    DVec3::new(half, 2.0 * t, 0.0),
+                    DVec3::new(-half, 2.0 * t, 0.0),
+                )
             })
             .collect();
         let limb = limb(&rim, [0, 8], &sides, 0.4);
         let mut directed = std::collections::HashSet::new();
         for t in &limb.triangles {
             for k in 0..3 {
-                assert!(directed.insert((t[k], t[(k + 1) % 3])), "an edge used twice one way");
+                assert!(
+                    directed.insert((t[k], t[(k + 1) % 3])),
+                    "an edge used twice one way"
+                );
             }
         }
         let one_way: Vec<_> = directed
@@ -160,7 +171,13 @@ mod tests {
         for w in s.windows(2) {
             assert!(directed.contains(&(w[0], w[1])) || directed.contains(&(w[1], w[0])));
         }
-        let at = |c: u32| if (c as usize) < n { rim[c as usize] } else { limb.positions[c as usize - n] };
+        let at = |c: u32| {
+            if (c as usize) < n {
+                rim[c as usize]
+            } else {
+                limb.positions[c as usize - n]
+            }
+        };
         assert!(s.iter().all(|&c| at(c).z.abs() < 1e-9));
         assert!((at(s[s.len() / 2]) - DVec3::new(0.0, 2.0, 0.0)).length() < 1e-9);
     }

@@ -57,7 +57,10 @@ fn a_loop_and_a_silhouette_grow_a_limb_out_of_a_sphere() {
     for w in e.silhouette.windows(2) {
         assert!(mesh.find_edge(w[0], w[1]).is_some());
     }
-    assert_eq!(e.silhouette[0], e.base[e.base.iter().position(|&v| v == e.silhouette[0]).unwrap()]);
+    assert_eq!(
+        e.silhouette[0],
+        e.base[e.base.iter().position(|&v| v == e.silhouette[0]).unwrap()]
+    );
     assert!(e.base.contains(e.silhouette.last().unwrap()));
     // The limb reaches out to the right, and its tip sits under the stroke's far point.
     let tip = mesh.position(e.silhouette[e.silhouette.len() / 2]);
@@ -67,7 +70,10 @@ fn a_loop_and_a_silhouette_grow_a_limb_out_of_a_sphere() {
     // Every silhouette vertex lies under the stroke (the ends within the base's reach).
     for &v in &e.silhouette {
         let s = screen(&front, mesh.position(v));
-        let d = silhouette.iter().map(|p| p.distance(s)).fold(f64::INFINITY, f64::min);
+        let d = silhouette
+            .iter()
+            .map(|p| p.distance(s))
+            .fold(f64::INFINITY, f64::min);
         assert!(d < NEAR_BASE_PX, "silhouette vertex {d} px off the stroke");
     }
     assert!(e.is_limb.iter().filter(|&&x| x).count() > 30);

@@ -47,7 +47,10 @@ fn two_overlapping_spheres_merge_into_one_closed_surface_of_their_union() {
     assert_eq!(merged.seams.len(), 1);
     let seam = &merged.seams[0];
     for k in 0..seam.len() {
-        assert!(mesh.find_edge(seam[k], seam[(k + 1) % seam.len()]).is_some());
+        assert!(
+            mesh.find_edge(seam[k], seam[(k + 1) % seam.len()])
+                .is_some()
+        );
     }
     // The seam lies on the first sphere, the gap outside the second.
     let gap = SEAM_GAP * a.mean_edge_length().min(b.mean_edge_length());
@@ -55,12 +58,18 @@ fn two_overlapping_spheres_merge_into_one_closed_surface_of_their_union() {
         let p = mesh.position(v);
         assert!((p.length() - 1.0).abs() < 0.005, "{p} off the first sphere");
         let q = p - DVec3::new(1.3, 0.2, 0.1);
-        assert!((q.length() - 0.8 - gap).abs() < 0.005, "{p} off the second sphere");
+        assert!(
+            (q.length() - 0.8 - gap).abs() < 0.005,
+            "{p} off the second sphere"
+        );
     }
     // The merged volume is the union's, within 2%.
     let union = union_volume(&[&a, &b], 48);
     let volume = enclosed_volume(mesh);
-    assert!((volume / union - 1.0).abs() < 0.02, "{volume} against {union}");
+    assert!(
+        (volume / union - 1.0).abs() < 0.02,
+        "{volume} against {union}"
+    );
 }
 
 #[test]

@@ -26,7 +26,7 @@ use crate::camera::OrbitCamera;
 use crate::clock;
 use crate::files::{self, ImportQueue};
 use crate::input::PointerSample;
-use crate::input::router::{InputRouter, Routed};
+use crate::input::router::{Hands, InputRouter, Routed};
 use crate::input::taps::TapCommand;
 use crate::panels;
 use crate::render::geometry::pressure_width;
@@ -698,6 +698,27 @@ impl SketchApp {
         }
     }
 
+    /// Two fingers for the tool: offered when they come down (the tool takes them by
+    /// beginning a gesture, and the router then sends their moves to it), then followed.
+    fn handle_hands(&mut self, hands: &Hands, viewport: egui::Rect, now: f64) {
+        if matches!(hands, Hands::Down(_)) {
+            self.cancel_gesture();
+            self.finish_edit(now);
+        }
+        let view = ViewCtx {
+            camera: self.shared.borrow().camera.camera(),
+            viewport,
+        };
+        let output = {
+            let shared = self.shared.borrow();
+            self.tools.on_hands(hands, &view, shared.editor.document())
+        };
+        if matches!(hands, Hands::Down(_)) && matches!(output, ToolOutput::Begin(_)) {
+            self.router.give_hands_to_tool();
+        }
+        self.take_output(output, now);
+    }
+
     /// Routes this frame's pointer samples to the tool and the camera.
     fn handle_pointer(&mut self, ctx: &egui::Context, viewport: egui::Rect) {
         #[cfg(not(target_arch = "wasm32"))]
@@ -714,6 +735,7 @@ impl SketchApp {
             self.router.route(&sample, on_view, &mut routed);
             for r in &routed {
                 match r {
+                    Routed::Hands(hands) => self.handle_hands(hands, viewport, now),
                     Routed::Nav(action) => self
                         .shared
                         .borrow_mut()

@@ -71,6 +71,11 @@ impl TwoFingerGesture {
         self.ids.contains(&id)
     }
 
+    /// Where the two fingers are now.
+    pub fn positions(&self) -> [Pos2; 2] {
+        self.last
+    }
+
     /// Moves touch `id` to `pos` and returns the camera motions this causes.
     pub fn update(&mut self, id: i64, pos: Pos2, out: &mut Vec<NavAction>) {
         let Some(slot) = self.ids.iter().position(|&i| i == id) else {

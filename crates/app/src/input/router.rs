@@ -40,9 +40,25 @@ pub enum ToolEvent {
     Cancel,
 }
 
+/// Two fingers on the view, for a tool that takes them (see
+/// [`InputRouter::give_hands_to_tool`]) rather than the camera.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Hands {
+    /// Two fingers came down here (screen points): a tool may take the gesture now.
+    Down([Pos2; 2]),
+    /// The tool's two fingers moved.
+    Move([Pos2; 2]),
+    /// A finger lifted: the tool's gesture ends.
+    Up,
+    /// The tool's gesture was abandoned.
+    Cancel,
+}
+
 /// Where a sample went.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Routed {
+    /// Two fingers, offered to the active tool or taken by it.
+    Hands(Hands),
     /// To the active tool.
     Tool(ToolEvent),
     /// To the camera.
@@ -67,6 +83,9 @@ pub struct InputRouter {
     /// Touches down, by id, with the last position.
     touches: BTreeMap<i64, Pos2>,
     two_finger: Option<TwoFingerGesture>,
+    /// Whether the tool took the two-finger gesture (it gets [`Hands`] instead of the camera
+    /// getting [`NavAction`]s).
+    hands_to_tool: bool,
     /// Set after a two-finger gesture until all fingers lift.
     touches_spent: bool,
     taps: TapDetector,
@@ -87,6 +106,12 @@ impl InputRouter {
     /// Where the pen hovers over the view, when the browser reports it.
     pub fn pen_hover(&self) -> Option<Pos2> {
         self.pen_hover
+    }
+
+    /// Gives the two-finger gesture just offered ([`Hands::Down`]) to the tool: its moves go
+    /// to the tool until a finger lifts.
+    pub fn give_hands_to_tool(&mut self) {
+        self.hands_to_tool = self.two_finger.is_some();
     }
 
     /// Whether any finger is on the screen.
@@ -164,7 +189,11 @@ impl InputRouter {
                 if let Some(g) = self.two_finger.as_mut().filter(|g| g.follows(s.id)) {
                     let mut actions = Vec::new();
                     g.update(s.id, s.pos_in_screen, &mut actions);
-                    out.extend(actions.into_iter().map(Routed::Nav));
+                    if self.hands_to_tool {
+                        out.push(Routed::Hands(Hands::Move(g.positions())));
+                    } else {
+                        out.extend(actions.into_iter().map(Routed::Nav));
+                    }
                 } else {
                     self.continue_drag(s, out);
                 }
@@ -175,6 +204,13 @@ impl InputRouter {
                 }
                 if self.two_finger.as_ref().is_some_and(|g| g.follows(s.id)) {
                     self.two_finger = None;
+                    if std::mem::take(&mut self.hands_to_tool) {
+                        let end = match s.phase {
+                            Phase::Cancel => Hands::Cancel,
+                            _ => Hands::Up,
+                        };
+                        out.push(Routed::Hands(end));
+                    }
                 }
                 self.end_drag(s, out);
                 if self.touches.is_empty() {
@@ -210,7 +246,9 @@ impl InputRouter {
                     TwoFingerDrag::Orbit
                 };
                 self.two_finger = Some(TwoFingerGesture::new(ids, positions, drag));
+                self.hands_to_tool = false;
                 self.touches_spent = true;
+                out.push(Routed::Hands(Hands::Down(positions)));
             }
             _ => {}
         }
@@ -420,6 +458,10 @@ mod tests {
             vec![
                 Routed::Tool(ToolEvent::Begin(sample(1, t, Phase::Down, 100.0, 100.0))),
                 Routed::Tool(ToolEvent::Cancel),
+                Routed::Hands(Hands::Down([
+                    egui::pos2(100.0, 100.0),
+                    egui::pos2(200.0, 100.0)
+                ])),
                 Routed::Tap(TapCommand::Undo),
             ]
         );
@@ -455,7 +497,61 @@ mod tests {
         assert!(
             after_cancel
                 .into_iter()
-                .all(|r| matches!(r, Routed::Nav(_)))
+                .all(|r| matches!(r, Routed::Nav(_) | Routed::Hands(Hands::Down(_))))
+        );
+    }
+
+    #[test]
+    fn two_fingers_the_tool_takes_go_to_it_until_one_lifts() {
+        let t = PointerKind::Touch;
+        let mut router = InputRouter::default();
+        let mut out = route_all(
+            &mut router,
+            &[
+                sample(1, t, Phase::Down, 100.0, 100.0),
+                sample(2, t, Phase::Down, 200.0, 100.0),
+            ],
+        );
+        let down = [egui::pos2(100.0, 100.0), egui::pos2(200.0, 100.0)];
+        assert_eq!(out.last(), Some(&Routed::Hands(Hands::Down(down))));
+        router.give_hands_to_tool();
+        out = route_all(
+            &mut router,
+            &[
+                sample(1, t, Phase::Move, 90.0, 100.0),
+                sample(2, t, Phase::Move, 230.0, 100.0),
+                sample(2, t, Phase::Up, 230.0, 100.0),
+                sample(1, t, Phase::Move, 50.0, 50.0),
+                sample(1, t, Phase::Up, 50.0, 50.0),
+            ],
+        );
+        let moved = [egui::pos2(90.0, 100.0), egui::pos2(230.0, 100.0)];
+        assert_eq!(
+            out,
+            vec![
+                Routed::Hands(Hands::Move([egui::pos2(90.0, 100.0), down[1]])),
+                Routed::Hands(Hands::Move(moved)),
+                Routed::Hands(Hands::Up),
+            ],
+            "no camera motion, and the finger left behind does nothing"
+        );
+        // The next two fingers, not taken, navigate.
+        out = route_all(
+            &mut router,
+            &[
+                sample(3, t, Phase::Down, 100.0, 100.0),
+                sample(4, t, Phase::Down, 200.0, 100.0),
+                sample(3, t, Phase::Move, 60.0, 100.0),
+                sample(4, t, Phase::Move, 240.0, 100.0),
+            ],
+        );
+        assert!(
+            out.iter()
+                .any(|r| matches!(r, Routed::Nav(NavAction::Zoom { .. })))
+        );
+        assert!(
+            !out.iter()
+                .any(|r| matches!(r, Routed::Hands(Hands::Move(_))))
         );
     }
 

@@ -1,8 +1,10 @@
 //! The move tool (issue 16): tap a model to select it; its handles (a ring to turn it, a
 //! square to scale it, the inside of the ring or the model itself to move it) follow the
 //! pen, a finger or the mouse with a live preview, and the release commits one `transform`
-//! op. Delete and Duplicate act on the selection, and Merge joins it with the model it
-//! overlaps. The handles' geometry, and the matrix a
+//! op. On a touch screen, two fingers on the selected model (or inside its ring) move, turn
+//! and pinch-scale it at once, as a photo under two fingers ([`Gizmo::two_fingers`]);
+//! elsewhere they navigate. Delete and Duplicate act on the selection, and Merge joins it
+//! with the model it overlaps. The handles' geometry, and the matrix a
 //! drag makes, are core's ([`Gizmo`]).
 
 use glam::{DMat4, DVec2};
@@ -14,21 +16,59 @@ use sketchmesh_core::document::{
 
 use super::context::{ToolOutput, ViewCtx};
 use super::draw::point;
-use crate::input::router::ToolEvent;
+use crate::input::router::{Hands, ToolEvent};
 
 /// A press that moves less than this (px) before it lifts is a tap: it selects.
 const TAP_RADIUS_PX: f64 = 10.0;
 
-/// A handle being dragged.
+/// What holds the model in a drag.
+#[derive(Clone, Copy, Debug)]
+enum Grip {
+    /// A handle (or the model, moving it), taken where the pointer went down.
+    Handle(GizmoHandle, DVec2),
+    /// Two fingers, where they went down.
+    Fingers([DVec2; 2]),
+}
+
+/// A drag of the selected model in progress.
 #[derive(Clone, Copy, Debug)]
 struct Drag {
     model: usize,
-    handle: GizmoHandle,
+    grip: Grip,
     gizmo: Gizmo,
     camera: Camera,
     viewport: DVec2,
-    from: DVec2,
     matrix: DMat4,
+}
+
+impl Drag {
+    /// The matrix the grip makes with the pointer at `to` (or the fingers at `fingers`).
+    fn matrix_to(&self, to: To) -> DMat4 {
+        match (self.grip, to) {
+            (Grip::Handle(handle, from), To::Pointer(at)) => {
+                (self.gizmo).drag(handle, &self.camera, self.viewport, from, at)
+            }
+            (Grip::Fingers(from), To::Fingers(at)) => {
+                (self.gizmo).two_fingers(&self.camera, self.viewport, from, at)
+            }
+            _ => self.matrix,
+        }
+    }
+
+    /// The handle being dragged, if a handle holds the model.
+    fn handle(&self) -> Option<GizmoHandle> {
+        match self.grip {
+            Grip::Handle(handle, _) => Some(handle),
+            Grip::Fingers(_) => None,
+        }
+    }
+}
+
+/// Where a drag's pointer or fingers are now.
+#[derive(Clone, Copy, Debug)]
+enum To {
+    Pointer(DVec2),
+    Fingers([DVec2; 2]),
 }
 
 /// The move tool's state.
@@ -57,26 +97,17 @@ impl ArrangeTool {
                 self.drag = Some(drag);
                 ToolOutput::Begin(transform(drag.model, DMat4::IDENTITY))
             }
-            ToolEvent::Move(s) => match self.drag.as_mut() {
-                Some(drag) => {
-                    let to = point(s, view).pos;
-                    drag.matrix =
-                        drag.gizmo
-                            .drag(drag.handle, &drag.camera, drag.viewport, drag.from, to);
-                    ToolOutput::Revise(transform(drag.model, drag.matrix))
-                }
-                None => ToolOutput::None,
-            },
+            ToolEvent::Move(s) => self.drag_to(To::Pointer(point(s, view).pos)),
             ToolEvent::End(s) => {
                 let at = point(s, view).pos;
                 if let Some(drag) = self.drag.take() {
-                    if at.distance(drag.from) < TAP_RADIUS_PX && drag.handle == GizmoHandle::Move {
+                    if let Grip::Handle(GizmoHandle::Move, from) = drag.grip
+                        && at.distance(from) < TAP_RADIUS_PX
+                    {
                         // A tap on the selected model: nothing moves.
                         return ToolOutput::Cancel;
                     }
-                    let matrix =
-                        drag.gizmo
-                            .drag(drag.handle, &drag.camera, drag.viewport, drag.from, at);
+                    let matrix = drag.matrix_to(To::Pointer(at));
                     return ToolOutput::FinishWith(transform(drag.model, matrix));
                 }
                 if let Some(down) = self.press.take()
@@ -90,6 +121,73 @@ impl ArrangeTool {
         }
     }
 
+    /// Feeds two fingers the router offers or gives ([`Hands`]): on the selected model (or
+    /// inside its ring) they take it, and the app gives them to the tool when this returns
+    /// [`ToolOutput::Begin`]; see the module docs.
+    pub fn on_hands(&mut self, hands: &Hands, view: &ViewCtx, doc: &Document) -> ToolOutput {
+        let size = view.viewport.size();
+        let viewport = DVec2::new(size.x.into(), size.y.into());
+        let local = |p: egui::Pos2| {
+            let l = p - view.viewport.min;
+            DVec2::new(l.x.into(), l.y.into())
+        };
+        match *hands {
+            Hands::Down(at) => {
+                self.press = None;
+                self.drag = None;
+                let Some(drag) = self.two_finger_grab(doc, &view.camera, viewport, at.map(local))
+                else {
+                    return ToolOutput::None;
+                };
+                self.drag = Some(drag);
+                ToolOutput::Begin(transform(drag.model, DMat4::IDENTITY))
+            }
+            Hands::Move(at) => self.drag_to(To::Fingers(at.map(local))),
+            Hands::Up => match self.drag.take() {
+                Some(drag) if drag.matrix != DMat4::IDENTITY => {
+                    ToolOutput::FinishWith(transform(drag.model, drag.matrix))
+                }
+                Some(_) => ToolOutput::Cancel,
+                None => ToolOutput::None,
+            },
+            Hands::Cancel => self.cancel(),
+        }
+    }
+
+    /// The drag in progress moved on: its matrix, previewed.
+    fn drag_to(&mut self, to: To) -> ToolOutput {
+        match self.drag.as_mut() {
+            Some(drag) => {
+                drag.matrix = drag.matrix_to(to);
+                ToolOutput::Revise(transform(drag.model, drag.matrix))
+            }
+            None => ToolOutput::None,
+        }
+    }
+
+    /// Two fingers down at `at` on the selected model (either finger over it, or their
+    /// midpoint inside its ring), as a drag about to start.
+    fn two_finger_grab(
+        &self,
+        doc: &Document,
+        camera: &Camera,
+        viewport: DVec2,
+        at: [DVec2; 2],
+    ) -> Option<Drag> {
+        let model = self.selected.filter(|&i| i < doc.models.len())?;
+        let gizmo = Gizmo::of(&doc.models[model], camera, viewport)?;
+        let over = |p: DVec2| model_at(doc, camera, viewport, p) == Some(model);
+        let inside_ring = (0.5 * (at[0] + at[1])).distance(gizmo.centre) <= gizmo.radius;
+        (at.iter().any(|&p| over(p)) || inside_ring).then_some(Drag {
+            model,
+            grip: Grip::Fingers(at),
+            gizmo,
+            camera: *camera,
+            viewport,
+            matrix: DMat4::IDENTITY,
+        })
+    }
+
     /// The handle of the selected model under `at`, or the model itself (moving it), as a
     /// drag about to start.
     fn grab(&self, doc: &Document, camera: &Camera, viewport: DVec2, at: DVec2) -> Option<Drag> {
@@ -100,11 +198,10 @@ impl ArrangeTool {
         })?;
         Some(Drag {
             model,
-            handle,
+            grip: Grip::Handle(handle, at),
             gizmo,
             camera: *camera,
             viewport,
-            from: at,
             matrix: DMat4::IDENTITY,
         })
     }
@@ -135,7 +232,7 @@ impl ArrangeTool {
                 centre,
                 radius: drag.gizmo.radius * scale,
             };
-            return Some((gizmo, Some(drag.handle)));
+            return Some((gizmo, drag.handle()));
         }
         let model = self.selected.filter(|&i| i < doc.models.len())?;
         Some((Gizmo::of(&doc.models[model], camera, viewport)?, None))
@@ -145,9 +242,9 @@ impl ArrangeTool {
     pub fn hint(&self, doc: &Document) -> Option<&'static str> {
         match self.selected.filter(|&i| i < doc.models.len()) {
             None => Some("Tap a model to move, turn or scale it"),
-            Some(_) if self.drag.is_none() => {
-                Some("Drag the model to move it, the ring to turn it, the square to scale it")
-            }
+            Some(_) if self.drag.is_none() => Some(
+                "Drag the model to move it, the ring to turn it, the square to scale it; or twist and pinch with two fingers",
+            ),
             Some(_) => None,
         }
     }
@@ -277,6 +374,54 @@ mod tests {
             panic!("expected the committed transform, got {ended:?}");
         };
         assert!(last.matrix[12] > input.matrix[12]);
+    }
+
+    #[test]
+    fn two_fingers_on_the_selected_model_turn_and_pinch_it_and_elsewhere_are_not_taken() {
+        let editor = shape();
+        let doc = editor.document();
+        let mut tool = ArrangeTool::default();
+        let v = view();
+        let hands = |tool: &mut ArrangeTool, h: Hands| tool.on_hands(&h, &v, doc);
+        let (a, b) = (egui::pos2(360.0, 340.0), egui::pos2(440.0, 340.0));
+        assert_eq!(
+            hands(&mut tool, Hands::Down([a, b])),
+            ToolOutput::None,
+            "nothing selected"
+        );
+        tap(&mut tool, doc, 400.0, 340.0);
+        let far = [egui::pos2(20.0, 60.0), egui::pos2(90.0, 60.0)];
+        assert_eq!(
+            hands(&mut tool, Hands::Down(far)),
+            ToolOutput::None,
+            "beside the model"
+        );
+        let begun = hands(&mut tool, Hands::Down([a, b]));
+        assert!(
+            matches!(begun, ToolOutput::Begin(Op::Transform(_))),
+            "{begun:?}"
+        );
+        // A quarter turn, the fingers spread to 1.5 times as far apart.
+        let turned = [egui::pos2(400.0, 280.0), egui::pos2(400.0, 400.0)];
+        let revised = hands(&mut tool, Hands::Move(turned));
+        let ToolOutput::Revise(Op::Transform(input)) = revised else {
+            panic!("expected a revised transform, got {revised:?}");
+        };
+        let m = glam::DMat4::from_cols_array(&input.matrix);
+        assert!((m.transform_vector3(glam::DVec3::X).length() - 1.5).abs() < 1e-9);
+        let x = m.transform_vector3(glam::DVec3::X);
+        assert!(
+            x.x.abs() < 1e-9 && x.y < 0.0,
+            "x turns to screen down (world -y): {x}"
+        );
+        let ended = hands(&mut tool, Hands::Up);
+        assert!(
+            matches!(ended, ToolOutput::FinishWith(Op::Transform(_))),
+            "{ended:?}"
+        );
+        // Two fingers that come down and lift without moving change nothing.
+        hands(&mut tool, Hands::Down([a, b]));
+        assert_eq!(hands(&mut tool, Hands::Up), ToolOutput::Cancel);
     }
 
     #[test]

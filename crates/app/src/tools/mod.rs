@@ -24,7 +24,7 @@ use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::document::Document;
 
-pub use crate::input::router::ToolEvent;
+pub use crate::input::router::{Hands, ToolEvent};
 pub use context::{ToolOutput, ViewCtx};
 pub use mode::Mode;
 
@@ -175,6 +175,15 @@ impl ToolSet {
             Mode::Optimize => self.optimize.on_event(event, view, doc),
             Mode::Feature => self.feature.on_event(event, view, doc),
             Mode::Move => self.arrange.on_event(event, view, doc),
+        }
+    }
+
+    /// Feeds two fingers to the active tool; only the move tool takes them (see
+    /// [`ArrangeTool::on_hands`]).
+    pub fn on_hands(&mut self, hands: &Hands, view: &ViewCtx, doc: &Document) -> ToolOutput {
+        match self.mode {
+            Mode::Move => self.arrange.on_hands(hands, view, doc),
+            _ => ToolOutput::None,
         }
     }
 

@@ -106,11 +106,7 @@ impl Gizmo {
         };
         match handle {
             GizmoHandle::Move => {
-                let on_plane = |screen: DVec2| {
-                    let (origin, dir) = camera.ray_in_world(screen, viewport);
-                    let forward = camera.forward();
-                    origin + dir * ((self.pivot - origin).dot(forward) / dir.dot(forward))
-                };
+                let on_plane = |screen| self.on_pivot_plane(camera, viewport, screen);
                 DMat4::from_translation(on_plane(to) - on_plane(from))
             }
             GizmoHandle::Turn => {
@@ -129,6 +125,36 @@ impl Gizmo {
                 about_pivot(DMat4::from_scale(DVec3::splat(factor)))
             }
         }
+    }
+
+    /// The matrix two fingers moving from `from` to `to` (px) apply to the model: what lies
+    /// under the fingers' midpoint (at the pivot's depth) follows it, the model turns about
+    /// the view axis as the line between the fingers turns, and scales as their spread
+    /// changes (within the scale limits), as a photo does under two fingers.
+    pub fn two_fingers(
+        &self,
+        camera: &Camera,
+        viewport: DVec2,
+        from: [DVec2; 2],
+        to: [DVec2; 2],
+    ) -> DMat4 {
+        let middle = |p: [DVec2; 2]| self.on_pivot_plane(camera, viewport, 0.5 * (p[0] + p[1]));
+        let (line_from, line_to) = (from[1] - from[0], to[1] - to[0]);
+        let factor =
+            (line_to.length() / line_from.length().max(1.0)).clamp(SCALE_LIMITS.0, SCALE_LIMITS.1);
+        // Screen y points down: see the turn handle.
+        let turn = line_to.to_angle() - line_from.to_angle();
+        let linear = DMat4::from_quat(DQuat::from_axis_angle(camera.forward(), turn))
+            * DMat4::from_scale(DVec3::splat(factor));
+        DMat4::from_translation(middle(to)) * linear * DMat4::from_translation(-middle(from))
+    }
+
+    /// Where the view ray through `screen` meets the plane through the pivot facing the
+    /// camera.
+    fn on_pivot_plane(&self, camera: &Camera, viewport: DVec2, screen: DVec2) -> DVec3 {
+        camera
+            .point_on_plane_through(self.pivot, screen, viewport)
+            .unwrap_or(self.pivot)
     }
 }
 
@@ -193,6 +219,24 @@ mod tests {
             "{right}"
         );
         assert!((m.transform_point3(g.pivot) - g.pivot).length() < 1e-12);
+    }
+
+    #[test]
+    fn two_fingers_keep_what_is_under_them_under_them_while_they_move_turn_and_spread() {
+        let (_, camera, g) = gizmo();
+        let from = [g.centre - DVec2::X * 40.0, g.centre + DVec2::X * 40.0];
+        // Moved 50 px right, turned a quarter and spread to twice as far apart.
+        let middle = g.centre + DVec2::X * 50.0;
+        let to = [middle - DVec2::Y * 80.0, middle + DVec2::Y * 80.0];
+        let m = g.two_fingers(&camera, VIEWPORT, from, to);
+        assert!((screen(&camera, m.transform_point3(g.pivot)) - middle).length() < 1e-6);
+        // A point under the right finger at the pivot's depth ends under it.
+        let under = camera
+            .point_on_plane_through(g.pivot, from[1], VIEWPORT)
+            .unwrap();
+        let moved = screen(&camera, m.transform_point3(under));
+        assert!((moved - to[1]).length() < 1e-6, "{moved} against {}", to[1]);
+        assert!((m.transform_vector3(DVec3::X).length() - 2.0).abs() < 1e-9);
     }
 
     #[test]

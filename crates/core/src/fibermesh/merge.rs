@@ -131,25 +131,25 @@ pub fn merge(first: &Mesh, second: &Mesh) -> Result<Merged, MergeError> {
 /// back; see the module docs.
 pub const SEAM_GAP: f64 = 0.3;
 
-/// `mesh` split where its signed distance to `other` (negative inside it) is `gap`. Vertices
-/// farther than an edge length outside `other`'s bounding box count as their distance to
-/// the box: only the sign of those matters, as no edge from them reaches `other`.
+/// `mesh` split where its signed distance to `other` (negative inside it) is `gap`.
+/// Distances are clamped to an edge length and the gap on either side of `other`'s surface,
+/// which keeps the nearest-point searches short (one from deep inside visits much of the
+/// surface) and changes no split: an edge that reaches the level `gap` has both ends nearer
+/// than that. Vertices outside `other`'s bounding box by more than that are outside.
 ///
-/// Errors: [`MergeError::NotTouching`] when no vertex lies inside `other` (or the split
-/// fails), [`MergeError::Inside`] when every vertex does.
+/// Errors: [`MergeError::NotTouching`] when no vertex lies inside `other`,
+/// [`MergeError::Inside`] when every vertex does.
 fn split_outside(mesh: &Mesh, other: &Mesh, gap: f64) -> Result<Split, MergeError> {
     let (lo, hi) = other.bounding_box().ok_or(MergeError::NotTouching)?;
     let bvh = Bvh::new(other);
     let reach = max_edge_length(mesh) + gap;
     let distances: Vec<f64> = (mesh.positions().iter())
         .map(|&p| {
-            let outside_box = (lo - p).max(p - hi).max(DVec3::ZERO).length();
-            if outside_box > reach {
-                return outside_box;
+            if (lo - p).max(p - hi).max_element() > reach {
+                return reach;
             }
-            let distance = bvh
-                .nearest(other, p)
-                .map_or(f64::MAX, |(q, _)| q.distance(p));
+            let distance =
+                (bvh.nearest_within(other, p, reach)).map_or(reach, |(q, _)| q.distance(p));
             if bvh.contains(other, p) {
                 -distance
             } else {

@@ -17,14 +17,22 @@ impl Bvh {
     /// The point of the surface nearest to `p` and its face, or `None` for an empty mesh.
     /// Visits boxes nearest first and skips those farther than the best point so far.
     pub fn nearest(&self, mesh: &Mesh, p: DVec3) -> Option<(DVec3, FaceId)> {
+        self.nearest_within(mesh, p, f64::INFINITY)
+    }
+
+    /// [`Bvh::nearest`] among the points within `radius` of `p`; `None` if there are none.
+    /// Much cheaper for a point deep inside a closed surface, where many boxes lie at about
+    /// the same distance and the unbounded search visits them all.
+    pub fn nearest_within(&self, mesh: &Mesh, p: DVec3, radius: f64) -> Option<(DVec3, FaceId)> {
         let mut best: Option<(f64, DVec3, FaceId)> = None;
+        let bound = radius * radius;
         let mut stack = Vec::with_capacity(64);
         if !self.nodes.is_empty() {
             stack.push(0u32);
         }
         while let Some(index) = stack.pop() {
             let node = self.nodes[index as usize];
-            let limit = best.map_or(f64::INFINITY, |b| b.0);
+            let limit = best.map_or(bound, |b| b.0);
             if box_distance_squared(&node.bounds, p) > limit {
                 continue;
             }
@@ -32,7 +40,7 @@ impl Bvh {
                 for &f in &self.faces[node.first as usize..(node.first + node.count) as usize] {
                     let q = closest_point_on_triangle(p, mesh.face_positions(FaceId(f)));
                     let d = q.distance_squared(p);
-                    if best.is_none_or(|b| d < b.0) {
+                    if d <= bound && best.is_none_or(|b| d < b.0) {
                         best = Some((d, q, FaceId(f)));
                     }
                 }

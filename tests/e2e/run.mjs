@@ -1185,6 +1185,31 @@ test('merge by touch: a second shape moved into the first with the handles, then
   }
 });
 
+test('a session of every topology op (create, extrude twice, tunnel, cut, a second shape moved in, merge) replays to the same mesh every time, the one the CLI gives', async () => {
+  const fixtures = join(dirname(fileURLToPath(import.meta.url)), '..', 'fixtures');
+  const session = readFileSync(join(fixtures, 'topology-session.json'), 'utf8');
+  const expected = JSON.parse(readFileSync(join(fixtures, 'topology-session.expected.json'), 'utf8'));
+  const fresh = await openApp(browser, url, gpu);
+  try {
+    const replayed = [];
+    for (let i = 0; i < 2; i++) {
+      await fresh.page.evaluate((s) => window.sketchmesh.replay(s), session);
+      await frames(fresh.page, 3);
+      replayed.push(await glbOf(fresh.page));
+    }
+    assert.deepEqual(replayed[1], replayed[0], 'the second replay gives the same file, bit for bit');
+    const stats = await api(fresh.page, 'stats');
+    assert.equal(stats.models, 1, 'the second shape was merged into the first');
+    assert.equal(stats.vertices, expected.vertices, `the CLI's and the core's mesh: ${JSON.stringify(stats)}`);
+    assert.equal(stats.triangles, expected.triangles, 'the same triangles');
+    assert.equal(stats.triangles, 2 * stats.vertices, 'a closed mesh of genus 1 (the tunnel)');
+    await screenshot(fresh.page, out('topology-session.png'));
+    assert.deepEqual(fresh.errors, [], 'console errors while replaying');
+  } finally {
+    await fresh.context.close();
+  }
+});
+
 test('move (V) by touch: a tap selects a shape and shows its handles; dragging it moves it, the square scales it, Delete removes it; undo restores each', async () => {
   const fresh = await openApp(browser, url, gpu);
   try {

@@ -152,6 +152,39 @@ fn a_created_shape_replays_to_the_same_closed_genus_0_mesh() {
     assert_eq!(info["control_curves"], 1, "{info}");
 }
 
+#[test]
+fn a_session_of_every_topology_op_replays_to_the_same_mesh_every_time() {
+    // Recorded by the core's topology suite: create, extrude twice, tunnel, cut, create a
+    // second shape, move it into the first, merge.
+    let session = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../tests/fixtures/topology-session.json");
+    let dir = temp_dir("topology");
+    let (first, second) = (dir.join("first.glb"), dir.join("second.glb"));
+    succeed("replay", &session, &first, &[]);
+    succeed("replay", &session, &second, &[]);
+    assert_eq!(
+        std::fs::read(&first).unwrap(),
+        std::fs::read(&second).unwrap(),
+        "replay is deterministic to the byte"
+    );
+    let output = sketchmesh(&["info".as_ref(), first.as_os_str()]);
+    assert_eq!(output.status.code(), Some(0));
+    let info: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+    assert_eq!(info["closed"], true, "{info}");
+    assert_eq!(info["manifold"], true, "{info}");
+    assert_eq!(info["genus"], 1, "the tunnel's hole: {info}");
+    assert_eq!(info["components"], 1, "{info}");
+    // The same mesh as the core's replay and the page's.
+    let expected: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(session.with_extension("expected.json")).unwrap())
+            .unwrap();
+    for key in ["vertices", "triangles"] {
+        assert_eq!(info[key], expected[key], "{key}: {info} against {expected}");
+    }
+    assert_eq!(info["control_curves"], expected["curves"], "{info}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 /// Runs `sketchmesh COMMAND INPUT -o OUTPUT [EXTRA...]`, expects success and returns what
 /// it printed.
 fn succeed(

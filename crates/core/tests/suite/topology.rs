@@ -630,3 +630,88 @@ fn models_that_do_not_touch_are_not_merged() {
     ));
     assert_eq!(editor.document(), &before);
 }
+
+// ---------------------------------------------------------------------------------------
+// A whole session
+// ---------------------------------------------------------------------------------------
+
+/// `tests/fixtures/topology-session.json`: the session of
+/// [`a_session_of_every_topology_op_replays_to_the_same_mesh`], which the CLI's and the
+/// page's tests replay.
+fn topology_session_fixture() -> std::path::PathBuf {
+    std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../tests/fixtures/topology-session.json")
+}
+
+/// Creates a shape, extrudes it twice, drills a tunnel through it, cuts a limb's tip off,
+/// creates a second shape, moves it into the first and merges them; after every op the model
+/// is closed, manifold, of its genus, without crossing triangles, its curves edge chains.
+/// The session replays to the same document, and is the fixture the CLI and the page replay;
+/// `topology-session.expected.json` beside it holds the mesh's counts, which all three check
+/// (`UPDATE_FIXTURE=1` writes both again).
+#[test]
+fn a_session_of_every_topology_op_replays_to_the_same_mesh() {
+    let camera = Camera::default();
+    let mut editor = created_circle();
+    let step = |editor: &mut Editor, op: Op, genus: u32| {
+        let name = op.name();
+        editor.apply(op).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_closed_of_genus(&editor.document().models[0], genus);
+    };
+    for (side, reach) in [(90.0, 160.0), (-90.0, -160.0)] {
+        let (base, silhouette) = extrusion(camera, CENTRE + DVec2::new(side, 0.0), 30.0, reach);
+        let strokes = [base, input(camera, &silhouette)];
+        step(&mut editor, Op::Extrude(StrokePairInput { strokes }), 0);
+    }
+    let loops = [
+        loop_around_centre(camera, 40.0),
+        loop_around_centre(behind(), 40.0),
+    ];
+    step(
+        &mut editor,
+        Op::Tunnel(StrokePairInput { strokes: loops }),
+        1,
+    );
+    step(&mut editor, vertical_cut(camera, CENTRE.x + 200.0), 1);
+    let ball: Vec<DVec2> = (0..=64)
+        .map(|i| DVec2::new(700.0, 500.0) + 60.0 * DVec2::from_angle(TAU * f64::from(i) / 64.0))
+        .collect();
+    editor.apply(Op::Create(input(camera, &ball))).unwrap();
+    assert_eq!(editor.document().models.len(), 2);
+    let at = |s: DVec2| camera.point_on_target_plane(s, VIEWPORT).unwrap();
+    let shift = at(CENTRE + DVec2::new(0.0, 140.0)) - at(DVec2::new(700.0, 500.0));
+    let matrix = DMat4::from_translation(shift).to_cols_array();
+    editor
+        .apply(Op::Transform(TransformInput { model: 1, matrix }))
+        .unwrap();
+    step(&mut editor, Op::Merge(MergeInput { models: [0, 1] }), 1);
+    assert_eq!(editor.document().models.len(), 1);
+    let json = editor.session_json();
+    let replayed = Editor::replay_json(&json).unwrap();
+    assert_eq!(replayed.document(), editor.document());
+    let fixture = topology_session_fixture();
+    let stats = editor.document().stats();
+    let expected = serde_json::json!({
+        "vertices": stats.vertices,
+        "triangles": stats.triangles,
+        "curves": editor.document().models[0].curves.len(),
+    });
+    let expected_path = fixture.with_extension("expected.json");
+    if std::env::var_os("UPDATE_FIXTURE").is_some() {
+        std::fs::write(&fixture, &json).unwrap();
+        std::fs::write(&expected_path, format!("{expected:#}\n")).unwrap();
+    }
+    let recorded_expected: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&expected_path).unwrap()).unwrap();
+    assert_eq!(
+        recorded_expected, expected,
+        "the replayed mesh is the one the CLI and the page expect"
+    );
+    let recorded = std::fs::read_to_string(&fixture).expect("the fixture exists");
+    let ops = |text: &str| serde_json::from_str::<serde_json::Value>(text).unwrap()["ops"].clone();
+    assert_eq!(
+        ops(&recorded),
+        ops(&json),
+        "tests/fixtures/topology-session.json is out of date: UPDATE_FIXTURE=1 writes it again"
+    );
+}

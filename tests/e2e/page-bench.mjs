@@ -312,6 +312,49 @@ try {
     await page.waitForFunction(() => JSON.parse(window.sketchmesh.session()).ops.at(-1)?.op === 'tunnel', null, { timeout: 30_000, polling: 50 })
       .catch(() => console.error(`the tunnel at ${vertices} vertices was not applied`));
     const tunnel = (await api(page, 'timings')).tunnel;
+    // An extrusion upward from the right half, seen from the front again: a pen loop, then
+    // (instead of the tap) its silhouette from the loop's left side up 150 px and back down
+    // to its right side.
+    await page.keyboard.press('r');
+    await sleep(200);
+    const base = { x: box.x + 100, y: box.y - 40 };
+    const baseLoop = Array.from({ length: 41 }, (_, i) => {
+      const a = (2 * Math.PI * i) / 40;
+      return { x: base.x + 22 * Math.cos(a), y: base.y + 22 * Math.sin(a) };
+    });
+    const silhouette = Array.from({ length: 41 }, (_, i) => {
+      const a = Math.PI * (i / 40 - 0.5);
+      return { x: base.x + 22 * Math.sin(a), y: base.y - 150 * Math.cos(a) };
+    });
+    for (const stroke of [baseLoop, silhouette]) {
+      await cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', ...stroke[0], buttons: 1, clickCount: 1, ...pen });
+      for (const point of stroke.slice(1)) {
+        await sleep(16);
+        await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', ...point, buttons: 1, ...pen });
+      }
+      await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', ...stroke.at(-1), buttons: 0, clickCount: 1, ...pen });
+      await sleep(200);
+    }
+    await page.waitForFunction(() => JSON.parse(window.sketchmesh.session()).ops.at(-1)?.op === 'extrude', null, { timeout: 30_000, polling: 50 })
+      .catch(async () => console.error(`the extrusion at ${vertices} vertices was not applied: ${JSON.parse(await api(page, 'session')).ops.slice(-3).map((o) => o.op)}`));
+    const extrude = (await api(page, 'timings')).extrude;
+    // A merge of the fixture and a copy moved to overlap it by half its width (1.8 units):
+    // the replay of [import, duplicate, move, merge] less that of the same without the merge.
+    const ops = JSON.parse(await api(page, 'session')).ops;
+    const half = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1.8 - 1.2 * 3.59, 0, 0, 1];
+    const prefix = [ops[0], { op: 'duplicate', model: 0 }, { op: 'transform', model: 1, matrix: half }];
+    const replayMs = (list) => page.evaluate((text) => {
+      const start = performance.now();
+      window.sketchmesh.replay(text);
+      return performance.now() - start;
+    }, JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: list }));
+    const withoutMerge = await replayMs(prefix);
+    let merge_ms = null;
+    try {
+      merge_ms = (await replayMs([...prefix, { op: 'merge', models: [0, 1] }])) - withoutMerge;
+    } catch (error) {
+      console.error(`the merge at ${vertices} vertices was refused: ${error.message}`);
+    }
     pulls.push({
       vertices,
       grab_ms: round(pull.begin_ms.at(-1) ?? null),
@@ -319,6 +362,8 @@ try {
       release_ms: round(pull.finish_ms.at(-1) ?? null),
       cut_ms: round(cut?.finish_ms.at(-1) ?? null),
       tunnel_ms: round(tunnel?.finish_ms.at(-1) ?? null),
+      extrude_ms: round(extrude?.finish_ms.at(-1) ?? null),
+      merge_ms: round(merge_ms),
     });
     console.error(`pull, cut and tunnel at ${vertices} vertices: ${JSON.stringify(pulls.at(-1))}`);
   }

@@ -348,6 +348,14 @@ fn page_table(page: &Value, wasm_gzip_size: u64) -> String {
                 format!("tunnel at {vertices} vertices, the op alone"),
                 ms("/tunnel_ms"),
             ),
+            (
+                format!("extrude at {vertices} vertices, the op alone"),
+                ms("/extrude_ms"),
+            ),
+            (
+                format!("merge of two {vertices}-vertex shapes, replayed op"),
+                ms("/merge_ms"),
+            ),
         ]
     });
     let vertices = text("/oversketch/vertices");

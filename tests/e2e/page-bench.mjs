@@ -90,6 +90,71 @@ async function autosaveBench() {
     await context.close();
   }
 }
+/**
+ * Moving a 100k-triangle model with the Move tool's handles (Nefertiti, 99,938 triangles): the
+ * model is tapped, then dragged 240 px by its body with the mouse in 60 moves 16 ms apart;
+ * the animation frames' intervals during the drag, and the app's own time per drag frame (the
+ * transform previewed) and for the release (the op committed).
+ */
+async function gizmoBench() {
+  const file = join(process.env.SKETCHMESH_TESTDATA ?? '../shared/testdata', 'meshes', 'nefertiti.glb');
+  if (!existsSync(file)) {
+    console.error(`gizmo: SKIPPED, ${file} is missing (set SKETCHMESH_TESTDATA)`);
+    return { skipped: `${file} is missing` };
+  }
+  const context = await browser.newContext({ viewport: { width: 1280, height: 720 } });
+  await context.addInitScript(() => {
+    const bench = { frames: [], recording: false };
+    window.__bench = bench;
+    const tick = (t) => {
+      if (bench.recording) bench.frames.push(t);
+      requestAnimationFrame(tick);
+    };
+    requestAnimationFrame(tick);
+  });
+  const page = await context.newPage();
+  try {
+    await page.goto(url, { waitUntil: 'load' });
+    await page.waitForFunction(() => window.sketchmesh?.stats !== undefined, null, { timeout: 30_000 });
+    const triangles = await page.evaluate((data) => {
+      window.sketchmesh.loadGlb(new Uint8Array(data), 'nefertiti.glb');
+      return window.sketchmesh.stats().triangles;
+    }, [...readFileSync(file)]);
+    await sleep(1500);
+    await page.keyboard.press('v');
+    const middle = await page.evaluate(() => {
+      const r = document.querySelector('canvas').getBoundingClientRect();
+      return { x: r.left + r.width / 2, y: r.top + r.height / 2 };
+    });
+    await page.mouse.click(middle.x, middle.y);
+    await sleep(300);
+    await page.evaluate(() => { window.sketchmesh.timings(); window.__bench.frames = []; window.__bench.recording = true; });
+    await page.mouse.move(middle.x, middle.y);
+    await page.mouse.down();
+    for (let i = 1; i <= 60; i++) {
+      await page.mouse.move(middle.x + 4 * i, middle.y);
+      await sleep(16);
+    }
+    await page.mouse.up();
+    await sleep(300);
+    const frames = await page.evaluate(() => { window.__bench.recording = false; return window.__bench.frames; });
+    const intervals = frames.slice(1).map((t, i) => t - frames[i]).sort((a, b) => a - b);
+    const at = (q) => intervals[Math.min(intervals.length - 1, Math.floor(q * intervals.length))];
+    const transform = (await api(page, 'timings')).transform ?? { frame_ms: [], finish_ms: [] };
+    const mean = (list) => (list.length ? list.reduce((a, b) => a + b, 0) / list.length : null);
+    const last = JSON.parse(await api(page, 'session')).ops.at(-1)?.op;
+    if (last !== 'transform') console.error(`gizmo: the drag committed ${last}, not a transform`);
+    return {
+      triangles,
+      frames: intervals.length,
+      interval_ms: { mean: round(mean(intervals)), p50: round(at(0.5)), p95: round(at(0.95)), max: round(intervals.at(-1) ?? null) },
+      drag_frame_ms: { mean: round(mean(transform.frame_ms)), max: round(Math.max(...transform.frame_ms)) },
+      release_ms: round(transform.finish_ms.at(-1) ?? null),
+    };
+  } finally {
+    await context.close();
+  }
+}
 try {
   const context = await browser.newContext({ viewport: { width: 1280, height: 720 }, hasTouch: true });
   // Runs before the page's scripts: records every animation frame's timestamp (ms since navigation
@@ -565,6 +630,8 @@ try {
 
   const autosave = await autosaveBench();
   console.error(`autosave: ${JSON.stringify(autosave)}`);
+  const gizmo = await gizmoBench();
+  console.error(`gizmo: ${JSON.stringify(gizmo)}`);
 
   const deltas = timing.frames.slice(1).map((t, i) => t - timing.frames[i]);
   const sorted = [...deltas].sort((a, b) => a - b);
@@ -589,6 +656,7 @@ try {
     optimize,
     feature,
     autosave,
+    gizmo,
   };
   console.log(JSON.stringify(report));
 } finally {

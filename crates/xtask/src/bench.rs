@@ -408,6 +408,14 @@ fn page_table(page: &Value, wasm_gzip_size: u64) -> String {
             "feature, frame while dragging, max",
             ms("/feature/drag_frame_ms/max"),
         ),
+        (
+            "Move tool drag of 100k triangles, frame interval, median",
+            ms("/gizmo/interval_ms/p50"),
+        ),
+        (
+            "Move tool drag of 100k triangles, the app's time per drag step, max",
+            ms("/gizmo/drag_frame_ms/max"),
+        ),
     ]
     .map(|(name, value)| (name.to_owned(), value));
     let rows = rows

@@ -1141,7 +1141,7 @@ test('extrude: a pen loop on a shape, then a stroke from it out past the outline
   assert.deepEqual(fresh.errors, [], 'console errors while extruding');
 }));
 
-test('merge by touch: a second shape moved into the first with the handles, then Merge, makes one closed shape; undo restores both', async () => {
+test('merge by touch: a second shape moved into the first with the handles and pinched larger with two fingers, then Merge, makes one closed shape; undo restores both', async () => {
   const fresh = await openApp(browser, url, gpu);
   try {
     const c = ELLIPSE.c;
@@ -1164,6 +1164,14 @@ test('merge by touch: a second shape moved into the first with the handles, then
     // Drag the small shape 200 px left by its body, into the big one.
     await touchGesture(fresh.cdp, [line(other, { x: other.x - 200, y: other.y }, 20)], 30);
     await until(() => lastOpOf(fresh.page), (o) => o.op === 'transform', 10_000);
+    // Two fingers on it spread from 60 to 90 px apart: it grows by half, where it is.
+    const moved = { x: other.x - 200, y: other.y };
+    await touchGesture(fresh.cdp, [
+      line({ x: moved.x - 30, y: moved.y }, { x: moved.x - 45, y: moved.y }, 12),
+      line({ x: moved.x + 30, y: moved.y }, { x: moved.x + 45, y: moved.y }, 12),
+    ], 30);
+    const pinched = await until(() => lastOpOf(fresh.page), (o) => o.op === 'transform' && Math.abs(o.matrix[0] - 1.5) < 0.05, 10_000);
+    assert.ok(Math.abs(pinched.matrix[0] - 1.5) < 0.05 && Math.abs(pinched.matrix[1]) < 0.05, `the pinch scales it by 1.5 without turning it (${pinched.matrix.slice(0, 3)})`);
     await frames(fresh.page, 3);
     await screenshot(fresh.page, out('merge-moved.png'));
     await touchTap(fresh.cdp, [MERGE_BUTTON]);
@@ -1174,11 +1182,11 @@ test('merge by touch: a second shape moved into the first with the handles, then
     assert.equal(stats.triangles, 2 * stats.vertices - 4, `a closed mesh of genus 0: ${JSON.stringify(stats)}`);
     await frames(fresh.page, 3);
     await screenshot(fresh.page, out('merge.png'));
-    for (let i = 0; i < 2; i++) {
+    for (let i = 0; i < 3; i++) {
       await fresh.page.keyboard.press('Control+z');
       await frames(fresh.page, 2);
     }
-    assert.deepEqual(await glbOf(fresh.page), two, 'two undos give both shapes back where they were, bit for bit');
+    assert.deepEqual(await glbOf(fresh.page), two, 'three undos give both shapes back where they were, bit for bit');
     assert.deepEqual(fresh.errors, [], 'console errors while merging');
   } finally {
     await fresh.context.close();

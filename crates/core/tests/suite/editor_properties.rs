@@ -52,7 +52,7 @@ use proptest::prelude::*;
 use proptest::test_runner::{Config, FileFailurePersistence, RngSeed, TestRunner};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    CommandError, ControlCurve, Document, Editor, Model, ModelInput, Op, OversketchFit,
+    CommandError, ControlCurve, Document, Editor, MergeInput, Model, ModelInput, Op, OversketchFit,
     SketchFeatureInput, StrokeInput, StrokePairInput, TransformInput,
 };
 use sketchmesh_core::feature::FeatureKind;
@@ -168,8 +168,15 @@ enum Step {
         model: usize,
         radius: f64,
     },
+    /// A base loop of a tenth of the model's size on screen, over half way from its middle
+    /// toward `angle`, and a silhouette from it out past the model that way and back.
+    Extrude {
+        model: usize,
+        angle: f64,
+    },
     /// 0: a transform (turned `angle` about +Y, scaled by `scale`, moved by `shift`, mirrored
-    /// in x when `scale` is negative), 1: a delete, 2: a duplicate of a model.
+    /// in x when `scale` is negative), 1: a delete, 2: a duplicate of a model, 3: a merge of
+    /// it and the next.
     Arrange {
         model: usize,
         kind: u8,
@@ -311,9 +318,11 @@ fn step() -> impl Strategy<Value = Step> {
     );
     let tunnel =
         (0usize..8, 0.1..0.4f64).prop_map(|(model, radius)| Step::Tunnel { model, radius });
+    let extrude =
+        (0usize..8, -3.2..3.2f64).prop_map(|(model, angle)| Step::Extrude { model, angle });
     let arrange = (
         0usize..8,
-        0u8..3,
+        0u8..4,
         -1.0..1.0f64,
         prop_oneof![4 => 0.5..2.0f64, 1 => -1.5..-0.7f64],
         (-1.0..1.0f64, -1.0..1.0f64),
@@ -387,6 +396,7 @@ fn step() -> impl Strategy<Value = Step> {
         2 => cut,
         2 => arrange,
         1 => tunnel,
+        1 => extrude,
         2 => erase,
         2 => set_type,
         2 => rub,
@@ -625,6 +635,31 @@ fn op_for(step: &Step, document: &Document) -> Op {
             });
             Op::Tunnel(StrokePairInput { strokes })
         }
+        Step::Extrude { model, angle } => {
+            let camera = View {
+                yaw: 0.0,
+                pitch: 0.0,
+            }
+            .camera();
+            let place = pick_model(document, *model).and_then(|m| projection(m, &camera));
+            let (centre, size) = place.unwrap_or((nowhere()[0], 10.0));
+            let (u, radius) = (DVec2::from_angle(*angle), 0.1 * size);
+            let base = centre + 0.55 * size * u;
+            let ring: Vec<DVec2> = (0..=48)
+                .map(|i| {
+                    base + radius * DVec2::from_angle(std::f64::consts::TAU * f64::from(i) / 48.0)
+                })
+                .collect();
+            let silhouette: Vec<DVec2> = (0..=40)
+                .map(|i| {
+                    let a = std::f64::consts::PI * (f64::from(i) / 40.0 - 0.5);
+                    base + radius * a.sin() * u.perp() + size * a.cos() * u
+                })
+                .collect();
+            Op::Extrude(StrokePairInput {
+                strokes: [input(camera, &ring), input(camera, &silhouette)],
+            })
+        }
         Step::Arrange {
             model,
             kind,
@@ -648,7 +683,10 @@ fn op_for(step: &Step, document: &Document) -> Op {
                     })
                 }
                 1 => Op::Delete(ModelInput { model }),
-                _ => Op::Duplicate(ModelInput { model }),
+                2 => Op::Duplicate(ModelInput { model }),
+                _ => Op::Merge(MergeInput {
+                    models: [model, (model + 1) % n],
+                }),
             }
         }
         Step::Erase { view, along } => {

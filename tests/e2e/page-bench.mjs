@@ -20,16 +20,14 @@ const { url, gpu } = settings();
 const browser = await launch(gpu);
 
 /**
- * The autosave of a 100k-triangle document (Nefertiti, 99,938 triangles, imported): the longest
- * frame while a change is written (the session with the import's bytes is what is serialized),
- * the app's own time for each write (serialized and handed to IndexedDB's queue), and the
- * restore on reload (from `window.sketchmesh` appearing to the document shown, and from
- * navigation).
+ * A fresh page of its own with Nefertiti (99,938 triangles) imported, every animation frame's
+ * timestamp recorded into `window.__bench.frames` while `window.__bench.recording`; `null`
+ * (said loudly) when the test data is missing.
  */
-async function autosaveBench() {
+async function nefertitiPage(what) {
   const file = join(process.env.SKETCHMESH_TESTDATA ?? '../shared/testdata', 'meshes', 'nefertiti.glb');
   if (!existsSync(file)) {
-    console.error(`autosave: SKIPPED, ${file} is missing (set SKETCHMESH_TESTDATA)`);
+    console.error(`${what}: SKIPPED, ${file} is missing (set SKETCHMESH_TESTDATA)`);
     return { skipped: `${file} is missing` };
   }
   const context = await browser.newContext({ viewport: { width: 1280, height: 720 } });
@@ -45,14 +43,27 @@ async function autosaveBench() {
     requestAnimationFrame(tick);
   });
   const page = await context.newPage();
+  await page.goto(url, { waitUntil: 'load' });
+  await page.waitForFunction(() => window.sketchmesh?.stats !== undefined, null, { timeout: 30_000 });
+  const triangles = await page.evaluate((data) => {
+    window.sketchmesh.loadGlb(new Uint8Array(data), 'nefertiti.glb');
+    return window.sketchmesh.stats().triangles;
+  }, [...readFileSync(file)]);
+  await sleep(1500);
+  return { context, page, triangles };
+}
+
+/**
+ * The autosave of a 100k-triangle document (Nefertiti, 99,938 triangles, imported): the longest
+ * frame while a change is written (the session with the import's bytes is what is serialized),
+ * the app's own time for each write (serialized and handed to IndexedDB's queue), and the
+ * restore on reload (from `window.sketchmesh` appearing to the document shown, and from
+ * navigation).
+ */
+async function autosaveBench() {
+  const { context, page, triangles, skipped } = await nefertitiPage('autosave');
+  if (skipped) return { skipped };
   try {
-    await page.goto(url, { waitUntil: 'load' });
-    await page.waitForFunction(() => window.sketchmesh?.stats !== undefined, null, { timeout: 30_000 });
-    const triangles = await page.evaluate((data) => {
-      window.sketchmesh.loadGlb(new Uint8Array(data), 'nefertiti.glb');
-      return window.sketchmesh.stats().triangles;
-    }, [...readFileSync(file)]);
-    await sleep(1500);
     // An undo is written at once (the last write is old); a redo 100 ms later waits for the
     // half-second interval, so its write has a frame of its own, apart from the redo's
     // rebuild of the view: the frames from 250 ms after the redo hold the write and no rebuild.
@@ -97,30 +108,9 @@ async function autosaveBench() {
  * transform previewed) and for the release (the op committed).
  */
 async function gizmoBench() {
-  const file = join(process.env.SKETCHMESH_TESTDATA ?? '../shared/testdata', 'meshes', 'nefertiti.glb');
-  if (!existsSync(file)) {
-    console.error(`gizmo: SKIPPED, ${file} is missing (set SKETCHMESH_TESTDATA)`);
-    return { skipped: `${file} is missing` };
-  }
-  const context = await browser.newContext({ viewport: { width: 1280, height: 720 } });
-  await context.addInitScript(() => {
-    const bench = { frames: [], recording: false };
-    window.__bench = bench;
-    const tick = (t) => {
-      if (bench.recording) bench.frames.push(t);
-      requestAnimationFrame(tick);
-    };
-    requestAnimationFrame(tick);
-  });
-  const page = await context.newPage();
+  const { context, page, triangles, skipped } = await nefertitiPage('gizmo');
+  if (skipped) return { skipped };
   try {
-    await page.goto(url, { waitUntil: 'load' });
-    await page.waitForFunction(() => window.sketchmesh?.stats !== undefined, null, { timeout: 30_000 });
-    const triangles = await page.evaluate((data) => {
-      window.sketchmesh.loadGlb(new Uint8Array(data), 'nefertiti.glb');
-      return window.sketchmesh.stats().triangles;
-    }, [...readFileSync(file)]);
-    await sleep(1500);
     await page.keyboard.press('v');
     const middle = await page.evaluate(() => {
       const r = document.querySelector('canvas').getBoundingClientRect();
@@ -128,7 +118,11 @@ async function gizmoBench() {
     });
     await page.mouse.click(middle.x, middle.y);
     await sleep(300);
-    await page.evaluate(() => { window.sketchmesh.timings(); window.__bench.frames = []; window.__bench.recording = true; });
+    await page.evaluate(() => {
+      window.sketchmesh.timings();
+      window.__bench.frames = [];
+      window.__bench.recording = true;
+    });
     await page.mouse.move(middle.x, middle.y);
     await page.mouse.down();
     for (let i = 1; i <= 60; i++) {

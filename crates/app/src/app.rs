@@ -15,7 +15,7 @@ use eframe::egui_wgpu;
 use egui::{Key, KeyboardShortcut, Modifiers};
 use sketchmesh_core::curve::{StrokePoint, process_stroke};
 use sketchmesh_core::document::{
-    Edit, Editor, GizmoHandle, ImportInput, Op, Progress, StrokeInput, model_under,
+    Document, Edit, Editor, GizmoHandle, ImportInput, Op, Progress, StrokeInput, model_under,
 };
 use sketchmesh_core::feature::FeatureKind;
 use sketchmesh_core::optimize::quality_report;
@@ -698,6 +698,20 @@ impl SketchApp {
         }
     }
 
+    /// What the active tool makes of an input (`feed`), in the current view of the document.
+    fn feed_tool(
+        &mut self,
+        viewport: egui::Rect,
+        feed: impl FnOnce(&mut ToolSet, &ViewCtx, &Document) -> ToolOutput,
+    ) -> ToolOutput {
+        let view = ViewCtx {
+            camera: self.shared.borrow().camera.camera(),
+            viewport,
+        };
+        let shared = self.shared.borrow();
+        feed(&mut self.tools, &view, shared.editor.document())
+    }
+
     /// Two fingers for the tool: offered when they come down (the tool takes them by
     /// beginning a gesture, and the router then sends their moves to it), then followed.
     fn handle_hands(&mut self, hands: &Hands, viewport: egui::Rect, now: f64) {
@@ -705,14 +719,9 @@ impl SketchApp {
             self.cancel_gesture();
             self.finish_edit(now);
         }
-        let view = ViewCtx {
-            camera: self.shared.borrow().camera.camera(),
-            viewport,
-        };
-        let output = {
-            let shared = self.shared.borrow();
-            self.tools.on_hands(hands, &view, shared.editor.document())
-        };
+        let output = self.feed_tool(viewport, |tools, view, doc| {
+            tools.on_hands(hands, view, doc)
+        });
         if matches!(hands, Hands::Down(_)) && matches!(output, ToolOutput::Begin(_)) {
             self.router.give_hands_to_tool();
         }
@@ -759,14 +768,9 @@ impl SketchApp {
                             self.cancel_gesture();
                             self.finish_edit(now);
                         }
-                        let view = ViewCtx {
-                            camera: self.shared.borrow().camera.camera(),
-                            viewport,
-                        };
-                        let output = {
-                            let shared = self.shared.borrow();
-                            self.tools.on_event(event, &view, shared.editor.document())
-                        };
+                        let output = self.feed_tool(viewport, |tools, view, doc| {
+                            tools.on_event(event, view, doc)
+                        });
                         self.take_output(output, now);
                         if matches!(event, ToolEvent::End(_) | ToolEvent::Cancel)
                             && let Some(mode) = self.erasing_from.take()

@@ -17,26 +17,12 @@ impl Bvh {
     /// number.
     pub fn contains(&self, mesh: &Mesh, p: DVec3) -> bool {
         let dir = PARITY_DIR.normalize();
-        let inv_dir = dir.recip();
         let mut crossings = 0usize;
-        let mut stack = Vec::with_capacity(64);
-        if !self.nodes.is_empty() {
-            stack.push(0u32);
-        }
-        while let Some(index) = stack.pop() {
-            if self.entry(index, p, inv_dir, f64::INFINITY).is_none() {
-                continue;
-            }
-            let node = self.nodes[index as usize];
-            if node.count == 0 {
-                stack.extend([node.first, node.first + 1]);
-                continue;
-            }
-            for &f in &self.faces[node.first as usize..(node.first + node.count) as usize] {
-                let [a, b, c] = mesh.face_positions(FaceId(f));
-                crossings += usize::from(intersect_triangle(p, dir, a, b, c).is_some());
-            }
-        }
+        self.along_ray(p, dir, f64::INFINITY, |f| {
+            let [a, b, c] = mesh.face_positions(FaceId(f));
+            crossings += usize::from(intersect_triangle(p, dir, a, b, c).is_some());
+            false
+        });
         crossings % 2 == 1
     }
 }

@@ -132,11 +132,25 @@ impl Bvh {
             return false;
         }
         let dir = (to - from) / length;
+        let mut hit = false;
+        self.along_ray(from, dir, limit, |f| {
+            let [a, b, c] = mesh.face_positions(FaceId(f));
+            hit = intersect_triangle(from, dir, a, b, c).is_some_and(|(t, _, _)| t < limit);
+            hit
+        });
+        hit
+    }
+
+    /// Calls `visit` with every face in the leaves whose boxes the ray `origin + t·dir`
+    /// enters before `limit`, until it returns `true`.
+    fn along_ray(&self, origin: DVec3, dir: DVec3, limit: f64, mut visit: impl FnMut(u32) -> bool) {
         let inv_dir = dir.recip();
         let mut stack = Vec::with_capacity(64);
-        stack.push(0u32);
+        if !self.nodes.is_empty() {
+            stack.push(0u32);
+        }
         while let Some(index) = stack.pop() {
-            if self.entry(index, from, inv_dir, limit).is_none() {
+            if self.entry(index, origin, inv_dir, limit).is_none() {
                 continue;
             }
             let node = self.nodes[index as usize];
@@ -145,13 +159,11 @@ impl Bvh {
                 continue;
             }
             for &f in &self.faces[node.first as usize..(node.first + node.count) as usize] {
-                let [a, b, c] = mesh.face_positions(FaceId(f));
-                if intersect_triangle(from, dir, a, b, c).is_some_and(|(t, _, _)| t < limit) {
-                    return true;
+                if visit(f) {
+                    return;
                 }
             }
         }
-        false
     }
 
     /// Where the ray enters a node's box (slab test), if it does before `limit`.

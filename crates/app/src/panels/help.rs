@@ -75,6 +75,14 @@ const GESTURES: &[(&str, &str)] = &[
         "Cut off the part past it; a tap right after makes a cross-section curve instead",
     ),
     (
+        "Sketch: a loop on a shape, then",
+        "a tap: a closed curve; a stroke out from the loop and back: a limb with that outline; a loop on the far side: a tunnel",
+    ),
+    (
+        "Move: two fingers on the selected model",
+        "Move, twist and pinch it; Merge joins it with the model it overlaps",
+    ),
+    (
         "Pen eraser end or barrel button",
         "Erase curves, whatever the tool",
     ),

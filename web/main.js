@@ -61,12 +61,13 @@ async function restore() {
   } catch (e) {
     console.warn("No document store:", e);
   }
+  // At start: without a record, work done while the store was read stays.
   try {
-    window.sketchmesh.restore(record);
+    window.sketchmesh.restore(record, true);
   } catch (e) {
     console.warn(e);
     await store.setAside(record).catch((e) => console.warn(e));
-    window.sketchmesh.restore(null);
+    window.sketchmesh.restore(null, true);
   }
   // Closing or hiding the page writes the latest change at once.
   addEventListener("pagehide", flush);

@@ -165,9 +165,10 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
     let (s, c) = (shared.clone(), ctx.clone());
     set(
         "restore",
-        Closure::<dyn Fn(Option<String>) -> Result<(), JsValue>>::new(
-            move |text: Option<String>| {
-                let result = restore(&mut s.borrow_mut(), text.as_deref());
+        Closure::<dyn Fn(Option<String>, Option<bool>) -> Result<(), JsValue>>::new(
+            move |text: Option<String>, at_start: Option<bool>| {
+                let at_start = at_start.unwrap_or(false);
+                let result = restore(&mut s.borrow_mut(), text.as_deref(), at_start);
                 c.request_repaint();
                 result.map_err(|e| js_error(&e))
             },
@@ -230,7 +231,11 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
 /// with none an empty document, replace what is shown, and autosaving (to the document the
 /// page now has open) begins. A record that does not replay changes nothing and is refused
 /// with a sentence (the page sets it aside, then calls again without).
-fn restore(shared: &mut Shared, text: Option<&str>) -> Result<(), String> {
+///
+/// `at_start`: the page's first call, once its store has answered. Without a record, what
+/// was done meanwhile (a stroke drawn, a session replayed while the store was read) stays:
+/// it is the new document's first work, not something to clear.
+fn restore(shared: &mut Shared, text: Option<&str>, at_start: bool) -> Result<(), String> {
     if let Some(text) = text {
         let restored = serde_json::from_str::<Record>(text)
             .map_err(|e| format!("the autosave record is not readable ({e})"))
@@ -250,8 +255,8 @@ fn restore(shared: &mut Shared, text: Option<&str>) -> Result<(), String> {
                 return Err(sentence);
             }
         }
-    } else if !shared.editor.ops().is_empty() {
-        // Empty already (the page's start, where a stroke may be under way): nothing to drop.
+    } else if !at_start && !shared.editor.ops().is_empty() {
+        // Empty already, or the page's start: nothing to drop.
         shared.open_empty();
     }
     let revision = shared.revision();

@@ -1,5 +1,6 @@
 //! FiberMesh curve editing on a document's models (Nealen's thesis §3.2.1–3.2.4): pull,
-//! add, erase, type change and rub, each one undoable op.
+//! add, erase, type change and rub, and the operations that change a shape's topology and
+//! leave curves behind (cut, tunnel, extrude, merge), each one undoable op.
 //!
 //! The algorithms live in [`crate::fibermesh`] and [`crate::mesh::remesh`]; this module
 //! picks the model and the curves an op acts on, and settles the surface afterwards. Every

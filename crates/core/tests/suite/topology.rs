@@ -715,3 +715,62 @@ fn a_session_of_every_topology_op_replays_to_the_same_mesh() {
         "tests/fixtures/topology-session.json is out of date: UPDATE_FIXTURE=1 writes it again"
     );
 }
+
+/// Spot, and where a turned copy of it is placed: its middle moved by a fraction of Spot's
+/// size along each axis, turned about y and then x (radians). The first is the copy beside
+/// it, half a width along x: the two meet in three loops, and where each pokes out of the
+/// other by less than the seam gap, a rim loses its partner and a nub is cut off on its own.
+const SPOT_PLACEMENTS: [([f64; 3], [f64; 2]); 8] = [
+    ([0.5, 0.0, 0.0], [0.0, 0.0]),
+    ([-0.37, -0.21, 0.35], [0.4, 2.6]),
+    ([0.06, 0.27, -0.1], [3.3, 1.2]),
+    ([-0.45, -0.37, -0.25], [5.0, 0.8]),
+    ([0.42, -0.41, -0.41], [1.9, 4.4]),
+    ([-0.2, -0.01, -0.26], [2.2, 5.7]),
+    ([-0.46, -0.02, -0.26], [0.9, 3.1]),
+    ([0.3, 0.3, 0.3], [1.0, 1.0]),
+];
+
+#[test]
+fn a_scan_merges_with_turned_copies_of_itself_keeping_the_union_s_volume() {
+    let Some(dir) = testdata() else {
+        return;
+    };
+    let bytes = std::fs::read(dir.join("meshes/spot.glb")).unwrap();
+    let file = ImportFile {
+        name: "spot.glb",
+        bytes: &bytes,
+    };
+    let imported = import_gltf(&file, &[], &ImportLimits::default()).unwrap();
+    let spot = &imported.models[0].mesh;
+    let (lo, hi) = spot.bounding_box().unwrap();
+    let centre = 0.5 * (lo + hi);
+    for (by, [about_y, about_x]) in SPOT_PLACEMENTS {
+        let matrix = DMat4::from_translation(centre + DVec3::from(by) * (hi - lo))
+            * DMat4::from_rotation_y(about_y)
+            * DMat4::from_rotation_x(about_x)
+            * DMat4::from_translation(-centre);
+        let mut editor = Editor::new();
+        editor.apply(import_mesh("spot.glb", spot)).unwrap();
+        editor.apply(import_mesh("spot.glb", spot)).unwrap();
+        let transform = TransformInput {
+            model: 1,
+            matrix: matrix.to_cols_array(),
+        };
+        editor.apply(Op::Transform(transform)).unwrap();
+        let models = &editor.document().models;
+        let union = union_volume(&[&models[0].mesh, &models[1].mesh], 64);
+        editor
+            .apply(Op::Merge(MergeInput { models: [0, 1] }))
+            .unwrap_or_else(|e| panic!("placed at {by:?} turned {about_y}, {about_x}: {e}"));
+        let model = &editor.document().models[0];
+        // Legs and ears that pass through the other body make handles.
+        assert_closed_of_genus(model, model.mesh.genus().unwrap());
+        assert_eq!(model.mesh.n_components(), 1);
+        let volume = enclosed_volume(&model.mesh);
+        assert!(
+            (volume / union - 1.0).abs() < 0.02,
+            "placed at {by:?}: {volume} against {union}"
+        );
+    }
+}

@@ -32,7 +32,7 @@ fn two_overlapping_spheres_merge_into_one_closed_surface() {
         );
     }
     // The seam lies on the first sphere, the gap outside the second.
-    let gap = SEAM_GAP * a.mean_edge_length().min(b.mean_edge_length());
+    let gap = SEAM_GAPS[0] * a.mean_edge_length().min(b.mean_edge_length());
     for &v in seam {
         let p = mesh.position(v);
         assert!((p.length() - 1.0).abs() < 0.005, "{p} off the first sphere");

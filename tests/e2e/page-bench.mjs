@@ -32,8 +32,19 @@ async function nefertitiPage(what) {
   }
   const context = await browser.newContext({ viewport: { width: 1280, height: 720 } });
   await context.addInitScript(() => {
-    const bench = { frames: [], recording: false, apiAt: null, shownAt: null };
+    const bench = { frames: [], callbackMs: [], recording: false, apiAt: null, shownAt: null };
     window.__bench = bench;
+    // The page's own animation-frame callbacks (the app's update, paint and GPU submission),
+    // timed: what the app costs the main thread per frame, apart from the rasterizer.
+    const raf = window.requestAnimationFrame.bind(window);
+    window.requestAnimationFrame = (callback) => raf((t) => {
+      const start = performance.now();
+      try {
+        callback(t);
+      } finally {
+        if (bench.recording) bench.callbackMs.push(performance.now() - start);
+      }
+    });
     const tick = (t) => {
       if (bench.apiAt === null && window.sketchmesh) bench.apiAt = performance.now();
       if (bench.shownAt === null && window.sketchmesh?.stats?.().models > 0) bench.shownAt = performance.now();
@@ -121,6 +132,7 @@ async function gizmoBench() {
     await page.evaluate(() => {
       window.sketchmesh.timings();
       window.__bench.frames = [];
+      window.__bench.callbackMs = [];
       window.__bench.recording = true;
     });
     await page.mouse.move(middle.x, middle.y);
@@ -131,9 +143,10 @@ async function gizmoBench() {
     }
     await page.mouse.up();
     await sleep(300);
-    const frames = await page.evaluate(() => { window.__bench.recording = false; return window.__bench.frames; });
+    const { frames, callbackMs } = await page.evaluate(() => { window.__bench.recording = false; return window.__bench; });
     const intervals = frames.slice(1).map((t, i) => t - frames[i]).sort((a, b) => a - b);
     const at = (q) => intervals[Math.min(intervals.length - 1, Math.floor(q * intervals.length))];
+    const callbacks = [...callbackMs].sort((a, b) => a - b);
     const transform = (await api(page, 'timings')).transform ?? { frame_ms: [], finish_ms: [] };
     const mean = (list) => (list.length ? list.reduce((a, b) => a + b, 0) / list.length : null);
     const last = JSON.parse(await api(page, 'session')).ops.at(-1)?.op;
@@ -143,6 +156,11 @@ async function gizmoBench() {
       frames: intervals.length,
       interval_ms: { mean: round(mean(intervals)), p50: round(at(0.5)), p95: round(at(0.95)), max: round(intervals.at(-1) ?? null) },
       drag_frame_ms: { mean: round(mean(transform.frame_ms)), max: round(Math.max(...transform.frame_ms)) },
+      app_frame_ms: {
+        mean: round(mean(callbacks)),
+        p95: round(callbacks[Math.min(callbacks.length - 1, Math.floor(0.95 * callbacks.length))] ?? null),
+        max: round(callbacks.at(-1) ?? null),
+      },
       release_ms: round(transform.finish_ms.at(-1) ?? null),
     };
   } finally {

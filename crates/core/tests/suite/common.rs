@@ -393,6 +393,20 @@ pub fn resample(points: &[DVec2], spacing: f64) -> Vec<DVec2> {
     out
 }
 
+/// The meshes of a test file in `../shared/testdata/meshes`, as the import repairs them
+/// (`None` as [`testdata`] says).
+pub fn testdata_meshes(name: &str) -> Option<Vec<Mesh>> {
+    let path = testdata()?.join("meshes").join(name);
+    let bytes = std::fs::read(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let file = sketchmesh_core::io::ImportFile {
+        name,
+        bytes: &bytes,
+    };
+    let imported = sketchmesh_core::io::import_gltf(&file, &[], &Default::default())
+        .unwrap_or_else(|e| panic!("{name} does not import: {e}"));
+    Some(imported.models.into_iter().map(|m| m.mesh).collect())
+}
+
 /// The shared real test data (`../shared/testdata`): its path, or a loud failure when it is
 /// missing, unless `SKETCHMESH_NO_TESTDATA=1` says that is expected (then `None`, and the
 /// caller prints that it checks nothing).

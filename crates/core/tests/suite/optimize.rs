@@ -12,22 +12,9 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
-use crate::common::testdata;
-use sketchmesh_core::io::{ImportFile, ImportLimits, import_gltf};
+use crate::common::testdata_meshes as meshes;
 use sketchmesh_core::mesh::Mesh;
 use sketchmesh_core::optimize::{OptimizeParams, QualityReport, optimize, quality_report};
-
-/// The meshes of a test file, as the import repairs them.
-fn meshes(name: &str) -> Option<Vec<Mesh>> {
-    let path = testdata()?.join("meshes").join(name);
-    let bytes = std::fs::read(&path).unwrap();
-    let file = ImportFile {
-        name,
-        bytes: &bytes,
-    };
-    let imported = import_gltf(&file, &[], &ImportLimits::default()).unwrap();
-    Some(imported.models.into_iter().map(|m| m.mesh).collect())
-}
 
 fn run(mesh: &Mesh, params: &OptimizeParams) -> QualityReport {
     let result = optimize(mesh, params).unwrap();

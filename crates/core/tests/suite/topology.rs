@@ -16,9 +16,8 @@ use sketchmesh_core::document::{
 };
 use sketchmesh_core::fibermesh::cut::CutError;
 use sketchmesh_core::geometry::{Bvh, enclosed_volume};
-use sketchmesh_core::io::{ImportFile, ImportLimits, import_gltf};
 
-use crate::common::{import_mesh, samples, segment, testdata};
+use crate::common::{import_mesh, samples, segment, testdata_meshes};
 
 const VIEWPORT: DVec2 = DVec2::new(800.0, 600.0);
 const CENTRE: DVec2 = DVec2::new(400.0, 300.0);
@@ -163,16 +162,10 @@ fn strokes_that_do_not_cut_are_refused_and_change_nothing() {
 
 #[test]
 fn a_cut_through_a_real_scan_closes_it_with_a_flat_cap() {
-    let Some(dir) = testdata() else {
+    let Some(meshes) = testdata_meshes("spot.glb") else {
         return;
     };
-    let bytes = std::fs::read(dir.join("meshes/spot.glb")).unwrap();
-    let file = ImportFile {
-        name: "spot.glb",
-        bytes: &bytes,
-    };
-    let imported = import_gltf(&file, &[], &ImportLimits::default()).unwrap();
-    let spot = &imported.models[0].mesh;
+    let spot = &meshes[0];
     let (lo, hi) = spot.bounding_box().unwrap();
     let centre = 0.5 * (lo + hi);
     let camera = Camera {
@@ -733,16 +726,10 @@ const SPOT_PLACEMENTS: [([f64; 3], [f64; 2]); 8] = [
 
 #[test]
 fn a_scan_merges_with_turned_copies_of_itself_keeping_the_union_s_volume() {
-    let Some(dir) = testdata() else {
+    let Some(meshes) = testdata_meshes("spot.glb") else {
         return;
     };
-    let bytes = std::fs::read(dir.join("meshes/spot.glb")).unwrap();
-    let file = ImportFile {
-        name: "spot.glb",
-        bytes: &bytes,
-    };
-    let imported = import_gltf(&file, &[], &ImportLimits::default()).unwrap();
-    let spot = &imported.models[0].mesh;
+    let spot = &meshes[0];
     let (lo, hi) = spot.bounding_box().unwrap();
     let centre = 0.5 * (lo + hi);
     for (by, [about_y, about_x]) in SPOT_PLACEMENTS {

@@ -466,10 +466,11 @@ try {
       await sleep(150);
     }
     const shot = await screenshot(page, join(OUT_DIR, 'bench-oversketch-before.png'));
-    // The lit model is the only bright thing below the toolbar: its bounding box gives the
-    // outline's centre and outer radius.
+    // The lit model is the only bright thing below the toolbar (two rows, with the tool's
+    // options, about 80 px: its labels are bright too): its bounding box gives the outline's
+    // centre and outer radius.
     const box = { x0: Infinity, x1: -Infinity, y0: Infinity, y1: -Infinity };
-    for (let y = 60; y < shot.height; y++) {
+    for (let y = 100; y < shot.height; y++) {
       for (let x = 0; x < shot.width; x++) {
         const [r, g, b] = shot.data.slice((y * shot.width + x) * 4, (y * shot.width + x) * 4 + 3);
         if (Math.min(r, g, b) > 110) {

@@ -12,7 +12,7 @@ use std::time::SystemTime;
 use anyhow::{Context as _, bail};
 use serde_json::Value;
 
-use crate::build::{self, WebProfile};
+use crate::build;
 use crate::serve::StaticServer;
 use crate::setup::{self, Needs};
 use crate::{Steps, Workspace, cargo, format_size, run};
@@ -48,9 +48,7 @@ pub fn bench_command(workspace: &Workspace) -> anyhow::Result<()> {
     summary += "\n## Feature sketching's region system against libigl\n\n";
     summary += &libigl;
 
-    let web = steps.step("build-web --release", || {
-        build::build_web(workspace, WebProfile::Release)
-    })?;
+    let web = steps.step("build-web", || build::build_web(workspace))?;
     let (pulls, torus) = steps.step("fixtures", || bench_fixtures(workspace))?;
     let server = steps.step("start server", || StaticServer::start(&workspace.dist(), 0))?;
     let page = steps.step("page bench", || {
@@ -78,7 +76,7 @@ pub fn bench_command(workspace: &Workspace) -> anyhow::Result<()> {
             .with_context(|| format!("page-bench.mjs printed no JSON report:\n{text}"))
     })?;
     drop(server);
-    summary += "\n## Page (release wasm, no wasm-opt; headless Chromium)\n\n";
+    summary += "\n## Page (the shipped build; headless Chromium)\n\n";
     summary += &page_table(&page, web.wasm_gzip_size);
 
     let file = workspace.target_dir.join("bench-summary.md");

@@ -27,13 +27,13 @@ Usage: cargo xtask <command>
 
 Commands:
   setup                        Install the wasm target, Chromium and the npm test tools (idempotent)
-  build-web [--release|--ship] Build the web page into dist/ (--release: fast, no wasm-opt;
-                               --ship, the default: wasm-release profile + wasm-opt -Oz, cached)
-  serve [--release] [--port N] Ship build (or --release build), then serve dist/ on
-                               http://127.0.0.1:8080/ (or port N)
+  build-web                    Build the page into dist/: release profile, wasm-opt -O2 (cached);
+                               the one build that is served, tested and benchmarked
+  serve [--port N]             Build the page, then serve dist/ on http://127.0.0.1:8080/
+                               (or port N)
   test                         fmt, clippy, native tests, wasm build, browser suite (WebGL2 and WebGPU),
                                glTF validation: everything CI runs
-  e2e                          Only the --release web build, the browser suite and glTF validation
+  e2e                          Only the web build, the browser suite and glTF validation
   bench                        Criterion benches of sketchmesh-core plus page timings in Chromium;
                                summary in target/bench-summary.md
   fuzz [--seconds N]           Fuzz the glTF importer with cargo-fuzz for N seconds (default 60)
@@ -57,12 +57,7 @@ fn try_main() -> anyhow::Result<()> {
             Ok(())
         }
         ["setup"] => setup::setup(&workspace, setup::Needs::ALL),
-        ["build-web"] | ["build-web", "--ship"] => {
-            build::build_web(&workspace, build::WebProfile::Ship).map(drop)
-        }
-        ["build-web", "--release"] => {
-            build::build_web(&workspace, build::WebProfile::Release).map(drop)
-        }
+        ["build-web"] => build::build_web(&workspace).map(drop),
         ["serve", options @ ..] => serve::serve_command(&workspace, options),
         ["test"] => test::test_command(&workspace),
         ["e2e"] => test::e2e_command(&workspace),

@@ -13,45 +13,30 @@ use anyhow::{Context as _, anyhow, bail};
 use tiny_http::{Header, Method, Request, Response, Server};
 
 use crate::Workspace;
-use crate::build::{self, WebProfile};
+use crate::build;
 
 /// The port `cargo xtask serve` uses unless told otherwise.
 pub const DEFAULT_PORT: u16 = 8080;
 const WORKERS: usize = 4;
 
-/// `serve [--release] [--port N]`: build (ship by default), then serve `dist/` until interrupted.
+/// `serve [--port N]`: build the page, then serve `dist/` until interrupted.
 pub fn serve_command(workspace: &Workspace, options: &[&str]) -> anyhow::Result<()> {
-    let (profile, port) = parse_options(options)?;
-    build::build_web(workspace, profile)?;
+    let port = parse_options(options)?;
+    build::build_web(workspace)?;
     let server = StaticServer::start(&workspace.dist(), port)?;
     println!("Serving Sketchmesh at {}", server.url());
     server.wait();
     Ok(())
 }
 
-fn parse_options(options: &[&str]) -> anyhow::Result<(WebProfile, u16)> {
-    let mut profile = WebProfile::Ship;
-    let mut port = DEFAULT_PORT;
-    let mut rest = options;
-    loop {
-        rest = match rest {
-            [] => return Ok((profile, port)),
-            ["--release", tail @ ..] => {
-                profile = WebProfile::Release;
-                tail
-            }
-            ["--ship", tail @ ..] => {
-                profile = WebProfile::Ship;
-                tail
-            }
-            ["--port", number, tail @ ..] => {
-                port = number.parse().with_context(|| {
-                    format!("--port wants a number from 0 to 65535, got {number:?}")
-                })?;
-                tail
-            }
-            [other, ..] => bail!("unknown serve option {other:?}; try --release or --port N"),
-        };
+/// The port of `serve [--port N]`.
+fn parse_options(options: &[&str]) -> anyhow::Result<u16> {
+    match options {
+        [] => Ok(DEFAULT_PORT),
+        ["--port", number] => number
+            .parse()
+            .with_context(|| format!("--port wants a number from 0 to 65535, got {number:?}")),
+        [other, ..] => bail!("unknown serve option {other:?}; try --port N"),
     }
 }
 
@@ -332,11 +317,9 @@ mod tests {
 
     #[test]
     fn serve_options_parse() {
-        assert_eq!(parse_options(&[]).unwrap(), (WebProfile::Ship, 8080));
-        assert_eq!(
-            parse_options(&["--port", "9000", "--release"]).unwrap(),
-            (WebProfile::Release, 9000)
-        );
+        assert_eq!(parse_options(&[]).unwrap(), 8080);
+        assert_eq!(parse_options(&["--port", "9000"]).unwrap(), 9000);
+        assert!(parse_options(&["--port", "9000", "--release"]).is_err());
         assert!(parse_options(&["--port", "x"]).is_err());
         assert!(parse_options(&["--port"]).is_err());
         assert!(parse_options(&["--fast"]).is_err());

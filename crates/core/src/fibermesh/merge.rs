@@ -127,7 +127,7 @@ fn merge_with_gap(first: &Mesh, second: &Mesh, gap: f64) -> Result<Merged, Merge
 
 /// How far outside the other part (in edge lengths, of the finer part) each part is cut
 /// back, in the order tried; see the module docs. Of forty random placements of Spot against
-/// a turned copy of itself, 35 merge with these three, 28 with the first alone.
+/// a turned copy of itself, 35 merge with these three.
 pub const SEAM_GAPS: [f64; 3] = [0.3, 0.1, 0.6];
 
 /// `mesh` split where its signed distance to `other` (negative inside it) is `gap`.
@@ -267,7 +267,6 @@ fn paired(first: &Split, second: &Split, tolerance: f64) -> Vec<(usize, usize)> 
         .filter(|&(distance, _, _)| distance < tolerance)
         .collect();
     candidates.sort_by(|x, y| x.0.total_cmp(&y.0));
-
     let (mut taken_a, mut taken_b) = (vec![false; a.len()], vec![false; b.len()]);
     let mut pairs = Vec::new();
     for (_, i, j) in candidates {
@@ -337,7 +336,6 @@ fn check(mesh: &Mesh, is_seam: &[bool]) -> Result<(), MergeError> {
             .any(|v: &VertexId| is_seam[v.index()])
     };
     let crossing = !Bvh::new(mesh).crossing_faces(mesh, near_seam).is_empty();
-
     if !mesh.is_closed() || mesh.n_components() != 1 || crossing {
         return Err(MergeError::Broken(None));
     }

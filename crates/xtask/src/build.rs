@@ -37,6 +37,19 @@ pub struct WebBuild {
     pub wasm_gzip_size: u64,
 }
 
+impl WebBuild {
+    /// The build `dist` holds (written by [`build_web`], maybe by another xtask process).
+    pub fn in_dist(dist: &Path) -> anyhow::Result<Self> {
+        let wasm = dist.join(format!("{OUT_NAME}_bg.wasm"));
+        let mut gz = wasm.clone().into_os_string();
+        gz.push(".gz");
+        Ok(Self {
+            wasm_gzip_size: file_size(Path::new(&gz))?,
+            wasm,
+        })
+    }
+}
+
 /// Builds the page into `dist/` (emptied first) and prints the sizes.
 pub fn build_web(workspace: &Workspace) -> anyhow::Result<WebBuild> {
     setup::setup(

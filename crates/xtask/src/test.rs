@@ -6,11 +6,11 @@
 
 use std::fs;
 use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::process::{Child, Command, Stdio};
 
 use anyhow::{Context as _, bail};
 
-use crate::build;
+use crate::build::{self, WebBuild};
 use crate::serve::StaticServer;
 use crate::setup::{self, Needs};
 use crate::{Steps, Workspace, cargo, format_size, run};
@@ -23,6 +23,11 @@ const REPLAY_FIXTURE: &str = "tests/fixtures/two-strokes-undo-redo.json";
 pub const GPU_PASSES: [&str; 2] = ["webgl2", "webgpu"];
 
 /// Runs everything; prints a summary with the time of each step.
+///
+/// The page is built by a second xtask process while the native tests build and run: its last
+/// minutes (wasm-opt, the thin-LTO link) use one core, and the native build's tail another. The
+/// two cargo builds lock different profile folders (`debug` against `release` and the wasm
+/// target), so neither waits for the other.
 pub fn test_command(workspace: &Workspace) -> anyhow::Result<()> {
     let root = &workspace.root;
     let mut steps = Steps::default();
@@ -33,30 +38,105 @@ pub fn test_command(workspace: &Workspace) -> anyhow::Result<()> {
             cargo().current_dir(root).args(["fmt", "--all", "--check"]),
         )
     })?;
+    let web_build = steps.step("start build-web", || WebBuildProcess::start(workspace))?;
     steps.step("build tests with clippy", || {
         run(
             "clippy over every target, building the tests",
-            with_clippy(cargo().current_dir(root)).args([
-                "test",
-                "--workspace",
-                "--all-targets",
-                "--no-run",
-            ]),
+            with_clippy(cargo().current_dir(root))
+                .args(NATIVE_TESTS)
+                .args(["--all-targets", "--no-run"]),
+        )?;
+        run(
+            "clippy over xtask, building its tests",
+            with_clippy(cargo().current_dir(root))
+                .args(XTASK_TESTS)
+                .arg("--no-run"),
         )
     })?;
     steps.step("cargo test", || {
         run(
             "cargo test",
-            with_clippy(cargo().current_dir(root)).args(["test", "--workspace"]),
+            with_clippy(cargo().current_dir(root)).args(NATIVE_TESTS),
+        )?;
+        run(
+            "cargo test (xtask)",
+            with_clippy(cargo().current_dir(root)).args(XTASK_TESTS),
         )
+    })?;
+    let web = steps.step("build-web (rest, after the native tests)", || {
+        web_build.wait()
     })?;
     // `cargo test` built the CLI with the whole workspace's features; `cargo run -p` would
     // rebuild the core with the CLI's own feature set, which takes minutes from cold.
     let cli = workspace.target_dir.join("debug").join("sketchmesh");
-    browser_checks(workspace, &mut steps, Some(&cli))?;
+    browser_checks(workspace, &mut steps, &web, Some(&cli))?;
     steps.print_summary();
     println!("xtask: all checks passed");
     Ok(())
+}
+
+/// The workspace's tests but xtask's, in the test profile (built with `--all-targets`, so clippy
+/// sees the benches and examples too; run without, so the benches are not run once each).
+const NATIVE_TESTS: &[&str] = &["test", "--workspace", "--exclude", "xtask"];
+/// xtask's own tests, in the profile `cargo xtask` is built with: its dependencies (the
+/// wasm-bindgen library among them) are then compiled once, not once more for the tests.
+const XTASK_TESTS: &[&str] = &["test", "-p", "xtask", "--profile", "xtask"];
+
+/// `cargo xtask build-web` running beside the native build, its output kept in a log that is
+/// printed when it is waited for; killed if the test run stops before that.
+struct WebBuildProcess {
+    child: Option<Child>,
+    log: PathBuf,
+    dist: PathBuf,
+}
+
+impl WebBuildProcess {
+    fn start(workspace: &Workspace) -> anyhow::Result<Self> {
+        let web_dir = workspace.target_dir.join("web");
+        fs::create_dir_all(&web_dir).with_context(|| format!("creating {}", web_dir.display()))?;
+        let log = web_dir.join("build-web.log");
+        let out = fs::File::create(&log).with_context(|| format!("creating {}", log.display()))?;
+        let err = out.try_clone()?;
+        let xtask = std::env::current_exe().context("finding the running xtask")?;
+        println!("xtask: $ {} build-web > {}", xtask.display(), log.display());
+        let child = Command::new(&xtask)
+            .current_dir(&workspace.root)
+            .arg("build-web")
+            .stdin(Stdio::null())
+            .stdout(out)
+            .stderr(err)
+            .spawn()
+            .context("starting `xtask build-web`")?;
+        Ok(Self {
+            child: Some(child),
+            log,
+            dist: workspace.dist(),
+        })
+    }
+
+    /// Waits for the build, prints its log, and reads what it wrote into `dist/`.
+    fn wait(mut self) -> anyhow::Result<WebBuild> {
+        let status = self
+            .child
+            .take()
+            .map(|mut child| child.wait())
+            .transpose()?;
+        let log = fs::read_to_string(&self.log).unwrap_or_default();
+        print!("{log}");
+        if !status.is_some_and(|status| status.success()) {
+            bail!("the web build failed ({status:?}); its log is above");
+        }
+        WebBuild::in_dist(&self.dist)
+    }
+}
+
+impl Drop for WebBuildProcess {
+    fn drop(&mut self) {
+        if let Some(child) = self.child.as_mut() {
+            let _ = child.kill();
+            let _ = child.wait();
+        }
+    }
 }
 
 /// Makes `command` lint the workspace's crates with clippy (`-D warnings`) while it builds
@@ -75,22 +155,22 @@ fn with_clippy(command: &mut Command) -> &mut Command {
 pub fn e2e_command(workspace: &Workspace) -> anyhow::Result<()> {
     let mut steps = Steps::default();
     steps.step("setup", || setup::setup(workspace, Needs::ALL))?;
-    browser_checks(workspace, &mut steps, None)?;
+    let web = steps.step("build-web", || build::build_web(workspace))?;
+    browser_checks(workspace, &mut steps, &web, None)?;
     steps.print_summary();
     println!("xtask: browser checks passed");
     Ok(())
 }
 
-/// The web build with its size budget, the browser suite on each GPU path, and the glTF
-/// validator on the exports and on a CLI replay (with the `cli` binary when given, else
-/// through `cargo run`).
+/// The web build's size budget, the browser suite on each GPU path, and the glTF validator on
+/// the exports and on a CLI replay (with the `cli` binary when given, else through `cargo run`).
 fn browser_checks(
     workspace: &Workspace,
     steps: &mut Steps,
+    web: &WebBuild,
     cli: Option<&Path>,
 ) -> anyhow::Result<()> {
     let root = &workspace.root;
-    let web = steps.step("build-web", || build::build_web(workspace))?;
     steps.step("wasm size budget", || {
         println!(
             "xtask: {} is {} gzipped (budget {})",

@@ -27,5 +27,6 @@ pub mod mesh;
 pub mod model;
 pub mod optimize;
 pub mod oversketch;
+pub mod region_edit;
 pub mod silhouette;
 pub mod solve;

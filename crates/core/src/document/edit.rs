@@ -67,6 +67,7 @@ use super::feature::FeaturePreview;
 use super::optimize::OptimizePreview;
 use super::outcome::{Outcome, outcome, with_model};
 use super::oversketch::{OutlinePiece, OutlinePreview};
+use super::region_edit::RegionPreview;
 use super::{CommandError, Document, Editor, Op};
 
 /// What [`Edit::step`] left to do.
@@ -138,6 +139,8 @@ enum Work {
     Optimize(Box<OptimizePreview>),
     /// A feature sketch's live shape, following the op's amount.
     Feature(Box<FeaturePreview>),
+    /// A region edit's live shape, following the op's transform and levels.
+    Region(Box<RegionPreview>),
     /// A model moving with a dragged handle, following the op's matrix.
     Transform(Box<TransformPreview>),
     /// A creation, refining step by step.
@@ -166,6 +169,7 @@ impl Work {
             Op::Oversketch(input) => Work::Outline(Box::new(OutlinePreview::new(input))),
             Op::Optimize(input) => Work::Optimize(Box::new(OptimizePreview::start(base, input)?)),
             Op::SketchFeature(_) => Work::Feature(Box::new(FeaturePreview::new())),
+            Op::RegionEdit(_) => Work::Region(Box::new(RegionPreview::new())),
             Op::Transform(input) => {
                 Work::Transform(Box::new(TransformPreview::start(base, input)?))
             }
@@ -265,6 +269,7 @@ impl Edit {
                 (Work::Outline(preview), _) => preview.step(base, stroke),
                 (Work::Optimize(preview), Op::Optimize(input)) => preview.step(base, input)?,
                 (Work::Feature(preview), Op::SketchFeature(input)) => preview.step(base, input)?,
+                (Work::Region(preview), Op::RegionEdit(input)) => preview.step(base, input)?,
                 (Work::Transform(preview), Op::Transform(input)) => preview.step(base, input)?,
                 _ => None,
             };
@@ -301,6 +306,15 @@ impl Edit {
             // A feature's drag ended: its kept edit gives the exact result.
             Work::Feature(preview) => {
                 let Op::SketchFeature(input) = op else {
+                    self.work = Work::complete(base, op)?;
+                    return Ok((Progress::Working, true));
+                };
+                self.work = Work::Done(with_model(base, preview.result(base, input)?));
+                Ok((Progress::Done, true))
+            }
+            // A region edit's drag ended: its kept region gives the exact result.
+            Work::Region(preview) => {
+                let Op::RegionEdit(input) = op else {
                     self.work = Work::complete(base, op)?;
                     return Ok((Progress::Working, true));
                 };
@@ -405,7 +419,17 @@ impl Edit {
                 _ => None,
             },
             Work::Feature(preview) => preview.moved(),
+            Work::Region(preview) => preview.moved(),
             Work::Transform(preview) => Some(preview.moved()),
+            _ => None,
+        }
+    }
+
+    /// A region edit's model and every vertex's weight in its fall-off (0 outside the
+    /// region), once the region is found: what the fall-off overlay shows.
+    pub fn region_weights(&self) -> Option<(usize, Vec<f64>)> {
+        match &self.work {
+            Work::Region(preview) => preview.weights(),
             _ => None,
         }
     }

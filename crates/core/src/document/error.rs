@@ -13,6 +13,7 @@ use crate::io::GltfError;
 use crate::mesh::remesh::RemeshError;
 use crate::optimize::OptimizeError;
 use crate::oversketch::OversketchError;
+use crate::region_edit::RegionError;
 use crate::solve::SolveError;
 
 /// Why an op was refused. The messages are sentences for the user.
@@ -93,6 +94,9 @@ pub enum CommandError {
     /// A feature sketch was refused.
     #[error("{0}")]
     Feature(#[from] FeatureError),
+    /// A region edit was refused.
+    #[error("{0}")]
+    Region(#[from] RegionError),
     /// A mesh optimization was refused.
     #[error("The mesh could not be optimized: {0}.")]
     Optimize(#[from] OptimizeError),

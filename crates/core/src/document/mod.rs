@@ -26,6 +26,7 @@ mod op;
 mod optimize;
 mod outcome;
 mod oversketch;
+mod region_edit;
 mod session;
 mod session_error;
 
@@ -45,8 +46,8 @@ pub use intent::{
 };
 pub use op::{
     AddCurveInput, BrushInput, CurveTypeInput, FileInput, ImportInput, MergeInput, ModelInput, Op,
-    OptimizeInput, OversketchFit, OversketchInput, SketchFeatureInput, StrokeInput,
-    StrokePairInput, TransformInput,
+    OptimizeInput, OversketchFit, OversketchInput, RegionEditInput, SketchFeatureInput,
+    StrokeInput, StrokePairInput, TransformInput,
 };
 pub use oversketch::OutlinePiece;
 pub use session::{SESSION_FORMAT, SESSION_VERSION, Session};

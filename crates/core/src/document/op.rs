@@ -63,6 +63,9 @@ pub enum Op {
     /// Sketch a feature on a model's surface: a ridge or ravine along the sketch, a bump or
     /// valley, a flattening or suggestive contours over its region.
     SketchFeature(SketchFeatureInput),
+    /// Move the region a boundary draws around a reference curve by a transform, with a
+    /// fall-off from the curve to the boundary (Bujans' region editor).
+    RegionEdit(RegionEditInput),
     /// Undo the last change.
     Undo,
     /// Redo the last undone change.
@@ -91,6 +94,7 @@ impl Op {
         "rub",
         "optimize",
         "sketch_feature",
+        "region_edit",
         "undo",
         "redo",
     ];
@@ -116,6 +120,7 @@ impl Op {
             Op::Rub(_) => "rub",
             Op::Optimize(_) => "optimize",
             Op::SketchFeature(_) => "sketch_feature",
+            Op::RegionEdit(_) => "region_edit",
             Op::Undo => "undo",
             Op::Redo => "redo",
         }
@@ -137,6 +142,7 @@ impl Op {
             | Op::Extrude(_)
             | Op::Merge(_)
             | Op::Transform(_)
+            | Op::RegionEdit(_)
             | Op::Delete(_)
             | Op::Duplicate(_)
             | Op::Undo
@@ -256,6 +262,39 @@ impl SketchFeatureInput {
             viewport: self.viewport,
             camera: self.camera,
             stroke: self.stroke.clone(),
+        }
+    }
+}
+
+/// A `region_edit` op: the reference curve and the boundary around it, both drawn in one view,
+/// the fall-off's levels and the transform.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RegionEditInput {
+    /// Viewport size `[width, height]` in CSS px.
+    pub viewport: [f64; 2],
+    /// The camera both curves were drawn with.
+    pub camera: Camera,
+    /// Raw samples `[x, y, pressure]` of the reference curve, on the model.
+    pub reference: Vec<[f64; 3]>,
+    /// Raw samples `[x, y, pressure]` of the closed boundary around it (first point not
+    /// repeated).
+    pub boundary: Vec<[f64; 3]>,
+    /// The fall-off's weights at evenly spaced closeness from the boundary (first) to the
+    /// reference curve (last), linear between; left out: `[0, 0.25, 0.5, 0.75, 1]`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub levels: Option<Vec<f64>>,
+    /// The 4×4 affine transform, column by column: a vertex of weight `w` moves by `w ⊙ T`.
+    pub transform: [f64; 16],
+}
+
+impl RegionEditInput {
+    /// The reference curve's stroke part.
+    pub fn reference_input(&self) -> StrokeInput {
+        StrokeInput {
+            viewport: self.viewport,
+            camera: self.camera,
+            stroke: self.reference.clone(),
         }
     }
 }

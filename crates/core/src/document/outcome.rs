@@ -8,6 +8,7 @@ use super::create::CreateJob;
 use super::feature::feature_op;
 use super::optimize::optimize_op;
 use super::oversketch::oversketch_op;
+use super::region_edit::region_edit_op;
 use super::{CommandError, Document, ImportInput, Model, Op, SketchCurve, StrokeInput, curve_edit};
 use crate::curve::process_stroke;
 use crate::io::{ImportFile, ImportLimits, Imported, import_gltf};
@@ -86,6 +87,7 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
         Op::Rub(input) => replaced(curve_edit::rub_op(base, input)?),
         Op::Optimize(input) => replaced(optimize_op(base, input)?),
         Op::SketchFeature(input) => replaced(feature_op(base, input)?),
+        Op::RegionEdit(input) => replaced(region_edit_op(base, input)?),
         Op::Undo => Outcome::Undo,
         Op::Redo => Outcome::Redo,
     })

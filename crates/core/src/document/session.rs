@@ -185,7 +185,8 @@ fn has_no_fields(op: &Op) -> bool {
         | Op::SetCurveType(_)
         | Op::Rub(_)
         | Op::Optimize(_)
-        | Op::SketchFeature(_) => false,
+        | Op::SketchFeature(_)
+        | Op::RegionEdit(_) => false,
         Op::Undo | Op::Redo => true,
     }
 }

@@ -34,7 +34,7 @@ const LENGTH_COST: f64 = 0.1;
 
 /// A sketch placed on a mesh.
 #[derive(Clone, Debug)]
-pub(super) struct Placed {
+pub(crate) struct Placed {
     /// The sketch resampled evenly, in screen px.
     pub points: Vec<DVec2>,
     /// One entry per vertex: whether it may move.
@@ -48,7 +48,7 @@ pub(super) struct Placed {
 /// Errors: [`FeatureError::TooShort`], [`FeatureError::FoldsBack`],
 /// [`FeatureError::RegionCrosses`], [`FeatureError::RegionMissesSketch`],
 /// [`FeatureError::MissesMesh`], [`FeatureError::LeavesMesh`], [`FeatureError::NoPath`].
-pub(super) fn place(
+pub(crate) fn place(
     mesh: &Mesh,
     bvh: &Bvh,
     normals: &[DVec3],

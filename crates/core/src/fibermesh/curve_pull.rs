@@ -39,8 +39,7 @@ use rustc_hash::FxHashMap;
 pub use error::PullError;
 
 use super::measure::Rings;
-use super::region::distances_within;
-use crate::mesh::VertexId;
+use crate::mesh::{VertexId, distances_within};
 use crate::solve::{Prefactored, Triplets};
 
 /// How a pull peels and deforms.

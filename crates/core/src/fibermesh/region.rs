@@ -2,10 +2,7 @@
 //! may move the surface (the region a pull preview solves, see
 //! [`super::FairSurface::new_regional`]).
 
-use std::cmp::Reverse;
-use std::collections::BinaryHeap;
-
-use crate::mesh::{Mesh, VertexId};
+use crate::mesh::{Mesh, VertexId, shortest_paths};
 
 /// The vertices within `radius` of `seeds` along mesh edges (Dijkstra over edge lengths),
 /// as a mask with one entry per vertex. Seeds outside the mesh are ignored.
@@ -60,69 +57,6 @@ pub fn nearest_vertices(
         radius
     };
     Region { mask, reach }
-}
-
-/// Shortest-path distances from `seeds` over a graph on `n` nodes whose edges from a node
-/// `neighbours` lists with their lengths, up to `radius`; infinite beyond it.
-pub(crate) fn distances_within<I: Iterator<Item = (u32, f64)>>(
-    n: usize,
-    seeds: &[u32],
-    radius: f64,
-    neighbours: impl Fn(u32) -> I,
-) -> Vec<f64> {
-    shortest_paths(n, seeds, radius, neighbours, |_, _| false)
-}
-
-/// Dijkstra from `seeds` up to `radius`, calling `settled` with each node and its distance
-/// as it becomes final, in increasing order, and stopping when it returns true (nodes
-/// reached but not yet settled then keep tentative distances).
-fn shortest_paths<I: Iterator<Item = (u32, f64)>>(
-    n: usize,
-    seeds: &[u32],
-    radius: f64,
-    neighbours: impl Fn(u32) -> I,
-    mut settled: impl FnMut(u32, f64) -> bool,
-) -> Vec<f64> {
-    let mut distance = vec![f64::INFINITY; n];
-    let mut queue = BinaryHeap::new();
-    for &s in seeds.iter().filter(|&&s| (s as usize) < n) {
-        distance[s as usize] = 0.0;
-        queue.push(Reverse((Ordered(0.0), s)));
-    }
-    while let Some(Reverse((Ordered(d), v))) = queue.pop() {
-        if d > distance[v as usize] {
-            continue;
-        }
-        if settled(v, d) {
-            break;
-        }
-        for (w, length) in neighbours(v) {
-            let through = d + length;
-            if through <= radius && through < distance[w as usize] {
-                distance[w as usize] = through;
-                queue.push(Reverse((Ordered(through), w)));
-            }
-        }
-    }
-    distance
-}
-
-/// A finite distance with the total order the heap needs.
-#[derive(Clone, Copy, Debug, PartialEq)]
-struct Ordered(f64);
-
-impl Eq for Ordered {}
-
-impl PartialOrd for Ordered {
-    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
-        Some(self.cmp(other))
-    }
-}
-
-impl Ord for Ordered {
-    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
-        self.0.total_cmp(&other.0)
-    }
 }
 
 #[cfg(test)]

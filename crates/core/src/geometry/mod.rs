@@ -1,5 +1,5 @@
 //! Discrete differential geometry on a [`Mesh`](crate::mesh::Mesh): normals, areas,
-//! Laplacians and mean curvature.
+//! Laplacians and mean curvature; fractions and sums of affine transforms (`transform_blend`).
 //!
 //! Everything reads positions and connectivity and returns new per-element data in `f64`;
 //! nothing here changes a mesh. Sign conventions follow Nealen et al. 2006 ("Laplacian Mesh
@@ -13,6 +13,7 @@ mod laplacian;
 mod normals;
 mod raycast;
 mod shape_diameter;
+mod transform_blend;
 
 pub use area::{
     enclosed_volume, face_area, mass_matrix, total_area, vertex_areas, vertex_areas_barycentric,
@@ -29,3 +30,4 @@ pub use normals::{
 pub(crate) use raycast::segment_crosses_triangle;
 pub use raycast::{RayHit, raycast};
 pub use shape_diameter::{SDF_RAYS, shape_diameter};
+pub use transform_blend::{Fractions, exp_affine, fraction, log_affine, sum};

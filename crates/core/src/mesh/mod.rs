@@ -42,6 +42,7 @@ use serde::{Deserialize, Serialize};
 pub use edit::Remap;
 pub use error::MeshError;
 pub use halfedge::OutgoingHalfedges;
+pub(crate) use paths::{distances_within, shortest_paths};
 pub use repair::{RepairReport, Repaired, make_manifold};
 pub use soup::TriSoup;
 

@@ -15,5 +15,6 @@ mod golden_sessions;
 mod optimize;
 mod oversketch;
 mod oversketch_pipeline;
+mod region_edit;
 mod silhouette;
 mod topology;

@@ -10,7 +10,7 @@
 //! - [`resample`]: even arclength resampling, of positions or of points that carry data
 //!   along (a stroke's pressure, through [`PolylinePoint`]);
 //! - [`closest_point`], [`distance_to_polyline`], [`distance_to_segment`];
-//! - [`douglas_peucker`] and [`simplify`] (D. Douglas and T. Peucker, The Canadian
+//! - [`thin`] (drop points near the last kept one), [`douglas_peucker`] and [`simplify`] (D. Douglas and T. Peucker, The Canadian
 //!   Cartographer 10(2), 1973);
 //! - [`signed_area`], [`perimeter`], [`centroid`], [`contains`] (even-odd rule);
 //! - [`segment_crossing`] and [`self_crossings`], bucketed in a uniform grid so that a
@@ -37,4 +37,4 @@ pub use nearest::{Closest, closest_point, distance_to_polyline, distance_to_segm
 pub use polygon::{centroid, contains, perimeter, signed_area};
 pub use resample::{PolylinePoint, resample, resample_closed};
 pub(crate) use segment_grid::SegmentGrid;
-pub use simplify::{douglas_peucker, simplify};
+pub use simplify::{douglas_peucker, simplify, thin};

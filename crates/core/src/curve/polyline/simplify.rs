@@ -3,7 +3,21 @@
 
 use glam::DVec2;
 
-use super::{distance_to_segment, resample};
+use super::{PolylinePoint, distance_to_segment, resample};
+
+/// The points no nearer than `spacing` to the last point kept, the first always kept:
+/// Bujans' filter of a pen's input before a smooth fit (10 px), so that a hand lingering in
+/// one place leaves no knot.
+pub fn thin<P: PolylinePoint>(points: &[P], spacing: f64) -> Vec<P> {
+    let mut kept: Vec<P> = Vec::with_capacity(points.len());
+    for &p in points {
+        match kept.last() {
+            Some(last) if last.position().distance(p.position()) < spacing => {}
+            _ => kept.push(p),
+        }
+    }
+    kept
+}
 
 /// Even resampling at `spacing` (so bursts and gaps of pointer events weigh alike), then
 /// [`douglas_peucker`] at `tolerance`: the points kept. The first and last points are kept
@@ -48,6 +62,17 @@ pub fn douglas_peucker(points: &[DVec2], tolerance: f64) -> Vec<usize> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn thinning_keeps_points_a_spacing_apart() {
+        let points: Vec<DVec2> = (0..=40).map(|i| DVec2::new(f64::from(i), 0.0)).collect();
+        let kept = thin(&points, 10.0);
+        assert_eq!(
+            kept,
+            [0.0, 10.0, 20.0, 30.0, 40.0].map(|x| DVec2::new(x, 0.0))
+        );
+        assert!(thin::<DVec2>(&[], 10.0).is_empty());
+    }
 
     #[test]
     fn douglas_peucker_keeps_only_corners_of_a_noisy_polyline() {

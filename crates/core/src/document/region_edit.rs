@@ -1,0 +1,178 @@
+//! The `region_edit` op ([`crate::region_edit`]) and its live preview while the user drags
+//! the transform.
+//!
+//! The preview keeps the [`RegionEdit`] found for the op's curves: a new transform only
+//! moves the region again (one pass, nothing allocated), new levels only weigh it again, and
+//! the committed result is that edit applied to the final transform, bit for bit what
+//! [`region_edit_op`] computes from the op alone, so replay gives the same document.
+
+use glam::{DMat4, DVec2, DVec3};
+
+use super::outcome::{target, with_positions};
+use super::{CommandError, Document, Model, RegionEditInput, StrokeInput, model_under};
+use crate::curve::polyline::thin;
+use crate::curve::process_stroke;
+use crate::region_edit::{Levels, RegionEdit, RegionError, RegionSketch, checked_transform};
+
+/// Input samples nearer than this (CSS px) to the last kept one are dropped before the
+/// curves are smoothed (Bujans §4.1).
+const THIN_PX: f64 = 10.0;
+
+/// The index of the model under the reference curve and the model with its region moved.
+///
+/// Errors: [`CommandError::BadView`], a curve too short, or the region's refusal.
+pub(super) fn region_edit_op(
+    doc: &Document,
+    input: &RegionEditInput,
+) -> Result<(usize, Model), CommandError> {
+    let (index, edit) = new_region(doc, input)?;
+    let positions = edit.applied(
+        &target(doc, index)?.mesh,
+        &checked_transform(&input.transform)?,
+    );
+    Ok((index, with_positions(doc, index, &positions)))
+}
+
+/// The model under the reference curve's first point and the region of `input` on it.
+fn new_region(
+    doc: &Document,
+    input: &RegionEditInput,
+) -> Result<(usize, RegionEdit), CommandError> {
+    let reference = input.reference_input();
+    let viewport = reference.checked_viewport()?;
+    let levels = levels_of(input)?;
+    checked_transform(&input.transform)?;
+    let smoothed = |stroke: &StrokeInput| -> Result<Vec<DVec2>, CommandError> {
+        let points = process_stroke(&thin(&stroke.points(), THIN_PX))?;
+        Ok(points.iter().map(|p| p.pos).collect())
+    };
+    let boundary = StrokeInput {
+        stroke: input.boundary.clone(),
+        ..reference.clone()
+    };
+    let index = model_under(doc, &reference).ok_or(RegionError::ReferenceMissesModel)?;
+    let sketch = RegionSketch {
+        camera: input.camera,
+        viewport,
+        reference: smoothed(&reference)?,
+        boundary: smoothed(&boundary).map_err(|_| RegionError::BoundaryMissesReference)?,
+    };
+    let mesh = &target(doc, index)?.mesh;
+    Ok((index, RegionEdit::new(mesh, &sketch, &levels)?))
+}
+
+fn levels_of(input: &RegionEditInput) -> Result<Levels, RegionError> {
+    input
+        .levels
+        .clone()
+        .map_or(Ok(Levels::default()), Levels::new)
+}
+
+/// A live region edit on one model: the region behind it and what it shows.
+#[derive(Debug)]
+pub(super) struct RegionPreview {
+    built: Option<Built>,
+    /// The transform and levels the shown positions are for, once shown.
+    shown_for: Option<([f64; 16], Option<Vec<f64>>)>,
+    shown: Vec<DVec3>,
+}
+
+/// A region edit and what it was found for.
+#[derive(Debug)]
+struct Built {
+    /// The op, its transform and levels left out.
+    key: RegionEditInput,
+    model: usize,
+    edit: RegionEdit,
+}
+
+impl RegionPreview {
+    /// Shows the document as it is until the first step.
+    pub(super) fn new() -> Self {
+        RegionPreview {
+            built: None,
+            shown_for: None,
+            shown: Vec::new(),
+        }
+    }
+
+    /// Brings what is shown to `input`'s transform and levels, finding the region first if
+    /// the curves changed: `None` when it is there already, `Some(false)` after a step that
+    /// got there.
+    ///
+    /// Errors: the region's refusal (the edit then repeats it; the document is untouched).
+    pub(super) fn step(
+        &mut self,
+        base: &Document,
+        input: &RegionEditInput,
+    ) -> Result<Option<bool>, CommandError> {
+        let wanted = (input.transform, input.levels.clone());
+        let built = edit_for(&mut self.built, base, input)?;
+        if self.shown_for.as_ref() == Some(&wanted) {
+            return Ok(None);
+        }
+        let transform = checked_transform(&input.transform)?;
+        let positions = target(base, built.model)?.mesh.positions();
+        if self.shown.len() != positions.len() {
+            self.shown = positions.to_vec();
+        }
+        built
+            .edit
+            .apply_into(&transform, positions, &mut self.shown);
+        self.shown_for = Some(wanted);
+        Ok(Some(false))
+    }
+
+    /// The committed result of `input`, from the kept region when it serves.
+    ///
+    /// Errors: the region's refusal.
+    pub(super) fn result(
+        &mut self,
+        base: &Document,
+        input: &RegionEditInput,
+    ) -> Result<(usize, Model), CommandError> {
+        let built = edit_for(&mut self.built, base, input)?;
+        let mesh = &target(base, built.model)?.mesh;
+        let positions = built
+            .edit
+            .applied(mesh, &checked_transform(&input.transform)?);
+        Ok((built.model, with_positions(base, built.model, &positions)))
+    }
+
+    /// The model shown and its positions, once the first step moved it.
+    pub(super) fn moved(&self) -> Option<(usize, &[DVec3])> {
+        let built = self.built.as_ref()?;
+        self.shown_for
+            .as_ref()
+            .map(|_| (built.model, &self.shown[..]))
+    }
+
+    /// The model and every vertex's weight (0 outside the region), for the fall-off overlay.
+    pub(super) fn weights(&self) -> Option<(usize, Vec<f64>)> {
+        let built = self.built.as_ref()?;
+        Some((built.model, built.edit.weight_per_vertex(self.shown.len())))
+    }
+}
+
+/// The edit in `slot` if it was found for `input`'s curves (weighed with its levels), else
+/// a new one put there.
+fn edit_for<'a>(
+    slot: &'a mut Option<Built>,
+    base: &Document,
+    input: &RegionEditInput,
+) -> Result<&'a mut Built, CommandError> {
+    let key = RegionEditInput {
+        transform: DMat4::IDENTITY.to_cols_array(),
+        levels: None,
+        ..input.clone()
+    };
+    let mut built = match slot.take() {
+        Some(built) if built.key == key => built,
+        _ => {
+            let (model, edit) = new_region(base, input)?;
+            Built { key, model, edit }
+        }
+    };
+    built.edit.set_levels(&levels_of(input)?);
+    Ok(slot.insert(built))
+}

@@ -32,10 +32,14 @@ const DIST = process.env.SKETCHMESH_DIST ?? join(dirname(fileURLToPath(import.me
 const cases = [];
 const test = (name, body) => cases.push({ name, body });
 
+/** `SKETCHMESH_ONLY=text` runs only the cases whose names hold it (while working on them). */
+const ONLY = process.env.SKETCHMESH_ONLY;
+
 async function runAll() {
   let failed = 0;
   console.log(`# Sketchmesh browser suite: ${gpu} against ${url}`);
   for (const [index, { name, body }] of cases.entries()) {
+    if (ONLY && !name.includes(ONLY)) continue;
     const started = Date.now();
     try {
       await body();
@@ -46,7 +50,8 @@ async function runAll() {
       console.log(String(err?.stack ?? err).replace(/^/gm, '    '));
     }
   }
-  console.log(`# ${gpu}: ${cases.length - failed} passed, ${failed} failed`);
+  const ran = ONLY ? cases.filter(({ name }) => name.includes(ONLY)).length : cases.length;
+  console.log(`# ${gpu}: ${ran - failed} passed, ${failed} failed`);
   return failed;
 }
 
@@ -1006,6 +1011,57 @@ test('feature (D): a sketch across a shape, then a drag up, raises a ridge under
     await frames(fresh.page, 3);
     assert.deepEqual(await glb(), original, 'undo restores the shape bit for bit');
     assert.deepEqual(fresh.errors, [], 'console errors while sketching features');
+}));
+
+test('region (L): a curve on a shape, a loop around it, then a drag up moves the part inside the loop only, live and with its fall-off shown; undo restores', () => withShape(async ({ fresh, created }) => {
+    const c = ELLIPSE.c;
+    const lastOp = () => lastOpOf(fresh.page);
+    await until(lastOp, (o) => o.op === 'create', 15_000);
+    const original = await glbOf(fresh.page);
+    await fresh.page.keyboard.press('l');
+    await frames(fresh.page, 3);
+    const before = await screenshot(fresh.page, out('region-before.png'));
+    await penStroke(fresh.cdp, line({ x: c.x - 60, y: c.y }, { x: c.x + 60, y: c.y }, 20).map((p) => ({ ...p, force: 0.5 })));
+    const loop = Array.from({ length: 49 }, (_, i) => {
+      const a = (2 * Math.PI * i) / 48;
+      return { x: c.x + 110 * Math.cos(a), y: c.y + 85 * Math.sin(a), force: 0.5 };
+    });
+    await penStroke(fresh.cdp, loop);
+    await frames(fresh.page, 3);
+    assert.equal((await lastOp()).op, 'create', 'the two curves alone are no op');
+    // The drag, held half way for a look at the live preview and its fall-off.
+    const pen = { pointerType: 'pen', button: 'left' };
+    const drag = line({ x: c.x, y: c.y + 10 }, { x: c.x, y: c.y - 30 }, 10);
+    await fresh.cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', x: drag[0].x, y: drag[0].y, buttons: 1, clickCount: 1, force: 0.5, ...pen });
+    for (const p of drag.slice(1)) {
+      await sleep(20);
+      await fresh.cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', x: p.x, y: p.y, buttons: 1, force: 0.5, ...pen });
+    }
+    await frames(fresh.page, 4);
+    const dragging = await screenshot(fresh.page, out('region-dragging.png'));
+    const last = drag[drag.length - 1];
+    await fresh.cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', x: last.x, y: last.y, buttons: 0, clickCount: 1, force: 0, ...pen });
+    const op = await until(lastOp, (o) => o.op === 'region_edit', 10_000);
+    assert.equal(op.op, 'region_edit', 'the release commits the region edit');
+    assert.equal(op.transform.length, 16);
+    assert.ok(op.transform[13] > 0, `dragged up, moved up (${op.transform.slice(12, 15)})`);
+    assert.deepEqual(await api(fresh.page, 'stats'), created, 'same vertices, triangles and curves');
+    await frames(fresh.page, 3);
+    const after = await screenshot(fresh.page, out('region.png'));
+    const inside = insideShape();
+    const near = inside.filter((p) => Math.abs(p.y - c.y) < 20 && Math.abs(p.x - c.x) < 50);
+    const far = inside.filter((p) => ((p.x - c.x) / 125) ** 2 + ((p.y - c.y) / 100) ** 2 > 1);
+    const nearChanged = changedFraction(before, after, near, { radius: 0, threshold: 12 });
+    const farChanged = changedFraction(before, after, far, { radius: 0, threshold: 12 });
+    const live = changedFraction(before, dragging, near, { radius: 0, threshold: 12 });
+    console.log(`    region: ${(100 * nearChanged).toFixed(1)}% of the pixels by the curve changed (${(100 * live).toFixed(1)}% mid-drag), ${(100 * farChanged).toFixed(2)}% outside the loop`);
+    assert.ok(nearChanged > 0.2, `the region moves by the curve (${nearChanged})`);
+    assert.ok(live > 0.2, `the drag previews live (${live})`);
+    assert.ok(farChanged < 0.002, `nothing outside the loop moves (${farChanged})`);
+    await fresh.page.keyboard.press('Control+z');
+    await frames(fresh.page, 3);
+    assert.deepEqual(await glbOf(fresh.page), original, 'undo restores the shape bit for bit');
+    assert.deepEqual(fresh.errors, [], 'console errors while editing a region');
 }));
 
 test('cut: a pen stroke across a shape cuts off the part past it after a moment, with a red rim; a tap right after makes a cross-section curve instead; undo restores', () => withShape(async ({ fresh }) => {

@@ -41,6 +41,10 @@ const SHORTCUTS: &[(&str, &str)] = &[
         "Feature: sketch on a model, then drag for a ridge, bump or suggestive contours",
     ),
     (
+        "L",
+        "Region: a curve on a model, a loop around it, then drag: the region follows, fading out",
+    ),
+    (
         "V",
         "Move: tap a model, drag it to move, its ring to turn, its square to scale",
     ),

@@ -5,7 +5,7 @@
 //! whose op previews while it is drawn (pull, over-sketch) begins it as a gesture
 //! ([`ToolOutput::Begin`]) and feeds it samples; the app runs it as it runs every edit.
 //! [`ToolSet`] holds one tool per [`Mode`] (FiberMesh's five tools, over-sketch, feature
-//! sketching and optimize) and routes events to the active one.
+//! sketching, region editing and optimize) and routes events to the active one.
 
 pub mod arrange;
 mod context;
@@ -16,6 +16,7 @@ pub mod mode;
 pub mod optimize;
 pub mod oversketch;
 pub mod pull;
+pub mod region;
 pub mod sketch;
 #[cfg(test)]
 mod test_support;
@@ -36,6 +37,7 @@ use optimize::OptimizeTool;
 pub use oversketch::OversketchSettings;
 use oversketch::{HandlePreview, OversketchTool};
 use pull::PullTool;
+use region::RegionTool;
 use sketch::SketchTool;
 
 /// Every tool, and which one gets the events.
@@ -48,6 +50,7 @@ pub struct ToolSet {
     oversketch: OversketchTool,
     optimize: OptimizeTool,
     feature: FeatureTool,
+    region: RegionTool,
     arrange: ArrangeTool,
 }
 
@@ -83,6 +86,11 @@ impl ToolSet {
         self.feature.settings_ui(ui)
     }
 
+    /// The region tool's panel; what the user did there.
+    pub fn region_ui(&mut self, ui: &mut egui::Ui) -> ToolOutput {
+        self.region.settings_ui(ui)
+    }
+
     /// The move tool's panel; what the user did there.
     pub fn arrange_ui(&mut self, ui: &mut egui::Ui, doc: &Document) -> ToolOutput {
         self.arrange.settings_ui(ui, doc)
@@ -115,6 +123,7 @@ impl ToolSet {
     /// The edit a tool's gesture began was refused: the tool starts over.
     pub fn gesture_refused(&mut self) {
         self.feature.cancel();
+        self.region.cancel();
     }
 
     /// Confirms what the active tool holds open (Enter): an optimization's preview.
@@ -147,6 +156,7 @@ impl ToolSet {
             Mode::Oversketch => self.oversketch.hint(),
             Mode::Optimize => self.optimize.hint(),
             Mode::Feature => self.feature.hint(),
+            Mode::Region => self.region.hint(),
             Mode::Move => self.arrange.hint(doc),
             _ => None,
         }
@@ -159,6 +169,7 @@ impl ToolSet {
         self.oversketch.cancel();
         self.optimize.cancel();
         self.feature.cancel();
+        self.region.cancel();
         self.arrange.cancel();
         self.sketch.cancel()
     }
@@ -174,6 +185,7 @@ impl ToolSet {
             Mode::Oversketch => self.oversketch.on_event(event, view, doc),
             Mode::Optimize => self.optimize.on_event(event, view, doc),
             Mode::Feature => self.feature.on_event(event, view, doc),
+            Mode::Region => self.region.on_event(event, view, doc),
             Mode::Move => self.arrange.on_event(event, view, doc),
         }
     }
@@ -196,6 +208,7 @@ impl ToolSet {
             Mode::Erase | Mode::CurveType | Mode::Rub => self.curve_stroke.preview(),
             Mode::Oversketch => self.oversketch.preview(),
             Mode::Feature => self.feature.preview(),
+            Mode::Region => self.region.preview(),
             Mode::Move => None,
         }
     }
@@ -220,6 +233,7 @@ impl ToolSet {
         match self.mode {
             Mode::Optimize => self.optimize.marks(camera),
             Mode::Feature => self.feature.marks(camera),
+            Mode::Region => self.region.marks(camera),
             _ => Vec::new(),
         }
     }

@@ -1,5 +1,5 @@
 //! The tool modes: FiberMesh's five tools (sketch, deform, erase, type change, rub;
-//! thesis §3.2), over-sketch, feature sketching, optimize and moving models, with their
+//! thesis §3.2), over-sketch, feature sketching, region editing, optimize and moving models, with their
 //! toolbar labels and keys.
 
 use egui::Key;
@@ -25,13 +25,15 @@ pub enum Mode {
     Optimize,
     /// Sketch a ridge, bump, flattening or suggestive contours onto a model.
     Feature,
+    /// Move a region drawn around a reference curve, with a fall-off (Bujans).
+    Region,
     /// Select a model and move, turn or scale it; delete or duplicate it.
     Move,
 }
 
 impl Mode {
     /// Every mode, in toolbar order.
-    pub const ALL: [Mode; 9] = [
+    pub const ALL: [Mode; 10] = [
         Mode::Sketch,
         Mode::Pull,
         Mode::Erase,
@@ -39,6 +41,7 @@ impl Mode {
         Mode::Rub,
         Mode::Oversketch,
         Mode::Feature,
+        Mode::Region,
         Mode::Optimize,
         Mode::Move,
     ];
@@ -54,6 +57,7 @@ impl Mode {
             Mode::Oversketch => "Over-sketch",
             Mode::Optimize => "Optimize",
             Mode::Feature => "Feature",
+            Mode::Region => "Region",
             Mode::Move => "Move",
         }
     }
@@ -69,6 +73,7 @@ impl Mode {
             Mode::Oversketch => Key::O,
             Mode::Optimize => Key::M,
             Mode::Feature => Key::D,
+            Mode::Region => Key::L,
             Mode::Move => Key::V,
         }
     }
@@ -89,6 +94,9 @@ impl Mode {
             }
             Mode::Feature => {
                 "Sketch on a model, then drag: a ridge or ravine, a bump or valley, flattening, suggestive contours"
+            }
+            Mode::Region => {
+                "Draw a curve on a model and a loop around it, then drag: the region follows, fading out"
             }
             Mode::Move => "Tap a model, then drag it, its ring or its square: move, turn, scale",
         }

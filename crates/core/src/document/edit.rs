@@ -58,6 +58,7 @@
 //! one step each (a pull's release at 40k vertices is one long frame); their settle and
 //! remesh would split along the same lines as a creation's iterations.
 
+use crate::mesh::VertexId;
 use glam::DVec3;
 
 use super::arrange::TransformPreview;
@@ -425,11 +426,11 @@ impl Edit {
         }
     }
 
-    /// A region edit's model and every vertex's weight in its fall-off (0 outside the
-    /// region), once the region is found: what the fall-off overlay shows.
-    pub fn region_weights(&self) -> Option<(usize, Vec<f64>)> {
+    /// A region edit's model, the vertices of its region and their weights (1 moves fully,
+    /// 0 stays), once the region is found: what the fall-off overlay shows.
+    pub fn region_falloff(&self) -> Option<(usize, &[VertexId], &[f64])> {
         match &self.work {
-            Work::Region(preview) => preview.weights(),
+            Work::Region(preview) => preview.falloff(),
             _ => None,
         }
     }

@@ -10,7 +10,7 @@
 //! gesture the thesis uses to get a handle for fatness). Anything else is ink on the drawing
 //! plane.
 
-use glam::DVec2;
+use glam::{DVec2, DVec3};
 
 use super::{AddCurveInput, Document, Model, Op, StrokeInput, StrokePairInput};
 use crate::curve::polyline::centroid;
@@ -140,12 +140,19 @@ pub fn model_in_lasso(doc: &Document, lasso: &StrokeInput) -> Option<usize> {
 
 /// The index of the model nearest the eye under `screen`, seen in the stroke's view.
 fn model_at(doc: &Document, input: &StrokeInput, screen: DVec2) -> Option<usize> {
+    surface_at(doc, input, screen).map(|(index, _)| index)
+}
+
+/// The model nearest the eye under `screen`, seen in the stroke's view, and the point of
+/// its surface there.
+pub fn surface_at(doc: &Document, input: &StrokeInput, screen: DVec2) -> Option<(usize, DVec3)> {
     let (origin, dir) = input.camera.ray_in_world(screen, input.viewport_size());
     let hits =
         doc.models.iter().enumerate().filter_map(|(i, model)| {
             raycast(&model.mesh, origin, dir).map(|hit| (hit.distance, i))
         });
-    hits.min_by(|a, b| a.0.total_cmp(&b.0)).map(|(_, i)| i)
+    hits.min_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(distance, i)| (i, origin + dir * distance))
 }
 
 /// Whether the view ray through `screen` hits a model for which `accept` holds.

@@ -42,7 +42,7 @@ pub use error::CommandError;
 pub use gizmo::{Gizmo, GizmoHandle, HANDLE_REACH_PX};
 pub use intent::{
     CLOSE_TOLERANCE_PX, cut_instead, extrude_from, ink_instead, is_cross_section, model_in_lasso,
-    model_under, needs_tap, op_for_stroke, starts_on_model, tunnel_from,
+    model_under, needs_tap, op_for_stroke, starts_on_model, surface_at, tunnel_from,
 };
 pub use op::{
     AddCurveInput, BrushInput, CurveTypeInput, FileInput, ImportInput, MergeInput, ModelInput, Op,
@@ -50,5 +50,6 @@ pub use op::{
     StrokeInput, StrokePairInput, TransformInput,
 };
 pub use oversketch::OutlinePiece;
+pub use region_edit::dragged_region;
 pub use session::{SESSION_FORMAT, SESSION_VERSION, Session};
 pub use session_error::SessionError;

@@ -9,9 +9,10 @@
 use glam::{DMat4, DVec2, DVec3};
 
 use super::outcome::{target, with_positions};
-use super::{CommandError, Document, Model, RegionEditInput, StrokeInput, model_under};
+use super::{CommandError, Document, Model, RegionEditInput, StrokeInput, model_under, surface_at};
 use crate::curve::polyline::thin;
 use crate::curve::process_stroke;
+use crate::mesh::VertexId;
 use crate::region_edit::{Levels, RegionEdit, RegionError, RegionSketch, checked_transform};
 
 /// Input samples nearer than this (CSS px) to the last kept one are dropped before the
@@ -59,6 +60,28 @@ fn new_region(
     };
     let mesh = &target(doc, index)?.mesh;
     Ok((index, RegionEdit::new(mesh, &sketch, &levels)?))
+}
+
+/// `region` with its transform the move, parallel to the screen, that carries the surface
+/// point under the reference curve's middle sample by `offset` CSS px on screen (y down):
+/// the reference curve's drag (Bujans §4, step 5). An offset that cannot be placed (a ray
+/// parallel to the view plane) moves nothing.
+pub fn dragged_region(doc: &Document, region: &RegionEditInput, offset: DVec2) -> RegionEditInput {
+    let reference = region.reference_input();
+    let viewport = reference.viewport_size();
+    let middle = (reference.stroke)
+        .get(reference.stroke.len() / 2)
+        .map_or(DVec2::ZERO, |&[x, y, _]| DVec2::new(x, y));
+    let anchor = surface_at(doc, &reference, middle).map_or(region.camera.target, |(_, p)| p);
+    let on_plane = |at: DVec2| region.camera.point_on_plane_through(anchor, at, viewport);
+    let shift = match (on_plane(middle), on_plane(middle + offset)) {
+        (Some(from), Some(to)) => to - from,
+        _ => DVec3::ZERO,
+    };
+    RegionEditInput {
+        transform: DMat4::from_translation(shift).to_cols_array(),
+        ..region.clone()
+    }
 }
 
 fn levels_of(input: &RegionEditInput) -> Result<Levels, RegionError> {
@@ -147,10 +170,10 @@ impl RegionPreview {
             .map(|_| (built.model, &self.shown[..]))
     }
 
-    /// The model and every vertex's weight (0 outside the region), for the fall-off overlay.
-    pub(super) fn weights(&self) -> Option<(usize, Vec<f64>)> {
+    /// The model, the region's vertices and their weights, for the fall-off overlay.
+    pub(super) fn falloff(&self) -> Option<(usize, &[VertexId], &[f64])> {
         let built = self.built.as_ref()?;
-        Some((built.model, built.edit.weight_per_vertex(self.shown.len())))
+        Some((built.model, built.edit.vertices(), built.edit.weights()))
     }
 }
 

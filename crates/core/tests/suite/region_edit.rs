@@ -6,7 +6,7 @@
 use glam::{DMat4, DQuat, DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::polyline::contains;
-use sketchmesh_core::document::{CommandError, Editor, Op, RegionEditInput};
+use sketchmesh_core::document::{CommandError, Editor, Op, RegionEditInput, dragged_region};
 use sketchmesh_core::geometry::Fractions;
 use sketchmesh_core::mesh::{Mesh, primitives};
 use sketchmesh_core::region_edit::{Levels, RegionEdit, RegionError, RegionSketch};
@@ -176,8 +176,9 @@ fn the_op_replays_and_its_drag_commits_what_replay_gives() {
         assert_eq!(model, 0);
         assert!(shown.iter().zip(imported.positions()).any(|(a, b)| a != b));
     }
-    let (_, weights) = edit.region_weights().unwrap();
-    assert_eq!(weights.len(), imported.n_vertices());
+    let (model, vertices, weights) = edit.region_falloff().unwrap();
+    assert_eq!((model, vertices.len()), (0, weights.len()));
+    assert!(weights.contains(&1.0) && weights.iter().all(|&w| w >= 0.0));
     edit.finish(&mut editor).unwrap();
     let mut applied = Editor::new();
     applied.apply(import_mesh("sphere.glb", &mesh)).unwrap();
@@ -297,4 +298,27 @@ fn a_region_on_scans_moves_inside_its_boundary_only() {
         );
         assert!(edit.vertices().len() > 50, "{name}");
     }
+}
+
+#[test]
+fn a_drag_carries_the_reference_curve_with_the_pointer() {
+    let mesh = primitives::icosphere(1.0, 4);
+    let sketch = curves(&mesh, 60.0, 140.0);
+    let mut editor = Editor::new();
+    editor.apply(import_mesh("sphere.glb", &mesh)).unwrap();
+    let Op::RegionEdit(still) = op(&sketch, DMat4::IDENTITY, None) else {
+        unreachable!()
+    };
+    let offset = DVec2::new(30.0, -50.0);
+    let dragged = dragged_region(editor.document(), &still, offset);
+    editor.apply(Op::RegionEdit(dragged)).unwrap();
+    let edit = RegionEdit::new(&mesh, &sketch, &Levels::default()).unwrap();
+    let moved = &editor.document().models[0].mesh;
+    let middle = edit.reference()[edit.reference().len() / 2];
+    let px = |m: &Mesh| screen(&sketch.camera, VIEWPORT, m.position(middle)).unwrap();
+    let shift = px(moved) - px(&mesh);
+    assert!(
+        shift.distance(offset) < 2.0,
+        "moved {shift} on screen for {offset}"
+    );
 }

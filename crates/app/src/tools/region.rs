@@ -1,0 +1,303 @@
+//! The region tool (Bujans' region editor, `003_…` §4): draw a reference curve on a model,
+//! then a closed boundary around it, then drag: the region follows the pointer, fully at
+//! the reference curve and fading to nothing at the boundary, with a live preview and the
+//! fall-off shown on the model while it moves; release keeps it as one undo step.
+//!
+//! The drag begins a `region_edit` edit as a gesture at pointer-down, as the feature tool
+//! does; each move revises its transform (the core finds the region once and only moves it
+//! again), and release commits the last one. The fall-off's shape is picked in the
+//! toolbar's second row.
+
+use glam::DVec2;
+use sketchmesh_core::camera::Camera;
+use sketchmesh_core::curve::{StrokePoint, is_closed_loop};
+use sketchmesh_core::document::{
+    CLOSE_TOLERANCE_PX, Document, Op, RegionEditInput, StrokeInput, dragged_region, model_under,
+};
+
+use super::context::{ToolOutput, ViewCtx};
+use super::draw::{DrawTool, is_tap, point};
+use super::optimize::Mark;
+use crate::input::router::ToolEvent;
+
+/// The fall-off shapes offered: a label, a tooltip and the levels (weights from the boundary
+/// to the reference curve).
+const FALLOFFS: [(&str, &str, [f64; 5]); 4] = [
+    (
+        "Linear",
+        "Moves in proportion to the closeness to the curve",
+        [0.0, 0.25, 0.5, 0.75, 1.0],
+    ),
+    (
+        "Smooth",
+        "Eases in at the boundary and out at the curve",
+        [0.0, 0.1, 0.5, 0.9, 1.0],
+    ),
+    (
+        "Narrow",
+        "Only the part near the curve moves much",
+        [0.0, 0.0, 0.1, 0.4, 1.0],
+    ),
+    (
+        "Broad",
+        "Most of the region moves with the curve",
+        [0.0, 0.6, 0.9, 1.0, 1.0],
+    ),
+];
+
+/// Where the tool is.
+#[derive(Debug, Default)]
+enum Stage {
+    /// Drawing the reference curve.
+    #[default]
+    Reference,
+    /// The reference curve is drawn; the next closed stroke is the boundary.
+    Boundary(StrokeInput),
+    /// Both curves are drawn: the next drag moves the region.
+    Ready(RegionEditInput),
+    /// Dragging from where the pointer went down.
+    Dragging(RegionEditInput, DVec2),
+}
+
+/// The region tool's state: the curves, the fall-off and the drag.
+#[derive(Debug, Default)]
+pub struct RegionTool {
+    draw: DrawTool,
+    /// Which of [`FALLOFFS`] the region moves with.
+    falloff: usize,
+    stage: Stage,
+}
+
+impl RegionTool {
+    /// Feeds one event: strokes make the two curves, the drag after them the edit.
+    pub fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
+        match std::mem::take(&mut self.stage) {
+            Stage::Reference => self.reference(event, view, doc),
+            Stage::Boundary(reference) => self.boundary(reference, event, view),
+            Stage::Ready(input) => match event {
+                ToolEvent::Begin(s) => {
+                    self.stage = Stage::Dragging(input.clone(), point(s, view).pos);
+                    ToolOutput::Begin(Op::RegionEdit(input))
+                }
+                _ => {
+                    self.stage = Stage::Ready(input);
+                    ToolOutput::None
+                }
+            },
+            Stage::Dragging(input, from) => match event {
+                ToolEvent::Move(s) => {
+                    let op = Op::RegionEdit(dragged_region(doc, &input, point(s, view).pos - from));
+                    self.stage = Stage::Dragging(input, from);
+                    ToolOutput::Revise(op)
+                }
+                ToolEvent::End(s) => {
+                    let offset = point(s, view).pos - from;
+                    ToolOutput::FinishWith(Op::RegionEdit(dragged_region(doc, &input, offset)))
+                }
+                ToolEvent::Cancel => ToolOutput::Cancel,
+                ToolEvent::Begin(_) => {
+                    self.stage = Stage::Dragging(input, from);
+                    ToolOutput::None
+                }
+            },
+        }
+    }
+
+    /// A finished first stroke: the reference curve, which must start on a model.
+    fn reference(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
+        let Some(input) = self.draw.capture(event, view) else {
+            return ToolOutput::None;
+        };
+        if is_tap(&input) {
+            return ToolOutput::None;
+        }
+        if model_under(doc, &input).is_none() {
+            let sentence = "Start the reference curve on a model: it is the part that moves.";
+            return ToolOutput::Refused(String::from(sentence));
+        }
+        self.stage = Stage::Boundary(input);
+        ToolOutput::None
+    }
+
+    /// A finished second stroke: the boundary, which must be a closed loop.
+    fn boundary(
+        &mut self,
+        reference: StrokeInput,
+        event: &ToolEvent,
+        view: &ViewCtx,
+    ) -> ToolOutput {
+        let Some(input) = self.draw.capture(event, view) else {
+            self.stage = Stage::Boundary(reference);
+            return ToolOutput::None;
+        };
+        let closed = is_closed_loop(&input.points(), CLOSE_TOLERANCE_PX);
+        if is_tap(&input) || !closed || input.camera != reference.camera {
+            self.stage = Stage::Boundary(reference);
+            let sentence = "Draw the boundary as a closed loop around the reference curve.";
+            return ToolOutput::Refused(String::from(sentence));
+        }
+        let mut boundary = input.stroke;
+        if boundary.len() > 1 && boundary.first() == boundary.last() {
+            boundary.pop();
+        }
+        self.stage = Stage::Ready(RegionEditInput {
+            viewport: reference.viewport,
+            camera: reference.camera,
+            reference: reference.stroke,
+            boundary,
+            levels: Some(FALLOFFS[self.falloff].2.to_vec()),
+            transform: glam::DMat4::IDENTITY.to_cols_array(),
+        });
+        ToolOutput::None
+    }
+
+    /// Forgets the curves and the drag (the app cancels its edit).
+    pub fn cancel(&mut self) {
+        self.draw = DrawTool::Idle;
+        self.stage = Stage::Reference;
+    }
+
+    /// The stroke being drawn, for live display.
+    pub fn preview(&self) -> Option<&[StrokePoint]> {
+        self.draw.preview()
+    }
+
+    /// The curves drawn so far, while the view is the one they were drawn in.
+    pub fn marks(&self, camera: &Camera) -> Vec<Mark> {
+        let mark = |points: Vec<StrokePoint>, features| Mark {
+            points,
+            radius: None,
+            features,
+        };
+        match &self.stage {
+            Stage::Boundary(reference) if reference.camera == *camera => {
+                vec![mark(reference.points(), true)]
+            }
+            Stage::Ready(input) if input.camera == *camera => {
+                let boundary = StrokeInput {
+                    stroke: input.boundary.clone(),
+                    ..input.reference_input()
+                };
+                vec![
+                    mark(input.reference_input().points(), true),
+                    mark(boundary.points(), false),
+                ]
+            }
+            _ => Vec::new(),
+        }
+    }
+
+    /// What the tool asks the user to do next.
+    pub fn hint(&self) -> Option<&'static str> {
+        match self.stage {
+            Stage::Reference => Some("Draw a reference curve on a model: the part that moves most"),
+            Stage::Boundary(_) => {
+                Some("Now draw a closed boundary around it: what lies outside stays")
+            }
+            Stage::Ready(_) => Some("Drag: the region follows, fading out toward the boundary"),
+            Stage::Dragging(..) => None,
+        }
+    }
+
+    /// The panel: the fall-off's shape, and Clear.
+    pub fn settings_ui(&mut self, ui: &mut egui::Ui) -> ToolOutput {
+        for (i, (label, hint, levels)) in FALLOFFS.iter().enumerate() {
+            let button = egui::Button::selectable(self.falloff == i, *label)
+                .min_size(egui::vec2(36.0, 36.0));
+            if ui.add(button).on_hover_text(*hint).clicked() {
+                self.falloff = i;
+                if let Stage::Ready(input) = &mut self.stage {
+                    input.levels = Some(levels.to_vec());
+                }
+            }
+        }
+        let drawn = !matches!(self.stage, Stage::Reference);
+        if ui
+            .add_enabled(drawn, egui::Button::new("Clear curves"))
+            .on_hover_text("Draw a new reference curve and boundary")
+            .clicked()
+        {
+            self.cancel();
+        }
+        ToolOutput::None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::input::Phase;
+    use crate::tools::test_support::{pen, shape, view};
+
+    /// Feeds a pen stroke through screen points; the last output that says something.
+    fn stroke(tool: &mut RegionTool, doc: &Document, points: &[DVec2]) -> ToolOutput {
+        let at = |phase, p: DVec2| pen(phase, p.x as f32, p.y as f32);
+        let view = view();
+        let mut said = tool.on_event(&ToolEvent::Begin(at(Phase::Down, points[0])), &view, doc);
+        for &p in &points[1..] {
+            let out = tool.on_event(&ToolEvent::Move(at(Phase::Move, p)), &view, doc);
+            said = if out == ToolOutput::None { said } else { out };
+        }
+        let last = points[points.len() - 1];
+        match tool.on_event(&ToolEvent::End(at(Phase::Up, last)), &view, doc) {
+            ToolOutput::None => said,
+            out => out,
+        }
+    }
+
+    #[test]
+    fn a_curve_a_loop_and_a_drag_make_one_region_edit() {
+        let editor = shape();
+        let doc = editor.document();
+        // The shape's middle, in screen points.
+        let centre = DVec2::new(400.0, 340.0);
+        let mut tool = RegionTool::default();
+        let line: Vec<DVec2> = (0..=20)
+            .map(|i| centre + DVec2::new(4.0 * f64::from(i) - 40.0, 0.0))
+            .collect();
+        assert_eq!(stroke(&mut tool, doc, &line), ToolOutput::None);
+        assert!(tool.hint().unwrap().contains("boundary"));
+        let open: Vec<DVec2> = (0..=20)
+            .map(|i| centre + DVec2::new(4.0 * f64::from(i), 60.0))
+            .collect();
+        assert!(
+            matches!(stroke(&mut tool, doc, &open), ToolOutput::Refused(_)),
+            "an open boundary is refused"
+        );
+        let ring: Vec<DVec2> = (0..=48)
+            .map(|i| centre + 90.0 * DVec2::from_angle(std::f64::consts::TAU * f64::from(i) / 48.0))
+            .collect();
+        assert_eq!(stroke(&mut tool, doc, &ring), ToolOutput::None);
+        assert_eq!(tool.marks(&view().camera).len(), 2);
+        let drag = [centre, centre - DVec2::Y * 20.0, centre - DVec2::Y * 40.0];
+        let at = |phase, p: DVec2| pen(phase, p.x as f32, p.y as f32);
+        let begun = tool.on_event(&ToolEvent::Begin(at(Phase::Down, drag[0])), &view(), doc);
+        let ToolOutput::Begin(Op::RegionEdit(begun)) = begun else {
+            panic!("{begun:?}")
+        };
+        assert_eq!(begun.transform, glam::DMat4::IDENTITY.to_cols_array());
+        let revised = tool.on_event(&ToolEvent::Move(at(Phase::Move, drag[1])), &view(), doc);
+        assert!(matches!(revised, ToolOutput::Revise(Op::RegionEdit(_))));
+        let done = tool.on_event(&ToolEvent::End(at(Phase::Up, drag[2])), &view(), doc);
+        let ToolOutput::FinishWith(Op::RegionEdit(done)) = done else {
+            panic!("the release finishes the edit: {done:?}")
+        };
+        let moved = glam::DMat4::from_cols_array(&done.transform)
+            .w_axis
+            .truncate();
+        assert!(moved.y > 0.0, "dragged up, moved up: {moved}");
+        assert_eq!(done.reference, begun.reference);
+    }
+
+    #[test]
+    fn a_reference_curve_off_the_models_is_refused() {
+        let editor = shape();
+        let mut tool = RegionTool::default();
+        let far: Vec<DVec2> = (0..=10)
+            .map(|i| DVec2::new(20.0 + 4.0 * f64::from(i), 60.0))
+            .collect();
+        let said = stroke(&mut tool, editor.document(), &far);
+        assert!(matches!(said, ToolOutput::Refused(_)), "{said:?}");
+        assert!(tool.hint().unwrap().contains("reference"));
+    }
+}

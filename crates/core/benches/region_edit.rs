@@ -14,6 +14,10 @@ use sketchmesh_core::mesh::primitives;
 use sketchmesh_core::region_edit::{Levels, RegionEdit, RegionSketch, checked_transform};
 
 #[path = "common/feature.rs"]
+#[allow(
+    dead_code,
+    reason = "its 41k sphere: this bench needs four times the vertices"
+)]
 mod feature;
 
 /// The boundary's radius as a fraction of the sphere's on screen: the front-facing cap

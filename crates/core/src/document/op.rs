@@ -614,6 +614,14 @@ mod tests {
                 amount: None,
                 region: None,
             }),
+            Op::RegionEdit(RegionEditInput {
+                viewport: [1.0, 1.0],
+                camera: Camera::default(),
+                reference: Vec::new(),
+                boundary: Vec::new(),
+                levels: None,
+                transform: glam::DMat4::IDENTITY.to_cols_array(),
+            }),
             Op::Undo,
             Op::Redo,
         ];

@@ -53,7 +53,7 @@ use proptest::test_runner::{Config, FileFailurePersistence, RngSeed, TestRunner}
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
     CommandError, ControlCurve, Document, Editor, MergeInput, Model, ModelInput, Op, OversketchFit,
-    SketchFeatureInput, StrokeInput, StrokePairInput, TransformInput,
+    RegionEditInput, SketchFeatureInput, StrokeInput, StrokePairInput, TransformInput,
 };
 use sketchmesh_core::feature::FeatureKind;
 use sketchmesh_core::geometry::{Bvh, vertex_normals};
@@ -216,6 +216,16 @@ enum Step {
         direction: f64,
         span: f64,
         amount: f64,
+    },
+    /// A region around a reference curve across the middle of a model, lifted and turned.
+    Region {
+        view: View,
+        model: usize,
+        direction: f64,
+        span: f64,
+        boundary: f64,
+        lift: f64,
+        degrees: f64,
     },
     /// A curve tool or an over-sketch far from every model: refused.
     Stray {
@@ -387,10 +397,31 @@ fn step() -> impl Strategy<Value = Step> {
                 amount,
             },
         );
+    let region = (
+        view(),
+        0usize..8,
+        0.0..std::f64::consts::PI,
+        0.1..0.4f64,
+        0.5..1.2f64,
+        -0.3..0.3f64,
+        -60.0..60.0f64,
+    )
+        .prop_map(
+            |(view, model, direction, span, boundary, lift, degrees)| Step::Region {
+                view,
+                model,
+                direction,
+                span,
+                boundary,
+                lift,
+                degrees,
+            },
+        );
     prop_oneof![
         2 => outline_step().prop_map(Step::Create),
         1 => import,
         2 => feature,
+        1 => region,
         3 => pull,
         3 => add,
         2 => cut,
@@ -797,6 +828,37 @@ fn op_for(step: &Step, document: &Document) -> Op {
                     *amount
                 }),
                 region: None,
+            })
+        }
+        Step::Region {
+            view,
+            model,
+            direction,
+            span,
+            boundary,
+            lift,
+            degrees,
+        } => {
+            let camera = view.camera();
+            let (centre, radius) = pick_model(document, *model)
+                .and_then(|model| projection(model, &camera))
+                .unwrap_or((nowhere()[0], 10.0));
+            let half = span * radius * DVec2::from_angle(*direction);
+            let reference = input(camera, &segment(centre - half, centre + half));
+            let mut ring = crate::common::circle(centre, boundary * radius);
+            ring.pop();
+            let size = pick_model(document, *model)
+                .and_then(|model| model.mesh.bounding_box())
+                .map_or(1.0, |(lo, hi)| (hi - lo).length());
+            let transform = glam::DMat4::from_translation(glam::DVec3::Y * (lift * size))
+                * glam::DMat4::from_rotation_z(degrees.to_radians());
+            Op::RegionEdit(RegionEditInput {
+                viewport: reference.viewport,
+                camera,
+                reference: reference.stroke,
+                boundary: input(camera, &ring).stroke,
+                levels: None,
+                transform: transform.to_cols_array(),
             })
         }
         Step::Stray { kind } => {

@@ -12,7 +12,8 @@ use glam::DVec2;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::{StrokePoint, is_closed_loop};
 use sketchmesh_core::document::{
-    CLOSE_TOLERANCE_PX, Document, Op, RegionEditInput, StrokeInput, dragged_region, model_under,
+    CLOSE_TOLERANCE_PX, Document, Op, RegionDrag, RegionEditInput, StrokeInput, dragged_region,
+    model_under,
 };
 
 use super::context::{ToolOutput, ViewCtx};
@@ -45,6 +46,21 @@ const FALLOFFS: [(&str, &str, [f64; 5]); 4] = [
     ),
 ];
 
+/// What a drag may do, as the toolbar offers it.
+const DRAGS: [(RegionDrag, &str, &str); 3] = [
+    (RegionDrag::Move, "Move", "The region follows the pointer"),
+    (
+        RegionDrag::Turn,
+        "Turn",
+        "Drag sideways: the region turns about the curve's middle",
+    ),
+    (
+        RegionDrag::Scale,
+        "Scale",
+        "Drag up to grow the region, down to shrink it",
+    ),
+];
+
 /// Where the tool is.
 #[derive(Debug, Default)]
 enum Stage {
@@ -65,6 +81,8 @@ pub struct RegionTool {
     draw: DrawTool,
     /// Which of [`FALLOFFS`] the region moves with.
     falloff: usize,
+    /// What a drag does.
+    drag: RegionDrag,
     stage: Stage,
 }
 
@@ -86,13 +104,15 @@ impl RegionTool {
             },
             Stage::Dragging(input, from) => match event {
                 ToolEvent::Move(s) => {
-                    let op = Op::RegionEdit(dragged_region(doc, &input, point(s, view).pos - from));
+                    let offset = point(s, view).pos - from;
+                    let op = Op::RegionEdit(dragged_region(doc, &input, self.drag, offset));
                     self.stage = Stage::Dragging(input, from);
                     ToolOutput::Revise(op)
                 }
                 ToolEvent::End(s) => {
                     let offset = point(s, view).pos - from;
-                    ToolOutput::FinishWith(Op::RegionEdit(dragged_region(doc, &input, offset)))
+                    let done = dragged_region(doc, &input, self.drag, offset);
+                    ToolOutput::FinishWith(Op::RegionEdit(done))
                 }
                 ToolEvent::Cancel => ToolOutput::Cancel,
                 ToolEvent::Begin(_) => {
@@ -194,13 +214,27 @@ impl RegionTool {
             Stage::Boundary(_) => {
                 Some("Now draw a closed boundary around it: what lies outside stays")
             }
-            Stage::Ready(_) => Some("Drag: the region follows, fading out toward the boundary"),
+            Stage::Ready(_) => Some(match self.drag {
+                RegionDrag::Move => "Drag: the region follows, fading out toward the boundary",
+                RegionDrag::Turn => {
+                    "Drag sideways: the region turns, fading out toward the boundary"
+                }
+                RegionDrag::Scale => "Drag up or down: the region grows or shrinks, fading out",
+            }),
             Stage::Dragging(..) => None,
         }
     }
 
-    /// The panel: the fall-off's shape, and Clear.
+    /// The panel: what a drag does, the fall-off's shape, and Clear.
     pub fn settings_ui(&mut self, ui: &mut egui::Ui) -> ToolOutput {
+        for (drag, label, hint) in DRAGS {
+            let button =
+                egui::Button::selectable(self.drag == drag, label).min_size(egui::vec2(36.0, 36.0));
+            if ui.add(button).on_hover_text(hint).clicked() {
+                self.drag = drag;
+            }
+        }
+        ui.separator();
         for (i, (label, hint, levels)) in FALLOFFS.iter().enumerate() {
             let button = egui::Button::selectable(self.falloff == i, *label)
                 .min_size(egui::vec2(36.0, 36.0));

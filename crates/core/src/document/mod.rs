@@ -50,6 +50,6 @@ pub use op::{
     StrokeInput, StrokePairInput, TransformInput,
 };
 pub use oversketch::OutlinePiece;
-pub use region_edit::dragged_region;
+pub use region_edit::{RegionDrag, dragged_region};
 pub use session::{SESSION_FORMAT, SESSION_VERSION, Session};
 pub use session_error::SessionError;

@@ -62,24 +62,71 @@ fn new_region(
     Ok((index, RegionEdit::new(mesh, &sketch, &levels)?))
 }
 
-/// `region` with its transform the move, parallel to the screen, that carries the surface
-/// point under the reference curve's middle sample by `offset` CSS px on screen (y down):
-/// the reference curve's drag (Bujans §4, step 5). An offset that cannot be placed (a ray
-/// parallel to the view plane) moves nothing.
-pub fn dragged_region(doc: &Document, region: &RegionEditInput, offset: DVec2) -> RegionEditInput {
+/// What a drag does to a region, about the surface point under the reference curve's
+/// middle sample (its anchor).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum RegionDrag {
+    /// Moves the anchor with the pointer, parallel to the screen (Bujans §4, step 5).
+    #[default]
+    Move,
+    /// Turns about the view axis through the anchor: right turns clockwise as seen.
+    Turn,
+    /// Scales about the anchor: up grows, down shrinks.
+    Scale,
+}
+
+/// Degrees a [`RegionDrag::Turn`] turns per CSS px of sideways drag.
+const TURN_DEGREES_PER_PX: f64 = 0.5;
+/// The largest turn a drag makes: short of half a turn, where `w ⊙ T` has no meaning.
+const MAX_TURN_DEGREES: f64 = 170.0;
+/// CSS px of upward drag that double the size in a [`RegionDrag::Scale`].
+const PX_PER_DOUBLING: f64 = 150.0;
+/// The scale a drag stays within: 1/10 to 10.
+const MAX_SCALE: f64 = 10.0;
+
+/// `region` with its transform set by a drag of `offset` CSS px on screen (y down); see
+/// [`RegionDrag`]. An offset that cannot be placed (a ray parallel to the view plane) moves
+/// nothing.
+pub fn dragged_region(
+    doc: &Document,
+    region: &RegionEditInput,
+    drag: RegionDrag,
+    offset: DVec2,
+) -> RegionEditInput {
     let reference = region.reference_input();
     let viewport = reference.viewport_size();
+    let camera = &region.camera;
     let middle = (reference.stroke)
         .get(reference.stroke.len() / 2)
         .map_or(DVec2::ZERO, |&[x, y, _]| DVec2::new(x, y));
-    let anchor = surface_at(doc, &reference, middle).map_or(region.camera.target, |(_, p)| p);
-    let on_plane = |at: DVec2| region.camera.point_on_plane_through(anchor, at, viewport);
-    let shift = match (on_plane(middle), on_plane(middle + offset)) {
-        (Some(from), Some(to)) => to - from,
-        _ => DVec3::ZERO,
+    let anchor = surface_at(doc, &reference, middle).map_or(camera.target, |(_, p)| p);
+    let about = |m: DMat4| DMat4::from_translation(anchor) * m * DMat4::from_translation(-anchor);
+    let transform = match drag {
+        RegionDrag::Move => {
+            let on_plane = |at: DVec2| camera.point_on_plane_through(anchor, at, viewport);
+            let shift = match (on_plane(middle), on_plane(middle + offset)) {
+                (Some(from), Some(to)) => to - from,
+                _ => DVec3::ZERO,
+            };
+            DMat4::from_translation(shift)
+        }
+        RegionDrag::Turn => {
+            let degrees =
+                (offset.x * TURN_DEGREES_PER_PX).clamp(-MAX_TURN_DEGREES, MAX_TURN_DEGREES);
+            about(DMat4::from_axis_angle(
+                camera.forward(),
+                degrees.to_radians(),
+            ))
+        }
+        RegionDrag::Scale => {
+            let factor = (-offset.y / PX_PER_DOUBLING).exp2();
+            about(DMat4::from_scale(DVec3::splat(
+                factor.clamp(1.0 / MAX_SCALE, MAX_SCALE),
+            )))
+        }
     };
     RegionEditInput {
-        transform: DMat4::from_translation(shift).to_cols_array(),
+        transform: transform.to_cols_array(),
         ..region.clone()
     }
 }

@@ -6,7 +6,9 @@
 use glam::{DMat4, DQuat, DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::polyline::contains;
-use sketchmesh_core::document::{CommandError, Editor, Op, RegionEditInput, dragged_region};
+use sketchmesh_core::document::{
+    CommandError, Editor, Op, RegionDrag, RegionEditInput, dragged_region,
+};
 use sketchmesh_core::geometry::Fractions;
 use sketchmesh_core::mesh::{Mesh, primitives};
 use sketchmesh_core::region_edit::{Levels, RegionEdit, RegionError, RegionSketch};
@@ -310,7 +312,7 @@ fn a_drag_carries_the_reference_curve_with_the_pointer() {
         unreachable!()
     };
     let offset = DVec2::new(30.0, -50.0);
-    let dragged = dragged_region(editor.document(), &still, offset);
+    let dragged = dragged_region(editor.document(), &still, RegionDrag::Move, offset);
     editor.apply(Op::RegionEdit(dragged)).unwrap();
     let edit = RegionEdit::new(&mesh, &sketch, &Levels::default()).unwrap();
     let moved = &editor.document().models[0].mesh;
@@ -321,4 +323,40 @@ fn a_drag_carries_the_reference_curve_with_the_pointer() {
         shift.distance(offset) < 2.0,
         "moved {shift} on screen for {offset}"
     );
+}
+
+#[test]
+fn a_turning_drag_twists_the_region_about_the_curve_s_middle() {
+    let mesh = primitives::icosphere(1.0, 4);
+    let sketch = curves(&mesh, 60.0, 140.0);
+    let mut editor = Editor::new();
+    editor.apply(import_mesh("sphere.glb", &mesh)).unwrap();
+    let Op::RegionEdit(still) = op(&sketch, DMat4::IDENTITY, None) else {
+        unreachable!()
+    };
+    let doc = editor.document();
+    // 60 px to the right: 30° clockwise as seen, about the view axis.
+    let turned = dragged_region(doc, &still, RegionDrag::Turn, DVec2::new(60.0, 0.0));
+    let t = DMat4::from_cols_array(&turned.transform);
+    let edit = RegionEdit::new(&mesh, &sketch, &Levels::default()).unwrap();
+    let ends = [edit.reference()[0], *edit.reference().last().unwrap()];
+    let [a, b] = ends.map(|v| screen(&sketch.camera, VIEWPORT, mesh.position(v)).unwrap());
+    let [a2, b2] = ends.map(|v| {
+        screen(
+            &sketch.camera,
+            VIEWPORT,
+            t.transform_point3(mesh.position(v)),
+        )
+        .unwrap()
+    });
+    // On screen, y down, a positive angle turns clockwise.
+    let angle = (b - a).angle_to(b2 - a2).to_degrees();
+    assert!((angle - 30.0).abs() < 2.0, "turned {angle}° on screen");
+    // Up 150 px doubles; turns stop short of half a turn.
+    let grown = dragged_region(doc, &still, RegionDrag::Scale, DVec2::new(0.0, -150.0));
+    let m = DMat4::from_cols_array(&grown.transform);
+    assert!((m.x_axis.x - 2.0).abs() < 1e-12 && (m.determinant() - 8.0).abs() < 1e-9);
+    let far = dragged_region(doc, &still, RegionDrag::Turn, DVec2::new(2000.0, 0.0));
+    editor.apply(Op::RegionEdit(far)).unwrap();
+    editor.apply(Op::RegionEdit(grown)).unwrap();
 }

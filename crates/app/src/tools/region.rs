@@ -76,14 +76,25 @@ enum Stage {
 }
 
 /// The region tool's state: the curves, the fall-off and the drag.
-#[derive(Debug, Default)]
+#[derive(Debug)]
 pub struct RegionTool {
     draw: DrawTool,
-    /// Which of [`FALLOFFS`] the region moves with.
-    falloff: usize,
+    /// The fall-off's levels: weights from the boundary to the reference curve.
+    levels: Vec<f64>,
     /// What a drag does.
     drag: RegionDrag,
     stage: Stage,
+}
+
+impl Default for RegionTool {
+    fn default() -> Self {
+        RegionTool {
+            draw: DrawTool::default(),
+            levels: FALLOFFS[0].2.to_vec(),
+            drag: RegionDrag::default(),
+            stage: Stage::default(),
+        }
+    }
 }
 
 impl RegionTool {
@@ -165,7 +176,7 @@ impl RegionTool {
             camera: reference.camera,
             reference: reference.stroke,
             boundary,
-            levels: Some(FALLOFFS[self.falloff].2.to_vec()),
+            levels: Some(self.levels.clone()),
             transform: glam::DMat4::IDENTITY.to_cols_array(),
         });
         ToolOutput::None
@@ -235,15 +246,18 @@ impl RegionTool {
             }
         }
         ui.separator();
-        for (i, (label, hint, levels)) in FALLOFFS.iter().enumerate() {
-            let button = egui::Button::selectable(self.falloff == i, *label)
+        let mut changed = false;
+        for (label, hint, levels) in FALLOFFS {
+            let button = egui::Button::selectable(self.levels == levels, label)
                 .min_size(egui::vec2(36.0, 36.0));
-            if ui.add(button).on_hover_text(*hint).clicked() {
-                self.falloff = i;
-                if let Stage::Ready(input) = &mut self.stage {
-                    input.levels = Some(levels.to_vec());
-                }
+            if ui.add(button).on_hover_text(hint).clicked() {
+                self.levels = levels.to_vec();
+                changed = true;
             }
+        }
+        changed |= levels_ui(ui, &mut self.levels);
+        if changed && let Stage::Ready(input) = &mut self.stage {
+            input.levels = Some(self.levels.clone());
         }
         let drawn = !matches!(self.stage, Stage::Reference);
         if ui
@@ -255,6 +269,51 @@ impl RegionTool {
         }
         ToolOutput::None
     }
+}
+
+/// Size of the levels graph in the toolbar, in points: as tall as its buttons.
+const GRAPH_SIZE: egui::Vec2 = egui::vec2(150.0, 36.0);
+
+/// The fall-off as a graph, the boundary on the left and the reference curve on the right,
+/// each level a dot at its weight: pressing or dragging sets the weight of the level nearest
+/// the pointer across (so a drag draws the profile). Whether a weight changed.
+fn levels_ui(ui: &mut egui::Ui, levels: &mut [f64]) -> bool {
+    let (rect, response) = ui.allocate_exact_size(GRAPH_SIZE, egui::Sense::click_and_drag());
+    let response = response.on_hover_text(
+        "The fall-off from the boundary (left) to the curve (right): drag the dots up or down",
+    );
+    let last = (levels.len() - 1) as f32;
+    let inner = rect.shrink(6.0);
+    let at = |i: usize, w: f64| {
+        egui::pos2(
+            inner.left() + inner.width() * i as f32 / last,
+            inner.bottom() - inner.height() * w as f32,
+        )
+    };
+    let mut changed = false;
+    if let Some(pointer) = response.interact_pointer_pos()
+        && (response.dragged() || response.clicked() || response.drag_started())
+    {
+        let across = ((pointer.x - inner.left()) / inner.width()).clamp(0.0, 1.0);
+        let i = (across * last).round() as usize;
+        let w = f64::from(((inner.bottom() - pointer.y) / inner.height()).clamp(0.0, 1.0));
+        changed = (levels[i] - w).abs() > 1e-9;
+        levels[i] = w;
+    }
+    let painter = ui.painter();
+    let visuals = ui.visuals();
+    painter.rect_filled(rect, 4.0, visuals.extreme_bg_color);
+    let points: Vec<egui::Pos2> = levels.iter().enumerate().map(|(i, &w)| at(i, w)).collect();
+    painter.add(egui::Shape::line(
+        points.clone(),
+        egui::Stroke::new(2.0, visuals.widgets.active.fg_stroke.color),
+    ));
+    for (point, &w) in points.iter().zip(levels.iter()) {
+        let gray = (30.0 + 225.0 * w) as u8;
+        painter.circle_filled(*point, 5.0, egui::Color32::from_gray(gray));
+        painter.circle_stroke(*point, 5.0, egui::Stroke::new(1.0, egui::Color32::GRAY));
+    }
+    changed
 }
 
 #[cfg(test)]

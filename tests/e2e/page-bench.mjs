@@ -584,12 +584,11 @@ try {
     console.error(`WARNING: ${scanPath} is missing (the shared test data); the optimize timing is skipped`);
   }
 
-  // Feature sketching on the same scan: a lasso around most of the bunny as seen (its front
-  // half is the region), a sketch across it, then a pen drag that raises a bump. The first
-  // drag step places and embeds the sketch and factors the region; every later one re-weighs
-  // the kept solutions. Frame times come from the page's animation frames while dragging.
-  let feature = null;
-  if (scanPath && existsSync(scanPath)) {
+  /**
+   * A new document with the bunny scan, framed, and the tool of `key`: the middle of the view
+   * (a little below centre, where the bunny's body is), in page px.
+   */
+  const bunnyWith = async (key) => {
     await page.evaluate((data) => {
       window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
       window.sketchmesh.loadGlb(new Uint8Array(data), 'bunny.glb');
@@ -597,23 +596,26 @@ try {
     }, [...readFileSync(scanPath)]);
     await sleep(500);
     await page.keyboard.press('f');
-    await page.keyboard.press('d');
+    await page.keyboard.press(key);
     await sleep(300);
-    const c = await page.evaluate(() => {
+    return page.evaluate(() => {
       const r = document.querySelector('canvas').getBoundingClientRect();
       return { x: r.left + r.width / 2, y: r.top + (r.height + 80) / 2 + 20 };
     });
-    // The toolbar's second row, drawn by egui on the canvas: the Bump button.
-    await page.mouse.click(96, 59);
-    const loop = Array.from({ length: 61 }, (_, i) => {
-      const a = (2 * Math.PI * i) / 60;
-      return { x: c.x + 260 * Math.cos(a), y: c.y + 220 * Math.sin(a), force: 0.5 };
-    });
-    await penStroke(cdp, loop, 8);
-    await penStroke(cdp, Array.from({ length: 31 }, (_, i) => ({ x: c.x - 90 + 6 * i, y: c.y, force: 0.5 })), 8);
-    await sleep(200);
+  };
+  /** A loop around most of the framed bunny as seen, about `c`. */
+  const aroundBunny = (c) => Array.from({ length: 61 }, (_, i) => {
+    const a = (2 * Math.PI * i) / 60;
+    return { x: c.x + 260 * Math.cos(a), y: c.y + 220 * Math.sin(a), force: 0.5 };
+  });
+  /** A stroke across the framed bunny's body through `c`. */
+  const acrossBunny = (c) => Array.from({ length: 31 }, (_, i) => ({ x: c.x - 90 + 6 * i, y: c.y, force: 0.5 }));
+  /**
+   * A 60 px pen drag up from `grab` in 40 steps, the page's animation frames recorded while
+   * it moves and a screenshot before the release; the frames' times.
+   */
+  const timedDrag = async (grab, shot) => {
     const pen = { pointerType: 'pen', button: 'left', force: 0.5 };
-    const grab = { x: c.x, y: c.y + 150 };
     await page.evaluate(() => { window.__bench.frames = []; window.__bench.recording = true; });
     await cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', ...grab, buttons: 1, clickCount: 1, ...pen });
     for (let i = 1; i <= 40; i++) {
@@ -622,23 +624,59 @@ try {
     }
     await sleep(100);
     const frames = await page.evaluate(() => { window.__bench.recording = false; return window.__bench.frames; });
-    await screenshot(page, join(OUT_DIR, 'bench-feature-drag.png'));
+    await screenshot(page, join(OUT_DIR, shot));
     await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', x: grab.x, y: grab.y - 60, buttons: 0, clickCount: 1, ...pen });
-    await page.waitForFunction(() => JSON.parse(window.sketchmesh.session()).ops.at(-1)?.op === 'sketch_feature', null, { timeout: 30_000, polling: 50 })
-      .catch(() => {});
-    const t = await api(page, 'timings');
+    return frames;
+  };
+  /** What a timed drag of an `op` edit cost: its first step, later steps, frames, release. */
+  const dragReport = async (op, frames) => {
+    const t = (await api(page, 'timings'))[op];
     const drag = frames.slice(1).map((f, i) => f - frames[i]);
     // The first frames of the drag carry the setup; the rest are the drag proper.
     const later = drag.slice(3).sort((a, b) => a - b);
-    const steps = [...(t.sketch_feature?.frame_ms ?? [])].sort((a, b) => a - b);
-    feature = {
-      committed: JSON.parse(await api(page, 'session')).ops.at(-1)?.op === 'sketch_feature',
-      first_ms: round(t.sketch_feature?.begin_ms.at(-1) ?? null),
+    const steps = [...(t?.frame_ms ?? [])].sort((a, b) => a - b);
+    return {
+      committed: JSON.parse(await api(page, 'session')).ops.at(-1)?.op === op,
+      first_ms: round(t?.begin_ms.at(-1) ?? null),
       step_ms: { n: steps.length, p50: round(steps[Math.floor(steps.length / 2)] ?? null), max: round(steps.at(-1) ?? null) },
       drag_frame_ms: { n: later.length, p50: round(later[Math.floor(later.length / 2)] ?? null), max: round(later.at(-1) ?? null) },
-      apply_ms: round(t.sketch_feature?.finish_ms.at(-1) ?? null),
+      apply_ms: round(t?.finish_ms.at(-1) ?? null),
     };
+  };
+
+  // Feature sketching on the same scan: a lasso around most of the bunny as seen (its front
+  // half is the region), a sketch across it, then a pen drag that raises a bump. The first
+  // drag step places and embeds the sketch and factors the region; every later one re-weighs
+  // the kept solutions. Frame times come from the page's animation frames while dragging.
+  let feature = null;
+  if (scanPath && existsSync(scanPath)) {
+    const c = await bunnyWith('d');
+    // The toolbar's second row, drawn by egui on the canvas: the Bump button.
+    await page.mouse.click(96, 59);
+    await penStroke(cdp, aroundBunny(c), 8);
+    await penStroke(cdp, acrossBunny(c), 8);
+    await sleep(200);
+    const frames = await timedDrag({ x: c.x, y: c.y + 150 }, 'bench-feature-drag.png');
+    await page.waitForFunction(() => JSON.parse(window.sketchmesh.session()).ops.at(-1)?.op === 'sketch_feature', null, { timeout: 30_000, polling: 50 })
+      .catch(() => {});
+    feature = await dragReport('sketch_feature', frames);
     console.error(`feature: ${JSON.stringify(feature)}`);
+  }
+
+  // Region editing on the same scan: a reference curve across the bunny's middle, a boundary
+  // around most of it as seen, then a pen drag that lifts the region. The first drag step
+  // places the curves and weighs the region; every later one moves it by the new transform.
+  let region = null;
+  if (scanPath && existsSync(scanPath)) {
+    const c = await bunnyWith('l');
+    await penStroke(cdp, acrossBunny(c), 8);
+    await penStroke(cdp, aroundBunny(c), 8);
+    await sleep(200);
+    const frames = await timedDrag({ x: c.x, y: c.y + 150 }, 'bench-region-drag.png');
+    await page.waitForFunction(() => JSON.parse(window.sketchmesh.session()).ops.at(-1)?.op === 'region_edit', null, { timeout: 30_000, polling: 50 })
+      .catch(() => {});
+    region = await dragReport('region_edit', frames);
+    console.error(`region: ${JSON.stringify(region)}`);
   }
 
   const autosave = await autosaveBench();
@@ -668,6 +706,7 @@ try {
     oversketch,
     optimize,
     feature,
+    region,
     autosave,
     gizmo,
   };

@@ -37,7 +37,7 @@ use crate::tools::{Mark, Mode, ToolEvent, ToolOutput, ToolSet, ViewCtx};
 const STATUS_SECONDS: f64 = 6.0;
 
 /// The most dots a region edit's fall-off overlay draws (see `SketchApp::falloff_ui`).
-const FALLOFF_DOTS: usize = 6000;
+const FALLOFF_DOTS: usize = 2500;
 
 /// How long the steps of the edit in progress may run in one frame, in ms. At least one step
 /// runs every frame, whatever it costs (a factorization can take longer).
@@ -967,7 +967,7 @@ impl SketchApp {
             let gray = (30.0 + 225.0 * level) as u8;
             let centre = viewport.min + egui::vec2(at.x as f32, at.y as f32);
             painter.rect_filled(
-                egui::Rect::from_center_size(centre, egui::vec2(4.0, 4.0)),
+                egui::Rect::from_center_size(centre, egui::vec2(3.0, 3.0)),
                 0.0,
                 egui::Color32::from_gray(gray),
             );

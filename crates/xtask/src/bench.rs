@@ -407,6 +407,19 @@ fn page_table(page: &Value, wasm_gzip_size: u64) -> String {
             ms("/feature/drag_frame_ms/max"),
         ),
         (
+            "region (lift on the bunny), first drag step (place, weigh)",
+            ms("/region/first_ms"),
+        ),
+        (
+            "region, drag step (the region moved), median",
+            ms("/region/step_ms/p50"),
+        ),
+        ("region, drag step, max", ms("/region/step_ms/max")),
+        (
+            "region, frame while dragging, median",
+            ms("/region/drag_frame_ms/p50"),
+        ),
+        (
             "Move tool drag of 100k triangles, frame interval, median",
             ms("/gizmo/interval_ms/p50"),
         ),

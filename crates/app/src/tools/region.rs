@@ -283,7 +283,7 @@ fn levels_ui(ui: &mut egui::Ui, levels: &mut [f64]) -> bool {
         "The fall-off from the boundary (left) to the curve (right): drag the dots up or down",
     );
     let last = (levels.len() - 1) as f32;
-    let inner = rect.shrink(6.0);
+    let inner = rect.shrink(8.0);
     let at = |i: usize, w: f64| {
         egui::pos2(
             inner.left() + inner.width() * i as f32 / last,

@@ -302,8 +302,8 @@ fn a_region_on_scans_moves_inside_its_boundary_only() {
     }
 }
 
-#[test]
-fn a_drag_carries_the_reference_curve_with_the_pointer() {
+/// A sphere imported into an editor, the curves on it, and their op that moves nothing.
+fn sphere_in_editor() -> (Mesh, RegionSketch, Editor, RegionEditInput) {
     let mesh = primitives::icosphere(1.0, 4);
     let sketch = curves(&mesh, 60.0, 140.0);
     let mut editor = Editor::new();
@@ -311,6 +311,12 @@ fn a_drag_carries_the_reference_curve_with_the_pointer() {
     let Op::RegionEdit(still) = op(&sketch, DMat4::IDENTITY, None) else {
         unreachable!()
     };
+    (mesh, sketch, editor, still)
+}
+
+#[test]
+fn a_drag_carries_the_reference_curve_with_the_pointer() {
+    let (mesh, sketch, mut editor, still) = sphere_in_editor();
     let offset = DVec2::new(30.0, -50.0);
     let dragged = dragged_region(editor.document(), &still, RegionDrag::Move, offset);
     editor.apply(Op::RegionEdit(dragged)).unwrap();
@@ -327,13 +333,7 @@ fn a_drag_carries_the_reference_curve_with_the_pointer() {
 
 #[test]
 fn a_turning_drag_twists_the_region_about_the_curve_s_middle() {
-    let mesh = primitives::icosphere(1.0, 4);
-    let sketch = curves(&mesh, 60.0, 140.0);
-    let mut editor = Editor::new();
-    editor.apply(import_mesh("sphere.glb", &mesh)).unwrap();
-    let Op::RegionEdit(still) = op(&sketch, DMat4::IDENTITY, None) else {
-        unreachable!()
-    };
+    let (mesh, sketch, mut editor, still) = sphere_in_editor();
     let doc = editor.document();
     // 60 px to the right: 30° clockwise as seen, about the view axis.
     let turned = dragged_region(doc, &still, RegionDrag::Turn, DVec2::new(60.0, 0.0));

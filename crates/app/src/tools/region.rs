@@ -10,6 +10,7 @@
 
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
+use sketchmesh_core::curve::polyline::{BAUDEL_K, distance_to_polyline, oversketch_merge};
 use sketchmesh_core::curve::{StrokePoint, is_closed_loop};
 use sketchmesh_core::document::{
     CLOSE_TOLERANCE_PX, Document, Op, RegionDrag, RegionEditInput, StrokeInput, dragged_region,
@@ -45,6 +46,10 @@ const FALLOFFS: [(&str, &str, [f64; 5]); 4] = [
         [0.0, 0.6, 0.9, 1.0, 1.0],
     ),
 ];
+
+/// An open stroke whose ends both lie this near (CSS px) the reference curve redraws that
+/// part of it instead of being a boundary.
+const OVERSKETCH_PX: f64 = 30.0;
 
 /// What a drag may do, as the toolbar offers it.
 const DRAGS: [(RegionDrag, &str, &str); 3] = [
@@ -150,7 +155,9 @@ impl RegionTool {
         ToolOutput::None
     }
 
-    /// A finished second stroke: the boundary, which must be a closed loop.
+    /// A finished second stroke: the boundary, which must be a closed loop, or an open stroke
+    /// from near the reference curve to near it, which redraws that part of the curve
+    /// (Baudel's merge, as Bujans over-sketches her curves).
     fn boundary(
         &mut self,
         reference: StrokeInput,
@@ -161,6 +168,10 @@ impl RegionTool {
             self.stage = Stage::Boundary(reference);
             return ToolOutput::None;
         };
+        if let Some(redrawn) = redrawn_curve(&reference, &input) {
+            self.stage = Stage::Boundary(redrawn);
+            return ToolOutput::None;
+        }
         let closed = is_closed_loop(&input.points(), CLOSE_TOLERANCE_PX);
         if is_tap(&input) || !closed || input.camera != reference.camera {
             self.stage = Stage::Boundary(reference);
@@ -222,9 +233,9 @@ impl RegionTool {
     pub fn hint(&self) -> Option<&'static str> {
         match self.stage {
             Stage::Reference => Some("Draw a reference curve on a model: the part that moves most"),
-            Stage::Boundary(_) => {
-                Some("Now draw a closed boundary around it: what lies outside stays")
-            }
+            Stage::Boundary(_) => Some(
+                "Now draw a closed loop around it (outside stays), or redraw part of the curve",
+            ),
             Stage::Ready(_) => Some(match self.drag {
                 RegionDrag::Move => "Drag: the region follows, fading out toward the boundary",
                 RegionDrag::Turn => {
@@ -269,6 +280,28 @@ impl RegionTool {
         }
         ToolOutput::None
     }
+}
+
+/// `reference` with `stroke` merged into it, when the stroke is open and both its ends lie
+/// within [`OVERSKETCH_PX`] of the curve.
+fn redrawn_curve(reference: &StrokeInput, stroke: &StrokeInput) -> Option<StrokeInput> {
+    let points = stroke.points();
+    if is_tap(stroke) || is_closed_loop(&points, CLOSE_TOLERANCE_PX) {
+        return None;
+    }
+    let curve: Vec<DVec2> = reference.points().iter().map(|p| p.pos).collect();
+    let near = |p: Option<&StrokePoint>| {
+        p.is_some_and(|p| distance_to_polyline(p.pos, &curve) < OVERSKETCH_PX)
+    };
+    if !near(points.first()) || !near(points.last()) {
+        return None;
+    }
+    let stroke: Vec<DVec2> = points.iter().map(|p| p.pos).collect();
+    let merged = oversketch_merge(&curve, &stroke, BAUDEL_K);
+    Some(StrokeInput {
+        stroke: merged.iter().map(|p| [p.x, p.y, 0.5]).collect(),
+        ..reference.clone()
+    })
 }
 
 /// Size of the levels graph in the toolbar, in points: as tall as its buttons.
@@ -349,7 +382,13 @@ mod tests {
             .map(|i| centre + DVec2::new(4.0 * f64::from(i) - 40.0, 0.0))
             .collect();
         assert_eq!(stroke(&mut tool, doc, &line), ToolOutput::None);
-        assert!(tool.hint().unwrap().contains("boundary"));
+        assert!(tool.hint().unwrap().contains("loop"));
+        // An open stroke from near the curve to near it redraws that part (3 px lower, so
+        // its transitions, 6 gaps long, leave the curve's ends).
+        let redraw: Vec<DVec2> = (0..=10)
+            .map(|i| centre + DVec2::new(4.0 * f64::from(i) - 20.0, 3.0))
+            .collect();
+        assert_eq!(stroke(&mut tool, doc, &redraw), ToolOutput::None);
         let open: Vec<DVec2> = (0..=20)
             .map(|i| centre + DVec2::new(4.0 * f64::from(i), 60.0))
             .collect();
@@ -380,6 +419,15 @@ mod tests {
             .truncate();
         assert!(moved.y > 0.0, "dragged up, moved up: {moved}");
         assert_eq!(done.reference, begun.reference);
+        let lowered = |y: f64| (y - 303.0).abs() < 0.5;
+        assert!(
+            done.reference.iter().any(|p| lowered(p[1])),
+            "the redrawn part is in the op"
+        );
+        assert!(
+            done.reference.iter().any(|p| (p[1] - 300.0).abs() < 0.5),
+            "so is the rest"
+        );
     }
 
     #[test]

@@ -154,6 +154,8 @@ struct Built {
     key: RegionEditInput,
     model: usize,
     edit: RegionEdit,
+    /// The levels the edit is weighed with.
+    levels: Option<Vec<f64>>,
 }
 
 impl RegionPreview {
@@ -240,9 +242,19 @@ fn edit_for<'a>(
         Some(built) if built.key == key => built,
         _ => {
             let (model, edit) = new_region(base, input)?;
-            Built { key, model, edit }
+            let levels = input.levels.clone();
+            Built {
+                key,
+                model,
+                edit,
+                levels,
+            }
         }
     };
-    built.edit.set_levels(&levels_of(input)?);
+    // Weighed again only when the levels change, not in every drag frame.
+    if built.levels != input.levels {
+        built.edit.set_levels(&levels_of(input)?);
+        built.levels = input.levels.clone();
+    }
     Ok(slot.insert(built))
 }

@@ -265,7 +265,12 @@ fn bad_curves_levels_and_transforms_are_refused_and_change_nothing() {
 
 #[test]
 fn a_region_on_scans_moves_inside_its_boundary_only() {
-    for name in ["spot.glb", "stanford_bunny.glb", "igea.glb"] {
+    for name in [
+        "spot.glb",
+        "stanford_bunny.glb",
+        "nefertiti.glb",
+        "igea.glb",
+    ] {
         let Some(meshes) = testdata_meshes(name) else {
             return;
         };

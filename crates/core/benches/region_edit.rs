@@ -11,7 +11,7 @@ use std::hint::black_box;
 use criterion::{Criterion, criterion_group, criterion_main};
 use glam::{DMat4, DQuat, DVec2, DVec3};
 use sketchmesh_core::mesh::primitives;
-use sketchmesh_core::region_edit::{Levels, RegionEdit, RegionSketch, checked_transform};
+use sketchmesh_core::region_edit::{Handle, Levels, RegionEdit, RegionSketch, checked_transform};
 
 #[path = "common/feature.rs"]
 #[allow(
@@ -73,7 +73,27 @@ fn bench_region_edit(c: &mut Criterion) {
             let turn = DMat4::from_quat(DQuat::from_rotation_x(0.3 + frame));
             let t = DMat4::from_translation(DVec3::new(0.0, 0.2 + frame, 0.1)) * turn;
             let fractions = checked_transform(&t.to_cols_array()).expect("a real logarithm");
-            edit.apply_into(&fractions, mesh.positions(), &mut out);
+            edit.apply_into(&fractions.into(), mesh.positions(), &mut out);
+        });
+    });
+    group.bench_function("handles_frame_50k", |b| {
+        b.iter(|| {
+            // Three handles, the middle one dragged: every path vertex between the pins
+            // blends its own transform.
+            frame += 1e-3;
+            let pin = |at: f64| Handle {
+                at,
+                transform: DMat4::IDENTITY,
+            };
+            let turn = DMat4::from_quat(DQuat::from_rotation_x(0.3 + frame));
+            let middle = Handle {
+                at: 0.5,
+                transform: DMat4::from_translation(DVec3::new(0.0, 0.2 + frame, 0.1)) * turn,
+            };
+            let motion = edit
+                .motion(&[pin(0.0), middle, pin(1.0)])
+                .expect("real logarithms");
+            edit.apply_into(&motion, mesh.positions(), &mut out);
         });
     });
     group.finish();

@@ -45,11 +45,11 @@ pub use intent::{
     model_under, needs_tap, op_for_stroke, starts_on_model, surface_at, tunnel_from,
 };
 pub use op::{
-    AddCurveInput, BrushInput, CurveTypeInput, FileInput, ImportInput, MergeInput, ModelInput, Op,
-    OptimizeInput, OversketchFit, OversketchInput, RegionEditInput, SketchFeatureInput,
-    StrokeInput, StrokePairInput, TransformInput,
+    AddCurveInput, BrushInput, CurveTypeInput, FileInput, HandleInput, ImportInput, MergeInput,
+    ModelInput, Op, OptimizeInput, OversketchFit, OversketchInput, RegionEditInput,
+    SketchFeatureInput, StrokeInput, StrokePairInput, TransformInput,
 };
 pub use oversketch::OutlinePiece;
-pub use region_edit::{RegionDrag, dragged_region};
+pub use region_edit::{RegionDrag, dragged_region, region_rail};
 pub use session::{SESSION_FORMAT, SESSION_VERSION, Session};
 pub use session_error::SessionError;

@@ -285,6 +285,23 @@ pub struct RegionEditInput {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub levels: Option<Vec<f64>>,
     /// The 4×4 affine transform, column by column: a vertex of weight `w` moves by `w ⊙ T`.
+    /// Exactly one of it and `handles`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub transform: Option<[f64; 16]>,
+    /// Handles along the reference curve, each with its own transform, blended along it
+    /// ([`crate::region_edit::Motion`]). Exactly one of it and `transform`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub handles: Option<Vec<HandleInput>>,
+}
+
+/// A handle of a `region_edit` op.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct HandleInput {
+    /// Where it sits on the reference curve: 0 at its first end, 1 at its last, by
+    /// arclength.
+    pub at: f64,
+    /// Its 4×4 affine transform, column by column.
     pub transform: [f64; 16],
 }
 
@@ -620,7 +637,8 @@ mod tests {
                 reference: Vec::new(),
                 boundary: Vec::new(),
                 levels: None,
-                transform: glam::DMat4::IDENTITY.to_cols_array(),
+                transform: Some(glam::DMat4::IDENTITY.to_cols_array()),
+                handles: None,
             }),
             Op::Undo,
             Op::Redo,

@@ -13,7 +13,9 @@ use super::{CommandError, Document, Model, RegionEditInput, StrokeInput, model_u
 use crate::curve::polyline::thin;
 use crate::curve::process_stroke;
 use crate::mesh::VertexId;
-use crate::region_edit::{Levels, RegionEdit, RegionError, RegionSketch, checked_transform};
+use crate::region_edit::{
+    Handle, HandleRail, Levels, Motion, RegionEdit, RegionError, RegionSketch, checked_transform,
+};
 
 /// Input samples nearer than this (CSS px) to the last kept one are dropped before the
 /// curves are smoothed (Bujans §4.1).
@@ -27,11 +29,41 @@ pub(super) fn region_edit_op(
     input: &RegionEditInput,
 ) -> Result<(usize, Model), CommandError> {
     let (index, edit) = new_region(doc, input)?;
-    let positions = edit.applied(
-        &target(doc, index)?.mesh,
-        &checked_transform(&input.transform)?,
-    );
+    let positions = edit.applied(&target(doc, index)?.mesh, &motion_of(&edit, input)?);
     Ok((index, with_positions(doc, index, &positions)))
+}
+
+/// How `input` moves the region of `edit`: its one transform or its handles.
+///
+/// Errors: [`RegionError::MotionUnclear`], or a transform's or the handles' refusal.
+fn motion_of(edit: &RegionEdit, input: &RegionEditInput) -> Result<Motion, RegionError> {
+    match (&input.transform, &input.handles) {
+        (Some(transform), None) => Ok(checked_transform(transform)?.into()),
+        (None, Some(handles)) => {
+            let handles: Vec<Handle> = handles
+                .iter()
+                .map(|h| Handle {
+                    at: h.at,
+                    transform: DMat4::from_cols_array(&h.transform),
+                })
+                .collect();
+            edit.motion(&handles)
+        }
+        _ => Err(RegionError::MotionUnclear),
+    }
+}
+
+/// The model under `input`'s reference curve and the curve placed on it with its frames,
+/// where the op's handles sit (a tool draws and drags them). Finds the region: a one-off
+/// cost per pair of curves, as the op's first step has.
+///
+/// Errors: as [`region_edit_op`].
+pub fn region_rail(
+    doc: &Document,
+    input: &RegionEditInput,
+) -> Result<(usize, HandleRail), CommandError> {
+    let (index, edit) = new_region(doc, input)?;
+    Ok((index, edit.rail(&target(doc, index)?.mesh)))
 }
 
 /// The model under the reference curve's first point and the region of `input` on it.
@@ -42,7 +74,9 @@ fn new_region(
     let reference = input.reference_input();
     let viewport = reference.checked_viewport()?;
     let levels = levels_of(input)?;
-    checked_transform(&input.transform)?;
+    if let Some(transform) = &input.transform {
+        checked_transform(transform)?;
+    }
     let smoothed = |stroke: &StrokeInput| -> Result<Vec<DVec2>, CommandError> {
         let points = process_stroke(&thin(&stroke.points(), THIN_PX))?;
         Ok(points.iter().map(|p| p.pos).collect())
@@ -126,7 +160,8 @@ pub fn dragged_region(
         }
     };
     RegionEditInput {
-        transform: transform.to_cols_array(),
+        transform: Some(transform.to_cols_array()),
+        handles: None,
         ..region.clone()
     }
 }
@@ -142,8 +177,8 @@ fn levels_of(input: &RegionEditInput) -> Result<Levels, RegionError> {
 #[derive(Debug)]
 pub(super) struct RegionPreview {
     built: Option<Built>,
-    /// The transform and levels the shown positions are for, once shown.
-    shown_for: Option<([f64; 16], Option<Vec<f64>>)>,
+    /// The op the shown positions are for, once shown.
+    shown_for: Option<RegionEditInput>,
     shown: Vec<DVec3>,
 }
 
@@ -178,20 +213,17 @@ impl RegionPreview {
         base: &Document,
         input: &RegionEditInput,
     ) -> Result<Option<bool>, CommandError> {
-        let wanted = (input.transform, input.levels.clone());
         let built = edit_for(&mut self.built, base, input)?;
-        if self.shown_for.as_ref() == Some(&wanted) {
+        if self.shown_for.as_ref() == Some(input) {
             return Ok(None);
         }
-        let transform = checked_transform(&input.transform)?;
+        let motion = motion_of(&built.edit, input)?;
         let positions = target(base, built.model)?.mesh.positions();
         if self.shown.len() != positions.len() {
             self.shown = positions.to_vec();
         }
-        built
-            .edit
-            .apply_into(&transform, positions, &mut self.shown);
-        self.shown_for = Some(wanted);
+        built.edit.apply_into(&motion, positions, &mut self.shown);
+        self.shown_for = Some(input.clone());
         Ok(Some(false))
     }
 
@@ -205,9 +237,7 @@ impl RegionPreview {
     ) -> Result<(usize, Model), CommandError> {
         let built = edit_for(&mut self.built, base, input)?;
         let mesh = &target(base, built.model)?.mesh;
-        let positions = built
-            .edit
-            .applied(mesh, &checked_transform(&input.transform)?);
+        let positions = built.edit.applied(mesh, &motion_of(&built.edit, input)?);
         Ok((built.model, with_positions(base, built.model, &positions)))
     }
 
@@ -234,7 +264,8 @@ fn edit_for<'a>(
     input: &RegionEditInput,
 ) -> Result<&'a mut Built, CommandError> {
     let key = RegionEditInput {
-        transform: DMat4::IDENTITY.to_cols_array(),
+        transform: None,
+        handles: None,
         levels: None,
         ..input.clone()
     };

@@ -30,6 +30,8 @@ const SERIES_TOLERANCE: f64 = 1e-18;
 const HALF_TURN_MARGIN: f64 = 1e-7;
 /// Sample weights kept by [`Fractions`]: `w ⊙ T` for `w = k / FRACTION_SAMPLES`.
 const FRACTION_SAMPLES: usize = 256;
+/// Every this many samples of [`Fractions`] is an exponential of its own.
+const SAMPLE_STRIDE: usize = 16;
 /// Taylor terms of `exp(δ log T)` for the small rest `|δ| ≤ 1 / (2 FRACTION_SAMPLES)`
 /// between a weight and its nearest sample: `(δ ‖log T‖)⁷ / 7!` is below `f64`'s precision
 /// for any turn and any scale between 1/50 and 50.
@@ -118,19 +120,37 @@ pub struct Fractions {
 impl Fractions {
     /// The fractions of `transform`; `None` when it has no real logarithm.
     pub fn new(transform: DMat4) -> Option<Self> {
-        let log = log_affine(transform)?;
+        Some(Fractions::with_log(transform, log_affine(transform)?))
+    }
+
+    /// The fractions of `exp log` (a blend of logarithms, as handles make).
+    pub fn from_log(log: DMat4) -> Self {
+        Fractions::with_log(exp_affine(log), log)
+    }
+
+    /// The table for `transform` and its logarithm `log` (the caller's word that it is):
+    /// every [`SAMPLE_STRIDE`]-th sample an exponential, the ones between it times a short
+    /// power (the factors commute), so a table costs a few dozen exponentials and a region
+    /// with many handles builds many.
+    pub(crate) fn with_log(transform: DMat4, log: DMat4) -> Self {
+        let exp_at = |k: usize| exp_affine(log * (k as f64 / FRACTION_SAMPLES as f64));
+        let short: Vec<DMat4> = (0..SAMPLE_STRIDE).map(exp_at).collect();
+        let long: Vec<DMat4> = (0..FRACTION_SAMPLES / SAMPLE_STRIDE)
+            .map(|j| exp_at(j * SAMPLE_STRIDE))
+            .collect();
         let samples = (0..=FRACTION_SAMPLES)
-            .map(|k| match k {
-                0 => DMat4::IDENTITY,
-                FRACTION_SAMPLES => transform,
-                _ => exp_affine(log * (k as f64 / FRACTION_SAMPLES as f64)),
+            .map(|k| match (k, k % SAMPLE_STRIDE) {
+                (0, _) => DMat4::IDENTITY,
+                (FRACTION_SAMPLES, _) => transform,
+                (_, 0) => long[k / SAMPLE_STRIDE],
+                (_, r) => long[k / SAMPLE_STRIDE] * short[r],
             })
             .collect();
-        Some(Fractions {
+        Fractions {
             transform,
             log,
             samples,
-        })
+        }
     }
 
     /// The whole transform.

@@ -67,7 +67,15 @@ pub(crate) fn distances_within<I: Iterator<Item = (u32, f64)>>(
     radius: f64,
     neighbours: impl Fn(u32) -> I,
 ) -> Vec<f64> {
-    shortest_paths(n, seeds, radius, neighbours, |_, _| false)
+    shortest_paths(n, seeds, radius, neighbours, |_, _| false).distance
+}
+
+/// What a Dijkstra pass reached: per node, its distance (infinite where not reached) and
+/// the index in the seeds of the seed nearest to it (`u32::MAX` where not reached).
+#[derive(Clone, Debug)]
+pub(crate) struct Reached {
+    pub distance: Vec<f64>,
+    pub seed: Vec<u32>,
 }
 
 /// Dijkstra from `seeds` up to `radius`, calling `settled` with each node and its distance
@@ -79,11 +87,16 @@ pub(crate) fn shortest_paths<I: Iterator<Item = (u32, f64)>>(
     radius: f64,
     neighbours: impl Fn(u32) -> I,
     mut settled: impl FnMut(u32, f64) -> bool,
-) -> Vec<f64> {
+) -> Reached {
     let mut distance = vec![f64::INFINITY; n];
+    let mut seed = vec![u32::MAX; n];
     let mut queue = BinaryHeap::new();
-    for &s in seeds.iter().filter(|&&s| (s as usize) < n) {
+    for (i, &s) in seeds.iter().enumerate().filter(|(_, s)| (**s as usize) < n) {
+        if distance[s as usize] == 0.0 {
+            continue;
+        }
         distance[s as usize] = 0.0;
+        seed[s as usize] = i as u32;
         queue.push(Reverse((Ordered(0.0), s)));
     }
     while let Some(Reverse((Ordered(d), v))) = queue.pop() {
@@ -97,11 +110,12 @@ pub(crate) fn shortest_paths<I: Iterator<Item = (u32, f64)>>(
             let through = d + length;
             if through <= radius && through < distance[w as usize] {
                 distance[w as usize] = through;
+                seed[w as usize] = seed[v as usize];
                 queue.push(Reverse((Ordered(through), w)));
             }
         }
     }
-    distance
+    Reached { distance, seed }
 }
 
 /// A finite distance with the total order the heap needs.

@@ -3,9 +3,9 @@
 use glam::{DMat4, DVec3, DVec4};
 
 use super::falloff::closeness;
-use super::{Levels, RegionError, RegionSketch};
+use super::{Handle, HandleRail, Levels, Motion, RegionError, RegionSketch};
 use crate::feature::{Sketch, place};
-use crate::geometry::{Bvh, Fractions, vertex_normals};
+use crate::geometry::{Bvh, Fractions, log_affine, vertex_normals};
 use crate::mesh::{Mesh, VertexId};
 
 /// A region of one mesh with its fall-off: see the [module docs](super).
@@ -17,8 +17,14 @@ pub struct RegionEdit {
     closeness: Vec<f64>,
     /// Each one's weight: its closeness read through the levels.
     weights: Vec<f64>,
+    /// Each one's nearest vertex of the reference path along edges, as an index into it.
+    nearest: Vec<u32>,
     /// The edge path under the reference curve.
     reference: Vec<VertexId>,
+    /// Where each path vertex sits along the path by arclength, from 0 to 1.
+    params: Vec<f64>,
+    /// The surface normal at each path vertex.
+    path_normals: Vec<DVec3>,
 }
 
 impl RegionEdit {
@@ -26,6 +32,7 @@ impl RegionEdit {
     ///
     /// Errors: the curves' refusals (see [`RegionError`]).
     pub fn new(mesh: &Mesh, sketch: &RegionSketch, levels: &Levels) -> Result<Self, RegionError> {
+        let normals = vertex_normals(mesh);
         let boundary = match sketch.boundary.split_last() {
             Some((last, rest)) if rest.first() == Some(last) => rest.to_vec(),
             _ => sketch.boundary.clone(),
@@ -36,7 +43,7 @@ impl RegionEdit {
         let placed = place(
             mesh,
             &Bvh::new(mesh),
-            &vertex_normals(mesh),
+            &normals,
             &Sketch {
                 camera: sketch.camera,
                 viewport: sketch.viewport,
@@ -48,12 +55,15 @@ impl RegionEdit {
             .vertices()
             .filter(|v| placed.region[v.index()])
             .collect();
-        let closeness = closeness(mesh, &placed.region, &vertices, &placed.path);
-        let weights = closeness.iter().map(|&s| levels.weight(s)).collect();
+        let found = closeness(mesh, &placed.region, &vertices, &placed.path);
+        let weights = found.closeness.iter().map(|&s| levels.weight(s)).collect();
         Ok(RegionEdit {
             vertices,
-            closeness,
+            closeness: found.closeness,
             weights,
+            nearest: found.nearest,
+            params: arclength_params(mesh, &placed.path),
+            path_normals: placed.path.iter().map(|v| normals[v.index()]).collect(),
             reference: placed.path,
         })
     }
@@ -74,6 +84,26 @@ impl RegionEdit {
         &self.reference
     }
 
+    /// Where each vertex of [`RegionEdit::reference`] sits along it by arclength, from 0 to 1.
+    pub fn reference_params(&self) -> &[f64] {
+        &self.params
+    }
+
+    /// The reference curve on `mesh` (the mesh the edit was found on) with its frames, where
+    /// handles sit.
+    pub fn rail(&self, mesh: &Mesh) -> HandleRail {
+        let points = self.reference.iter().map(|&v| mesh.position(v)).collect();
+        HandleRail::new(points, self.path_normals.clone(), self.params.clone())
+    }
+
+    /// The motion of `handles` on the reference curve (see [`Motion`]).
+    ///
+    /// Errors: [`RegionError::BadHandles`], or a handle's transform refused as
+    /// [`checked_transform`] refuses one.
+    pub fn motion(&self, handles: &[Handle]) -> Result<Motion, RegionError> {
+        Motion::blended(handles, &self.params)
+    }
+
     /// Every vertex's weight, 0 outside the region: what the fall-off overlay shows.
     pub fn weight_per_vertex(&self, n_vertices: usize) -> Vec<f64> {
         let mut all = vec![0.0; n_vertices];
@@ -91,20 +121,37 @@ impl RegionEdit {
         }
     }
 
-    /// Moves each region vertex of `base` to `(w ⊙ T) p` in `out` (the same length; the
+    /// Moves each region vertex of `base` to `(w ⊙ T) p` in `out`, `T` the motion's
+    /// transform at its nearest point of the reference curve (`out` the same length; the
     /// vertices outside the region are not written). Allocates nothing: a drag frame.
-    pub fn apply_into(&self, transform: &Fractions, base: &[DVec3], out: &mut [DVec3]) {
-        for (v, &w) in self.vertices.iter().zip(&self.weights) {
-            out[v.index()] = transform.apply(w, base[v.index()]);
+    pub fn apply_into(&self, motion: &Motion, base: &[DVec3], out: &mut [DVec3]) {
+        let moved = self.vertices.iter().zip(&self.weights).zip(&self.nearest);
+        for ((v, &w), &k) in moved {
+            out[v.index()] = motion.at(k).apply(w, base[v.index()]);
         }
     }
 
-    /// Every vertex of `mesh` with the region moved by `transform`.
-    pub fn applied(&self, mesh: &Mesh, transform: &Fractions) -> Vec<DVec3> {
+    /// Every vertex of `mesh` with the region moved by `motion`.
+    pub fn applied(&self, mesh: &Mesh, motion: &Motion) -> Vec<DVec3> {
         let mut out = mesh.positions().to_vec();
-        self.apply_into(transform, mesh.positions(), &mut out);
+        self.apply_into(motion, mesh.positions(), &mut out);
         out
     }
+}
+
+/// Each vertex of `path` placed along it by arclength, 0 at its first, 1 at its last.
+fn arclength_params(mesh: &Mesh, path: &[VertexId]) -> Vec<f64> {
+    let mut along = 0.0;
+    let mut params: Vec<f64> = std::iter::once(0.0)
+        .chain(path.windows(2).map(|w| {
+            along += mesh.position(w[0]).distance(mesh.position(w[1]));
+            along
+        }))
+        .collect();
+    if along > 0.0 {
+        params.iter_mut().for_each(|t| *t /= along);
+    }
+    params
 }
 
 /// The fractions of a transform given column by column, as an op holds it.
@@ -112,15 +159,22 @@ impl RegionEdit {
 /// Errors: a transform that is not finite, not affine, mirrors or flattens, or turns by half
 /// a turn (no fraction of it is defined).
 pub fn checked_transform(columns: &[f64; 16]) -> Result<Fractions, RegionError> {
-    if columns.iter().any(|x| !x.is_finite()) {
+    let matrix = DMat4::from_cols_array(columns);
+    Ok(Fractions::with_log(matrix, checked_log(matrix)?))
+}
+
+/// The logarithm of a transform a region may move by.
+///
+/// Errors: as [`checked_transform`].
+pub(super) fn checked_log(matrix: DMat4) -> Result<DMat4, RegionError> {
+    if !matrix.is_finite() {
         return Err(RegionError::TransformNotFinite);
     }
-    let matrix = DMat4::from_cols_array(columns);
     if matrix.row(3) != DVec4::W {
         return Err(RegionError::TransformNotAffine);
     }
     if matrix.determinant() <= 0.0 {
         return Err(RegionError::TransformMirrors);
     }
-    Fractions::new(matrix).ok_or(RegionError::TransformTurnsHalfWay)
+    log_affine(matrix).ok_or(RegionError::TransformTurnsHalfWay)
 }

@@ -45,6 +45,14 @@ pub enum RegionError {
     /// The transform has no real logarithm: it turns by half a turn.
     #[error("The transform turns the region by half a turn; turn it in two steps.")]
     TransformTurnsHalfWay,
+    /// No handle, a handle off the curve's 0..1, or two at one place.
+    #[error(
+        "Handles sit on the reference curve at distinct places from 0 (its start) to 1 (its end), at least one."
+    )]
+    BadHandles,
+    /// Neither a transform nor handles, or both.
+    #[error("A region edit moves by one transform or by handles: give exactly one of them.")]
+    MotionUnclear,
 }
 
 impl From<FeatureError> for RegionError {
@@ -83,6 +91,8 @@ mod tests {
             RegionError::TransformNotAffine,
             RegionError::TransformMirrors,
             RegionError::TransformTurnsHalfWay,
+            RegionError::BadHandles,
+            RegionError::MotionUnclear,
         ] {
             let text = error.to_string();
             assert!(text.ends_with('.') && text.chars().next().unwrap().is_uppercase());

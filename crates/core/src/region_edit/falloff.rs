@@ -2,7 +2,7 @@
 //! through the user's levels (the thesis' gray-scale fall-off, §5.2).
 
 use super::RegionError;
-use crate::mesh::{Mesh, VertexId, distances_within};
+use crate::mesh::{Mesh, VertexId, distances_within, shortest_paths};
 
 /// The fall-off's levels: weights at evenly spaced closeness from the boundary (the first)
 /// to the reference curve (the last), linear in between.
@@ -43,15 +43,24 @@ impl Default for Levels {
     }
 }
 
-/// Each region vertex's closeness to the reference curve, `d_b / (d_r + d_b)` (see the
-/// module docs of `region_edit`), in the order of `vertices`. `region` has one entry per
+/// How each region vertex lies to the reference curve, in the order of the region's
+/// vertices.
+pub(super) struct Closeness {
+    /// `d_b / (d_r + d_b)` (see the module docs of `region_edit`), in [0, 1].
+    pub closeness: Vec<f64>,
+    /// The index in the reference path of the path vertex nearest along edges (0 for a
+    /// vertex the curve does not reach, whose closeness is 0).
+    pub nearest: Vec<u32>,
+}
+
+/// How each vertex of `vertices` lies to the `reference` path; `region` has one entry per
 /// vertex of `mesh`.
 pub(super) fn closeness(
     mesh: &Mesh,
     region: &[bool],
     vertices: &[VertexId],
     reference: &[VertexId],
-) -> Vec<f64> {
+) -> Closeness {
     let inside = |v: VertexId| region[v.index()];
     let outside_neighbours: Vec<u32> = {
         let mut seen = vec![false; mesh.n_vertices()];
@@ -70,13 +79,19 @@ pub(super) fn closeness(
             .filter(move |&w| inside(w))
             .map(move |w| (w.0, p.distance(mesh.position(w))))
     };
-    let to_reference = distances_within(mesh.n_vertices(), &reference, f64::INFINITY, edges);
+    let to_reference = shortest_paths(
+        mesh.n_vertices(),
+        &reference,
+        f64::INFINITY,
+        edges,
+        |_, _| false,
+    );
     let to_boundary =
         distances_within(mesh.n_vertices(), &outside_neighbours, f64::INFINITY, edges);
-    vertices
+    let closeness = vertices
         .iter()
         .map(|v| {
-            let (r, b) = (to_reference[v.index()], to_boundary[v.index()]);
+            let (r, b) = (to_reference.distance[v.index()], to_boundary[v.index()]);
             match (r.is_finite(), b.is_finite()) {
                 // A region that is a whole part of the model: everything moves fully.
                 (true, false) => 1.0,
@@ -85,7 +100,15 @@ pub(super) fn closeness(
                 (true, true) => b / (r + b),
             }
         })
-        .collect()
+        .collect();
+    let nearest = vertices
+        .iter()
+        .map(|v| match to_reference.seed[v.index()] {
+            u32::MAX => 0,
+            k => k,
+        })
+        .collect();
+    Closeness { closeness, nearest }
 }
 
 #[cfg(test)]

@@ -19,10 +19,13 @@
 //!    (the thesis' gray levels, 5 by default).
 //! 3. [`RegionEdit`]: the region and its weights, found once per pair of curves; applying a
 //!    transform writes the region's vertices only, so everything outside stays bit for bit.
+//! 4. [`handles`]: handles along the reference curve with transforms of their own, blended
+//!    along it (§7); a [`Motion`] is one transform or such a blend.
 
 mod edit;
 mod error;
 mod falloff;
+mod handles;
 
 use glam::DVec2;
 
@@ -31,6 +34,7 @@ use crate::camera::Camera;
 pub use edit::{RegionEdit, checked_transform};
 pub use error::RegionError;
 pub use falloff::Levels;
+pub use handles::{Handle, HandleFrame, HandleRail, Motion, blend_at};
 
 /// The two curves of a region edit as drawn, in screen CSS px (y down).
 #[derive(Clone, Debug, PartialEq)]

@@ -858,7 +858,8 @@ fn op_for(step: &Step, document: &Document) -> Op {
                 reference: reference.stroke,
                 boundary: input(camera, &ring).stroke,
                 levels: None,
-                transform: transform.to_cols_array(),
+                transform: Some(transform.to_cols_array()),
+                handles: None,
             })
         }
         Step::Stray { kind } => {

@@ -11,7 +11,9 @@ use sketchmesh_core::document::{
 };
 use sketchmesh_core::geometry::Fractions;
 use sketchmesh_core::mesh::{Mesh, primitives};
-use sketchmesh_core::region_edit::{Levels, RegionEdit, RegionError, RegionSketch};
+use sketchmesh_core::region_edit::{
+    Handle, Levels, Motion, RegionEdit, RegionError, RegionSketch, blend_at,
+};
 
 use crate::common::{circle, diagonal, digest, import_mesh, samples, screen, testdata_meshes};
 
@@ -58,6 +60,11 @@ fn transform(centre: DVec3, degrees: f64, scale: f64, shift: DVec3) -> DMat4 {
         ))
         * DMat4::from_scale(DVec3::splat(scale))
         * DMat4::from_translation(-centre)
+}
+
+/// One transform for the whole region.
+fn whole(t: DMat4) -> Motion {
+    Fractions::new(t).unwrap().into()
 }
 
 #[test]
@@ -112,7 +119,7 @@ fn outside_stays_bit_for_bit_and_the_curve_moves_exactly_by_the_transform() {
         1.3,
         DVec3::new(0.1, 0.4, 0.2),
     );
-    let moved = edit.applied(&mesh, &Fractions::new(t).unwrap());
+    let moved = edit.applied(&mesh, &whole(t));
     for v in mesh.vertices() {
         let (before, after) = (mesh.position(v), moved[v.index()]);
         if !edit.vertices().contains(&v) {
@@ -136,12 +143,13 @@ fn half_the_transform_twice_is_the_whole() {
     let mesh = primitives::icosphere(1.0, 4);
     let sketch = curves(&mesh, 60.0, 140.0);
     let half = RegionEdit::new(&mesh, &sketch, &Levels::new(vec![0.5, 0.5]).unwrap()).unwrap();
-    let whole = RegionEdit::new(&mesh, &sketch, &Levels::new(vec![1.0, 1.0]).unwrap()).unwrap();
-    let t = Fractions::new(transform(DVec3::Z, 150.0, 0.8, DVec3::new(0.0, 0.3, 0.0))).unwrap();
+    let full_weight =
+        RegionEdit::new(&mesh, &sketch, &Levels::new(vec![1.0, 1.0]).unwrap()).unwrap();
+    let t = whole(transform(DVec3::Z, 150.0, 0.8, DVec3::new(0.0, 0.3, 0.0)));
     let once = half.applied(&mesh, &t);
     let mut twice = once.clone();
     half.apply_into(&t, &once, &mut twice);
-    let full = whole.applied(&mesh, &t);
+    let full = full_weight.applied(&mesh, &t);
     let worst = twice
         .iter()
         .zip(&full)
@@ -157,7 +165,8 @@ fn op(sketch: &RegionSketch, transform: DMat4, levels: Option<Vec<f64>>) -> Op {
         reference: samples(sketch.reference.iter().copied()),
         boundary: samples(sketch.boundary.iter().copied()),
         levels,
-        transform: transform.to_cols_array(),
+        transform: Some(transform.to_cols_array()),
+        handles: None,
     })
 }
 
@@ -281,7 +290,7 @@ fn a_region_on_scans_moves_inside_its_boundary_only() {
         let (lo, hi) = mesh.bounding_box().unwrap();
         let up = 0.1 * (hi - lo).length();
         let t = transform(0.5 * (lo + hi), 20.0, 1.1, DVec3::new(0.0, up, 0.3 * up));
-        let moved = edit.applied(mesh, &Fractions::new(t).unwrap());
+        let moved = edit.applied(mesh, &whole(t));
         let region: std::collections::HashSet<_> = edit.vertices().iter().copied().collect();
         for v in mesh.vertices() {
             let p = moved[v.index()];
@@ -342,7 +351,7 @@ fn a_turning_drag_twists_the_region_about_the_curve_s_middle() {
     let doc = editor.document();
     // 60 px to the right: 30° clockwise as seen, about the view axis.
     let turned = dragged_region(doc, &still, RegionDrag::Turn, DVec2::new(60.0, 0.0));
-    let t = DMat4::from_cols_array(&turned.transform);
+    let t = DMat4::from_cols_array(&turned.transform.unwrap());
     let edit = RegionEdit::new(&mesh, &sketch, &Levels::default()).unwrap();
     let ends = [edit.reference()[0], *edit.reference().last().unwrap()];
     let [a, b] = ends.map(|v| screen(&sketch.camera, VIEWPORT, mesh.position(v)).unwrap());
@@ -359,9 +368,155 @@ fn a_turning_drag_twists_the_region_about_the_curve_s_middle() {
     assert!((angle - 30.0).abs() < 2.0, "turned {angle}° on screen");
     // Up 150 px doubles; turns stop short of half a turn.
     let grown = dragged_region(doc, &still, RegionDrag::Scale, DVec2::new(0.0, -150.0));
-    let m = DMat4::from_cols_array(&grown.transform);
+    let m = DMat4::from_cols_array(&grown.transform.unwrap());
     assert!((m.x_axis.x - 2.0).abs() < 1e-12 && (m.determinant() - 8.0).abs() < 1e-9);
     let far = dragged_region(doc, &still, RegionDrag::Turn, DVec2::new(2000.0, 0.0));
     editor.apply(Op::RegionEdit(far)).unwrap();
     editor.apply(Op::RegionEdit(grown)).unwrap();
+}
+
+#[test]
+fn one_handle_is_one_transform_and_handles_blend_between_neighbours() {
+    let mesh = primitives::icosphere(1.0, 4);
+    let edit = RegionEdit::new(&mesh, &curves(&mesh, 80.0, 160.0), &Levels::default()).unwrap();
+    let t = transform(DVec3::Z, 60.0, 1.2, DVec3::new(0.0, 0.3, 0.0));
+    let one = edit
+        .motion(&[Handle {
+            at: 0.3,
+            transform: t,
+        }])
+        .unwrap();
+    assert_eq!(edit.applied(&mesh, &one), edit.applied(&mesh, &whole(t)));
+
+    // Pinned at both ends and turned in the middle: each path vertex takes Alexa's blend of
+    // its two neighbouring handles, `(1 − u) ⊙ A ⊕ u ⊙ B`, and the ends stay.
+    let pin = |at: f64| Handle {
+        at,
+        transform: DMat4::IDENTITY,
+    };
+    let middle = Handle {
+        at: 0.5,
+        transform: t,
+    };
+    let handles = [pin(0.0), middle, pin(1.0)];
+    let moved = edit.applied(&mesh, &edit.motion(&handles).unwrap());
+    let log = sketchmesh_core::geometry::log_affine(t).unwrap();
+    let reference = edit.reference();
+    for (&v, &at) in reference.iter().zip(edit.reference_params()) {
+        let u = 1.0 - (at - 0.5).abs() / 0.5;
+        let exact =
+            sketchmesh_core::geometry::exp_affine(log * u).transform_point3(mesh.position(v));
+        assert!(moved[v.index()].distance(exact) < 1e-12, "at {at}");
+    }
+    assert_eq!(moved[reference[0].index()], mesh.position(reference[0]));
+    let last = *reference.last().unwrap();
+    assert_eq!(moved[last.index()], mesh.position(last));
+    // Nothing outside the boundary moves; inside, each vertex takes its weight of the
+    // transform at its nearest point of the curve, so nothing moves more than at the curve.
+    let region: std::collections::HashSet<_> = edit.vertices().iter().copied().collect();
+    for v in mesh.vertices().filter(|v| !region.contains(v)) {
+        assert_eq!(moved[v.index()], mesh.position(v));
+    }
+    let most = |m: &[DVec3], vs: &mut dyn Iterator<Item = sketchmesh_core::mesh::VertexId>| {
+        vs.map(|v| m[v.index()].distance(mesh.position(v)))
+            .fold(0.0, f64::max)
+    };
+    let whole_moved = edit.applied(&mesh, &whole(t));
+    assert!(
+        most(&moved, &mut edit.vertices().iter().copied())
+            < most(&whole_moved, &mut edit.vertices().iter().copied())
+    );
+
+    // What the curve takes between handles is what a new handle there would keep.
+    let quarter = blend_at(&handles, 0.25).unwrap();
+    let half = sketchmesh_core::geometry::exp_affine(log * 0.5);
+    assert!(
+        (quarter - half)
+            .to_cols_array()
+            .iter()
+            .all(|x| x.abs() < 1e-12)
+    );
+    assert_eq!(blend_at(&handles, 0.5).unwrap(), t);
+    // The rail: frames on the curve, orthonormal and right-handed.
+    let rail = edit.rail(&mesh);
+    assert_eq!(rail.frame_at(0.0).origin, mesh.position(reference[0]));
+    assert_eq!(rail.frame_at(1.0).origin, mesh.position(last));
+    for at in [0.0, 0.3, 0.5, 0.77, 1.0] {
+        let [a, b, c] = rail.frame_at(at).axes;
+        assert!((a.cross(b) - c).length() < 1e-12 && (a.length() - 1.0).abs() < 1e-12);
+        assert!(a.dot(b).abs() < 1e-12);
+        // On the front of the sphere seen from +z, the surface normal points at the viewer.
+        assert!(b.z > 0.5, "{b} at {at}");
+    }
+
+    // A handle reaches only its neighbours: with pins at 0.25 and 0.75, the curve beyond
+    // them does not move.
+    let handles = [pin(0.25), middle, pin(0.75)];
+    let moved = edit.applied(&mesh, &edit.motion(&handles).unwrap());
+    for (&v, &at) in reference.iter().zip(edit.reference_params()) {
+        let p = mesh.position(v);
+        if !(0.25..=0.75).contains(&at) {
+            assert_eq!(moved[v.index()], p, "at {at}");
+        } else if (at - 0.5).abs() < 0.2 {
+            assert_ne!(moved[v.index()], p, "at {at}");
+        }
+    }
+    // Refused: no handle, a handle off the curve, two at one place, a mirror.
+    let mirror = DMat4::from_scale(DVec3::new(-1.0, 1.0, 1.0));
+    for (handles, expected) in [
+        (vec![], RegionError::BadHandles),
+        (vec![pin(1.5)], RegionError::BadHandles),
+        (vec![pin(0.5), middle], RegionError::BadHandles),
+        (vec![pin(f64::NAN)], RegionError::BadHandles),
+        (
+            vec![Handle {
+                at: 0.2,
+                transform: mirror,
+            }],
+            RegionError::TransformMirrors,
+        ),
+    ] {
+        assert_eq!(edit.motion(&handles).unwrap_err(), expected);
+    }
+}
+
+#[test]
+fn a_handles_op_replays_and_one_motion_is_required() {
+    let (_, _, mut editor, still) = sphere_in_editor();
+    let before = digest(editor.document());
+    let turn = transform(DVec3::Z, 40.0, 1.0, DVec3::new(0.0, 0.2, 0.0));
+    let handle = |at: f64, t: DMat4| sketchmesh_core::document::HandleInput {
+        at,
+        transform: t.to_cols_array(),
+    };
+    let handles = RegionEditInput {
+        transform: None,
+        handles: Some(vec![handle(0.0, DMat4::IDENTITY), handle(1.0, turn)]),
+        ..still.clone()
+    };
+    for unclear in [
+        RegionEditInput {
+            transform: None,
+            ..still.clone()
+        },
+        RegionEditInput {
+            handles: handles.handles.clone(),
+            ..still.clone()
+        },
+    ] {
+        match editor.apply(Op::RegionEdit(unclear)) {
+            Err(CommandError::Region(RegionError::MotionUnclear)) => {}
+            other => panic!("{other:?}"),
+        }
+        assert_eq!(digest(editor.document()), before);
+    }
+    // A drag of the handles: the preview commits what replay gives.
+    let mut edit = editor.begin_gesture(Op::RegionEdit(still.clone())).unwrap();
+    edit.revise(Op::RegionEdit(handles.clone()));
+    edit.step().unwrap();
+    edit.finish(&mut editor).unwrap();
+    assert_ne!(digest(editor.document()), before);
+    let replayed = Editor::replay_json(&editor.session_json()).unwrap();
+    assert_eq!(digest(replayed.document()), digest(editor.document()));
+    assert!(editor.session_json().contains("\"handles\""));
 }

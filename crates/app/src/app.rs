@@ -921,6 +921,7 @@ impl SketchApp {
         }
         self.gizmo_ui(ui, viewport);
         self.falloff_ui(ui, viewport);
+        self.region_handles_ui(ui, viewport);
         if let Some(amount) = self.edit.as_ref().and_then(feature_amount) {
             hint_ui(ui, viewport, &amount);
         }
@@ -970,6 +971,52 @@ impl SketchApp {
                 egui::Rect::from_center_size(centre, egui::vec2(3.0, 3.0)),
                 0.0,
                 egui::Color32::from_gray(gray),
+            );
+        }
+    }
+
+    /// The region tool's handles: per handle three axes (red along the curve, green along
+    /// the surface normal, blue across), each drawn in its thirds: a bar near the handle
+    /// (move), a square in the middle (scale), a ring at the end (turn); the part being
+    /// dragged brighter.
+    fn region_handles_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
+        let camera = self.shared.borrow().camera.camera();
+        let size = glam::DVec2::new(viewport.width().into(), viewport.height().into());
+        let axes = self.tools.region_handles(&camera, size);
+        let at = |p: glam::DVec2| viewport.min + egui::vec2(p.x as f32, p.y as f32);
+        let painter = ui.painter();
+        for mark in &axes {
+            let [r, g, b] = [[230, 80, 70], [90, 200, 90], [80, 140, 240]][mark.axis];
+            let colour = |part| match mark.dragged == Some(part) {
+                true => egui::Color32::from_rgb(255, 240, 160),
+                false => egui::Color32::from_rgb(r, g, b),
+            };
+            let (from, to) = (at(mark.from), at(mark.to));
+            let third = |k: f32| from + (to - from) * (k / 3.0);
+            let shadow = egui::Stroke::new(6.0, egui::Color32::from_black_alpha(140));
+            painter.line_segment([from, to], shadow);
+            painter.line_segment(
+                [from, third(1.0)],
+                egui::Stroke::new(4.0, colour(crate::tools::region::Part::Translate)),
+            );
+            painter.line_segment(
+                [third(1.0), to],
+                egui::Stroke::new(2.0, egui::Color32::from_rgb(r, g, b)),
+            );
+            let square = egui::Rect::from_center_size(third(1.5), egui::vec2(11.0, 11.0));
+            painter.rect_filled(square, 2.0, colour(crate::tools::region::Part::Scale));
+            painter.circle_stroke(
+                to,
+                7.0,
+                egui::Stroke::new(3.0, colour(crate::tools::region::Part::Rotate)),
+            );
+        }
+        for mark in axes.iter().filter(|m| m.axis == 0) {
+            painter.circle_filled(at(mark.from), 6.0, egui::Color32::WHITE);
+            painter.circle_stroke(
+                at(mark.from),
+                6.0,
+                egui::Stroke::new(1.5, egui::Color32::BLACK),
             );
         }
     }

@@ -51,10 +51,14 @@ impl Default for Camera {
 }
 
 /// Orthonormal camera frame in world space.
-struct Frame {
-    right: DVec3,
-    up: DVec3,
-    forward: DVec3,
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Frame {
+    /// Right on screen.
+    pub right: DVec3,
+    /// Up on screen.
+    pub up: DVec3,
+    /// Into the screen.
+    pub forward: DVec3,
 }
 
 impl Camera {
@@ -96,7 +100,8 @@ impl Camera {
         (distance * NEAR_FACTOR, distance * FAR_FACTOR)
     }
 
-    fn frame(&self) -> Frame {
+    /// The camera's right, up and forward directions.
+    pub fn frame(&self) -> Frame {
         let forward = self.forward();
         let right = forward.cross(self.up).normalize();
         let up = right.cross(forward);

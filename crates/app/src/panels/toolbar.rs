@@ -116,7 +116,7 @@ pub fn toolbar_ui(
                 ui.separator();
             }
             Mode::Region => {
-                let output = tools.region_ui(ui);
+                let output = tools.region_ui(ui, editor.document());
                 if output != ToolOutput::None {
                     action = Some(Action::Tool(Box::new(output)));
                 }

@@ -87,8 +87,16 @@ impl ToolSet {
     }
 
     /// The region tool's panel; what the user did there.
-    pub fn region_ui(&mut self, ui: &mut egui::Ui) -> ToolOutput {
-        self.region.settings_ui(ui)
+    pub fn region_ui(&mut self, ui: &mut egui::Ui, doc: &Document) -> ToolOutput {
+        self.region.settings_ui(ui, doc)
+    }
+
+    /// The region tool's handle axes as seen, to draw.
+    pub fn region_handles(&self, camera: &Camera, viewport: glam::DVec2) -> Vec<region::AxisMark> {
+        match self.mode {
+            Mode::Region => self.region.handle_axes(camera, viewport),
+            _ => Vec::new(),
+        }
     }
 
     /// The move tool's panel; what the user did there.
@@ -126,10 +134,12 @@ impl ToolSet {
         self.region.cancel();
     }
 
-    /// Confirms what the active tool holds open (Enter): an optimization's preview.
+    /// Confirms what the active tool holds open (Enter): an optimization's preview, a region's
+    /// handles.
     pub fn confirm(&mut self) -> ToolOutput {
         match self.mode {
             Mode::Optimize => self.optimize.confirm(),
+            Mode::Region => self.region.confirm(),
             _ => ToolOutput::None,
         }
     }

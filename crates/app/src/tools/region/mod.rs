@@ -7,6 +7,12 @@
 //! does; each move revises its transform (the core finds the region once and only moves it
 //! again), and release commits the last one. The fall-off's shape is picked in the
 //! toolbar's second row.
+//!
+//! With **Handles** picked instead of a drag, the curves get 3-axis handles ([`handles`]);
+//! the gesture begins at the first handle drag and stays open across drags, each revising
+//! the handles' transforms, until Apply (or Enter) commits them as one undo step.
+
+mod handles;
 
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
@@ -14,8 +20,11 @@ use sketchmesh_core::curve::polyline::{BAUDEL_K, distance_to_polyline, oversketc
 use sketchmesh_core::curve::{StrokePoint, is_closed_loop};
 use sketchmesh_core::document::{
     CLOSE_TOLERANCE_PX, Document, Op, RegionDrag, RegionEditInput, StrokeInput, dragged_region,
-    model_under,
+    model_under, region_rail,
 };
+
+pub use handles::{AxisMark, Part};
+use handles::{HandleSession, Pressed};
 
 use super::context::{ToolOutput, ViewCtx};
 use super::draw::{DrawTool, is_tap, point};
@@ -51,18 +60,34 @@ const FALLOFFS: [(&str, &str, [f64; 5]); 4] = [
 /// part of it instead of being a boundary.
 const OVERSKETCH_PX: f64 = 30.0;
 
+/// What a drag does: moves the whole region, or works the handles on the curve.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum DragKind {
+    Region(RegionDrag),
+    Handles,
+}
+
 /// What a drag may do, as the toolbar offers it.
-const DRAGS: [(RegionDrag, &str, &str); 3] = [
-    (RegionDrag::Move, "Move", "The region follows the pointer"),
+const DRAGS: [(DragKind, &str, &str); 4] = [
     (
-        RegionDrag::Turn,
+        DragKind::Region(RegionDrag::Move),
+        "Move",
+        "The region follows the pointer",
+    ),
+    (
+        DragKind::Region(RegionDrag::Turn),
         "Turn",
         "Drag sideways: the region turns about the curve's middle",
     ),
     (
-        RegionDrag::Scale,
+        DragKind::Region(RegionDrag::Scale),
         "Scale",
         "Drag up to grow the region, down to shrink it",
+    ),
+    (
+        DragKind::Handles,
+        "Handles",
+        "Handles on the curve: drag an axis near its handle to move, its middle to scale, its end to turn; tap the curve to add one",
     ),
 ];
 
@@ -77,7 +102,9 @@ enum Stage {
     /// Both curves are drawn: the next drag moves the region.
     Ready(RegionEditInput),
     /// Dragging from where the pointer went down.
-    Dragging(RegionEditInput, DVec2),
+    Dragging(RegionEditInput, DVec2, RegionDrag),
+    /// Working the handles; whether their gesture has begun.
+    Handles(Box<HandleSession>, bool),
 }
 
 /// The region tool's state: the curves, the fall-off and the drag.
@@ -87,7 +114,7 @@ pub struct RegionTool {
     /// The fall-off's levels: weights from the boundary to the reference curve.
     levels: Vec<f64>,
     /// What a drag does.
-    drag: RegionDrag,
+    drag: DragKind,
     stage: Stage,
 }
 
@@ -96,7 +123,7 @@ impl Default for RegionTool {
         RegionTool {
             draw: DrawTool::default(),
             levels: FALLOFFS[0].2.to_vec(),
-            drag: RegionDrag::default(),
+            drag: DragKind::Region(RegionDrag::default()),
             stage: Stage::default(),
         }
     }
@@ -107,10 +134,10 @@ impl RegionTool {
     pub fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
         match std::mem::take(&mut self.stage) {
             Stage::Reference => self.reference(event, view, doc),
-            Stage::Boundary(reference) => self.boundary(reference, event, view),
-            Stage::Ready(input) => match event {
-                ToolEvent::Begin(s) => {
-                    self.stage = Stage::Dragging(input.clone(), point(s, view).pos);
+            Stage::Boundary(reference) => self.boundary(reference, event, view, doc),
+            Stage::Ready(input) => match (event, self.drag) {
+                (ToolEvent::Begin(s), DragKind::Region(drag)) => {
+                    self.stage = Stage::Dragging(input.clone(), point(s, view).pos, drag);
                     ToolOutput::Begin(Op::RegionEdit(input))
                 }
                 _ => {
@@ -118,24 +145,100 @@ impl RegionTool {
                     ToolOutput::None
                 }
             },
-            Stage::Dragging(input, from) => match event {
+            Stage::Dragging(input, from, drag) => match event {
                 ToolEvent::Move(s) => {
                     let offset = point(s, view).pos - from;
-                    let op = Op::RegionEdit(dragged_region(doc, &input, self.drag, offset));
-                    self.stage = Stage::Dragging(input, from);
+                    let op = Op::RegionEdit(dragged_region(doc, &input, drag, offset));
+                    self.stage = Stage::Dragging(input, from, drag);
                     ToolOutput::Revise(op)
                 }
                 ToolEvent::End(s) => {
                     let offset = point(s, view).pos - from;
-                    let done = dragged_region(doc, &input, self.drag, offset);
+                    let done = dragged_region(doc, &input, drag, offset);
                     ToolOutput::FinishWith(Op::RegionEdit(done))
                 }
                 ToolEvent::Cancel => ToolOutput::Cancel,
                 ToolEvent::Begin(_) => {
-                    self.stage = Stage::Dragging(input, from);
+                    self.stage = Stage::Dragging(input, from, drag);
                     ToolOutput::None
                 }
             },
+            Stage::Handles(session, begun) => self.handles(session, begun, event, view),
+        }
+    }
+
+    /// An event while the handles are shown: a press takes an axis (beginning the gesture
+    /// at the first) or adds a handle, a move drags, a release lets go; the gesture stays
+    /// open for the next drag.
+    fn handles(
+        &mut self,
+        mut session: Box<HandleSession>,
+        begun: bool,
+        event: &ToolEvent,
+        view: &ViewCtx,
+    ) -> ToolOutput {
+        let size = DVec2::new(view.viewport.width().into(), view.viewport.height().into());
+        let (output, begun) = match event {
+            ToolEvent::Begin(s) => match session.press(point(s, view).pos, &view.camera, size) {
+                Pressed::Axis if !begun => {
+                    (ToolOutput::Begin(Op::RegionEdit(session.input())), true)
+                }
+                Pressed::Added if begun => {
+                    (ToolOutput::Revise(Op::RegionEdit(session.input())), true)
+                }
+                _ => (ToolOutput::None, begun),
+            },
+            ToolEvent::Move(s) if session.dragging() => {
+                session.drag_to(point(s, view).pos);
+                (ToolOutput::Revise(Op::RegionEdit(session.input())), begun)
+            }
+            ToolEvent::End(s) if session.dragging() => {
+                session.drag_to(point(s, view).pos);
+                session.release();
+                (ToolOutput::Revise(Op::RegionEdit(session.input())), begun)
+            }
+            ToolEvent::Cancel => {
+                session.release();
+                (ToolOutput::None, begun)
+            }
+            _ => (ToolOutput::None, begun),
+        };
+        self.stage = Stage::Handles(session, begun);
+        output
+    }
+
+    /// Applies the handles as they stand (Enter, or the panel's Apply): one undo step.
+    pub fn confirm(&mut self) -> ToolOutput {
+        match std::mem::take(&mut self.stage) {
+            Stage::Handles(session, true) if session.moved() => ToolOutput::Finish,
+            Stage::Handles(_, true) => ToolOutput::Cancel,
+            stage => {
+                self.stage = stage;
+                ToolOutput::None
+            }
+        }
+    }
+
+    /// The handle axes to draw, while the handles are shown.
+    pub fn handle_axes(&self, camera: &Camera, viewport: DVec2) -> Vec<AxisMark> {
+        match &self.stage {
+            Stage::Handles(session, _) => session.axes(camera, viewport),
+            _ => Vec::new(),
+        }
+    }
+
+    /// The curves get handles: the curve is placed on the model (a one-off cost), or the
+    /// reason it cannot be.
+    fn show_handles(&mut self, input: RegionEditInput, doc: &Document) -> ToolOutput {
+        match region_rail(doc, &input) {
+            Ok((_, rail)) => {
+                self.stage = Stage::Handles(Box::new(HandleSession::new(input, rail)), false);
+                ToolOutput::None
+            }
+            Err(error) => {
+                self.stage = Stage::Ready(input);
+                ToolOutput::Refused(error.to_string())
+            }
         }
     }
 
@@ -163,6 +266,7 @@ impl RegionTool {
         reference: StrokeInput,
         event: &ToolEvent,
         view: &ViewCtx,
+        doc: &Document,
     ) -> ToolOutput {
         let Some(input) = self.draw.capture(event, view) else {
             self.stage = Stage::Boundary(reference);
@@ -182,14 +286,19 @@ impl RegionTool {
         if boundary.len() > 1 && boundary.first() == boundary.last() {
             boundary.pop();
         }
-        self.stage = Stage::Ready(RegionEditInput {
+        let input = RegionEditInput {
             viewport: reference.viewport,
             camera: reference.camera,
             reference: reference.stroke,
             boundary,
             levels: Some(self.levels.clone()),
-            transform: glam::DMat4::IDENTITY.to_cols_array(),
-        });
+            transform: Some(glam::DMat4::IDENTITY.to_cols_array()),
+            handles: None,
+        };
+        if self.drag == DragKind::Handles {
+            return self.show_handles(input, doc);
+        }
+        self.stage = Stage::Ready(input);
         ToolOutput::None
     }
 
@@ -215,15 +324,10 @@ impl RegionTool {
             Stage::Boundary(reference) if reference.camera == *camera => {
                 vec![mark(reference.points(), true)]
             }
-            Stage::Ready(input) if input.camera == *camera => {
-                let boundary = StrokeInput {
-                    stroke: input.boundary.clone(),
-                    ..input.reference_input()
-                };
-                vec![
-                    mark(input.reference_input().points(), true),
-                    mark(boundary.points(), false),
-                ]
+            Stage::Ready(input) if input.camera == *camera => curve_marks(input),
+            // Until a handle moves the region, whose curves then stay where they were drawn.
+            Stage::Handles(session, false) if session.input().camera == *camera => {
+                curve_marks(&session.input())
             }
             _ => Vec::new(),
         }
@@ -237,23 +341,36 @@ impl RegionTool {
                 "Now draw a closed loop around it (outside stays), or redraw part of the curve",
             ),
             Stage::Ready(_) => Some(match self.drag {
-                RegionDrag::Move => "Drag: the region follows, fading out toward the boundary",
-                RegionDrag::Turn => {
+                DragKind::Region(RegionDrag::Move) => {
+                    "Drag: the region follows, fading out toward the boundary"
+                }
+                DragKind::Region(RegionDrag::Turn) => {
                     "Drag sideways: the region turns, fading out toward the boundary"
                 }
-                RegionDrag::Scale => "Drag up or down: the region grows or shrinks, fading out",
+                DragKind::Region(RegionDrag::Scale) => {
+                    "Drag up or down: the region grows or shrinks, fading out"
+                }
+                DragKind::Handles => "Pick Handles again to place them on the curves",
             }),
+            Stage::Handles(_, false) => Some(
+                "Drag a handle's axis: near the handle moves, its middle scales, its end turns; tap the curve to add a handle",
+            ),
+            Stage::Handles(_, true) => {
+                Some("Drag more handles, or Apply (Enter) to keep the edit as one step")
+            }
             Stage::Dragging(..) => None,
         }
     }
 
-    /// The panel: what a drag does, the fall-off's shape, and Clear.
-    pub fn settings_ui(&mut self, ui: &mut egui::Ui) -> ToolOutput {
+    /// The panel: what a drag does, the fall-off's shape, Apply for the handles, and Clear.
+    pub fn settings_ui(&mut self, ui: &mut egui::Ui, doc: &Document) -> ToolOutput {
+        let mut output = ToolOutput::None;
         for (drag, label, hint) in DRAGS {
             let button =
                 egui::Button::selectable(self.drag == drag, label).min_size(egui::vec2(36.0, 36.0));
-            if ui.add(button).on_hover_text(hint).clicked() {
+            if ui.add(button).on_hover_text(hint).clicked() && self.drag != drag {
                 self.drag = drag;
+                output = self.change_drag(doc);
             }
         }
         ui.separator();
@@ -267,8 +384,28 @@ impl RegionTool {
             }
         }
         changed |= levels_ui(ui, &mut self.levels);
-        if changed && let Stage::Ready(input) = &mut self.stage {
-            input.levels = Some(self.levels.clone());
+        if changed {
+            match &mut self.stage {
+                Stage::Ready(input) => input.levels = Some(self.levels.clone()),
+                Stage::Handles(session, begun) => {
+                    session.set_levels(&self.levels);
+                    if *begun {
+                        output = ToolOutput::Revise(Op::RegionEdit(session.input()));
+                    }
+                }
+                _ => {}
+            }
+        }
+        if let Stage::Handles(session, begun) = &self.stage {
+            let ready = *begun && session.moved();
+            let apply = egui::Button::new("Apply").min_size(egui::vec2(36.0, 36.0));
+            if ui
+                .add_enabled(ready, apply)
+                .on_hover_text("Keep what the handles did as one step (Enter)")
+                .clicked()
+            {
+                output = self.confirm();
+            }
         }
         let drawn = !matches!(self.stage, Stage::Reference);
         if ui
@@ -276,10 +413,51 @@ impl RegionTool {
             .on_hover_text("Draw a new reference curve and boundary")
             .clicked()
         {
+            let open = matches!(self.stage, Stage::Handles(_, true));
             self.cancel();
+            if open {
+                output = ToolOutput::Cancel;
+            }
         }
-        ToolOutput::None
+        output
     }
+
+    /// The drag's kind changed: handles appear on drawn curves, or go (their open edit
+    /// dropped) when a whole-region drag is picked.
+    fn change_drag(&mut self, doc: &Document) -> ToolOutput {
+        match (std::mem::take(&mut self.stage), self.drag) {
+            (Stage::Ready(input), DragKind::Handles) => self.show_handles(input, doc),
+            (Stage::Handles(session, begun), DragKind::Region(_)) => {
+                self.stage = Stage::Ready(session.curves().clone());
+                if begun {
+                    ToolOutput::Cancel
+                } else {
+                    ToolOutput::None
+                }
+            }
+            (stage, _) => {
+                self.stage = stage;
+                ToolOutput::None
+            }
+        }
+    }
+}
+
+/// The two curves of `input`, drawn.
+fn curve_marks(input: &RegionEditInput) -> Vec<Mark> {
+    let mark = |points: Vec<StrokePoint>, features| Mark {
+        points,
+        radius: None,
+        features,
+    };
+    let boundary = StrokeInput {
+        stroke: input.boundary.clone(),
+        ..input.reference_input()
+    };
+    vec![
+        mark(input.reference_input().points(), true),
+        mark(boundary.points(), false),
+    ]
 }
 
 /// `reference` with `stroke` merged into it, when the stroke is open and both its ends lie
@@ -407,14 +585,14 @@ mod tests {
         let ToolOutput::Begin(Op::RegionEdit(begun)) = begun else {
             panic!("{begun:?}")
         };
-        assert_eq!(begun.transform, glam::DMat4::IDENTITY.to_cols_array());
+        assert_eq!(begun.transform, Some(glam::DMat4::IDENTITY.to_cols_array()));
         let revised = tool.on_event(&ToolEvent::Move(at(Phase::Move, drag[1])), &view(), doc);
         assert!(matches!(revised, ToolOutput::Revise(Op::RegionEdit(_))));
         let done = tool.on_event(&ToolEvent::End(at(Phase::Up, drag[2])), &view(), doc);
         let ToolOutput::FinishWith(Op::RegionEdit(done)) = done else {
             panic!("the release finishes the edit: {done:?}")
         };
-        let moved = glam::DMat4::from_cols_array(&done.transform)
+        let moved = glam::DMat4::from_cols_array(&done.transform.unwrap())
             .w_axis
             .truncate();
         assert!(moved.y > 0.0, "dragged up, moved up: {moved}");
@@ -428,6 +606,83 @@ mod tests {
             done.reference.iter().any(|p| (p[1] - 300.0).abs() < 0.5),
             "so is the rest"
         );
+    }
+
+    #[test]
+    fn handles_drag_the_curve_in_one_open_edit_until_applied() {
+        let editor = shape();
+        let doc = editor.document();
+        let centre = DVec2::new(400.0, 340.0);
+        let mut tool = RegionTool {
+            drag: DragKind::Handles,
+            ..RegionTool::default()
+        };
+        let line: Vec<DVec2> = (0..=30)
+            .map(|i| centre + DVec2::new(4.0 * f64::from(i) - 60.0, 0.0))
+            .collect();
+        stroke(&mut tool, doc, &line);
+        let ring: Vec<DVec2> = (0..=48)
+            .map(|i| {
+                centre + 110.0 * DVec2::from_angle(std::f64::consts::TAU * f64::from(i) / 48.0)
+            })
+            .collect();
+        assert_eq!(stroke(&mut tool, doc, &ring), ToolOutput::None);
+        let view = view();
+        let size = DVec2::new(view.viewport.width().into(), view.viewport.height().into());
+        let axes = tool.handle_axes(&view.camera, size);
+        assert!(axes.len() >= 6, "three handles with their axes: {axes:?}");
+        assert!(tool.hint().unwrap().contains("axis"));
+        // Seen head-on, the middle handle's normal points at the viewer and is not offered;
+        // its binormal (up the screen, across the curve) is pressed in its inner third and
+        // dragged along it.
+        assert!(!axes.iter().any(|m| m.handle == 1 && m.axis == 1));
+        let binormal = *axes.iter().find(|m| m.handle == 1 && m.axis == 2).unwrap();
+        let press = binormal.from.lerp(binormal.to, 0.15);
+        let along = (binormal.to - binormal.from).normalize() * 30.0;
+        let at = |phase, p: DVec2| {
+            let p = p + DVec2::new(view.viewport.min.x.into(), view.viewport.min.y.into());
+            pen(phase, p.x as f32, p.y as f32)
+        };
+        let begun = tool.on_event(&ToolEvent::Begin(at(Phase::Down, press)), &view, doc);
+        let ToolOutput::Begin(Op::RegionEdit(begun)) = begun else {
+            panic!("the first handle drag begins the edit: {begun:?}")
+        };
+        assert_eq!(
+            (begun.transform, begun.handles.as_ref().map(Vec::len)),
+            (None, Some(3))
+        );
+        let moved = tool.on_event(&ToolEvent::Move(at(Phase::Move, press + along)), &view, doc);
+        let ToolOutput::Revise(Op::RegionEdit(moved)) = moved else {
+            panic!("{moved:?}")
+        };
+        let handles = moved.handles.unwrap();
+        let lift = glam::DMat4::from_cols_array(&handles[1].transform)
+            .w_axis
+            .truncate();
+        assert!(
+            lift.length() > 0.0 && handles[0].transform == glam::DMat4::IDENTITY.to_cols_array()
+        );
+        let released = tool.on_event(&ToolEvent::End(at(Phase::Up, press + along)), &view, doc);
+        assert!(
+            matches!(released, ToolOutput::Revise(_)),
+            "a release keeps the edit open"
+        );
+        // A tap on the curve between handles adds one; the second drag revises the same edit.
+        let quarter = tool.handle_axes(&view.camera, size);
+        let (a, b) = (
+            quarter[0].from,
+            quarter.iter().find(|m| m.handle == 1).unwrap().from,
+        );
+        let tap = a.lerp(b, 0.5);
+        let added = tool.on_event(&ToolEvent::Begin(at(Phase::Down, tap)), &view, doc);
+        let ToolOutput::Revise(Op::RegionEdit(added)) = added else {
+            panic!("a tap on the curve adds a handle: {added:?}")
+        };
+        assert_eq!(added.handles.unwrap().len(), 4);
+        tool.on_event(&ToolEvent::End(at(Phase::Up, tap)), &view, doc);
+        assert_eq!(tool.confirm(), ToolOutput::Finish);
+        assert!(tool.handle_axes(&view.camera, size).is_empty());
+        assert!(tool.hint().unwrap().contains("reference"));
     }
 
     #[test]

@@ -65,6 +65,8 @@ const CENTRE = { x: 660, y: 380 };
 const FILE_MENU = { x: 28, y: 20 };
 const MERGE_BUTTON = { x: 186, y: 63 };
 const DOCUMENTS_ITEM = { x: 56, y: 102 };
+/** The region tool's Handles button, in the toolbar's second row. */
+const HANDLES_BUTTON = { x: 213, y: 59 };
 
 /** The ellipse the shape tests draw: centre, radii. */
 const ELLIPSE = { c: { x: 640, y: 400 }, rx: 170, ry: 120 };
@@ -1062,6 +1064,64 @@ test('region (L): a curve on a shape, a loop around it, then a drag up moves the
     await frames(fresh.page, 3);
     assert.deepEqual(await glbOf(fresh.page), original, 'undo restores the shape bit for bit');
     assert.deepEqual(fresh.errors, [], 'console errors while editing a region');
+}));
+
+test('region handles: with Handles picked, the curves get 3-axis handles; dragging the middle one up bends the region with its ends pinned, and Enter keeps the drags as one step', () => withShape(async ({ fresh, created }) => {
+    const c = ELLIPSE.c;
+    const lastOp = () => lastOpOf(fresh.page);
+    await until(lastOp, (o) => o.op === 'create', 15_000);
+    const original = await glbOf(fresh.page);
+    await fresh.page.keyboard.press('l');
+    await frames(fresh.page, 3);
+    await fresh.page.mouse.click(HANDLES_BUTTON.x, HANDLES_BUTTON.y);
+    await frames(fresh.page, 2);
+    await penStroke(fresh.cdp, line({ x: c.x - 90, y: c.y }, { x: c.x + 90, y: c.y }, 30).map((p) => ({ ...p, force: 0.5 })));
+    const loop = Array.from({ length: 49 }, (_, i) => {
+      const a = (2 * Math.PI * i) / 48;
+      return { x: c.x + 150 * Math.cos(a), y: c.y + 105 * Math.sin(a), force: 0.5 };
+    });
+    await penStroke(fresh.cdp, loop);
+    await frames(fresh.page, 4);
+    const shown = await screenshot(fresh.page, out('region-handles.png'));
+    // The handles' axes are drawn: the blue binormal below the middle handle.
+    const blue = [...Array(40).keys()].filter((dy) => {
+      const i = ((c.y + 10 + dy) * shown.width + c.x) * 4;
+      return shown.data[i + 2] > 180 && shown.data[i] < 140;
+    }).length;
+    assert.ok(blue > 10, `the middle handle's axis is drawn (${blue} blue px)`);
+    // Its inner third, dragged up 50 px: the middle of the curve moves up, its ends stay.
+    const pen = { pointerType: 'pen', button: 'left' };
+    const drag = line({ x: c.x, y: c.y + 10 }, { x: c.x, y: c.y - 40 }, 10);
+    await fresh.cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', x: drag[0].x, y: drag[0].y, buttons: 1, clickCount: 1, force: 0.5, ...pen });
+    for (const p of drag.slice(1)) {
+      await sleep(20);
+      await fresh.cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', x: p.x, y: p.y, buttons: 1, force: 0.5, ...pen });
+    }
+    const last = drag[drag.length - 1];
+    await fresh.cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', x: last.x, y: last.y, buttons: 0, clickCount: 1, force: 0, ...pen });
+    await frames(fresh.page, 3);
+    assert.equal((await lastOp()).op, 'create', 'a handle drag keeps the edit open');
+    await fresh.page.keyboard.press('Enter');
+    const op = await until(lastOp, (o) => o.op === 'region_edit', 10_000);
+    assert.equal(op.op, 'region_edit', 'Enter commits the handles');
+    assert.equal(op.transform, undefined);
+    assert.equal(op.handles.length, 3);
+    const [first, middle, end] = op.handles;
+    assert.deepEqual([first.at, middle.at, end.at], [0, 0.5, 1]);
+    assert.ok(middle.transform[13] > 0, `the middle handle moved up (${middle.transform.slice(12, 15)})`);
+    assert.deepEqual(first.transform, [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1], 'the end handles stay');
+    assert.deepEqual(await api(fresh.page, 'stats'), created, 'same vertices, triangles and curves');
+    await frames(fresh.page, 3);
+    const after = await screenshot(fresh.page, out('region-handles-after.png'));
+    const inside = insideShape();
+    const far = inside.filter((p) => ((p.x - c.x) / 154) ** 2 + ((p.y - c.y) / 108) ** 2 > 1);
+    assert.ok(far.length > 50, `${far.length} points between the loop and the outline`);
+    const farChanged = changedFraction(shown, after, far, { radius: 0, threshold: 12 });
+    assert.ok(farChanged < 0.002, `nothing outside the loop moves (${farChanged})`);
+    await fresh.page.keyboard.press('Control+z');
+    await frames(fresh.page, 3);
+    assert.deepEqual(await glbOf(fresh.page), original, 'undo restores the shape bit for bit');
+    assert.deepEqual(fresh.errors, [], 'console errors while working handles');
 }));
 
 test('cut: a pen stroke across a shape cuts off the part past it after a moment, with a red rim; a tap right after makes a cross-section curve instead; undo restores', () => withShape(async ({ fresh }) => {

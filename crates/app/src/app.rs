@@ -36,9 +36,6 @@ use crate::tools::{Mark, Mode, ToolEvent, ToolOutput, ToolSet, ViewCtx};
 /// How long a status message stays up, in seconds.
 const STATUS_SECONDS: f64 = 6.0;
 
-/// The most dots a region edit's fall-off overlay draws (see `SketchApp::falloff_ui`).
-const FALLOFF_DOTS: usize = 2500;
-
 /// How long the steps of the edit in progress may run in one frame, in ms. At least one step
 /// runs every frame, whatever it costs (a factorization can take longer).
 pub const FRAME_BUDGET_MS: f64 = 12.0;
@@ -211,6 +208,12 @@ impl SketchApp {
             view_rect: egui::Rect::NOTHING,
             erasing_from: None,
         }
+    }
+
+    /// The edit in progress, if any, and the 3D view's rectangle last frame in points: what
+    /// a headless test reads the shown preview from.
+    pub fn edit_in_view(&self) -> (Option<&Edit>, egui::Rect) {
+        (self.edit.as_ref(), self.view_rect)
     }
 
     /// The state the page API shares.
@@ -891,12 +894,13 @@ impl SketchApp {
             && self.shown_motion != Some(edit.generation())
             && let Some(model) = edit.document().models.get(index)
         {
-            Arc::make_mut(&mut self.geometry).move_model(
-                index,
-                model,
-                positions,
-                &mut self.moved_normals,
-            );
+            let geometry = Arc::make_mut(&mut self.geometry);
+            geometry.move_model(index, model, positions, &mut self.moved_normals);
+            if let Some((shaded, vertices, weights)) = edit.region_falloff()
+                && shaded == index
+            {
+                geometry.shade_model(index, vertices, weights, falloff_levels(edit));
+            }
             self.shown_motion = Some(edit.generation());
         }
         if rebuilt && let Some(first) = self.frame_after_rebuild.take() {
@@ -920,7 +924,6 @@ impl SketchApp {
             hint_ui(ui, viewport, hint);
         }
         self.gizmo_ui(ui, viewport);
-        self.falloff_ui(ui, viewport);
         self.region_handles_ui(ui, viewport);
         if let Some(amount) = self.edit.as_ref().and_then(feature_amount) {
             hint_ui(ui, viewport, &amount);
@@ -934,44 +937,6 @@ impl SketchApp {
             .map(|o| (o.points.as_slice(), o.is_confident, false));
         for (points, confident, croppable) in picked.into_iter().chain(outline) {
             outline_ui(ui, viewport, points, confident, croppable);
-        }
-    }
-
-    /// A region edit's fall-off on the moving model: a dot at each region vertex, from dark
-    /// (stays) to white (moves fully), in as many grays as the fall-off has levels. At most
-    /// [`FALLOFF_DOTS`] dots, evenly picked, so a large region costs the painter no more.
-    fn falloff_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
-        let Some(edit) = self.edit.as_ref() else {
-            return;
-        };
-        let (Some((model, vertices, weights)), Some((moved, positions))) =
-            (edit.region_falloff(), edit.moved_model())
-        else {
-            return;
-        };
-        let Op::RegionEdit(input) = edit.op() else {
-            return;
-        };
-        if model != moved {
-            return;
-        }
-        let steps = input.levels.as_ref().map_or(5, Vec::len).max(2) - 1;
-        let camera = self.shared.borrow().camera.camera();
-        let size = glam::DVec2::new(viewport.width().into(), viewport.height().into());
-        let stride = vertices.len().div_ceil(FALLOFF_DOTS).max(1);
-        let painter = ui.painter();
-        for (v, w) in vertices.iter().zip(weights).step_by(stride) {
-            let Some(at) = camera.screen_from_world(positions[v.index()], size) else {
-                continue;
-            };
-            let level = (w * steps as f64).round() / steps as f64;
-            let gray = (30.0 + 225.0 * level) as u8;
-            let centre = viewport.min + egui::vec2(at.x as f32, at.y as f32);
-            painter.rect_filled(
-                egui::Rect::from_center_size(centre, egui::vec2(3.0, 3.0)),
-                0.0,
-                egui::Color32::from_gray(gray),
-            );
         }
     }
 
@@ -1094,7 +1059,15 @@ fn outline_ui(
         .add(egui::Shape::line(points, egui::Stroke::new(4.0, color)));
 }
 
-/// What the active tool asks for next, centred at the top of the viewport.
+/// How many gray levels a region edit's fall-off shows: one per level of its op (5 by
+/// default).
+fn falloff_levels(edit: &Edit) -> usize {
+    match edit.op() {
+        Op::RegionEdit(input) => input.levels.as_ref().map_or(5, Vec::len),
+        _ => 5,
+    }
+}
+
 /// A feature drag's amount as the user reads it, and where folding holds it back.
 fn feature_amount(edit: &Edit) -> Option<String> {
     let Op::SketchFeature(input) = edit.op() else {

@@ -108,18 +108,35 @@ fn save(image: &image::RgbaImage, name: &str) {
 
 /// Draws a closed ellipse of half-axes 150 × 110 about `center`, one sample per frame.
 fn draw_ellipse(h: &mut Harness<'_, SketchApp>, center: Pos2) {
-    h.event(Event::PointerMoved(center + vec2(150.0, 0.0)));
-    press(h, center + vec2(150.0, 0.0), PointerButton::Primary, true);
+    draw_loop(h, center, vec2(150.0, 110.0));
+}
+
+/// Draws a closed ellipse of half-axes `radii` about `center`, one sample per frame.
+fn draw_loop(h: &mut Harness<'_, SketchApp>, center: Pos2, radii: egui::Vec2) {
+    trace(h, ellipse(center, radii));
+    h.run();
+}
+
+/// The 61 points of a closed ellipse, back at its start.
+fn ellipse(center: Pos2, radii: egui::Vec2) -> Vec<Pos2> {
+    (0..=60)
+        .map(|i| {
+            let a = std::f32::consts::TAU * i as f32 / 60.0;
+            center + vec2(radii.x * a.cos(), radii.y * a.sin())
+        })
+        .collect()
+}
+
+/// Presses at the first of `points`, moves through the rest one per frame, releases.
+fn trace(h: &mut Harness<'_, SketchApp>, points: Vec<Pos2>) {
+    h.event(Event::PointerMoved(points[0]));
+    press(h, points[0], PointerButton::Primary, true);
     h.step();
-    for i in 1..=60 {
-        let a = std::f32::consts::TAU * i as f32 / 60.0;
-        h.event(Event::PointerMoved(
-            center + vec2(150.0 * a.cos(), 110.0 * a.sin()),
-        ));
+    for &p in &points[1..] {
+        h.event(Event::PointerMoved(p));
         h.step();
     }
-    press(h, center + vec2(150.0, 0.0), PointerButton::Primary, false);
-    h.run();
+    press(h, points[points.len() - 1], PointerButton::Primary, false);
 }
 
 /// Whether the app's document is exactly what replaying its session gives.
@@ -344,4 +361,116 @@ fn an_opened_session_at_the_same_revision_is_shown() {
         changed > 500,
         "the opened document is not shown ({changed} pixels changed)"
     );
+}
+
+/// The gray a fall-off level is drawn in: `scene.wgsl`'s `falloff_gray`, gamma-encoded.
+fn falloff_gray(level: f64) -> u8 {
+    let linear = 0.04 + (1.0 - 0.04) * level;
+    (linear.powf(1.0 / 2.2) * 255.0).round() as u8
+}
+
+#[test]
+fn a_region_shows_its_falloff_as_gray_levels_equal_to_the_weights() {
+    let mut h = harness();
+    h.run();
+    let center = pos2(450.0, 340.0);
+    draw_ellipse(&mut h, center);
+    // No grid: its axis lines cross the model's front.
+    h.key_press(egui::Key::G);
+    h.key_press(egui::Key::L);
+    h.run();
+    let (a, b) = (center - vec2(80.0, 0.0), center + vec2(80.0, 0.0));
+    trace(
+        &mut h,
+        (0..=30).map(|i| a + (b - a) * (i as f32 / 30.0)).collect(),
+    );
+    h.run();
+    // The loop opens the edit, which keeps the app drawing: steps, not a settled run.
+    let boundary = ellipse(center, vec2(130.0, 80.0));
+    trace(&mut h, boundary.clone());
+    h.run_steps(8);
+    // The two curves are drawn over the model: pixels near them are not the fall-off's.
+    let as_dvec = |p: &Pos2| glam::DVec2::new(p.x.into(), p.y.into());
+    let drawn = [
+        boundary.iter().map(as_dvec).collect::<Vec<_>>(),
+        vec![as_dvec(&a), as_dvec(&b)],
+    ];
+    let near_curves = |p: glam::DVec2| {
+        drawn
+            .iter()
+            .any(|c| sketchmesh_core::curve::polyline::distance_to_polyline(p, c) < 7.0)
+    };
+    let image = h.render().expect("render");
+    save(&image, "region-falloff");
+    let app = h.state();
+    let (Some(edit), view) = app.edit_in_view() else {
+        panic!("the loop opens the region edit, unmoved")
+    };
+    let (model, vertices, weights) = edit.region_falloff().expect("the region is found");
+    let shared = app.shared();
+    let shared = shared.borrow();
+    let camera = shared.camera.camera();
+    let mesh = &edit.document().models[model].mesh;
+    let size = glam::DVec2::new(view.width().into(), view.height().into());
+    // Inside a triangle whose corners all fall on one level, every weight the pixels
+    // interpolate rounds to that level too: the pixel at its centre is that level's gray.
+    let steps = 4.0;
+    let level = |w: f64| (w * steps).round() / steps;
+    let by_vertex: std::collections::HashMap<_, _> = vertices
+        .iter()
+        .copied()
+        .zip(weights.iter().copied())
+        .collect();
+    let (mut checked, mut levels_seen) = (0, std::collections::BTreeSet::new());
+    for f in mesh.faces() {
+        let corners = mesh.face_vertices(f);
+        let Some(ws) = corners
+            .iter()
+            .map(|v| by_vertex.get(v).copied())
+            .collect::<Option<Vec<f64>>>()
+        else {
+            continue;
+        };
+        if ws.iter().any(|&w| level(w) != level(ws[0])) {
+            continue;
+        }
+        let Some(seen) = corners
+            .iter()
+            .map(|&v| camera.screen_from_world(mesh.position(v), size))
+            .collect::<Option<Vec<_>>>()
+        else {
+            continue;
+        };
+        let [a, b, c] = [seen[0], seen[1], seen[2]].map(|p| p.truncate());
+        if (b - a).perp_dot(c - a).abs() < 40.0 {
+            continue;
+        }
+        let at = (a + b + c) / 3.0;
+        let (x, y) = (view.min.x + at.x as f32, view.min.y + at.y as f32);
+        if near_curves(glam::DVec2::new(x.into(), y.into())) {
+            continue;
+        }
+        let p = image.get_pixel(x.round() as u32, y.round() as u32).0;
+        let expected = falloff_gray(level(ws[0]));
+        assert!(
+            p[..3].iter().all(|&c| c.abs_diff(expected) <= 2),
+            "weights {ws:?} (level {}) drawn {p:?} at ({x}, {y}), expected gray {expected}",
+            level(ws[0])
+        );
+        checked += 1;
+        levels_seen.insert((level(ws[0]) * steps) as u32);
+    }
+    assert!(
+        checked > 100,
+        "only {checked} triangles checked of a region of {} vertices",
+        vertices.len()
+    );
+    // Levels 0 and 4 meet the two curves, whose strokes cover them in part.
+    assert!(levels_seen.len() >= 3, "levels shown: {levels_seen:?}");
+    // Between the loop and the outline, the model keeps its lit clay colour.
+    let clay: Vec<_> = (130..145)
+        .map(|dx| image.get_pixel(center.x as u32 + dx, center.y as u32).0)
+        .collect();
+    let warm = |p: &[u8; 4]| i32::from(p[0]) - i32::from(p[2]) > 10 && p[0] > 120;
+    assert!(clay.iter().any(warm), "outside the region: {clay:?}");
 }

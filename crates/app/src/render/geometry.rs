@@ -12,6 +12,7 @@ use bytemuck::{Pod, Zeroable};
 use glam::DVec3;
 use sketchmesh_core::document::{Document, Model};
 use sketchmesh_core::geometry::{vertex_normals, vertex_normals_of};
+use sketchmesh_core::mesh::VertexId;
 
 /// A mesh vertex as the shaders read it.
 #[repr(C)]
@@ -21,7 +22,14 @@ pub struct MeshVertex {
     pub pos: [f32; 3],
     /// Unit normal.
     pub normal: [f32; 3],
+    /// A region edit's fall-off weight at this vertex and the number of gray levels that
+    /// show it (0 black: stays, 1 white: moves fully), or [`NO_SHADE`] for the model's own
+    /// colour.
+    pub shade: [f32; 2],
 }
+
+/// [`MeshVertex::shade`] of a vertex drawn in the model's own colour.
+pub const NO_SHADE: [f32; 2] = [-1.0, 0.0];
 
 /// One segment of a thick curve: two end points with widths in points, and a colour.
 #[repr(C)]
@@ -170,12 +178,36 @@ impl SceneGeometry {
         self.motion += 1;
     }
 
+    /// Draws model `index`'s fall-off: each of `vertices` in gray by its weight, rounded per
+    /// pixel to one of `levels` evenly spaced levels (the thesis' gray levels), the rest of
+    /// the model in its own colour. Allocates nothing: it runs with every drag frame's move.
+    pub fn shade_model(
+        &mut self,
+        index: usize,
+        vertices: &[VertexId],
+        weights: &[f64],
+        levels: usize,
+    ) {
+        let Some(range) = self.model_ranges.get(index).cloned() else {
+            return;
+        };
+        let model = &mut self.vertices[range.vertices];
+        model.iter_mut().for_each(|v| v.shade = NO_SHADE);
+        for (v, &w) in vertices.iter().zip(weights) {
+            if let Some(vertex) = model.get_mut(v.index()) {
+                vertex.shade = [w.clamp(0.0, 1.0) as f32, levels.max(2) as f32];
+            }
+        }
+        self.motion += 1;
+    }
+
     fn add_mesh(&mut self, positions: &[DVec3], triangles: &[u32], normals: &[DVec3]) {
         let base = self.vertices.len() as u32;
         for (p, n) in positions.iter().zip(normals) {
             self.vertices.push(MeshVertex {
                 pos: p.as_vec3().to_array(),
                 normal: n.as_vec3().to_array(),
+                shade: NO_SHADE,
             });
             self.grow_bounds(*p);
         }

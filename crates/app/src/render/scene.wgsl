@@ -15,20 +15,29 @@ fn to_srgb(linear: vec3<f32>) -> vec3<f32> {
     return pow(clamp(linear, vec3<f32>(0.0), vec3<f32>(1.0)), vec3<f32>(1.0 / 2.2));
 }
 
+// The linear gray of a fall-off level (the app's harness test reads it back).
+fn falloff_gray(weight: f32) -> f32 {
+    return mix(0.04, 1.0, weight);
+}
+
 // ---- meshes -------------------------------------------------------------------------
 
 struct MeshOut {
     @builtin(position) clip: vec4<f32>,
     @location(0) normal: vec3<f32>,
     @location(1) world: vec3<f32>,
+    // A region edit's fall-off weight in [0, 1] (negative: the model's own colour) and how
+    // many gray levels show it.
+    @location(2) shade: vec2<f32>,
 };
 
 @vertex
-fn vs_mesh(@location(0) pos: vec3<f32>, @location(1) normal: vec3<f32>) -> MeshOut {
+fn vs_mesh(@location(0) pos: vec3<f32>, @location(1) normal: vec3<f32>, @location(2) shade: vec2<f32>) -> MeshOut {
     var out: MeshOut;
     out.clip = u.clip_from_world * vec4<f32>(pos, 1.0);
     out.normal = normal;
     out.world = pos;
+    out.shade = shade;
     return out;
 }
 
@@ -44,6 +53,14 @@ fn fs_mesh(in: MeshOut, @builtin(front_facing) front: bool) -> @location(0) vec4
     }
     // A key light above the viewer's shoulder, a fill from below and a hemisphere ambient.
     let key = normalize(to_eye + vec3<f32>(0.4, 0.8, 0.2));
+    if (in.shade.x >= 0.0) {
+        // The fall-off as the thesis shows it, a gray-scale texture in N levels: white moves
+        // fully, black not, unlit so that each level reads as its weight. The weight is
+        // rounded here, per pixel, so the levels meet in crisp lines across triangles.
+        let steps = max(in.shade.y - 1.0, 1.0);
+        let level = round(clamp(in.shade.x, 0.0, 1.0) * steps) / steps;
+        return vec4<f32>(to_srgb(vec3<f32>(falloff_gray(level))), 1.0);
+    }
     let fill = normalize(vec3<f32>(-0.5, -0.3, 0.6));
     let diffuse = max(dot(n, key), 0.0) * 0.75 + max(dot(n, fill), 0.0) * 0.15;
     let ambient = mix(0.12, 0.25, n.y * 0.5 + 0.5);

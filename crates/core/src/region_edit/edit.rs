@@ -8,6 +8,9 @@ use crate::feature::{Sketch, place};
 use crate::geometry::{Bvh, Fractions, log_affine, vertex_normals};
 use crate::mesh::{Mesh, VertexId};
 
+/// A boundary's last points this near (CSS px) its first close it: they are dropped.
+const CLOSED_PX: f64 = 1.0;
+
 /// A region of one mesh with its fall-off: see the [module docs](super).
 #[derive(Clone, Debug)]
 pub struct RegionEdit {
@@ -33,10 +36,11 @@ impl RegionEdit {
     /// Errors: the curves' refusals (see [`RegionError`]).
     pub fn new(mesh: &Mesh, sketch: &RegionSketch, levels: &Levels) -> Result<Self, RegionError> {
         let normals = vertex_normals(mesh);
-        let boundary = match sketch.boundary.split_last() {
-            Some((last, rest)) if rest.first() == Some(last) => rest.to_vec(),
-            _ => sketch.boundary.clone(),
-        };
+        // A loop drawn back to its start may end on it or just short of it.
+        let mut boundary = sketch.boundary.clone();
+        while boundary.len() > 3 && boundary[0].distance(boundary[boundary.len() - 1]) < CLOSED_PX {
+            boundary.pop();
+        }
         if boundary.iter().any(|p| !p.is_finite()) {
             return Err(RegionError::BoundaryCrosses);
         }

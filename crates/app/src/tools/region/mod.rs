@@ -3,14 +3,15 @@
 //! the reference curve and fading to nothing at the boundary, with a live preview and the
 //! fall-off shown on the model while it moves; release keeps it as one undo step.
 //!
-//! The drag begins a `region_edit` edit as a gesture at pointer-down, as the feature tool
-//! does; each move revises its transform (the core finds the region once and only moves it
-//! again), and release commits the last one. The fall-off's shape is picked in the
-//! toolbar's second row.
+//! The `region_edit` edit opens as a gesture, unmoved, as soon as the boundary closes, so
+//! the model shows the fall-off in gray levels before anything moves (Bujans §8); each
+//! move of the drag revises its transform (the core finds the region once and only moves
+//! it again), and release commits the last one. The fall-off's shape is picked in the
+//! toolbar's second row, and revises the open edit too.
 //!
 //! With **Handles** picked instead of a drag, the curves get 3-axis handles ([`handles`]);
-//! the gesture begins at the first handle drag and stays open across drags, each revising
-//! the handles' transforms, until Apply (or Enter) commits them as one undo step.
+//! the edit stays open across handle drags, each revising the handles' transforms, until
+//! Apply (or Enter) commits them as one undo step.
 
 mod handles;
 
@@ -103,7 +104,8 @@ enum Stage {
     Ready(RegionEditInput),
     /// Dragging from where the pointer went down.
     Dragging(RegionEditInput, DVec2, RegionDrag),
-    /// Working the handles; whether their gesture has begun.
+    /// Working the handles (the edit open since the curves were drawn); whether a handle
+    /// has been pressed yet.
     Handles(Box<HandleSession>, bool),
 }
 
@@ -137,8 +139,8 @@ impl RegionTool {
             Stage::Boundary(reference) => self.boundary(reference, event, view, doc),
             Stage::Ready(input) => match (event, self.drag) {
                 (ToolEvent::Begin(s), DragKind::Region(drag)) => {
-                    self.stage = Stage::Dragging(input.clone(), point(s, view).pos, drag);
-                    ToolOutput::Begin(Op::RegionEdit(input))
+                    self.stage = Stage::Dragging(input, point(s, view).pos, drag);
+                    ToolOutput::None
                 }
                 _ => {
                     self.stage = Stage::Ready(input);
@@ -180,13 +182,9 @@ impl RegionTool {
         let size = DVec2::new(view.viewport.width().into(), view.viewport.height().into());
         let (output, begun) = match event {
             ToolEvent::Begin(s) => match session.press(point(s, view).pos, &view.camera, size) {
-                Pressed::Axis if !begun => {
-                    (ToolOutput::Begin(Op::RegionEdit(session.input())), true)
-                }
-                Pressed::Added if begun => {
-                    (ToolOutput::Revise(Op::RegionEdit(session.input())), true)
-                }
-                _ => (ToolOutput::None, begun),
+                Pressed::Axis => (ToolOutput::None, true),
+                Pressed::Added => (ToolOutput::Revise(Op::RegionEdit(session.input())), true),
+                Pressed::Nothing => (ToolOutput::None, begun),
             },
             ToolEvent::Move(s) if session.dragging() => {
                 session.drag_to(point(s, view).pos);
@@ -210,8 +208,8 @@ impl RegionTool {
     /// Applies the handles as they stand (Enter, or the panel's Apply): one undo step.
     pub fn confirm(&mut self) -> ToolOutput {
         match std::mem::take(&mut self.stage) {
-            Stage::Handles(session, true) if session.moved() => ToolOutput::Finish,
-            Stage::Handles(_, true) => ToolOutput::Cancel,
+            Stage::Handles(session, _) if session.moved() => ToolOutput::Finish,
+            Stage::Handles(..) => ToolOutput::Cancel,
             stage => {
                 self.stage = stage;
                 ToolOutput::None
@@ -227,13 +225,15 @@ impl RegionTool {
         }
     }
 
-    /// The curves get handles: the curve is placed on the model (a one-off cost), or the
-    /// reason it cannot be.
+    /// The curves get handles: the curve is placed on the model (a one-off cost) and the
+    /// open edit shows the handles' op, or the reason it cannot be.
     fn show_handles(&mut self, input: RegionEditInput, doc: &Document) -> ToolOutput {
         match region_rail(doc, &input) {
             Ok((_, rail)) => {
-                self.stage = Stage::Handles(Box::new(HandleSession::new(input, rail)), false);
-                ToolOutput::None
+                let session = HandleSession::new(input, rail);
+                let op = Op::RegionEdit(session.input());
+                self.stage = Stage::Handles(Box::new(session), false);
+                ToolOutput::Revise(op)
             }
             Err(error) => {
                 self.stage = Stage::Ready(input);
@@ -295,11 +295,12 @@ impl RegionTool {
             transform: Some(glam::DMat4::IDENTITY.to_cols_array()),
             handles: None,
         };
+        // The edit opens at once, unmoved, so that its fall-off shows before any drag.
         if self.drag == DragKind::Handles {
             return self.show_handles(input, doc);
         }
-        self.stage = Stage::Ready(input);
-        ToolOutput::None
+        self.stage = Stage::Ready(input.clone());
+        ToolOutput::Revise(Op::RegionEdit(input))
     }
 
     /// Forgets the curves and the drag (the app cancels its edit).
@@ -386,18 +387,19 @@ impl RegionTool {
         changed |= levels_ui(ui, &mut self.levels);
         if changed {
             match &mut self.stage {
-                Stage::Ready(input) => input.levels = Some(self.levels.clone()),
-                Stage::Handles(session, begun) => {
+                Stage::Ready(input) => {
+                    input.levels = Some(self.levels.clone());
+                    output = ToolOutput::Revise(Op::RegionEdit(input.clone()));
+                }
+                Stage::Handles(session, _) => {
                     session.set_levels(&self.levels);
-                    if *begun {
-                        output = ToolOutput::Revise(Op::RegionEdit(session.input()));
-                    }
+                    output = ToolOutput::Revise(Op::RegionEdit(session.input()));
                 }
                 _ => {}
             }
         }
-        if let Stage::Handles(session, begun) = &self.stage {
-            let ready = *begun && session.moved();
+        if let Stage::Handles(session, _) = &self.stage {
+            let ready = session.moved();
             let apply = egui::Button::new("Apply").min_size(egui::vec2(36.0, 36.0));
             if ui
                 .add_enabled(ready, apply)
@@ -413,11 +415,8 @@ impl RegionTool {
             .on_hover_text("Draw a new reference curve and boundary")
             .clicked()
         {
-            let open = matches!(self.stage, Stage::Handles(_, true));
             self.cancel();
-            if open {
-                output = ToolOutput::Cancel;
-            }
+            output = ToolOutput::Cancel;
         }
         output
     }
@@ -427,13 +426,10 @@ impl RegionTool {
     fn change_drag(&mut self, doc: &Document) -> ToolOutput {
         match (std::mem::take(&mut self.stage), self.drag) {
             (Stage::Ready(input), DragKind::Handles) => self.show_handles(input, doc),
-            (Stage::Handles(session, begun), DragKind::Region(_)) => {
-                self.stage = Stage::Ready(session.curves().clone());
-                if begun {
-                    ToolOutput::Cancel
-                } else {
-                    ToolOutput::None
-                }
+            (Stage::Handles(session, _), DragKind::Region(_)) => {
+                let input = session.curves().clone();
+                self.stage = Stage::Ready(input.clone());
+                ToolOutput::Revise(Op::RegionEdit(input))
             }
             (stage, _) => {
                 self.stage = stage;
@@ -577,15 +573,17 @@ mod tests {
         let ring: Vec<DVec2> = (0..=48)
             .map(|i| centre + 90.0 * DVec2::from_angle(std::f64::consts::TAU * f64::from(i) / 48.0))
             .collect();
-        assert_eq!(stroke(&mut tool, doc, &ring), ToolOutput::None);
+        // The loop opens the edit, unmoved, so that its fall-off shows before the drag.
+        let opened = stroke(&mut tool, doc, &ring);
+        let ToolOutput::Revise(Op::RegionEdit(begun)) = opened else {
+            panic!("{opened:?}")
+        };
+        assert_eq!(begun.transform, Some(glam::DMat4::IDENTITY.to_cols_array()));
         assert_eq!(tool.marks(&view().camera).len(), 2);
         let drag = [centre, centre - DVec2::Y * 20.0, centre - DVec2::Y * 40.0];
         let at = |phase, p: DVec2| pen(phase, p.x as f32, p.y as f32);
-        let begun = tool.on_event(&ToolEvent::Begin(at(Phase::Down, drag[0])), &view(), doc);
-        let ToolOutput::Begin(Op::RegionEdit(begun)) = begun else {
-            panic!("{begun:?}")
-        };
-        assert_eq!(begun.transform, Some(glam::DMat4::IDENTITY.to_cols_array()));
+        let pressed = tool.on_event(&ToolEvent::Begin(at(Phase::Down, drag[0])), &view(), doc);
+        assert_eq!(pressed, ToolOutput::None);
         let revised = tool.on_event(&ToolEvent::Move(at(Phase::Move, drag[1])), &view(), doc);
         assert!(matches!(revised, ToolOutput::Revise(Op::RegionEdit(_))));
         let done = tool.on_event(&ToolEvent::End(at(Phase::Up, drag[2])), &view(), doc);
@@ -626,7 +624,14 @@ mod tests {
                 centre + 110.0 * DVec2::from_angle(std::f64::consts::TAU * f64::from(i) / 48.0)
             })
             .collect();
-        assert_eq!(stroke(&mut tool, doc, &ring), ToolOutput::None);
+        let opened = stroke(&mut tool, doc, &ring);
+        let ToolOutput::Revise(Op::RegionEdit(begun)) = opened else {
+            panic!("the loop opens the edit with the handles, unmoved: {opened:?}")
+        };
+        assert_eq!(
+            (begun.transform, begun.handles.as_ref().map(Vec::len)),
+            (None, Some(3))
+        );
         let view = view();
         let size = DVec2::new(view.viewport.width().into(), view.viewport.height().into());
         let axes = tool.handle_axes(&view.camera, size);
@@ -643,14 +648,8 @@ mod tests {
             let p = p + DVec2::new(view.viewport.min.x.into(), view.viewport.min.y.into());
             pen(phase, p.x as f32, p.y as f32)
         };
-        let begun = tool.on_event(&ToolEvent::Begin(at(Phase::Down, press)), &view, doc);
-        let ToolOutput::Begin(Op::RegionEdit(begun)) = begun else {
-            panic!("the first handle drag begins the edit: {begun:?}")
-        };
-        assert_eq!(
-            (begun.transform, begun.handles.as_ref().map(Vec::len)),
-            (None, Some(3))
-        );
+        let pressed = tool.on_event(&ToolEvent::Begin(at(Phase::Down, press)), &view, doc);
+        assert_eq!(pressed, ToolOutput::None);
         let moved = tool.on_event(&ToolEvent::Move(at(Phase::Move, press + along)), &view, doc);
         let ToolOutput::Revise(Op::RegionEdit(moved)) = moved else {
             panic!("{moved:?}")

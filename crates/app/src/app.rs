@@ -119,6 +119,8 @@ pub struct SketchApp {
     edit: Option<Edit>,
     /// How many edits were begun: tells apart the documents of two edits of equal revision.
     edits_begun: u64,
+    /// The fall-off panel's painted disc, kept between frames.
+    falloff_panel: panels::falloff::FalloffPanel,
     /// Whether the edit in progress was begun this frame: it is drawn once before its first
     /// step, so what it shows at once (a creation's seed) is seen at once.
     is_edit_new: bool,
@@ -193,6 +195,7 @@ impl SketchApp {
             moved_normals: Vec::new(),
             edit: None,
             edits_begun: 0,
+            falloff_panel: Default::default(),
             is_edit_new: false,
             edit_clock: EditClock::default(),
             options: ViewOptions {
@@ -844,6 +847,11 @@ impl SketchApp {
                 .add(egui_wgpu::Callback::new_paint_callback(viewport, callback));
         }
         self.live_stroke_ui(ui, viewport);
+        if let Some(edit) = &self.edit {
+            let levels = falloff_levels(edit);
+            let camera = self.shared.borrow().camera.camera();
+            (self.falloff_panel).ui(ui, viewport, &camera, edit, self.edits_begun, levels);
+        }
         if let Some(at) = self.router.pen_hover().filter(|at| viewport.contains(*at)) {
             // Where the pen would touch: a ring that shows on light and dark alike.
             let painter = ui.painter();

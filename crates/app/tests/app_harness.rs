@@ -3,9 +3,10 @@
 //! curve in the document; Ctrl+Z takes both away; right-drag orbits; a shape created and
 //! pulled in the app, previewed over frames, is bit for bit the replay of its session.
 
-use egui::{Event, Modifiers, PointerButton, Pos2, pos2, vec2};
+use egui::{Event, Modifiers, PointerButton, Pos2, Rect, pos2, vec2};
 use egui_kittest::Harness;
 use sketchmesh_app::SketchApp;
+use sketchmesh_app::panels::falloff::falloff_gray;
 
 fn harness() -> Harness<'static, SketchApp> {
     let mut h = Harness::builder()
@@ -363,12 +364,6 @@ fn an_opened_session_at_the_same_revision_is_shown() {
     );
 }
 
-/// The gray a fall-off level is drawn in: `scene.wgsl`'s `falloff_gray`, gamma-encoded.
-fn falloff_gray(level: f64) -> u8 {
-    let linear = 0.04 + (1.0 - 0.04) * level;
-    (linear.powf(1.0 / 2.2) * 255.0).round() as u8
-}
-
 #[test]
 fn a_region_shows_its_falloff_as_gray_levels_equal_to_the_weights() {
     let mut h = harness();
@@ -467,6 +462,25 @@ fn a_region_shows_its_falloff_as_gray_levels_equal_to_the_weights() {
     );
     // Levels 0 and 4 meet the two curves, whose strokes cover them in part.
     assert!(levels_seen.len() >= 3, "levels shown: {levels_seen:?}");
+    // The panel in the view's lower left corner shows the region flat, in the same grays.
+    let panel = Rect::from_min_max(
+        pos2(view.left() + 12.0, view.bottom() - 12.0 - 180.0),
+        pos2(view.left() + 192.0, view.bottom() - 12.0),
+    );
+    let mut grays = std::collections::BTreeSet::new();
+    for y in (panel.top() as u32..panel.bottom() as u32).step_by(2) {
+        for x in (panel.left() as u32..panel.right() as u32).step_by(2) {
+            let p = image.get_pixel(x, y).0;
+            if let Some(k) = (0..=4).find(|&k| {
+                p[..3]
+                    .iter()
+                    .all(|&c| c == falloff_gray(f64::from(k) / steps))
+            }) {
+                grays.insert(k);
+            }
+        }
+    }
+    assert!(grays.len() >= 4, "the panel's levels: {grays:?}");
     // Between the loop and the outline, the model keeps its lit clay colour.
     let clay: Vec<_> = (130..145)
         .map(|dx| image.get_pixel(center.x as u32 + dx, center.y as u32).0)

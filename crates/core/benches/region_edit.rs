@@ -64,6 +64,9 @@ fn bench_region_edit(c: &mut Criterion) {
     group.bench_function("new_50k", |b| {
         b.iter(|| RegionEdit::new(black_box(&mesh), &sketch, &levels).expect("placed"));
     });
+    group.bench_function("disc_50k", |b| {
+        b.iter(|| edit.disc(black_box(&mesh)).expect("a disc"));
+    });
     let mut out = mesh.positions().to_vec();
     let mut frame = 0.0;
     group.bench_function("frame_50k", |b| {

@@ -59,7 +59,7 @@
 //! remesh would split along the same lines as a creation's iterations.
 
 use crate::mesh::VertexId;
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 
 use super::arrange::TransformPreview;
 use super::create::CreateJob;
@@ -431,6 +431,15 @@ impl Edit {
     pub fn region_falloff(&self) -> Option<(usize, &[VertexId], &[f64])> {
         match &self.work {
             Work::Region(preview) => preview.falloff(),
+            _ => None,
+        }
+    }
+
+    /// A region edit's region laid flat in the unit disc, in the order of
+    /// [`Edit::region_falloff`]'s vertices, or why it cannot be: the fall-off panel.
+    pub fn region_disc(&self) -> Option<Result<&[DVec2], &crate::region_edit::RegionError>> {
+        match &self.work {
+            Work::Region(preview) => preview.disc(),
             _ => None,
         }
     }

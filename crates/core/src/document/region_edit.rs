@@ -191,6 +191,8 @@ struct Built {
     edit: RegionEdit,
     /// The levels the edit is weighed with.
     levels: Option<Vec<f64>>,
+    /// The region laid flat in the unit disc, for the fall-off panel, or why it cannot be.
+    disc: Result<Vec<DVec2>, RegionError>,
 }
 
 impl RegionPreview {
@@ -249,6 +251,13 @@ impl RegionPreview {
             .map(|_| (built.model, &self.shown[..]))
     }
 
+    /// The region laid flat in the unit disc (in the order of its vertices), or why it
+    /// cannot be: what the fall-off panel draws.
+    pub(super) fn disc(&self) -> Option<Result<&[DVec2], &RegionError>> {
+        let built = self.built.as_ref()?;
+        Some(built.disc.as_ref().map(Vec::as_slice))
+    }
+
     /// The model, the region's vertices and their weights, for the fall-off overlay.
     pub(super) fn falloff(&self) -> Option<(usize, &[VertexId], &[f64])> {
         let built = self.built.as_ref()?;
@@ -274,11 +283,13 @@ fn edit_for<'a>(
         _ => {
             let (model, edit) = new_region(base, input)?;
             let levels = input.levels.clone();
+            let disc = edit.disc(&target(base, model)?.mesh);
             Built {
                 key,
                 model,
                 edit,
                 levels,
+                disc,
             }
         }
     };

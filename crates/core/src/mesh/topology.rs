@@ -4,6 +4,8 @@
 //! Euler characteristic is `V - E + F = 2c - 2g - b`, so `g = (2c - chi - b) / 2`. Every
 //! function here walks the half-edge arrays; nothing is cached, so nothing goes stale.
 
+use rustc_hash::FxHashSet;
+
 use super::{FaceId, HalfedgeId, Mesh, VertexId};
 
 impl Mesh {
@@ -32,6 +34,62 @@ impl Mesh {
             loops.push(cycle);
         }
         loops
+    }
+
+    /// The closed loops around a set of faces (`inside`, one flag per face), as vertex
+    /// cycles with the set on their left; a loop that runs into the mesh's own boundary is
+    /// dropped.
+    pub(crate) fn face_set_loops(&self, inside: &[bool]) -> Vec<Vec<VertexId>> {
+        let is_cut = |h: HalfedgeId| {
+            inside[self.face(h).index()]
+                && self.twin(h).is_some_and(|t| !inside[self.face(t).index()])
+        };
+        let starts: Vec<HalfedgeId> = (0..self.n_halfedges() as u32)
+            .map(HalfedgeId)
+            .filter(|&h| is_cut(h))
+            .collect();
+        let mut visited = FxHashSet::default();
+        let mut loops = Vec::new();
+        for &first in &starts {
+            if visited.contains(&first) {
+                continue;
+            }
+            let mut curve = Vec::new();
+            let mut h = first;
+            let is_closed = loop {
+                visited.insert(h);
+                curve.push(self.tail(h));
+                let Some(next) = self.next_cut(h, inside) else {
+                    break false;
+                };
+                if next == first {
+                    break true;
+                }
+                if visited.contains(&next) || curve.len() > starts.len() {
+                    break false;
+                }
+                h = next;
+            };
+            if is_closed {
+                loops.push(curve);
+            }
+        }
+        loops
+    }
+
+    /// The cut half-edge that follows `h` around a face set: turning around its head through
+    /// faces inside until the face across is outside. `None` at the mesh boundary.
+    fn next_cut(&self, mut h: HalfedgeId, inside: &[bool]) -> Option<HalfedgeId> {
+        // A vertex has fewer faces than there are faces in all.
+        for _ in 0..self.n_faces() {
+            let g = self.next(h);
+            let across = self.twin(g)?;
+            if !inside[self.face(across).index()] {
+                return Some(g);
+            }
+            h = across;
+        }
+        None
     }
 
     /// Number of boundary loops (holes and rims).

@@ -1,6 +1,6 @@
 //! A region found once for a pair of curves, moved by any transform in one pass.
 
-use glam::{DMat4, DVec3, DVec4};
+use glam::{DMat4, DVec2, DVec3, DVec4};
 
 use super::falloff::closeness;
 use super::{Handle, HandleRail, Levels, Motion, RegionError, RegionSketch};
@@ -106,6 +106,25 @@ impl RegionEdit {
     /// [`checked_transform`] refuses one.
     pub fn motion(&self, handles: &[Handle]) -> Result<Motion, RegionError> {
         Motion::blended(handles, &self.params)
+    }
+
+    /// Each region vertex's place in the unit disc, in the order of
+    /// [`RegionEdit::vertices`]: the region laid flat for the fall-off panel (see
+    /// [`super::disc`]). One sparse solve; found on demand, not with the region.
+    ///
+    /// Errors: [`RegionError::NotADisc`].
+    pub fn disc(&self, mesh: &Mesh) -> Result<Vec<DVec2>, RegionError> {
+        let mut region = vec![false; mesh.n_vertices()];
+        for v in &self.vertices {
+            region[v.index()] = true;
+        }
+        super::disc::flatten(mesh, &region, &self.vertices)
+    }
+
+    /// Each region vertex's closeness to the reference curve (1 on it, 0 at the boundary),
+    /// in the order of [`RegionEdit::vertices`].
+    pub fn closeness(&self) -> &[f64] {
+        &self.closeness
     }
 
     /// Every vertex's weight, 0 outside the region: what the fall-off overlay shows.

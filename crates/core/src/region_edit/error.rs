@@ -50,6 +50,11 @@ pub enum RegionError {
         "Handles sit on the reference curve at distinct places from 0 (its start) to 1 (its end), at least one."
     )]
     BadHandles,
+    /// The region's faces have no loop around them, so it cannot be laid flat.
+    #[error(
+        "The region reaches the edge of the surface or holds no triangle, so it cannot be shown flat; draw the boundary on the surface."
+    )]
+    NotADisc,
     /// Neither a transform nor handles, or both.
     #[error("A region edit moves by one transform or by handles: give exactly one of them.")]
     MotionUnclear,
@@ -93,6 +98,7 @@ mod tests {
             RegionError::TransformTurnsHalfWay,
             RegionError::BadHandles,
             RegionError::MotionUnclear,
+            RegionError::NotADisc,
         ] {
             let text = error.to_string();
             assert!(text.ends_with('.') && text.chars().next().unwrap().is_uppercase());

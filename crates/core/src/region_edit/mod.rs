@@ -19,9 +19,12 @@
 //!    (the thesis' gray levels, 5 by default).
 //! 3. [`RegionEdit`]: the region and its weights, found once per pair of curves; applying a
 //!    transform writes the region's vertices only, so everything outside stays bit for bit.
-//! 4. [`handles`]: handles along the reference curve with transforms of their own, blended
+//! 4. [`disc`]: the region flattened to the unit disc (Tutte's embedding), where the
+//!    fall-off panel draws its levels.
+//! 5. [`handles`]: handles along the reference curve with transforms of their own, blended
 //!    along it (§7); a [`Motion`] is one transform or such a blend.
 
+mod disc;
 mod edit;
 mod error;
 mod falloff;

@@ -42,6 +42,40 @@ pub fn solve_least_squares(
     Ok(x)
 }
 
+/// One-off: solves `A x = b` for a symmetric positive definite `A` (its lower triangle is
+/// read), one right-hand side per column of `columns`, each overwritten by its solution.
+/// Factors `A` itself, not the normal equations, where a square system allows it (a
+/// Laplacian with its boundary fixed).
+///
+/// Errors: [`SolveError::NonFiniteValue`], [`SolveError::NotPositiveDefinite`],
+/// [`SolveError::DimensionMismatch`].
+pub fn solve_spd(a: &SparseMatrix, columns: &mut [Vec<f64>]) -> Result<(), SolveError> {
+    use faer::linalg::solvers::Solve;
+    let n = a.nrows();
+    if let Some(bad) = columns.iter().find(|c| c.len() != n) {
+        return Err(SolveError::DimensionMismatch {
+            what: "right-hand side",
+            expected: n,
+            found: bad.len(),
+        });
+    }
+    if a.values().iter().any(|x| !x.is_finite()) {
+        return Err(SolveError::NonFiniteValue);
+    }
+    let llt = a
+        .as_faer()
+        .sp_cholesky(faer::Side::Lower)
+        .map_err(|_| SolveError::NotPositiveDefinite)?;
+    let mut rhs = faer::Mat::from_fn(n, columns.len(), |i, j| columns[j][i]);
+    llt.solve_in_place(rhs.as_mut());
+    for (j, column) in columns.iter_mut().enumerate() {
+        for (i, x) in column.iter_mut().enumerate() {
+            *x = rhs[(i, j)];
+        }
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 #[allow(clippy::needless_range_loop)]
 mod tests {

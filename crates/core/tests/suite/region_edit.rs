@@ -520,3 +520,66 @@ fn a_handles_op_replays_and_one_motion_is_required() {
     assert_eq!(digest(replayed.document()), digest(editor.document()));
     assert!(editor.session_json().contains("\"handles\""));
 }
+
+#[test]
+fn the_region_lies_flat_in_the_unit_disc_without_a_flipped_triangle() {
+    let sphere = primitives::icosphere(1.0, 4);
+    let mut cases = vec![("sphere".to_string(), sphere)];
+    for name in ["stanford_bunny.glb", "nefertiti.glb"] {
+        if let Some(mut meshes) = testdata_meshes(name) {
+            cases.push((name.to_string(), meshes.swap_remove(0)));
+        }
+    }
+    for (name, mesh) in &cases {
+        let edit = RegionEdit::new(mesh, &curves(mesh, 50.0, 120.0), &Levels::default()).unwrap();
+        let disc = edit.disc(mesh).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(disc.len(), edit.vertices().len());
+        assert!(
+            disc.iter()
+                .all(|p| p.is_finite() && p.length() <= 1.0 + 1e-9),
+            "{name}"
+        );
+        let on_circle = disc
+            .iter()
+            .filter(|p| (p.length() - 1.0).abs() < 1e-12)
+            .count();
+        assert!(on_circle > 10, "{name}: {on_circle} on the rim");
+        // Every triangle inside the region turns the same way in the disc (Tutte's
+        // embedding of a disc); where the region pinches to a vertex on its rim (on
+        // Nefertiti, 5 such vertices) it is no disc, and a few triangles there may fold.
+        let at: std::collections::HashMap<_, _> = edit
+            .vertices()
+            .iter()
+            .copied()
+            .zip(disc.iter().copied())
+            .collect();
+        let (mut positive, mut negative) = (0, 0);
+        for f in mesh.faces() {
+            let Some([a, b, c]) = mesh
+                .face_vertices(f)
+                .map(|v| at.get(&v).copied())
+                .into_iter()
+                .collect::<Option<Vec<_>>>()
+                .map(|v| [v[0], v[1], v[2]])
+            else {
+                continue;
+            };
+            let area = (b - a).perp_dot(c - a);
+            if area > 0.0 {
+                positive += 1;
+            } else {
+                negative += 1;
+            }
+        }
+        eprintln!(
+            "{name}: {} region vertices flat, {positive} / {negative} triangles",
+            disc.len()
+        );
+        let (folded, kept) = (positive.min(negative), positive.max(negative));
+        assert!(kept > 100, "{name}: {kept} triangles");
+        if name == "sphere" || name == "stanford_bunny.glb" {
+            assert_eq!(folded, 0, "{name}");
+        }
+        assert!(folded * 500 < kept, "{name}: {folded} of {kept} folded");
+    }
+}

@@ -8,7 +8,6 @@
 //! is the boundary between them, traced into loops.
 
 use glam::{DVec2, DVec3};
-use rustc_hash::FxHashSet;
 
 use super::embedding::Embedding;
 use crate::camera::Camera;
@@ -88,7 +87,7 @@ pub(crate) fn split_zero_set(embedding: &mut Embedding, distances: &[f64]) -> Op
         .iter()
         .map(|t| is_positive_face(t, &value, distances))
         .collect();
-    let loops = boundary_loops(mesh, &is_positive);
+    let loops = mesh.face_set_loops(&is_positive);
     Some(ZeroSet { is_positive, loops })
 }
 
@@ -163,63 +162,6 @@ fn is_positive_face(t: &[u32; 3], value: &[f64], unsnapped: &[f64]) -> bool {
     } else {
         sum(unsnapped) > 0.0
     }
-}
-
-/// The closed loops of half-edges with a positive face on their left and a negative one on
-/// their right, as vertex cycles; a loop that runs into the mesh boundary is dropped.
-fn boundary_loops(mesh: &Mesh, is_positive: &[bool]) -> Vec<Vec<VertexId>> {
-    let is_cut = |h: HalfedgeId| {
-        is_positive[mesh.face(h).index()]
-            && mesh
-                .twin(h)
-                .is_some_and(|t| !is_positive[mesh.face(t).index()])
-    };
-    let starts: Vec<HalfedgeId> = (0..mesh.n_halfedges() as u32)
-        .map(HalfedgeId)
-        .filter(|&h| is_cut(h))
-        .collect();
-    let mut visited = FxHashSet::default();
-    let mut loops = Vec::new();
-    for &first in &starts {
-        if visited.contains(&first) {
-            continue;
-        }
-        let mut curve = Vec::new();
-        let mut h = first;
-        let is_closed = loop {
-            visited.insert(h);
-            curve.push(mesh.tail(h));
-            let Some(next) = next_cut(mesh, h, is_positive) else {
-                break false;
-            };
-            if next == first {
-                break true;
-            }
-            if visited.contains(&next) || curve.len() > starts.len() {
-                break false;
-            }
-            h = next;
-        };
-        if is_closed {
-            loops.push(curve);
-        }
-    }
-    loops
-}
-
-/// The cut half-edge that follows `h`: turning around its head through positive faces
-/// until the face across is negative. `None` at the mesh boundary.
-fn next_cut(mesh: &Mesh, mut h: HalfedgeId, is_positive: &[bool]) -> Option<HalfedgeId> {
-    // A vertex has fewer faces than there are faces in all.
-    for _ in 0..mesh.n_faces() {
-        let g = mesh.next(h);
-        let across = mesh.twin(g)?;
-        if !is_positive[mesh.face(across).index()] {
-            return Some(g);
-        }
-        h = across;
-    }
-    None
 }
 
 #[cfg(test)]

@@ -17,7 +17,9 @@ mod handles;
 
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
-use sketchmesh_core::curve::polyline::{BAUDEL_K, distance_to_polyline, oversketch_merge};
+use sketchmesh_core::curve::polyline::{
+    BAUDEL_K, distance_to_polyline, oversketch_merge, oversketch_merge_closed,
+};
 use sketchmesh_core::curve::{StrokePoint, is_closed_loop};
 use sketchmesh_core::document::{
     CLOSE_TOLERANCE_PX, Document, Op, RegionDrag, RegionEditInput, StrokeInput, dragged_region,
@@ -58,8 +60,11 @@ const FALLOFFS: [(&str, &str, [f64; 5]); 4] = [
 ];
 
 /// An open stroke whose ends both lie this near (CSS px) the reference curve redraws that
-/// part of it instead of being a boundary.
+/// part of it instead of being a boundary; the same for the boundary once it is drawn.
 const OVERSKETCH_PX: f64 = 30.0;
+/// A press this near (CSS px) the boundary, once the curves are drawn, starts redrawing it
+/// rather than a drag.
+const BOUNDARY_PX: f64 = 16.0;
 
 /// What a drag does: moves the whole region, or works the handles on the curve.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -104,6 +109,8 @@ enum Stage {
     Ready(RegionEditInput),
     /// Dragging from where the pointer went down.
     Dragging(RegionEditInput, DVec2, RegionDrag),
+    /// A stroke from near the boundary is being drawn: it redraws part of the boundary.
+    Redrawing(RegionEditInput),
     /// Working the handles (the edit open since the curves were drawn); whether a handle
     /// has been pressed yet.
     Handles(Box<HandleSession>, bool),
@@ -138,6 +145,11 @@ impl RegionTool {
             Stage::Reference => self.reference(event, view, doc),
             Stage::Boundary(reference) => self.boundary(reference, event, view, doc),
             Stage::Ready(input) => match (event, self.drag) {
+                (ToolEvent::Begin(s), _) if on_boundary(&input, point(s, view).pos, view) => {
+                    self.draw.capture(event, view);
+                    self.stage = Stage::Redrawing(input);
+                    ToolOutput::None
+                }
                 (ToolEvent::Begin(s), DragKind::Region(drag)) => {
                     self.stage = Stage::Dragging(input, point(s, view).pos, drag);
                     ToolOutput::None
@@ -165,7 +177,76 @@ impl RegionTool {
                     ToolOutput::None
                 }
             },
-            Stage::Handles(session, begun) => self.handles(session, begun, event, view),
+            Stage::Redrawing(input) => self.redraw_boundary(input, event, view, doc),
+            Stage::Handles(session, begun) => match event {
+                // Before a handle moves, the boundary may still be redrawn.
+                ToolEvent::Begin(s)
+                    if !session.moved()
+                        && on_boundary(session.curves(), point(s, view).pos, view) =>
+                {
+                    self.draw.capture(event, view);
+                    self.stage = Stage::Redrawing(session.curves().clone());
+                    ToolOutput::None
+                }
+                _ => self.handles(session, begun, event, view),
+            },
+        }
+    }
+
+    /// The stroke redrawing part of the boundary: at its end, merged into the boundary
+    /// (Baudel's merge around the loop), which the open edit then takes.
+    fn redraw_boundary(
+        &mut self,
+        input: RegionEditInput,
+        event: &ToolEvent,
+        view: &ViewCtx,
+        doc: &Document,
+    ) -> ToolOutput {
+        let Some(stroke) = self.draw.capture(event, view) else {
+            self.stage = match event {
+                ToolEvent::Cancel => Stage::Ready(input),
+                _ => Stage::Redrawing(input),
+            };
+            return ToolOutput::None;
+        };
+        let boundary: Vec<DVec2> = input
+            .boundary
+            .iter()
+            .map(|&[x, y, _]| DVec2::new(x, y))
+            .collect();
+        let points: Vec<DVec2> = stroke.points().iter().map(|p| p.pos).collect();
+        let near = |p: &DVec2| distance_to_polyline(*p, &closed(&boundary)) < OVERSKETCH_PX;
+        if is_tap(&stroke) || !points.first().is_some_and(near) || !points.last().is_some_and(near)
+        {
+            let sentence = "To redraw the boundary, start and end the stroke on it.";
+            return self.after_boundary(input, doc, Some(sentence));
+        }
+        let merged = oversketch_merge_closed(&boundary, &points, BAUDEL_K);
+        let input = RegionEditInput {
+            boundary: merged.iter().map(|p| [p.x, p.y, 0.5]).collect(),
+            ..input
+        };
+        self.after_boundary(input, doc, None)
+    }
+
+    /// The curves are set again: the edit shows them (with handles, when they are picked),
+    /// and `refusal` is said if there is one.
+    fn after_boundary(
+        &mut self,
+        input: RegionEditInput,
+        doc: &Document,
+        refusal: Option<&str>,
+    ) -> ToolOutput {
+        let output = match self.drag {
+            DragKind::Handles => self.show_handles(input, doc),
+            DragKind::Region(_) => {
+                self.stage = Stage::Ready(input.clone());
+                ToolOutput::Revise(Op::RegionEdit(input))
+            }
+        };
+        match refusal {
+            Some(sentence) => ToolOutput::Refused(String::from(sentence)),
+            None => output,
         }
     }
 
@@ -296,11 +377,7 @@ impl RegionTool {
             handles: None,
         };
         // The edit opens at once, unmoved, so that its fall-off shows before any drag.
-        if self.drag == DragKind::Handles {
-            return self.show_handles(input, doc);
-        }
-        self.stage = Stage::Ready(input.clone());
-        ToolOutput::Revise(Op::RegionEdit(input))
+        self.after_boundary(input, doc, None)
     }
 
     /// Forgets the curves and the drag (the app cancels its edit).
@@ -325,7 +402,9 @@ impl RegionTool {
             Stage::Boundary(reference) if reference.camera == *camera => {
                 vec![mark(reference.points(), true)]
             }
-            Stage::Ready(input) if input.camera == *camera => curve_marks(input),
+            Stage::Ready(input) | Stage::Redrawing(input) if input.camera == *camera => {
+                curve_marks(input)
+            }
             // Until a handle moves the region, whose curves then stay where they were drawn.
             Stage::Handles(session, false) if session.input().camera == *camera => {
                 curve_marks(&session.input())
@@ -359,7 +438,7 @@ impl RegionTool {
             Stage::Handles(_, true) => {
                 Some("Drag more handles, or Apply (Enter) to keep the edit as one step")
             }
-            Stage::Dragging(..) => None,
+            Stage::Dragging(..) | Stage::Redrawing(_) => None,
         }
     }
 
@@ -437,6 +516,22 @@ impl RegionTool {
             }
         }
     }
+}
+
+/// Whether a press at `at` (CSS px in the view) starts on `input`'s boundary, away from its
+/// reference curve, in the view the curves were drawn in: a stroke from there redraws it.
+fn on_boundary(input: &RegionEditInput, at: DVec2, view: &ViewCtx) -> bool {
+    let points = |samples: &[[f64; 3]]| -> Vec<DVec2> {
+        samples.iter().map(|&[x, y, _]| DVec2::new(x, y)).collect()
+    };
+    view.camera == input.camera
+        && distance_to_polyline(at, &closed(&points(&input.boundary))) < BOUNDARY_PX
+        && distance_to_polyline(at, &points(&input.reference)) > OVERSKETCH_PX
+}
+
+/// A loop's points with the first repeated at the end.
+fn closed(points: &[DVec2]) -> Vec<DVec2> {
+    points.iter().chain(points.first()).copied().collect()
 }
 
 /// The two curves of `input`, drawn.
@@ -682,6 +777,63 @@ mod tests {
         assert_eq!(tool.confirm(), ToolOutput::Finish);
         assert!(tool.handle_axes(&view.camera, size).is_empty());
         assert!(tool.hint().unwrap().contains("reference"));
+    }
+
+    #[test]
+    fn a_stroke_from_the_boundary_to_it_redraws_that_part() {
+        let editor = shape();
+        let doc = editor.document();
+        let centre = DVec2::new(400.0, 340.0);
+        let mut tool = RegionTool::default();
+        let line: Vec<DVec2> = (0..=20)
+            .map(|i| centre + DVec2::new(4.0 * f64::from(i) - 40.0, 0.0))
+            .collect();
+        stroke(&mut tool, doc, &line);
+        let ring: Vec<DVec2> = (0..=48)
+            .map(|i| centre + 90.0 * DVec2::from_angle(std::f64::consts::TAU * f64::from(i) / 48.0))
+            .collect();
+        let ToolOutput::Revise(Op::RegionEdit(first)) = stroke(&mut tool, doc, &ring) else {
+            panic!("the loop opens the edit")
+        };
+        // From the ring's right side out by 25 px and back: the boundary bulges there.
+        let bulge: Vec<DVec2> = (0..=20)
+            .map(|i| {
+                let a = -0.5 + f64::from(i) / 20.0;
+                let r = 90.0 + 25.0 * (std::f64::consts::PI * f64::from(i) / 20.0).sin();
+                centre + r * DVec2::from_angle(a)
+            })
+            .collect();
+        let said = stroke(&mut tool, doc, &bulge);
+        let ToolOutput::Revise(Op::RegionEdit(redrawn)) = said else {
+            panic!("the stroke redraws the boundary: {said:?}")
+        };
+        assert_eq!(redrawn.reference, first.reference);
+        let local = |p: DVec2| p - DVec2::new(0.0, 40.0);
+        let tip = local(bulge[10]);
+        assert!(
+            redrawn
+                .boundary
+                .iter()
+                .any(|&[x, y, _]| DVec2::new(x, y).distance(tip) < 1.0),
+            "the bulge's tip is on the boundary"
+        );
+        let far = local(centre - DVec2::new(90.0, 0.0));
+        assert!(
+            redrawn
+                .boundary
+                .iter()
+                .any(|&[x, y, _]| DVec2::new(x, y).distance(far) < 1.0),
+            "the far side stays"
+        );
+        // A stroke from the boundary that ends elsewhere is refused; the boundary stays.
+        let away: Vec<DVec2> = (0..=10)
+            .map(|i| bulge[0] + DVec2::new(-5.0 * f64::from(i), 0.0))
+            .collect();
+        assert!(matches!(
+            stroke(&mut tool, doc, &away),
+            ToolOutput::Refused(_)
+        ));
+        assert_eq!(tool.marks(&view().camera).len(), 2);
     }
 
     #[test]

@@ -85,6 +85,32 @@ pub fn oversketch_merge(original: &[DVec2], stroke: &[DVec2], k: f64) -> Vec<DVe
 /// The inner points of a transition: along `arc`, blended with the curve (`along(u)` for
 /// `u` in [0, 1]) by a ramp that gives the arc full weight at the stroke's end (the arc's
 /// end, or its start when `from_stroke`).
+/// [`oversketch_merge`] for a closed loop (first point not repeated): the loop is opened
+/// half way round from where the stroke lies, so the stroke and its transitions fall inside
+/// the open polyline, merged, and closed again. A stroke that covers more than about half
+/// the loop is beyond what one opening serves.
+pub fn oversketch_merge_closed(loop_: &[DVec2], stroke: &[DVec2], k: f64) -> Vec<DVec2> {
+    let n = loop_.len();
+    if n < 3 || stroke.len() < 2 {
+        return oversketch_merge(loop_, stroke, k);
+    }
+    let middle = stroke[stroke.len() / 2];
+    let nearest = (0..n)
+        .min_by(|&a, &b| {
+            loop_[a]
+                .distance(middle)
+                .total_cmp(&loop_[b].distance(middle))
+        })
+        .unwrap_or(0);
+    let seam = (nearest + n / 2) % n;
+    let opened: Vec<DVec2> = (0..=n).map(|i| loop_[(seam + i) % n]).collect();
+    let mut merged = oversketch_merge(&opened, stroke, k);
+    if merged.len() > 1 && merged[0].distance(merged[merged.len() - 1]) < 1e-9 {
+        merged.pop();
+    }
+    merged
+}
+
 fn transition(arc: Hermite, along: impl Fn(f64) -> DVec2, from_stroke: bool) -> Vec<DVec2> {
     let n = (arc.chord() / TRANSITION_SPACING).ceil().max(2.0) as usize;
     (1..n)
@@ -167,6 +193,36 @@ mod tests {
         let mut reversed = stroke.clone();
         reversed.reverse();
         assert_eq!(oversketch_merge(&original, &reversed, BAUDEL_K), merged);
+    }
+
+    #[test]
+    fn a_loop_redrawn_in_part_stays_closed_and_takes_the_stroke() {
+        let ring: Vec<DVec2> = (0..90)
+            .map(|i| 100.0 * DVec2::from_angle(std::f64::consts::TAU * f64::from(i) / 90.0))
+            .collect();
+        // A bulge over the ring's right side, drawn downward (against the ring's turn).
+        let stroke: Vec<DVec2> = (0..=30)
+            .map(|i| {
+                let a = 0.6 - 1.2 * f64::from(i) / 30.0;
+                (100.0 + 20.0 * (std::f64::consts::PI * f64::from(i) / 30.0).sin())
+                    * DVec2::from_angle(a)
+            })
+            .collect();
+        let merged = oversketch_merge_closed(&ring, &stroke, BAUDEL_K);
+        // Closed: its last point is next to its first, as the ring's are.
+        let gap = merged[0].distance(merged[merged.len() - 1]);
+        assert!(gap < 10.0, "{gap}");
+        // The stroke's tip is in it; the left side is untouched.
+        let tip = stroke[15];
+        assert!(merged.iter().any(|p| p.distance(tip) < 1e-9));
+        for p in ring.iter().filter(|p| p.x < -50.0) {
+            assert!(merged.iter().any(|q| q.distance(*p) < 1e-9), "{p}");
+        }
+        assert!(
+            merged
+                .iter()
+                .all(|p| p.length() < 121.0 && p.length() > 99.0)
+        );
     }
 
     #[test]

@@ -12,8 +12,8 @@
 //! - [`closest_point`], [`distance_to_polyline`], [`distance_to_segment`];
 //! - [`thin`] (drop points near the last kept one), [`douglas_peucker`] and [`simplify`] (D. Douglas and T. Peucker, The Canadian
 //!   Cartographer 10(2), 1973);
-//! - [`oversketch_merge`]: a stroke drawn over part of a polyline merged into it (Baudel's
-//!   merge, as Bujans uses it);
+//! - [`oversketch_merge`], [`oversketch_merge_closed`]: a stroke drawn over part of a
+//!   polyline or a loop merged into it (Baudel's merge, as Bujans uses it);
 //! - [`signed_area`], [`perimeter`], [`centroid`], [`contains`] (even-odd rule);
 //! - [`segment_crossing`] and [`self_crossings`], bucketed in a uniform grid so that a
 //!   polyline of `m` segments is checked in about `O(m)`.
@@ -36,7 +36,7 @@ pub use arclength::{
     cumulative_lengths, index_at, length, point_at, point_at_index, relative_arclengths, segment_at,
 };
 pub use crossing::{segment_crossing, self_crossings};
-pub use merge::{BAUDEL_K, oversketch_merge};
+pub use merge::{BAUDEL_K, oversketch_merge, oversketch_merge_closed};
 pub use nearest::{Closest, closest_point, distance_to_polyline, distance_to_segment};
 pub use polygon::{centroid, contains, perimeter, signed_area};
 pub use resample::{PolylinePoint, resample, resample_closed};

@@ -292,6 +292,11 @@ pub struct RegionEditInput {
     /// ([`crate::region_edit::Motion`]). Exactly one of it and `transform`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub handles: Option<Vec<HandleInput>>,
+    /// Whether the region is remeshed after it moved (Bujans §8.1), so stretched parts
+    /// keep well-shaped triangles; left out: not. A model with imported texture
+    /// coordinates or colours is never remeshed (they would be lost).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub remesh: bool,
 }
 
 /// A handle of a `region_edit` op.
@@ -639,6 +644,7 @@ mod tests {
                 levels: None,
                 transform: Some(glam::DMat4::IDENTITY.to_cols_array()),
                 handles: None,
+                remesh: false,
             }),
             Op::Undo,
             Op::Redo,

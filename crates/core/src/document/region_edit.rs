@@ -8,6 +8,7 @@
 
 use glam::{DMat4, DVec2, DVec3};
 
+use super::curve_edit::remesh_only;
 use super::outcome::{target, with_positions};
 use super::{CommandError, Document, Model, RegionEditInput, StrokeInput, model_under, surface_at};
 use crate::curve::polyline::thin;
@@ -30,7 +31,31 @@ pub(super) fn region_edit_op(
 ) -> Result<(usize, Model), CommandError> {
     let (index, edit) = new_region(doc, input)?;
     let positions = edit.applied(&target(doc, index)?.mesh, &motion_of(&edit, input)?);
-    Ok((index, with_positions(doc, index, &positions)))
+    Ok((index, edited_model(doc, index, &edit, &positions, input)?))
+}
+
+/// Model `index` of `doc` with its vertices at `positions`, and its region remeshed when
+/// `input` asks and the model has no corner attributes a remesh would lose.
+///
+/// Errors: the remesher's refusal.
+fn edited_model(
+    doc: &Document,
+    index: usize,
+    edit: &RegionEdit,
+    positions: &[DVec3],
+    input: &RegionEditInput,
+) -> Result<Model, CommandError> {
+    let mut model = with_positions(doc, index, positions);
+    let textured =
+        (model.appearance.as_ref()).is_some_and(|a| a.uvs.is_some() || a.colors.is_some());
+    if input.remesh && !textured {
+        let mut region = vec![false; model.mesh.n_vertices()];
+        for v in edit.vertices() {
+            region[v.index()] = true;
+        }
+        (model.mesh, model.curves) = remesh_only(&model.mesh, &model.curves, &region)?;
+    }
+    Ok(model)
 }
 
 /// How `input` moves the region of `edit`: its one transform or its handles.
@@ -240,7 +265,8 @@ impl RegionPreview {
         let built = edit_for(&mut self.built, base, input)?;
         let mesh = &target(base, built.model)?.mesh;
         let positions = built.edit.applied(mesh, &motion_of(&built.edit, input)?);
-        Ok((built.model, with_positions(base, built.model, &positions)))
+        let model = edited_model(base, built.model, &built.edit, &positions, input)?;
+        Ok((built.model, model))
     }
 
     /// The model shown and its positions, once the first step moved it.
@@ -276,6 +302,7 @@ fn edit_for<'a>(
         transform: None,
         handles: None,
         levels: None,
+        remesh: false,
         ..input.clone()
     };
     let mut built = match slot.take() {

@@ -167,6 +167,7 @@ fn op(sketch: &RegionSketch, transform: DMat4, levels: Option<Vec<f64>>) -> Op {
         levels,
         transform: Some(transform.to_cols_array()),
         handles: None,
+        remesh: false,
     })
 }
 
@@ -582,4 +583,75 @@ fn the_region_lies_flat_in_the_unit_disc_without_a_flipped_triangle() {
         }
         assert!(folded * 500 < kept, "{name}: {folded} of {kept} folded");
     }
+}
+
+#[test]
+fn a_stretched_region_is_remeshed_and_the_rest_stays() {
+    let (mesh, _, mut editor, still) = sphere_in_editor();
+    // Stretched to three times its size along the view: long, thin triangles.
+    let (lo, hi) = mesh.bounding_box().unwrap();
+    let centre = 0.5 * (lo + hi);
+    let stretch = DMat4::from_translation(centre)
+        * DMat4::from_scale(DVec3::new(1.0, 1.0, 3.0))
+        * DMat4::from_translation(-centre);
+    let op = |remesh| {
+        Op::RegionEdit(RegionEditInput {
+            transform: Some(stretch.to_cols_array()),
+            levels: Some(vec![0.0, 1.0, 1.0]),
+            remesh,
+            ..still.clone()
+        })
+    };
+    let mut plain = Editor::new();
+    plain.apply(import_mesh("sphere.glb", &mesh)).unwrap();
+    plain.apply(op(false)).unwrap();
+    editor.apply(op(true)).unwrap();
+    let (stretched, remeshed) = (
+        &plain.document().models[0].mesh,
+        &editor.document().models[0].mesh,
+    );
+    let longest = |m: &Mesh| {
+        m.faces()
+            .flat_map(|f| {
+                let [a, b, c] = m.face_positions(f);
+                [a.distance(b), b.distance(c), c.distance(a)]
+            })
+            .fold(0.0, f64::max)
+    };
+    let target = mesh.mean_edge_length();
+    eprintln!(
+        "longest edge: stretched {:.4}, remeshed {:.4} (target {target:.4}); {} → {} vertices",
+        longest(stretched),
+        longest(remeshed),
+        stretched.n_vertices(),
+        remeshed.n_vertices()
+    );
+    assert!(
+        remeshed.n_vertices() > stretched.n_vertices(),
+        "the stretch got new vertices"
+    );
+    assert!(longest(remeshed) < 0.8 * longest(stretched));
+    remeshed.validate().unwrap();
+    // Outside the region every vertex is where it was, bit for bit (the positions as
+    // imported, which a glTF file holds in single precision).
+    let mut imported = Editor::new();
+    imported.apply(import_mesh("sphere.glb", &mesh)).unwrap();
+    let before = &imported.document().models[0].mesh;
+    let edit = RegionEdit::new(before, &curves(&mesh, 60.0, 140.0), &Levels::default()).unwrap();
+    let region: std::collections::HashSet<_> = edit.vertices().iter().copied().collect();
+    let kept: std::collections::HashSet<[u64; 3]> = remeshed
+        .positions()
+        .iter()
+        .map(|p| p.to_array().map(f64::to_bits))
+        .collect();
+    let bits = |v: sketchmesh_core::mesh::VertexId| before.position(v).to_array().map(f64::to_bits);
+    let moved = before
+        .vertices()
+        .filter(|v| !region.contains(v) && !kept.contains(&bits(*v)))
+        .count();
+    assert_eq!(moved, 0, "outside vertices moved");
+    // The session replays it.
+    let replayed = Editor::replay_json(&editor.session_json()).unwrap();
+    assert_eq!(digest(replayed.document()), digest(editor.document()));
+    assert!(editor.session_json().contains("\"remesh\":true"));
 }

@@ -52,7 +52,7 @@ pub fn cut_op(doc: &Document, input: &StrokeInput) -> Result<(usize, Model), Com
     let (mesh, curves) = if has_curves(model) {
         remesh_and_settle_within(&cut.mesh, &curves, &band)?
     } else {
-        (remesh_only(&cut.mesh, &curves, &band)?, Vec::new())
+        (remesh_only(&cut.mesh, &curves, &band)?.0, Vec::new())
     };
     Ok((index, replaced(model, mesh, curves)))
 }

@@ -57,7 +57,7 @@ pub fn merge_op(doc: &Document, input: &MergeInput) -> Result<(usize, usize, Mod
         }));
         remesh_and_fair_within(&mesh, &curves, &band, Aim::Typical)?
     } else {
-        (remesh_only(&mesh, &curves, &band)?, Vec::new())
+        (remesh_only(&mesh, &curves, &band)?.0, Vec::new())
     };
     let model = Model {
         mesh,

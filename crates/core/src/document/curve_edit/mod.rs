@@ -33,6 +33,7 @@ pub use merge::merge_op;
 pub(super) use oversketch::oversketch_curve;
 pub(super) use pull::PullPreview;
 pub use pull::pull_op;
+pub(super) use settle::remesh_only;
 pub use shared::CURVE_PICK_RADIUS_PX;
 pub(crate) use shared::screen_stroke;
 pub use tunnel::tunnel_op;

@@ -159,13 +159,15 @@ pub(super) fn remesh_and_fair_within(
 }
 
 /// Remeshes `region` (a vertex mask) as [`remesh_and_settle`] does, without settling: for
-/// a model whose surface no curves define (the `curves` are only kept as edge chains).
-pub(super) fn remesh_only(
+/// a model whose surface no curves define, or an edit that moved the surface itself (the
+/// `curves` are kept as edge chains, and come back over the new vertices).
+pub(in crate::document) fn remesh_only(
     mesh: &Mesh,
     curves: &[ControlCurve],
     region: &[bool],
-) -> Result<Mesh, CommandError> {
-    Ok(remesh(mesh, curves, region)?.mesh)
+) -> Result<(Mesh, Vec<ControlCurve>), CommandError> {
+    let remeshed = remesh(mesh, curves, region)?;
+    Ok((remeshed.mesh, remeshed.curves))
 }
 
 /// A model's mesh and curves after a remesh of a region.

@@ -46,7 +46,7 @@ pub use intent::{
 };
 pub use op::{
     AddCurveInput, BrushInput, CurveTypeInput, FileInput, HandleInput, ImportInput, MergeInput,
-    ModelInput, Op, OptimizeInput, OversketchFit, OversketchInput, RegionEditInput,
+    ModelInput, Op, OptimizeInput, OversketchFit, OversketchInput, ProfileInput, RegionEditInput,
     SketchFeatureInput, StrokeInput, StrokePairInput, TransformInput,
 };
 pub use oversketch::OutlinePiece;

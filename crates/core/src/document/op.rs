@@ -292,11 +292,27 @@ pub struct RegionEditInput {
     /// ([`crate::region_edit::Motion`]). Exactly one of it and `transform`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub handles: Option<Vec<HandleInput>>,
+    /// Or a re-sketched cross-section across the reference curve (Bujans §6; see
+    /// [`crate::region_edit::ProfileChange`]). Exactly one of `transform`, `handles` and it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub profile: Option<ProfileInput>,
     /// Whether the region is remeshed after it moved (Bujans §8.1), so stretched parts
     /// keep well-shaped triangles; left out: not. A model with imported texture
     /// coordinates or colours is never remeshed (they would be lost).
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub remesh: bool,
+}
+
+/// The profile of a `region_edit` op: where along the reference curve its plane sits and
+/// the new cross-section drawn in it.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ProfileInput {
+    /// The plane's place on the reference curve: 0 at its first end, 1 at its last.
+    pub at: f64,
+    /// The stroke `[u, v]` in the plane, in model units: `u` across the curve (along the
+    /// binormal), `v` out of the surface (along its normal), from the curve's point there.
+    pub stroke: Vec<[f64; 2]>,
 }
 
 /// A handle of a `region_edit` op.
@@ -644,6 +660,7 @@ mod tests {
                 levels: None,
                 transform: Some(glam::DMat4::IDENTITY.to_cols_array()),
                 handles: None,
+                profile: None,
                 remesh: false,
             }),
             Op::Undo,

@@ -13,7 +13,7 @@ use super::outcome::{target, with_positions};
 use super::{CommandError, Document, Model, RegionEditInput, StrokeInput, model_under, surface_at};
 use crate::curve::polyline::thin;
 use crate::curve::process_stroke;
-use crate::mesh::VertexId;
+use crate::mesh::{Mesh, VertexId};
 use crate::region_edit::{
     Handle, HandleRail, Levels, Motion, RegionEdit, RegionError, RegionSketch, checked_transform,
 };
@@ -30,7 +30,7 @@ pub(super) fn region_edit_op(
     input: &RegionEditInput,
 ) -> Result<(usize, Model), CommandError> {
     let (index, edit) = new_region(doc, input)?;
-    let positions = edit.applied(&target(doc, index)?.mesh, &motion_of(&edit, input)?);
+    let positions = moved(&edit, &target(doc, index)?.mesh, input)?;
     Ok((index, edited_model(doc, index, &edit, &positions, input)?))
 }
 
@@ -58,13 +58,21 @@ fn edited_model(
     Ok(model)
 }
 
-/// How `input` moves the region of `edit`: its one transform or its handles.
+/// How `input` moves the region of `edit`.
+enum Moves {
+    /// By a transform per point of the reference curve: one, or handles blended.
+    Motion(Motion),
+    /// By a re-sketched cross-section at a place along the curve, in its plane.
+    Profile(f64, Vec<DVec2>),
+}
+
+/// How `input` moves the region of `edit`: its one transform, its handles or its profile.
 ///
 /// Errors: [`RegionError::MotionUnclear`], or a transform's or the handles' refusal.
-fn motion_of(edit: &RegionEdit, input: &RegionEditInput) -> Result<Motion, RegionError> {
-    match (&input.transform, &input.handles) {
-        (Some(transform), None) => Ok(checked_transform(transform)?.into()),
-        (None, Some(handles)) => {
+fn moves_of(edit: &RegionEdit, input: &RegionEditInput) -> Result<Moves, RegionError> {
+    match (&input.transform, &input.handles, &input.profile) {
+        (Some(transform), None, None) => Ok(Moves::Motion(checked_transform(transform)?.into())),
+        (None, Some(handles), None) => {
             let handles: Vec<Handle> = handles
                 .iter()
                 .map(|h| Handle {
@@ -72,9 +80,27 @@ fn motion_of(edit: &RegionEdit, input: &RegionEditInput) -> Result<Motion, Regio
                     transform: DMat4::from_cols_array(&h.transform),
                 })
                 .collect();
-            edit.motion(&handles)
+            Ok(Moves::Motion(edit.motion(&handles)?))
+        }
+        (None, None, Some(profile)) => {
+            let stroke = profile.stroke.iter().map(|&[u, v]| DVec2::new(u, v));
+            Ok(Moves::Profile(profile.at, stroke.collect()))
         }
         _ => Err(RegionError::MotionUnclear),
+    }
+}
+
+/// Every vertex of `mesh` (the mesh `edit` was found on) moved as `input` says.
+///
+/// Errors: as [`moves_of`], and a profile's refusal.
+fn moved(
+    edit: &RegionEdit,
+    mesh: &Mesh,
+    input: &RegionEditInput,
+) -> Result<Vec<DVec3>, RegionError> {
+    match moves_of(edit, input)? {
+        Moves::Motion(motion) => Ok(edit.applied(mesh, &motion)),
+        Moves::Profile(at, stroke) => edit.profile_applied(mesh, at, &stroke),
     }
 }
 
@@ -88,7 +114,7 @@ pub fn region_rail(
     input: &RegionEditInput,
 ) -> Result<(usize, HandleRail), CommandError> {
     let (index, edit) = new_region(doc, input)?;
-    Ok((index, edit.rail(&target(doc, index)?.mesh)))
+    Ok((index, edit.rail().clone()))
 }
 
 /// The model under the reference curve's first point and the region of `input` on it.
@@ -187,6 +213,7 @@ pub fn dragged_region(
     RegionEditInput {
         transform: Some(transform.to_cols_array()),
         handles: None,
+        profile: None,
         ..region.clone()
     }
 }
@@ -244,12 +271,21 @@ impl RegionPreview {
         if self.shown_for.as_ref() == Some(input) {
             return Ok(None);
         }
-        let motion = motion_of(&built.edit, input)?;
-        let positions = target(base, built.model)?.mesh.positions();
-        if self.shown.len() != positions.len() {
-            self.shown = positions.to_vec();
+        let mesh = &target(base, built.model)?.mesh;
+        match moves_of(&built.edit, input)? {
+            // A drag: the region moved again in place, nothing allocated.
+            Moves::Motion(motion) => {
+                if self.shown.len() != mesh.n_vertices() {
+                    self.shown = mesh.positions().to_vec();
+                }
+                built
+                    .edit
+                    .apply_into(&motion, mesh.positions(), &mut self.shown);
+            }
+            Moves::Profile(at, stroke) => {
+                self.shown = built.edit.profile_applied(mesh, at, &stroke)?;
+            }
         }
-        built.edit.apply_into(&motion, positions, &mut self.shown);
         self.shown_for = Some(input.clone());
         Ok(Some(false))
     }
@@ -264,7 +300,7 @@ impl RegionPreview {
     ) -> Result<(usize, Model), CommandError> {
         let built = edit_for(&mut self.built, base, input)?;
         let mesh = &target(base, built.model)?.mesh;
-        let positions = built.edit.applied(mesh, &motion_of(&built.edit, input)?);
+        let positions = moved(&built.edit, mesh, input)?;
         let model = edited_model(base, built.model, &built.edit, &positions, input)?;
         Ok((built.model, model))
     }
@@ -301,6 +337,7 @@ fn edit_for<'a>(
     let key = RegionEditInput {
         transform: None,
         handles: None,
+        profile: None,
         levels: None,
         remesh: false,
         ..input.clone()

@@ -3,7 +3,11 @@
 use glam::{DMat4, DVec2, DVec3, DVec4};
 
 use super::falloff::closeness;
-use super::{Handle, HandleRail, Levels, Motion, RegionError, RegionSketch};
+use super::profile::cross_section;
+use super::{
+    Handle, HandleFrame, HandleRail, Levels, Motion, Profile, ProfileChange, RegionError,
+    RegionSketch,
+};
 use crate::feature::{Sketch, place};
 use crate::geometry::{Bvh, Fractions, log_affine, vertex_normals};
 use crate::mesh::{Mesh, VertexId};
@@ -24,10 +28,12 @@ pub struct RegionEdit {
     nearest: Vec<u32>,
     /// The edge path under the reference curve.
     reference: Vec<VertexId>,
-    /// Where each path vertex sits along the path by arclength, from 0 to 1.
+    /// Where each path vertex sits along the reference curve (its nearest point of the
+    /// rail), from 0 to 1.
     params: Vec<f64>,
-    /// The surface normal at each path vertex.
-    path_normals: Vec<DVec3>,
+    /// The reference curve on the surface: the sketch's samples cast onto it, smooth where
+    /// the edge path zig-zags.
+    rail: HandleRail,
 }
 
 impl RegionEdit {
@@ -44,9 +50,10 @@ impl RegionEdit {
         if boundary.iter().any(|p| !p.is_finite()) {
             return Err(RegionError::BoundaryCrosses);
         }
+        let bvh = Bvh::new(mesh);
         let placed = place(
             mesh,
-            &Bvh::new(mesh),
+            &bvh,
             &normals,
             &Sketch {
                 camera: sketch.camera,
@@ -61,13 +68,19 @@ impl RegionEdit {
             .collect();
         let found = closeness(mesh, &placed.region, &vertices, &placed.path);
         let weights = found.closeness.iter().map(|&s| levels.weight(s)).collect();
+        let rail = cast_rail(mesh, &bvh, &normals, sketch, &placed.points, &placed.path);
+        let params = placed
+            .path
+            .iter()
+            .map(|&v| rail.nearest_param(mesh.position(v)))
+            .collect();
         Ok(RegionEdit {
             vertices,
             closeness: found.closeness,
             weights,
             nearest: found.nearest,
-            params: arclength_params(mesh, &placed.path),
-            path_normals: placed.path.iter().map(|v| normals[v.index()]).collect(),
+            params,
+            rail,
             reference: placed.path,
         })
     }
@@ -93,11 +106,65 @@ impl RegionEdit {
         &self.params
     }
 
-    /// The reference curve on `mesh` (the mesh the edit was found on) with its frames, where
-    /// handles sit.
-    pub fn rail(&self, mesh: &Mesh) -> HandleRail {
-        let points = self.reference.iter().map(|&v| mesh.position(v)).collect();
-        HandleRail::new(points, self.path_normals.clone(), self.params.clone())
+    /// The reference curve on the surface the edit was found on, with its frames: where
+    /// handles sit and profiles are cut.
+    pub fn rail(&self) -> &HandleRail {
+        &self.rail
+    }
+
+    /// The region's cross-section across the reference curve at `at` (0 its first end, 1 its
+    /// last), on `mesh` (the mesh the edit was found on); see [`super::profile`].
+    ///
+    /// Errors: [`RegionError::NoProfile`].
+    pub fn profile(&self, mesh: &Mesh, at: f64) -> Result<Profile, RegionError> {
+        self.cross_section_in(mesh, self.rail.frame_at(at.clamp(0.0, 1.0)))
+    }
+
+    /// The region's cross-section in the plane of `frame` (its first axis the plane's
+    /// normal), on `mesh` with the region's vertices: after an edit moved them, in the
+    /// plane the profile was drawn in.
+    ///
+    /// Errors: [`RegionError::NoProfile`].
+    pub fn cross_section_in(
+        &self,
+        mesh: &Mesh,
+        frame: HandleFrame,
+    ) -> Result<Profile, RegionError> {
+        let mut weight_of = vec![f64::NAN; mesh.n_vertices()];
+        for (v, &w) in self.vertices.iter().zip(&self.weights) {
+            weight_of[v.index()] = w;
+        }
+        cross_section(mesh, &weight_of, frame)
+    }
+
+    /// Every vertex of `mesh` with the cross-section at `at` re-sketched as `stroke` (in the
+    /// profile's plane) and the change swept along the curve (see [`super::profile`]).
+    ///
+    /// Errors: [`RegionError::NoProfile`], [`RegionError::BadProfileStroke`].
+    pub fn profile_applied(
+        &self,
+        mesh: &Mesh,
+        at: f64,
+        stroke: &[DVec2],
+    ) -> Result<Vec<DVec3>, RegionError> {
+        let change = ProfileChange::new(&self.profile(mesh, at)?, stroke)?;
+        let mut out = mesh.positions().to_vec();
+        for (&v, &w) in self.vertices.iter().zip(&self.weights) {
+            // Each vertex in the frame of its nearest point of the curve.
+            let p = mesh.position(v);
+            let frame = self.rail.frame_at(self.rail.nearest_param(p));
+            let [_, up, across] = frame.axes;
+            let Some((rise, weight_there)) = change.rise_at((p - frame.origin).dot(across)) else {
+                continue;
+            };
+            let share = if weight_there > 1e-9 {
+                (w / weight_there).min(1.0)
+            } else {
+                0.0
+            };
+            out[v.index()] = p + up * (rise * share);
+        }
+        Ok(out)
     }
 
     /// The motion of `handles` on the reference curve (see [`Motion`]).
@@ -162,19 +229,37 @@ impl RegionEdit {
     }
 }
 
-/// Each vertex of `path` placed along it by arclength, 0 at its first, 1 at its last.
-fn arclength_params(mesh: &Mesh, path: &[VertexId]) -> Vec<f64> {
-    let mut along = 0.0;
-    let mut params: Vec<f64> = std::iter::once(0.0)
-        .chain(path.windows(2).map(|w| {
-            along += mesh.position(w[0]).distance(mesh.position(w[1]));
-            along
-        }))
-        .collect();
-    if along > 0.0 {
-        params.iter_mut().for_each(|t| *t /= along);
+/// The reference curve on the surface: each of the sketch's resampled `points` (screen px)
+/// cast onto `mesh` along its view ray, with the normal interpolated there; a sample that
+/// misses (at a silhouette) is left out, and where fewer than two hit, the edge `path`
+/// stands in.
+fn cast_rail(
+    mesh: &Mesh,
+    bvh: &Bvh,
+    normals: &[DVec3],
+    sketch: &RegionSketch,
+    points: &[DVec2],
+    path: &[VertexId],
+) -> HandleRail {
+    let (mut at, mut up) = (Vec::new(), Vec::new());
+    for &p in points {
+        let (origin, dir) = sketch.camera.ray_in_world(p, sketch.viewport);
+        let Some(hit) = bvh.raycast(mesh, origin, dir) else {
+            continue;
+        };
+        let corners = mesh.face_vertices(hit.face);
+        let b = hit.barycentric;
+        let normal = normals[corners[0].index()] * b.x
+            + normals[corners[1].index()] * b.y
+            + normals[corners[2].index()] * b.z;
+        at.push(origin + dir * hit.distance);
+        up.push(normal.normalize_or(DVec3::Z));
     }
-    params
+    if at.len() < 2 {
+        at = path.iter().map(|&v| mesh.position(v)).collect();
+        up = path.iter().map(|&v| normals[v.index()]).collect();
+    }
+    HandleRail::new(at, up)
 }
 
 /// The fractions of a transform given column by column, as an op holds it.

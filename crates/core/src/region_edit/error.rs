@@ -55,9 +55,17 @@ pub enum RegionError {
         "The region reaches the edge of the surface or holds no triangle, so it cannot be shown flat; draw the boundary on the surface."
     )]
     NotADisc,
-    /// Neither a transform nor handles, or both.
-    #[error("A region edit moves by one transform or by handles: give exactly one of them.")]
+    /// Neither a transform, handles nor a profile, or more than one.
+    #[error(
+        "A region edit moves by one transform, by handles or by a profile: give exactly one of them."
+    )]
     MotionUnclear,
+    /// The plane across the reference curve there does not cross the region.
+    #[error("The region has no cross-section there; slide the plane along the reference curve.")]
+    NoProfile,
+    /// A profile stroke with fewer than two points or a point that is not a number.
+    #[error("Draw the new profile as a line of at least two points.")]
+    BadProfileStroke,
 }
 
 impl From<FeatureError> for RegionError {
@@ -99,6 +107,8 @@ mod tests {
             RegionError::BadHandles,
             RegionError::MotionUnclear,
             RegionError::NotADisc,
+            RegionError::NoProfile,
+            RegionError::BadProfileStroke,
         ] {
             let text = error.to_string();
             assert!(text.ends_with('.') && text.chars().next().unwrap().is_uppercase());

@@ -154,13 +154,40 @@ pub struct HandleFrame {
 }
 
 impl HandleRail {
-    /// The rail through `points` with surface normals `normals`, at arclength `params`.
-    pub(super) fn new(points: Vec<DVec3>, normals: Vec<DVec3>, params: Vec<f64>) -> Self {
+    /// The rail through `points` (at least two) with surface normals `normals`, placed by
+    /// arclength.
+    pub(super) fn new(points: Vec<DVec3>, normals: Vec<DVec3>) -> Self {
+        let mut along = 0.0;
+        let mut params: Vec<f64> = std::iter::once(0.0)
+            .chain(points.windows(2).map(|w| {
+                along += w[0].distance(w[1]);
+                along
+            }))
+            .collect();
+        if along > 0.0 {
+            params.iter_mut().for_each(|t| *t /= along);
+        }
         HandleRail {
             points,
             normals,
             params,
         }
+    }
+
+    /// Where along the rail (0..1) its point nearest to `p` lies.
+    pub fn nearest_param(&self, p: DVec3) -> f64 {
+        let mut best = (f64::INFINITY, 0.0);
+        for (k, w) in self.points.windows(2).enumerate() {
+            let (a, b) = (w[0], w[1]);
+            let ab = b - a;
+            let t = ((p - a).dot(ab) / ab.length_squared().max(f64::MIN_POSITIVE)).clamp(0.0, 1.0);
+            let d = p.distance_squared(a + ab * t);
+            if d < best.0 {
+                let param = self.params[k] + t * (self.params[k + 1] - self.params[k]);
+                best = (d, param);
+            }
+        }
+        best.1
     }
 
     /// The curve's points, in order.

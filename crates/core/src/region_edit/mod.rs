@@ -21,7 +21,9 @@
 //!    transform writes the region's vertices only, so everything outside stays bit for bit.
 //! 4. [`disc`]: the region flattened to the unit disc (Tutte's embedding), where the
 //!    fall-off panel draws its levels.
-//! 5. [`handles`]: handles along the reference curve with transforms of their own, blended
+//! 5. [`profile`]: the cross-section across the reference curve, and a re-sketched one
+//!    swept along the curve (§6).
+//! 6. [`handles`]: handles along the reference curve with transforms of their own, blended
 //!    along it (§7); a [`Motion`] is one transform or such a blend.
 
 mod disc;
@@ -29,6 +31,7 @@ mod edit;
 mod error;
 mod falloff;
 mod handles;
+mod profile;
 
 use glam::DVec2;
 
@@ -38,6 +41,7 @@ pub use edit::{RegionEdit, checked_transform};
 pub use error::RegionError;
 pub use falloff::Levels;
 pub use handles::{Handle, HandleFrame, HandleRail, Motion, blend_at};
+pub use profile::{Profile, ProfileChange};
 
 /// The two curves of a region edit as drawn, in screen CSS px (y down).
 #[derive(Clone, Debug, PartialEq)]

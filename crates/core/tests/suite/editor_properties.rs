@@ -860,6 +860,7 @@ fn op_for(step: &Step, document: &Document) -> Op {
                 levels: None,
                 transform: Some(transform.to_cols_array()),
                 handles: None,
+                profile: None,
                 remesh: false,
             })
         }

@@ -12,7 +12,7 @@ use sketchmesh_core::document::{
 use sketchmesh_core::geometry::Fractions;
 use sketchmesh_core::mesh::{Mesh, primitives};
 use sketchmesh_core::region_edit::{
-    Handle, Levels, Motion, RegionEdit, RegionError, RegionSketch, blend_at,
+    Handle, Levels, Motion, ProfileChange, RegionEdit, RegionError, RegionSketch, blend_at,
 };
 
 use crate::common::{circle, diagonal, digest, import_mesh, samples, screen, testdata_meshes};
@@ -167,6 +167,7 @@ fn op(sketch: &RegionSketch, transform: DMat4, levels: Option<Vec<f64>>) -> Op {
         levels,
         transform: Some(transform.to_cols_array()),
         handles: None,
+        profile: None,
         remesh: false,
     })
 }
@@ -409,9 +410,13 @@ fn one_handle_is_one_transform_and_handles_blend_between_neighbours() {
             sketchmesh_core::geometry::exp_affine(log * u).transform_point3(mesh.position(v));
         assert!(moved[v.index()].distance(exact) < 1e-12, "at {at}");
     }
-    assert_eq!(moved[reference[0].index()], mesh.position(reference[0]));
+    // Path vertices at or beyond the curve's ends (where the pins are) stay.
+    for (&v, &at) in reference.iter().zip(edit.reference_params()) {
+        if at == 0.0 || at == 1.0 {
+            assert_eq!(moved[v.index()], mesh.position(v));
+        }
+    }
     let last = *reference.last().unwrap();
-    assert_eq!(moved[last.index()], mesh.position(last));
     // Nothing outside the boundary moves; inside, each vertex takes its weight of the
     // transform at its nearest point of the curve, so nothing moves more than at the curve.
     let region: std::collections::HashSet<_> = edit.vertices().iter().copied().collect();
@@ -439,9 +444,21 @@ fn one_handle_is_one_transform_and_handles_blend_between_neighbours() {
     );
     assert_eq!(blend_at(&handles, 0.5).unwrap(), t);
     // The rail: frames on the curve, orthonormal and right-handed.
-    let rail = edit.rail(&mesh);
-    assert_eq!(rail.frame_at(0.0).origin, mesh.position(reference[0]));
-    assert_eq!(rail.frame_at(1.0).origin, mesh.position(last));
+    let rail = edit.rail();
+    // The rail is the sketch cast onto the surface; the edge path zig-zags about it.
+    let edge = mesh.mean_edge_length();
+    assert!(
+        rail.frame_at(0.0)
+            .origin
+            .distance(mesh.position(reference[0]))
+            < edge
+    );
+    assert!(rail.frame_at(1.0).origin.distance(mesh.position(last)) < edge);
+    assert!(
+        rail.points()
+            .iter()
+            .all(|p| (p.length() - 1.0).abs() < 0.01)
+    );
     for at in [0.0, 0.3, 0.5, 0.77, 1.0] {
         let [a, b, c] = rail.frame_at(at).axes;
         assert!((a.cross(b) - c).length() < 1e-12 && (a.length() - 1.0).abs() < 1e-12);
@@ -493,6 +510,7 @@ fn a_handles_op_replays_and_one_motion_is_required() {
     let handles = RegionEditInput {
         transform: None,
         handles: Some(vec![handle(0.0, DMat4::IDENTITY), handle(1.0, turn)]),
+        profile: None,
         ..still.clone()
     };
     for unclear in [
@@ -654,4 +672,115 @@ fn a_stretched_region_is_remeshed_and_the_rest_stays() {
     let replayed = Editor::replay_json(&editor.session_json()).unwrap();
     assert_eq!(digest(replayed.document()), digest(editor.document()));
     assert!(editor.session_json().contains("\"remesh\":true"));
+}
+
+#[test]
+fn a_resketched_profile_is_the_new_cross_section() {
+    let mut cases = vec![("sphere".to_string(), primitives::icosphere(1.0, 5))];
+    if let Some(mut meshes) = testdata_meshes("spot.glb") {
+        cases.push(("spot.glb".to_string(), meshes.swap_remove(0)));
+    }
+    for (name, mesh) in &cases {
+        let edit = RegionEdit::new(mesh, &curves(mesh, 70.0, 150.0), &Levels::default()).unwrap();
+        let profile = edit.profile(mesh, 0.5).unwrap();
+        let (lo, hi) = (
+            profile.points[0].x,
+            profile.points[profile.points.len() - 1].x,
+        );
+        assert!(
+            lo < 0.0 && hi > 0.0,
+            "{name}: across the curve from {lo} to {hi}"
+        );
+        assert!(profile.points.windows(2).all(|w| w[0].distance(w[1]) > 0.0));
+        // On the plane through the curve's middle, across it.
+        for &p in &profile.points {
+            let d = (profile.to_world(p) - profile.frame.origin).dot(profile.frame.axes[0]);
+            assert!(d.abs() < 1e-12, "{name}");
+        }
+        // A bump across the middle, from the cross-section back to it, a tenth of the
+        // width high.
+        let width = hi - lo;
+        let raise = 0.1 * width;
+        let stroke: Vec<DVec2> = (0..=40)
+            .map(|i| {
+                let u = lo + width * (0.3 + 0.4 * f64::from(i) / 40.0);
+                let base = profile
+                    .points
+                    .iter()
+                    .min_by(|a, b| (a.x - u).abs().total_cmp(&(b.x - u).abs()))
+                    .unwrap()
+                    .y;
+                let t = f64::from(i) / 40.0;
+                DVec2::new(u, base + raise * (std::f64::consts::PI * t).sin())
+            })
+            .collect();
+        let change = ProfileChange::new(&profile, &stroke).unwrap();
+        let moved = edit.profile_applied(mesh, 0.5, &stroke).unwrap();
+        let moved_mesh = {
+            let mut m = mesh.clone();
+            m.positions_mut().copy_from_slice(&moved);
+            m
+        };
+        let after = edit.cross_section_in(&moved_mesh, profile.frame).unwrap();
+        // Within 2 px of the merged stroke in a 200 px panel across the cross-section.
+        let px = 200.0 / width;
+        let merged = &change.merged;
+        let worst = after
+            .points
+            .iter()
+            .filter(|p| p.x > lo + 0.05 * width && p.x < hi - 0.05 * width)
+            .map(|p| sketchmesh_core::curve::polyline::distance_to_polyline(*p, merged) * px)
+            .fold(0.0, f64::max);
+        eprintln!(
+            "{name}: {} profile points, worst {worst:.2} px",
+            after.points.len()
+        );
+        assert!(worst < 2.0, "{name}: {worst} px off the stroke");
+        // The middle rose by the raise; outside the region nothing moved.
+        let middle = after
+            .points
+            .iter()
+            .min_by(|a, b| a.x.abs().total_cmp(&b.x.abs()))
+            .unwrap();
+        let old_middle = profile
+            .points
+            .iter()
+            .min_by(|a, b| a.x.abs().total_cmp(&b.x.abs()))
+            .unwrap();
+        assert!(
+            (middle.y - old_middle.y - raise).abs() < 0.02 * width,
+            "{name}"
+        );
+        let region: std::collections::HashSet<_> = edit.vertices().iter().copied().collect();
+        for v in mesh.vertices().filter(|v| !region.contains(v)) {
+            assert_eq!(moved[v.index()], mesh.position(v));
+        }
+    }
+}
+
+#[test]
+fn a_profile_op_replays_and_a_bad_stroke_is_refused() {
+    let (_, _, mut editor, still) = sphere_in_editor();
+    let before = digest(editor.document());
+    let profile = |stroke: Vec<[f64; 2]>| RegionEditInput {
+        transform: None,
+        profile: Some(sketchmesh_core::document::ProfileInput { at: 0.5, stroke }),
+        ..still.clone()
+    };
+    match editor.apply(Op::RegionEdit(profile(vec![[0.0, 0.1]]))) {
+        Err(CommandError::Region(RegionError::BadProfileStroke)) => {}
+        other => panic!("{other:?}"),
+    }
+    assert_eq!(digest(editor.document()), before);
+    let bump = vec![
+        [-0.1, 0.0],
+        [-0.05, 0.08],
+        [0.0, 0.1],
+        [0.05, 0.08],
+        [0.1, 0.0],
+    ];
+    editor.apply(Op::RegionEdit(profile(bump))).unwrap();
+    assert_ne!(digest(editor.document()), before);
+    let replayed = Editor::replay_json(&editor.session_json()).unwrap();
+    assert_eq!(digest(replayed.document()), digest(editor.document()));
 }

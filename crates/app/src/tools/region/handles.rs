@@ -115,6 +115,7 @@ impl HandleSession {
         RegionEditInput {
             transform: None,
             handles: Some(handles.collect()),
+            profile: None,
             ..self.input.clone()
         }
     }

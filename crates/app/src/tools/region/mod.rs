@@ -375,6 +375,7 @@ impl RegionTool {
             levels: Some(self.levels.clone()),
             transform: Some(glam::DMat4::IDENTITY.to_cols_array()),
             handles: None,
+            profile: None,
             remesh: true,
         };
         // The edit opens at once, unmoved, so that its fall-off shows before any drag.

@@ -933,6 +933,7 @@ impl SketchApp {
         }
         self.gizmo_ui(ui, viewport);
         self.region_handles_ui(ui, viewport);
+        self.region_profile_ui(ui, viewport);
         if let Some(amount) = self.edit.as_ref().and_then(feature_amount) {
             hint_ui(ui, viewport, &amount);
         }
@@ -991,6 +992,76 @@ impl SketchApp {
                 6.0,
                 egui::Stroke::new(1.5, egui::Color32::BLACK),
             );
+        }
+    }
+
+    /// The region tool's profile panel in the view's lower right corner: the cross-section
+    /// across the curve coloured from blue (one side of the curve) to orange (the other), the
+    /// same colours along it on the model, the arrow out of the surface where the curve
+    /// crosses, and the stroke drawn over it in white.
+    fn region_profile_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
+        let size = glam::DVec2::new(viewport.width().into(), viewport.height().into());
+        let Some(view) = self.tools.region_profile(size) else {
+            return;
+        };
+        let at = |p: glam::DVec2| viewport.min + egui::vec2(p.x as f32, p.y as f32);
+        let painter = ui.painter();
+        let panel = egui::Rect::from_min_size(
+            at(view.corner),
+            egui::vec2(view.side as f32, view.side as f32),
+        );
+        painter.rect_filled(panel, 8.0, egui::Color32::from_black_alpha(200));
+        painter.text(
+            panel.left_top() + egui::vec2(8.0, 6.0),
+            egui::Align2::LEFT_TOP,
+            "Profile: draw over it",
+            egui::FontId::proportional(12.0),
+            egui::Color32::from_gray(210),
+        );
+        if let Some(why) = &view.refusal {
+            let galley = painter.layout(
+                why.clone(),
+                egui::FontId::proportional(12.0),
+                egui::Color32::from_gray(220),
+                panel.width() - 16.0,
+            );
+            painter.galley(
+                panel.left_top() + egui::vec2(8.0, 26.0),
+                galley,
+                egui::Color32::WHITE,
+            );
+            return;
+        }
+        let gradient = |k: usize, n: usize| {
+            let t = k as f32 / (n.max(2) - 1) as f32;
+            let mix = |a: f32, b: f32| (a + (b - a) * t) as u8;
+            egui::Color32::from_rgb(mix(70.0, 250.0), mix(150.0, 150.0), mix(255.0, 40.0))
+        };
+        let camera = self.shared.borrow().camera.camera();
+        let on_screen: Vec<Option<egui::Pos2>> = (view.section_in_world.iter())
+            .map(|&p| camera.screen_from_world(p, size).map(|s| at(s.truncate())))
+            .collect();
+        let n = view.section.len();
+        for k in 1..n {
+            let colour = gradient(k, n);
+            let stroke = egui::Stroke::new(2.5, colour);
+            painter.line_segment([at(view.section[k - 1]), at(view.section[k])], stroke);
+            if let (Some(a), Some(b)) = (on_screen[k - 1], on_screen[k]) {
+                painter.line_segment([a, b], egui::Stroke::new(3.0, colour));
+            }
+        }
+        let (from, to) = view.curve;
+        painter.arrow(
+            at(from),
+            at(to) - at(from),
+            egui::Stroke::new(2.0, egui::Color32::from_rgb(255, 230, 120)),
+        );
+        if let Some(stroke) = &view.stroke {
+            let points: Vec<egui::Pos2> = stroke.iter().map(|&p| at(p)).collect();
+            painter.add(egui::Shape::line(
+                points,
+                egui::Stroke::new(2.0, egui::Color32::WHITE),
+            ));
         }
     }
 

@@ -91,6 +91,14 @@ impl ToolSet {
         self.region.settings_ui(ui, doc)
     }
 
+    /// The region tool's profile panel, to draw, while it shows.
+    pub fn region_profile(&self, viewport: glam::DVec2) -> Option<region::ProfileView> {
+        match self.mode {
+            Mode::Region => self.region.profile_view(viewport),
+            _ => None,
+        }
+    }
+
     /// The region tool's handle axes as seen, to draw.
     pub fn region_handles(&self, camera: &Camera, viewport: glam::DVec2) -> Vec<region::AxisMark> {
         match self.mode {

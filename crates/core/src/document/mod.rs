@@ -50,6 +50,6 @@ pub use op::{
     SketchFeatureInput, StrokeInput, StrokePairInput, TransformInput,
 };
 pub use oversketch::OutlinePiece;
-pub use region_edit::{RegionDrag, dragged_region, region_rail};
+pub use region_edit::{RegionDrag, dragged_region, region_of};
 pub use session::{SESSION_FORMAT, SESSION_VERSION, Session};
 pub use session_error::SessionError;

@@ -15,7 +15,7 @@ use crate::curve::polyline::thin;
 use crate::curve::process_stroke;
 use crate::mesh::{Mesh, VertexId};
 use crate::region_edit::{
-    Handle, HandleRail, Levels, Motion, RegionEdit, RegionError, RegionSketch, checked_transform,
+    Handle, Levels, Motion, RegionEdit, RegionError, RegionSketch, checked_transform,
 };
 
 /// Input samples nearer than this (CSS px) to the last kept one are dropped before the
@@ -29,7 +29,7 @@ pub(super) fn region_edit_op(
     doc: &Document,
     input: &RegionEditInput,
 ) -> Result<(usize, Model), CommandError> {
-    let (index, edit) = new_region(doc, input)?;
+    let (index, edit) = region_of(doc, input)?;
     let positions = moved(&edit, &target(doc, index)?.mesh, input)?;
     Ok((index, edited_model(doc, index, &edit, &positions, input)?))
 }
@@ -104,21 +104,12 @@ fn moved(
     }
 }
 
-/// The model under `input`'s reference curve and the curve placed on it with its frames,
-/// where the op's handles sit (a tool draws and drags them). Finds the region: a one-off
-/// cost per pair of curves, as the op's first step has.
+/// The model under the reference curve's first point and the region of `input` on it: what
+/// a tool keeps to place handles on the curve and cut profiles across it (a one-off cost
+/// per pair of curves, as the op's first step has).
 ///
 /// Errors: as [`region_edit_op`].
-pub fn region_rail(
-    doc: &Document,
-    input: &RegionEditInput,
-) -> Result<(usize, HandleRail), CommandError> {
-    let (index, edit) = new_region(doc, input)?;
-    Ok((index, edit.rail().clone()))
-}
-
-/// The model under the reference curve's first point and the region of `input` on it.
-fn new_region(
+pub fn region_of(
     doc: &Document,
     input: &RegionEditInput,
 ) -> Result<(usize, RegionEdit), CommandError> {
@@ -345,7 +336,7 @@ fn edit_for<'a>(
     let mut built = match slot.take() {
         Some(built) if built.key == key => built,
         _ => {
-            let (model, edit) = new_region(base, input)?;
+            let (model, edit) = region_of(base, input)?;
             let levels = input.levels.clone();
             let disc = edit.disc(&target(base, model)?.mesh);
             Built {

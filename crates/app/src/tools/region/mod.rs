@@ -14,6 +14,7 @@
 //! Apply (or Enter) commits them as one undo step.
 
 mod handles;
+mod profile;
 
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
@@ -23,11 +24,13 @@ use sketchmesh_core::curve::polyline::{
 use sketchmesh_core::curve::{StrokePoint, is_closed_loop};
 use sketchmesh_core::document::{
     CLOSE_TOLERANCE_PX, Document, Op, RegionDrag, RegionEditInput, StrokeInput, dragged_region,
-    model_under, region_rail,
+    model_under, region_of,
 };
 
 pub use handles::{AxisMark, Part};
 use handles::{HandleSession, Pressed};
+use profile::ProfileSession;
+pub use profile::ProfileView;
 
 use super::context::{ToolOutput, ViewCtx};
 use super::draw::{DrawTool, is_tap, point};
@@ -71,10 +74,11 @@ const BOUNDARY_PX: f64 = 16.0;
 enum DragKind {
     Region(RegionDrag),
     Handles,
+    Profile,
 }
 
 /// What a drag may do, as the toolbar offers it.
-const DRAGS: [(DragKind, &str, &str); 4] = [
+const DRAGS: [(DragKind, &str, &str); 5] = [
     (
         DragKind::Region(RegionDrag::Move),
         "Move",
@@ -95,6 +99,11 @@ const DRAGS: [(DragKind, &str, &str); 4] = [
         "Handles",
         "Handles on the curve: drag an axis near its handle to move, its middle to scale, its end to turn; tap the curve to add one",
     ),
+    (
+        DragKind::Profile,
+        "Profile",
+        "The region's cross-section across the curve in a panel: slide the plane, draw a new cross-section over it",
+    ),
 ];
 
 /// Where the tool is.
@@ -114,6 +123,8 @@ enum Stage {
     /// Working the handles (the edit open since the curves were drawn); whether a handle
     /// has been pressed yet.
     Handles(Box<HandleSession>, bool),
+    /// Re-sketching the cross-section in the profile panel.
+    Profile(Box<ProfileSession>),
 }
 
 /// The region tool's state: the curves, the fall-off and the drag.
@@ -178,6 +189,7 @@ impl RegionTool {
                 }
             },
             Stage::Redrawing(input) => self.redraw_boundary(input, event, view, doc),
+            Stage::Profile(session) => self.profile(session, event, view),
             Stage::Handles(session, begun) => match event {
                 // Before a handle moves, the boundary may still be redrawn.
                 ToolEvent::Begin(s)
@@ -239,6 +251,7 @@ impl RegionTool {
     ) -> ToolOutput {
         let output = match self.drag {
             DragKind::Handles => self.show_handles(input, doc),
+            DragKind::Profile => self.show_profile(input, doc),
             DragKind::Region(_) => {
                 self.stage = Stage::Ready(input.clone());
                 ToolOutput::Revise(Op::RegionEdit(input))
@@ -286,11 +299,57 @@ impl RegionTool {
         output
     }
 
-    /// Applies the handles as they stand (Enter, or the panel's Apply): one undo step.
+    /// An event while the profile panel shows: a stroke drawn in the panel re-sketches the
+    /// cross-section, and the open edit previews it; a press on the boundary redraws that.
+    fn profile(
+        &mut self,
+        mut session: Box<ProfileSession>,
+        event: &ToolEvent,
+        view: &ViewCtx,
+    ) -> ToolOutput {
+        let size = DVec2::new(view.viewport.width().into(), view.viewport.height().into());
+        if let ToolEvent::Begin(s) = event {
+            let at = point(s, view).pos;
+            if !session.drawn() && on_boundary(session.curves(), at, view) {
+                self.draw.capture(event, view);
+                self.stage = Stage::Redrawing(session.curves().clone());
+                return ToolOutput::None;
+            }
+            if !session.in_panel(at, size) {
+                self.stage = Stage::Profile(session);
+                return ToolOutput::None;
+            }
+        }
+        let output = match self.draw.capture(event, view) {
+            Some(stroke) if !is_tap(&stroke) => {
+                let points: Vec<DVec2> = stroke.points().iter().map(|p| p.pos).collect();
+                if session.draw(&points, size) {
+                    ToolOutput::Revise(Op::RegionEdit(session.input()))
+                } else {
+                    ToolOutput::None
+                }
+            }
+            _ => ToolOutput::None,
+        };
+        self.stage = Stage::Profile(session);
+        output
+    }
+
+    /// The profile panel's contents, for a view of `size`, while it shows.
+    pub fn profile_view(&self, size: DVec2) -> Option<ProfileView> {
+        match &self.stage {
+            Stage::Profile(session) => Some(session.view(size)),
+            _ => None,
+        }
+    }
+
+    /// Applies the handles or the profile as they stand (Enter, or the panel's Apply): one
+    /// undo step.
     pub fn confirm(&mut self) -> ToolOutput {
         match std::mem::take(&mut self.stage) {
             Stage::Handles(session, _) if session.moved() => ToolOutput::Finish,
-            Stage::Handles(..) => ToolOutput::Cancel,
+            Stage::Profile(session) if session.drawn() => ToolOutput::Finish,
+            Stage::Handles(..) | Stage::Profile(_) => ToolOutput::Cancel,
             stage => {
                 self.stage = stage;
                 ToolOutput::None
@@ -306,12 +365,29 @@ impl RegionTool {
         }
     }
 
+    /// The curves get the profile panel: the region is found (a one-off cost) and its
+    /// cross-section cut at the curve's middle, or the reason it cannot be.
+    fn show_profile(&mut self, input: RegionEditInput, doc: &Document) -> ToolOutput {
+        match region_of(doc, &input) {
+            Ok((model, region)) => {
+                let session = ProfileSession::new(input, model, region, doc);
+                let op = Op::RegionEdit(session.input());
+                self.stage = Stage::Profile(Box::new(session));
+                ToolOutput::Revise(op)
+            }
+            Err(error) => {
+                self.stage = Stage::Ready(input);
+                ToolOutput::Refused(error.to_string())
+            }
+        }
+    }
+
     /// The curves get handles: the curve is placed on the model (a one-off cost) and the
     /// open edit shows the handles' op, or the reason it cannot be.
     fn show_handles(&mut self, input: RegionEditInput, doc: &Document) -> ToolOutput {
-        match region_rail(doc, &input) {
-            Ok((_, rail)) => {
-                let session = HandleSession::new(input, rail);
+        match region_of(doc, &input) {
+            Ok((_, region)) => {
+                let session = HandleSession::new(input, region.rail().clone());
                 let op = Op::RegionEdit(session.input());
                 self.stage = Stage::Handles(Box::new(session), false);
                 ToolOutput::Revise(op)
@@ -411,6 +487,9 @@ impl RegionTool {
             Stage::Handles(session, false) if session.input().camera == *camera => {
                 curve_marks(&session.input())
             }
+            Stage::Profile(session) if !session.drawn() && session.curves().camera == *camera => {
+                curve_marks(session.curves())
+            }
             _ => Vec::new(),
         }
     }
@@ -432,7 +511,7 @@ impl RegionTool {
                 DragKind::Region(RegionDrag::Scale) => {
                     "Drag up or down: the region grows or shrinks, fading out"
                 }
-                DragKind::Handles => "Pick Handles again to place them on the curves",
+                DragKind::Handles | DragKind::Profile => "Pick the drag's kind again to go on",
             }),
             Stage::Handles(_, false) => Some(
                 "Drag a handle's axis: near the handle moves, its middle scales, its end turns; tap the curve to add a handle",
@@ -440,6 +519,12 @@ impl RegionTool {
             Stage::Handles(_, true) => {
                 Some("Drag more handles, or Apply (Enter) to keep the edit as one step")
             }
+            Stage::Profile(ref session) if session.drawn() => Some(
+                "Draw the cross-section again, or Apply (Enter) to keep it; the slider moves the plane",
+            ),
+            Stage::Profile(_) => Some(
+                "Draw a new cross-section over the one in the panel (from it, back to it); the slider moves the plane",
+            ),
             Stage::Dragging(..) | Stage::Redrawing(_) => None,
         }
     }
@@ -476,15 +561,35 @@ impl RegionTool {
                     session.set_levels(&self.levels);
                     output = ToolOutput::Revise(Op::RegionEdit(session.input()));
                 }
+                Stage::Profile(session) => {
+                    session.set_levels(&self.levels);
+                    output = ToolOutput::Revise(Op::RegionEdit(session.input()));
+                }
                 _ => {}
             }
         }
-        if let Stage::Handles(session, _) = &self.stage {
-            let ready = session.moved();
+        if let Stage::Profile(session) = &mut self.stage {
+            let mut at = session.at();
+            let slider = egui::Slider::new(&mut at, 0.0..=1.0).text("Plane");
+            if ui
+                .add(slider)
+                .on_hover_text("Where along the curve the cross-section is cut")
+                .changed()
+            {
+                session.slide_to(at, doc);
+                output = ToolOutput::Revise(Op::RegionEdit(session.input()));
+            }
+        }
+        let changes = match &self.stage {
+            Stage::Handles(session, _) => Some(session.moved()),
+            Stage::Profile(session) => Some(session.drawn()),
+            _ => None,
+        };
+        if let Some(ready) = changes {
             let apply = egui::Button::new("Apply").min_size(egui::vec2(36.0, 36.0));
             if ui
                 .add_enabled(ready, apply)
-                .on_hover_text("Keep what the handles did as one step (Enter)")
+                .on_hover_text("Keep the edit as one step (Enter)")
                 .clicked()
             {
                 output = self.confirm();
@@ -502,21 +607,20 @@ impl RegionTool {
         output
     }
 
-    /// The drag's kind changed: handles appear on drawn curves, or go (their open edit
-    /// dropped) when a whole-region drag is picked.
+    /// The drag's kind changed: drawn curves get what it needs (handles, the profile panel,
+    /// nothing), anything moved so far is dropped, and the open edit shows the curves
+    /// unmoved.
     fn change_drag(&mut self, doc: &Document) -> ToolOutput {
-        match (std::mem::take(&mut self.stage), self.drag) {
-            (Stage::Ready(input), DragKind::Handles) => self.show_handles(input, doc),
-            (Stage::Handles(session, _), DragKind::Region(_)) => {
-                let input = session.curves().clone();
-                self.stage = Stage::Ready(input.clone());
-                ToolOutput::Revise(Op::RegionEdit(input))
-            }
-            (stage, _) => {
+        let curves = match std::mem::take(&mut self.stage) {
+            Stage::Ready(input) => input,
+            Stage::Handles(session, _) => session.curves().clone(),
+            Stage::Profile(session) => session.curves().clone(),
+            stage => {
                 self.stage = stage;
-                ToolOutput::None
+                return ToolOutput::None;
             }
-        }
+        };
+        self.after_boundary(curves, doc, None)
     }
 }
 
@@ -836,6 +940,59 @@ mod tests {
             ToolOutput::Refused(_)
         ));
         assert_eq!(tool.marks(&view().camera).len(), 2);
+    }
+
+    #[test]
+    fn a_stroke_in_the_profile_panel_resketches_the_cross_section() {
+        let editor = shape();
+        let doc = editor.document();
+        let centre = DVec2::new(400.0, 340.0);
+        let mut tool = RegionTool {
+            drag: DragKind::Profile,
+            ..RegionTool::default()
+        };
+        let line: Vec<DVec2> = (0..=30)
+            .map(|i| centre + DVec2::new(4.0 * f64::from(i) - 60.0, 0.0))
+            .collect();
+        stroke(&mut tool, doc, &line);
+        let ring: Vec<DVec2> = (0..=48)
+            .map(|i| {
+                centre + 110.0 * DVec2::from_angle(std::f64::consts::TAU * f64::from(i) / 48.0)
+            })
+            .collect();
+        assert!(matches!(
+            stroke(&mut tool, doc, &ring),
+            ToolOutput::Revise(_)
+        ));
+        let view = view();
+        let size = DVec2::new(view.viewport.width().into(), view.viewport.height().into());
+        let panel = tool.profile_view(size).expect("the panel shows");
+        assert!(panel.refusal.is_none(), "{:?}", panel.refusal);
+        assert!(panel.section.len() > 5);
+        // The cross-section runs across the panel, the arrow points up (out of the surface).
+        assert!(panel.curve.1.y < panel.curve.0.y);
+        // A bump drawn from a third of the way across to two thirds, 30 px up.
+        let (a, b) = (
+            panel.section[panel.section.len() / 3],
+            panel.section[2 * panel.section.len() / 3],
+        );
+        let bump: Vec<DVec2> = (0..=20)
+            .map(|i| {
+                let t = f64::from(i) / 20.0;
+                a.lerp(b, t) - DVec2::Y * 30.0 * (std::f64::consts::PI * t).sin()
+                    + DVec2::new(view.viewport.min.x.into(), view.viewport.min.y.into())
+            })
+            .collect();
+        let said = stroke(&mut tool, doc, &bump);
+        let ToolOutput::Revise(Op::RegionEdit(op)) = said else {
+            panic!("the stroke re-sketches the profile: {said:?}")
+        };
+        let profile = op.profile.expect("a profile op");
+        assert_eq!((profile.at, op.transform, op.handles), (0.5, None, None));
+        let top = profile.stroke.iter().map(|p| p[1]).fold(f64::MIN, f64::max);
+        assert!(top > 0.0, "the bump rises out of the surface: {top}");
+        assert!(tool.profile_view(size).unwrap().stroke.is_some());
+        assert_eq!(tool.confirm(), ToolOutput::Finish);
     }
 
     #[test]

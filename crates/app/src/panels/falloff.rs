@@ -41,12 +41,8 @@ impl FalloffPanel {
         else {
             return;
         };
-        let side = (viewport.width().min(viewport.height()) * SIDE_SHARE)
-            .clamp(SIDE_RANGE.0, SIDE_RANGE.1);
-        let rect = Rect::from_min_size(
-            pos2(viewport.left() + MARGIN, viewport.bottom() - MARGIN - side),
-            vec2(side, side),
-        );
+        let rect = panel_rect(viewport);
+        let side = rect.width();
         let painter = ui.painter();
         painter.rect_filled(rect.expand(6.0), 8.0, Color32::from_black_alpha(200));
         let caption = "Fall-off, flattened";
@@ -128,6 +124,16 @@ fn as_seen(disc: &[DVec2], seen: &[Option<DVec2>]) -> Vec<DVec2> {
             rotation.rotate(d)
         })
         .collect()
+}
+
+/// Where the panel's disc sits in `viewport`: its lower left corner.
+pub fn panel_rect(viewport: Rect) -> Rect {
+    let side =
+        (viewport.width().min(viewport.height()) * SIDE_SHARE).clamp(SIDE_RANGE.0, SIDE_RANGE.1);
+    Rect::from_min_size(
+        pos2(viewport.left() + MARGIN, viewport.bottom() - MARGIN - side),
+        vec2(side, side),
+    )
 }
 
 /// The region's triangles in the disc, each vertex in its level's gray.

@@ -36,6 +36,48 @@ impl Levels {
     }
 }
 
+impl Levels {
+    /// The levels after level `level` is dragged to weight `to`, with the levels `pinned`
+    /// anchored (Bujans §5.3: a handle anchors its level; with one handle every level
+    /// changes, with several only those between the dragged one and its pinned neighbours).
+    /// The levels between a neighbour (a pinned level, or the boundary's 0 and the curve's 1
+    /// beyond the last pin) and the dragged one keep their places between the two, as a
+    /// monotone remapping: pulled together, a level can vanish into its neighbour and come
+    /// back, but none is made. `to` is held between the neighbours' weights.
+    pub fn dragged(&self, level: usize, to: f64, pinned: &[bool]) -> Levels {
+        let n = self.0.len();
+        let Some(&from) = self.0.get(level) else {
+            return self.clone();
+        };
+        let is_pinned = |i: usize| i != level && pinned.get(i).copied().unwrap_or(false);
+        let below = (0..level).rev().find(|&i| is_pinned(i));
+        let above = (level + 1..n).find(|&i| is_pinned(i));
+        let low = below.map_or(0.0, |i| self.0[i]);
+        let high = above.map_or(1.0, |i| self.0[i]);
+        let to = to.clamp(low.min(high), high.max(low));
+        let remap = |w: f64, (a, b): (f64, f64), (c, d): (f64, f64)| {
+            if (b - a).abs() < 1e-12 {
+                d
+            } else {
+                c + (w - a) / (b - a) * (d - c)
+            }
+        };
+        let under = |i: usize| i < level && below.is_none_or(|k| i > k);
+        let over = |i: usize| i > level && above.is_none_or(|k| i < k);
+        let mut weights = self.0.clone();
+        for (i, w) in weights.iter_mut().enumerate() {
+            if i == level {
+                *w = to;
+            } else if under(i) {
+                *w = remap(*w, (low, from), (low, to)).clamp(0.0, 1.0);
+            } else if over(i) {
+                *w = remap(*w, (from, high), (to, high)).clamp(0.0, 1.0);
+            }
+        }
+        Levels(weights)
+    }
+}
+
 impl Default for Levels {
     /// Five levels, the thesis' default, evenly from 0 to 1: the weight is the closeness.
     fn default() -> Self {
@@ -114,6 +156,31 @@ pub(super) fn closeness(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_dragged_level_moves_the_levels_up_to_its_pinned_neighbours() {
+        let linear = Levels::default();
+        // No pin: every level follows, keeping its place between the ends and the handle.
+        let all = linear.dragged(2, 0.8, &[false; 5]);
+        assert_eq!(all.weights()[2], 0.8);
+        assert!((all.weights()[1] - 0.4).abs() < 1e-12 && (all.weights()[3] - 0.9).abs() < 1e-12);
+        assert_eq!((all.weights()[0], all.weights()[4]), (0.0, 1.0));
+        // Pins at levels 1 and 4: level 3, dragged, moves; 0, 1 and 4 do not; 2 follows.
+        let pinned = [false, true, false, false, true];
+        let some = linear.dragged(3, 0.5, &pinned);
+        assert_eq!(some.weights()[..2], linear.weights()[..2]);
+        assert_eq!(some.weights()[4], 1.0);
+        assert!(
+            (some.weights()[2] - (0.25 + 0.5 * 0.25)).abs() < 1e-12,
+            "{:?}",
+            some.weights()
+        );
+        // Dragged past a pinned neighbour, it stops there: the level between vanishes.
+        let squeezed = linear.dragged(3, 0.0, &pinned);
+        assert_eq!(squeezed.weights()[3], 0.25);
+        assert_eq!(squeezed.weights()[2], 0.25);
+        assert!(squeezed.weights().windows(2).all(|w| w[0] <= w[1]));
+    }
 
     #[test]
     fn levels_interpolate_between_evenly_spaced_weights() {

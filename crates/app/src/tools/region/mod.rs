@@ -26,6 +26,7 @@ use sketchmesh_core::document::{
     CLOSE_TOLERANCE_PX, Document, Op, RegionDrag, RegionEditInput, StrokeInput, dragged_region,
     model_under, region_of,
 };
+use sketchmesh_core::region_edit::Levels;
 
 pub use handles::{AxisMark, Part};
 use handles::{HandleSession, Pressed};
@@ -131,8 +132,8 @@ enum Stage {
 #[derive(Debug)]
 pub struct RegionTool {
     draw: DrawTool,
-    /// The fall-off's levels: weights from the boundary to the reference curve.
-    levels: Vec<f64>,
+    /// The fall-off's levels and their handles.
+    graph: LevelsGraph,
     /// What a drag does.
     drag: DragKind,
     stage: Stage,
@@ -142,7 +143,7 @@ impl Default for RegionTool {
     fn default() -> Self {
         RegionTool {
             draw: DrawTool::default(),
-            levels: FALLOFFS[0].2.to_vec(),
+            graph: LevelsGraph::new(&FALLOFFS[0].2),
             drag: DragKind::Region(RegionDrag::default()),
             stage: Stage::default(),
         }
@@ -448,7 +449,7 @@ impl RegionTool {
             camera: reference.camera,
             reference: reference.stroke,
             boundary,
-            levels: Some(self.levels.clone()),
+            levels: Some(self.graph.levels.clone()),
             transform: Some(glam::DMat4::IDENTITY.to_cols_array()),
             handles: None,
             profile: None,
@@ -543,26 +544,26 @@ impl RegionTool {
         ui.separator();
         let mut changed = false;
         for (label, hint, levels) in FALLOFFS {
-            let button = egui::Button::selectable(self.levels == levels, label)
+            let button = egui::Button::selectable(self.graph.levels == levels, label)
                 .min_size(egui::vec2(36.0, 36.0));
             if ui.add(button).on_hover_text(hint).clicked() {
-                self.levels = levels.to_vec();
+                self.graph = LevelsGraph::new(&levels);
                 changed = true;
             }
         }
-        changed |= levels_ui(ui, &mut self.levels);
+        changed |= self.graph.ui(ui);
         if changed {
             match &mut self.stage {
                 Stage::Ready(input) => {
-                    input.levels = Some(self.levels.clone());
+                    input.levels = Some(self.graph.levels.clone());
                     output = ToolOutput::Revise(Op::RegionEdit(input.clone()));
                 }
                 Stage::Handles(session, _) => {
-                    session.set_levels(&self.levels);
+                    session.set_levels(&self.graph.levels);
                     output = ToolOutput::Revise(Op::RegionEdit(session.input()));
                 }
                 Stage::Profile(session) => {
-                    session.set_levels(&self.levels);
+                    session.set_levels(&self.graph.levels);
                     output = ToolOutput::Revise(Op::RegionEdit(session.input()));
                 }
                 _ => {}
@@ -679,49 +680,91 @@ fn redrawn_curve(reference: &StrokeInput, stroke: &StrokeInput) -> Option<Stroke
     })
 }
 
-/// Size of the levels graph in the toolbar, in points: as tall as its buttons.
-const GRAPH_SIZE: egui::Vec2 = egui::vec2(150.0, 36.0);
+/// Size of the levels graph in the toolbar, in points: touch-sized.
+const GRAPH_SIZE: egui::Vec2 = egui::vec2(180.0, 44.0);
 
-/// The fall-off as a graph, the boundary on the left and the reference curve on the right,
-/// each level a dot at its weight: pressing or dragging sets the weight of the level nearest
-/// the pointer across (so a drag draws the profile). Whether a weight changed.
-fn levels_ui(ui: &mut egui::Ui, levels: &mut [f64]) -> bool {
-    let (rect, response) = ui.allocate_exact_size(GRAPH_SIZE, egui::Sense::click_and_drag());
-    let response = response.on_hover_text(
-        "The fall-off from the boundary (left) to the curve (right): drag the dots up or down",
-    );
-    let last = (levels.len() - 1) as f32;
-    let inner = rect.shrink(8.0);
-    let at = |i: usize, w: f64| {
-        egui::pos2(
-            inner.left() + inner.width() * i as f32 / last,
-            inner.bottom() - inner.height() * w as f32,
-        )
-    };
-    let mut changed = false;
-    if let Some(pointer) = response.interact_pointer_pos()
-        && (response.dragged() || response.clicked() || response.drag_started())
-    {
-        let across = ((pointer.x - inner.left()) / inner.width()).clamp(0.0, 1.0);
-        let i = (across * last).round() as usize;
-        let w = f64::from(((inner.bottom() - pointer.y) / inner.height()).clamp(0.0, 1.0));
-        changed = (levels[i] - w).abs() > 1e-9;
-        levels[i] = w;
+/// The fall-off's levels as the toolbar edits them, with the level handles (Bujans §5.3).
+#[derive(Debug)]
+struct LevelsGraph {
+    /// Weights from the boundary to the reference curve.
+    levels: Vec<f64>,
+    /// The levels a handle anchors.
+    pinned: Vec<bool>,
+    /// The level being dragged.
+    dragging: Option<usize>,
+}
+
+impl LevelsGraph {
+    fn new(levels: &[f64]) -> Self {
+        LevelsGraph {
+            levels: levels.to_vec(),
+            pinned: vec![false; levels.len()],
+            dragging: None,
+        }
     }
-    let painter = ui.painter();
-    let visuals = ui.visuals();
-    painter.rect_filled(rect, 4.0, visuals.extreme_bg_color);
-    let points: Vec<egui::Pos2> = levels.iter().enumerate().map(|(i, &w)| at(i, w)).collect();
-    painter.add(egui::Shape::line(
-        points.clone(),
-        egui::Stroke::new(2.0, visuals.widgets.active.fg_stroke.color),
-    ));
-    for (point, &w) in points.iter().zip(levels.iter()) {
-        let gray = (30.0 + 225.0 * w) as u8;
-        painter.circle_filled(*point, 5.0, egui::Color32::from_gray(gray));
-        painter.circle_stroke(*point, 5.0, egui::Stroke::new(1.0, egui::Color32::GRAY));
+
+    /// The fall-off as a graph, the boundary on the left and the reference curve on the
+    /// right, each level a dot at its weight: a tap on a dot anchors it (a ring) or lets it
+    /// go; a drag moves the nearest level, and the others follow up to the anchored ones
+    /// ([`Levels::dragged`]). Whether a weight changed.
+    fn ui(&mut self, ui: &mut egui::Ui) -> bool {
+        let (rect, response) = ui.allocate_exact_size(GRAPH_SIZE, egui::Sense::click_and_drag());
+        let response = response.on_hover_text(
+            "The fall-off from the boundary (left) to the curve (right): drag a dot up or down, tap one to anchor it",
+        );
+        let last = (self.levels.len() - 1) as f32;
+        let inner = rect.shrink(8.0);
+        let at = |i: usize, w: f64| {
+            egui::pos2(
+                inner.left() + inner.width() * i as f32 / last,
+                inner.bottom() - inner.height() * w as f32,
+            )
+        };
+        let nearest = |p: egui::Pos2| {
+            let across = ((p.x - inner.left()) / inner.width()).clamp(0.0, 1.0);
+            (across * last).round() as usize
+        };
+        let weight =
+            |p: egui::Pos2| f64::from(((inner.bottom() - p.y) / inner.height()).clamp(0.0, 1.0));
+        let mut changed = false;
+        if let Some(pointer) = response.interact_pointer_pos() {
+            if response.clicked() {
+                let i = nearest(pointer);
+                self.pinned[i] = !self.pinned[i];
+            } else if response.drag_started() {
+                self.dragging = Some(nearest(pointer));
+            }
+            if let Some(i) = self.dragging.filter(|_| response.dragged()) {
+                let before = Levels::new(self.levels.clone()).unwrap_or_default();
+                let after = before.dragged(i, weight(pointer), &self.pinned);
+                changed = after != before;
+                self.levels = after.weights().to_vec();
+            }
+        }
+        if response.drag_stopped() {
+            self.dragging = None;
+        }
+        let painter = ui.painter();
+        let visuals = ui.visuals();
+        painter.rect_filled(rect, 4.0, visuals.extreme_bg_color);
+        let points: Vec<egui::Pos2> = (self.levels.iter().enumerate())
+            .map(|(i, &w)| at(i, w))
+            .collect();
+        painter.add(egui::Shape::line(
+            points.clone(),
+            egui::Stroke::new(2.0, visuals.widgets.active.fg_stroke.color),
+        ));
+        for ((point, &w), &pinned) in points.iter().zip(&self.levels).zip(&self.pinned) {
+            let gray = crate::panels::falloff::falloff_gray(w);
+            painter.circle_filled(*point, 6.0, egui::Color32::from_gray(gray));
+            painter.circle_stroke(*point, 6.0, egui::Stroke::new(1.0, egui::Color32::GRAY));
+            if pinned {
+                let ring = egui::Stroke::new(2.0, egui::Color32::from_rgb(255, 200, 90));
+                painter.circle_stroke(*point, 9.5, ring);
+            }
+        }
+        changed
     }
-    changed
 }
 
 #[cfg(test)]

@@ -26,6 +26,9 @@ pub struct ProfileSession {
     model: usize,
     at: f64,
     profile: Result<Profile, String>,
+    /// Whether the plane's `u` points left as the curves were seen: the panel then shows it
+    /// mirrored, so that left in the panel is left on the model.
+    mirrored: bool,
     /// The last stroke drawn in the panel, in the plane.
     stroke: Option<Vec<DVec2>>,
 }
@@ -60,6 +63,7 @@ impl ProfileSession {
             model,
             at: 0.5,
             profile: Err(String::new()),
+            mirrored: false,
             stroke: None,
         };
         session.slide_to(0.5, doc);
@@ -90,6 +94,16 @@ impl ProfileSession {
             Some(model) => (self.region.profile(&model.mesh, self.at)).map_err(|e| e.to_string()),
             None => Err(String::from("The model is gone.")),
         };
+        if let Ok(profile) = &self.profile {
+            let camera = &self.input.camera;
+            let size = DVec2::from(self.input.viewport);
+            let origin = profile.frame.origin;
+            let seen = |p: DVec3| camera.screen_from_world(p, size).map(|s| s.x);
+            let scale = origin.length().max(1.0) * 1e-3;
+            if let (Some(a), Some(b)) = (seen(origin), seen(profile.to_world(DVec2::X * scale))) {
+                self.mirrored = b < a;
+            }
+        }
     }
 
     /// The op as it stands: the profile re-sketched, or the region unmoved.
@@ -126,7 +140,7 @@ impl ProfileSession {
         let Ok(profile) = &self.profile else {
             return false;
         };
-        let mapping = Mapping::new(profile, size);
+        let mapping = Mapping::new(profile, size, self.mirrored);
         self.stroke = Some(points.iter().map(|&p| mapping.to_plane(p)).collect());
         true
     }
@@ -145,7 +159,7 @@ impl ProfileSession {
                 refusal: self.profile.clone().err(),
             };
         };
-        let mapping = Mapping::new(profile, size);
+        let mapping = Mapping::new(profile, size, self.mirrored);
         let in_panel = |ps: &[DVec2]| ps.iter().map(|&p| mapping.to_panel(p)).collect();
         ProfileView {
             corner,
@@ -175,16 +189,18 @@ fn panel(size: DVec2) -> (DVec2, f64) {
     )
 }
 
-/// Between the plane (`u` right, `v` up, model units) and the panel (CSS px, y down): the
-/// cross-section's bounding box fitted in the middle.
+/// Between the plane (`u` right, or left when mirrored; `v` up; model units) and the panel
+/// (CSS px, y down): the cross-section's bounding box fitted in the middle.
 struct Mapping {
     centre_plane: DVec2,
     centre_panel: DVec2,
     scale: f64,
+    /// -1 when `u` runs right to left in the panel.
+    across: f64,
 }
 
 impl Mapping {
-    fn new(profile: &Profile, size: DVec2) -> Self {
+    fn new(profile: &Profile, size: DVec2, mirrored: bool) -> Self {
         let (corner, side) = panel(size);
         let (lo, hi) = profile.points.iter().fold(
             (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
@@ -195,16 +211,17 @@ impl Mapping {
             centre_plane: 0.5 * (lo + hi),
             centre_panel: corner + DVec2::splat(0.5 * side),
             scale: FILL * side / extent,
+            across: if mirrored { -1.0 } else { 1.0 },
         }
     }
 
     fn to_panel(&self, p: DVec2) -> DVec2 {
         let d = (p - self.centre_plane) * self.scale;
-        self.centre_panel + DVec2::new(d.x, -d.y)
+        self.centre_panel + DVec2::new(self.across * d.x, -d.y)
     }
 
     fn to_plane(&self, p: DVec2) -> DVec2 {
         let d = (p - self.centre_panel) / self.scale;
-        self.centre_plane + DVec2::new(d.x, -d.y)
+        self.centre_plane + DVec2::new(self.across * d.x, -d.y)
     }
 }

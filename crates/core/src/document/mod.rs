@@ -45,9 +45,9 @@ pub use intent::{
     model_under, needs_tap, op_for_stroke, starts_on_model, surface_at, tunnel_from,
 };
 pub use op::{
-    AddCurveInput, BrushInput, CurveTypeInput, FileInput, HandleInput, ImportInput, MergeInput,
-    ModelInput, Op, OptimizeInput, OversketchFit, OversketchInput, ProfileInput, RegionEditInput,
-    SketchFeatureInput, StrokeInput, StrokePairInput, TransformInput,
+    AddCurveInput, AreaInput, BrushInput, CurveTypeInput, FileInput, HandleInput, ImportInput,
+    MergeInput, ModelInput, Op, OptimizeInput, OversketchFit, OversketchInput, ProfileInput,
+    RegionEditInput, SketchFeatureInput, StrokeInput, StrokePairInput, TransformInput,
 };
 pub use oversketch::OutlinePiece;
 pub use region_edit::{RegionDrag, dragged_region, region_of};

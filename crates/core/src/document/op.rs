@@ -284,6 +284,9 @@ pub struct RegionEditInput {
     /// reference curve (last), linear between; left out: `[0, 0.25, 0.5, 0.75, 1]`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub levels: Option<Vec<f64>>,
+    /// Parts of the region with levels of their own (Bujans §5.4), later over earlier.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub areas: Vec<AreaInput>,
     /// The 4×4 affine transform, column by column: a vertex of weight `w` moves by `w ⊙ T`.
     /// Exactly one of it and `handles`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -313,6 +316,17 @@ pub struct ProfileInput {
     /// The stroke `[u, v]` in the plane, in model units: `u` across the curve (along the
     /// binormal), `v` out of the surface (along its normal), from the curve's point there.
     pub stroke: Vec<[f64; 2]>,
+}
+
+/// An area of a `region_edit` op's fall-off: the region vertices seen inside its lasso (in
+/// the op's view) take its levels.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AreaInput {
+    /// Raw samples `[x, y, pressure]` of the lasso, closed (first point not repeated).
+    pub lasso: Vec<[f64; 3]>,
+    /// The levels inside it, as the op's `levels`.
+    pub levels: Vec<f64>,
 }
 
 /// A handle of a `region_edit` op.
@@ -658,6 +672,7 @@ mod tests {
                 reference: Vec::new(),
                 boundary: Vec::new(),
                 levels: None,
+                areas: Vec::new(),
                 transform: Some(glam::DMat4::IDENTITY.to_cols_array()),
                 handles: None,
                 profile: None,

@@ -10,12 +10,14 @@ use glam::{DMat4, DVec2, DVec3};
 
 use super::curve_edit::remesh_only;
 use super::outcome::{target, with_positions};
-use super::{CommandError, Document, Model, RegionEditInput, StrokeInput, model_under, surface_at};
+use super::{
+    AreaInput, CommandError, Document, Model, RegionEditInput, StrokeInput, model_under, surface_at,
+};
 use crate::curve::polyline::thin;
 use crate::curve::process_stroke;
 use crate::mesh::{Mesh, VertexId};
 use crate::region_edit::{
-    Handle, Levels, Motion, RegionEdit, RegionError, RegionSketch, checked_transform,
+    Area, Handle, Levels, Motion, RegionEdit, RegionError, RegionSketch, checked_transform,
 };
 
 /// Input samples nearer than this (CSS px) to the last kept one are dropped before the
@@ -135,7 +137,11 @@ pub fn region_of(
         boundary: smoothed(&boundary).map_err(|_| RegionError::BoundaryMissesReference)?,
     };
     let mesh = &target(doc, index)?.mesh;
-    Ok((index, RegionEdit::new(mesh, &sketch, &levels)?))
+    let mut edit = RegionEdit::new(mesh, &sketch, &levels)?;
+    if !input.areas.is_empty() {
+        edit.set_falloff(&levels, &areas_of(input)?);
+    }
+    Ok((index, edit))
 }
 
 /// What a drag does to a region, about the surface point under the reference curve's
@@ -216,6 +222,29 @@ fn levels_of(input: &RegionEditInput) -> Result<Levels, RegionError> {
         .map_or(Ok(Levels::default()), Levels::new)
 }
 
+/// The op's areas of the fall-off.
+///
+/// Errors: [`RegionError::BadLevels`], [`RegionError::BadArea`] for a lasso of fewer than
+/// three points or one that is not finite.
+fn areas_of(input: &RegionEditInput) -> Result<Vec<Area>, RegionError> {
+    (input.areas.iter())
+        .map(|area| {
+            let lasso: Vec<DVec2> = area
+                .lasso
+                .iter()
+                .map(|&[x, y, _]| DVec2::new(x, y))
+                .collect();
+            if lasso.len() < 3 || lasso.iter().any(|p| !p.is_finite()) {
+                return Err(RegionError::BadArea);
+            }
+            Ok(Area {
+                lasso,
+                levels: Levels::new(area.levels.clone())?,
+            })
+        })
+        .collect()
+}
+
 /// A live region edit on one model: the region behind it and what it shows.
 #[derive(Debug)]
 pub(super) struct RegionPreview {
@@ -232,8 +261,8 @@ struct Built {
     key: RegionEditInput,
     model: usize,
     edit: RegionEdit,
-    /// The levels the edit is weighed with.
-    levels: Option<Vec<f64>>,
+    /// The levels and areas the edit is weighed with.
+    levels: (Option<Vec<f64>>, Vec<AreaInput>),
     /// The region laid flat in the unit disc, for the fall-off panel, or why it cannot be.
     disc: Result<Vec<DVec2>, RegionError>,
 }
@@ -330,6 +359,7 @@ fn edit_for<'a>(
         handles: None,
         profile: None,
         levels: None,
+        areas: Vec::new(),
         remesh: false,
         ..input.clone()
     };
@@ -337,7 +367,7 @@ fn edit_for<'a>(
         Some(built) if built.key == key => built,
         _ => {
             let (model, edit) = region_of(base, input)?;
-            let levels = input.levels.clone();
+            let levels = (input.levels.clone(), input.areas.clone());
             let disc = edit.disc(&target(base, model)?.mesh);
             Built {
                 key,
@@ -349,9 +379,12 @@ fn edit_for<'a>(
         }
     };
     // Weighed again only when the levels change, not in every drag frame.
-    if built.levels != input.levels {
-        built.edit.set_levels(&levels_of(input)?);
-        built.levels = input.levels.clone();
+    let wanted = (input.levels.clone(), input.areas.clone());
+    if built.levels != wanted {
+        built
+            .edit
+            .set_falloff(&levels_of(input)?, &areas_of(input)?);
+        built.levels = wanted;
     }
     Ok(slot.insert(built))
 }

@@ -5,9 +5,10 @@ use glam::{DMat4, DVec2, DVec3, DVec4};
 use super::falloff::closeness;
 use super::profile::cross_section;
 use super::{
-    Handle, HandleFrame, HandleRail, Levels, Motion, Profile, ProfileChange, RegionError,
+    Area, Handle, HandleFrame, HandleRail, Levels, Motion, Profile, ProfileChange, RegionError,
     RegionSketch,
 };
+use crate::curve::polyline::contains;
 use crate::feature::{Sketch, place};
 use crate::geometry::{Bvh, Fractions, log_affine, vertex_normals};
 use crate::mesh::{Mesh, VertexId};
@@ -26,6 +27,8 @@ pub struct RegionEdit {
     weights: Vec<f64>,
     /// Each one's nearest vertex of the reference path along edges, as an index into it.
     nearest: Vec<u32>,
+    /// Each one where it was seen when the curves were drawn (CSS px), for areas' lassos.
+    seen: Vec<DVec2>,
     /// The edge path under the reference curve.
     reference: Vec<VertexId>,
     /// Where each path vertex sits along the reference curve (its nearest point of the
@@ -74,11 +77,21 @@ impl RegionEdit {
             .iter()
             .map(|&v| rail.nearest_param(mesh.position(v)))
             .collect();
+        let seen = vertices
+            .iter()
+            .map(|&v| {
+                (sketch
+                    .camera
+                    .screen_from_world(mesh.position(v), sketch.viewport))
+                .map_or(DVec2::NAN, |p| p.truncate())
+            })
+            .collect();
         Ok(RegionEdit {
             vertices,
             closeness: found.closeness,
             weights,
             nearest: found.nearest,
+            seen,
             params,
             rail,
             reference: placed.path,
@@ -206,8 +219,16 @@ impl RegionEdit {
     /// Weighs the region again with other levels (a level handle dragged): the region and
     /// the closeness stay.
     pub fn set_levels(&mut self, levels: &Levels) {
-        for (w, &s) in self.weights.iter_mut().zip(&self.closeness) {
-            *w = levels.weight(s);
+        self.set_falloff(levels, &[]);
+    }
+
+    /// Weighs the region again with `levels`, and within each of `areas` (a later one over
+    /// an earlier one where they overlap) with its own levels.
+    pub fn set_falloff(&mut self, levels: &Levels, areas: &[Area]) {
+        let moved = self.weights.iter_mut().zip(&self.closeness).zip(&self.seen);
+        for ((w, &s), &p) in moved {
+            let inside = areas.iter().rev().find(|a| contains(&a.lasso, p));
+            *w = inside.map_or(levels, |a| &a.levels).weight(s);
         }
     }
 

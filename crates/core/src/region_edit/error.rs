@@ -33,6 +33,9 @@ pub enum RegionError {
     /// Fewer than two levels, or a level outside [0, 1].
     #[error("The fall-off needs at least two levels, each a weight from 0 to 1.")]
     BadLevels,
+    /// An area's lasso has fewer than three points or one that is not a number.
+    #[error("Draw an area of the fall-off as a loop of at least three points.")]
+    BadArea,
     /// A number of the transform is NaN or infinite.
     #[error("The transform is not a number.")]
     TransformNotFinite,
@@ -100,6 +103,7 @@ mod tests {
             RegionError::BoundaryCrosses,
             RegionError::BoundaryMissesReference,
             RegionError::BadLevels,
+            RegionError::BadArea,
             RegionError::TransformNotFinite,
             RegionError::TransformNotAffine,
             RegionError::TransformMirrors,

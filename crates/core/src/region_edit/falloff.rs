@@ -1,6 +1,8 @@
 //! How far each vertex of a region moves: its closeness to the reference curve, read
 //! through the user's levels (the thesis' gray-scale fall-off, §5.2).
 
+use glam::DVec2;
+
 use super::RegionError;
 use crate::mesh::{Mesh, VertexId, distances_within, shortest_paths};
 
@@ -76,6 +78,17 @@ impl Levels {
         }
         Levels(weights)
     }
+}
+
+/// A part of the region whose fall-off has levels of its own (Bujans §5.4: "edits can apply
+/// only inside an area picked with a lasso"): the region vertices seen inside the lasso (in
+/// the view the curves were drawn in; even-odd, so a lasso may cross itself) take `levels`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Area {
+    /// The lasso, closed, in screen CSS px of the curves' view.
+    pub lasso: Vec<DVec2>,
+    /// The levels inside it.
+    pub levels: Levels,
 }
 
 impl Default for Levels {

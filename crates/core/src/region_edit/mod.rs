@@ -39,7 +39,7 @@ use crate::camera::Camera;
 
 pub use edit::{RegionEdit, checked_transform};
 pub use error::RegionError;
-pub use falloff::Levels;
+pub use falloff::{Area, Levels};
 pub use handles::{Handle, HandleFrame, HandleRail, Motion, blend_at};
 pub use profile::{Profile, ProfileChange};
 

@@ -858,6 +858,7 @@ fn op_for(step: &Step, document: &Document) -> Op {
                 reference: reference.stroke,
                 boundary: input(camera, &ring).stroke,
                 levels: None,
+                areas: Vec::new(),
                 transform: Some(transform.to_cols_array()),
                 handles: None,
                 profile: None,

@@ -165,6 +165,7 @@ fn op(sketch: &RegionSketch, transform: DMat4, levels: Option<Vec<f64>>) -> Op {
         reference: samples(sketch.reference.iter().copied()),
         boundary: samples(sketch.boundary.iter().copied()),
         levels,
+        areas: Vec::new(),
         transform: Some(transform.to_cols_array()),
         handles: None,
         profile: None,
@@ -616,6 +617,7 @@ fn a_stretched_region_is_remeshed_and_the_rest_stays() {
         Op::RegionEdit(RegionEditInput {
             transform: Some(stretch.to_cols_array()),
             levels: Some(vec![0.0, 1.0, 1.0]),
+            areas: Vec::new(),
             remesh,
             ..still.clone()
         })
@@ -783,4 +785,59 @@ fn a_profile_op_replays_and_a_bad_stroke_is_refused() {
     assert_ne!(digest(editor.document()), before);
     let replayed = Editor::replay_json(&editor.session_json()).unwrap();
     assert_eq!(digest(replayed.document()), digest(editor.document()));
+}
+
+#[test]
+fn an_area_of_the_falloff_has_its_own_levels() {
+    let (mesh, sketch, mut editor, still) = sphere_in_editor();
+    let middle = sketch.reference[sketch.reference.len() / 2];
+    // A lasso over the right half of the region, where nothing is to move.
+    let lasso: Vec<[f64; 3]> = [(0.0, -200.0), (300.0, -200.0), (300.0, 200.0), (0.0, 200.0)]
+        .iter()
+        .map(|&(x, y)| [middle.x + x, middle.y + y, 0.5])
+        .collect();
+    let lift = DMat4::from_translation(DVec3::new(0.0, 0.2, 0.0));
+    let input = RegionEditInput {
+        transform: Some(lift.to_cols_array()),
+        areas: vec![sketchmesh_core::document::AreaInput {
+            lasso: lasso.clone(),
+            levels: vec![0.0, 0.0],
+        }],
+        ..still.clone()
+    };
+    editor.apply(Op::RegionEdit(input)).unwrap();
+    let moved = &editor.document().models[0].mesh;
+    let mut imported = Editor::new();
+    imported.apply(import_mesh("sphere.glb", &mesh)).unwrap();
+    let before = &imported.document().models[0].mesh;
+    let (mut right_moved, mut left_moved) = (0, 0);
+    for v in before.vertices() {
+        let p = before.position(v);
+        let Some(at) = screen(&sketch.camera, VIEWPORT, p) else {
+            continue;
+        };
+        let changed = moved.position(v) != p;
+        if at.x > middle.x + 2.0 && changed {
+            right_moved += 1;
+        }
+        if at.x < middle.x - 2.0 && changed {
+            left_moved += 1;
+        }
+    }
+    assert_eq!(right_moved, 0, "inside the area nothing moves");
+    assert!(left_moved > 50, "outside it the region moves: {left_moved}");
+    let replayed = Editor::replay_json(&editor.session_json()).unwrap();
+    assert_eq!(digest(replayed.document()), digest(editor.document()));
+    // A lasso of two points is refused.
+    let bad = RegionEditInput {
+        areas: vec![sketchmesh_core::document::AreaInput {
+            lasso: lasso[..2].to_vec(),
+            levels: vec![0.0, 0.0],
+        }],
+        ..still
+    };
+    match editor.apply(Op::RegionEdit(bad)) {
+        Err(CommandError::Region(RegionError::BadArea)) => {}
+        other => panic!("{other:?}"),
+    }
 }

@@ -450,6 +450,7 @@ impl RegionTool {
             reference: reference.stroke,
             boundary,
             levels: Some(self.graph.levels.clone()),
+            areas: Vec::new(),
             transform: Some(glam::DMat4::IDENTITY.to_cols_array()),
             handles: None,
             profile: None,

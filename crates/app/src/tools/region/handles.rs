@@ -10,7 +10,7 @@
 use glam::{DMat3, DMat4, DQuat, DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::polyline::distance_to_segment;
-use sketchmesh_core::document::{HandleInput, RegionEditInput};
+use sketchmesh_core::document::{AreaInput, HandleInput, RegionEditInput};
 use sketchmesh_core::geometry::log_affine;
 use sketchmesh_core::region_edit::{Handle, HandleFrame, HandleRail, blend_at};
 
@@ -125,9 +125,10 @@ impl HandleSession {
         &self.input
     }
 
-    /// The fall-off's levels change.
-    pub fn set_levels(&mut self, levels: &[f64]) {
+    /// The fall-off's levels and areas change.
+    pub fn set_falloff(&mut self, levels: &[f64], areas: Vec<AreaInput>) {
         self.input.levels = Some(levels.to_vec());
+        self.input.areas = areas;
     }
 
     /// Whether any handle has moved.

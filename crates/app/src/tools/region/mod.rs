@@ -23,8 +23,8 @@ use sketchmesh_core::curve::polyline::{
 };
 use sketchmesh_core::curve::{StrokePoint, is_closed_loop};
 use sketchmesh_core::document::{
-    CLOSE_TOLERANCE_PX, Document, Op, RegionDrag, RegionEditInput, StrokeInput, dragged_region,
-    model_under, region_of,
+    AreaInput, CLOSE_TOLERANCE_PX, Document, Op, RegionDrag, RegionEditInput, StrokeInput,
+    dragged_region, model_under, region_of,
 };
 use sketchmesh_core::region_edit::Levels;
 
@@ -121,6 +121,8 @@ enum Stage {
     Dragging(RegionEditInput, DVec2, RegionDrag),
     /// A stroke from near the boundary is being drawn: it redraws part of the boundary.
     Redrawing(RegionEditInput),
+    /// An area's lasso is being drawn.
+    Lassoing(RegionEditInput),
     /// Working the handles (the edit open since the curves were drawn); whether a handle
     /// has been pressed yet.
     Handles(Box<HandleSession>, bool),
@@ -134,6 +136,13 @@ pub struct RegionTool {
     draw: DrawTool,
     /// The fall-off's levels and their handles.
     graph: LevelsGraph,
+    /// Parts of the region with levels of their own (Bujans §5.4): each lasso as drawn and
+    /// its levels.
+    areas: Vec<(Vec<[f64; 3]>, LevelsGraph)>,
+    /// The area whose levels the graph shows, or `None` for the whole region's.
+    editing: Option<usize>,
+    /// Whether the next stroke is an area's lasso.
+    lassoing: bool,
     /// What a drag does.
     drag: DragKind,
     stage: Stage,
@@ -144,6 +153,9 @@ impl Default for RegionTool {
         RegionTool {
             draw: DrawTool::default(),
             graph: LevelsGraph::new(&FALLOFFS[0].2),
+            areas: Vec::new(),
+            editing: None,
+            lassoing: false,
             drag: DragKind::Region(RegionDrag::default()),
             stage: Stage::default(),
         }
@@ -157,6 +169,11 @@ impl RegionTool {
             Stage::Reference => self.reference(event, view, doc),
             Stage::Boundary(reference) => self.boundary(reference, event, view, doc),
             Stage::Ready(input) => match (event, self.drag) {
+                (ToolEvent::Begin(_), _) if self.lassoing => {
+                    self.draw.capture(event, view);
+                    self.stage = Stage::Lassoing(input);
+                    ToolOutput::None
+                }
                 (ToolEvent::Begin(s), _) if on_boundary(&input, point(s, view).pos, view) => {
                     self.draw.capture(event, view);
                     self.stage = Stage::Redrawing(input);
@@ -190,6 +207,7 @@ impl RegionTool {
                 }
             },
             Stage::Redrawing(input) => self.redraw_boundary(input, event, view, doc),
+            Stage::Lassoing(input) => self.lasso_area(input, event, view),
             Stage::Profile(session) => self.profile(session, event, view),
             Stage::Handles(session, begun) => match event {
                 // Before a handle moves, the boundary may still be redrawn.
@@ -240,6 +258,56 @@ impl RegionTool {
             ..input
         };
         self.after_boundary(input, doc, None)
+    }
+
+    /// The stroke of an area's lasso: at its end, a new area with the levels the graph
+    /// showed, which the graph then edits.
+    fn lasso_area(
+        &mut self,
+        input: RegionEditInput,
+        event: &ToolEvent,
+        view: &ViewCtx,
+    ) -> ToolOutput {
+        let Some(stroke) = self.draw.capture(event, view) else {
+            self.stage = match event {
+                ToolEvent::Cancel => Stage::Ready(input),
+                _ => Stage::Lassoing(input),
+            };
+            return ToolOutput::None;
+        };
+        self.lassoing = false;
+        if is_tap(&stroke) || !is_closed_loop(&stroke.points(), CLOSE_TOLERANCE_PX) {
+            self.stage = Stage::Ready(input);
+            let sentence = "Draw the area as a closed loop over the region.";
+            return ToolOutput::Refused(String::from(sentence));
+        }
+        let levels = self.graph().levels.clone();
+        self.areas.push((stroke.stroke, LevelsGraph::new(&levels)));
+        self.editing = Some(self.areas.len() - 1);
+        let input = RegionEditInput {
+            areas: self.areas_input(),
+            ..input
+        };
+        self.stage = Stage::Ready(input.clone());
+        ToolOutput::Revise(Op::RegionEdit(input))
+    }
+
+    /// The graph the toolbar shows: the area's being edited, or the whole region's.
+    fn graph(&mut self) -> &mut LevelsGraph {
+        match self.editing.and_then(|i| self.areas.get_mut(i)) {
+            Some((_, graph)) => graph,
+            None => &mut self.graph,
+        }
+    }
+
+    /// The areas as the op holds them.
+    fn areas_input(&self) -> Vec<AreaInput> {
+        (self.areas.iter())
+            .map(|(lasso, graph)| AreaInput {
+                lasso: lasso.clone(),
+                levels: graph.levels.clone(),
+            })
+            .collect()
     }
 
     /// The curves are set again: the edit shows them (with handles, when they are picked),
@@ -460,10 +528,13 @@ impl RegionTool {
         self.after_boundary(input, doc, None)
     }
 
-    /// Forgets the curves and the drag (the app cancels its edit).
+    /// Forgets the curves, their areas and the drag (the app cancels its edit).
     pub fn cancel(&mut self) {
         self.draw = DrawTool::Idle;
         self.stage = Stage::Reference;
+        self.areas.clear();
+        self.editing = None;
+        self.lassoing = false;
     }
 
     /// The stroke being drawn, for live display.
@@ -482,8 +553,22 @@ impl RegionTool {
             Stage::Boundary(reference) if reference.camera == *camera => {
                 vec![mark(reference.points(), true)]
             }
-            Stage::Ready(input) | Stage::Redrawing(input) if input.camera == *camera => {
-                curve_marks(input)
+            Stage::Ready(input) | Stage::Redrawing(input) | Stage::Lassoing(input)
+                if input.camera == *camera =>
+            {
+                let mut marks = curve_marks(input);
+                marks.extend(self.areas.iter().map(|(lasso, _)| {
+                    Mark {
+                        points: StrokeInput {
+                            stroke: lasso.clone(),
+                            ..input.reference_input()
+                        }
+                        .points(),
+                        radius: None,
+                        features: false,
+                    }
+                }));
+                marks
             }
             // Until a handle moves the region, whose curves then stay where they were drawn.
             Stage::Handles(session, false) if session.input().camera == *camera => {
@@ -503,6 +588,9 @@ impl RegionTool {
             Stage::Boundary(_) => Some(
                 "Now draw a closed loop around it (outside stays), or redraw part of the curve",
             ),
+            Stage::Ready(_) if self.lassoing => {
+                Some("Draw a loop over the part of the region whose fall-off to change")
+            }
             Stage::Ready(_) => Some(match self.drag {
                 DragKind::Region(RegionDrag::Move) => {
                     "Drag: the region follows, fading out toward the boundary"
@@ -527,7 +615,7 @@ impl RegionTool {
             Stage::Profile(_) => Some(
                 "Draw a new cross-section over the one in the panel (from it, back to it); the slider moves the plane",
             ),
-            Stage::Dragging(..) | Stage::Redrawing(_) => None,
+            Stage::Dragging(..) | Stage::Redrawing(_) | Stage::Lassoing(_) => None,
         }
     }
 
@@ -545,26 +633,29 @@ impl RegionTool {
         ui.separator();
         let mut changed = false;
         for (label, hint, levels) in FALLOFFS {
-            let button = egui::Button::selectable(self.graph.levels == levels, label)
+            let button = egui::Button::selectable(self.graph().levels == levels, label)
                 .min_size(egui::vec2(36.0, 36.0));
             if ui.add(button).on_hover_text(hint).clicked() {
-                self.graph = LevelsGraph::new(&levels);
+                *self.graph() = LevelsGraph::new(&levels);
                 changed = true;
             }
         }
-        changed |= self.graph.ui(ui);
+        changed |= self.graph().ui(ui);
+        changed |= self.areas_ui(ui);
         if changed {
+            let (levels, areas) = (self.graph.levels.clone(), self.areas_input());
             match &mut self.stage {
                 Stage::Ready(input) => {
-                    input.levels = Some(self.graph.levels.clone());
+                    input.levels = Some(levels);
+                    input.areas = areas;
                     output = ToolOutput::Revise(Op::RegionEdit(input.clone()));
                 }
                 Stage::Handles(session, _) => {
-                    session.set_levels(&self.graph.levels);
+                    session.set_falloff(&levels, areas);
                     output = ToolOutput::Revise(Op::RegionEdit(session.input()));
                 }
                 Stage::Profile(session) => {
-                    session.set_levels(&self.graph.levels);
+                    session.set_falloff(&levels, areas);
                     output = ToolOutput::Revise(Op::RegionEdit(session.input()));
                 }
                 _ => {}
@@ -607,6 +698,45 @@ impl RegionTool {
             output = ToolOutput::Cancel;
         }
         output
+    }
+
+    /// The fall-off's areas: **Area** draws a new one (its levels are then the graph's),
+    /// **Whole** goes back to the whole region's levels, **No areas** drops them. Whether the
+    /// areas changed.
+    fn areas_ui(&mut self, ui: &mut egui::Ui) -> bool {
+        let ready = matches!(self.stage, Stage::Ready(_));
+        let area = egui::Button::selectable(self.lassoing, "Area").min_size(egui::vec2(36.0, 36.0));
+        if ui
+            .add_enabled(ready, area)
+            .on_hover_text(
+                "Draw a loop over the region: the levels then set the fall-off inside it only",
+            )
+            .clicked()
+        {
+            self.lassoing = !self.lassoing;
+        }
+        if self.areas.is_empty() {
+            return false;
+        }
+        let whole = egui::Button::selectable(self.editing.is_none(), "Whole")
+            .min_size(egui::vec2(36.0, 36.0));
+        if ui
+            .add(whole)
+            .on_hover_text("The levels set the fall-off of the whole region")
+            .clicked()
+        {
+            self.editing = None;
+        }
+        let drop = ui.add(egui::Button::new("No areas").min_size(egui::vec2(36.0, 36.0)));
+        if drop
+            .on_hover_text("Drop the areas: one fall-off for the whole region")
+            .clicked()
+        {
+            self.areas.clear();
+            self.editing = None;
+            return true;
+        }
+        false
     }
 
     /// The drag's kind changed: drawn curves get what it needs (handles, the profile panel,
@@ -975,6 +1105,23 @@ mod tests {
                 .any(|&[x, y, _]| DVec2::new(x, y).distance(far) < 1.0),
             "the far side stays"
         );
+        // With Area on, a loop over the region is an area of the fall-off, with the levels
+        // the graph had; the graph then edits the area's.
+        tool.lassoing = true;
+        let patch: Vec<DVec2> = (0..=24)
+            .map(|i| {
+                centre
+                    + DVec2::new(30.0, 0.0)
+                    + 25.0 * DVec2::from_angle(std::f64::consts::TAU * f64::from(i) / 24.0)
+            })
+            .collect();
+        let ToolOutput::Revise(Op::RegionEdit(with_area)) = stroke(&mut tool, doc, &patch) else {
+            panic!("the loop is an area")
+        };
+        assert_eq!(with_area.areas.len(), 1);
+        assert_eq!(with_area.areas[0].levels, FALLOFFS[0].2.to_vec());
+        assert_eq!((tool.editing, tool.lassoing), (Some(0), false));
+        assert_eq!(tool.marks(&view().camera).len(), 3);
         // A stroke from the boundary that ends elsewhere is refused; the boundary stays.
         let away: Vec<DVec2> = (0..=10)
             .map(|i| bulge[0] + DVec2::new(-5.0 * f64::from(i), 0.0))
@@ -983,7 +1130,7 @@ mod tests {
             stroke(&mut tool, doc, &away),
             ToolOutput::Refused(_)
         ));
-        assert_eq!(tool.marks(&view().camera).len(), 2);
+        assert_eq!(tool.marks(&view().camera).len(), 3);
     }
 
     #[test]

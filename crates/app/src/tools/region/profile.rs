@@ -7,7 +7,7 @@
 //! pixels and the plane.
 
 use glam::{DVec2, DVec3};
-use sketchmesh_core::document::{Document, ProfileInput, RegionEditInput};
+use sketchmesh_core::document::{AreaInput, Document, ProfileInput, RegionEditInput};
 use sketchmesh_core::region_edit::{Profile, RegionEdit};
 
 /// The panel's side as a share of the view's shorter side, and its bounds in CSS px.
@@ -75,9 +75,10 @@ impl ProfileSession {
         &self.input
     }
 
-    /// The fall-off's levels change.
-    pub fn set_levels(&mut self, levels: &[f64]) {
+    /// The fall-off's levels and areas change.
+    pub fn set_falloff(&mut self, levels: &[f64], areas: Vec<AreaInput>) {
         self.input.levels = Some(levels.to_vec());
+        self.input.areas = areas;
     }
 
     /// Where the plane sits along the curve (0..1).

@@ -1,8 +1,9 @@
 //! Region editing (`core::region_edit`) on a 163,842-vertex icosphere seen from the front
 //! (orthographic): `RegionEdit::new` for a reference curve across the front and a boundary
 //! around about 50k vertices (the curves placed, the region grown, two Dijkstra passes, the
-//! weights), and one drag frame (the transform's fractions, then every region vertex moved
-//! by `w ⊙ T`). Targets (issue 22): setup under 100 ms natively at 50k; a frame well under
+//! weights), one drag frame (the transform's fractions, then every region vertex moved by
+//! `w ⊙ T`), a handles frame, the region laid flat in the disc, and a re-sketched profile
+//! swept along the curve. Targets (issue 22): setup under 100 ms natively at 50k; a frame well under
 //! 16 ms. Results go in BENCHMARKS.md. Run with
 //! `cargo bench -p sketchmesh-core --bench region_edit -- --warm-up-time 1 --measurement-time 3`.
 
@@ -63,6 +64,20 @@ fn bench_region_edit(c: &mut Criterion) {
     group.sample_size(10);
     group.bench_function("new_50k", |b| {
         b.iter(|| RegionEdit::new(black_box(&mesh), &sketch, &levels).expect("placed"));
+    });
+    // A bump across the cross-section at the curve's middle, swept along the curve: a
+    // re-sketched profile, paid once per stroke.
+    let profile = edit.profile(&mesh, 0.5).expect("a cross-section");
+    let (lo, hi) = (profile.points[0].x, profile.points[profile.points.len() - 1].x);
+    let stroke: Vec<DVec2> = (0..=40)
+        .map(|i| {
+            let t = f64::from(i) / 40.0;
+            let u = lo + (hi - lo) * (0.3 + 0.4 * t);
+            DVec2::new(u, 0.1 * (hi - lo) * (std::f64::consts::PI * t).sin())
+        })
+        .collect();
+    group.bench_function("profile_50k", |b| {
+        b.iter(|| edit.profile_applied(black_box(&mesh), 0.5, &stroke).expect("applied"));
     });
     group.bench_function("disc_50k", |b| {
         b.iter(|| edit.disc(black_box(&mesh)).expect("a disc"));

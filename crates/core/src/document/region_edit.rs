@@ -6,16 +6,18 @@
 //! the committed result is that edit applied to the final transform, bit for bit what
 //! [`region_edit_op`] computes from the op alone, so replay gives the same document.
 
+use std::sync::Arc;
+
 use glam::{DMat4, DVec2, DVec3};
 
-use super::curve_edit::remesh_only;
-use super::outcome::{target, with_positions};
+use super::curve_edit::{remesh_only, with_splits};
+use super::outcome::target;
 use super::{
     AreaInput, CommandError, Document, Model, RegionEditInput, StrokeInput, model_under, surface_at,
 };
 use crate::curve::polyline::thin;
 use crate::curve::process_stroke;
-use crate::mesh::{Mesh, VertexId};
+use crate::mesh::VertexId;
 use crate::region_edit::{
     Area, Handle, Levels, Motion, RegionEdit, RegionError, RegionSketch, checked_transform,
 };
@@ -32,12 +34,13 @@ pub(super) fn region_edit_op(
     input: &RegionEditInput,
 ) -> Result<(usize, Model), CommandError> {
     let (index, edit) = region_of(doc, input)?;
-    let positions = moved(&edit, &target(doc, index)?.mesh, input)?;
+    let positions = moved(&edit, input)?;
     Ok((index, edited_model(doc, index, &edit, &positions, input)?))
 }
 
-/// Model `index` of `doc` with its vertices at `positions`, and its region remeshed when
-/// `input` asks and the model has no corner attributes a remesh would lose.
+/// Model `index` of `doc` on the edit's mesh (the curves embedded), its control curves
+/// through the vertices the embedding put on their edges, at `positions`; its region
+/// remeshed when `input` asks and the model has no corner attributes a remesh would lose.
 ///
 /// Errors: the remesher's refusal.
 fn edited_model(
@@ -47,10 +50,9 @@ fn edited_model(
     positions: &[DVec3],
     input: &RegionEditInput,
 ) -> Result<Model, CommandError> {
-    let mut model = with_positions(doc, index, positions);
-    let textured =
-        (model.appearance.as_ref()).is_some_and(|a| a.uvs.is_some() || a.colors.is_some());
-    if input.remesh && !textured {
+    let mut model = embedded_model(&doc.models[index], edit);
+    model.mesh.positions_mut().copy_from_slice(positions);
+    if input.remesh && !is_textured(&model) {
         let mut region = vec![false; model.mesh.n_vertices()];
         for v in edit.vertices() {
             region[v.index()] = true;
@@ -92,23 +94,36 @@ fn moves_of(edit: &RegionEdit, input: &RegionEditInput) -> Result<Moves, RegionE
     }
 }
 
-/// Every vertex of `mesh` (the mesh `edit` was found on) moved as `input` says.
-///
-/// Errors: as [`moves_of`], and a profile's refusal.
-fn moved(
-    edit: &RegionEdit,
-    mesh: &Mesh,
-    input: &RegionEditInput,
-) -> Result<Vec<DVec3>, RegionError> {
-    match moves_of(edit, input)? {
-        Moves::Motion(motion) => Ok(edit.applied(mesh, &motion)),
-        Moves::Profile(at, stroke) => edit.profile_applied(mesh, at, &stroke),
+/// `model` on `edit`'s mesh, where the curves are embedded: its control curves get the
+/// vertices the embedding put on their edges.
+fn embedded_model(model: &Model, edit: &RegionEdit) -> Model {
+    Model {
+        mesh: edit.mesh().clone(),
+        curves: with_splits(&model.curves, edit.splits()),
+        ..model.clone()
     }
 }
 
-/// The model under the reference curve's first point and the region of `input` on it: what
-/// a tool keeps to place handles on the curve and cut profiles across it (a one-off cost
-/// per pair of curves, as the op's first step has).
+/// Whether `model` has an imported look (UVs or colours per corner) that belongs to its
+/// triangles as they are: such a model is neither embedded into nor remeshed.
+fn is_textured(model: &Model) -> bool {
+    (model.appearance.as_ref()).is_some_and(|a| a.uvs.is_some() || a.colors.is_some())
+}
+
+/// Every vertex of the edit's mesh moved as `input` says.
+///
+/// Errors: as [`moves_of`], and a profile's refusal.
+fn moved(edit: &RegionEdit, input: &RegionEditInput) -> Result<Vec<DVec3>, RegionError> {
+    match moves_of(edit, input)? {
+        Moves::Motion(motion) => Ok(edit.applied(&motion)),
+        Moves::Profile(at, stroke) => edit.profile_applied(at, &stroke),
+    }
+}
+
+/// The model under the reference curve's first point and the region of `input` on it, the
+/// curves embedded in its mesh unless the model's imported look forbids (see
+/// [`RegionEdit::on_edges`]): what a tool keeps to place handles on the curve and cut
+/// profiles across it (a one-off cost per pair of curves, as the op's first step has).
 ///
 /// Errors: as [`region_edit_op`].
 pub fn region_of(
@@ -136,8 +151,12 @@ pub fn region_of(
         reference: smoothed(&reference)?,
         boundary: smoothed(&boundary).map_err(|_| RegionError::BoundaryMissesReference)?,
     };
-    let mesh = &target(doc, index)?.mesh;
-    let mut edit = RegionEdit::new(mesh, &sketch, &levels)?;
+    let model = target(doc, index)?;
+    let mut edit = if is_textured(model) {
+        RegionEdit::on_edges(&model.mesh, &sketch, &levels)?
+    } else {
+        RegionEdit::new(&model.mesh, &sketch, &levels)?
+    };
     if !input.areas.is_empty() {
         edit.set_falloff(&levels, &areas_of(input)?);
     }
@@ -249,6 +268,9 @@ fn areas_of(input: &RegionEditInput) -> Result<Vec<Area>, RegionError> {
 #[derive(Debug)]
 pub(super) struct RegionPreview {
     built: Option<Built>,
+    /// Whether the region was found anew since [`RegionPreview::take_rebuilt`] last asked:
+    /// the document shown changed (the curves embedded elsewhere).
+    rebuilt: bool,
     /// The op the shown positions are for, once shown.
     shown_for: Option<RegionEditInput>,
     shown: Vec<DVec3>,
@@ -261,10 +283,14 @@ struct Built {
     key: RegionEditInput,
     model: usize,
     edit: RegionEdit,
+    /// The document as the edit shows it: the model on the edit's mesh, the curves
+    /// embedded, not yet moved.
+    document: Document,
     /// The levels and areas the edit is weighed with.
     levels: (Option<Vec<f64>>, Vec<AreaInput>),
-    /// The region laid flat in the unit disc, for the fall-off panel, or why it cannot be.
-    disc: Result<Vec<DVec2>, RegionError>,
+    /// The region laid flat in the unit disc, for the fall-off panel, or why it cannot be;
+    /// found in a step of its own after the region is first shown.
+    disc: Option<Result<Vec<DVec2>, RegionError>>,
 }
 
 impl RegionPreview {
@@ -272,14 +298,16 @@ impl RegionPreview {
     pub(super) fn new() -> Self {
         RegionPreview {
             built: None,
+            rebuilt: false,
             shown_for: None,
             shown: Vec::new(),
         }
     }
 
     /// Brings what is shown to `input`'s transform and levels, finding the region first if
-    /// the curves changed: `None` when it is there already, `Some(false)` after a step that
-    /// got there.
+    /// the curves changed, then (in the next step) laying it flat for the fall-off panel:
+    /// `None` when all is there already, `Some(true)` after a step with the disc still to
+    /// come, `Some(false)` after a step that got there.
     ///
     /// Errors: the region's refusal (the edit then repeats it; the document is untouched).
     pub(super) fn step(
@@ -287,11 +315,16 @@ impl RegionPreview {
         base: &Document,
         input: &RegionEditInput,
     ) -> Result<Option<bool>, CommandError> {
-        let built = edit_for(&mut self.built, base, input)?;
+        let built = edit_for(&mut self.built, &mut self.rebuilt, base, input)?;
+        let mesh = built.edit.mesh();
         if self.shown_for.as_ref() == Some(input) {
+            // The region is shown: the disc comes next, in a step of its own.
+            if built.disc.is_none() {
+                built.disc = Some(built.edit.disc());
+                return Ok(Some(false));
+            }
             return Ok(None);
         }
-        let mesh = &target(base, built.model)?.mesh;
         match moves_of(&built.edit, input)? {
             // A drag: the region moved again in place, nothing allocated.
             Moves::Motion(motion) => {
@@ -303,11 +336,11 @@ impl RegionPreview {
                     .apply_into(&motion, mesh.positions(), &mut self.shown);
             }
             Moves::Profile(at, stroke) => {
-                self.shown = built.edit.profile_applied(mesh, at, &stroke)?;
+                self.shown = built.edit.profile_applied(at, &stroke)?;
             }
         }
         self.shown_for = Some(input.clone());
-        Ok(Some(false))
+        Ok(Some(built.disc.is_none()))
     }
 
     /// The committed result of `input`, from the kept region when it serves.
@@ -318,11 +351,21 @@ impl RegionPreview {
         base: &Document,
         input: &RegionEditInput,
     ) -> Result<(usize, Model), CommandError> {
-        let built = edit_for(&mut self.built, base, input)?;
-        let mesh = &target(base, built.model)?.mesh;
-        let positions = moved(&built.edit, mesh, input)?;
+        let built = edit_for(&mut self.built, &mut self.rebuilt, base, input)?;
+        let positions = moved(&built.edit, input)?;
         let model = edited_model(base, built.model, &built.edit, &positions, input)?;
         Ok((built.model, model))
+    }
+
+    /// The document shown: the one the edit began on with the model's curves embedded, once
+    /// the region is found.
+    pub(super) fn document(&self) -> Option<&Document> {
+        self.built.as_ref().map(|built| &built.document)
+    }
+
+    /// Whether the document shown changed since the last call.
+    pub(super) fn take_rebuilt(&mut self) -> bool {
+        std::mem::take(&mut self.rebuilt)
     }
 
     /// The model shown and its positions, once the first step moved it.
@@ -336,8 +379,8 @@ impl RegionPreview {
     /// The region laid flat in the unit disc (in the order of its vertices), or why it
     /// cannot be: what the fall-off panel draws.
     pub(super) fn disc(&self) -> Option<Result<&[DVec2], &RegionError>> {
-        let built = self.built.as_ref()?;
-        Some(built.disc.as_ref().map(Vec::as_slice))
+        let disc = self.built.as_ref()?.disc.as_ref()?;
+        Some(disc.as_ref().map(Vec::as_slice))
     }
 
     /// The model, the region's vertices and their weights, for the fall-off overlay.
@@ -348,9 +391,10 @@ impl RegionPreview {
 }
 
 /// The edit in `slot` if it was found for `input`'s curves (weighed with its levels), else
-/// a new one put there.
+/// a new one put there and `rebuilt` set.
 fn edit_for<'a>(
     slot: &'a mut Option<Built>,
+    rebuilt: &mut bool,
     base: &Document,
     input: &RegionEditInput,
 ) -> Result<&'a mut Built, CommandError> {
@@ -367,14 +411,16 @@ fn edit_for<'a>(
         Some(built) if built.key == key => built,
         _ => {
             let (model, edit) = region_of(base, input)?;
-            let levels = (input.levels.clone(), input.areas.clone());
-            let disc = edit.disc(&target(base, model)?.mesh);
+            let mut document = base.clone();
+            document.models[model] = Arc::new(embedded_model(&base.models[model], &edit));
+            *rebuilt = true;
             Built {
                 key,
                 model,
                 edit,
-                levels,
-                disc,
+                document,
+                levels: (input.levels.clone(), input.areas.clone()),
+                disc: None,
             }
         }
     };

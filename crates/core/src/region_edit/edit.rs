@@ -2,6 +2,7 @@
 
 use glam::{DMat4, DVec2, DVec3, DVec4};
 
+use super::embed::{Embedded, embed};
 use super::falloff::closeness;
 use super::profile::cross_section;
 use super::{
@@ -19,6 +20,11 @@ const CLOSED_PX: f64 = 1.0;
 /// A region of one mesh with its fall-off: see the [module docs](super).
 #[derive(Clone, Debug)]
 pub struct RegionEdit {
+    /// The mesh the region was found on, the curves embedded in it when they could be:
+    /// what every motion moves.
+    mesh: Mesh,
+    /// The edges split to embed the curves, in order, as `(a, b, new)`.
+    splits: Vec<(VertexId, VertexId, VertexId)>,
     /// The vertices that may move, in increasing order.
     vertices: Vec<VertexId>,
     /// Each one's closeness to the reference curve, in [0, 1].
@@ -29,7 +35,7 @@ pub struct RegionEdit {
     nearest: Vec<u32>,
     /// Each one where it was seen when the curves were drawn (CSS px), for areas' lassos.
     seen: Vec<DVec2>,
-    /// The edge path under the reference curve.
+    /// The edge path under the reference curve: its embedded chain when it has one.
     reference: Vec<VertexId>,
     /// Where each path vertex sits along the reference curve (its nearest point of the
     /// rail), from 0 to 1.
@@ -40,41 +46,83 @@ pub struct RegionEdit {
 }
 
 impl RegionEdit {
-    /// Places `sketch`'s curves on `mesh` and weighs the region with `levels`.
+    /// Embeds `sketch`'s curves in a copy of `mesh` (see [`super::embed`]), places them
+    /// there and weighs the region with `levels`.
     ///
     /// Errors: the curves' refusals (see [`RegionError`]).
     pub fn new(mesh: &Mesh, sketch: &RegionSketch, levels: &Levels) -> Result<Self, RegionError> {
-        let normals = vertex_normals(mesh);
-        // A loop drawn back to its start may end on it or just short of it.
-        let mut boundary = sketch.boundary.clone();
-        while boundary.len() > 3 && boundary[0].distance(boundary[boundary.len() - 1]) < CLOSED_PX {
-            boundary.pop();
-        }
-        if boundary.iter().any(|p| !p.is_finite()) {
-            return Err(RegionError::BoundaryCrosses);
-        }
-        let bvh = Bvh::new(mesh);
+        Self::found(mesh, sketch, levels, true)
+    }
+
+    /// As [`RegionEdit::new`], the curves traced over `mesh`'s edges instead of embedded:
+    /// for a model whose imported look (UVs, colours) belongs to its triangles as they are.
+    ///
+    /// Errors: as [`RegionEdit::new`].
+    pub fn on_edges(
+        mesh: &Mesh,
+        sketch: &RegionSketch,
+        levels: &Levels,
+    ) -> Result<Self, RegionError> {
+        Self::found(mesh, sketch, levels, false)
+    }
+
+    /// The region of `sketch` on `input`, with the curves embedded when `embeds` asks.
+    ///
+    /// The curves are placed on `input` (checked, the region grown, the rail cast) before
+    /// anything is embedded: a refused sketch costs no embedding, and no ray is cast along
+    /// an embedded curve, where it would pass exactly through the new vertices and could
+    /// slip between their triangles. The embedding adds only the curves' own vertices, so
+    /// the region carries over: the input's vertices as placed, the reference chain in, the
+    /// boundary chain out (its vertices stay, and the fall-off reaches 0 on the drawn loop).
+    fn found(
+        input: &Mesh,
+        sketch: &RegionSketch,
+        levels: &Levels,
+        embeds: bool,
+    ) -> Result<Self, RegionError> {
+        let boundary = closed_boundary(sketch)?;
+        let normals = vertex_normals(input);
+        let bvh = Bvh::new(input);
         let placed = place(
-            mesh,
+            input,
             &bvh,
             &normals,
             &Sketch {
                 camera: sketch.camera,
                 viewport: sketch.viewport,
                 points: sketch.reference.clone(),
-                region: Some(boundary),
+                region: Some(boundary.clone()),
             },
         )?;
-        let vertices: Vec<VertexId> = mesh
-            .vertices()
-            .filter(|v| placed.region[v.index()])
-            .collect();
-        let found = closeness(mesh, &placed.region, &vertices, &placed.path);
+        let rail = cast_rail(input, &bvh, &normals, sketch, &placed.points, &placed.path);
+        let Embedded {
+            mesh,
+            reference,
+            boundary: loop_chain,
+            splits,
+        } = if embeds {
+            embed(input, sketch, &boundary)
+        } else {
+            Embedded::unchanged(input)
+        };
+        let mut region = placed.region;
+        region.resize(mesh.n_vertices(), false);
+        for v in loop_chain.iter().flatten() {
+            region[v.index()] = false;
+        }
+        let path = match reference {
+            Some(chain) => {
+                for v in &chain {
+                    region[v.index()] = true;
+                }
+                chain
+            }
+            None => placed.path,
+        };
+        let vertices: Vec<VertexId> = mesh.vertices().filter(|v| region[v.index()]).collect();
+        let found = closeness(&mesh, &region, &vertices, &path);
         let weights = found.closeness.iter().map(|&s| levels.weight(s)).collect();
-        let rail = cast_rail(mesh, &bvh, &normals, sketch, &placed.points, &placed.path);
-        let params = placed
-            .path
-            .iter()
+        let params = (path.iter())
             .map(|&v| rail.nearest_param(mesh.position(v)))
             .collect();
         let seen = vertices
@@ -87,6 +135,8 @@ impl RegionEdit {
             })
             .collect();
         Ok(RegionEdit {
+            mesh,
+            splits,
             vertices,
             closeness: found.closeness,
             weights,
@@ -94,8 +144,20 @@ impl RegionEdit {
             seen,
             params,
             rail,
-            reference: placed.path,
+            reference: path,
         })
+    }
+
+    /// The mesh the region was found on: the input with the curves embedded (new vertices
+    /// after the input's, every input vertex where it was). Every motion moves this mesh.
+    pub fn mesh(&self) -> &Mesh {
+        &self.mesh
+    }
+
+    /// The edges split to embed the curves, in order: `(a, b, new)` put `new` between `a`
+    /// and `b`, so a control curve along `a`–`b` gets `new` too.
+    pub fn splits(&self) -> &[(VertexId, VertexId, VertexId)] {
+        &self.splits
     }
 
     /// The vertices that may move, in increasing order.
@@ -126,11 +188,11 @@ impl RegionEdit {
     }
 
     /// The region's cross-section across the reference curve at `at` (0 its first end, 1 its
-    /// last), on `mesh` (the mesh the edit was found on); see [`super::profile`].
+    /// last), on [`RegionEdit::mesh`]; see [`super::profile`].
     ///
     /// Errors: [`RegionError::NoProfile`].
-    pub fn profile(&self, mesh: &Mesh, at: f64) -> Result<Profile, RegionError> {
-        self.cross_section_in(mesh, self.rail.frame_at(at.clamp(0.0, 1.0)))
+    pub fn profile(&self, at: f64) -> Result<Profile, RegionError> {
+        self.cross_section_in(&self.mesh, self.rail.frame_at(at.clamp(0.0, 1.0)))
     }
 
     /// The region's cross-section in the plane of `frame` (its first axis the plane's
@@ -150,17 +212,14 @@ impl RegionEdit {
         cross_section(mesh, &weight_of, frame)
     }
 
-    /// Every vertex of `mesh` with the cross-section at `at` re-sketched as `stroke` (in the
-    /// profile's plane) and the change swept along the curve (see [`super::profile`]).
+    /// Every vertex of [`RegionEdit::mesh`] with the cross-section at `at` re-sketched as
+    /// `stroke` (in the profile's plane) and the change swept along the curve (see
+    /// [`super::profile`]).
     ///
     /// Errors: [`RegionError::NoProfile`], [`RegionError::BadProfileStroke`].
-    pub fn profile_applied(
-        &self,
-        mesh: &Mesh,
-        at: f64,
-        stroke: &[DVec2],
-    ) -> Result<Vec<DVec3>, RegionError> {
-        let change = ProfileChange::new(&self.profile(mesh, at)?, stroke)?;
+    pub fn profile_applied(&self, at: f64, stroke: &[DVec2]) -> Result<Vec<DVec3>, RegionError> {
+        let mesh = &self.mesh;
+        let change = ProfileChange::new(&self.profile(at)?, stroke)?;
         let mut out = mesh.positions().to_vec();
         for (&v, &w) in self.vertices.iter().zip(&self.weights) {
             // Each vertex in the frame of its nearest point of the curve.
@@ -193,12 +252,12 @@ impl RegionEdit {
     /// [`super::disc`]). One sparse solve; found on demand, not with the region.
     ///
     /// Errors: [`RegionError::NotADisc`].
-    pub fn disc(&self, mesh: &Mesh) -> Result<Vec<DVec2>, RegionError> {
-        let mut region = vec![false; mesh.n_vertices()];
+    pub fn disc(&self) -> Result<Vec<DVec2>, RegionError> {
+        let mut region = vec![false; self.mesh.n_vertices()];
         for v in &self.vertices {
             region[v.index()] = true;
         }
-        super::disc::flatten(mesh, &region, &self.vertices)
+        super::disc::flatten(&self.mesh, &region, &self.vertices)
     }
 
     /// Each region vertex's closeness to the reference curve (1 on it, 0 at the boundary),
@@ -242,12 +301,27 @@ impl RegionEdit {
         }
     }
 
-    /// Every vertex of `mesh` with the region moved by `motion`.
-    pub fn applied(&self, mesh: &Mesh, motion: &Motion) -> Vec<DVec3> {
-        let mut out = mesh.positions().to_vec();
-        self.apply_into(motion, mesh.positions(), &mut out);
+    /// Every vertex of [`RegionEdit::mesh`] with the region moved by `motion`.
+    pub fn applied(&self, motion: &Motion) -> Vec<DVec3> {
+        let mut out = self.mesh.positions().to_vec();
+        self.apply_into(motion, self.mesh.positions(), &mut out);
         out
     }
+}
+
+/// `sketch`'s boundary as a loop: a loop drawn back to its start may end on it or just short
+/// of it, and those last points go.
+///
+/// Errors: [`RegionError::BoundaryCrosses`] for a point that is not finite.
+fn closed_boundary(sketch: &RegionSketch) -> Result<Vec<DVec2>, RegionError> {
+    let mut boundary = sketch.boundary.clone();
+    while boundary.len() > 3 && boundary[0].distance(boundary[boundary.len() - 1]) < CLOSED_PX {
+        boundary.pop();
+    }
+    if boundary.iter().any(|p| !p.is_finite()) {
+        return Err(RegionError::BoundaryCrosses);
+    }
+    Ok(boundary)
 }
 
 /// The reference curve on the surface: each of the sketch's resampled `points` (screen px)

@@ -6,9 +6,13 @@
 //! region.
 //!
 //! One idea per file:
-//! 1. Placement is the feature sketch's ([`crate::feature`]): the boundary is its lasso, so
-//!    the region is the front of the model inside the boundary, grown over edges from under
-//!    the reference curve, and the reference curve is the cheapest edge path under it.
+//! 1. [`embed`]: both curves become vertices of a copy of the mesh (FiberMesh's curve
+//!    embedding), so the reference curve moves exactly as drawn and the edit ends on the
+//!    drawn boundary. Placement is then the feature sketch's ([`crate::feature`]): the
+//!    boundary is its lasso, so the region is the front of the model inside the boundary
+//!    (the boundary's own chain outside it), grown over edges from under the reference
+//!    curve; the reference path is its embedded chain (or, where it could not be embedded,
+//!    the cheapest edge path under it).
 //! 2. [`falloff`]: how close each vertex is to the reference curve, `s = d_b / (d_r + d_b)`
 //!    with `d_r` and `d_b` its distances along edges (Dijkstra over edge lengths, within the
 //!    region) to the reference curve and to the first vertices outside the boundary; `s` is
@@ -28,6 +32,7 @@
 
 mod disc;
 mod edit;
+mod embed;
 mod error;
 mod falloff;
 mod handles;

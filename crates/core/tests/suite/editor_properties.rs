@@ -973,6 +973,15 @@ fn check_document(document: &Document) -> Result<(), TestCaseError> {
             "model {} has a non-finite curve point",
             k
         );
+        for curve in &model.curves {
+            let n = curve.vertices.len();
+            let closing = usize::from(curve.is_closed && n > 2);
+            let joined = (0..n - 1 + closing).all(|i| {
+                let (a, b) = (curve.vertices[i], curve.vertices[(i + 1) % n]);
+                model.mesh.find_edge(a, b).is_some()
+            });
+            prop_assert!(joined, "model {} has a curve that is not an edge chain", k);
+        }
     }
     Ok(())
 }

@@ -69,9 +69,10 @@ fn whole(t: DMat4) -> Motion {
 
 #[test]
 fn weights_fall_from_the_reference_curve_to_the_boundary() {
-    let mesh = primitives::icosphere(1.0, 4);
-    let sketch = curves(&mesh, 60.0, 140.0);
-    let edit = RegionEdit::new(&mesh, &sketch, &Levels::default()).unwrap();
+    let input = primitives::icosphere(1.0, 4);
+    let sketch = curves(&input, 60.0, 140.0);
+    let edit = RegionEdit::new(&input, &sketch, &Levels::default()).unwrap();
+    let mesh = edit.mesh();
     assert!(edit.vertices().len() > 100, "{}", edit.vertices().len());
     let on_screen = |v| screen(&sketch.camera, VIEWPORT, mesh.position(v)).unwrap();
     let all = edit.weight_per_vertex(mesh.n_vertices());
@@ -111,15 +112,18 @@ fn weights_fall_from_the_reference_curve_to_the_boundary() {
 
 #[test]
 fn outside_stays_bit_for_bit_and_the_curve_moves_exactly_by_the_transform() {
-    let mesh = primitives::icosphere(1.0, 4);
-    let edit = RegionEdit::new(&mesh, &curves(&mesh, 60.0, 140.0), &Levels::default()).unwrap();
+    let input = primitives::icosphere(1.0, 4);
+    let edit = RegionEdit::new(&input, &curves(&input, 60.0, 140.0), &Levels::default()).unwrap();
+    let mesh = edit.mesh();
     let t = transform(
         DVec3::new(0.0, 0.0, 1.0),
         70.0,
         1.3,
         DVec3::new(0.1, 0.4, 0.2),
     );
-    let moved = edit.applied(&mesh, &whole(t));
+    let moved = edit.applied(&whole(t));
+    // The embedding only added vertices: the input's are where they were.
+    assert_eq!(&mesh.positions()[..input.n_vertices()], input.positions());
     for v in mesh.vertices() {
         let (before, after) = (mesh.position(v), moved[v.index()]);
         if !edit.vertices().contains(&v) {
@@ -138,6 +142,86 @@ fn outside_stays_bit_for_bit_and_the_curve_moves_exactly_by_the_transform() {
     }
 }
 
+/// How far (CSS px, as seen) from the drawn boundary lie the vertices that hold the region
+/// in (outside it, next to one inside), farthest first.
+fn rim_off_boundary(mesh: &Mesh, edit: &RegionEdit, sketch: &RegionSketch) -> Vec<f64> {
+    let region: std::collections::HashSet<_> = edit.vertices().iter().copied().collect();
+    let mut looped = sketch.boundary.clone();
+    looped.push(looped[0]);
+    let mut off: Vec<f64> = mesh
+        .vertices()
+        .filter(|v| !region.contains(v) && mesh.vertex_neighbors(*v).any(|w| region.contains(&w)))
+        .map(|v| {
+            let at = screen(&sketch.camera, VIEWPORT, mesh.position(v)).unwrap();
+            sketchmesh_core::curve::polyline::distance_to_polyline(at, &looped)
+        })
+        .collect();
+    off.sort_by(|a, b| b.total_cmp(a));
+    off
+}
+
+#[test]
+fn the_curves_are_embedded_as_mesh_vertices_and_the_edit_ends_on_the_drawn_boundary() {
+    let mut cases = vec![("sphere".to_string(), primitives::icosphere(1.0, 4))];
+    for name in ["spot.glb", "stanford_bunny.glb", "igea.glb"] {
+        if let Some(mut meshes) = testdata_meshes(name) {
+            cases.push((name.to_string(), meshes.swap_remove(0)));
+        }
+    }
+    for (name, input) in &cases {
+        // On the scans, a loop that stays on one sheet of the front (a wider one crosses
+        // spot's and the bunny's silhouettes and is traced over edges instead).
+        let sketch = match name.as_str() {
+            "sphere" => curves(input, 60.0, 140.0),
+            "igea.glb" => curves(input, 25.0, 60.0),
+            _ => curves(input, 12.0, 30.0),
+        };
+        let edit = RegionEdit::new(input, &sketch, &Levels::default()).unwrap();
+        let mesh = edit.mesh();
+        mesh.validate().unwrap();
+        // New vertices only, appended: the input's keep their ids and places.
+        assert!(mesh.n_vertices() > input.n_vertices(), "{name}");
+        assert_eq!(&mesh.positions()[..input.n_vertices()], input.positions());
+        assert!(!edit.splits().is_empty(), "{name}");
+        // The reference curve is an edge chain lying on the sketch as seen.
+        let reference = edit.reference();
+        assert!(
+            reference
+                .windows(2)
+                .all(|w| mesh.find_edge(w[0], w[1]).is_some())
+        );
+        let off_sketch = reference[1..reference.len() - 1]
+            .iter()
+            .map(|&v| {
+                let at = screen(&sketch.camera, VIEWPORT, mesh.position(v)).unwrap();
+                sketchmesh_core::curve::polyline::distance_to_polyline(at, &sketch.reference)
+            })
+            .fold(0.0, f64::max);
+        // The boundary is a loop of vertices that stay, on the loop drawn: the rim of what
+        // stays lies on it, where the curves traced over edges leave it up to an edge away.
+        let on_loop =
+            |off: &[f64]| off.iter().filter(|&&d| d < 0.5).count() as f64 / off.len() as f64;
+        let embedded = rim_off_boundary(mesh, &edit, &sketch);
+        let traced = RegionEdit::on_edges(input, &sketch, &Levels::default()).unwrap();
+        let on_edges = rim_off_boundary(input, &traced, &sketch);
+        eprintln!(
+            "{name}: {} new vertices, reference {} vertices at most {off_sketch:.3} px off \
+             the sketch; rim of {} vertices, {:.1}% on the loop drawn, the farthest {:.2} px \
+             off (traced over edges: {:.1}%, {:.2} px)",
+            mesh.n_vertices() - input.n_vertices(),
+            reference.len(),
+            embedded.len(),
+            100.0 * on_loop(&embedded),
+            embedded[0],
+            100.0 * on_loop(&on_edges),
+            on_edges[0],
+        );
+        assert!(off_sketch < 0.5, "{name}: {off_sketch} px");
+        assert!(embedded[0] < 0.5, "{name}: {} px", embedded[0]);
+        assert!(on_loop(&on_edges) < 0.5, "{name}");
+    }
+}
+
 #[test]
 fn half_the_transform_twice_is_the_whole() {
     let mesh = primitives::icosphere(1.0, 4);
@@ -146,10 +230,10 @@ fn half_the_transform_twice_is_the_whole() {
     let full_weight =
         RegionEdit::new(&mesh, &sketch, &Levels::new(vec![1.0, 1.0]).unwrap()).unwrap();
     let t = whole(transform(DVec3::Z, 150.0, 0.8, DVec3::new(0.0, 0.3, 0.0)));
-    let once = half.applied(&mesh, &t);
+    let once = half.applied(&t);
     let mut twice = once.clone();
     half.apply_into(&t, &once, &mut twice);
-    let full = full_weight.applied(&mesh, &t);
+    let full = full_weight.applied(&t);
     let worst = twice
         .iter()
         .zip(&full)
@@ -286,14 +370,14 @@ fn a_region_on_scans_moves_inside_its_boundary_only() {
         let Some(meshes) = testdata_meshes(name) else {
             return;
         };
-        let mesh = &meshes[0];
-        let sketch = curves(mesh, 50.0, 120.0);
-        let edit = RegionEdit::new(mesh, &sketch, &Levels::default())
+        let sketch = curves(&meshes[0], 50.0, 120.0);
+        let edit = RegionEdit::new(&meshes[0], &sketch, &Levels::default())
             .unwrap_or_else(|e| panic!("{name}: {e}"));
+        let mesh = edit.mesh();
         let (lo, hi) = mesh.bounding_box().unwrap();
         let up = 0.1 * (hi - lo).length();
         let t = transform(0.5 * (lo + hi), 20.0, 1.1, DVec3::new(0.0, up, 0.3 * up));
-        let moved = edit.applied(mesh, &whole(t));
+        let moved = edit.applied(&whole(t));
         let region: std::collections::HashSet<_> = edit.vertices().iter().copied().collect();
         for v in mesh.vertices() {
             let p = moved[v.index()];
@@ -333,15 +417,16 @@ fn sphere_in_editor() -> (Mesh, RegionSketch, Editor, RegionEditInput) {
 
 #[test]
 fn a_drag_carries_the_reference_curve_with_the_pointer() {
-    let (mesh, sketch, mut editor, still) = sphere_in_editor();
+    let (_, sketch, mut editor, still) = sphere_in_editor();
+    let imported = editor.document().models[0].mesh.clone();
     let offset = DVec2::new(30.0, -50.0);
     let dragged = dragged_region(editor.document(), &still, RegionDrag::Move, offset);
     editor.apply(Op::RegionEdit(dragged)).unwrap();
-    let edit = RegionEdit::new(&mesh, &sketch, &Levels::default()).unwrap();
+    let edit = RegionEdit::new(&imported, &sketch, &Levels::default()).unwrap();
     let moved = &editor.document().models[0].mesh;
     let middle = edit.reference()[edit.reference().len() / 2];
     let px = |m: &Mesh| screen(&sketch.camera, VIEWPORT, m.position(middle)).unwrap();
-    let shift = px(moved) - px(&mesh);
+    let shift = px(moved) - px(edit.mesh());
     assert!(
         shift.distance(offset) < 2.0,
         "moved {shift} on screen for {offset}"
@@ -350,12 +435,13 @@ fn a_drag_carries_the_reference_curve_with_the_pointer() {
 
 #[test]
 fn a_turning_drag_twists_the_region_about_the_curve_s_middle() {
-    let (mesh, sketch, mut editor, still) = sphere_in_editor();
+    let (input, sketch, mut editor, still) = sphere_in_editor();
     let doc = editor.document();
     // 60 px to the right: 30° clockwise as seen, about the view axis.
     let turned = dragged_region(doc, &still, RegionDrag::Turn, DVec2::new(60.0, 0.0));
     let t = DMat4::from_cols_array(&turned.transform.unwrap());
-    let edit = RegionEdit::new(&mesh, &sketch, &Levels::default()).unwrap();
+    let edit = RegionEdit::new(&input, &sketch, &Levels::default()).unwrap();
+    let mesh = edit.mesh();
     let ends = [edit.reference()[0], *edit.reference().last().unwrap()];
     let [a, b] = ends.map(|v| screen(&sketch.camera, VIEWPORT, mesh.position(v)).unwrap());
     let [a2, b2] = ends.map(|v| {
@@ -380,8 +466,9 @@ fn a_turning_drag_twists_the_region_about_the_curve_s_middle() {
 
 #[test]
 fn one_handle_is_one_transform_and_handles_blend_between_neighbours() {
-    let mesh = primitives::icosphere(1.0, 4);
-    let edit = RegionEdit::new(&mesh, &curves(&mesh, 80.0, 160.0), &Levels::default()).unwrap();
+    let input = primitives::icosphere(1.0, 4);
+    let edit = RegionEdit::new(&input, &curves(&input, 80.0, 160.0), &Levels::default()).unwrap();
+    let mesh = edit.mesh();
     let t = transform(DVec3::Z, 60.0, 1.2, DVec3::new(0.0, 0.3, 0.0));
     let one = edit
         .motion(&[Handle {
@@ -389,7 +476,7 @@ fn one_handle_is_one_transform_and_handles_blend_between_neighbours() {
             transform: t,
         }])
         .unwrap();
-    assert_eq!(edit.applied(&mesh, &one), edit.applied(&mesh, &whole(t)));
+    assert_eq!(edit.applied(&one), edit.applied(&whole(t)));
 
     // Pinned at both ends and turned in the middle: each path vertex takes Alexa's blend of
     // its two neighbouring handles, `(1 − u) ⊙ A ⊕ u ⊙ B`, and the ends stay.
@@ -402,7 +489,7 @@ fn one_handle_is_one_transform_and_handles_blend_between_neighbours() {
         transform: t,
     };
     let handles = [pin(0.0), middle, pin(1.0)];
-    let moved = edit.applied(&mesh, &edit.motion(&handles).unwrap());
+    let moved = edit.applied(&edit.motion(&handles).unwrap());
     let log = sketchmesh_core::geometry::log_affine(t).unwrap();
     let reference = edit.reference();
     for (&v, &at) in reference.iter().zip(edit.reference_params()) {
@@ -428,7 +515,7 @@ fn one_handle_is_one_transform_and_handles_blend_between_neighbours() {
         vs.map(|v| m[v.index()].distance(mesh.position(v)))
             .fold(0.0, f64::max)
     };
-    let whole_moved = edit.applied(&mesh, &whole(t));
+    let whole_moved = edit.applied(&whole(t));
     assert!(
         most(&moved, &mut edit.vertices().iter().copied())
             < most(&whole_moved, &mut edit.vertices().iter().copied())
@@ -471,7 +558,7 @@ fn one_handle_is_one_transform_and_handles_blend_between_neighbours() {
     // A handle reaches only its neighbours: with pins at 0.25 and 0.75, the curve beyond
     // them does not move.
     let handles = [pin(0.25), middle, pin(0.75)];
-    let moved = edit.applied(&mesh, &edit.motion(&handles).unwrap());
+    let moved = edit.applied(&edit.motion(&handles).unwrap());
     for (&v, &at) in reference.iter().zip(edit.reference_params()) {
         let p = mesh.position(v);
         if !(0.25..=0.75).contains(&at) {
@@ -552,7 +639,8 @@ fn the_region_lies_flat_in_the_unit_disc_without_a_flipped_triangle() {
     }
     for (name, mesh) in &cases {
         let edit = RegionEdit::new(mesh, &curves(mesh, 50.0, 120.0), &Levels::default()).unwrap();
-        let disc = edit.disc(mesh).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let disc = edit.disc().unwrap_or_else(|e| panic!("{name}: {e}"));
+        let mesh = edit.mesh();
         assert_eq!(disc.len(), edit.vertices().len());
         assert!(
             disc.iter()
@@ -657,6 +745,8 @@ fn a_stretched_region_is_remeshed_and_the_rest_stays() {
     let mut imported = Editor::new();
     imported.apply(import_mesh("sphere.glb", &mesh)).unwrap();
     let before = &imported.document().models[0].mesh;
+    // The region as the input's vertices (the op's curves, smoothed, are embedded at other
+    // places than the raw ones here; the input's vertices are the same).
     let edit = RegionEdit::new(before, &curves(&mesh, 60.0, 140.0), &Levels::default()).unwrap();
     let region: std::collections::HashSet<_> = edit.vertices().iter().copied().collect();
     let kept: std::collections::HashSet<[u64; 3]> = remeshed
@@ -684,7 +774,8 @@ fn a_resketched_profile_is_the_new_cross_section() {
     }
     for (name, mesh) in &cases {
         let edit = RegionEdit::new(mesh, &curves(mesh, 70.0, 150.0), &Levels::default()).unwrap();
-        let profile = edit.profile(mesh, 0.5).unwrap();
+        let mesh = edit.mesh();
+        let profile = edit.profile(0.5).unwrap();
         let (lo, hi) = (
             profile.points[0].x,
             profile.points[profile.points.len() - 1].x,
@@ -717,7 +808,7 @@ fn a_resketched_profile_is_the_new_cross_section() {
             })
             .collect();
         let change = ProfileChange::new(&profile, &stroke).unwrap();
-        let moved = edit.profile_applied(mesh, 0.5, &stroke).unwrap();
+        let moved = edit.profile_applied(0.5, &stroke).unwrap();
         let moved_mesh = {
             let mut m = mesh.clone();
             m.positions_mut().copy_from_slice(&moved);

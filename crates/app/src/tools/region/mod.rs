@@ -438,8 +438,8 @@ impl RegionTool {
     /// cross-section cut at the curve's middle, or the reason it cannot be.
     fn show_profile(&mut self, input: RegionEditInput, doc: &Document) -> ToolOutput {
         match region_of(doc, &input) {
-            Ok((model, region)) => {
-                let session = ProfileSession::new(input, model, region, doc);
+            Ok((_, region)) => {
+                let session = ProfileSession::new(input, region);
                 let op = Op::RegionEdit(session.input());
                 self.stage = Stage::Profile(Box::new(session));
                 ToolOutput::Revise(op)
@@ -669,7 +669,7 @@ impl RegionTool {
                 .on_hover_text("Where along the curve the cross-section is cut")
                 .changed()
             {
-                session.slide_to(at, doc);
+                session.slide_to(at);
                 output = ToolOutput::Revise(Op::RegionEdit(session.input()));
             }
         }

@@ -7,7 +7,7 @@
 //! pixels and the plane.
 
 use glam::{DVec2, DVec3};
-use sketchmesh_core::document::{AreaInput, Document, ProfileInput, RegionEditInput};
+use sketchmesh_core::document::{AreaInput, ProfileInput, RegionEditInput};
 use sketchmesh_core::region_edit::{Profile, RegionEdit};
 
 /// The panel's side as a share of the view's shorter side, and its bounds in CSS px.
@@ -23,7 +23,6 @@ const FILL: f64 = 0.8;
 pub struct ProfileSession {
     input: RegionEditInput,
     region: RegionEdit,
-    model: usize,
     at: f64,
     profile: Result<Profile, String>,
     /// Whether the plane's `u` points left as the curves were seen: the panel then shows it
@@ -54,19 +53,18 @@ pub struct ProfileView {
 }
 
 impl ProfileSession {
-    /// The profile editor of `input`'s region (`region`, on model `model`), the plane at the
-    /// curve's middle.
-    pub fn new(input: RegionEditInput, model: usize, region: RegionEdit, doc: &Document) -> Self {
+    /// The profile editor of `input`'s region (`region`, on the mesh it was found on), the
+    /// plane at the curve's middle.
+    pub fn new(input: RegionEditInput, region: RegionEdit) -> Self {
         let mut session = ProfileSession {
             input,
             region,
-            model,
             at: 0.5,
             profile: Err(String::new()),
             mirrored: false,
             stroke: None,
         };
-        session.slide_to(0.5, doc);
+        session.slide_to(0.5);
         session
     }
 
@@ -88,13 +86,10 @@ impl ProfileSession {
 
     /// Moves the plane to `at` along the curve and cuts the cross-section there; a stroke
     /// drawn in the old plane is dropped.
-    pub fn slide_to(&mut self, at: f64, doc: &Document) {
+    pub fn slide_to(&mut self, at: f64) {
         self.at = at.clamp(0.0, 1.0);
         self.stroke = None;
-        self.profile = match doc.models.get(self.model) {
-            Some(model) => (self.region.profile(&model.mesh, self.at)).map_err(|e| e.to_string()),
-            None => Err(String::from("The model is gone.")),
-        };
+        self.profile = (self.region.profile(self.at)).map_err(|e| e.to_string());
         if let Ok(profile) = &self.profile {
             let camera = &self.input.camera;
             let size = DVec2::from(self.input.viewport);

@@ -36,4 +36,5 @@ pub use pull::pull_op;
 pub(super) use settle::remesh_only;
 pub use shared::CURVE_PICK_RADIUS_PX;
 pub(crate) use shared::screen_stroke;
+pub(in crate::document) use shared::with_splits;
 pub use tunnel::tunnel_op;

@@ -149,7 +149,7 @@ pub(super) fn model_crossed(
 
 /// `curves` with the vertices that split their edges (`split_edges`, as an embedding logs
 /// them) inserted.
-pub(super) fn with_splits(
+pub(in crate::document) fn with_splits(
     curves: &[ControlCurve],
     split_edges: &[(VertexId, VertexId, VertexId)],
 ) -> Vec<ControlCurve> {

@@ -147,7 +147,26 @@ pub fn toolbar_ui(
             ui.label(format!("{} vertices", stats.vertices))
                 .on_hover_text(size);
         } else {
-            ui.label(size);
+            // Shorter, or left out, where the mode's options leave too little room: wrapped,
+            // it would add a row as the options change, and the view below would jump.
+            let short = format!("{} vertices", stats.vertices);
+            let room = ui.available_size_before_wrap().x;
+            let width = |text: &str| {
+                egui::WidgetText::from(text)
+                    .into_galley(
+                        ui,
+                        Some(egui::TextWrapMode::Extend),
+                        f32::INFINITY,
+                        egui::TextStyle::Body,
+                    )
+                    .size()
+                    .x
+            };
+            if width(&size) <= room {
+                ui.label(size);
+            } else if width(&short) <= room {
+                ui.label(short).on_hover_text(size);
+            }
         }
     });
     action.or(picked_mode.map(Action::Mode))

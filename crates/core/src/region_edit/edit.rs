@@ -46,8 +46,8 @@ pub struct RegionEdit {
 }
 
 impl RegionEdit {
-    /// Embeds `sketch`'s curves in a copy of `mesh` (see [`super::embed`]), places them
-    /// there and weighs the region with `levels`.
+    /// Places `sketch`'s curves on `mesh`, embeds them in a copy of it (see
+    /// [`super::embed`]) and weighs the region found there with `levels`.
     ///
     /// Errors: the curves' refusals (see [`RegionError`]).
     pub fn new(mesh: &Mesh, sketch: &RegionSketch, levels: &Levels) -> Result<Self, RegionError> {

@@ -98,7 +98,7 @@ impl RegionEdit {
         let Embedded {
             mesh,
             reference,
-            boundary: loop_chain,
+            boundary: boundary_pieces,
             splits,
         } = if embeds {
             embed(input, sketch, &boundary)
@@ -107,7 +107,7 @@ impl RegionEdit {
         };
         let mut region = placed.region;
         region.resize(mesh.n_vertices(), false);
-        for v in loop_chain.iter().flatten() {
+        for v in boundary_pieces.iter().flatten() {
             region[v.index()] = false;
         }
         let path = match reference {

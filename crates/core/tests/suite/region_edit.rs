@@ -223,6 +223,38 @@ fn the_curves_are_embedded_as_mesh_vertices_and_the_edit_ends_on_the_drawn_bound
 }
 
 #[test]
+fn a_boundary_past_the_outline_is_embedded_where_it_runs_over_the_model() {
+    for name in ["spot.glb", "stanford_bunny.glb"] {
+        let Some(mut meshes) = testdata_meshes(name) else {
+            return;
+        };
+        let input = meshes.swap_remove(0);
+        // A loop wider than the model's front: it runs off past the outline.
+        let sketch = curves(&input, 50.0, 120.0);
+        let edit = RegionEdit::new(&input, &sketch, &Levels::default()).unwrap();
+        let traced = RegionEdit::on_edges(&input, &sketch, &Levels::default()).unwrap();
+        edit.mesh().validate().unwrap();
+        let on_loop = |off: &[f64]| off.iter().filter(|&&d| d < 0.5).count();
+        let (embedded, on_edges) = (
+            rim_off_boundary(edit.mesh(), &edit, &sketch),
+            rim_off_boundary(&input, &traced, &sketch),
+        );
+        eprintln!(
+            "{name}: rim of {} vertices, {} on the loop drawn (traced over edges: {} of {})",
+            embedded.len(),
+            on_loop(&embedded),
+            on_loop(&on_edges),
+            on_edges.len()
+        );
+        // Where the loop lies over the model, what stays is held by vertices on it.
+        assert!(
+            on_loop(&embedded) > 3 * on_loop(&on_edges).max(10),
+            "{name}"
+        );
+    }
+}
+
+#[test]
 fn half_the_transform_twice_is_the_whole() {
     let mesh = primitives::icosphere(1.0, 4);
     let sketch = curves(&mesh, 60.0, 140.0);

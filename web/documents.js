@@ -192,8 +192,13 @@ export function install() {
   panel().addEventListener("click", (e) => {
     if (e.target === panel()) hide();
   });
-  panel().addEventListener("keydown", (e) => e.stopPropagation());
-  // Escape closes the panel wherever the focus is (a deleted row's button takes it along).
+  // Keys typed in the panel (a rename) are not the app's shortcuts, so they stop here; Escape
+  // still closes it, from a button or a name being edited.
+  panel().addEventListener("keydown", (e) => {
+    e.stopPropagation();
+    if (e.key === "Escape") hide();
+  });
+  // Escape closes the panel wherever else the focus is (a deleted row's button takes it along).
   addEventListener("keydown", (e) => {
     if (e.key === "Escape" && !panel().hidden) hide();
   });

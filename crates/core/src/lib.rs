@@ -29,4 +29,5 @@ pub mod optimize;
 pub mod oversketch;
 pub mod region_edit;
 pub mod silhouette;
+pub mod skeleton;
 pub mod solve;

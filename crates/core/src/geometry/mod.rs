@@ -27,7 +27,7 @@ pub use laplacian::{
 pub use normals::{
     face_normal, face_normals, vertex_normals, vertex_normals_into, vertex_normals_of,
 };
-pub(crate) use raycast::segment_crosses_triangle;
 pub use raycast::{RayHit, raycast};
+pub(crate) use raycast::{intersect_triangle, segment_crosses_triangle};
 pub use shape_diameter::{SDF_RAYS, shape_diameter};
 pub use transform_blend::{Fractions, exp_affine, fraction, log_affine, sum};

@@ -17,4 +17,5 @@ mod oversketch;
 mod oversketch_pipeline;
 mod region_edit;
 mod silhouette;
+mod skeleton;
 mod topology;

@@ -10,6 +10,7 @@ use std::sync::Arc;
 use glam::{DMat3, DMat4, DVec3};
 
 use super::outcome::{Outcome, target};
+use super::skeleton::remove_model;
 use super::{CommandError, Document, ModelInput, TransformInput};
 use crate::io::Imported;
 use crate::mesh::Mesh;
@@ -97,7 +98,7 @@ impl TransformPreview {
 pub(super) fn delete_op(doc: &Document, input: &ModelInput) -> Result<Outcome, CommandError> {
     target(doc, input.model)?;
     let mut next = doc.clone();
-    next.models.remove(input.model);
+    remove_model(&mut next, input.model);
     Ok(Outcome::Document(next))
 }
 

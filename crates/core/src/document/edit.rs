@@ -69,6 +69,7 @@ use super::optimize::OptimizePreview;
 use super::outcome::{Outcome, outcome, with_model};
 use super::oversketch::{OutlinePiece, OutlinePreview};
 use super::region_edit::RegionPreview;
+use super::skeleton::HandleDrag;
 use super::{CommandError, Document, Editor, Op};
 
 /// What [`Edit::step`] left to do.
@@ -144,6 +145,8 @@ enum Work {
     Region(Box<RegionPreview>),
     /// A model moving with a dragged handle, following the op's matrix.
     Transform(Box<TransformPreview>),
+    /// A model or cloud following a curve handle's pose.
+    Handle(Box<HandleDrag>),
     /// A creation, refining step by step.
     Create(Box<CreateJob>),
     /// Nothing computed yet: the next step computes the result whole.
@@ -174,6 +177,7 @@ impl Work {
             Op::Transform(input) => {
                 Work::Transform(Box::new(TransformPreview::start(base, input)?))
             }
+            Op::HandleEdit(input) => Work::Handle(Box::new(HandleDrag::start(base, input)?)),
             _ => Work::Gesture,
         })
     }
@@ -238,9 +242,12 @@ impl Edit {
     pub fn step(&mut self) -> Result<Progress, CommandError> {
         match self.advance() {
             Ok((progress, did_work)) => {
-                if let Work::Region(preview) = &mut self.work
-                    && preview.take_rebuilt()
-                {
+                let rebuilt = match &mut self.work {
+                    Work::Region(preview) => preview.take_rebuilt(),
+                    Work::Handle(drag) => drag.take_rebuilt(),
+                    _ => false,
+                };
+                if rebuilt {
                     self.revision += 1;
                 }
                 if did_work {
@@ -277,6 +284,7 @@ impl Edit {
                 (Work::Feature(preview), Op::SketchFeature(input)) => preview.step(base, input)?,
                 (Work::Region(preview), Op::RegionEdit(input)) => preview.step(base, input)?,
                 (Work::Transform(preview), Op::Transform(input)) => preview.step(base, input)?,
+                (Work::Handle(drag), Op::HandleEdit(input)) => drag.step(base, input)?,
                 _ => None,
             };
             return Ok(match stepped {
@@ -325,6 +333,15 @@ impl Edit {
                     return Ok((Progress::Working, true));
                 };
                 self.work = Work::Done(with_model(base, preview.result(base, input)?));
+                Ok((Progress::Done, true))
+            }
+            // A handle's drag ended: its kept binding gives the exact result.
+            Work::Handle(drag) => {
+                let Op::HandleEdit(input) = op else {
+                    self.work = Work::complete(base, op)?;
+                    return Ok((Progress::Working, true));
+                };
+                self.work = Work::Done(Outcome::Document(drag.result(base, input)?));
                 Ok((Progress::Done, true))
             }
             // A gesture ended: its preview goes, and the committed result begins.
@@ -412,6 +429,7 @@ impl Edit {
         match &self.work {
             Work::Create(job) => job.document(),
             Work::Region(preview) => preview.document().unwrap_or(&self.base),
+            Work::Handle(drag) => drag.document().unwrap_or(&self.base),
             Work::Done(Outcome::Document(next) | Outcome::Imported { next, .. }) => next,
             _ => &self.base,
         }
@@ -429,6 +447,7 @@ impl Edit {
             Work::Feature(preview) => preview.moved(),
             Work::Region(preview) => preview.moved(),
             Work::Transform(preview) => Some(preview.moved()),
+            Work::Handle(drag) => drag.moved_model(),
             _ => None,
         }
     }

@@ -14,6 +14,7 @@ use crate::mesh::remesh::RemeshError;
 use crate::optimize::OptimizeError;
 use crate::oversketch::OversketchError;
 use crate::region_edit::RegionError;
+use crate::skeleton::SkeletonError;
 use crate::solve::SolveError;
 
 /// Why an op was refused. The messages are sentences for the user.
@@ -97,6 +98,21 @@ pub enum CommandError {
     /// A region edit was refused.
     #[error("{0}")]
     Region(#[from] RegionError),
+    /// A curve handle or its edit was refused.
+    #[error("{0}")]
+    Skeleton(#[from] SkeletonError),
+    /// An op names a curve handle the document does not have.
+    #[error("There is no curve handle {0}.")]
+    NoSuchHandle(u32),
+    /// A handle edit that neither moves, twists nor scales.
+    #[error("A handle edit needs a move, a twist or a scale.")]
+    NothingToEdit,
+    /// A link from a handle to itself.
+    #[error("Link a handle to another one, not to itself.")]
+    LinkToItself,
+    /// A link between handles on different objects.
+    #[error("Only handles on the same object can be linked.")]
+    LinkAcrossObjects,
     /// A mesh optimization was refused.
     #[error("The mesh could not be optimized: {0}.")]
     Optimize(#[from] OptimizeError),

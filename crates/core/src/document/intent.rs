@@ -210,9 +210,7 @@ mod tests {
     fn a_lasso_finds_the_model_it_is_drawn_around_even_off_its_centre() {
         let sphere = Model {
             mesh: crate::mesh::primitives::icosphere(0.5, 2),
-            curves: Vec::new(),
-            name: None,
-            appearance: None,
+            ..Model::default()
         };
         let mut doc = Document::default();
         doc.models.push(std::sync::Arc::new(sphere));

@@ -29,10 +29,11 @@ mod oversketch;
 mod region_edit;
 mod session;
 mod session_error;
+mod skeleton;
 
 pub use crate::model::{
-    AlphaMode, Appearance, ControlCurve, CurveKind, Document, Image, Material, Model, PointCloud,
-    SketchCurve, Stats, Texture, positions_hash,
+    AlphaMode, Appearance, AsImported, ControlCurve, CurveHandle, CurveKind, Document,
+    HandleTarget, Image, Material, Model, PointCloud, SketchCurve, Stats, Texture, positions_hash,
 };
 pub use arrange::overlapping_model;
 pub use curve_edit::{CURVE_PICK_RADIUS_PX, curve_type_toggle};
@@ -45,9 +46,10 @@ pub use intent::{
     model_under, needs_tap, op_for_stroke, starts_on_model, surface_at, tunnel_from,
 };
 pub use op::{
-    AddCurveInput, AreaInput, BrushInput, CurveTypeInput, FileInput, HandleInput, ImportInput,
-    MergeInput, ModelInput, Op, OptimizeInput, OversketchFit, OversketchInput, ProfileInput,
-    RegionEditInput, SketchFeatureInput, StrokeInput, StrokePairInput, TransformInput,
+    AddCurveInput, AreaInput, BrushInput, CurveHandleInput, CurveTypeInput, DeleteHandleInput,
+    FileInput, HandleEditInput, HandleInput, ImportInput, LinkHandlesInput, MergeInput, ModelInput,
+    Op, OptimizeInput, OversketchFit, OversketchInput, ProfileInput, RegionEditInput,
+    SketchFeatureInput, StrokeInput, StrokePairInput, TransformInput,
 };
 pub use oversketch::OutlinePiece;
 pub use region_edit::{RegionDrag, dragged_region, region_of};

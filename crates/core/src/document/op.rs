@@ -12,6 +12,7 @@ use crate::deform::HandleFit;
 use crate::feature::FeatureKind;
 use crate::optimize::OptimizeParams;
 use crate::oversketch::{ManualHandle, OversketchRoi, SOFT_FIT_WEIGHT};
+use crate::skeleton::HandleKind;
 
 /// One session op. JSON is internally tagged: `{"op":"stroke",...}`, `{"op":"undo"}`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -66,6 +67,14 @@ pub enum Op {
     /// Move the region a boundary draws around a reference curve by a transform, with a
     /// fall-off from the curve to the boundary (Bujans' region editor).
     RegionEdit(RegionEditInput),
+    /// Make a curve handle (Blanco) from a stroke over a model or point cloud.
+    CurveHandle(CurveHandleInput),
+    /// Move, twist or scale a curve handle at one control point; the object follows.
+    HandleEdit(HandleEditInput),
+    /// Link two handles' control points into a skeleton.
+    LinkHandles(LinkHandlesInput),
+    /// Remove a curve handle.
+    DeleteHandle(DeleteHandleInput),
     /// Undo the last change.
     Undo,
     /// Redo the last undone change.
@@ -95,6 +104,10 @@ impl Op {
         "optimize",
         "sketch_feature",
         "region_edit",
+        "curve_handle",
+        "handle_edit",
+        "link_handles",
+        "delete_handle",
         "undo",
         "redo",
     ];
@@ -121,6 +134,10 @@ impl Op {
             Op::Optimize(_) => "optimize",
             Op::SketchFeature(_) => "sketch_feature",
             Op::RegionEdit(_) => "region_edit",
+            Op::CurveHandle(_) => "curve_handle",
+            Op::HandleEdit(_) => "handle_edit",
+            Op::LinkHandles(_) => "link_handles",
+            Op::DeleteHandle(_) => "delete_handle",
             Op::Undo => "undo",
             Op::Redo => "redo",
         }
@@ -136,6 +153,7 @@ impl Op {
             Op::AddCurve(input) => Some(&input.stroke),
             Op::SetCurveType(input) => Some(&input.stroke),
             Op::SketchFeature(input) => Some(&input.stroke),
+            Op::CurveHandle(input) => Some(&input.stroke),
             Op::Import(_)
             | Op::Optimize(_)
             | Op::Tunnel(_)
@@ -143,6 +161,9 @@ impl Op {
             | Op::Merge(_)
             | Op::Transform(_)
             | Op::RegionEdit(_)
+            | Op::HandleEdit(_)
+            | Op::LinkHandles(_)
+            | Op::DeleteHandle(_)
             | Op::Delete(_)
             | Op::Duplicate(_)
             | Op::Undo
@@ -159,6 +180,7 @@ impl Op {
             Op::AddCurve(input) => Some(&mut input.stroke),
             Op::SetCurveType(input) => Some(&mut input.stroke),
             Op::SketchFeature(input) => Some(&mut input.stroke),
+            Op::CurveHandle(input) => Some(&mut input.stroke),
             // The ops without a stroke, listed one by one in `Op::stroke`.
             _ => None,
         }
@@ -304,6 +326,88 @@ pub struct RegionEditInput {
     /// coordinates or colours is never remeshed (they would be lost).
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub remesh: bool,
+}
+
+/// A `curve_handle` op: the stroke over the object, in its view, and what handle it makes.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CurveHandleInput {
+    /// Viewport size `[width, height]` in CSS px.
+    pub viewport: [f64; 2],
+    /// The camera the stroke was drawn with.
+    pub camera: Camera,
+    /// Raw samples `[x, y, pressure]`, as in [`StrokeInput`].
+    pub stroke: Vec<[f64; 3]>,
+    /// On the surface (the default) or a skeleton inside.
+    #[serde(default)]
+    pub kind: HandleKind,
+    /// How many control points; left out: 4.
+    #[serde(default = "default_control_points")]
+    pub control_points: usize,
+    /// Rigid limbs between the control points (Blanco §7); left out: a smooth curve.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub rigid: bool,
+}
+
+fn default_control_points() -> usize {
+    4
+}
+
+impl CurveHandleInput {
+    /// The stroke part.
+    pub fn stroke_input(&self) -> StrokeInput {
+        StrokeInput {
+            viewport: self.viewport,
+            camera: self.camera,
+            stroke: self.stroke.clone(),
+        }
+    }
+}
+
+/// A `handle_edit` op: at control point `point` of handle `handle`, any of a move, a twist
+/// and a scale; a twist or scale reaches `spread` control points on each side, fading.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct HandleEditInput {
+    /// The handle's number.
+    pub handle: u32,
+    /// The control point.
+    pub point: usize,
+    /// Move it by this, in world units (with the control points linked to it).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub translate: Option<[f64; 3]>,
+    /// Twist about the curve by this many degrees.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub twist_deg: Option<f64>,
+    /// Scale across the curve by these factors (along the frame's two axes).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub scale: Option<[f64; 2]>,
+    /// How many control points on each side a twist or scale reaches; left out: 1.
+    #[serde(default = "default_spread")]
+    pub spread: usize,
+}
+
+fn default_spread() -> usize {
+    1
+}
+
+/// A `link_handles` op: `{"a": [h, k], "b": [h2, k2]}`, control point `k` of handle `h`
+/// and `k2` of `h2`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LinkHandlesInput {
+    /// One handle's number and control point.
+    pub a: (u32, usize),
+    /// The other's.
+    pub b: (u32, usize),
+}
+
+/// A `delete_handle` op.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DeleteHandleInput {
+    /// The handle's number.
+    pub handle: u32,
 }
 
 /// The profile of a `region_edit` op: where along the reference curve its plane sits and
@@ -678,6 +782,27 @@ mod tests {
                 profile: None,
                 remesh: false,
             }),
+            Op::CurveHandle(CurveHandleInput {
+                viewport: [1.0, 1.0],
+                camera: Camera::default(),
+                stroke: Vec::new(),
+                kind: HandleKind::Skeleton,
+                control_points: 4,
+                rigid: true,
+            }),
+            Op::HandleEdit(HandleEditInput {
+                handle: 0,
+                point: 1,
+                translate: Some([0.0, 1.0, 0.0]),
+                twist_deg: None,
+                scale: None,
+                spread: 1,
+            }),
+            Op::LinkHandles(LinkHandlesInput {
+                a: (0, 3),
+                b: (1, 0),
+            }),
+            Op::DeleteHandle(DeleteHandleInput { handle: 0 }),
             Op::Undo,
             Op::Redo,
         ];

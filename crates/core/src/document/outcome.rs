@@ -9,6 +9,9 @@ use super::feature::feature_op;
 use super::optimize::optimize_op;
 use super::oversketch::oversketch_op;
 use super::region_edit::region_edit_op;
+use super::skeleton::{
+    curve_handle_op, delete_handle_op, handle_edit_op, link_handles_op, remove_model,
+};
 use super::{CommandError, Document, ImportInput, Model, Op, SketchCurve, StrokeInput, curve_edit};
 use crate::curve::process_stroke;
 use crate::io::{ImportFile, ImportLimits, Imported, import_gltf};
@@ -76,7 +79,7 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
             let (kept, gone, merged) = curve_edit::merge_op(base, input)?;
             let mut next = base.clone();
             next.models[kept] = Arc::new(merged);
-            next.models.remove(gone);
+            remove_model(&mut next, gone);
             Outcome::Document(next)
         }
         Op::Transform(input) => replaced(transform_op(base, input)?),
@@ -88,6 +91,10 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
         Op::Optimize(input) => replaced(optimize_op(base, input)?),
         Op::SketchFeature(input) => replaced(feature_op(base, input)?),
         Op::RegionEdit(input) => replaced(region_edit_op(base, input)?),
+        Op::CurveHandle(input) => Outcome::Document(curve_handle_op(base, input)?),
+        Op::HandleEdit(input) => Outcome::Document(handle_edit_op(base, input)?),
+        Op::LinkHandles(input) => Outcome::Document(link_handles_op(base, input)?),
+        Op::DeleteHandle(input) => Outcome::Document(delete_handle_op(base, input.handle)?),
         Op::Undo => Outcome::Undo,
         Op::Redo => Outcome::Redo,
     })

@@ -186,7 +186,11 @@ fn has_no_fields(op: &Op) -> bool {
         | Op::Rub(_)
         | Op::Optimize(_)
         | Op::SketchFeature(_)
-        | Op::RegionEdit(_) => false,
+        | Op::RegionEdit(_)
+        | Op::CurveHandle(_)
+        | Op::HandleEdit(_)
+        | Op::LinkHandles(_)
+        | Op::DeleteHandle(_) => false,
         Op::Undo | Op::Redo => true,
     }
 }

@@ -9,9 +9,8 @@ use glam::Vec3;
 use gltf::json;
 use json::validation::Checked::Valid;
 
-use super::glb::{Writer, f32_positions_and_normals};
-use crate::mesh::Mesh;
-use crate::model::{AlphaMode, Appearance, Material, Texture};
+use super::glb::{Writer, Written, f32_positions_and_normals};
+use crate::model::{AlphaMode, Appearance, Material, Texture, positions_hash_of};
 
 /// The vertex arrays of an imported model after splitting corners that differ.
 struct SplitVertices {
@@ -26,10 +25,10 @@ struct SplitVertices {
 /// One primitive per material (faces without one last), sharing the vertex accessors.
 pub(super) fn imported_primitives(
     writer: &mut Writer,
-    mesh: &Mesh,
+    surface: &Written,
     appearance: &Appearance,
 ) -> Vec<json::mesh::Primitive> {
-    let split = split_vertices(mesh, appearance);
+    let split = split_vertices(surface, appearance);
     let mut attributes = BTreeMap::new();
     attributes.insert(
         Valid(json::mesh::Semantic::Positions),
@@ -142,21 +141,22 @@ fn write_texture(writer: &mut Writer, texture: &Texture) -> json::Index<json::Te
 }
 
 /// Splits mesh vertices whose corners carry different attributes, in corner order.
-fn split_vertices(mesh: &Mesh, appearance: &Appearance) -> SplitVertices {
-    let (positions, vertex_normals) = f32_positions_and_normals(mesh);
+fn split_vertices(surface: &Written, appearance: &Appearance) -> SplitVertices {
+    let (positions, vertex_normals) =
+        f32_positions_and_normals(&surface.positions, surface.triangles);
     let corner_normals = appearance
         .normals
         .as_ref()
-        .filter(|_| appearance.normals_fit(mesh));
+        .filter(|_| appearance.positions_hash == positions_hash_of(&surface.positions));
     let mut split = SplitVertices {
         positions: Vec::new(),
         normals: Vec::new(),
         uvs: appearance.uvs.as_ref().map(|_| Vec::new()),
         colors: appearance.colors.as_ref().map(|_| Vec::new()),
-        corner_vertex: Vec::with_capacity(3 * mesh.n_faces()),
+        corner_vertex: Vec::with_capacity(3 * surface.triangles.len()),
     };
     let mut index_of: HashMap<(u32, [u32; 9]), u32> = HashMap::new();
-    for (corner, &v) in mesh.triangle_indices().iter().enumerate() {
+    for (corner, &v) in surface.triangles.as_flattened().iter().enumerate() {
         let normal = match corner_normals {
             Some(normals) => unit_or_vertex(normals[corner], vertex_normals[v as usize]),
             None => vertex_normals[v as usize],

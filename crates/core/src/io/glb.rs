@@ -10,8 +10,7 @@ use gltf::json;
 use json::validation::{Checked::Valid, USize64};
 
 use super::extras::CLAY_MATERIAL_NAME;
-use crate::geometry::vertex_normals;
-use crate::mesh::Mesh;
+use crate::geometry::vertex_normals_of;
 use crate::model::Image;
 
 /// A .glb being written: [`Writer::finish`] packs it.
@@ -274,16 +273,25 @@ fn f32_array(v: Vec3) -> serde_json::Value {
     serde_json::Value::from(v.to_array().map(f64::from).to_vec())
 }
 
+/// The triangles a model is written as: its mesh's, or an imported soup's as it came.
+pub(super) struct Written<'a> {
+    /// Positions, indexed by `triangles`.
+    pub positions: std::borrow::Cow<'a, [DVec3]>,
+    /// The triangles.
+    pub triangles: &'a [[u32; 3]],
+}
+
 /// Positions as written (`f32`) and unit normals computed from exactly those positions, so a
 /// file imported and exported again gets the same normals, bit for bit.
-pub(super) fn f32_positions_and_normals(mesh: &Mesh) -> (Vec<Vec3>, Vec<Vec3>) {
-    let positions: Vec<Vec3> = mesh.positions().iter().map(|p| p.as_vec3()).collect();
-    let mut rounded = mesh.clone();
-    for (p, q) in rounded.positions_mut().iter_mut().zip(&positions) {
-        *p = q.as_dvec3();
-    }
-    let normals = vertex_normals(&rounded).into_iter().map(unit_f32).collect();
-    (positions, normals)
+pub(super) fn f32_positions_and_normals(
+    positions: &[DVec3],
+    triangles: &[[u32; 3]],
+) -> (Vec<Vec3>, Vec<Vec3>) {
+    let positions: Vec<Vec3> = positions.iter().map(|p| p.as_vec3()).collect();
+    let rounded: Vec<DVec3> = positions.iter().map(|q| q.as_dvec3()).collect();
+    let mut normals = Vec::new();
+    vertex_normals_of(triangles, &rounded, &mut normals);
+    (positions, normals.into_iter().map(unit_f32).collect())
 }
 
 /// A normal as a unit `f32` vector; a degenerate normal (a vertex whose faces have no area)

@@ -7,6 +7,7 @@
 //! reaches the primitive-restart value 65535, else `u32`; the material is written only if a
 //! triangle primitive uses it. An empty document gives a valid file with one empty scene.
 
+use std::borrow::Cow;
 use std::collections::BTreeMap;
 
 use glam::Vec3;
@@ -16,8 +17,7 @@ use serde_json::value::RawValue;
 
 use super::appearance_write::imported_primitives;
 use super::extras::{CurveExtras, EXTRAS_VERSION, NodeExtras, SketchExtras, SketchmeshExtras};
-use super::glb::{Writer, f32_positions_and_normals};
-use crate::mesh::Mesh;
+use super::glb::{Writer, Written, f32_positions_and_normals};
 use crate::model::{Document, Model, PointCloud, SketchCurve};
 
 /// Encodes the document as a .glb file; see the module docs for the layout.
@@ -42,11 +42,27 @@ fn model_node(writer: &mut Writer, index: usize, model: &Model) -> json::Index<j
         .name
         .clone()
         .unwrap_or_else(|| format!("model {index}"));
-    let appearance = model.appearance.as_deref().filter(|a| a.fits(mesh));
-    let mesh_index = (mesh.n_faces() > 0).then(|| {
+    // An imported soup is written as it came while the mesh repaired from it still fits.
+    let (written, appearance) = match model.as_imported() {
+        Some(input) => (
+            Written {
+                positions: Cow::Owned(input.positions_of(mesh)),
+                triangles: &input.soup.triangles,
+            },
+            input.appearance.as_deref(),
+        ),
+        None => (
+            Written {
+                positions: Cow::Borrowed(mesh.positions()),
+                triangles: mesh.triangles(),
+            },
+            model.appearance.as_deref().filter(|a| a.fits(mesh)),
+        ),
+    };
+    let mesh_index = (!written.triangles.is_empty()).then(|| {
         let primitives = match appearance {
-            Some(appearance) => imported_primitives(writer, mesh, appearance),
-            None => vec![clay_primitive(writer, mesh)],
+            Some(appearance) => imported_primitives(writer, &written, appearance),
+            None => vec![clay_primitive(writer, &written)],
         };
         writer.mesh(name.clone(), primitives)
     });
@@ -77,8 +93,8 @@ fn model_node(writer: &mut Writer, index: usize, model: &Model) -> json::Index<j
 }
 
 /// A model made here: welded vertices, smooth normals, the clay material.
-fn clay_primitive(writer: &mut Writer, mesh: &Mesh) -> json::mesh::Primitive {
-    let (positions, normals) = f32_positions_and_normals(mesh);
+fn clay_primitive(writer: &mut Writer, surface: &Written) -> json::mesh::Primitive {
+    let (positions, normals) = f32_positions_and_normals(&surface.positions, surface.triangles);
     let mut attributes = BTreeMap::new();
     attributes.insert(
         Valid(json::mesh::Semantic::Positions),
@@ -91,7 +107,7 @@ fn clay_primitive(writer: &mut Writer, mesh: &Mesh) -> json::mesh::Primitive {
     let material = writer.material();
     writer.triangle_primitive(
         attributes,
-        mesh.triangle_indices(),
+        surface.triangles.as_flattened(),
         positions.len(),
         Some(material),
     )

@@ -24,7 +24,8 @@ use super::scene::{NodeGeometry, Surface, read_nodes};
 use super::weld::weld;
 use crate::mesh::{FaceId, Mesh, RepairReport, TriSoup, make_manifold};
 use crate::model::{
-    AlphaMode, Appearance, Image, Material, Model, PointCloud, SketchCurve, Texture, positions_hash,
+    AlphaMode, Appearance, AsImported, Image, Material, Model, PointCloud, SketchCurve, Texture,
+    positions_hash, positions_hash_of,
 };
 
 /// Pen pressure given to imported line primitives (the pressure of a mouse stroke).
@@ -116,7 +117,11 @@ fn add_node(
     }
     let model_name = name.clone().unwrap_or_else(|| String::from("unnamed node"));
     let is_sketchmesh = extras.is_some();
-    let (mut mesh, face_source) = weld_and_repair(&mut surface, &model_name, &mut imported.notes)?;
+    let Welded {
+        mut mesh,
+        face_source,
+        input,
+    } = weld_and_repair(&mut surface, &model_name, &mut imported.notes)?;
     let attached = extras
         .map(|extras| attach_curves(&mut mesh, &extras.curves))
         .unwrap_or_default();
@@ -128,13 +133,43 @@ fn add_node(
             m.and_then(|m| materials.get(m))
                 .is_some_and(|m| m.name.as_deref() == Some(CLAY_MATERIAL_NAME))
         });
-    let appearance =
-        (!is_clay).then(|| Arc::new(appearance(&mesh, &surface, &face_source, materials)));
+    let mesh_appearance = (!is_clay).then(|| {
+        let hash = positions_hash(&mesh);
+        Arc::new(appearance(
+            mesh.triangles(),
+            hash,
+            &surface,
+            &face_source,
+            materials,
+        ))
+    });
+    let as_imported = input.map(|(soup, vertex_source)| {
+        let appearance = (!is_clay).then(|| {
+            let identity: Vec<(FaceId, bool)> = (0..soup.triangles.len())
+                .map(|f| (FaceId(f as u32), false))
+                .collect();
+            let hash = positions_hash_of(&soup.positions);
+            Arc::new(appearance(
+                &soup.triangles,
+                hash,
+                &surface,
+                &identity,
+                materials,
+            ))
+        });
+        Arc::new(AsImported {
+            mesh_triangles: mesh.triangles().to_vec(),
+            soup,
+            vertex_source,
+            appearance,
+        })
+    });
     imported.models.push(Model {
         mesh,
         curves: attached.curves,
         name: if is_clay { None } else { name },
-        appearance,
+        appearance: mesh_appearance,
+        as_imported,
     });
     Ok(())
 }
@@ -150,14 +185,22 @@ fn distinct<T: Copy + PartialEq>(values: &[T]) -> Vec<T> {
     seen
 }
 
+/// A node's surface made a mesh.
+struct Welded {
+    mesh: Mesh,
+    /// Per mesh face, the surface triangle it came from and whether it was flipped.
+    face_source: Vec<(FaceId, bool)>,
+    /// The welded input and, per mesh vertex, its input vertex: kept when the mesh had to
+    /// be repaired from it.
+    input: Option<(TriSoup, Vec<u32>)>,
+}
+
 /// Welds equal positions (consuming `surface.positions`) and makes the surface manifold.
-/// Returns the mesh and, per mesh face, the surface triangle it came from and whether it was
-/// flipped.
 fn weld_and_repair(
     surface: &mut Surface,
     name: &str,
     notes: &mut Vec<String>,
-) -> Result<(Mesh, Vec<(FaceId, bool)>), GltfError> {
+) -> Result<Welded, GltfError> {
     let (positions, welded_of) = weld(&surface.positions);
     // The welded copy is all that is needed from here on; free the original early.
     surface.positions = Vec::new();
@@ -172,7 +215,11 @@ fn weld_and_repair(
     welded.remove_unreferenced_vertices();
     if let Ok(mesh) = Mesh::from_soup(&welded) {
         let identity = mesh.faces().map(|f| (f, false)).collect();
-        return Ok((mesh, identity));
+        return Ok(Welded {
+            mesh,
+            face_source: identity,
+            input: None,
+        });
     }
     let repaired = make_manifold(&welded).map_err(|error| {
         GltfError::Parse(format!(
@@ -180,7 +227,12 @@ fn weld_and_repair(
         ))
     })?;
     notes.push(repair_note(name, &repaired.report));
-    Ok((repaired.mesh, repaired.face_source))
+    let vertex_source = repaired.vertex_source.iter().map(|v| v.0).collect();
+    Ok(Welded {
+        mesh: repaired.mesh,
+        face_source: repaired.face_source,
+        input: Some((welded, vertex_source)),
+    })
 }
 
 /// "spot was not a clean manifold surface: 2 duplicate triangles were dropped and 1 vertex
@@ -243,7 +295,8 @@ fn curves(n: usize) -> String {
 
 /// Per-corner attributes and materials of the mesh faces, from the surface they came from.
 fn appearance(
-    mesh: &Mesh,
+    triangles: &[[u32; 3]],
+    positions_hash: u64,
     surface: &Surface,
     face_source: &[(FaceId, bool)],
     materials: &mut MaterialCache,
@@ -273,8 +326,8 @@ fn appearance(
         })
         .collect();
     Appearance {
-        triangles: mesh.triangles().to_vec(),
-        positions_hash: positions_hash(mesh),
+        triangles: triangles.to_vec(),
+        positions_hash,
         normals: per_corner(surface.has_normals, &surface.normals, &corner_sources),
         uvs: per_corner(surface.has_uvs, &surface.uvs, &corner_sources),
         colors: per_corner(surface.has_colors, &surface.colors, &corner_sources),

@@ -45,8 +45,13 @@ impl Appearance {
 
 /// A hash of the exact position bits, to tell whether a mesh has been deformed.
 pub fn positions_hash(mesh: &Mesh) -> u64 {
+    positions_hash_of(mesh.positions())
+}
+
+/// [`positions_hash`] of positions that are not a mesh's (an imported soup's).
+pub fn positions_hash_of(positions: &[glam::DVec3]) -> u64 {
     let mut hasher = std::collections::hash_map::DefaultHasher::new();
-    for p in mesh.positions() {
+    for p in positions {
         p.to_array().map(f64::to_bits).hash(&mut hasher);
     }
     hasher.finish()

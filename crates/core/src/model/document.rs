@@ -7,6 +7,7 @@ use serde::Serialize;
 use super::point_cloud::PointCloud;
 use super::sketch::SketchCurve;
 use super::surface::Model;
+use crate::skeleton::CurveHandle;
 
 /// Everything the user has made. Cheap to clone: a clone shares every model and sketch.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -17,6 +18,10 @@ pub struct Document {
     pub sketches: Vec<Arc<SketchCurve>>,
     /// Imported point sets.
     pub point_clouds: Vec<Arc<PointCloud>>,
+    /// Curve handles on models and point clouds (Blanco), in creation order.
+    pub handles: Vec<Arc<CurveHandle>>,
+    /// How many handles were ever made: the number of the next one.
+    pub handles_made: u32,
 }
 
 /// Counts shown in the app's status line and printed by the CLI.

@@ -6,18 +6,23 @@
 //! that changes a [`Document`] through undoable ops. Nothing here edits anything, so both
 //! can build on it without `io` knowing about editing. A model's curves are the FiberMesh
 //! solver's own [`ControlCurve`]s (chains of mesh vertices), re-exported here as part of the
-//! model.
+//! model; likewise a curve handle is the skeleton technique's own [`CurveHandle`].
 
 mod appearance;
+mod as_imported;
 mod document;
 mod point_cloud;
 mod sketch;
 mod surface;
 
-pub use appearance::{AlphaMode, Appearance, Image, Material, Texture, positions_hash};
+pub use appearance::{
+    AlphaMode, Appearance, Image, Material, Texture, positions_hash, positions_hash_of,
+};
+pub use as_imported::AsImported;
 pub use document::{Document, Stats};
 pub use point_cloud::PointCloud;
 pub use sketch::SketchCurve;
 pub use surface::Model;
 
 pub use crate::fibermesh::{ControlCurve, CurveKind};
+pub use crate::skeleton::{CurveHandle, HandleTarget};

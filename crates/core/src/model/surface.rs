@@ -3,6 +3,7 @@
 use std::sync::Arc;
 
 use super::appearance::Appearance;
+use super::as_imported::AsImported;
 use crate::fibermesh::ControlCurve;
 use crate::mesh::Mesh;
 
@@ -17,4 +18,14 @@ pub struct Model {
     pub name: Option<String>,
     /// How it looked in an imported file; `None` for models made here.
     pub appearance: Option<Arc<Appearance>>,
+    /// The triangles of an imported soup as they came, when `mesh` had to be repaired
+    /// from them (see [`AsImported`]); `None` otherwise.
+    pub as_imported: Option<Arc<AsImported>>,
+}
+
+impl Model {
+    /// The input as it came, while `mesh` still fits it.
+    pub fn as_imported(&self) -> Option<&AsImported> {
+        self.as_imported.as_deref().filter(|a| a.fits(&self.mesh))
+    }
 }

@@ -26,7 +26,8 @@
 //! 6. [`segment`]: the region and the start and end sides (§3.1);
 //! 7. [`binding`]: slab coordinates and the stretch ratio (§5.2);
 //! 8. [`deformation`]: all of it for one or more handles, with links (§5.4);
-//! 9. [`handle`]: the handle's curve as a document keeps it, and edits to it.
+//! 9. [`handle`]: the handle's curve, and edits to it; [`handle_set`]: a handle as a
+//!    document keeps it (target, number, links).
 
 mod binding;
 mod curve;
@@ -35,6 +36,7 @@ mod error;
 mod filter;
 mod frames;
 mod handle;
+mod handle_set;
 mod placement;
 mod segment;
 mod shape;
@@ -45,5 +47,6 @@ pub use error::SkeletonError;
 pub use filter::{JITTER_PX, filter_jitter};
 pub use frames::{FRAMES, Frame};
 pub use handle::{HandleCurve, HandleKind, PointEdit};
+pub use handle_set::{CurveHandle, HandleTarget};
 pub use placement::{HandleStroke, place_handle};
 pub use shape::Shape;

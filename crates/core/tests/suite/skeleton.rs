@@ -4,15 +4,24 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
+use std::sync::Arc;
+
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
-use sketchmesh_core::mesh::{Mesh, TriSoup, primitives};
+use sketchmesh_core::document::{
+    AsImported, CommandError, CurveHandleInput, DeleteHandleInput, Document, Editor,
+    HandleEditInput, HandleTarget, LinkHandlesInput, Model, Op, PointCloud,
+};
+use sketchmesh_core::io::{ImportFile, Info, import_gltf, inspect_gltf, write_glb};
+use sketchmesh_core::mesh::{Mesh, TriSoup, make_manifold, primitives};
 use sketchmesh_core::skeleton::{
     Deformation, HandleCurve, HandleKind, HandleStroke, Link, Mover, PointEdit, Shape,
     SkeletonError, place_handle,
 };
 
-use crate::common::{diagonal, screen, testdata_meshes};
+use crate::common::{
+    diagonal, digest, import_document, import_mesh, samples, screen, testdata_meshes,
+};
 
 const VIEWPORT: DVec2 = DVec2::new(800.0, 800.0);
 
@@ -483,4 +492,266 @@ fn bad_strokes_and_amounts_are_refused_with_a_sentence() {
     for message in [SkeletonError::StrokeMisses, SkeletonError::BadAmount] {
         assert!(message.to_string().ends_with('.'));
     }
+}
+
+/// A model as a file with `soup`'s triangles would import: repaired, the soup kept.
+fn soup_model(soup: &TriSoup) -> Model {
+    let repaired = make_manifold(soup).unwrap();
+    Model {
+        as_imported: Some(Arc::new(AsImported {
+            soup: soup.clone(),
+            vertex_source: repaired.vertex_source.iter().map(|v| v.0).collect(),
+            mesh_triangles: repaired.mesh.triangles().to_vec(),
+            appearance: None,
+        })),
+        mesh: repaired.mesh,
+        ..Model::default()
+    }
+}
+
+fn info_of(glb: &[u8]) -> Info {
+    inspect_gltf(
+        &ImportFile {
+            name: "out.glb",
+            bytes: glb,
+        },
+        &[],
+    )
+    .unwrap()
+}
+
+/// A `curve_handle` op across the middle of `positions` seen from +z.
+fn handle_op(positions: &[DVec3], kind: HandleKind) -> Op {
+    let camera = camera_on(positions);
+    let points = across_the_middle(positions, &camera, 80.0, 0.0);
+    Op::CurveHandle(CurveHandleInput {
+        viewport: VIEWPORT.to_array(),
+        camera,
+        stroke: samples(points),
+        kind,
+        control_points: 4,
+        rigid: false,
+    })
+}
+
+fn lift(handle: u32, point: usize, y: f64) -> Op {
+    Op::HandleEdit(HandleEditInput {
+        handle,
+        point,
+        translate: Some([0.0, y, 0.0]),
+        twist_deg: None,
+        scale: None,
+        spread: 1,
+    })
+}
+
+#[test]
+fn a_soup_keeps_its_structure_through_import_deformation_and_export() {
+    let soup = soup_with_fins();
+    let document = Document {
+        models: vec![Arc::new(soup_model(&soup))],
+        ..Document::default()
+    };
+    let input = info_of(&write_glb(&document));
+    assert_eq!(input.triangles, soup.triangles.len());
+    assert!(!input.manifold);
+    let mut editor = Editor::new();
+    editor
+        .apply(import_document("soup.glb", &document))
+        .unwrap();
+    let imported = editor.document().models[0]
+        .as_imported()
+        .expect("the soup is kept")
+        .clone();
+    assert_eq!(imported.soup.triangles.len(), soup.triangles.len());
+    editor
+        .apply(handle_op(&imported.soup.positions, HandleKind::Surface))
+        .unwrap();
+    editor.apply(lift(0, 3, 0.3)).unwrap();
+    let moved = &editor.document().models[0];
+    let kept = moved.as_imported().expect("still as imported");
+    assert_ne!(kept.soup.positions, imported.soup.positions);
+    assert_eq!(
+        moved.mesh.positions(),
+        kept.mesh_positions(&kept.soup.positions)
+    );
+    let output = info_of(&write_glb(editor.document()));
+    assert_eq!(
+        (
+            output.triangles,
+            output.components,
+            output.vertices,
+            output.manifold
+        ),
+        (
+            input.triangles,
+            input.components,
+            input.vertices,
+            input.manifold
+        )
+    );
+    // The handle's own control point moved with the edit.
+    let handle = &editor.document().handles[0];
+    assert!(
+        (handle.curve.points[3].y
+            - imported
+                .soup
+                .positions
+                .iter()
+                .map(|p| p.y)
+                .fold(f64::MIN, f64::max))
+        .abs()
+            < 1.0
+    );
+}
+
+#[test]
+fn a_point_cloud_from_a_gltf_points_primitive_deforms_and_keeps_its_points() {
+    let sphere = primitives::icosphere(1.0, 4);
+    let cloud = PointCloud {
+        positions: sphere.positions().to_vec(),
+        colors: None,
+    };
+    let document = Document {
+        point_clouds: vec![Arc::new(cloud.clone())],
+        ..Document::default()
+    };
+    let mut editor = Editor::new();
+    editor
+        .apply(import_document("cloud.glb", &document))
+        .unwrap();
+    let positions = editor.document().point_clouds[0].positions.clone();
+    editor
+        .apply(handle_op(&positions, HandleKind::Skeleton))
+        .unwrap();
+    assert_eq!(editor.document().handles[0].target, HandleTarget::Cloud(0));
+    editor.apply(lift(0, 3, 0.4)).unwrap();
+    let moved = &editor.document().point_clouds[0].positions;
+    assert_eq!(moved.len(), positions.len());
+    assert!(
+        moved
+            .iter()
+            .zip(&positions)
+            .any(|(a, b)| a.distance(*b) > 0.1)
+    );
+    let exported = import_gltf(
+        &ImportFile {
+            name: "out.glb",
+            bytes: &write_glb(editor.document()),
+        },
+        &[],
+        &Default::default(),
+    )
+    .unwrap();
+    assert_eq!(exported.point_clouds[0].positions.len(), positions.len());
+}
+
+#[test]
+fn handle_ops_replay_undo_and_drag_exactly() {
+    let mesh = primitives::capsule(0.2, 1.0, 24, 120);
+    let mut editor = Editor::new();
+    editor.apply(import_mesh("bar.glb", &mesh)).unwrap();
+    let positions = editor.document().models[0].mesh.positions().to_vec();
+    editor
+        .apply(handle_op(&positions, HandleKind::Surface))
+        .unwrap();
+    editor
+        .apply(handle_op(&positions, HandleKind::Skeleton))
+        .unwrap();
+    editor
+        .apply(Op::LinkHandles(LinkHandlesInput {
+            a: (0, 0),
+            b: (1, 0),
+        }))
+        .unwrap();
+    let before = digest(editor.document());
+    // A drag: the preview follows each pose; the commit equals the op applied at once.
+    let mut drag = editor.begin_gesture(lift(0, 3, 0.05)).unwrap();
+    for y in [0.1, 0.2, 0.3] {
+        drag.revise(lift(0, 3, y));
+        drag.step().unwrap();
+        assert!(drag.moved_model().is_some());
+    }
+    drag.finish(&mut editor).unwrap();
+    let applied = Editor::replay(&editor.session()).unwrap();
+    assert_eq!(digest(applied.document()), digest(editor.document()));
+    let twist = Op::HandleEdit(HandleEditInput {
+        handle: 1,
+        point: 2,
+        translate: None,
+        twist_deg: Some(45.0),
+        scale: Some([1.2, 0.8]),
+        spread: 2,
+    });
+    editor.apply(twist).unwrap();
+    editor.apply(Op::Undo).unwrap();
+    editor.apply(Op::Undo).unwrap();
+    assert_eq!(digest(editor.document()), before);
+    editor
+        .apply(Op::DeleteHandle(DeleteHandleInput { handle: 0 }))
+        .unwrap();
+    assert!(editor.document().handles[0].links.is_empty());
+}
+
+#[test]
+fn bad_handle_ops_are_refused_and_change_nothing() {
+    let mesh = primitives::capsule(0.2, 1.0, 24, 120);
+    let mut editor = Editor::new();
+    editor.apply(import_mesh("bar.glb", &mesh)).unwrap();
+    let positions = mesh.positions().to_vec();
+    editor
+        .apply(handle_op(&positions, HandleKind::Surface))
+        .unwrap();
+    let before = digest(editor.document());
+    let log = editor.session().ops.len();
+    let edit = |twist: f64, scale: [f64; 2]| {
+        Op::HandleEdit(HandleEditInput {
+            handle: 0,
+            point: 1,
+            translate: None,
+            twist_deg: Some(twist),
+            scale: Some(scale),
+            spread: 1,
+        })
+    };
+    let refusals = [
+        edit(f64::NAN, [1.0, 1.0]),
+        edit(10.0, [0.0, 1.0]),
+        edit(10.0, [-1.0, 1.0]),
+        lift(7, 0, 0.1),
+        lift(0, 9, 0.1),
+        Op::DeleteHandle(DeleteHandleInput { handle: 3 }),
+        Op::LinkHandles(LinkHandlesInput {
+            a: (0, 0),
+            b: (0, 2),
+        }),
+        Op::HandleEdit(HandleEditInput {
+            handle: 0,
+            point: 0,
+            translate: None,
+            twist_deg: None,
+            scale: None,
+            spread: 1,
+        }),
+    ];
+    for op in refusals {
+        let error = editor.apply(op.clone()).unwrap_err();
+        assert!(error.to_string().ends_with('.'), "{op:?}: {error}");
+        assert_eq!(
+            digest(editor.document()),
+            before,
+            "{op:?} changed the document"
+        );
+    }
+    let mut beside = handle_op(&positions, HandleKind::Surface);
+    if let Op::CurveHandle(input) = &mut beside {
+        for sample in &mut input.stroke {
+            sample[1] = 10.0;
+        }
+    }
+    assert!(matches!(
+        editor.apply(beside),
+        Err(CommandError::Skeleton(SkeletonError::StrokeMisses))
+    ));
+    assert_eq!(editor.session().ops.len(), log);
 }

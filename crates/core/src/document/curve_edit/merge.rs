@@ -64,6 +64,7 @@ pub fn merge_op(doc: &Document, input: &MergeInput) -> Result<(usize, usize, Mod
         curves,
         name: first.name.clone(),
         appearance: first.appearance.clone(),
+        as_imported: first.as_imported.clone(),
     };
     Ok((kept, gone, model))
 }

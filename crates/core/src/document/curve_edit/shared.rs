@@ -90,13 +90,13 @@ pub(super) fn bounding_diagonal(mesh: &Mesh) -> f64 {
     mesh.bounding_box().map_or(1.0, |(lo, hi)| lo.distance(hi))
 }
 
-/// `model` with a new mesh and curves, keeping its name and appearance.
+/// `model` with a new mesh and curves, keeping its name, appearance and input (which apply
+/// while the new mesh keeps the triangles).
 pub(super) fn replaced(model: &Model, mesh: Mesh, curves: Vec<ControlCurve>) -> Model {
     Model {
         curves,
         mesh,
-        name: model.name.clone(),
-        appearance: model.appearance.clone(),
+        ..model.clone()
     }
 }
 

@@ -1,0 +1,421 @@
+//! The curve-handle ops ([`crate::skeleton`], Blanco): `curve_handle`, `handle_edit`,
+//! `link_handles`, `delete_handle`, and the live preview of a handle being dragged.
+//!
+//! A handle lives in the document ([`Document::handles`]) beside the model or point cloud it
+//! deforms, numbered in creation order. An edit binds the target as it is now to the handles
+//! it moves (the edited one and, for a move, the handles linked at that control point,
+//! which move with it), rebuilds every point from the new poses, and carries the control
+//! points of the target's other handles along. A model repaired from an imported soup is
+//! deformed as the soup ([`crate::model::AsImported`]): the soup's points move and the
+//! mesh follows them. The preview keeps the [`Deformation`]: a drag frame is one pass over
+//! the points, and the committed result is that pass at the final pose, bit for bit what
+//! the op computes from the document alone.
+
+use std::sync::Arc;
+
+use glam::{DVec2, DVec3};
+
+use super::{CommandError, CurveHandleInput, Document, HandleEditInput, LinkHandlesInput};
+use crate::model::{CurveHandle, HandleTarget, PointCloud};
+use crate::skeleton::{
+    Deformation, HandleCurve, HandleStroke, Link, Mover, PointEdit, Shape, SkeletonError,
+    place_handle,
+};
+
+/// Applies a `curve_handle` op: a new handle on the nearest model or cloud under the stroke.
+///
+/// Errors: a bad view; the stroke over nothing, too short, or too few control points.
+pub(super) fn curve_handle_op(
+    doc: &Document,
+    input: &CurveHandleInput,
+) -> Result<Document, CommandError> {
+    let view = input.stroke_input();
+    let viewport = view.checked_viewport()?;
+    let points: Vec<DVec2> = view.points().iter().map(|p| p.pos).collect();
+    if !points.iter().all(|p| p.is_finite()) {
+        return Err(CommandError::StrokeNotFinite);
+    }
+    let stroke = HandleStroke {
+        points: &points,
+        camera: &view.camera,
+        viewport,
+    };
+    let mut best: Option<(f64, HandleTarget, HandleCurve)> = None;
+    let mut refusal = SkeletonError::StrokeMisses;
+    for target in targets(doc) {
+        let positions = points_of(doc, target);
+        let triangles = triangles_of(doc, target);
+        let shape = Shape {
+            positions: &positions,
+            triangles,
+        };
+        match place_handle(
+            &shape,
+            &stroke,
+            input.kind,
+            input.control_points,
+            input.rigid,
+        ) {
+            Ok(curve) => {
+                let depth = view.camera.eye.distance(curve.points[0]);
+                if best.as_ref().is_none_or(|b| depth < b.0) {
+                    best = Some((depth, target, curve));
+                }
+            }
+            Err(SkeletonError::StrokeMisses) => {}
+            Err(error) => refusal = error,
+        }
+    }
+    let (_, target, curve) = best.ok_or(refusal)?;
+    let mut next = doc.clone();
+    next.handles.push(Arc::new(CurveHandle {
+        id: doc.handles_made,
+        target,
+        kind: input.kind,
+        curve,
+        links: Vec::new(),
+    }));
+    next.handles_made += 1;
+    Ok(next)
+}
+
+/// Every model and point cloud of `doc`.
+fn targets(doc: &Document) -> impl Iterator<Item = HandleTarget> {
+    (0..doc.models.len())
+        .map(HandleTarget::Model)
+        .chain((0..doc.point_clouds.len()).map(HandleTarget::Cloud))
+}
+
+/// The points a handle on `target` moves: a cloud's, an imported soup's as it came, or the
+/// mesh's.
+fn points_of(doc: &Document, target: HandleTarget) -> Vec<DVec3> {
+    match target {
+        HandleTarget::Model(m) => {
+            let model = &doc.models[m];
+            match model.as_imported() {
+                Some(input) => input.positions_of(&model.mesh),
+                None => model.mesh.positions().to_vec(),
+            }
+        }
+        HandleTarget::Cloud(c) => doc.point_clouds[c].positions.clone(),
+    }
+}
+
+/// The triangles over [`points_of`] (none for a cloud).
+fn triangles_of(doc: &Document, target: HandleTarget) -> &[[u32; 3]] {
+    match target {
+        HandleTarget::Model(m) => {
+            let model = &doc.models[m];
+            match model.as_imported() {
+                Some(input) => &input.soup.triangles,
+                None => model.mesh.triangles(),
+            }
+        }
+        HandleTarget::Cloud(_) => &[],
+    }
+}
+
+/// The place of handle `id` in `doc.handles`.
+fn handle_index(doc: &Document, id: u32) -> Result<usize, CommandError> {
+    doc.handles
+        .iter()
+        .position(|h| h.id == id)
+        .ok_or(CommandError::NoSuchHandle(id))
+}
+
+/// A handle edit bound to its target, ready to follow new amounts.
+#[derive(Debug)]
+pub(super) struct HandleDrag {
+    target: HandleTarget,
+    /// The moving handles' places in the document, and their curves before.
+    movers: Vec<(usize, HandleCurve)>,
+    rest: Vec<DVec3>,
+    deformation: Deformation,
+    /// The target's points at the last pose shown.
+    moved: Vec<DVec3>,
+    /// The mesh's vertices at that pose, for a model kept as imported.
+    moved_mesh: Vec<DVec3>,
+    /// The op last shown, to skip steps with nothing new.
+    shown: Option<HandleEditInput>,
+    /// A cloud's preview: the document with the cloud moved (a cloud has no moved-model
+    /// path), and whether it changed since the renderer last asked.
+    cloud_preview: Option<(Document, bool)>,
+}
+
+impl HandleDrag {
+    /// Binds the target of `input`'s handle to the handles the edit moves.
+    ///
+    /// Errors: no such handle or control point; no region.
+    pub(super) fn start(doc: &Document, input: &HandleEditInput) -> Result<Self, CommandError> {
+        let index = handle_index(doc, input.handle)?;
+        let handle = &doc.handles[index];
+        if input.point >= handle.curve.points.len() {
+            return Err(SkeletonError::NoSuchPoint(input.point).into());
+        }
+        let mut movers = vec![(index, handle.curve.clone())];
+        if input.translate.is_some() {
+            for &(_, other, _) in handle.links.iter().filter(|l| l.0 == input.point) {
+                let other = handle_index(doc, other)?;
+                if movers.iter().all(|m| m.0 != other) {
+                    movers.push((other, doc.handles[other].curve.clone()));
+                }
+            }
+        }
+        let links: Vec<Vec<Link>> = movers
+            .iter()
+            .map(|&(i, _)| {
+                doc.handles[i]
+                    .links
+                    .iter()
+                    .map(|&(point, other, their)| Link {
+                        point,
+                        partner: movers
+                            .iter()
+                            .position(|m| doc.handles[m.0].id == other)
+                            .map(|m| (m, their)),
+                    })
+                    .collect()
+            })
+            .collect();
+        let target = handle.target;
+        let rest = points_of(doc, target);
+        let shape = Shape {
+            positions: &rest,
+            triangles: triangles_of(doc, target),
+        };
+        let bound: Vec<Mover> = movers
+            .iter()
+            .zip(&links)
+            .map(|((_, curve), links)| Mover { rest: curve, links })
+            .collect();
+        let deformation = Deformation::new(&shape, &bound)?;
+        Ok(HandleDrag {
+            target,
+            moved: rest.clone(),
+            moved_mesh: Vec::new(),
+            shown: None,
+            cloud_preview: None,
+            movers,
+            rest,
+            deformation,
+        })
+    }
+
+    /// The moving handles' curves after `input`.
+    fn poses(
+        &self,
+        doc: &Document,
+        input: &HandleEditInput,
+    ) -> Result<Vec<HandleCurve>, CommandError> {
+        let edit = point_edit(input)?;
+        let main = &doc.handles[self.movers[0].0];
+        self.movers
+            .iter()
+            .enumerate()
+            .map(|(m, (index, curve))| {
+                if m == 0 {
+                    return Ok(curve.edited(&edit)?);
+                }
+                // A linked handle: its linked point moves with the edited one.
+                let their = doc.handles[*index]
+                    .links
+                    .iter()
+                    .find(|l| l.1 == main.id && l.2 == input.point)
+                    .map_or(0, |l| l.0);
+                let moved = PointEdit {
+                    point: their,
+                    translate: edit.translate,
+                    ..PointEdit::default()
+                };
+                Ok(curve.edited(&moved)?)
+            })
+            .collect()
+    }
+
+    /// Moves the points to `input`'s pose: `None` when it is the pose shown already, else
+    /// `Some(false)` (the preview is up to date until the op changes).
+    pub(super) fn step(
+        &mut self,
+        doc: &Document,
+        input: &HandleEditInput,
+    ) -> Result<Option<bool>, CommandError> {
+        if self.shown.as_ref() == Some(input) {
+            return Ok(None);
+        }
+        self.pose(doc, input)?;
+        self.shown = Some(input.clone());
+        if let HandleTarget::Cloud(_) = self.target {
+            let mut shown = doc.clone();
+            write_points(&mut shown, self.target, &self.moved);
+            self.cloud_preview = Some((shown, true));
+        }
+        Ok(Some(false))
+    }
+
+    /// Moves the points to `input`'s pose.
+    fn pose(&mut self, doc: &Document, input: &HandleEditInput) -> Result<(), CommandError> {
+        let poses = self.poses(doc, input)?;
+        self.deformation
+            .apply_into(&self.rest, &poses, &mut self.moved);
+        if let HandleTarget::Model(m) = self.target
+            && let Some(imported) = doc.models[m].as_imported()
+        {
+            self.moved_mesh = imported.mesh_positions(&self.moved);
+        }
+        Ok(())
+    }
+
+    /// A cloud's preview document, once a pose was shown.
+    pub(super) fn document(&self) -> Option<&Document> {
+        self.cloud_preview.as_ref().map(|(doc, _)| doc)
+    }
+
+    /// Whether the preview document changed since the last call.
+    pub(super) fn take_rebuilt(&mut self) -> bool {
+        self.cloud_preview
+            .as_mut()
+            .is_some_and(|(_, changed)| std::mem::replace(changed, false))
+    }
+
+    /// The model whose vertices moved and where they are drawn (clouds: `None`, they show
+    /// [`HandleDrag::document`]).
+    pub(super) fn moved_model(&self) -> Option<(usize, &[DVec3])> {
+        self.shown.as_ref()?;
+        match self.target {
+            HandleTarget::Model(m) if !self.moved_mesh.is_empty() => Some((m, &self.moved_mesh)),
+            HandleTarget::Model(m) => Some((m, &self.moved)),
+            HandleTarget::Cloud(_) => None,
+        }
+    }
+
+    /// The committed document: the points at `input`'s pose, the handles moved.
+    pub(super) fn result(
+        &mut self,
+        doc: &Document,
+        input: &HandleEditInput,
+    ) -> Result<Document, CommandError> {
+        self.pose(doc, input)?;
+        let poses = self.poses(doc, input)?;
+        let mut next = doc.clone();
+        write_points(&mut next, self.target, &self.moved);
+        for (h, handle) in next.handles.iter_mut().enumerate() {
+            if let Some(m) = self.movers.iter().position(|m| m.0 == h) {
+                Arc::make_mut(handle).curve = poses[m].clone();
+            } else if handle.target == self.target {
+                let carried: Vec<DVec3> = handle
+                    .curve
+                    .points
+                    .iter()
+                    .map(|&p| self.deformation.move_point(p, &poses))
+                    .collect();
+                Arc::make_mut(handle).curve.points = carried;
+            }
+        }
+        Ok(next)
+    }
+}
+
+/// The edit of `input` at its control point, with its twist in radians.
+fn point_edit(input: &HandleEditInput) -> Result<PointEdit, CommandError> {
+    if input.translate.is_none() && input.twist_deg.is_none() && input.scale.is_none() {
+        return Err(CommandError::NothingToEdit);
+    }
+    Ok(PointEdit {
+        point: input.point,
+        translate: input.translate.map(DVec3::from),
+        twist: input.twist_deg.map(f64::to_radians),
+        scale: input.scale,
+        spread: input.spread,
+    })
+}
+
+/// Writes moved points into the target of a copy of the document.
+fn write_points(next: &mut Document, target: HandleTarget, moved: &[DVec3]) {
+    match target {
+        HandleTarget::Model(m) => {
+            let model = Arc::make_mut(&mut next.models[m]);
+            match model.as_imported() {
+                Some(imported) => {
+                    let mesh_positions = imported.mesh_positions(moved);
+                    let mut kept = imported.clone();
+                    kept.soup.positions = moved.to_vec();
+                    model.mesh.positions_mut().copy_from_slice(&mesh_positions);
+                    model.as_imported = Some(Arc::new(kept));
+                }
+                None => model.mesh.positions_mut().copy_from_slice(moved),
+            }
+        }
+        HandleTarget::Cloud(c) => {
+            let cloud = Arc::make_mut(&mut next.point_clouds[c]);
+            *cloud = PointCloud {
+                positions: moved.to_vec(),
+                ..cloud.clone()
+            };
+        }
+    }
+}
+
+/// Applies a `handle_edit` op.
+pub(super) fn handle_edit_op(
+    doc: &Document,
+    input: &HandleEditInput,
+) -> Result<Document, CommandError> {
+    HandleDrag::start(doc, input)?.result(doc, input)
+}
+
+/// Applies a `link_handles` op: the two control points move together from now on, and the
+/// parts between their handles blend.
+///
+/// Errors: no such handle or point; a handle linked to itself; handles on different objects.
+pub(super) fn link_handles_op(
+    doc: &Document,
+    input: &LinkHandlesInput,
+) -> Result<Document, CommandError> {
+    let [(a, ka), (b, kb)] = [input.a, input.b];
+    let (ia, ib) = (handle_index(doc, a)?, handle_index(doc, b)?);
+    for (i, k) in [(ia, ka), (ib, kb)] {
+        if k >= doc.handles[i].curve.points.len() {
+            return Err(SkeletonError::NoSuchPoint(k).into());
+        }
+    }
+    if ia == ib {
+        return Err(CommandError::LinkToItself);
+    }
+    if doc.handles[ia].target != doc.handles[ib].target {
+        return Err(CommandError::LinkAcrossObjects);
+    }
+    let mut next = doc.clone();
+    Arc::make_mut(&mut next.handles[ia]).links.push((ka, b, kb));
+    Arc::make_mut(&mut next.handles[ib]).links.push((kb, a, ka));
+    Ok(next)
+}
+
+/// Applies a `delete_handle` op: the handle goes, and its links with it.
+///
+/// Errors: no such handle.
+pub(super) fn delete_handle_op(doc: &Document, id: u32) -> Result<Document, CommandError> {
+    let index = handle_index(doc, id)?;
+    let mut next = doc.clone();
+    next.handles.remove(index);
+    for handle in &mut next.handles {
+        if handle.links.iter().any(|l| l.1 == id) {
+            Arc::make_mut(handle).links.retain(|l| l.1 != id);
+        }
+    }
+    Ok(next)
+}
+
+/// Removes model `index` from a copy of a document, with the handles on it; the handles on
+/// later models follow their models' new indices.
+pub(super) fn remove_model(next: &mut Document, index: usize) {
+    next.models.remove(index);
+    next.handles
+        .retain(|h| h.target != HandleTarget::Model(index));
+    for handle in &mut next.handles {
+        if let HandleTarget::Model(m) = handle.target
+            && m > index
+        {
+            Arc::make_mut(handle).target = HandleTarget::Model(m - 1);
+        }
+    }
+}

@@ -479,6 +479,15 @@ impl Edit {
         }
     }
 
+    /// The fraction of a handle's move shown when all of it would fold the surface through
+    /// itself (the committed result is held there too).
+    pub fn limited_move(&self) -> Option<f64> {
+        match &self.work {
+            Work::Handle(drag) => drag.limited(),
+            _ => None,
+        }
+    }
+
     /// The outline piece an over-sketch stroke being drawn would redraw, on screen.
     pub fn outline(&self) -> Option<&OutlinePiece> {
         match &self.work {

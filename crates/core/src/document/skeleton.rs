@@ -137,6 +137,8 @@ pub(super) struct HandleDrag {
     moved_mesh: Vec<DVec3>,
     /// The op last shown, to skip steps with nothing new.
     shown: Option<HandleEditInput>,
+    /// The fraction of the move kept, when all of it would fold.
+    limited: Option<f64>,
     /// A cloud's preview: the document with the cloud moved (a cloud has no moved-model
     /// path), and whether it changed since the renderer last asked.
     cloud_preview: Option<(Document, bool)>,
@@ -194,6 +196,7 @@ impl HandleDrag {
             moved: rest.clone(),
             moved_mesh: Vec::new(),
             shown: None,
+            limited: None,
             cloud_preview: None,
             movers,
             rest,
@@ -201,15 +204,17 @@ impl HandleDrag {
         })
     }
 
-    /// The moving handles' curves after `input`.
+    /// The moving handles' curves after `input`, its move taken `fraction` of the way.
     fn poses(
-        &self,
+        movers: &[(usize, HandleCurve)],
         doc: &Document,
         input: &HandleEditInput,
+        fraction: f64,
     ) -> Result<Vec<HandleCurve>, CommandError> {
-        let edit = point_edit(input)?;
-        let main = &doc.handles[self.movers[0].0];
-        self.movers
+        let mut edit = point_edit(input)?;
+        edit.translate = edit.translate.map(|t| t * fraction);
+        let main = &doc.handles[movers[0].0];
+        movers
             .iter()
             .enumerate()
             .map(|(m, (index, curve))| {
@@ -252,17 +257,32 @@ impl HandleDrag {
         Ok(Some(false))
     }
 
-    /// Moves the points to `input`'s pose.
-    fn pose(&mut self, doc: &Document, input: &HandleEditInput) -> Result<(), CommandError> {
-        let poses = self.poses(doc, input)?;
-        self.deformation
-            .apply_into(&self.rest, &poses, &mut self.moved);
+    /// Moves the points to `input`'s pose, or as far towards it as folds nothing (the
+    /// fraction of its move kept is [`HandleDrag::limited`]). Returns the poses.
+    fn pose(
+        &mut self,
+        doc: &Document,
+        input: &HandleEditInput,
+    ) -> Result<Vec<HandleCurve>, CommandError> {
+        Self::poses(&self.movers, doc, input, 1.0)?;
+        let movers = &self.movers;
+        let fraction = self.deformation.unfolded(
+            &self.rest,
+            |f| Self::poses(movers, doc, input, f).unwrap_or_default(),
+            &mut self.moved,
+        );
+        self.limited = (fraction < 1.0).then_some(fraction);
         if let HandleTarget::Model(m) = self.target
             && let Some(imported) = doc.models[m].as_imported()
         {
             self.moved_mesh = imported.mesh_positions(&self.moved);
         }
-        Ok(())
+        Self::poses(&self.movers, doc, input, fraction)
+    }
+
+    /// The fraction of the move shown when all of it would fold the surface through itself.
+    pub(super) fn limited(&self) -> Option<f64> {
+        self.limited
     }
 
     /// A cloud's preview document, once a pose was shown.
@@ -294,8 +314,7 @@ impl HandleDrag {
         doc: &Document,
         input: &HandleEditInput,
     ) -> Result<Document, CommandError> {
-        self.pose(doc, input)?;
-        let poses = self.poses(doc, input)?;
+        let poses = self.pose(doc, input)?;
         let mut next = doc.clone();
         write_points(&mut next, self.target, &self.moved);
         for (h, handle) in next.handles.iter_mut().enumerate() {

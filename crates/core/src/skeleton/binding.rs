@@ -80,7 +80,7 @@ pub fn bind_point(frames: &[Frame], vertex: u32, x: DVec3) -> Bound {
         alpha: local.x,
         rest: DVec3::ZERO,
     };
-    bound.rest = place(&bound, frames);
+    bound.rest = place(&bound, frames).0;
     bound
 }
 
@@ -94,21 +94,22 @@ fn width_at(from: &Frame, to: &Frame, foot: DVec3) -> f64 {
 }
 
 /// Where `frames` put a bound vertex.
-fn place(bound: &Bound, frames: &[Frame]) -> DVec3 {
+fn place(bound: &Bound, frames: &[Frame]) -> (DVec3, bool) {
     let slab = bound.slab as usize;
     let (from, to) = (&frames[slab - 1], &frames[slab]);
     let foot = from.to_world(0.0, bound.beta, bound.gamma);
-    let along = if bound.ratio.is_nan() {
-        bound.alpha
-    } else {
-        bound.ratio * width_at(from, to, foot)
-    };
-    foot + along * from.u
+    if bound.ratio.is_nan() {
+        return (foot + bound.alpha * from.u, false);
+    }
+    let width = width_at(from, to, foot);
+    (foot + bound.ratio * width * from.u, width <= 0.0)
 }
 
-/// Where `frames` move a bound point that was at `x`.
-pub fn moved(bound: &Bound, x: DVec3, frames: &[Frame]) -> DVec3 {
-    x + (place(bound, frames) - bound.rest)
+/// Where `frames` move a bound point that was at `x`, and whether its slab turned inside
+/// out there (the planes around it meet on its near side: the surface folds through itself).
+pub fn moved(bound: &Bound, x: DVec3, frames: &[Frame]) -> (DVec3, bool) {
+    let (placed, is_folded) = place(bound, frames);
+    (x + (placed - bound.rest), is_folded)
 }
 
 /// The radius of each slab's region across the curve: the farthest its vertices lie from
@@ -164,7 +165,7 @@ mod tests {
         ] {
             let bound = bind_point(&frames, 0, x);
             assert!(bound.rest.distance(x) < 1e-12);
-            assert_eq!(moved(&bound, x, &frames), x);
+            assert_eq!(moved(&bound, x, &frames), (x, false));
         }
     }
 }

@@ -173,9 +173,11 @@ impl Deformation {
 
     /// Writes where every vertex of `rest` (the positions bound) goes when the handles take
     /// the poses `curves` (in the order of the movers). The rest poses give `rest` bit for
-    /// bit.
-    pub fn apply_into(&self, rest: &[DVec3], curves: &[HandleCurve], out: &mut [DVec3]) {
+    /// bit. Returns how many region vertices fold: their slab turned inside out (a bend
+    /// tighter than the part is thick; see [`Deformation::unfolded`]).
+    pub fn apply_into(&self, rest: &[DVec3], curves: &[HandleCurve], out: &mut [DVec3]) -> usize {
         let frames = self.frames(curves);
+        let mut folded = 0;
         for (v, (owner, (&x, slot))) in self
             .owners
             .iter()
@@ -187,7 +189,9 @@ impl Deformation {
                 Owner::Region { handle, bound } => {
                     let bound = &self.handles[handle as usize].bounds[bound as usize];
                     debug_assert_eq!(bound.vertex as usize, v);
-                    moved(bound, x, &frames[handle as usize])
+                    let (placed, is_folded) = moved(bound, x, &frames[handle as usize]);
+                    folded += usize::from(is_folded);
+                    placed
                 }
                 Owner::Rigid { handle, frame } => {
                     let (h, f) = (handle as usize, frame as usize);
@@ -209,6 +213,33 @@ impl Deformation {
             let half = 0.5 * seam.share;
             out[v] = x + (1.0 - half) * (out[v] - x) + half * partner;
         }
+        folded
+    }
+
+    /// Local self-intersection avoidance, in the form Blanco's §8.2 proposes: the largest
+    /// fraction `f ∈ [0, 1]` of a change for which no region vertex folds, found by
+    /// bisection (to 1/1024) with `pose(f)` giving the poses at `f`, and the points at it
+    /// written to `out`. A change that folds nothing costs one pass.
+    pub fn unfolded(
+        &self,
+        rest: &[DVec3],
+        pose: impl Fn(f64) -> Vec<HandleCurve>,
+        out: &mut [DVec3],
+    ) -> f64 {
+        if self.apply_into(rest, &pose(1.0), out) == 0 {
+            return 1.0;
+        }
+        let (mut lo, mut hi) = (0.0, 1.0);
+        for _ in 0..10 {
+            let mid = 0.5 * (lo + hi);
+            if self.apply_into(rest, &pose(mid), out) == 0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        self.apply_into(rest, &pose(lo), out);
+        lo
     }
 
     /// A point blended between its links' rigid motions.
@@ -239,7 +270,7 @@ impl Deformation {
                     .map(|f| f.p.distance(x))
                     .fold(f64::INFINITY, f64::min);
                 if near <= 1.5 * held.radii.iter().copied().fold(0.0, f64::max) {
-                    return moved(&bound, x, &frames[h]);
+                    return moved(&bound, x, &frames[h]).0;
                 }
             }
         }

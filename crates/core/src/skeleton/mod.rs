@@ -10,11 +10,15 @@
 //! skeleton, a Gaussian blend of the links' motions. No system is solved: a frame is one
 //! pass over the vertices, so half a million points follow a drag.
 //!
-//! Not built: §5.5's local self-intersection avoidance. The thesis' rule (turn frame `k`
-//! until the planes of every `j < k` meet outside both circles) and a neighbours-only
-//! angle limit were both tried on a bar of radius 0.2 bent within 0.1: they made more
-//! crossing triangle pairs than doing nothing (428 and 304 against 125 and 161), because
-//! frames turned away from the tangent squash the slabs the curve runs across.
+//! Local self-intersection avoidance (§5.5) takes the form the thesis itself proposes in
+//! §8.2, "block user interactions that would cause intersections": a change that would turn
+//! a slab inside out (its two planes meeting on a vertex's near side, a bend tighter than
+//! the part is thick) is held at the largest fraction that folds nothing
+//! ([`Deformation::unfolded`]). The thesis' own rule (turn frame `k` until the planes of
+//! every `j < k` meet outside both circles of influence) and a neighbours-only angle limit
+//! were both tried on a bar of radius 0.2 bent within 0.1: they made more crossing triangle
+//! pairs than doing nothing (428 and 304 against 125 and 161), because frames turned away
+//! from the tangent squash the slabs the curve runs across.
 //!
 //! One idea per file:
 //! 1. [`shape`]: what is deformed (positions, triangles if any) and who is next to whom;

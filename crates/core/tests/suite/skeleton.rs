@@ -12,6 +12,7 @@ use sketchmesh_core::document::{
     AsImported, CommandError, CurveHandleInput, DeleteHandleInput, Document, Editor,
     HandleEditInput, HandleTarget, LinkHandlesInput, Model, Op, PointCloud,
 };
+use sketchmesh_core::geometry::Bvh;
 use sketchmesh_core::io::{ImportFile, Info, import_gltf, inspect_gltf, write_glb};
 use sketchmesh_core::mesh::{Mesh, TriSoup, make_manifold, primitives};
 use sketchmesh_core::skeleton::{
@@ -429,6 +430,52 @@ fn a_skeleton_handle_runs_along_the_middle_of_a_bar() {
             "{p} is off the axis of a bar of radius 0.2"
         );
     }
+}
+
+#[test]
+fn a_bend_tighter_than_the_part_is_held_before_it_folds_through_itself() {
+    let soup = bar();
+    let mesh = Mesh::from_soup(&soup).unwrap();
+    let shape = shape(&soup);
+    let handle = HandleCurve::new(
+        (0..5)
+            .map(|k| DVec3::new(-0.8 + 0.4 * f64::from(k), 0.0, 0.0))
+            .collect(),
+        false,
+    );
+    // A right angle turned within 0.1 on a bar of radius 0.2.
+    let pose = |f: f64| {
+        let mut pose = handle.clone();
+        pose.points[3] = handle.points[3].lerp(DVec3::new(0.1, 0.1, 0.0), f);
+        pose.points[4] = handle.points[4].lerp(DVec3::new(0.1, 0.5, 0.0), f);
+        vec![pose]
+    };
+    let deformation = Deformation::new(
+        &shape,
+        &[Mover {
+            rest: &handle,
+            links: &[],
+        }],
+    )
+    .unwrap();
+    let crossings = |positions: &[DVec3]| {
+        let mut bent = mesh.clone();
+        bent.positions_mut().copy_from_slice(positions);
+        Bvh::new(&bent).crossing_faces(&bent, |_| true).len()
+    };
+    let mut out = vec![DVec3::ZERO; soup.positions.len()];
+    let folded = deformation.apply_into(&soup.positions, &pose(1.0), &mut out);
+    assert!(
+        folded > 0 && crossings(&out) > 0,
+        "the whole bend should fold ({folded})"
+    );
+    let kept = deformation.unfolded(&soup.positions, pose, &mut out);
+    assert!(kept > 0.3 && kept < 1.0, "{kept} of the bend kept");
+    assert_eq!(
+        crossings(&out),
+        0,
+        "held at {kept}, the bar still crosses itself"
+    );
 }
 
 #[test]

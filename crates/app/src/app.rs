@@ -932,10 +932,18 @@ impl SketchApp {
             hint_ui(ui, viewport, hint);
         }
         self.gizmo_ui(ui, viewport);
+        self.curve_handles_ui(ui, viewport);
         self.region_handles_ui(ui, viewport);
         self.region_profile_ui(ui, viewport);
         if let Some(amount) = self.edit.as_ref().and_then(feature_amount) {
             hint_ui(ui, viewport, &amount);
+        }
+        if let Some(kept) = self.edit.as_ref().and_then(Edit::limited_move) {
+            let said = format!(
+                "Held at {:.0}% of the move: more would fold the part through itself",
+                100.0 * kept
+            );
+            hint_ui(ui, viewport, &said);
         }
         let picked = self
             .tools
@@ -947,6 +955,25 @@ impl SketchApp {
         for (points, confident, croppable) in picked.into_iter().chain(outline) {
             outline_ui(ui, viewport, points, confident, croppable);
         }
+    }
+
+    /// The curve handles, in the handles tool, at the pose a drag previews.
+    fn curve_handles_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
+        if self.tools.mode() != Mode::Handles {
+            return;
+        }
+        let shared = self.shared.borrow();
+        let camera = shared.camera.camera();
+        let doc = self
+            .edit
+            .as_ref()
+            .map_or(shared.editor.document(), Edit::document);
+        let dragged = self.edit.as_ref().and_then(|edit| match edit.op() {
+            Op::HandleEdit(input) => Some(input),
+            _ => None,
+        });
+        let selected = self.tools.selected_handle_point();
+        panels::curve_handles::curve_handles_ui(ui, viewport, doc, &camera, dragged, selected);
     }
 
     /// The region tool's handles: per handle three axes (red along the curve, green along

@@ -122,6 +122,13 @@ pub fn toolbar_ui(
                 }
                 ui.separator();
             }
+            Mode::Handles => {
+                let output = tools.handles_ui(ui);
+                if output != ToolOutput::None {
+                    action = Some(Action::Tool(Box::new(output)));
+                }
+                ui.separator();
+            }
             Mode::Move => {
                 let output = tools.arrange_ui(ui, editor.document());
                 if output != ToolOutput::None {

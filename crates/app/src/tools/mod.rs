@@ -5,13 +5,14 @@
 //! whose op previews while it is drawn (pull, over-sketch) begins it as a gesture
 //! ([`ToolOutput::Begin`]) and feeds it samples; the app runs it as it runs every edit.
 //! [`ToolSet`] holds one tool per [`Mode`] (FiberMesh's five tools, over-sketch, feature
-//! sketching, region editing and optimize) and routes events to the active one.
+//! sketching, region editing, curve handles and optimize) and routes events to the active one.
 
 pub mod arrange;
 mod context;
 pub mod curve_stroke;
 pub mod draw;
 pub mod feature;
+pub mod handles;
 pub mod mode;
 pub mod optimize;
 pub mod oversketch;
@@ -32,6 +33,7 @@ pub use mode::Mode;
 use arrange::ArrangeTool;
 use curve_stroke::CurveStrokeTool;
 use feature::FeatureTool;
+use handles::HandlesTool;
 pub use optimize::Mark;
 use optimize::OptimizeTool;
 pub use oversketch::OversketchSettings;
@@ -51,6 +53,7 @@ pub struct ToolSet {
     optimize: OptimizeTool,
     feature: FeatureTool,
     region: RegionTool,
+    handles: HandlesTool,
     arrange: ArrangeTool,
 }
 
@@ -107,6 +110,19 @@ impl ToolSet {
         }
     }
 
+    /// The handles tool's panel; what the user did there.
+    pub fn handles_ui(&mut self, ui: &mut egui::Ui) -> ToolOutput {
+        self.handles.settings_ui(ui)
+    }
+
+    /// The handles tool's selected control point, while it is the active tool.
+    pub fn selected_handle_point(&self) -> Option<(u32, usize)> {
+        match self.mode {
+            Mode::Handles => self.handles.selected(),
+            _ => None,
+        }
+    }
+
     /// The move tool's panel; what the user did there.
     pub fn arrange_ui(&mut self, ui: &mut egui::Ui, doc: &Document) -> ToolOutput {
         self.arrange.settings_ui(ui, doc)
@@ -140,6 +156,7 @@ impl ToolSet {
     pub fn gesture_refused(&mut self) {
         self.feature.cancel();
         self.region.cancel();
+        self.handles.cancel();
     }
 
     /// Confirms what the active tool holds open (Enter): an optimization's preview, a region's
@@ -175,6 +192,7 @@ impl ToolSet {
             Mode::Optimize => self.optimize.hint(),
             Mode::Feature => self.feature.hint(),
             Mode::Region => self.region.hint(),
+            Mode::Handles => self.handles.hint(doc),
             Mode::Move => self.arrange.hint(doc),
             _ => None,
         }
@@ -188,6 +206,7 @@ impl ToolSet {
         self.optimize.cancel();
         self.feature.cancel();
         self.region.cancel();
+        self.handles.cancel();
         self.arrange.cancel();
         self.sketch.cancel()
     }
@@ -204,6 +223,7 @@ impl ToolSet {
             Mode::Optimize => self.optimize.on_event(event, view, doc),
             Mode::Feature => self.feature.on_event(event, view, doc),
             Mode::Region => self.region.on_event(event, view, doc),
+            Mode::Handles => self.handles.on_event(event, view, doc),
             Mode::Move => self.arrange.on_event(event, view, doc),
         }
     }
@@ -227,6 +247,7 @@ impl ToolSet {
             Mode::Oversketch => self.oversketch.preview(),
             Mode::Feature => self.feature.preview(),
             Mode::Region => self.region.preview(),
+            Mode::Handles => self.handles.preview(),
             Mode::Move => None,
         }
     }

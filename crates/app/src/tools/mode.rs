@@ -1,5 +1,6 @@
 //! The tool modes: FiberMesh's five tools (sketch, deform, erase, type change, rub;
-//! thesis §3.2), over-sketch, feature sketching, region editing, optimize and moving models, with their
+//! thesis §3.2), over-sketch, feature sketching, region editing, curve handles, optimize and moving
+//! models, with their
 //! toolbar labels and keys.
 
 use egui::Key;
@@ -27,13 +28,15 @@ pub enum Mode {
     Feature,
     /// Move a region drawn around a reference curve, with a fall-off (Bujans).
     Region,
+    /// Curve handles and skeletons on any model or point cloud (Blanco).
+    Handles,
     /// Select a model and move, turn or scale it; delete or duplicate it.
     Move,
 }
 
 impl Mode {
     /// Every mode, in toolbar order.
-    pub const ALL: [Mode; 10] = [
+    pub const ALL: [Mode; 11] = [
         Mode::Sketch,
         Mode::Pull,
         Mode::Erase,
@@ -42,6 +45,7 @@ impl Mode {
         Mode::Oversketch,
         Mode::Feature,
         Mode::Region,
+        Mode::Handles,
         Mode::Optimize,
         Mode::Move,
     ];
@@ -58,6 +62,7 @@ impl Mode {
             Mode::Optimize => "Optimize",
             Mode::Feature => "Feature",
             Mode::Region => "Region",
+            Mode::Handles => "Handles",
             Mode::Move => "Move",
         }
     }
@@ -74,6 +79,7 @@ impl Mode {
             Mode::Optimize => Key::M,
             Mode::Feature => Key::D,
             Mode::Region => Key::L,
+            Mode::Handles => Key::J,
             Mode::Move => Key::V,
         }
     }
@@ -97,6 +103,9 @@ impl Mode {
             }
             Mode::Region => {
                 "Draw a curve on a model and a loop around it, then drag: the region follows, fading out"
+            }
+            Mode::Handles => {
+                "Draw along a part of any model or point cloud, then drag, twist or scale its dots"
             }
             Mode::Move => "Tap a model, then drag it, its ring or its square: move, turn, scale",
         }

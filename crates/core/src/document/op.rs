@@ -12,7 +12,7 @@ use crate::deform::HandleFit;
 use crate::feature::FeatureKind;
 use crate::optimize::OptimizeParams;
 use crate::oversketch::{ManualHandle, OversketchRoi, SOFT_FIT_WEIGHT};
-use crate::skeleton::HandleKind;
+use crate::skeleton::{HandleKind, PointEdit};
 
 /// One session op. JSON is internally tagged: `{"op":"stroke",...}`, `{"op":"undo"}`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -389,6 +389,19 @@ pub struct HandleEditInput {
 
 fn default_spread() -> usize {
     1
+}
+
+impl HandleEditInput {
+    /// The change at the control point, its twist in radians.
+    pub fn change(&self) -> PointEdit {
+        PointEdit {
+            point: self.point,
+            translate: self.translate.map(glam::DVec3::from),
+            twist: self.twist_deg.map(f64::to_radians),
+            scale: self.scale,
+            spread: self.spread,
+        }
+    }
 }
 
 /// A `link_handles` op: `{"a": [h, k], "b": [h2, k2]}`, control point `k` of handle `h`

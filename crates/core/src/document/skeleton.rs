@@ -129,8 +129,13 @@ pub(super) struct HandleDrag {
     target: HandleTarget,
     /// The moving handles' places in the document, and their curves before.
     movers: Vec<(usize, HandleCurve)>,
+    /// Each mover's links, as the deformation takes them.
+    links: Vec<Vec<Link>>,
+    /// The target's points before the edit (empty until the first step).
     rest: Vec<DVec3>,
-    deformation: Deformation,
+    /// The binding, made at the first step: at half a million points it is longer than a
+    /// frame, so the pointer-down that begins the drag does not wait for it.
+    deformation: Option<Deformation>,
     /// The target's points at the last pose shown.
     moved: Vec<DVec3>,
     /// The mesh's vertices at that pose, for a model kept as imported.
@@ -145,9 +150,9 @@ pub(super) struct HandleDrag {
 }
 
 impl HandleDrag {
-    /// Binds the target of `input`'s handle to the handles the edit moves.
+    /// Finds the handles the edit of `input` moves; the first step binds the target to them.
     ///
-    /// Errors: no such handle or control point; no region.
+    /// Errors: no such handle or control point.
     pub(super) fn start(doc: &Document, input: &HandleEditInput) -> Result<Self, CommandError> {
         let index = handle_index(doc, input.handle)?;
         let handle = &doc.handles[index];
@@ -179,29 +184,37 @@ impl HandleDrag {
                     .collect()
             })
             .collect();
-        let target = handle.target;
-        let rest = points_of(doc, target);
-        let shape = Shape {
-            positions: &rest,
-            triangles: triangles_of(doc, target),
-        };
-        let bound: Vec<Mover> = movers
-            .iter()
-            .zip(&links)
-            .map(|((_, curve), links)| Mover { rest: curve, links })
-            .collect();
-        let deformation = Deformation::new(&shape, &bound)?;
         Ok(HandleDrag {
-            target,
-            moved: rest.clone(),
+            target: handle.target,
+            movers,
+            links,
+            rest: Vec::new(),
+            deformation: None,
+            moved: Vec::new(),
             moved_mesh: Vec::new(),
             shown: None,
             limited: None,
             cloud_preview: None,
-            movers,
-            rest,
-            deformation,
         })
+    }
+
+    /// The binding of the target to the moving handles, made on first use.
+    ///
+    /// Errors: a handle with no region.
+    fn bound(&mut self, doc: &Document) -> Result<&Deformation, CommandError> {
+        if self.deformation.is_none() {
+            self.rest = points_of(doc, self.target);
+            self.moved = self.rest.clone();
+            let shape = Shape {
+                positions: &self.rest,
+                triangles: triangles_of(doc, self.target),
+            };
+            let movers: Vec<Mover> = (self.movers.iter().zip(&self.links))
+                .map(|((_, curve), links)| Mover { rest: curve, links })
+                .collect();
+            self.deformation = Some(Deformation::new(&shape, &movers)?);
+        }
+        Ok(self.deformation.as_ref().expect("bound above"))
     }
 
     /// The moving handles' curves after `input`, its move taken `fraction` of the way.
@@ -265,8 +278,11 @@ impl HandleDrag {
         input: &HandleEditInput,
     ) -> Result<Vec<HandleCurve>, CommandError> {
         Self::poses(&self.movers, doc, input, 1.0)?;
-        let movers = &self.movers;
-        let fraction = self.deformation.unfolded(
+        self.bound(doc)?;
+        let (Some(deformation), movers) = (&self.deformation, &self.movers) else {
+            unreachable!("bound above");
+        };
+        let fraction = deformation.unfolded(
             &self.rest,
             |f| Self::poses(movers, doc, input, f).unwrap_or_default(),
             &mut self.moved,
@@ -315,6 +331,9 @@ impl HandleDrag {
         input: &HandleEditInput,
     ) -> Result<Document, CommandError> {
         let poses = self.pose(doc, input)?;
+        let Some(deformation) = &self.deformation else {
+            unreachable!("posing binds");
+        };
         let mut next = doc.clone();
         write_points(&mut next, self.target, &self.moved);
         for (h, handle) in next.handles.iter_mut().enumerate() {
@@ -325,7 +344,7 @@ impl HandleDrag {
                     .curve
                     .points
                     .iter()
-                    .map(|&p| self.deformation.move_point(p, &poses))
+                    .map(|&p| deformation.move_point(p, &poses))
                     .collect();
                 Arc::make_mut(handle).curve.points = carried;
             }
@@ -339,13 +358,7 @@ fn point_edit(input: &HandleEditInput) -> Result<PointEdit, CommandError> {
     if input.translate.is_none() && input.twist_deg.is_none() && input.scale.is_none() {
         return Err(CommandError::NothingToEdit);
     }
-    Ok(PointEdit {
-        point: input.point,
-        translate: input.translate.map(DVec3::from),
-        twist: input.twist_deg.map(f64::to_radians),
-        scale: input.scale,
-        spread: input.spread,
-    })
+    Ok(input.change())
 }
 
 /// Writes moved points into the target of a copy of the document.

@@ -969,7 +969,7 @@ impl SketchApp {
             .as_ref()
             .map_or(shared.editor.document(), Edit::document);
         let dragged = self.edit.as_ref().and_then(|edit| match edit.op() {
-            Op::HandleEdit(input) => Some(input),
+            Op::HandleEdit(input) => Some((input, edit.limited_move().unwrap_or(1.0))),
             _ => None,
         });
         let selected = self.tools.selected_handle_point();

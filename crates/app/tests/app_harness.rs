@@ -519,3 +519,60 @@ fn a_region_shows_its_falloff_as_gray_levels_equal_to_the_weights() {
     let warm = |p: &[u8; 4]| i32::from(p[0]) - i32::from(p[2]) > 10 && p[0] > 120;
     assert!(clay.iter().any(warm), "outside the region: {clay:?}");
 }
+
+/// Blanco's handles in the app: a stroke across a shape makes a handle (drawn as a curve
+/// with dots), a drag on its last dot bends the shape while the pointer is down, and the
+/// release commits what replaying the session gives.
+#[test]
+fn a_curve_handle_drawn_and_dragged_in_the_app_is_its_session_replayed() {
+    let mut h = harness();
+    h.run();
+    let center = pos2(450.0, 340.0);
+    draw_ellipse(&mut h, center);
+    h.key_press(egui::Key::J);
+    h.run();
+    let bare = h.render().expect("render");
+    let (from, to) = (center - vec2(120.0, 0.0), center + vec2(120.0, 0.0));
+    trace(
+        &mut h,
+        (0..=40)
+            .map(|i| from + (to - from) * (i as f32 / 40.0))
+            .collect(),
+    );
+    h.run();
+    let handles =
+        |h: &Harness<'_, SketchApp>| h.state().shared().borrow().editor.document().handles.len();
+    assert_eq!(handles(&h), 1, "the stroke made no handle");
+    let with_handle = h.render().expect("render");
+    assert!(
+        changed_pixels(&bare, &with_handle) > 300,
+        "the handle is not drawn"
+    );
+    // Grab the last dot (the stroke's end) and drag it up.
+    h.event(Event::PointerMoved(to));
+    press(&h, to, PointerButton::Primary, true);
+    h.step();
+    for i in 1..=10 {
+        h.event(Event::PointerMoved(to - vec2(0.0, 8.0 * i as f32)));
+        h.step();
+    }
+    let dragging = h.render().expect("render");
+    save(&dragging, "curve-handle-drag");
+    let ops = |h: &Harness<'_, SketchApp>| h.state().shared().borrow().editor.ops().len();
+    assert_eq!(ops(&h), 2, "nothing committed while dragging");
+    assert!(
+        changed_pixels(&with_handle, &dragging) > 500,
+        "the drag's preview did not bend the shape"
+    );
+    press(&h, to - vec2(0.0, 80.0), PointerButton::Primary, false);
+    h.run();
+    let last = h.state().shared().borrow().editor.ops().last().cloned();
+    let Some(sketchmesh_core::document::Op::HandleEdit(input)) = last else {
+        panic!("the last op is {last:?}");
+    };
+    assert!(input.translate.is_some_and(|t| t[1] > 0.0), "{input:?}");
+    assert!(
+        replays_bit_for_bit(&h),
+        "the handle edit committed in the app differs from apply"
+    );
+}

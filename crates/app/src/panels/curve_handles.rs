@@ -17,7 +17,7 @@ pub fn curve_handles_ui(
     viewport: egui::Rect,
     doc: &Document,
     camera: &Camera,
-    dragged: Option<&HandleEditInput>,
+    dragged: Option<(&HandleEditInput, f64)>,
     selected: Option<(u32, usize)>,
 ) {
     let size = DVec2::new(viewport.width().into(), viewport.height().into());
@@ -28,8 +28,8 @@ pub fn curve_handles_ui(
     };
     let painter = ui.painter();
     for handle in &doc.handles {
-        let curve = match dragged.filter(|d| d.handle == handle.id) {
-            Some(edit) => posed(&handle.curve, edit),
+        let curve = match dragged.filter(|d| d.0.handle == handle.id) {
+            Some((edit, kept)) => posed(&handle.curve, edit, kept),
             None => handle.curve.clone(),
         };
         let colour = match handle.kind {
@@ -62,9 +62,10 @@ pub fn curve_handles_ui(
     }
 }
 
-/// A handle's curve at the pose a drag previews (as the op will make it, links aside).
-fn posed(curve: &HandleCurve, edit: &HandleEditInput) -> HandleCurve {
-    curve
-        .edited(&edit.change())
-        .unwrap_or_else(|_| curve.clone())
+/// A handle's curve at the pose a drag previews, its move held at `kept` of the way (as the
+/// op will make it, links aside).
+fn posed(curve: &HandleCurve, edit: &HandleEditInput, kept: f64) -> HandleCurve {
+    let mut change = edit.change();
+    change.translate = change.translate.map(|t| t * kept);
+    curve.edited(&change).unwrap_or_else(|_| curve.clone())
 }

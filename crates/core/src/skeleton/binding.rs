@@ -28,6 +28,11 @@ pub struct Bound {
     gamma: f64,
     /// `α / d`, or NaN where the slab has no width at the foot (then `alpha` is used).
     ratio: f64,
+    /// Whether a fold here counts: the slab is at least half its step wide at the foot at
+    /// rest. Where the planes nearly meet already (the inside of a part bent at
+    /// rest, a surface curve hugging a thick blob), the smallest change would turn it over
+    /// without any new fold in the surface.
+    is_watched: bool,
     alpha: f64,
     /// Where the rest frames put it.
     rest: DVec3,
@@ -77,6 +82,7 @@ pub fn bind_point(frames: &[Frame], vertex: u32, x: DVec3) -> Bound {
         beta: local.y,
         gamma: local.z,
         ratio,
+        is_watched: width > 0.5 * from.p.distance(to.p),
         alpha: local.x,
         rest: DVec3::ZERO,
     };
@@ -102,7 +108,10 @@ fn place(bound: &Bound, frames: &[Frame]) -> (DVec3, bool) {
         return (foot + bound.alpha * from.u, false);
     }
     let width = width_at(from, to, foot);
-    (foot + bound.ratio * width * from.u, width <= 0.0)
+    (
+        foot + bound.ratio * width * from.u,
+        bound.is_watched && width <= 0.0,
+    )
 }
 
 /// Where `frames` move a bound point that was at `x`, and whether its slab turned inside

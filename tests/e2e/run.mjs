@@ -1075,6 +1075,60 @@ test('region (L): a curve on a shape, a loop around it, then a drag up moves the
     assert.deepEqual(fresh.errors, [], 'console errors while editing a region');
 }));
 
+test('bend (J): a pen stroke across a shape makes a curve handle with dots; dragging its last dot up bends that end live, the other end stays; release commits one handle_edit; undo restores', () => withShape(async ({ fresh, created }) => {
+    const c = ELLIPSE.c;
+    const lastOp = () => lastOpOf(fresh.page);
+    await until(lastOp, (o) => o.op === 'create', 15_000);
+    const original = await glbOf(fresh.page);
+    await fresh.page.keyboard.press('j');
+    await frames(fresh.page, 3);
+    const before = await screenshot(fresh.page, out('handles-before.png'));
+    const from = { x: c.x - 120, y: c.y };
+    const to = { x: c.x + 120, y: c.y };
+    await penStroke(fresh.cdp, line(from, to, 40).map((p) => ({ ...p, force: 0.5 })));
+    const made = await until(lastOp, (o) => o.op === 'curve_handle', 10_000);
+    assert.equal(made.op, 'curve_handle', 'the stroke makes a handle');
+    assert.equal(made.control_points, 4);
+    await frames(fresh.page, 3);
+    const drawn = await screenshot(fresh.page, out('handles-drawn.png'));
+    const onCurve = line(from, to, 60).map((p) => ({ x: Math.round(p.x), y: Math.round(p.y) }));
+    const shown = changedFraction(before, drawn, onCurve, { radius: 2, threshold: 40 });
+    assert.ok(shown > 0.5, `the handle is drawn over the shape (${shown})`);
+    // The drag, held for a look at the live preview.
+    const pen = { pointerType: 'pen', button: 'left' };
+    const drag = line(to, { x: to.x, y: to.y - 60 }, 12);
+    await fresh.cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', x: drag[0].x, y: drag[0].y, buttons: 1, clickCount: 1, force: 0.5, ...pen });
+    for (const p of drag.slice(1)) {
+      await sleep(20);
+      await fresh.cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', x: p.x, y: p.y, buttons: 1, force: 0.5, ...pen });
+    }
+    await frames(fresh.page, 4);
+    const dragging = await screenshot(fresh.page, out('handles-dragging.png'));
+    const last = drag[drag.length - 1];
+    await fresh.cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', x: last.x, y: last.y, buttons: 0, clickCount: 1, force: 0, ...pen });
+    const op = await until(lastOp, (o) => o.op === 'handle_edit', 10_000);
+    assert.equal(op.op, 'handle_edit', 'the release commits the drag');
+    assert.equal(op.point, 3, 'the last dot was dragged');
+    assert.ok(op.translate[1] > 0, `dragged up, moved up (${op.translate})`);
+    assert.deepEqual(await api(fresh.page, 'stats'), created, 'same vertices, triangles and curves');
+    await frames(fresh.page, 3);
+    const after = await screenshot(fresh.page, out('handles.png'));
+    // The rim by the dragged end, and the far end's rim.
+    const rim = (sign) => onEllipse(0, 2 * Math.PI, 180).filter((p) => sign * (p.x - c.x) > 140).map((p) => ({ x: Math.round(p.x), y: Math.round(p.y) }));
+    const moved = changedFraction(before, after, rim(1), { radius: 0, threshold: 40 });
+    const live = changedFraction(before, dragging, rim(1), { radius: 0, threshold: 40 });
+    const still = changedFraction(before, after, rim(-1), { radius: 0, threshold: 40 });
+    console.log(`    handles: ${(100 * moved).toFixed(1)}% of the dragged end's rim changed (${(100 * live).toFixed(1)}% mid-drag), ${(100 * still).toFixed(2)}% of the other end's`);
+    assert.ok(moved > 0.15, `the dragged end moves (${moved})`);
+    assert.ok(live > 0.15, `the drag previews live (${live})`);
+    assert.ok(still < 0.02, `the other end stays (${still})`);
+    await fresh.page.keyboard.press('Control+z');
+    await fresh.page.keyboard.press('Control+z');
+    await frames(fresh.page, 3);
+    assert.deepEqual(await glbOf(fresh.page), original, 'undo restores the shape bit for bit');
+    assert.deepEqual(fresh.errors, [], 'console errors while using handles');
+}));
+
 test('region handles: with Handles picked, the curves get 3-axis handles; dragging the middle one up bends the region with its ends pinned, and Enter keeps the drags as one step', () => withShape(async ({ fresh, created }) => {
     const c = ELLIPSE.c;
     const lastOp = () => lastOpOf(fresh.page);

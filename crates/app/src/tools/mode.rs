@@ -56,13 +56,13 @@ impl Mode {
             Mode::Sketch => "Sketch",
             Mode::Pull => "Pull",
             Mode::Erase => "Erase",
-            Mode::CurveType => "Sharp/smooth",
+            Mode::CurveType => "Sharp",
             Mode::Rub => "Rub",
             Mode::Oversketch => "Over-sketch",
             Mode::Optimize => "Optimize",
             Mode::Feature => "Feature",
             Mode::Region => "Region",
-            Mode::Handles => "Handles",
+            Mode::Handles => "Bend",
             Mode::Move => "Move",
         }
     }

@@ -679,6 +679,45 @@ try {
     console.error(`region: ${JSON.stringify(region)}`);
   }
 
+  // Curve handles (Blanco) on the 500,002-vertex bar (SKETCHMESH_BEND_FIXTURE): a stroke
+  // along it makes a handle over all of it (place: its op), then a pen drag on its last dot
+  // bends it. The first drag step binds every vertex to its slab; every later one rebuilds
+  // every vertex from new frames.
+  let bend = null;
+  const barPath = process.env.SKETCHMESH_BEND_FIXTURE;
+  if (barPath && existsSync(barPath)) {
+    // 24 MB, handed over as base64 text (as an array of numbers it exhausts Node's heap).
+    await page.evaluate((base64) => {
+      const text = atob(base64);
+      const data = new Uint8Array(text.length);
+      for (let i = 0; i < text.length; i++) data[i] = text.charCodeAt(i);
+      window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
+      window.sketchmesh.loadGlb(data, 'bar.glb');
+      window.sketchmesh.timings();
+    }, readFileSync(barPath).toString('base64'));
+    await sleep(1000);
+    await page.keyboard.press('f');
+    await page.keyboard.press('j');
+    await sleep(300);
+    const r = await page.evaluate(() => {
+      const b = document.querySelector('canvas').getBoundingClientRect();
+      return { left: b.left, width: b.width, y: b.top + (b.height + 80) / 2 + 20 };
+    });
+    const from = { x: r.left + 0.35 * r.width, y: r.y };
+    const to = { x: r.left + 0.65 * r.width, y: r.y };
+    await penStroke(cdp, Array.from({ length: 41 }, (_, i) => ({ x: from.x + ((to.x - from.x) * i) / 40, y: r.y, force: 0.5 })), 8);
+    await page.waitForFunction(() => JSON.parse(window.sketchmesh.session()).ops.at(-1)?.op === 'curve_handle', null, { timeout: 30_000, polling: 50 })
+      .catch(() => {});
+    const placed = (await api(page, 'timings')).curve_handle;
+    const frames = await timedDrag(to, 'bench-bend-drag.png');
+    await page.waitForFunction(() => JSON.parse(window.sketchmesh.session()).ops.at(-1)?.op === 'handle_edit', null, { timeout: 60_000, polling: 50 })
+      .catch(() => {});
+    bend = { vertices: (await api(page, 'stats')).vertices, place_ms: round(placed?.finish_ms.at(-1) ?? null), ...(await dragReport('handle_edit', frames)) };
+    console.error(`bend: ${JSON.stringify(bend)}`);
+  } else {
+    console.error(`WARNING: the bend fixture (${barPath}) is missing; the bend timing is skipped`);
+  }
+
   const autosave = await autosaveBench();
   console.error(`autosave: ${JSON.stringify(autosave)}`);
   const gizmo = await gizmoBench();
@@ -707,6 +746,7 @@ try {
     optimize,
     feature,
     region,
+    bend,
     autosave,
     gizmo,
   };

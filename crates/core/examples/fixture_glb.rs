@@ -3,7 +3,9 @@
 //!   control curve, whose curves the page pulls (the page creates shapes at its default
 //!   resolution only);
 //! - `bumpy-torus OUT.glb`: the 36,864-vertex bumpy torus the page over-sketches
-//!   ([`primitives::bumpy_torus`], as in `benches/oversketch.rs`).
+//!   ([`primitives::bumpy_torus`], as in `benches/oversketch.rs`);
+//! - `bar OUT.glb`: the 500,002-vertex bar the page bends with a curve handle (as in
+//!   `benches/skeleton.rs`).
 //!
 //! Run: `cargo run --release -p sketchmesh-core --example fixture_glb -- fibermesh 10000 out.glb`
 
@@ -17,8 +19,7 @@ use sketchmesh_core::mesh::primitives;
 #[path = "../benches/common/fibermesh_shape.rs"]
 mod fibermesh_shape;
 
-const USAGE: &str =
-    "usage: fixture_glb fibermesh VERTICES OUT.glb | fixture_glb bumpy-torus OUT.glb";
+const USAGE: &str = "usage: fixture_glb fibermesh VERTICES OUT.glb | fixture_glb bumpy-torus OUT.glb | fixture_glb bar OUT.glb";
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -26,9 +27,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         [kind, vertices, path] if kind == "fibermesh" => {
             (fibermesh_shape::ellipse_document(vertices.parse()?)?, path)
         }
-        [kind, path] if kind == "bumpy-torus" => {
+        [kind, path] if kind == "bumpy-torus" || kind == "bar" => {
+            let mesh = match kind.as_str() {
+                "bar" => primitives::capsule(0.2, 1.0, 500, 1001),
+                _ => primitives::bumpy_torus(0.03, 384, 96),
+            };
             let model = Model {
-                mesh: primitives::bumpy_torus(0.03, 384, 96),
+                mesh,
                 ..Model::default()
             };
             let document = Document {

@@ -49,7 +49,7 @@ pub fn bench_command(workspace: &Workspace) -> anyhow::Result<()> {
     summary += &libigl;
 
     let web = steps.step("build-web", || build::build_web(workspace))?;
-    let (pulls, torus) = steps.step("fixtures", || bench_fixtures(workspace))?;
+    let (pulls, torus, bar) = steps.step("fixtures", || bench_fixtures(workspace))?;
     let server = steps.step("start server", || StaticServer::start(&workspace.dist(), 0))?;
     let page = steps.step("page bench", || {
         let out = Command::new("node")
@@ -59,6 +59,7 @@ pub fn bench_command(workspace: &Workspace) -> anyhow::Result<()> {
             .env("SKETCHMESH_GPU", "webgl2")
             .env("SKETCHMESH_PULL_FIXTURES", &pulls)
             .env("SKETCHMESH_OVERSKETCH_FIXTURE", &torus)
+            .env("SKETCHMESH_BEND_FIXTURE", &bar)
             .env(
                 "SKETCHMESH_OPTIMIZE_FIXTURE",
                 workspace.root.join(OPTIMIZE_SCAN),
@@ -256,7 +257,7 @@ const PULL_SIZES: [usize; 2] = [10_000, 40_000];
 /// The page bench's fixtures as .glb files (the page makes shapes at its default resolution
 /// only): FiberMesh shapes of [`PULL_SIZES`] vertices to pull, comma-separated, and the
 /// bumpy torus to over-sketch.
-fn bench_fixtures(workspace: &Workspace) -> anyhow::Result<(String, String)> {
+fn bench_fixtures(workspace: &Workspace) -> anyhow::Result<(String, String, String)> {
     let dir = workspace.target_dir.join("bench-fixtures");
     fs::create_dir_all(&dir).with_context(|| format!("creating {}", dir.display()))?;
     let fixture = |args: &[&str]| {
@@ -278,7 +279,9 @@ fn bench_fixtures(workspace: &Workspace) -> anyhow::Result<(String, String)> {
     }
     let torus = dir.join("bumpy-torus.glb").to_string_lossy().into_owned();
     fixture(&["bumpy-torus", &torus])?;
-    Ok((pulls.join(","), torus))
+    let bar = dir.join("bar.glb").to_string_lossy().into_owned();
+    fixture(&["bar", &bar])?;
+    Ok((pulls.join(","), torus, bar))
 }
 
 /// The scan the page bench optimizes (the shared test data, beside the repository; the page
@@ -419,6 +422,24 @@ fn page_table(page: &Value, wasm_gzip_size: u64) -> String {
             "region, frame while dragging, median",
             ms("/region/drag_frame_ms/p50"),
         ),
+        (
+            "bend (handle on a 500k bar), handle placed",
+            ms("/bend/place_ms"),
+        ),
+        (
+            "bend, first drag step (every vertex bound)",
+            ms("/bend/first_ms"),
+        ),
+        (
+            "bend, drag step (every vertex rebuilt), median",
+            ms("/bend/step_ms/p50"),
+        ),
+        ("bend, drag step, max", ms("/bend/step_ms/max")),
+        (
+            "bend, frame while dragging, median",
+            ms("/bend/drag_frame_ms/p50"),
+        ),
+        ("bend, release to committed", ms("/bend/apply_ms")),
         (
             "Move tool drag of 100k triangles, frame interval, median",
             ms("/gizmo/interval_ms/p50"),

@@ -128,10 +128,12 @@ impl ToolSet {
         self.arrange.settings_ui(ui, doc)
     }
 
-    /// Deletes what the active tool has selected (the Delete key): the move tool's model.
+    /// Deletes what the active tool has selected (the Delete key): the move tool's model, the
+    /// bend tool's handle.
     pub fn delete_selected(&mut self, doc: &Document) -> ToolOutput {
         match self.mode {
             Mode::Move => self.arrange.delete(doc),
+            Mode::Handles => self.handles.delete_selected(),
             _ => ToolOutput::None,
         }
     }

@@ -382,13 +382,20 @@ impl HandlesTool {
             egui::Button::new("Delete handle").min_size(size),
         );
         if delete
-            .on_hover_text("Remove the selected handle; the shape stays")
+            .on_hover_text("Remove the selected handle; the shape stays (Delete)")
             .clicked()
-            && let Some((handle, _)) = self.selected.take()
         {
-            return ToolOutput::Commit(Op::DeleteHandle(DeleteHandleInput { handle }));
+            return self.delete_selected();
         }
         ToolOutput::None
+    }
+
+    /// Removes the selected handle (its button, or the Delete key).
+    pub fn delete_selected(&mut self) -> ToolOutput {
+        match self.selected.take() {
+            Some((handle, _)) => ToolOutput::Commit(Op::DeleteHandle(DeleteHandleInput { handle })),
+            None => ToolOutput::None,
+        }
     }
 }
 

@@ -48,17 +48,22 @@ enum Stage {
     /// Drawing a stroke, or waiting for one.
     #[default]
     Idle,
-    /// Dragging control point `point` of handle `handle`, grabbed at `from` (viewport px).
-    Dragging {
-        handle: u32,
-        point: usize,
-        at: DVec3,
-        from: DVec2,
-        camera: Camera,
-        viewport: DVec2,
-    },
+    /// Dragging a control point.
+    Dragging(Grab),
     /// A tap on a control point is under way (link, select): the rest of it is ignored.
     Tapped,
+}
+
+/// A control point being dragged: control point `point` of handle `handle`, at `at` in the
+/// world, grabbed at `from` (viewport px) in the view of `camera` and `viewport`.
+#[derive(Clone, Copy, Debug)]
+struct Grab {
+    handle: u32,
+    point: usize,
+    at: DVec3,
+    from: DVec2,
+    camera: Camera,
+    viewport: DVec2,
 }
 
 /// The handles tool's state.
@@ -116,53 +121,18 @@ impl HandlesTool {
     pub fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
         match std::mem::take(&mut self.stage) {
             Stage::Idle => self.idle(event, view, doc),
-            Stage::Dragging {
-                handle,
-                point: k,
-                at,
-                from,
-                camera,
-                viewport,
-            } => {
-                let dragged = |s| {
-                    self.edit(
-                        handle,
-                        k,
-                        at,
-                        point(s, view).pos - from,
-                        &camera,
-                        viewport,
-                        point(s, view).pos,
-                    )
-                };
-                match event {
-                    ToolEvent::Move(s) => {
-                        let op = dragged(s);
-                        self.stage = Stage::Dragging {
-                            handle,
-                            point: k,
-                            at,
-                            from,
-                            camera,
-                            viewport,
-                        };
-                        ToolOutput::Revise(op)
-                    }
-                    ToolEvent::End(s) => ToolOutput::FinishWith(dragged(s)),
-                    ToolEvent::Cancel => ToolOutput::Cancel,
-                    ToolEvent::Begin(_) => {
-                        self.stage = Stage::Dragging {
-                            handle,
-                            point: k,
-                            at,
-                            from,
-                            camera,
-                            viewport,
-                        };
-                        ToolOutput::None
-                    }
+            Stage::Dragging(grab) => match event {
+                ToolEvent::Move(s) => {
+                    self.stage = Stage::Dragging(grab);
+                    ToolOutput::Revise(self.edit(&grab, point(s, view).pos))
                 }
-            }
+                ToolEvent::End(s) => ToolOutput::FinishWith(self.edit(&grab, point(s, view).pos)),
+                ToolEvent::Cancel => ToolOutput::Cancel,
+                ToolEvent::Begin(_) => {
+                    self.stage = Stage::Dragging(grab);
+                    ToolOutput::None
+                }
+            },
             Stage::Tapped => {
                 if matches!(event, ToolEvent::Move(_) | ToolEvent::Begin(_)) {
                     self.stage = Stage::Tapped;
@@ -187,7 +157,7 @@ impl HandlesTool {
                     return self.link_to(handle, k);
                 }
                 self.selected = Some((handle, k));
-                self.stage = Stage::Dragging {
+                let grab = Grab {
                     handle,
                     point: k,
                     at,
@@ -195,15 +165,8 @@ impl HandlesTool {
                     camera: view.camera,
                     viewport,
                 };
-                return ToolOutput::Begin(self.edit(
-                    handle,
-                    k,
-                    at,
-                    DVec2::ZERO,
-                    &view.camera,
-                    viewport,
-                    from,
-                ));
+                self.stage = Stage::Dragging(grab);
+                return ToolOutput::Begin(self.edit(&grab, from));
             }
         }
         let Some(input) = self.draw.capture(event, view) else {
@@ -240,22 +203,13 @@ impl HandlesTool {
         }
     }
 
-    /// The edit of control point `k` of `handle` (at `at` in the world) for a drag by
-    /// `offset` (CSS px, y down) to `to`.
-    #[allow(clippy::too_many_arguments)]
-    fn edit(
-        &self,
-        handle: u32,
-        k: usize,
-        at: DVec3,
-        offset: DVec2,
-        camera: &Camera,
-        viewport: DVec2,
-        to: DVec2,
-    ) -> Op {
+    /// The edit of the grabbed control point for a drag from where it was grabbed to `to`
+    /// (viewport px, y down).
+    fn edit(&self, grab: &Grab, to: DVec2) -> Op {
+        let offset = to - grab.from;
         let mut input = HandleEditInput {
-            handle,
-            point: k,
+            handle: grab.handle,
+            point: grab.point,
             translate: None,
             twist_deg: None,
             scale: None,
@@ -263,10 +217,10 @@ impl HandlesTool {
         };
         match self.drag_use {
             DragUse::Move | DragUse::Link => {
-                let moved = camera
-                    .point_on_plane_through(at, to, viewport)
-                    .unwrap_or(at);
-                input.translate = Some((moved - at).to_array());
+                let moved = (grab.camera)
+                    .point_on_plane_through(grab.at, to, grab.viewport)
+                    .unwrap_or(grab.at);
+                input.translate = Some((moved - grab.at).to_array());
             }
             DragUse::Twist => input.twist_deg = Some(offset.x * TWIST_DEG_PER_PX),
             DragUse::Scale => {
@@ -316,23 +270,22 @@ impl HandlesTool {
     /// does, and Delete.
     pub fn settings_ui(&mut self, ui: &mut egui::Ui) -> ToolOutput {
         let size = egui::vec2(36.0, 36.0);
-        for (kind, label, hint) in [
-            (
-                HandleKind::Surface,
-                "On surface",
-                "New handles lie on the surface under the stroke",
-            ),
-            (
-                HandleKind::Skeleton,
-                "Skeleton",
-                "New handles run inside, along the part's middle",
-            ),
-        ] {
-            let button = egui::Button::selectable(self.kind == kind, label).min_size(size);
-            if ui.add(button).on_hover_text(hint).clicked() {
-                self.kind = kind;
-            }
-        }
+        choice_ui(
+            ui,
+            &mut self.kind,
+            [
+                (
+                    HandleKind::Surface,
+                    "On surface",
+                    "New handles lie on the surface under the stroke",
+                ),
+                (
+                    HandleKind::Skeleton,
+                    "Skeleton",
+                    "New handles run inside, along the part's middle",
+                ),
+            ],
+        );
         if ui
             .add(egui::Button::new("−").min_size(size))
             .on_hover_text("Fewer control points")
@@ -357,25 +310,27 @@ impl HandlesTool {
             self.is_rigid = !self.is_rigid;
         }
         ui.separator();
-        for (drag_use, label, hint) in [
-            (DragUse::Move, "Move", "Dragging a dot moves it"),
-            (
-                DragUse::Twist,
-                "Twist",
-                "Dragging a dot sideways twists the part",
-            ),
-            (DragUse::Scale, "Scale", "Dragging a dot up widens the part"),
-            (
-                DragUse::Link,
-                "Link",
-                "Tap dots of two handles to link them into a skeleton",
-            ),
-        ] {
-            let button = egui::Button::selectable(self.drag_use == drag_use, label).min_size(size);
-            if ui.add(button).on_hover_text(hint).clicked() {
-                self.drag_use = drag_use;
-                self.selected = None;
-            }
+        let drag_use = self.drag_use;
+        choice_ui(
+            ui,
+            &mut self.drag_use,
+            [
+                (DragUse::Move, "Move", "Dragging a dot moves it"),
+                (
+                    DragUse::Twist,
+                    "Twist",
+                    "Dragging a dot sideways twists the part",
+                ),
+                (DragUse::Scale, "Scale", "Dragging a dot up widens the part"),
+                (
+                    DragUse::Link,
+                    "Link",
+                    "Tap dots of two handles to link them into a skeleton",
+                ),
+            ],
+        );
+        if self.drag_use != drag_use {
+            self.selected = None;
         }
         let delete = ui.add_enabled(
             self.selected.is_some(),
@@ -399,6 +354,21 @@ impl HandlesTool {
     }
 }
 
+/// Touch-sized buttons, one per choice, the current one selected; a press picks it.
+fn choice_ui<T: Copy + PartialEq, const N: usize>(
+    ui: &mut egui::Ui,
+    current: &mut T,
+    choices: [(T, &str, &str); N],
+) {
+    for (choice, label, hint) in choices {
+        let button =
+            egui::Button::selectable(*current == choice, label).min_size(egui::vec2(36.0, 36.0));
+        if ui.add(button).on_hover_text(hint).clicked() {
+            *current = choice;
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -411,49 +381,27 @@ mod tests {
         };
         let camera = Camera::default();
         let viewport = DVec2::new(800.0, 600.0);
-        let op = tool.edit(
-            0,
-            1,
-            DVec3::ZERO,
-            DVec2::new(0.0, -150.0),
-            &camera,
-            viewport,
-            DVec2::ZERO,
-        );
-        let Op::HandleEdit(input) = op else {
-            unreachable!()
-        };
-        assert_eq!(input.scale, Some([2.0, 2.0]));
-        tool.drag_use = DragUse::Twist;
-        let Op::HandleEdit(input) = tool.edit(
-            0,
-            1,
-            DVec3::ZERO,
-            DVec2::new(90.0, 0.0),
-            &camera,
-            viewport,
-            DVec2::ZERO,
-        ) else {
-            unreachable!()
-        };
-        assert_eq!(input.twist_deg, Some(45.0));
-        tool.drag_use = DragUse::Move;
         let centre = camera
             .screen_from_world(DVec3::ZERO, viewport)
             .unwrap()
             .truncate();
-        let Op::HandleEdit(input) = tool.edit(
-            0,
-            1,
-            DVec3::ZERO,
-            DVec2::ZERO,
-            &camera,
+        let grab = Grab {
+            handle: 0,
+            point: 1,
+            at: DVec3::ZERO,
+            from: centre,
+            camera,
             viewport,
-            centre + DVec2::new(50.0, 0.0),
-        ) else {
-            unreachable!()
         };
-        let t = DVec3::from(input.translate.unwrap());
+        let edit = |tool: &HandlesTool, offset: DVec2| match tool.edit(&grab, centre + offset) {
+            Op::HandleEdit(input) => input,
+            op => unreachable!("{op:?}"),
+        };
+        assert_eq!(edit(&tool, DVec2::new(0.0, -150.0)).scale, Some([2.0, 2.0]));
+        tool.drag_use = DragUse::Twist;
+        assert_eq!(edit(&tool, DVec2::new(90.0, 0.0)).twist_deg, Some(45.0));
+        tool.drag_use = DragUse::Move;
+        let t = DVec3::from(edit(&tool, DVec2::new(50.0, 0.0)).translate.unwrap());
         assert!(t.x > 0.0 && t.y.abs() < 1e-9, "{t}");
     }
 

@@ -280,11 +280,7 @@ impl SketchFeatureInput {
 
     /// The sketch's stroke part.
     pub fn stroke_input(&self) -> StrokeInput {
-        StrokeInput {
-            viewport: self.viewport,
-            camera: self.camera,
-            stroke: self.stroke.clone(),
-        }
+        StrokeInput::in_view(self.viewport, self.camera, &self.stroke)
     }
 }
 
@@ -356,11 +352,7 @@ fn default_control_points() -> usize {
 impl CurveHandleInput {
     /// The stroke part.
     pub fn stroke_input(&self) -> StrokeInput {
-        StrokeInput {
-            viewport: self.viewport,
-            camera: self.camera,
-            stroke: self.stroke.clone(),
-        }
+        StrokeInput::in_view(self.viewport, self.camera, &self.stroke)
     }
 }
 
@@ -460,11 +452,7 @@ pub struct HandleInput {
 impl RegionEditInput {
     /// The reference curve's stroke part.
     pub fn reference_input(&self) -> StrokeInput {
-        StrokeInput {
-            viewport: self.viewport,
-            camera: self.camera,
-            stroke: self.reference.clone(),
-        }
+        StrokeInput::in_view(self.viewport, self.camera, &self.reference)
     }
 }
 
@@ -640,28 +628,26 @@ pub struct StrokeInput {
 impl StrokeInput {
     /// The stroke part of an `add_curve` op.
     pub fn of_add_curve(input: &AddCurveInput) -> StrokeInput {
-        StrokeInput {
-            viewport: input.viewport,
-            camera: input.camera,
-            stroke: input.stroke.clone(),
-        }
+        StrokeInput::in_view(input.viewport, input.camera, &input.stroke)
     }
 
     /// The stroke part of an `oversketch` op.
     pub fn of_oversketch(input: &OversketchInput) -> StrokeInput {
-        StrokeInput {
-            viewport: input.viewport,
-            camera: input.camera,
-            stroke: input.stroke.clone(),
-        }
+        StrokeInput::in_view(input.viewport, input.camera, &input.stroke)
     }
 
     /// The stroke part of a `set_curve_type` op.
     pub fn of_curve_type(input: &CurveTypeInput) -> StrokeInput {
+        StrokeInput::in_view(input.viewport, input.camera, &input.stroke)
+    }
+
+    /// Samples `stroke` drawn in a viewport of size `viewport` with `camera`: the stroke part
+    /// of any op that keeps its view beside other fields.
+    pub fn in_view(viewport: [f64; 2], camera: Camera, stroke: &[[f64; 3]]) -> StrokeInput {
         StrokeInput {
-            viewport: input.viewport,
-            camera: input.camera,
-            stroke: input.stroke.clone(),
+            viewport,
+            camera,
+            stroke: stroke.to_vec(),
         }
     }
 

@@ -198,8 +198,16 @@ fn interpolate(values: &[f64], t: f64, control_points: usize) -> f64 {
 mod tests {
     use super::*;
 
-    fn flat(n: usize) -> (Vec<f64>, Vec<[f64; 2]>) {
-        (vec![0.0; n], vec![[1.0, 1.0]; n])
+    /// The rest frames of the untwisted, unscaled curve through `points`.
+    fn plain_frames(points: &[DVec3]) -> Vec<Frame> {
+        let (twist, scale) = (vec![0.0; points.len()], vec![[1.0, 1.0]; points.len()]);
+        rest_frames(
+            &Spline::new(points, false),
+            Shaping {
+                twist: &twist,
+                scale: &scale,
+            },
+        )
     }
 
     #[test]
@@ -210,14 +218,7 @@ mod tests {
             DVec3::new(1.5, 1.5, -0.4),
             DVec3::new(1.0, 2.5, 0.3),
         ];
-        let (twist, scale) = flat(4);
-        let frames = rest_frames(
-            &Spline::new(&points, false),
-            Shaping {
-                twist: &twist,
-                scale: &scale,
-            },
-        );
+        let frames = plain_frames(&points);
         for f in &frames {
             assert!((f.u.length() - 1.0).abs() < 1e-12 && (f.v.length() - 1.0).abs() < 1e-12);
             assert!(f.u.dot(f.v).abs() < 1e-12);
@@ -236,14 +237,7 @@ mod tests {
             DVec3::new(3.0, -0.5, 0.0),
             DVec3::new(5.0, 1.0, 0.0),
         ];
-        let (twist, scale) = flat(4);
-        let frames = rest_frames(
-            &Spline::new(&points, false),
-            Shaping {
-                twist: &twist,
-                scale: &scale,
-            },
-        );
+        let frames = plain_frames(&points);
         // Alg. 6 picks XZ for a mostly-x tangent: v is the plane normal ±z and stays so.
         for f in &frames {
             assert!(f.v.z.abs() > 1.0 - 1e-9, "{}", f.v);
@@ -253,20 +247,12 @@ mod tests {
     #[test]
     fn a_straight_curve_has_constant_frames_and_twist_turns_them_linearly() {
         let points = [DVec3::ZERO, DVec3::X, DVec3::X * 2.0];
-        let twist = [0.0, 0.0, 1.0];
-        let scale = [[1.0, 1.0]; 3];
-        let untwisted = rest_frames(
-            &Spline::new(&points, false),
-            Shaping {
-                twist: &[0.0; 3],
-                scale: &scale,
-            },
-        );
+        let untwisted = plain_frames(&points);
         let frames = rest_frames(
             &Spline::new(&points, false),
             Shaping {
-                twist: &twist,
-                scale: &scale,
+                twist: &[0.0, 0.0, 1.0],
+                scale: &[[1.0, 1.0]; 3],
             },
         );
         for (i, (a, b)) in untwisted.iter().zip(&frames).enumerate() {

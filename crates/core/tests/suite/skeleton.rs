@@ -72,8 +72,13 @@ fn handle_on(shape: &Shape, half: f64, kind: HandleKind, n: usize) -> HandleCurv
         .expect("no stroke across the middle lies over the object")
 }
 
+/// The binding of `shape` to one handle with no links.
+fn alone(shape: &Shape, rest: &HandleCurve) -> Deformation {
+    Deformation::new(shape, &[Mover { rest, links: &[] }]).unwrap()
+}
+
 fn deformed(shape: &Shape, rest: &HandleCurve, pose: &HandleCurve) -> Vec<DVec3> {
-    let deformation = Deformation::new(shape, &[Mover { rest, links: &[] }]).unwrap();
+    let deformation = alone(shape, rest);
     let mut out = vec![DVec3::ZERO; shape.positions.len()];
     deformation.apply_into(shape.positions, std::slice::from_ref(pose), &mut out);
     out
@@ -165,6 +170,16 @@ fn all_soups() -> Vec<(String, TriSoup)> {
     soups
 }
 
+/// A handle of `n` control points along the x axis from `from`, `step` apart.
+fn along_x(n: u32, from: f64, step: f64) -> HandleCurve {
+    HandleCurve::new(
+        (0..n)
+            .map(|k| DVec3::new(from + step * f64::from(k), 0.0, 0.0))
+            .collect(),
+        false,
+    )
+}
+
 fn moved_by(curve: &HandleCurve, t: DVec3) -> HandleCurve {
     let mut moved = curve.clone();
     for p in &mut moved.points {
@@ -215,14 +230,7 @@ fn moving_one_end_bends_the_region_and_carries_the_end_rigidly() {
                 ..PointEdit::default()
             })
             .unwrap();
-        let deformation = Deformation::new(
-            &shape,
-            &[Mover {
-                rest: &handle,
-                links: &[],
-            }],
-        )
-        .unwrap();
+        let deformation = alone(&shape, &handle);
         let mut out = vec![DVec3::ZERO; soup.positions.len()];
         deformation.apply_into(&soup.positions, std::slice::from_ref(&pose), &mut out);
         assert!(out.iter().all(|p| p.is_finite()), "{name}: not a number");
@@ -262,12 +270,7 @@ fn moving_one_end_bends_the_region_and_carries_the_end_rigidly() {
 fn a_twist_turns_the_slab_at_its_control_point_by_its_angle() {
     let soup = bar();
     let shape = shape(&soup);
-    let handle = HandleCurve::new(
-        (0..5)
-            .map(|k| DVec3::new(-0.8 + 0.4 * f64::from(k), 0.0, 0.0))
-            .collect(),
-        false,
-    );
+    let handle = along_x(5, -0.8, 0.4);
     let angle = 70f64.to_radians();
     let pose = handle
         .edited(&PointEdit {
@@ -299,10 +302,7 @@ fn a_twist_turns_the_slab_at_its_control_point_by_its_angle() {
 fn stretching_the_curve_stretches_the_region_and_keeps_its_sections() {
     let soup = bar();
     let shape = shape(&soup);
-    let handle = HandleCurve::new(
-        vec![DVec3::new(-0.8, 0.0, 0.0), DVec3::new(0.8, 0.0, 0.0)],
-        false,
-    );
+    let handle = along_x(2, -0.8, 1.6);
     let mut pose = handle.clone();
     pose.points[1].x = 1.6; // 1.6 long becomes 2.4: × 1.5
     let out = deformed(&shape, &handle, &pose);
@@ -324,12 +324,7 @@ fn stretching_the_curve_stretches_the_region_and_keeps_its_sections() {
 fn a_scale_widens_the_sections_near_its_control_point() {
     let soup = bar();
     let shape = shape(&soup);
-    let handle = HandleCurve::new(
-        (0..3)
-            .map(|k| DVec3::new(-0.8 + 0.8 * f64::from(k), 0.0, 0.0))
-            .collect(),
-        false,
-    );
+    let handle = along_x(3, -0.8, 0.8);
     let pose = handle
         .edited(&PointEdit {
             point: 1,
@@ -363,15 +358,7 @@ fn worst_stretch(soup: &TriSoup, out: &[DVec3]) -> f64 {
 fn linked_curves_deform_continuously_across_their_joint() {
     let soup = bar();
     let shape = shape(&soup);
-    let along = |from: f64| -> HandleCurve {
-        HandleCurve::new(
-            (0..3)
-                .map(|k| DVec3::new(from + 0.45 * f64::from(k), 0.0, 0.0))
-                .collect(),
-            false,
-        )
-    };
-    let (first, second) = (along(-0.9), along(0.0));
+    let (first, second) = (along_x(3, -0.9, 0.45), along_x(3, 0.0, 0.45));
     let lift = DVec3::new(0.0, 0.3, 0.0);
     let (mut a, mut b) = (first.clone(), second.clone());
     a.points[2] += lift;
@@ -437,12 +424,7 @@ fn a_bend_tighter_than_the_part_is_held_before_it_folds_through_itself() {
     let soup = bar();
     let mesh = Mesh::from_soup(&soup).unwrap();
     let shape = shape(&soup);
-    let handle = HandleCurve::new(
-        (0..5)
-            .map(|k| DVec3::new(-0.8 + 0.4 * f64::from(k), 0.0, 0.0))
-            .collect(),
-        false,
-    );
+    let handle = along_x(5, -0.8, 0.4);
     // A right angle turned within 0.1 on a bar of radius 0.2.
     let pose = |f: f64| {
         let mut pose = handle.clone();
@@ -450,14 +432,7 @@ fn a_bend_tighter_than_the_part_is_held_before_it_folds_through_itself() {
         pose.points[4] = handle.points[4].lerp(DVec3::new(0.1, 0.5, 0.0), f);
         vec![pose]
     };
-    let deformation = Deformation::new(
-        &shape,
-        &[Mover {
-            rest: &handle,
-            links: &[],
-        }],
-    )
-    .unwrap();
+    let deformation = alone(&shape, &handle);
     let crossings = |positions: &[DVec3]| {
         let mut bent = mesh.clone();
         bent.positions_mut().copy_from_slice(positions);

@@ -18,8 +18,8 @@ use glam::{DVec2, DVec3};
 use super::{CommandError, CurveHandleInput, Document, HandleEditInput, LinkHandlesInput};
 use crate::model::{CurveHandle, HandleTarget, PointCloud};
 use crate::skeleton::{
-    Deformation, HandleCurve, HandleStroke, Link, Mover, PointEdit, Shape, SkeletonError,
-    place_handle,
+    Deformation, HandleCurve, HandleStroke, Link, Mover, Neighbours, PointEdit, Shape,
+    SkeletonError, place_handle,
 };
 
 /// Applies a `curve_handle` op: a new handle on the nearest model or cloud under the stroke.
@@ -133,8 +133,10 @@ pub(super) struct HandleDrag {
     links: Vec<Vec<Link>>,
     /// The target's points before the edit (empty until the first step).
     rest: Vec<DVec3>,
-    /// The binding, made at the first step: at half a million points it is longer than a
-    /// frame, so the pointer-down that begins the drag does not wait for it.
+    /// Who is next to whom in the target, found at the first step, and the binding, made at
+    /// the second: at half a million points each takes about 50 ms natively, so neither the
+    /// pointer-down that begins the drag nor one frame waits for both.
+    neighbours: Option<Neighbours>,
     deformation: Option<Deformation>,
     /// The target's points at the last pose shown.
     moved: Vec<DVec3>,
@@ -189,6 +191,7 @@ impl HandleDrag {
             movers,
             links,
             rest: Vec::new(),
+            neighbours: None,
             deformation: None,
             moved: Vec::new(),
             moved_mesh: Vec::new(),
@@ -203,8 +206,7 @@ impl HandleDrag {
     /// Errors: a handle with no region.
     fn bound(&mut self, doc: &Document) -> Result<&Deformation, CommandError> {
         if self.deformation.is_none() {
-            self.rest = points_of(doc, self.target);
-            self.moved = self.rest.clone();
+            self.find_neighbours(doc);
             let shape = Shape {
                 positions: &self.rest,
                 triangles: triangles_of(doc, self.target),
@@ -212,9 +214,26 @@ impl HandleDrag {
             let movers: Vec<Mover> = (self.movers.iter().zip(&self.links))
                 .map(|((_, curve), links)| Mover { rest: curve, links })
                 .collect();
-            self.deformation = Some(Deformation::new(&shape, &movers)?);
+            let neighbours = self.neighbours.take().unwrap_or_default();
+            self.deformation = Some(Deformation::with_neighbours(&shape, &neighbours, &movers)?);
         }
         Ok(self.deformation.as_ref().expect("bound above"))
+    }
+
+    /// The target's points before the edit and who is next to whom, once. Returns whether
+    /// this call found them.
+    fn find_neighbours(&mut self, doc: &Document) -> bool {
+        if self.neighbours.is_some() || self.deformation.is_some() {
+            return false;
+        }
+        self.rest = points_of(doc, self.target);
+        self.moved = self.rest.clone();
+        let shape = Shape {
+            positions: &self.rest,
+            triangles: triangles_of(doc, self.target),
+        };
+        self.neighbours = Some(shape.neighbours());
+        true
     }
 
     /// The moving handles' curves after `input`, its move taken `fraction` of the way.
@@ -259,6 +278,9 @@ impl HandleDrag {
     ) -> Result<Option<bool>, CommandError> {
         if self.shown.as_ref() == Some(input) {
             return Ok(None);
+        }
+        if self.find_neighbours(doc) {
+            return Ok(Some(true));
         }
         self.pose(doc, input)?;
         self.shown = Some(input.clone());

@@ -23,7 +23,7 @@ use super::error::SkeletonError;
 use super::frames::{FRAMES, Frame, deformed_frames, rest_frames};
 use super::handle::HandleCurve;
 use super::segment::{Part, segment};
-use super::shape::Shape;
+use super::shape::{Neighbours, Shape};
 
 /// A handle that moves, as it was, and its links to other handles.
 #[derive(Clone, Copy, Debug)]
@@ -99,10 +99,22 @@ impl Deformation {
     /// Errors: [`SkeletonError::TooFewPoints`] for a curve of one point;
     /// [`SkeletonError::NothingUnder`] when a handle has no region.
     pub fn new(shape: &Shape, movers: &[Mover]) -> Result<Deformation, SkeletonError> {
+        Self::with_neighbours(shape, &shape.neighbours(), movers)
+    }
+
+    /// [`Deformation::new`] with `shape`'s [`Shape::neighbours`] found already (at half a
+    /// million points they take as long as the rest, so an interactive edit finds them in a
+    /// step of their own).
+    ///
+    /// Errors: as [`Deformation::new`].
+    pub fn with_neighbours(
+        shape: &Shape,
+        neighbours: &Neighbours,
+        movers: &[Mover],
+    ) -> Result<Deformation, SkeletonError> {
         if movers.iter().any(|m| m.rest.points.len() < 2) {
             return Err(SkeletonError::TooFewPoints);
         }
-        let neighbours = shape.neighbours();
         let n = shape.positions.len();
         let mut owners = vec![Owner::Still; n];
         let mut handles = Vec::with_capacity(movers.len());
@@ -110,7 +122,7 @@ impl Deformation {
         let mut joints = Vec::new();
         for (h, mover) in movers.iter().enumerate() {
             let rest_frames = rest_frames(&mover.rest.spline(), mover.rest.shaping());
-            let parts = segment(shape, &neighbours, &rest_frames)?;
+            let parts = segment(shape, neighbours, &rest_frames)?;
             let bounds = bind(shape.positions, &parts, &rest_frames);
             let radii = slab_radii(&bounds, &rest_frames);
             let last = mover.rest.points.len() - 1;

@@ -53,4 +53,4 @@ pub use frames::{FRAMES, Frame};
 pub use handle::{HandleCurve, HandleKind, PointEdit};
 pub use handle_set::{CurveHandle, HandleTarget};
 pub use placement::{HandleStroke, place_handle};
-pub use shape::Shape;
+pub use shape::{Neighbours, Shape};

@@ -4,7 +4,7 @@
 //! each sample is cast onto the shape along its view ray, the nearest hit winning. Triangles
 //! are hit exactly (Möller–Trumbore on those whose screen box holds the sample); a point
 //! cloud is hit on its splats, discs facing the camera with the cloud's typical spacing as
-//! radius, at the depth of the point. A surface handle's control points are these hits. A
+//! radius (widened where the cloud is sparser), at the depth of the point. A surface handle's control points are these hits. A
 //! skeleton handle's are the centroids of the region's vertices in the `n` slices that
 //! planes across the surface curve, halfway between its control points, cut (§4.2; the end
 //! slices are half as wide).
@@ -127,23 +127,36 @@ fn triangle_hits(
         .collect()
 }
 
-/// The nearest splat hit of each ray: a disc of the cloud's spacing around each point,
-/// facing the camera.
+/// The nearest splat hit of each ray: a disc around each point facing the camera, its
+/// radius the cloud's typical spacing, widened where the cloud is sparser along the ray (the
+/// nearest point to the ray sets the floor), so a cloud sampled unevenly has no holes; a ray
+/// farther than four spacings from every point misses.
 fn splat_hits(shape: &Shape, rays: &[(DVec3, DVec3)]) -> Vec<Option<DVec3>> {
-    let radius = 0.5 * shape.reach();
+    let spacing = 0.5 * shape.reach();
     rays.iter()
         .map(|&(origin, dir)| {
-            let mut best: Option<f64> = None;
-            for &p in shape.positions {
+            let off_ray = |p: DVec3| {
                 let along = (p - origin).dot(dir);
-                if along > 0.0
-                    && (p - origin - along * dir).length_squared() <= radius * radius
-                    && best.is_none_or(|b| along < b)
-                {
-                    best = Some(along);
-                }
+                (along > 0.0).then(|| (along, (p - origin - along * dir).length()))
+            };
+            let nearest = shape
+                .positions
+                .iter()
+                .filter_map(|&p| off_ray(p))
+                .map(|(_, off)| off)
+                .fold(f64::INFINITY, f64::min);
+            if nearest > 4.0 * spacing {
+                return None;
             }
-            best.map(|along| origin + along * dir)
+            let radius = nearest + spacing;
+            let front = shape
+                .positions
+                .iter()
+                .filter_map(|&p| off_ray(p))
+                .filter(|&(_, off)| off <= radius)
+                .map(|(along, _)| along)
+                .fold(f64::INFINITY, f64::min);
+            Some(origin + front * dir)
         })
         .collect()
 }

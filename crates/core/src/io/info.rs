@@ -9,7 +9,7 @@ use super::parse::parse;
 use super::resources::load_buffers;
 use super::scene::read_nodes;
 use super::weld::weld;
-use crate::mesh::{Mesh, TriSoup};
+use crate::mesh::{Mesh, TriSoup, count_components};
 
 /// Summary of a glTF file's default scene (printed as JSON by `sketchmesh info`).
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -70,7 +70,7 @@ pub fn inspect_gltf(main: &ImportFile, others: &[ImportFile]) -> Result<Info, Gl
     Ok(Info {
         vertices: soup.positions.len(),
         triangles: soup.triangles.len(),
-        components: count_components(&soup),
+        components: count_components(soup.positions.len(), &soup.triangles),
         closed: mesh.as_ref().is_some_and(Mesh::is_closed),
         manifold: mesh.is_some(),
         genus: mesh.as_ref().and_then(Mesh::genus),
@@ -88,28 +88,6 @@ fn bounding_box(positions: &[DVec3]) -> Option<(DVec3, DVec3)> {
             .iter()
             .fold((first, first), |(lo, hi), &p| (lo.min(p), hi.max(p))),
     )
-}
-
-/// Connected components of triangles sharing vertices (union-find with path halving).
-fn count_components(soup: &TriSoup) -> usize {
-    let mut parent: Vec<usize> = (0..soup.positions.len()).collect();
-    fn find(parent: &mut [usize], mut v: usize) -> usize {
-        while parent[v] != v {
-            parent[v] = parent[parent[v]];
-            v = parent[v];
-        }
-        v
-    }
-    for triangle in &soup.triangles {
-        let a = find(&mut parent, triangle[0] as usize);
-        for &other in &triangle[1..] {
-            let b = find(&mut parent, other as usize);
-            parent[b] = a;
-        }
-    }
-    (0..parent.len())
-        .filter(|&v| find(&mut parent, v) == v)
-        .count()
 }
 
 #[cfg(test)]

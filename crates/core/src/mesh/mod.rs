@@ -44,7 +44,7 @@ pub use error::MeshError;
 pub use halfedge::OutgoingHalfedges;
 pub(crate) use paths::{distances_within, shortest_paths};
 pub use repair::{RepairReport, Repaired, make_manifold};
-pub use soup::TriSoup;
+pub use soup::{TriSoup, count_components};
 
 /// Marks a missing half-edge: the twin of a boundary half-edge.
 pub(crate) const INVALID: u32 = u32::MAX;

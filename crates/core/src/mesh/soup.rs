@@ -56,6 +56,29 @@ impl TriSoup {
     }
 }
 
+/// How many pieces `n_vertices` vertices make when the triangles join the vertices they share
+/// (union-find with path halving); a vertex in no triangle is a piece of its own.
+pub fn count_components(n_vertices: usize, triangles: &[[u32; 3]]) -> usize {
+    let mut parent: Vec<usize> = (0..n_vertices).collect();
+    fn find(parent: &mut [usize], mut v: usize) -> usize {
+        while parent[v] != v {
+            parent[v] = parent[parent[v]];
+            v = parent[v];
+        }
+        v
+    }
+    for triangle in triangles {
+        let a = find(&mut parent, triangle[0] as usize);
+        for &other in &triangle[1..] {
+            let b = find(&mut parent, other as usize);
+            parent[b] = a;
+        }
+    }
+    (0..parent.len())
+        .filter(|&v| find(&mut parent, v) == v)
+        .count()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -11,6 +11,8 @@ use std::collections::HashMap;
 
 use glam::DVec3;
 
+use crate::mesh::count_components;
+
 /// Positions and (possibly no) triangles, borrowed.
 #[derive(Clone, Copy, Debug)]
 pub struct Shape<'a> {
@@ -69,7 +71,7 @@ impl Shape<'_> {
             list,
             is_one_piece: false,
         };
-        neighbours.is_one_piece = n > 0 && reached_from(0, &neighbours, n) == n;
+        neighbours.is_one_piece = count_components(n, self.triangles) == 1;
         neighbours
     }
 
@@ -90,23 +92,6 @@ impl Shape<'_> {
         }
         2.0 * median_spacing(self.positions)
     }
-}
-
-/// How many vertices a walk over triangles reaches from `start`.
-fn reached_from(start: usize, neighbours: &Neighbours, n: usize) -> usize {
-    let mut seen = vec![false; n];
-    let mut stack = vec![start];
-    seen[start] = true;
-    let mut count = 0;
-    while let Some(v) = stack.pop() {
-        count += 1;
-        for &u in neighbours.of(v) {
-            if !std::mem::replace(&mut seen[u as usize], true) {
-                stack.push(u as usize);
-            }
-        }
-    }
-    count
 }
 
 /// The median distance to the nearest other point, over a sample of at most 512 points,

@@ -11,6 +11,7 @@
 //! the points, and the committed result is that pass at the final pose, bit for bit what
 //! the op computes from the document alone.
 
+use std::borrow::Cow;
 use std::sync::Arc;
 
 use glam::{DVec2, DVec3};
@@ -88,16 +89,16 @@ fn targets(doc: &Document) -> impl Iterator<Item = HandleTarget> {
 
 /// The points a handle on `target` moves: a cloud's, an imported soup's as it came, or the
 /// mesh's.
-fn points_of(doc: &Document, target: HandleTarget) -> Vec<DVec3> {
+fn points_of(doc: &Document, target: HandleTarget) -> Cow<'_, [DVec3]> {
     match target {
         HandleTarget::Model(m) => {
             let model = &doc.models[m];
             match model.as_imported() {
-                Some(input) => input.positions_of(&model.mesh),
-                None => model.mesh.positions().to_vec(),
+                Some(input) => Cow::Owned(input.positions_of(&model.mesh)),
+                None => Cow::Borrowed(model.mesh.positions()),
             }
         }
-        HandleTarget::Cloud(c) => doc.point_clouds[c].positions.clone(),
+        HandleTarget::Cloud(c) => Cow::Borrowed(&doc.point_clouds[c].positions),
     }
 }
 
@@ -226,7 +227,7 @@ impl HandleDrag {
         if self.neighbours.is_some() || self.deformation.is_some() {
             return false;
         }
-        self.rest = points_of(doc, self.target);
+        self.rest = points_of(doc, self.target).into_owned();
         self.moved = self.rest.clone();
         let shape = Shape {
             positions: &self.rest,
@@ -362,12 +363,7 @@ impl HandleDrag {
             if let Some(m) = self.movers.iter().position(|m| m.0 == h) {
                 Arc::make_mut(handle).curve = poses[m].clone();
             } else if handle.target == self.target {
-                let carried: Vec<DVec3> = handle
-                    .curve
-                    .points
-                    .iter()
-                    .map(|&p| deformation.move_point(p, &poses))
-                    .collect();
+                let carried = deformation.move_points(&handle.curve.points, &poses);
                 Arc::make_mut(handle).curve.points = carried;
             }
         }

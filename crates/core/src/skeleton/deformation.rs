@@ -268,10 +268,18 @@ impl Deformation {
         x + motion / total.max(1.0)
     }
 
-    /// Where the handles' new poses move a point that is not a vertex (another handle's
-    /// control point): the same rules, its part found by the planes alone.
-    pub fn move_point(&self, x: DVec3, curves: &[HandleCurve]) -> DVec3 {
+    /// Where the handles' new poses move points that are not vertices (other handles'
+    /// control points): the same rules, each point's part found by the planes alone.
+    pub fn move_points(&self, points: &[DVec3], curves: &[HandleCurve]) -> Vec<DVec3> {
         let frames = self.frames(curves);
+        points
+            .iter()
+            .map(|&x| self.move_point(x, &frames))
+            .collect()
+    }
+
+    /// [`Deformation::move_points`] for one point, given the new poses' frames.
+    fn move_point(&self, x: DVec3, frames: &[Vec<Frame>]) -> DVec3 {
         for (h, held) in self.handles.iter().enumerate() {
             let (first, last) = (&held.rest_frames[0], &held.rest_frames[FRAMES - 1]);
             if first.height(x) >= 0.0 && last.height(x) <= 0.0 {
@@ -302,7 +310,7 @@ impl Deformation {
                 let (h, f) = (handle as usize, frame as usize);
                 rigidly(x, &self.handles[h].rest_frames[f], &frames[h][f])
             }
-            Owner::Blend { .. } => self.blended(x, &weights, &frames),
+            Owner::Blend { .. } => self.blended(x, &weights, frames),
             Owner::Still | Owner::Region { .. } => x,
         }
     }

@@ -31,3 +31,4 @@ pub mod region_edit;
 pub mod silhouette;
 pub mod skeleton;
 pub mod solve;
+pub mod volumetric;

@@ -65,3 +65,4 @@ pub use error::DeformError;
 pub use handle::HandlePoint;
 pub use laplacian_edit::LaplacianEdit;
 pub use params::{EditParams, HandleFit, Rotations};
+pub(crate) use rotation::best_rotation;

@@ -19,3 +19,4 @@ mod region_edit;
 mod silhouette;
 mod skeleton;
 mod topology;
+mod volumetric;

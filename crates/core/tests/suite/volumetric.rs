@@ -1,0 +1,399 @@
+//! The volumetric graph Laplacian (issue 20): large bends and twists keep volume and detail
+//! and do not fold; an unmoved handle moves nothing.
+
+use std::collections::HashMap;
+use std::f64::consts::PI;
+
+use glam::{DMat4, DVec2, DVec3};
+use sketchmesh_core::geometry::{Bvh, enclosed_volume};
+use sketchmesh_core::mesh::{Mesh, TriSoup, primitives};
+use sketchmesh_core::volumetric::{
+    GraphTerm, Method, Sphere, SphereHandle, VolumetricError, VolumetricGraph, VolumetricParams,
+    deform_with_spheres,
+};
+
+/// Bumps on the capsule: centre (x, angle around) of each.
+const BUMPS: [(f64, f64); 6] = [
+    (-1.0, 0.0),
+    (0.0, 0.5 * PI),
+    (1.0, PI),
+    (-0.5, 1.5 * PI),
+    (0.5, 0.0),
+    (0.0, 1.5 * PI),
+];
+const BUMP_HEIGHT: f64 = 0.08;
+const BUMP_SIGMA: f64 = 0.12;
+
+/// The capsule the bumps sit on.
+fn smooth_capsule() -> Mesh {
+    primitives::capsule(0.5, 3.0, 40, 120)
+}
+
+/// A capsule along x (radius 0.5, straight part 6 long) with six Gaussian bumps on its
+/// middle, and the vertex at each bump's top.
+fn bumpy_capsule() -> (Mesh, Vec<usize>) {
+    let mut mesh = smooth_capsule();
+    let centres: Vec<DVec3> = BUMPS
+        .iter()
+        .map(|&(x, a)| DVec3::new(x, 0.5 * a.cos(), 0.5 * a.sin()))
+        .collect();
+    for p in mesh.positions_mut() {
+        let radial = DVec3::new(0.0, p.y, p.z).normalize_or_zero();
+        let lift: f64 = centres
+            .iter()
+            .map(|c| {
+                let d2 = p.distance_squared(*c);
+                BUMP_HEIGHT * (-d2 / (2.0 * BUMP_SIGMA * BUMP_SIGMA)).exp()
+            })
+            .sum();
+        *p += radial * lift;
+    }
+    let tops = centres
+        .iter()
+        .map(|c| nearest_vertex(&mesh, *c + (*c - DVec3::new(c.x, 0.0, 0.0)) * 0.2))
+        .collect();
+    (mesh, tops)
+}
+
+fn nearest_vertex(mesh: &Mesh, p: DVec3) -> usize {
+    (0..mesh.n_vertices())
+        .min_by(|&a, &b| {
+            let da = mesh.positions()[a].distance_squared(p);
+            let db = mesh.positions()[b].distance_squared(p);
+            da.total_cmp(&db)
+        })
+        .expect("the mesh has vertices")
+}
+
+/// A bump's height: how far its top stands off the same capsule without bumps, deformed
+/// the same way (so the base's own bending does not count as detail).
+fn bump_height(top: DVec3, base: &Mesh) -> f64 {
+    let bvh = Bvh::new(base);
+    let (nearest, _) = bvh.nearest(base, top).expect("the base has faces");
+    top.distance(nearest)
+}
+
+fn crossing_pairs(rest: &Mesh, positions: &[DVec3]) -> usize {
+    let mut moved = rest.clone();
+    moved.positions_mut().copy_from_slice(positions);
+    Bvh::new(&moved).crossing_faces(&moved, |_| true).len()
+}
+
+fn volume(rest: &Mesh, positions: &[DVec3]) -> f64 {
+    let mut moved = rest.clone();
+    moved.positions_mut().copy_from_slice(positions);
+    enclosed_volume(&moved)
+}
+
+/// Half a turn about the z axis through `(x, y)`.
+fn half_turn_about(x: f64, y: f64) -> DMat4 {
+    let pivot = DVec3::new(x, y, 0.0);
+    DMat4::from_translation(pivot) * DMat4::from_rotation_z(PI) * DMat4::from_translation(-pivot)
+}
+
+#[test]
+fn a_capsule_bent_by_half_a_turn_keeps_its_volume_bumps_and_does_not_fold() {
+    let (mesh, tops) = bumpy_capsule();
+    let base = smooth_capsule();
+    let graph = VolumetricGraph::build(&mesh).unwrap();
+    let base_graph = VolumetricGraph::build(&base).unwrap();
+    // The fixed end and the handle each hold about 1.4 of the capsule's ends; the free
+    // length between them is about 4.26, a half circle of radius 1.36 about (−2.13, 1.36),
+    // which the half turn about (0, 1.36) asks for.
+    let fixed = [Sphere {
+        centre: DVec3::new(-3.0, 0.0, 0.0),
+        radius: 1.0,
+    }];
+    let bend = 4.26 / PI;
+    let handles = [SphereHandle {
+        sphere: Sphere {
+            centre: DVec3::new(3.0, 0.0, 0.0),
+            radius: 1.0,
+        },
+        matrix: half_turn_about(0.0, bend),
+    }];
+    let rest_volume = enclosed_volume(&mesh);
+    let mut report = Vec::new();
+    let printed = VolumetricParams {
+        graph_term: GraphTerm::Laplacian,
+        ..VolumetricParams::default()
+    };
+    let methods = [
+        Method::Volumetric(VolumetricParams::default()),
+        Method::Volumetric(printed),
+        Method::Surface,
+    ];
+    for method in methods {
+        let moved = deform_with_spheres(&mesh, Some(&graph), &handles, &fixed, method).unwrap();
+        let change = volume(&mesh, &moved) / rest_volume - 1.0;
+        let crossings = crossing_pairs(&mesh, &moved);
+        let mut bent_base = base.clone();
+        let base_moved =
+            deform_with_spheres(&base, Some(&base_graph), &handles, &fixed, method).unwrap();
+        bent_base.positions_mut().copy_from_slice(&base_moved);
+        let heights: Vec<f64> = tops
+            .iter()
+            .map(|&t| bump_height(moved[t], &bent_base) / bump_height(mesh.positions()[t], &base))
+            .collect();
+        report.push(format!(
+            "{method:?}: volume {:+.2}%, {crossings} crossing pairs, bump heights {:?}",
+            100.0 * change,
+            heights
+                .iter()
+                .map(|h| format!("{h:.3}"))
+                .collect::<Vec<_>>()
+        ));
+        if method == methods[0] {
+            println!("{}", report.join("\n"));
+            assert!(change.abs() < 0.05, "{}", report.join("\n"));
+            assert_eq!(crossings, 0, "{}", report.join("\n"));
+            for h in &heights {
+                assert!((h - 1.0).abs() < 0.10, "{}", report.join("\n"));
+            }
+            // The handle went where its matrix says.
+            let tip = nearest_vertex(&mesh, DVec3::new(3.5, 0.0, 0.0));
+            let expected = handles[0].matrix.transform_point3(mesh.positions()[tip]);
+            assert!(moved[tip].distance(expected) < 1e-9);
+        }
+    }
+    println!("{}", report.join("\n"));
+    println!(
+        "graph: {} points for {} vertices",
+        graph.n_points(),
+        graph.n_mesh()
+    );
+}
+
+/// A box `size` centred on the origin, with `cells` quads along each axis split into
+/// triangles, faces outward.
+fn box_mesh(size: DVec3, cells: [usize; 3]) -> Mesh {
+    let mut index: HashMap<[usize; 3], u32> = HashMap::new();
+    let mut positions = Vec::new();
+    let mut vertex = |c: [usize; 3]| -> u32 {
+        *index.entry(c).or_insert_with(|| {
+            let t = DVec3::new(
+                c[0] as f64 / cells[0] as f64,
+                c[1] as f64 / cells[1] as f64,
+                c[2] as f64 / cells[2] as f64,
+            );
+            positions.push((t - 0.5) * size);
+            positions.len() as u32 - 1
+        })
+    };
+    let mut triangles = Vec::new();
+    for a in 0..3 {
+        let (b, c) = ((a + 1) % 3, (a + 2) % 3);
+        for side in [0, cells[a]] {
+            for i in 0..cells[b] {
+                for j in 0..cells[c] {
+                    let corner = |di: usize, dj: usize| {
+                        let mut p = [0; 3];
+                        p[a] = side;
+                        p[b] = i + di;
+                        p[c] = j + dj;
+                        p
+                    };
+                    let quad =
+                        [corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)].map(&mut vertex);
+                    let [q0, q1, q2, q3] = if side == 0 {
+                        [quad[0], quad[3], quad[2], quad[1]]
+                    } else {
+                        quad
+                    };
+                    triangles.extend([[q0, q1, q2], [q0, q2, q3]]);
+                }
+            }
+        }
+    }
+    Mesh::from_soup(&TriSoup {
+        positions,
+        triangles,
+    })
+    .expect("the box is a manifold")
+}
+
+/// The largest distance of a point inside the convex hull of `points` from the hull's
+/// boundary, relative to the hull's size: 0 when every point is on the hull.
+fn concavity(points: &[DVec2]) -> f64 {
+    let mut sorted = points.to_vec();
+    sorted.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    let cross = |o: DVec2, a: DVec2, b: DVec2| (a - o).perp_dot(b - o);
+    let mut hull: Vec<DVec2> = Vec::new();
+    for pass in 0..2 {
+        let start = hull.len();
+        let iter: Box<dyn Iterator<Item = &DVec2>> = if pass == 0 {
+            Box::new(sorted.iter())
+        } else {
+            Box::new(sorted.iter().rev())
+        };
+        for &p in iter {
+            while hull.len() >= start + 2
+                && cross(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0.0
+            {
+                hull.pop();
+            }
+            hull.push(p);
+        }
+        hull.pop();
+    }
+    let size = sorted[sorted.len() - 1].distance(sorted[0]);
+    let to_hull = |p: DVec2| {
+        (0..hull.len())
+            .map(|k| {
+                let (a, b) = (hull[k], hull[(k + 1) % hull.len()]);
+                let t = ((p - a).dot(b - a) / (b - a).length_squared()).clamp(0.0, 1.0);
+                p.distance(a + (b - a) * t)
+            })
+            .fold(f64::INFINITY, f64::min)
+    };
+    points.iter().map(|&p| to_hull(p)).fold(0.0, f64::max) / size
+}
+
+#[test]
+fn a_bar_twisted_by_a_quarter_turn_keeps_its_volume_and_convex_sections() {
+    let mesh = box_mesh(DVec3::new(2.4, 0.4, 0.4), [60, 10, 10]);
+    assert!(enclosed_volume(&mesh) > 0.0);
+    let graph = VolumetricGraph::build(&mesh).unwrap();
+    let fixed = [Sphere {
+        centre: DVec3::new(-1.4, 0.0, 0.0),
+        radius: 0.45,
+    }];
+    let handles = [SphereHandle {
+        sphere: Sphere {
+            centre: DVec3::new(1.4, 0.0, 0.0),
+            radius: 0.45,
+        },
+        matrix: DMat4::from_rotation_x(0.5 * PI),
+    }];
+    let run = |params| {
+        deform_with_spheres(
+            &mesh,
+            Some(&graph),
+            &handles,
+            &fixed,
+            Method::Volumetric(params),
+        )
+        .unwrap()
+    };
+    let printed = run(VolumetricParams {
+        graph_term: GraphTerm::Laplacian,
+        ..VolumetricParams::default()
+    });
+    let moved = run(VolumetricParams::default());
+    let change = volume(&mesh, &moved) / enclosed_volume(&mesh) - 1.0;
+    let printed_change = volume(&mesh, &printed) / enclosed_volume(&mesh) - 1.0;
+    println!(
+        "twist: volume {:+.2}% (Eq. 3's Laplacian term: {:+.2}%)",
+        100.0 * change,
+        100.0 * printed_change
+    );
+    assert!(
+        change.abs() < 0.03,
+        "volume changed by {:.2}%",
+        100.0 * change
+    );
+    assert_eq!(crossing_pairs(&mesh, &moved), 0);
+    // Sections across the free part: the ring of vertices at each x stays convex.
+    for k in 0..9 {
+        let x = -0.8 + 0.2 * k as f64;
+        let ring: Vec<DVec2> = (0..mesh.n_vertices())
+            .filter(|&v| (mesh.positions()[v].x - x).abs() < 1e-9)
+            .map(|v| DVec2::new(moved[v].y, moved[v].z))
+            .collect();
+        assert!(ring.len() >= 40);
+        let c = concavity(&ring);
+        assert!(
+            c < 0.01,
+            "section at x = {x}: a point {c:.4} of its size inside the hull"
+        );
+    }
+}
+
+#[test]
+fn unmoved_handles_move_nothing_bit_for_bit() {
+    let (mesh, _) = bumpy_capsule();
+    let graph = VolumetricGraph::build(&mesh).unwrap();
+    let fixed = [Sphere {
+        centre: DVec3::new(-3.0, 0.0, 0.0),
+        radius: 1.0,
+    }];
+    let handles = [SphereHandle {
+        sphere: Sphere {
+            centre: DVec3::new(3.0, 0.0, 0.0),
+            radius: 1.0,
+        },
+        matrix: DMat4::IDENTITY,
+    }];
+    let moved = deform_with_spheres(
+        &mesh,
+        Some(&graph),
+        &handles,
+        &fixed,
+        Method::Volumetric(VolumetricParams::default()),
+    )
+    .unwrap();
+    let worst = moved
+        .iter()
+        .zip(mesh.positions())
+        .map(|(a, b)| a.distance(*b))
+        .fold(0.0, f64::max);
+    assert!(moved == mesh.positions(), "a vertex moved by {worst}");
+}
+
+#[test]
+fn bad_input_gets_a_sentence() {
+    let (mesh, _) = bumpy_capsule();
+    let ball = |x: f64| Sphere {
+        centre: DVec3::new(x, 0.0, 0.0),
+        radius: 1.0,
+    };
+    let handle = |x: f64, matrix: DMat4| SphereHandle {
+        sphere: ball(x),
+        matrix,
+    };
+    let refuse = |handles: &[SphereHandle], fixed: &[Sphere]| {
+        deform_with_spheres(
+            &mesh,
+            None,
+            handles,
+            fixed,
+            Method::Volumetric(VolumetricParams::default()),
+        )
+        .unwrap_err()
+    };
+    assert_eq!(
+        refuse(&[handle(10.0, DMat4::IDENTITY)], &[]),
+        VolumetricError::EmptyHandle { index: 0 }
+    );
+    assert_eq!(
+        refuse(&[handle(3.0, DMat4::IDENTITY)], &[ball(2.5)]),
+        VolumetricError::FixedOverlapsHandle { index: 0 }
+    );
+    let flat = DMat4::from_scale(DVec3::new(1.0, 0.0, 1.0));
+    assert_eq!(
+        refuse(&[handle(3.0, flat)], &[]),
+        VolumetricError::BadMatrix { index: 0 }
+    );
+    let nan = DMat4::from_translation(DVec3::new(f64::NAN, 0.0, 0.0));
+    assert_eq!(
+        refuse(&[handle(3.0, nan)], &[]),
+        VolumetricError::BadMatrix { index: 0 }
+    );
+    let open = primitives::grid(5, 5, 1.0);
+    let err = deform_with_spheres(
+        &open,
+        None,
+        &[SphereHandle {
+            sphere: Sphere {
+                centre: DVec3::ZERO,
+                radius: 0.3,
+            },
+            matrix: DMat4::IDENTITY,
+        }],
+        &[],
+        Method::Volumetric(VolumetricParams::default()),
+    )
+    .unwrap_err();
+    assert_eq!(err, VolumetricError::NotClosed);
+    assert!(err.to_string().contains("closed surface"), "{err}");
+}

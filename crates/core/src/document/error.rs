@@ -16,6 +16,7 @@ use crate::oversketch::OversketchError;
 use crate::region_edit::RegionError;
 use crate::skeleton::SkeletonError;
 use crate::solve::SolveError;
+use crate::volumetric::VolumetricError;
 
 /// Why an op was refused. The messages are sentences for the user.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -113,6 +114,9 @@ pub enum CommandError {
     /// A link between handles on different objects.
     #[error("Only handles on the same object can be linked.")]
     LinkAcrossObjects,
+    /// A volumetric (or scripted surface) deformation was refused.
+    #[error("{0}")]
+    Volumetric(#[from] VolumetricError),
     /// A mesh optimization was refused.
     #[error("The mesh could not be optimized: {0}.")]
     Optimize(#[from] OptimizeError),

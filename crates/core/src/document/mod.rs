@@ -30,6 +30,7 @@ mod region_edit;
 mod session;
 mod session_error;
 mod skeleton;
+mod volumetric;
 
 pub use crate::model::{
     AlphaMode, Appearance, AsImported, ControlCurve, CurveHandle, CurveKind, Document,
@@ -55,3 +56,4 @@ pub use oversketch::OutlinePiece;
 pub use region_edit::{RegionDrag, dragged_region, region_of};
 pub use session::{SESSION_FORMAT, SESSION_VERSION, Session};
 pub use session_error::SessionError;
+pub use volumetric::{DeformHandleInput, DeformInput, DeformMethod};

@@ -6,6 +6,7 @@ use glam::DVec2;
 use serde::{Deserialize, Serialize};
 
 use super::CommandError;
+use super::volumetric::DeformInput;
 use crate::camera::Camera;
 use crate::curve::StrokePoint;
 use crate::deform::HandleFit;
@@ -75,6 +76,9 @@ pub enum Op {
     LinkHandles(LinkHandlesInput),
     /// Remove a curve handle.
     DeleteHandle(DeleteHandleInput),
+    /// A scripted large deformation: sphere handles moved by matrices, fixed spheres, the
+    /// rest following through the volumetric graph Laplacian (or the surface editor).
+    Deform(DeformInput),
     /// Undo the last change.
     Undo,
     /// Redo the last undone change.
@@ -108,6 +112,7 @@ impl Op {
         "handle_edit",
         "link_handles",
         "delete_handle",
+        "deform",
         "undo",
         "redo",
     ];
@@ -138,6 +143,7 @@ impl Op {
             Op::HandleEdit(_) => "handle_edit",
             Op::LinkHandles(_) => "link_handles",
             Op::DeleteHandle(_) => "delete_handle",
+            Op::Deform(_) => "deform",
             Op::Undo => "undo",
             Op::Redo => "redo",
         }
@@ -164,6 +170,7 @@ impl Op {
             | Op::HandleEdit(_)
             | Op::LinkHandles(_)
             | Op::DeleteHandle(_)
+            | Op::Deform(_)
             | Op::Delete(_)
             | Op::Duplicate(_)
             | Op::Undo

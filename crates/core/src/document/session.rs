@@ -190,7 +190,8 @@ fn has_no_fields(op: &Op) -> bool {
         | Op::CurveHandle(_)
         | Op::HandleEdit(_)
         | Op::LinkHandles(_)
-        | Op::DeleteHandle(_) => false,
+        | Op::DeleteHandle(_)
+        | Op::Deform(_) => false,
         Op::Undo | Op::Redo => true,
     }
 }

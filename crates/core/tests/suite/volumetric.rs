@@ -4,7 +4,10 @@
 use std::collections::HashMap;
 use std::f64::consts::PI;
 
+use crate::common::{digest, import_mesh};
+
 use glam::{DMat4, DVec2, DVec3};
+use sketchmesh_core::document::{DeformHandleInput, DeformInput, DeformMethod, Editor, Op};
 use sketchmesh_core::geometry::{Bvh, enclosed_volume};
 use sketchmesh_core::mesh::{Mesh, TriSoup, primitives};
 use sketchmesh_core::volumetric::{
@@ -396,4 +399,80 @@ fn bad_input_gets_a_sentence() {
     .unwrap_err();
     assert_eq!(err, VolumetricError::NotClosed);
     assert!(err.to_string().contains("closed surface"), "{err}");
+}
+
+fn deform_op(method: DeformMethod, handle_sphere: [f64; 4], matrix: DMat4) -> Op {
+    Op::Deform(DeformInput {
+        method,
+        model: 0,
+        handles: vec![DeformHandleInput {
+            sphere: handle_sphere,
+            matrix: matrix.to_cols_array(),
+        }],
+        fixed: vec![[-3.0, 0.0, 0.0, 1.0]],
+    })
+}
+
+#[test]
+fn the_deform_op_replays_bit_for_bit_and_a_refusal_changes_nothing() {
+    let (mesh, _) = bumpy_capsule();
+    let mut editor = Editor::new();
+    editor.apply(import_mesh("capsule.glb", &mesh)).unwrap();
+    let imported = editor.document().models[0].mesh.clone();
+    let bend = deform_op(
+        DeformMethod::Volumetric,
+        [3.0, 0.0, 0.0, 1.0],
+        half_turn_about(0.0, 4.26 / PI),
+    );
+    editor.apply(bend).unwrap();
+    let expected = deform_with_spheres(
+        &imported,
+        None,
+        &[SphereHandle {
+            sphere: Sphere {
+                centre: DVec3::new(3.0, 0.0, 0.0),
+                radius: 1.0,
+            },
+            matrix: half_turn_about(0.0, 4.26 / PI),
+        }],
+        &[Sphere {
+            centre: DVec3::new(-3.0, 0.0, 0.0),
+            radius: 1.0,
+        }],
+        Method::Volumetric(VolumetricParams::default()),
+    )
+    .unwrap();
+    assert!(editor.document().models[0].mesh.positions() == expected.as_slice());
+    let json = editor.session_json();
+    assert!(
+        json.contains(r#""op":"deform","method":"volumetric""#),
+        "{json}"
+    );
+    let replayed = Editor::replay_json(&json).unwrap();
+    assert_eq!(digest(replayed.document()), digest(editor.document()));
+
+    // The surface editor on the same constraints, then undone.
+    let before = digest(editor.document());
+    let surface = deform_op(
+        DeformMethod::Surface,
+        [-3.0, 2.712, 0.0, 1.0],
+        DMat4::from_translation(DVec3::Z * 0.3),
+    );
+    editor.apply(surface).unwrap();
+    assert_ne!(digest(editor.document()), before);
+    editor.apply(Op::Undo).unwrap();
+    assert_eq!(digest(editor.document()), before);
+
+    // Refused: a handle over the fixed sphere; the document and history stay.
+    let session = editor.session_json();
+    let err = editor
+        .apply(deform_op(
+            DeformMethod::Volumetric,
+            [-2.5, 0.0, 0.0, 1.0],
+            DMat4::IDENTITY,
+        ))
+        .unwrap_err();
+    assert!(err.to_string().contains("overlaps a fixed sphere"), "{err}");
+    assert_eq!(digest(editor.document()), before);
+    assert_eq!(editor.session_json(), session);
 }

@@ -809,6 +809,12 @@ mod tests {
                 b: (1, 0),
             }),
             Op::DeleteHandle(DeleteHandleInput { handle: 0 }),
+            Op::Deform(DeformInput {
+                method: super::super::DeformMethod::Volumetric,
+                model: 0,
+                handles: Vec::new(),
+                fixed: Vec::new(),
+            }),
             Op::Undo,
             Op::Redo,
         ];

@@ -17,7 +17,7 @@ use glam::DVec3;
 use super::VolumetricError;
 use super::lattice::bcc_lattice;
 use super::shell::{Side, offset_shell};
-use super::weights::graph_weights;
+use super::weights::WeightSolver;
 use crate::geometry::{Bvh, enclosed_volume, vertex_normals};
 use crate::mesh::{Mesh, VertexId, distances_within};
 
@@ -169,6 +169,12 @@ impl VolumetricGraph {
 
     fn laplacian_weights(&self) -> Vec<f64> {
         let mut weights = Vec::with_capacity(self.neighbours.len());
+        let max_k = self
+            .offsets
+            .windows(2)
+            .map(|w| (w[1] - w[0]) as usize)
+            .max();
+        let mut solver = WeightSolver::new(max_k.unwrap_or(0));
         let mut around = Vec::new();
         for i in 0..self.points.len() {
             let range = self.offsets[i] as usize..self.offsets[i + 1] as usize;
@@ -178,7 +184,7 @@ impl VolumetricGraph {
                     .iter()
                     .map(|&j| self.points[j as usize]),
             );
-            weights.extend(graph_weights(self.points[i], &around));
+            solver.weights(self.points[i], &around, &mut weights);
         }
         weights
     }

@@ -16,8 +16,12 @@
 //! cross, and frees the bound weight with the most negative multiplier once none would.
 //! A point has about 8 to 20 neighbours, so each QP is a few 20 × 20 solves.
 
-use faer::Mat;
-use faer::linalg::solvers::Solve;
+use faer::dyn_stack::{MemBuffer, MemStack};
+use faer::linalg::cholesky::llt::factor::{
+    LltRegularization, cholesky_in_place, cholesky_in_place_scratch,
+};
+use faer::linalg::cholesky::llt::solve::solve_in_place;
+use faer::{Mat, Par};
 use glam::DVec3;
 
 /// The paper's λ: the weight of the umbrella term.
@@ -26,105 +30,173 @@ pub const LAMBDA: f64 = 0.01;
 pub const XI: f64 = 0.01;
 /// Relative size of the ridge that makes `H` definite.
 const RIDGE: f64 = 1e-9;
-/// A multiplier or step this far below zero counts as negative.
+/// A multiplier this far below zero counts as negative.
 const TOLERANCE: f64 = 1e-12;
 
-/// The weights of `p`'s `neighbours` (in their order), positive and summing to one. With so
-/// many neighbours that `k ξ > 1/2`, the bound is lowered to `1 / (2k)`, so the uniform
-/// weights stay strictly feasible.
-pub(super) fn graph_weights(p: DVec3, neighbours: &[DVec3]) -> Vec<f64> {
-    let k = neighbours.len();
-    if k <= 1 {
-        return vec![1.0; k];
-    }
-    let lower = XI.min(0.5 / k as f64);
-    let edges: Vec<DVec3> = neighbours.iter().map(|&q| q - p).collect();
-    let lengths: Vec<f64> = edges.iter().map(|e| e.length()).collect();
-    let mut h = Mat::from_fn(k, k, |a, b| {
-        edges[a].dot(edges[b]) + LAMBDA * lengths[a] * lengths[b]
-    });
-    let trace: f64 = (0..k).map(|a| h[(a, a)]).sum();
-    let ridge = RIDGE * trace.max(f64::MIN_POSITIVE) / k as f64;
-    for a in 0..k {
-        h[(a, a)] += ridge;
-    }
-    active_set(&h, lower)
+/// Buffers for the QPs of one graph, sized for its largest neighbourhood.
+pub(super) struct WeightSolver {
+    h: Mat<f64>,
+    factor: Mat<f64>,
+    columns: Mat<f64>,
+    memory: MemBuffer,
+    edges: Vec<DVec3>,
+    lengths: Vec<f64>,
+    w: Vec<f64>,
+    target: Vec<f64>,
+    bound: Vec<bool>,
+    free: Vec<usize>,
 }
 
-/// Minimises `wᵀ H w` over `Σ w = 1, w ≥ lower` from the uniform weights.
-fn active_set(h: &Mat<f64>, lower: f64) -> Vec<f64> {
-    let k = h.nrows();
-    let mut w = vec![1.0 / k as f64; k];
-    let mut bound = vec![false; k];
-    for _ in 0..4 * k {
-        let target = equality_minimiser(h, &w, &bound, lower);
-        // The largest step toward the target that keeps every weight at or above the bound.
-        let mut step = 1.0;
-        let mut blocking = None;
-        for j in (0..k).filter(|&j| !bound[j]) {
-            if target[j] < lower && w[j] > target[j] {
-                let reach = (w[j] - lower) / (w[j] - target[j]);
-                if reach < step {
-                    step = reach;
-                    blocking = Some(j);
+impl WeightSolver {
+    /// Buffers for neighbourhoods of up to `max_k` points.
+    pub(super) fn new(max_k: usize) -> WeightSolver {
+        let scratch = cholesky_in_place_scratch::<f64>(max_k, Par::Seq, Default::default());
+        WeightSolver {
+            h: Mat::zeros(max_k, max_k),
+            factor: Mat::zeros(max_k, max_k),
+            columns: Mat::zeros(max_k, 2),
+            memory: MemBuffer::new(scratch),
+            edges: Vec::with_capacity(max_k),
+            lengths: Vec::with_capacity(max_k),
+            w: Vec::with_capacity(max_k),
+            target: Vec::with_capacity(max_k),
+            bound: Vec::with_capacity(max_k),
+            free: Vec::with_capacity(max_k),
+        }
+    }
+
+    /// Appends the weights of `p`'s `neighbours` (in their order) to `out`: positive and
+    /// summing to one. With so many neighbours that `k ξ > 1/2`, the bound is lowered to
+    /// `1 / (2k)`, so the uniform weights stay strictly feasible.
+    pub(super) fn weights(&mut self, p: DVec3, neighbours: &[DVec3], out: &mut Vec<f64>) {
+        let k = neighbours.len();
+        if k <= 1 {
+            out.extend(std::iter::repeat_n(1.0, k));
+            return;
+        }
+        let lower = XI.min(0.5 / k as f64);
+        self.edges.clear();
+        self.edges.extend(neighbours.iter().map(|&q| q - p));
+        self.lengths.clear();
+        self.lengths.extend(self.edges.iter().map(|e| e.length()));
+        let mut trace = 0.0;
+        for a in 0..k {
+            for b in 0..k {
+                let value =
+                    self.edges[a].dot(self.edges[b]) + LAMBDA * self.lengths[a] * self.lengths[b];
+                self.h[(a, b)] = value;
+            }
+            trace += self.h[(a, a)];
+        }
+        let ridge = RIDGE * trace.max(f64::MIN_POSITIVE) / k as f64;
+        for a in 0..k {
+            self.h[(a, a)] += ridge;
+        }
+        self.active_set(k, lower);
+        out.extend_from_slice(&self.w);
+    }
+
+    /// Minimises `wᵀ H w` over `Σ w = 1, w ≥ lower` from the uniform weights, into `self.w`.
+    fn active_set(&mut self, k: usize, lower: f64) {
+        self.w.clear();
+        self.w.resize(k, 1.0 / k as f64);
+        self.bound.clear();
+        self.bound.resize(k, false);
+        for _ in 0..4 * k {
+            let Some(nu) = self.equality_minimiser(k, lower) else {
+                return;
+            };
+            // The largest step toward the target that keeps every weight at or above the bound.
+            let mut step = 1.0;
+            let mut blocking = None;
+            for j in (0..k).filter(|&j| !self.bound[j]) {
+                let (w, t) = (self.w[j], self.target[j]);
+                if t < lower && w > t {
+                    let reach = (w - lower) / (w - t);
+                    if reach < step {
+                        step = reach;
+                        blocking = Some(j);
+                    }
                 }
             }
-        }
-        for j in 0..k {
-            w[j] += step * (target[j] - w[j]);
-        }
-        if let Some(j) = blocking {
-            bound[j] = true;
-            w[j] = lower;
-            continue;
-        }
-        // At the equality minimiser: free the bound weight whose multiplier is most negative.
-        let gradient: Vec<f64> = (0..k)
-            .map(|a| 2.0 * (0..k).map(|b| h[(a, b)] * w[b]).sum::<f64>())
-            .collect();
-        let free: Vec<usize> = (0..k).filter(|&j| !bound[j]).collect();
-        let nu = -free.iter().map(|&j| gradient[j]).sum::<f64>() / free.len() as f64;
-        let release = (0..k)
-            .filter(|&j| bound[j])
-            .map(|j| (j, gradient[j] + nu))
-            .filter(|&(_, multiplier)| multiplier < -TOLERANCE)
-            .min_by(|a, b| a.1.total_cmp(&b.1));
-        match release {
-            Some((j, _)) => bound[j] = false,
-            None => break,
+            for j in 0..k {
+                self.w[j] += step * (self.target[j] - self.w[j]);
+            }
+            if let Some(j) = blocking {
+                self.bound[j] = true;
+                self.w[j] = lower;
+                continue;
+            }
+            // At the equality minimiser: free the bound weight whose multiplier
+            // `2 (H w)_j + ν` is most negative.
+            let release = (0..k)
+                .filter(|&j| self.bound[j])
+                .map(|j| {
+                    let gradient: f64 = (0..k).map(|b| 2.0 * self.h[(j, b)] * self.w[b]).sum();
+                    (j, gradient + nu)
+                })
+                .filter(|&(_, multiplier)| multiplier < -TOLERANCE)
+                .min_by(|a, b| a.1.total_cmp(&b.1));
+            match release {
+                Some((j, _)) => self.bound[j] = false,
+                None => return,
+            }
         }
     }
-    w
+
+    /// The minimiser of `wᵀ H w` with the bound weights at `lower` and the free ones summing
+    /// to the rest of one, into `self.target`; returns the sum's multiplier `ν`, or `None`
+    /// when `H_ff` cannot be factored (not finite).
+    fn equality_minimiser(&mut self, k: usize, lower: f64) -> Option<f64> {
+        self.free.clear();
+        self.free.extend((0..k).filter(|&j| !self.bound[j]));
+        let m = self.free.len();
+        let rest = 1.0 - (k - m) as f64 * lower;
+        for (a, &i) in self.free.iter().enumerate() {
+            for (b, &j) in self.free.iter().enumerate() {
+                self.factor[(a, b)] = self.h[(i, j)];
+            }
+            let coupling: f64 = (0..k)
+                .filter(|&j| self.bound[j])
+                .map(|j| self.h[(i, j)] * lower)
+                .sum();
+            self.columns[(a, 0)] = -coupling;
+            self.columns[(a, 1)] = 1.0;
+        }
+        let mut factor = self.factor.as_mut().submatrix_mut(0, 0, m, m);
+        let stack = MemStack::new(&mut self.memory);
+        cholesky_in_place(
+            factor.as_mut(),
+            LltRegularization::default(),
+            Par::Seq,
+            stack,
+            Default::default(),
+        )
+        .ok()?;
+        solve_in_place(
+            factor.as_ref(),
+            self.columns.as_mut().submatrix_mut(0, 0, m, 2),
+            Par::Seq,
+            MemStack::new(&mut []),
+        );
+        let sum_a: f64 = (0..m).map(|a| self.columns[(a, 0)]).sum();
+        let sum_b: f64 = (0..m).map(|a| self.columns[(a, 1)]).sum();
+        let half_nu = (sum_a - rest) / sum_b;
+        self.target.clear();
+        self.target.resize(k, lower);
+        for (a, &j) in self.free.iter().enumerate() {
+            self.target[j] = self.columns[(a, 0)] - half_nu * self.columns[(a, 1)];
+        }
+        Some(2.0 * half_nu)
+    }
 }
 
-/// The minimiser of `wᵀ H w` with the bound weights at `lower` and the free ones summing to
-/// the rest of one: the KKT system `[2 H_ff 1; 1ᵀ 0] [w_f; ν] = [−2 H_fb w_b; 1 − Σ w_b]`.
-fn equality_minimiser(h: &Mat<f64>, w: &[f64], bound: &[bool], lower: f64) -> Vec<f64> {
-    let free: Vec<usize> = (0..w.len()).filter(|&j| !bound[j]).collect();
-    let m = free.len();
-    let n_bound = (w.len() - m) as f64;
-    let kkt = Mat::from_fn(m + 1, m + 1, |a, b| match (a < m, b < m) {
-        (true, true) => 2.0 * h[(free[a], free[b])],
-        (true, false) | (false, true) => 1.0,
-        (false, false) => 0.0,
-    });
-    let rhs = Mat::from_fn(m + 1, 1, |a, _| {
-        if a < m {
-            let row = free[a];
-            -2.0 * (0..w.len())
-                .filter(|&j| bound[j])
-                .map(|j| h[(row, j)] * lower)
-                .sum::<f64>()
-        } else {
-            1.0 - n_bound * lower
-        }
-    });
-    let solution = kkt.partial_piv_lu().solve(&rhs);
-    let mut target = vec![lower; w.len()];
-    for (a, &j) in free.iter().enumerate() {
-        target[j] = solution[(a, 0)];
-    }
-    target
+/// The weights of one point, with buffers of its own (tests and one-off use).
+#[cfg(test)]
+fn graph_weights(p: DVec3, neighbours: &[DVec3]) -> Vec<f64> {
+    let mut out = Vec::new();
+    WeightSolver::new(neighbours.len()).weights(p, neighbours, &mut out);
+    out
 }
 
 #[cfg(test)]

@@ -15,6 +15,7 @@
 //! 4. [`io`]: glTF files in and out of the model;
 //! 5. [`document`]: editing it, with ops, undo history and sessions.
 
+pub mod animation;
 pub mod camera;
 pub mod curve;
 pub mod deform;

@@ -117,6 +117,15 @@ pub enum CommandError {
     /// A volumetric (or scripted surface) deformation was refused.
     #[error("{0}")]
     Volumetric(#[from] VolumetricError),
+    /// A key frame time that is negative or not a number.
+    #[error("A key frame's time must be a number of seconds, zero or more.")]
+    BadKeyTime,
+    /// A key frame with no model to key.
+    #[error("There is nothing to key: the document has no model.")]
+    NothingToKey,
+    /// No key frame at that time.
+    #[error("There is no key frame at {0} s.")]
+    NoKeyAt(f64),
     /// A mesh optimization was refused.
     #[error("The mesh could not be optimized: {0}.")]
     Optimize(#[from] OptimizeError),

@@ -22,6 +22,7 @@ mod feature;
 mod gizmo;
 mod history;
 mod intent;
+mod keyframes;
 mod op;
 mod optimize;
 mod outcome;
@@ -34,7 +35,8 @@ mod volumetric;
 
 pub use crate::model::{
     AlphaMode, Appearance, AsImported, ControlCurve, CurveHandle, CurveKind, Document,
-    HandleTarget, Image, Material, Model, PointCloud, SketchCurve, Stats, Texture, positions_hash,
+    HandleTarget, Image, Keyframe, Material, Model, PointCloud, SketchCurve, Stats, Texture,
+    positions_hash,
 };
 pub use arrange::overlapping_model;
 pub use curve_edit::{CURVE_PICK_RADIUS_PX, curve_type_toggle};
@@ -46,6 +48,7 @@ pub use intent::{
     CLOSE_TOLERANCE_PX, cut_instead, extrude_from, ink_instead, is_cross_section, model_in_lasso,
     model_under, needs_tap, op_for_stroke, starts_on_model, surface_at, tunnel_from,
 };
+pub use keyframes::KeyframeInput;
 pub use op::{
     AddCurveInput, AreaInput, BrushInput, CurveHandleInput, CurveTypeInput, DeleteHandleInput,
     FileInput, HandleEditInput, HandleInput, ImportInput, LinkHandlesInput, MergeInput, ModelInput,

@@ -6,6 +6,7 @@ use glam::DVec2;
 use serde::{Deserialize, Serialize};
 
 use super::CommandError;
+use super::keyframes::KeyframeInput;
 use super::volumetric::DeformInput;
 use crate::camera::Camera;
 use crate::curve::StrokePoint;
@@ -79,6 +80,10 @@ pub enum Op {
     /// A scripted large deformation: sphere handles moved by matrices, fixed spheres, the
     /// rest following through the volumetric graph Laplacian (or the surface editor).
     Deform(DeformInput),
+    /// Store every model's current pose as its key frame at a time.
+    Keyframe(KeyframeInput),
+    /// Remove the key frames at a time.
+    DeleteKeyframe(KeyframeInput),
     /// Undo the last change.
     Undo,
     /// Redo the last undone change.
@@ -113,6 +118,8 @@ impl Op {
         "link_handles",
         "delete_handle",
         "deform",
+        "keyframe",
+        "delete_keyframe",
         "undo",
         "redo",
     ];
@@ -144,6 +151,8 @@ impl Op {
             Op::LinkHandles(_) => "link_handles",
             Op::DeleteHandle(_) => "delete_handle",
             Op::Deform(_) => "deform",
+            Op::Keyframe(_) => "keyframe",
+            Op::DeleteKeyframe(_) => "delete_keyframe",
             Op::Undo => "undo",
             Op::Redo => "redo",
         }
@@ -171,6 +180,8 @@ impl Op {
             | Op::LinkHandles(_)
             | Op::DeleteHandle(_)
             | Op::Deform(_)
+            | Op::Keyframe(_)
+            | Op::DeleteKeyframe(_)
             | Op::Delete(_)
             | Op::Duplicate(_)
             | Op::Undo
@@ -815,6 +826,8 @@ mod tests {
                 handles: Vec::new(),
                 fixed: Vec::new(),
             }),
+            Op::Keyframe(KeyframeInput { time: 0.0 }),
+            Op::DeleteKeyframe(KeyframeInput { time: 0.0 }),
             Op::Undo,
             Op::Redo,
         ];

@@ -191,7 +191,9 @@ fn has_no_fields(op: &Op) -> bool {
         | Op::HandleEdit(_)
         | Op::LinkHandles(_)
         | Op::DeleteHandle(_)
-        | Op::Deform(_) => false,
+        | Op::Deform(_)
+        | Op::Keyframe(_)
+        | Op::DeleteKeyframe(_) => false,
         Op::Undo | Op::Redo => true,
     }
 }

@@ -9,6 +9,7 @@ use glam::Vec3;
 use gltf::json;
 use json::validation::Checked::Valid;
 
+use super::animation_write::{Baked, morph_targets};
 use super::glb::{Writer, Written, f32_positions_and_normals};
 use crate::model::{AlphaMode, Appearance, Material, Texture, positions_hash_of};
 
@@ -20,15 +21,31 @@ struct SplitVertices {
     colors: Option<Vec<[f32; 4]>>,
     /// The split vertex of each corner.
     corner_vertex: Vec<u32>,
+    /// The written vertex each split vertex was made from.
+    source: Vec<u32>,
 }
 
-/// One primitive per material (faces without one last), sharing the vertex accessors.
+/// One primitive per material (faces without one last), sharing the vertex accessors, and
+/// the animation's poses as morph targets of positions (the file's own normals are kept
+/// as they came, so they are not morphed).
 pub(super) fn imported_primitives(
     writer: &mut Writer,
     surface: &Written,
     appearance: &Appearance,
+    baked: Option<&Baked>,
 ) -> Vec<json::mesh::Primitive> {
     let split = split_vertices(surface, appearance);
+    let targets = baked.map(|baked| {
+        let poses = baked.poses.iter().map(|pose| {
+            let positions = split
+                .source
+                .iter()
+                .map(|&v| pose[v as usize].as_vec3())
+                .collect();
+            (positions, None)
+        });
+        morph_targets(writer, &split.positions, poses, None)
+    });
     let mut attributes = BTreeMap::new();
     attributes.insert(
         Valid(json::mesh::Semantic::Positions),
@@ -65,7 +82,10 @@ pub(super) fn imported_primitives(
             let material = material
                 .and_then(|m| appearance.materials.get(m as usize))
                 .map(|m| imported_material(writer, m));
-            writer.triangle_primitive(attributes.clone(), &indices, n_vertices, material)
+            let mut primitive =
+                writer.triangle_primitive(attributes.clone(), &indices, n_vertices, material);
+            primitive.targets = targets.clone();
+            primitive
         })
         .collect()
 }
@@ -154,6 +174,7 @@ fn split_vertices(surface: &Written, appearance: &Appearance) -> SplitVertices {
         uvs: appearance.uvs.as_ref().map(|_| Vec::new()),
         colors: appearance.colors.as_ref().map(|_| Vec::new()),
         corner_vertex: Vec::with_capacity(3 * surface.triangles.len()),
+        source: Vec::new(),
     };
     let mut index_of: HashMap<(u32, [u32; 9]), u32> = HashMap::new();
     for (corner, &v) in surface.triangles.as_flattened().iter().enumerate() {
@@ -172,6 +193,7 @@ fn split_vertices(surface: &Written, appearance: &Appearance) -> SplitVertices {
         }
         let index = *index_of.entry((v, key)).or_insert_with(|| {
             split.positions.push(positions[v as usize]);
+            split.source.push(v);
             split.normals.push(normal);
             if let Some(uvs) = &mut split.uvs {
                 uvs.push(uv);

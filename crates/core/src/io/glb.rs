@@ -49,17 +49,19 @@ impl Writer {
         }
     }
 
+    /// A mesh of `primitives`, whose `n_targets` morph targets (if any) rest at weight 0.
     pub(super) fn mesh(
         &mut self,
         name: String,
         primitives: Vec<json::mesh::Primitive>,
+        n_targets: usize,
     ) -> json::Index<json::Mesh> {
         self.root.push(json::Mesh {
             extensions: None,
             extras: None,
             name: Some(name),
             primitives,
-            weights: None,
+            weights: (n_targets > 0).then(|| vec![0.0; n_targets]),
         })
     }
 
@@ -188,6 +190,30 @@ impl Writer {
             type_,
             None,
             None,
+        )
+    }
+
+    /// SCALAR floats (animation times and weights), with `min` and `max` when `bounded`
+    /// (animation inputs must have them); their view has no target, as animation data must.
+    pub(super) fn scalars(&mut self, values: &[f32], bounded: bool) -> json::Index<json::Accessor> {
+        let bytes: Vec<u8> = values.iter().flat_map(|c| c.to_le_bytes()).collect();
+        let view = self.view(&bytes, None);
+        let bound = |fold: fn(f32, f32) -> f32, start: f32| {
+            bounded.then(|| {
+                serde_json::Value::from(vec![f64::from(values.iter().copied().fold(start, fold))])
+            })
+        };
+        let (min, max) = (
+            bound(f32::min, f32::INFINITY),
+            bound(f32::max, f32::NEG_INFINITY),
+        );
+        self.accessor(
+            view,
+            values.len(),
+            json::accessor::ComponentType::F32,
+            json::accessor::Type::Scalar,
+            min,
+            max,
         )
     }
 

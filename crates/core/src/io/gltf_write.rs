@@ -15,6 +15,7 @@ use gltf::json;
 use json::validation::Checked::Valid;
 use serde_json::value::RawValue;
 
+use super::animation_write::{Baked, bake, morph_targets, weights_animation};
 use super::appearance_write::imported_primitives;
 use super::extras::{CurveExtras, EXTRAS_VERSION, NodeExtras, SketchExtras, SketchmeshExtras};
 use super::glb::{Writer, Written, f32_positions_and_normals};
@@ -59,12 +60,14 @@ fn model_node(writer: &mut Writer, index: usize, model: &Model) -> json::Index<j
             model.appearance.as_deref().filter(|a| a.fits(mesh)),
         ),
     };
+    let baked = bake(model).filter(|_| !written.triangles.is_empty());
     let mesh_index = (!written.triangles.is_empty()).then(|| {
         let primitives = match appearance {
-            Some(appearance) => imported_primitives(writer, &written, appearance),
-            None => vec![clay_primitive(writer, &written)],
+            Some(appearance) => imported_primitives(writer, &written, appearance, baked.as_ref()),
+            None => vec![clay_primitive(writer, &written, baked.as_ref())],
         };
-        writer.mesh(name.clone(), primitives)
+        let n_targets = baked.as_ref().map_or(0, |b| b.poses.len());
+        writer.mesh(name.clone(), primitives, n_targets)
     });
     // Imported models without curves stay foreign files' models: no Sketchmesh extras,
     // so importing the export again keeps their look.
@@ -84,17 +87,33 @@ fn model_node(writer: &mut Writer, index: usize, model: &Model) -> json::Index<j
             sketches: Vec::new(),
         })
     });
-    writer.root.push(json::Node {
+    let node = writer.root.push(json::Node {
         mesh: mesh_index,
-        name: Some(name),
+        name: Some(name.clone()),
         extras: extras.flatten(),
         ..Default::default()
-    })
+    });
+    if let Some(baked) = &baked {
+        weights_animation(writer, node, baked, name);
+    }
+    node
 }
 
-/// A model made here: welded vertices, smooth normals, the clay material.
-fn clay_primitive(writer: &mut Writer, surface: &Written) -> json::mesh::Primitive {
+/// A model made here: welded vertices, smooth normals, the clay material; its animation's
+/// poses as morph targets of positions and normals.
+fn clay_primitive(
+    writer: &mut Writer,
+    surface: &Written,
+    baked: Option<&Baked>,
+) -> json::mesh::Primitive {
     let (positions, normals) = f32_positions_and_normals(&surface.positions, surface.triangles);
+    let targets = baked.map(|baked| {
+        let poses = baked.poses.iter().map(|pose| {
+            let (p, n) = f32_positions_and_normals(pose, surface.triangles);
+            (p, Some(n))
+        });
+        morph_targets(writer, &positions, poses, Some(&normals))
+    });
     let mut attributes = BTreeMap::new();
     attributes.insert(
         Valid(json::mesh::Semantic::Positions),
@@ -105,12 +124,14 @@ fn clay_primitive(writer: &mut Writer, surface: &Written) -> json::mesh::Primiti
         writer.vec3s(&normals, None),
     );
     let material = writer.material();
-    writer.triangle_primitive(
+    let mut primitive = writer.triangle_primitive(
         attributes,
         surface.triangles.as_flattened(),
         positions.len(),
         Some(material),
-    )
+    );
+    primitive.targets = targets;
+    primitive
 }
 
 fn point_cloud_node(
@@ -140,7 +161,7 @@ fn point_cloud_node(
         targets: None,
     };
     let name = format!("points {index}");
-    let mesh = (!positions.is_empty()).then(|| writer.mesh(name.clone(), vec![primitive]));
+    let mesh = (!positions.is_empty()).then(|| writer.mesh(name.clone(), vec![primitive], 0));
     writer.root.push(json::Node {
         mesh,
         name: Some(name),
@@ -173,7 +194,8 @@ fn sketch_node(
             }
         })
         .collect();
-    let mesh = (!primitives.is_empty()).then(|| writer.mesh(String::from("sketches"), primitives));
+    let mesh =
+        (!primitives.is_empty()).then(|| writer.mesh(String::from("sketches"), primitives, 0));
     let sketches = sketches
         .iter()
         .map(|sketch| SketchExtras {

@@ -24,8 +24,8 @@ use super::scene::{NodeGeometry, Surface, read_nodes};
 use super::weld::weld;
 use crate::mesh::{FaceId, Mesh, RepairReport, TriSoup, make_manifold};
 use crate::model::{
-    AlphaMode, Appearance, AsImported, Image, Material, Model, PointCloud, SketchCurve, Texture,
-    positions_hash, positions_hash_of,
+    AlphaMode, Appearance, AsImported, Image, Keyframe, Material, Model, PointCloud, SketchCurve,
+    Texture, positions_hash, positions_hash_of,
 };
 
 /// Pen pressure given to imported line primitives (the pressure of a mouse stroke).
@@ -122,6 +122,14 @@ fn add_node(
         face_source,
         input,
     } = weld_and_repair(&mut surface, &model_name, &mut imported.notes)?;
+    let keyframes = key_poses(&mesh, &surface, &face_source);
+    if surface.skipped_keys > 0 {
+        imported.notes.push(format!(
+            "{model_name}'s animation has {} frames; {} of them, evenly spread, became key frames.",
+            surface.key_times.len() + surface.skipped_keys,
+            surface.key_times.len()
+        ));
+    }
     let attached = extras
         .map(|extras| attach_curves(&mut mesh, &extras.curves))
         .unwrap_or_default();
@@ -170,8 +178,34 @@ fn add_node(
         name: if is_clay { None } else { name },
         appearance: mesh_appearance,
         as_imported,
+        keyframes,
     });
     Ok(())
+}
+
+/// The node's animated poses as key frames of `mesh`: each mesh vertex takes the position of
+/// the surface vertex behind one of its corners.
+fn key_poses(mesh: &Mesh, surface: &Surface, face_source: &[(FaceId, bool)]) -> Vec<Keyframe> {
+    if surface.poses.is_empty() {
+        return Vec::new();
+    }
+    let mut source = vec![0u32; mesh.n_vertices()];
+    for (corners, &(from, flipped)) in mesh.triangles().iter().zip(face_source) {
+        let t = surface.triangles[from.index()];
+        let t = if flipped { [t[0], t[2], t[1]] } else { t };
+        for (&v, s) in corners.iter().zip(t) {
+            source[v as usize] = s;
+        }
+    }
+    surface
+        .key_times
+        .iter()
+        .zip(&surface.poses)
+        .map(|(&time, pose)| Keyframe {
+            time,
+            positions: Arc::new(source.iter().map(|&s| pose[s as usize]).collect()),
+        })
+        .collect()
 }
 
 /// The distinct values of a list with few distinct values (per-face materials), in order.

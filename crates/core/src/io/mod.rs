@@ -6,7 +6,9 @@
 //! (positions, normals, indices, materials), sketches as line strips and point clouds as
 //! points; control curves and sketches also go in node `extras` under `"sketchmesh"`
 //! (documented in `docs/gltf-extras.md`), so nothing the user drew is lost and a file written
-//! here imports with its curves editable. [`inspect_gltf`] reports a file's topology.
+//! here imports with its curves editable. A model's key frames go out as morph targets
+//! with a weights animation (`animation_write.rs`) and come back as key frames.
+//! [`inspect_gltf`] reports a file's topology.
 //!
 //! This module reads and writes the data types of [`crate::model`] and knows nothing of
 //! editing: the `document` layer above calls it (the `import` op), never the other way round.
@@ -14,10 +16,12 @@
 //! Inside, the files point one way: `input.rs` (what the importer is given), `error.rs` and
 //! `extras.rs` (the `"sketchmesh"` JSON) are used by the readers `parse.rs`, `resources.rs`,
 //! `accessor.rs`, `scene.rs` and `weld.rs`, which `import.rs` (with `curves.rs`) and `info.rs`
-//! drive; `glb.rs` (the container being written) is filled by `appearance_write.rs` and
-//! `gltf_write.rs`.
+//! drive; `glb.rs` (the container being written) is filled by `appearance_write.rs`,
+//! `animation_write.rs` and `gltf_write.rs`.
 
 mod accessor;
+mod animation_read;
+mod animation_write;
 mod appearance_write;
 mod curves;
 mod error;

@@ -54,18 +54,48 @@ pub(crate) fn parse<'a>(bytes: &'a [u8], limits: &ImportLimits) -> Result<Parsed
     check_required_extensions(&mut value)?;
     supply_scene_nodes(&mut value);
     integral_floats_to_integers(&mut value);
-    // Animations move nothing in a modeller, and gltf-json refuses valid ones (a channel
-    // target without a node), so they are dropped before deserializing.
-    if let Some(object) = value.as_object_mut() {
-        object.remove("animations");
-    }
-    let root: gltf::json::Root = serde_json::from_value(value).map_err(parse_error)?;
+    // gltf-json refuses valid animations (a channel target without a node), so they are
+    // read apart, after the rest has passed (see `with_animations`).
+    let animations = value.as_object_mut().and_then(|o| o.remove("animations"));
+    let mut root: gltf::json::Root = serde_json::from_value(value).map_err(parse_error)?;
     check_position_references(&root)?;
     validate(&root)?;
+    if let Some(animations) = animations {
+        root = with_animations(root, animations);
+    }
     Ok(Parsed {
         document: gltf::Document::from_json_without_validation(root),
         blob,
     })
+}
+
+/// `root` with the file's animations (the only thing a modeller reads from them is the
+/// morph-target weights that become key frames): channels without a node dropped, then
+/// animations without channels. Animations that still do not deserialize or validate are
+/// left out whole: the models import as they are, without key frames.
+fn with_animations(root: gltf::json::Root, mut animations: serde_json::Value) -> gltf::json::Root {
+    if let Some(list) = animations.as_array_mut() {
+        for animation in list.iter_mut() {
+            if let Some(channels) = animation.get_mut("channels").and_then(|c| c.as_array_mut()) {
+                channels.retain(|channel| channel.pointer("/target/node").is_some());
+            }
+        }
+        list.retain(|a| {
+            a.get("channels")
+                .and_then(|c| c.as_array())
+                .is_some_and(|c| !c.is_empty())
+        });
+    }
+    let Ok(parsed) = serde_json::from_value(animations) else {
+        return root;
+    };
+    let mut animated = root.clone();
+    animated.animations = parsed;
+    if validate(&animated).is_ok() {
+        animated
+    } else {
+        root
+    }
 }
 
 fn parse_error(error: impl std::fmt::Display) -> GltfError {

@@ -8,6 +8,7 @@ use glam::{DMat3, DMat4, DVec3};
 use gltf::mesh::Mode;
 
 use super::accessor::{read_f64, read_u32};
+use super::animation_read::{NodeAnimation, node_animations, posed};
 use super::error::GltfError;
 use super::extras::NodeExtras;
 use super::input::ImportLimits;
@@ -34,6 +35,12 @@ pub(crate) struct Surface {
     pub(crate) has_colors: bool,
     /// The glTF material of each triangle.
     pub(crate) face_materials: Vec<Option<usize>>,
+    /// The times of the node's key poses (its morph-target animation), if any.
+    pub(crate) key_times: Vec<f64>,
+    /// World-space positions at each key time, one per vertex like `positions`.
+    pub(crate) poses: Vec<Vec<DVec3>>,
+    /// Sampled times of the animation left out (over `animation_read::MAX_KEYS`).
+    pub(crate) skipped_keys: usize,
 }
 
 /// A point primitive: positions and optional RGBA colours.
@@ -66,9 +73,13 @@ pub(crate) fn read_nodes(
 ) -> Result<Vec<NodeGeometry>, GltfError> {
     let instances = node_instances(document)?;
     check_limits(&instances, limits)?;
+    let animations = node_animations(document, buffers)?;
     instances
         .iter()
-        .map(|(node, world_from_node)| read_node(node, *world_from_node, buffers, limits))
+        .map(|(node, world_from_node)| {
+            let animation = animations.get(&node.index());
+            read_node(node, *world_from_node, buffers, limits, animation)
+        })
         .collect()
 }
 
@@ -134,6 +145,7 @@ fn read_node(
     world_from_node: DMat4,
     buffers: &Buffers,
     limits: &ImportLimits,
+    animation: Option<&NodeAnimation>,
 ) -> Result<NodeGeometry, GltfError> {
     let mut geometry = NodeGeometry {
         name: node.name().map(String::from),
@@ -154,10 +166,12 @@ fn read_node(
             continue;
         };
         let position_index = positions.index();
-        let positions: Vec<DVec3> = read_f64::<3>(&positions, buffers, limits.max_vertices)?
+        let in_node: Vec<DVec3> = read_f64::<3>(&positions, buffers, limits.max_vertices)?
             .into_iter()
-            .map(|p| transform.world_from_node.transform_point3(DVec3::from(p)))
+            .map(DVec3::from)
             .collect();
+        let to_world = |p: DVec3| transform.world_from_node.transform_point3(p);
+        let positions: Vec<DVec3> = in_node.iter().map(|&p| to_world(p)).collect();
         // World positions must also fit in f32, the precision of the GPU and of exports.
         if positions.iter().any(|p| !p.as_vec3().is_finite()) {
             return Err(GltfError::NonFinitePosition {
@@ -195,6 +209,16 @@ fn read_node(
                 geometry.lines.push(line);
             }
             mode => {
+                if let Some(animation) = animation {
+                    let surface = &mut geometry.surface;
+                    let poses = posed(&primitive, buffers, animation, &in_node)?;
+                    surface.poses.resize(poses.len(), Vec::new());
+                    for (all, pose) in surface.poses.iter_mut().zip(poses) {
+                        all.extend(pose.into_iter().map(to_world));
+                    }
+                    surface.key_times.clone_from(&animation.times);
+                    surface.skipped_keys = animation.skipped;
+                }
                 let triangles = assemble_triangles(mode, &indices, transform.is_mirrored);
                 append_surface(
                     &mut geometry.surface,

@@ -11,6 +11,7 @@
 mod appearance;
 mod as_imported;
 mod document;
+mod keyframe;
 mod point_cloud;
 mod sketch;
 mod surface;
@@ -20,6 +21,7 @@ pub use appearance::{
 };
 pub use as_imported::AsImported;
 pub use document::{Document, Stats};
+pub use keyframe::Keyframe;
 pub use point_cloud::PointCloud;
 pub use sketch::SketchCurve;
 pub use surface::Model;

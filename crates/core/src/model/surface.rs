@@ -4,6 +4,7 @@ use std::sync::Arc;
 
 use super::appearance::Appearance;
 use super::as_imported::AsImported;
+use super::keyframe::Keyframe;
 use crate::fibermesh::ControlCurve;
 use crate::mesh::Mesh;
 
@@ -21,11 +22,22 @@ pub struct Model {
     /// The triangles of an imported soup as they came, when `mesh` had to be repaired
     /// from them (see [`AsImported`]); `None` otherwise.
     pub as_imported: Option<Arc<AsImported>>,
+    /// Its animation's key frames, by increasing time; a key whose pose no longer has one
+    /// position per vertex (the surface was remeshed since) is ignored.
+    pub keyframes: Vec<Keyframe>,
 }
 
 impl Model {
     /// The input as it came, while `mesh` still fits it.
     pub fn as_imported(&self) -> Option<&AsImported> {
         self.as_imported.as_deref().filter(|a| a.fits(&self.mesh))
+    }
+
+    /// The key frames that fit the mesh as it is, by increasing time.
+    pub fn keyframes(&self) -> impl Iterator<Item = &Keyframe> {
+        let n = self.mesh.n_vertices();
+        self.keyframes
+            .iter()
+            .filter(move |k| k.positions.len() == n)
     }
 }

@@ -2,6 +2,7 @@
 //! and linking nine binaries against the optimized dependencies cost minutes of every cold CI
 //! run (issue 15). Each module keeps its own imports and helpers.
 
+mod animation;
 mod common;
 mod curve_edit;
 mod deform;

@@ -169,7 +169,7 @@ fn a_capsule_bent_by_half_a_turn_keeps_its_volume_bumps_and_does_not_fold() {
 
 /// A box `size` centred on the origin, with `cells` quads along each axis split into
 /// triangles, faces outward.
-fn box_mesh(size: DVec3, cells: [usize; 3]) -> Mesh {
+pub fn box_mesh(size: DVec3, cells: [usize; 3]) -> Mesh {
     let mut index: HashMap<[usize; 3], u32> = HashMap::new();
     let mut positions = Vec::new();
     let mut vertex = |c: [usize; 3]| -> u32 {

@@ -65,6 +65,8 @@ pub fn merge_op(doc: &Document, input: &MergeInput) -> Result<(usize, usize, Mod
         name: first.name.clone(),
         appearance: first.appearance.clone(),
         as_imported: first.as_imported.clone(),
+        // The merged surface has new vertices: no old pose fits it.
+        keyframes: Vec::new(),
     };
     Ok((kept, gone, model))
 }

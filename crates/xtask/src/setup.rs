@@ -32,7 +32,7 @@ pub struct Needs {
     pub wasm_target: bool,
     /// `/usr/bin/chromium` and the GPU emulation packages.
     pub chromium: bool,
-    /// `tests/node_modules` (playwright-core, binaryen's wasm-opt, gltf-validator, pngjs).
+    /// `tests/node_modules` (playwright-core, binaryen's wasm-opt, gltf-validator, pngjs, three).
     pub npm: bool,
 }
 

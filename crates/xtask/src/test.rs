@@ -19,6 +19,12 @@ use crate::{Steps, Workspace, cargo, format_size, run};
 const WASM_GZIP_BUDGET: u64 = 3_500_000;
 /// The session the CLI replays into `tests/out/replay.glb` for the validator.
 const REPLAY_FIXTURE: &str = "tests/fixtures/two-strokes-undo-redo.json";
+/// A session with three key frames (0, 1 and 2 s), replayed into `tests/out/animation.glb`
+/// for the validator and the three.js playback check.
+const ANIMATION_FIXTURE: &str = "tests/fixtures/animation-three-keys.json";
+/// What three.js must play from it: seconds, and frames (the keys and 12 in-betweens a
+/// second).
+const ANIMATION_PLAYBACK: (u32, u32) = (2, 25);
 /// The GPU paths of the browser suite: `SKETCHMESH_GPU` values understood by `tests/e2e/lib.mjs`.
 pub const GPU_PASSES: [&str; 2] = ["webgl2", "webgpu"];
 
@@ -210,20 +216,38 @@ fn browser_checks(
     drop(server);
 
     let replay_glb = out.join("replay.glb");
+    let animation_glb = out.join("animation.glb");
     steps.step("cli replay", || {
-        let mut command = match cli {
-            Some(binary) => Command::new(binary),
-            None => {
-                let mut c = cargo();
-                c.args(["run", "-p", "sketchmesh-cli", "--"]);
-                c
-            }
-        };
-        command
-            .current_dir(root)
-            .args(["replay", REPLAY_FIXTURE, "-o"])
-            .arg(&replay_glb);
-        run("replaying the session fixture with the CLI", &mut command)
+        for (fixture, glb) in [
+            (REPLAY_FIXTURE, &replay_glb),
+            (ANIMATION_FIXTURE, &animation_glb),
+        ] {
+            let mut command = match cli {
+                Some(binary) => Command::new(binary),
+                None => {
+                    let mut c = cargo();
+                    c.args(["run", "-p", "sketchmesh-cli", "--"]);
+                    c
+                }
+            };
+            command
+                .current_dir(root)
+                .args(["replay", fixture, "-o"])
+                .arg(glb);
+            run(&format!("replaying {fixture} with the CLI"), &mut command)?;
+        }
+        Ok(())
+    })?;
+    steps.step("three.js playback", || {
+        let (duration, frames) = ANIMATION_PLAYBACK;
+        run(
+            "playing the animation export in three.js",
+            Command::new("node")
+                .current_dir(root)
+                .arg("tests/three-playback.mjs")
+                .arg(relative_to(&animation_glb, root))
+                .args([duration.to_string(), frames.to_string()]),
+        )
     })?;
     steps.step("gltf-validator", || {
         let mut files: Vec<PathBuf> = GPU_PASSES

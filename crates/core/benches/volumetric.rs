@@ -68,8 +68,7 @@ fn bench_volumetric(c: &mut Criterion) {
             let rotate = glam::DMat4::from_rotation_z(angle % PI);
             edit.deform(
                 &transforms,
-                |i| {
-                    let p = points[i];
+                |_, p| {
                     if p.x > 2.0 {
                         rotate.transform_point3(p)
                     } else {
@@ -101,7 +100,7 @@ fn bench_volumetric(c: &mut Criterion) {
         b.iter(|| {
             edit.deform(
                 &transforms,
-                |i| rotate.transform_point3(points[i]),
+                |_, p| rotate.transform_point3(p),
                 &[],
                 &mut out,
             )

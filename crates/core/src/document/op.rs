@@ -7,7 +7,7 @@ use serde::{Deserialize, Serialize};
 
 use super::CommandError;
 use super::keyframes::KeyframeInput;
-use super::volumetric::DeformInput;
+use super::volumetric::{CurveDeformInput, DeformInput};
 use crate::camera::Camera;
 use crate::curve::StrokePoint;
 use crate::deform::HandleFit;
@@ -80,6 +80,9 @@ pub enum Op {
     /// A scripted large deformation: sphere handles moved by matrices, fixed spheres, the
     /// rest following through the volumetric graph Laplacian (or the surface editor).
     Deform(DeformInput),
+    /// Bend a model by a control curve: picked along its surface, redrawn in its editing
+    /// plane; the volume follows (the volumetric graph Laplacian).
+    CurveDeform(CurveDeformInput),
     /// Store every model's current pose as its key frame at a time.
     Keyframe(KeyframeInput),
     /// Remove the key frames at a time.
@@ -118,6 +121,7 @@ impl Op {
         "link_handles",
         "delete_handle",
         "deform",
+        "curve_deform",
         "keyframe",
         "delete_keyframe",
         "undo",
@@ -151,6 +155,7 @@ impl Op {
             Op::LinkHandles(_) => "link_handles",
             Op::DeleteHandle(_) => "delete_handle",
             Op::Deform(_) => "deform",
+            Op::CurveDeform(_) => "curve_deform",
             Op::Keyframe(_) => "keyframe",
             Op::DeleteKeyframe(_) => "delete_keyframe",
             Op::Undo => "undo",
@@ -169,6 +174,7 @@ impl Op {
             Op::SetCurveType(input) => Some(&input.stroke),
             Op::SketchFeature(input) => Some(&input.stroke),
             Op::CurveHandle(input) => Some(&input.stroke),
+            Op::CurveDeform(input) => Some(&input.stroke),
             Op::Import(_)
             | Op::Optimize(_)
             | Op::Tunnel(_)
@@ -199,6 +205,7 @@ impl Op {
             Op::SetCurveType(input) => Some(&mut input.stroke),
             Op::SketchFeature(input) => Some(&mut input.stroke),
             Op::CurveHandle(input) => Some(&mut input.stroke),
+            Op::CurveDeform(input) => Some(&mut input.stroke),
             // The ops without a stroke, listed one by one in `Op::stroke`.
             _ => None,
         }
@@ -825,6 +832,17 @@ mod tests {
                 model: 0,
                 handles: Vec::new(),
                 fixed: Vec::new(),
+            }),
+            Op::CurveDeform(CurveDeformInput {
+                model: 0,
+                viewport: [1.0, 1.0],
+                camera: Camera::default(),
+                curve: Vec::new(),
+                stroke: Vec::new(),
+                stroke_camera: None,
+                plane: None,
+                fixed: None,
+                falloff: crate::volumetric::Falloff::Linear,
             }),
             Op::Keyframe(KeyframeInput { time: 0.0 }),
             Op::DeleteKeyframe(KeyframeInput { time: 0.0 }),

@@ -13,7 +13,7 @@ use super::region_edit::region_edit_op;
 use super::skeleton::{
     curve_handle_op, delete_handle_op, handle_edit_op, link_handles_op, remove_model,
 };
-use super::volumetric::deform_op;
+use super::volumetric::{curve_deform_op, deform_op};
 use super::{CommandError, Document, ImportInput, Model, Op, SketchCurve, StrokeInput, curve_edit};
 use crate::curve::process_stroke;
 use crate::io::{ImportFile, ImportLimits, Imported, import_gltf};
@@ -98,6 +98,7 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
         Op::LinkHandles(input) => Outcome::Document(link_handles_op(base, input)?),
         Op::DeleteHandle(input) => Outcome::Document(delete_handle_op(base, input.handle)?),
         Op::Deform(input) => replaced(deform_op(base, input)?),
+        Op::CurveDeform(input) => replaced(curve_deform_op(base, input)?),
         Op::Keyframe(input) => Outcome::Document(keyframe_op(base, input)?),
         Op::DeleteKeyframe(input) => Outcome::Document(delete_keyframe_op(base, input)?),
         Op::Undo => Outcome::Undo,

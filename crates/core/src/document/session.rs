@@ -192,6 +192,7 @@ fn has_no_fields(op: &Op) -> bool {
         | Op::LinkHandles(_)
         | Op::DeleteHandle(_)
         | Op::Deform(_)
+        | Op::CurveDeform(_)
         | Op::Keyframe(_)
         | Op::DeleteKeyframe(_) => false,
         Op::Undo | Op::Redo => true,

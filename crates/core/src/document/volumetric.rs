@@ -1,13 +1,56 @@
-//! The `deform` op: a scripted large deformation of one model by sphere handles, through the
-//! volumetric graph Laplacian or, for comparison, the surface editor
-//! ([`crate::volumetric::deform_with_spheres`]).
+//! The `deform` op (a scripted large deformation of one model by sphere handles, through the
+//! volumetric graph Laplacian or, for comparison, the surface editor:
+//! [`crate::volumetric::deform_with_spheres`]) and the `curve_deform` op (a control curve
+//! picked on the surface and redrawn in its editing plane: [`crate::volumetric::CurveEdit`]).
+//!
+//! The volumetric graph depends only on the model's surface, so the last one built is kept
+//! (one per thread, keyed by the surface's positions and triangles): the ops and drag frames
+//! on one model revision build it once.
 
-use glam::{DMat4, DVec3};
+use std::cell::RefCell;
+use std::hash::{Hash, Hasher};
+use std::sync::Arc;
+
+use glam::{DMat4, DVec2, DVec3};
 use serde::{Deserialize, Serialize};
 
 use super::outcome::{target, with_positions};
 use super::{CommandError, Document, Model};
-use crate::volumetric::{Method, Sphere, SphereHandle, VolumetricParams, deform_with_spheres};
+use crate::camera::Camera;
+use crate::curve::polyline::contains;
+use crate::feature::Sketch;
+use crate::mesh::Mesh;
+use crate::model::positions_hash;
+use crate::volumetric::{
+    CurveEdit, Falloff, Method, Plane, Sphere, SphereHandle, VolumetricError, VolumetricGraph,
+    VolumetricParams, curve_targets, deform_with_spheres, editing_plane, pick_curve,
+};
+
+thread_local! {
+    /// The last volumetric graph built, with the key of the surface it was built for.
+    static LAST_GRAPH: RefCell<Option<(u64, Arc<VolumetricGraph>)>> = const { RefCell::new(None) };
+}
+
+/// The volumetric graph of `mesh`, built or the one kept for the same surface.
+///
+/// Errors: those of [`VolumetricGraph::build`].
+pub(super) fn graph_of(mesh: &Mesh) -> Result<Arc<VolumetricGraph>, VolumetricError> {
+    let mut hasher = std::collections::hash_map::DefaultHasher::new();
+    positions_hash(mesh).hash(&mut hasher);
+    mesh.triangles().hash(&mut hasher);
+    let key = hasher.finish();
+    let kept = LAST_GRAPH.with_borrow(|last| {
+        last.as_ref()
+            .filter(|(k, _)| *k == key)
+            .map(|(_, graph)| Arc::clone(graph))
+    });
+    if let Some(graph) = kept {
+        return Ok(graph);
+    }
+    let graph = Arc::new(VolumetricGraph::build(mesh)?);
+    LAST_GRAPH.set(Some((key, Arc::clone(&graph))));
+    Ok(graph)
+}
 
 /// `{"op":"deform","method":…,"model":i,"handles":[…],"fixed":[…]}`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -68,7 +111,11 @@ pub(super) fn deform_op(
         DeformMethod::Volumetric => Method::Volumetric(VolumetricParams::default()),
         DeformMethod::Surface => Method::Surface,
     };
-    let positions = deform_with_spheres(mesh, None, &handles, &fixed, method)?;
+    let graph = match method {
+        Method::Volumetric(_) => Some(graph_of(mesh)?),
+        Method::Surface => None,
+    };
+    let positions = deform_with_spheres(mesh, graph.as_deref(), &handles, &fixed, method)?;
     Ok((input.model, with_positions(doc, input.model, &positions)))
 }
 
@@ -77,4 +124,119 @@ fn sphere([x, y, z, radius]: [f64; 4]) -> Sphere {
         centre: DVec3::new(x, y, z),
         radius,
     }
+}
+
+/// `{"op":"curve_deform",...}`: a control curve drawn along model `model`'s surface, and the
+/// curve it becomes, drawn in its editing plane.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CurveDeformInput {
+    /// The model's index.
+    pub model: usize,
+    /// Viewport size `[width, height]` in CSS px.
+    pub viewport: [f64; 2],
+    /// The camera both strokes were drawn with.
+    pub camera: Camera,
+    /// Raw samples `[x, y, pressure]` of the stroke along the surface: the control curve is
+    /// the edge path under it.
+    pub curve: Vec<[f64; 3]>,
+    /// Raw samples `[x, y, pressure]` of the new curve, drawn on the editing plane.
+    pub stroke: Vec<[f64; 3]>,
+    /// The camera the new curve was drawn with, when the view turned to face the editing
+    /// plane after the curve was picked; left out, `camera`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stroke_camera: Option<Camera>,
+    /// The editing plane's normal; left out, the plane is chosen from the curve's average
+    /// normal and principal direction.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub plane: Option<[f64; 3]>,
+    /// A closed lasso `[x, y, pressure]` around the part that holds still.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fixed: Option<Vec<[f64; 3]>>,
+    /// How the curve's turns fade: `"linear"` (left out), `"constant"` or `"gaussian"`.
+    #[serde(default, skip_serializing_if = "is_linear")]
+    pub falloff: Falloff,
+}
+
+fn is_linear(falloff: &Falloff) -> bool {
+    *falloff == Falloff::Linear
+}
+
+impl CurveDeformInput {
+    fn viewport_size(&self) -> Result<DVec2, CommandError> {
+        let viewport = DVec2::from(self.viewport);
+        let usable = viewport.is_finite() && viewport.x > 0.0 && viewport.y > 0.0;
+        let cameras_valid =
+            self.camera.is_valid() && self.stroke_camera.is_none_or(|c| c.is_valid());
+        if usable && cameras_valid {
+            Ok(viewport)
+        } else {
+            Err(CommandError::BadView)
+        }
+    }
+}
+
+/// The screen points of raw samples.
+fn screen_points(samples: &[[f64; 3]]) -> Vec<DVec2> {
+    samples.iter().map(|&[x, y, _]| DVec2::new(x, y)).collect()
+}
+
+/// The picked curve's editing plane: the given normal through the curve's centroid, or the
+/// one chosen for it.
+fn plane_for(mesh: &Mesh, path: &[crate::mesh::VertexId], normal: Option<[f64; 3]>) -> Plane {
+    let chosen = editing_plane(mesh, path);
+    match normal.map(DVec3::from).and_then(DVec3::try_normalize) {
+        Some(normal) => Plane { normal, ..chosen },
+        None => chosen,
+    }
+}
+
+/// The index of the model and the model with the curve moved.
+///
+/// Errors: [`CommandError::NoSuchModel`], [`CommandError::BadView`], and the deformation's
+/// refusal (an open model, a curve stroke that misses the surface, a new curve drawn on a
+/// plane seen edge-on or of fewer than two points).
+pub(super) fn curve_deform_op(
+    doc: &Document,
+    input: &CurveDeformInput,
+) -> Result<(usize, Model), CommandError> {
+    let mesh = &target(doc, input.model)?.mesh;
+    let viewport = input.viewport_size()?;
+    let sketch = Sketch {
+        camera: input.camera,
+        viewport,
+        points: screen_points(&input.curve),
+        region: None,
+    };
+    let path = pick_curve(mesh, &sketch)?;
+    let plane = plane_for(mesh, &path, input.plane);
+    let drawn = screen_points(&input.stroke)
+        .into_iter()
+        .map(|p| {
+            let camera = input.stroke_camera.unwrap_or(input.camera);
+            let (origin, dir) = camera.ray_in_world(p, viewport);
+            plane.hit(origin, dir)
+        })
+        .collect::<Option<Vec<DVec3>>>()
+        .ok_or(VolumetricError::EdgeOnPlane)?;
+    if drawn.len() < 2 {
+        return Err(VolumetricError::CurveTooShort.into());
+    }
+    let graph = graph_of(mesh)?;
+    let lasso = input.fixed.as_deref().map(screen_points);
+    let fixed: Vec<bool> = graph
+        .points()
+        .iter()
+        .map(|&p| {
+            let on_screen = input.camera.screen_from_world(p, viewport);
+            match (&lasso, on_screen) {
+                (Some(lasso), Some(s)) => contains(lasso, s.truncate()),
+                _ => false,
+            }
+        })
+        .collect();
+    let mut edit = CurveEdit::new(mesh, &graph, &path, &fixed, input.falloff)?;
+    let targets = curve_targets(mesh, &path, &plane, &drawn);
+    let positions = edit.deform(&targets)?.to_vec();
+    Ok((input.model, with_positions(doc, input.model, &positions)))
 }

@@ -56,6 +56,15 @@ pub fn embed_sketch(mesh: &Mesh, sketch: &Sketch) -> Result<Embedded, FeatureErr
     })
 }
 
+/// The edge path under `sketch` on `mesh`, from its first point to its last (the path a
+/// feature is embedded along, §4.4.1 step 2), without moving anything.
+///
+/// Errors: the sketch's refusals (see [`FeatureError`]).
+pub fn pick_path(mesh: &Mesh, sketch: &Sketch) -> Result<Vec<VertexId>, FeatureError> {
+    let normals = vertex_normals(mesh);
+    Ok(place(mesh, &Bvh::new(mesh), &normals, sketch)?.path)
+}
+
 /// A feature sketch on one mesh, ready to shape: see the [module docs](super).
 #[derive(Clone, Debug)]
 pub struct FeatureEdit {

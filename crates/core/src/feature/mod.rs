@@ -34,7 +34,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::camera::Camera;
 
-pub use edit::{Embedded, FeatureEdit, Shaped, embed_sketch};
+pub use edit::{Embedded, FeatureEdit, Shaped, embed_sketch, pick_path};
 pub use error::FeatureError;
 pub use placement::BAND_PX;
 pub(crate) use placement::place;

@@ -186,8 +186,14 @@ impl VolumetricEdit {
         self.rest.len()
     }
 
+    /// How many of the points are the mesh's vertices (the first ones).
+    pub fn n_mesh(&self) -> usize {
+        self.n_mesh
+    }
+
     /// Solves one frame: `transforms[i]` turns point `i`'s rest Laplacian coordinates,
-    /// `hard(i)` gives the position of each hard-constrained point (called for those only),
+    /// `hard(i, rest)` gives the position of each hard-constrained point from its index and
+    /// rest position (called for those only),
     /// `soft_targets` one target per soft vertex; writes every graph point's new position
     /// to `out` (the first `n` are the mesh's vertices). Allocates nothing.
     ///
@@ -195,7 +201,7 @@ impl VolumetricEdit {
     pub fn deform(
         &mut self,
         transforms: &[Similarity],
-        hard: impl Fn(usize) -> DVec3,
+        hard: impl Fn(usize, DVec3) -> DVec3,
         soft_targets: &[DVec3],
         out: &mut [DVec3],
     ) -> Result<(), VolumetricError> {
@@ -220,7 +226,7 @@ impl VolumetricEdit {
         }
         for (i, value) in self.fixed_values.iter_mut().enumerate() {
             *value = if self.solver.fixed()[i] {
-                hard(i) - self.rest[i]
+                hard(i, self.rest[i]) - self.rest[i]
             } else {
                 DVec3::ZERO
             };

@@ -1,6 +1,7 @@
 //! Why a volumetric deformation could not be done.
 
 use crate::deform::DeformError;
+use crate::feature::FeatureError;
 use crate::solve::SolveError;
 
 /// Why a volumetric graph could not be built or a deformation solved; each says it in a
@@ -51,6 +52,15 @@ pub enum VolumetricError {
         /// The later handle's index.
         index: usize,
     },
+    /// A control curve stroke that could not be placed on the surface.
+    #[error("{0}")]
+    Curve(#[from] FeatureError),
+    /// A control curve of fewer than two vertices.
+    #[error("The control curve is too short: draw it along the surface over a few triangles.")]
+    CurveTooShort,
+    /// The new curve was drawn on a plane seen edge-on.
+    #[error("The editing plane is seen edge-on; turn the view or the plane, then draw again.")]
+    EdgeOnPlane,
     /// α or β̃ is not a positive number.
     #[error("The volumetric deformation's weights must be positive numbers.")]
     BadParams,

@@ -131,19 +131,29 @@ impl VolumetricGraph {
     /// graph and the mesh's edges (the paper's discrete geodesic distance).
     pub fn distances(&self, mesh: &Mesh, sources: &[u32]) -> Vec<f64> {
         distances_within(self.n_points(), sources, f64::INFINITY, |i| {
-            let p = self.points[i as usize];
-            let range = self.offsets[i as usize] as usize..self.offsets[i as usize + 1] as usize;
-            let graph = self.neighbours[range].iter().copied();
-            let on_mesh = (i < self.n_mesh as u32)
-                .then(|| mesh.vertex_neighbors(VertexId(i)).map(|v| v.0))
-                .into_iter()
-                .flatten();
-            graph
-                .chain(on_mesh)
-                .map(move |j| (j, p.distance(self.points[j as usize])))
-                .collect::<Vec<_>>()
-                .into_iter()
+            self.edges_from(mesh, i)
         })
+    }
+
+    /// Point `i`'s neighbours over the graph and, for a mesh vertex, the mesh's edges, with
+    /// the edges' lengths.
+    pub(super) fn edges_from(
+        &self,
+        mesh: &Mesh,
+        i: u32,
+    ) -> impl Iterator<Item = (u32, f64)> + use<'_> {
+        let p = self.points[i as usize];
+        let range = self.offsets[i as usize] as usize..self.offsets[i as usize + 1] as usize;
+        let on_mesh: Vec<u32> = if (i as usize) < self.n_mesh {
+            mesh.vertex_neighbors(VertexId(i)).map(|v| v.0).collect()
+        } else {
+            Vec::new()
+        };
+        self.neighbours[range]
+            .iter()
+            .copied()
+            .chain(on_mesh)
+            .map(move |j| (j, p.distance(self.points[j as usize])))
     }
 
     /// The paper's smoothing: each point that is not a mesh vertex to its neighbours' mean.

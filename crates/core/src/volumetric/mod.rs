@@ -15,8 +15,11 @@
 //! - `edit`: the energy (Eq. 3, its volume term kept edge by edge: see there why),
 //!   factored once per handle set, back-substituted per frame;
 //! - `sphere_handles`: scripted deformations (the `deform` op), volumetric or, for
-//!   comparison, with the surface editor.
+//!   comparison, with the surface editor;
+//! - `control_curve`: the paper's interaction: a curve picked on the surface, redrawn in
+//!   its editing plane, drives the deformation through WIRE transforms (§3.3, §4.1).
 
+mod control_curve;
 mod edit;
 mod error;
 mod graph;
@@ -27,6 +30,9 @@ mod sphere_handles;
 mod spread;
 mod weights;
 
+pub use control_curve::{
+    CurveEdit, Plane, curve_targets, editing_plane, pick_curve, wire_transforms,
+};
 pub use edit::{Constraints, GraphTerm, VolumetricEdit, VolumetricParams};
 pub use error::VolumetricError;
 pub use graph::VolumetricGraph;

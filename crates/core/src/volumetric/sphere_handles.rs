@@ -193,9 +193,9 @@ fn volumetric(
     };
     let mut edit = VolumetricEdit::new(mesh, graph, &constraints, params)?;
     let mut out = vec![DVec3::ZERO; points.len()];
-    let place = |i: usize| match membership[i] {
-        Some(h) if h < handles.len() => handles[h].matrix.transform_point3(points[i]),
-        _ => points[i],
+    let place = |i: usize, rest: DVec3| match membership[i] {
+        Some(h) if h < handles.len() => handles[h].matrix.transform_point3(rest),
+        _ => rest,
     };
     edit.deform(&transforms, place, &[], &mut out)?;
     out.truncate(graph.n_mesh());

@@ -7,12 +7,15 @@ use std::f64::consts::PI;
 use crate::common::{digest, import_mesh};
 
 use glam::{DMat4, DVec2, DVec3};
-use sketchmesh_core::document::{DeformHandleInput, DeformInput, DeformMethod, Editor, Op};
+use sketchmesh_core::camera::Camera;
+use sketchmesh_core::document::{
+    CurveDeformInput, DeformHandleInput, DeformInput, DeformMethod, Editor, Op,
+};
 use sketchmesh_core::geometry::{Bvh, enclosed_volume};
 use sketchmesh_core::mesh::{Mesh, TriSoup, primitives};
 use sketchmesh_core::volumetric::{
-    GraphTerm, Method, Sphere, SphereHandle, VolumetricError, VolumetricGraph, VolumetricParams,
-    deform_with_spheres,
+    Falloff, GraphTerm, Method, Sphere, SphereHandle, VolumetricError, VolumetricGraph,
+    VolumetricParams, deform_with_spheres,
 };
 
 /// Bumps on the capsule: centre (x, angle around) of each.
@@ -475,4 +478,115 @@ fn the_deform_op_replays_bit_for_bit_and_a_refusal_changes_nothing() {
     assert!(err.to_string().contains("overlaps a fixed sphere"), "{err}");
     assert_eq!(digest(editor.document()), before);
     assert_eq!(editor.session_json(), session);
+}
+
+/// Samples every 4 px along the screen images of the world points `from` to `to`.
+fn screen_line(camera: &Camera, viewport: DVec2, from: DVec3, to: DVec3) -> Vec<[f64; 3]> {
+    let n = 60;
+    (0..=n)
+        .filter_map(|k| {
+            let p = from.lerp(to, k as f64 / n as f64);
+            camera
+                .screen_from_world(p, viewport)
+                .map(|s| [s.x, s.y, 0.5])
+        })
+        .collect()
+}
+
+#[test]
+fn a_control_curve_redrawn_in_its_plane_bends_the_capsule_and_keeps_its_volume() {
+    let mesh = smooth_capsule();
+    let mut editor = Editor::new();
+    editor.apply(import_mesh("capsule.glb", &mesh)).unwrap();
+    let imported = editor.document().models[0].mesh.clone();
+    let viewport = DVec2::new(1000.0, 800.0);
+    let front = Camera {
+        eye: DVec3::new(0.0, 0.0, 12.0),
+        ..Camera::default()
+    };
+    // The curve runs along the capsule's front; its plane (normal along y) faces the view
+    // from above, where the new curve is drawn: its right half swung out toward +z.
+    let above = Camera {
+        eye: DVec3::new(0.0, 12.0, 0.0),
+        up: DVec3::NEG_Z,
+        ..Camera::default()
+    };
+    let curve = screen_line(
+        &front,
+        viewport,
+        DVec3::new(-1.5, 0.0, 0.5),
+        DVec3::new(2.5, 0.0, 0.5),
+    );
+    let bent: Vec<DVec3> = (0..=40)
+        .map(|k| {
+            let s = k as f64 / 40.0;
+            let angle = (s - 0.25).max(0.0) / 0.75 * 0.5 * PI;
+            // A quarter circle after the first quarter, same length.
+            if angle == 0.0 {
+                DVec3::new(-1.5 + 4.0 * s, 0.0, 0.5)
+            } else {
+                let radius = 3.0 / (0.5 * PI);
+                DVec3::new(
+                    -0.5 + radius * angle.sin(),
+                    0.0,
+                    0.5 + radius * (1.0 - angle.cos()),
+                )
+            }
+        })
+        .collect();
+    let stroke: Vec<[f64; 3]> = bent
+        .iter()
+        .filter_map(|&p| {
+            above
+                .screen_from_world(p, viewport)
+                .map(|s| [s.x, s.y, 0.5])
+        })
+        .collect();
+    let corner = |p: DVec3| {
+        let s = front.screen_from_world(p, viewport).expect("in view");
+        [s.x, s.y, 0.5]
+    };
+    let fixed = vec![
+        corner(DVec3::new(-3.8, -0.8, 0.0)),
+        corner(DVec3::new(-2.2, -0.8, 0.0)),
+        corner(DVec3::new(-2.2, 0.8, 0.0)),
+        corner(DVec3::new(-3.8, 0.8, 0.0)),
+    ];
+    let op = Op::CurveDeform(CurveDeformInput {
+        model: 0,
+        viewport: viewport.to_array(),
+        camera: front,
+        curve,
+        stroke,
+        stroke_camera: Some(above),
+        plane: None,
+        fixed: Some(fixed),
+        falloff: Falloff::Linear,
+    });
+    editor.apply(op).unwrap();
+    let moved = editor.document().models[0].mesh.positions().to_vec();
+    let change = volume(&imported, &moved) / enclosed_volume(&imported) - 1.0;
+    let tip = nearest_vertex(&imported, DVec3::new(3.5, 0.0, 0.0));
+    println!(
+        "curve deform: volume {:+.2}%, tip {} -> {}",
+        100.0 * change,
+        imported.positions()[tip],
+        moved[tip]
+    );
+    assert!(
+        change.abs() < 0.05,
+        "volume changed by {:.2}%",
+        100.0 * change
+    );
+    assert_eq!(crossing_pairs(&imported, &moved), 0);
+    // The right end swung out toward +z and round toward -x; the left end held.
+    assert!(
+        moved[tip].z > 1.5 && moved[tip].x < 2.5,
+        "tip at {}",
+        moved[tip]
+    );
+    let left = nearest_vertex(&imported, DVec3::new(-3.5, 0.0, 0.0));
+    assert!(moved[left] == imported.positions()[left]);
+    let replayed = Editor::replay_json(&editor.session_json()).unwrap();
+    assert_eq!(digest(replayed.document()), digest(editor.document()));
 }

@@ -29,6 +29,7 @@ use crate::input::PointerSample;
 use crate::input::router::{Hands, InputRouter, Routed};
 use crate::input::taps::TapCommand;
 use crate::panels;
+use crate::playback::Playback;
 use crate::render::geometry::pressure_width;
 use crate::render::{SceneCallback, SceneGeometry, SceneRenderer, Uniforms, ViewOptions};
 use crate::tools::{Mark, Mode, ToolEvent, ToolOutput, ToolSet, ViewCtx};
@@ -115,6 +116,8 @@ pub struct SketchApp {
     shown_motion: Option<u64>,
     /// Normals of a moved model, reused between frames.
     moved_normals: Vec<glam::DVec3>,
+    /// The key-framed animation being played, if any.
+    playback: Option<Playback>,
     /// The edit in progress: begun from a tool's op, stepped every frame, finished when done.
     edit: Option<Edit>,
     /// How many edits were begun: tells apart the documents of two edits of equal revision.
@@ -193,6 +196,7 @@ impl SketchApp {
             ),
             shown_motion: None,
             moved_normals: Vec::new(),
+            playback: None,
             edit: None,
             edits_begun: 0,
             falloff_panel: Default::default(),
@@ -394,6 +398,17 @@ impl SketchApp {
             },
             ToolOutput::Cancel => self.cancel_gesture(),
             ToolOutput::Refused(message) => self.set_status(message, now),
+            ToolOutput::Face { point, normal } => {
+                self.shared.borrow_mut().camera.face(point, normal);
+            }
+            ToolOutput::Play => {
+                let played =
+                    Playback::start(self.shared.borrow().editor.document(), clock::now_ms());
+                match played {
+                    Ok(playback) => self.playback = Some(playback),
+                    Err(message) => self.set_status(message, now),
+                }
+            }
         }
     }
 
@@ -911,12 +926,43 @@ impl SketchApp {
             }
             self.shown_motion = Some(edit.generation());
         }
+        self.play_frame();
         if rebuilt && let Some(first) = self.frame_after_rebuild.take() {
             match first {
                 0 => self.frame_all(),
                 first => self.frame_models_from(first),
             }
         }
+    }
+
+    /// Shows the animation's pose of each model while it plays; when it has played
+    /// through (or an edit began), the document's pose again.
+    fn play_frame(&mut self) {
+        let Some(playback) = &mut self.playback else {
+            return;
+        };
+        let time = playback
+            .time(clock::now_ms())
+            .filter(|_| self.edit.is_none());
+        let Some(time) = time else {
+            self.playback = None;
+            // Rebuilt from the document at the next frame.
+            self.geometry_source.1 = Some((u64::MAX, u64::MAX));
+            return;
+        };
+        let shared = self.shared.borrow();
+        let models = &shared.editor.document().models;
+        let geometry = Arc::make_mut(&mut self.geometry);
+        for (index, positions) in playback.poses(time) {
+            if let Some(model) = models.get(index) {
+                geometry.move_model(index, model, positions, &mut self.moved_normals);
+            }
+        }
+    }
+
+    /// Whether an animation is playing (the page then draws every frame).
+    fn is_playing(&self) -> bool {
+        self.playback.is_some()
     }
 
     /// The stroke in progress of the active tool.
@@ -954,6 +1000,15 @@ impl SketchApp {
             .map(|o| (o.points.as_slice(), o.is_confident, false));
         for (points, confident, croppable) in picked.into_iter().chain(outline) {
             outline_ui(ui, viewport, points, confident, croppable);
+        }
+        if let Some(curve) = self.tools.pose_curve() {
+            let camera = self.shared.borrow().camera.camera();
+            let size = glam::DVec2::new(viewport.width().into(), viewport.height().into());
+            let on_screen: Vec<glam::DVec2> = curve
+                .iter()
+                .filter_map(|&p| camera.screen_from_world(p, size).map(|s| s.truncate()))
+                .collect();
+            outline_ui(ui, viewport, &on_screen, true, true);
         }
     }
 
@@ -1281,6 +1336,9 @@ impl eframe::App for SketchApp {
         self.autosave(&ctx, now);
         if self.status.as_ref().is_some_and(|(_, until)| *until < now) {
             self.status = None;
+        }
+        if self.is_playing() {
+            ctx.request_repaint();
         }
         let action = egui::Panel::top("toolbar")
             .show(ui, |ui| {

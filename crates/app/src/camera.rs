@@ -106,6 +106,27 @@ impl OrbitCamera {
         self.distance = radius / half_fov.sin() * 1.1;
     }
 
+    /// Looks at `point` along `normal` (from the side of it the eye is on now), keeping the
+    /// distance: a plane through `point` with that normal is then seen face on.
+    pub fn face(&mut self, point: DVec3, normal: DVec3) {
+        let Some(normal) = normal.try_normalize() else {
+            return;
+        };
+        let eye = self.camera().eye;
+        let toward_eye = if (eye - point).dot(normal) >= 0.0 {
+            normal
+        } else {
+            -normal
+        };
+        self.target = point;
+        self.pitch = toward_eye
+            .y
+            .clamp(-1.0, 1.0)
+            .asin()
+            .clamp(-MAX_PITCH, MAX_PITCH);
+        self.yaw = toward_eye.x.atan2(toward_eye.z);
+    }
+
     /// World units per screen point at the target's depth.
     pub fn world_per_point(&self, viewport_height: f64) -> f64 {
         2.0 * self.distance * (self.fov_y_deg.to_radians() * 0.5).tan() / viewport_height.max(1.0)

@@ -11,6 +11,7 @@ pub mod clock;
 pub mod files;
 pub mod input;
 pub mod panels;
+pub mod playback;
 pub mod render;
 pub mod thumbnail;
 pub mod tools;

@@ -129,6 +129,13 @@ pub fn toolbar_ui(
                 }
                 ui.separator();
             }
+            Mode::Pose => {
+                let output = tools.pose_ui(ui, editor.document());
+                if output != ToolOutput::None {
+                    action = Some(Action::Tool(Box::new(output)));
+                }
+                ui.separator();
+            }
             Mode::Move => {
                 let output = tools.arrange_ui(ui, editor.document());
                 if output != ToolOutput::None {

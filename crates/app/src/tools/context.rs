@@ -41,4 +41,13 @@ pub enum ToolOutput {
     Cancel,
     /// The gesture did nothing; tell the user why.
     Refused(String),
+    /// Turn the view to look at `point` along `normal` (a plane to draw on, face on).
+    Face {
+        /// The point to look at.
+        point: glam::DVec3,
+        /// The direction to look along (either way round).
+        normal: glam::DVec3,
+    },
+    /// Play the key-framed animation.
+    Play,
 }

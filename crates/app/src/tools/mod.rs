@@ -5,7 +5,8 @@
 //! whose op previews while it is drawn (pull, over-sketch) begins it as a gesture
 //! ([`ToolOutput::Begin`]) and feeds it samples; the app runs it as it runs every edit.
 //! [`ToolSet`] holds one tool per [`Mode`] (FiberMesh's five tools, over-sketch, feature
-//! sketching, region editing, curve handles and optimize) and routes events to the active one.
+//! sketching, region editing, curve handles, posing and optimize) and routes events to the
+//! active one.
 
 pub mod arrange;
 mod context;
@@ -16,6 +17,7 @@ pub mod handles;
 pub mod mode;
 pub mod optimize;
 pub mod oversketch;
+pub mod pose;
 pub mod pull;
 pub mod region;
 pub mod sketch;
@@ -38,6 +40,7 @@ pub use optimize::Mark;
 use optimize::OptimizeTool;
 pub use oversketch::OversketchSettings;
 use oversketch::{HandlePreview, OversketchTool};
+use pose::PoseTool;
 use pull::PullTool;
 use region::RegionTool;
 use sketch::SketchTool;
@@ -54,6 +57,7 @@ pub struct ToolSet {
     feature: FeatureTool,
     region: RegionTool,
     handles: HandlesTool,
+    pose: PoseTool,
     arrange: ArrangeTool,
 }
 
@@ -119,6 +123,19 @@ impl ToolSet {
     pub fn selected_handle_point(&self) -> Option<(u32, usize)> {
         match self.mode {
             Mode::Handles => self.handles.selected(),
+            _ => None,
+        }
+    }
+
+    /// The pose tool's panel (fall-off, keys, play); what the user did there.
+    pub fn pose_ui(&mut self, ui: &mut egui::Ui, doc: &Document) -> ToolOutput {
+        self.pose.settings_ui(ui, doc)
+    }
+
+    /// The pose tool's picked control curve, to draw.
+    pub fn pose_curve(&self) -> Option<&[glam::DVec3]> {
+        match self.mode {
+            Mode::Pose => self.pose.curve(),
             _ => None,
         }
     }
@@ -195,6 +212,7 @@ impl ToolSet {
             Mode::Feature => self.feature.hint(),
             Mode::Region => self.region.hint(),
             Mode::Handles => self.handles.hint(doc),
+            Mode::Pose => self.pose.hint(),
             Mode::Move => self.arrange.hint(doc),
             _ => None,
         }
@@ -209,6 +227,7 @@ impl ToolSet {
         self.feature.cancel();
         self.region.cancel();
         self.handles.cancel();
+        self.pose.cancel();
         self.arrange.cancel();
         self.sketch.cancel()
     }
@@ -226,6 +245,7 @@ impl ToolSet {
             Mode::Feature => self.feature.on_event(event, view, doc),
             Mode::Region => self.region.on_event(event, view, doc),
             Mode::Handles => self.handles.on_event(event, view, doc),
+            Mode::Pose => self.pose.on_event(event, view, doc),
             Mode::Move => self.arrange.on_event(event, view, doc),
         }
     }
@@ -250,6 +270,7 @@ impl ToolSet {
             Mode::Feature => self.feature.preview(),
             Mode::Region => self.region.preview(),
             Mode::Handles => self.handles.preview(),
+            Mode::Pose => self.pose.preview(),
             Mode::Move => None,
         }
     }
@@ -275,6 +296,7 @@ impl ToolSet {
             Mode::Optimize => self.optimize.marks(camera),
             Mode::Feature => self.feature.marks(camera),
             Mode::Region => self.region.marks(camera),
+            Mode::Pose => self.pose.marks(camera),
             _ => Vec::new(),
         }
     }

@@ -30,13 +30,15 @@ pub enum Mode {
     Region,
     /// Curve handles and skeletons on any model or point cloud (Blanco).
     Handles,
+    /// Bend by a control curve keeping the volume, and key poses (Zhou et al.).
+    Pose,
     /// Select a model and move, turn or scale it; delete or duplicate it.
     Move,
 }
 
 impl Mode {
     /// Every mode, in toolbar order.
-    pub const ALL: [Mode; 11] = [
+    pub const ALL: [Mode; 12] = [
         Mode::Sketch,
         Mode::Pull,
         Mode::Erase,
@@ -46,6 +48,7 @@ impl Mode {
         Mode::Feature,
         Mode::Region,
         Mode::Handles,
+        Mode::Pose,
         Mode::Optimize,
         Mode::Move,
     ];
@@ -63,6 +66,7 @@ impl Mode {
             Mode::Feature => "Feature",
             Mode::Region => "Region",
             Mode::Handles => "Bend",
+            Mode::Pose => "Pose",
             Mode::Move => "Move",
         }
     }
@@ -80,6 +84,7 @@ impl Mode {
             Mode::Feature => Key::D,
             Mode::Region => Key::L,
             Mode::Handles => Key::J,
+            Mode::Pose => Key::Q,
             Mode::Move => Key::V,
         }
     }
@@ -106,6 +111,9 @@ impl Mode {
             }
             Mode::Handles => {
                 "Draw along a part of any model or point cloud, then drag, twist or scale its dots"
+            }
+            Mode::Pose => {
+                "Draw a curve along a model, then its new shape: it bends keeping its volume; key poses, play"
             }
             Mode::Move => "Tap a model, then drag it, its ring or its square: move, turn, scale",
         }

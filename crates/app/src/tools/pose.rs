@@ -1,0 +1,316 @@
+//! The pose tool (Zhou et al. 2005, §4): bend a model by a control curve, keeping its
+//! volume, and key its poses into an animation.
+//!
+//! A closed loop drawn first (off the curve) holds still what it surrounds. A stroke along
+//! a model picks the control curve (the edge path under it) and the view turns to face the
+//! curve's editing plane, side on to the surface; the next stroke is the curve's new shape,
+//! and one `curve_deform` op applies it. The panel keys the pose at a time, deletes a key,
+//! and plays the animation.
+
+use glam::DVec3;
+use sketchmesh_core::camera::Camera;
+use sketchmesh_core::curve::{StrokePoint, is_closed_loop};
+use sketchmesh_core::document::{
+    CLOSE_TOLERANCE_PX, CurveDeformInput, Document, KeyframeInput, Op, StrokeInput, model_under,
+};
+use sketchmesh_core::feature::Sketch;
+use sketchmesh_core::volumetric::{Falloff, editing_plane, pick_curve};
+
+use super::context::{ToolOutput, ViewCtx};
+use super::draw::{DrawTool, is_tap};
+use super::optimize::Mark;
+use crate::input::router::ToolEvent;
+
+/// Seconds the time moves on after a key, so the next pose goes after it.
+const KEY_STEP_S: f64 = 1.0;
+
+/// A picked control curve, waiting for its new shape.
+#[derive(Clone, Debug)]
+struct Picked {
+    model: usize,
+    /// The stroke along the surface, in the view it was drawn in.
+    input: StrokeInput,
+    /// The curve's vertices' positions, to draw.
+    points: Vec<DVec3>,
+}
+
+/// The pose tool's state.
+#[derive(Debug, Default)]
+pub struct PoseTool {
+    draw: DrawTool,
+    /// The loop around what holds still, in the view it was drawn in.
+    fixed: Option<(Camera, Vec<StrokePoint>)>,
+    picked: Option<Picked>,
+    falloff: Falloff,
+    /// The time the next key goes at (s).
+    time: f64,
+}
+
+impl PoseTool {
+    /// Feeds one event: strokes make the loop, the curve and its new shape.
+    pub fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
+        let Some(input) = self.draw.capture(event, view) else {
+            return ToolOutput::None;
+        };
+        if is_tap(&input) {
+            return ToolOutput::None;
+        }
+        if let Some(picked) = self.picked.take() {
+            return ToolOutput::Commit(self.deform(picked, input));
+        }
+        let points = input.points();
+        if model_under(doc, &input).is_none() {
+            if is_closed_loop(&points, CLOSE_TOLERANCE_PX) {
+                self.fixed = Some((input.camera, points));
+                return ToolOutput::None;
+            }
+            return ToolOutput::Refused(String::from(
+                "Draw the control curve along a model, from one end to the other.",
+            ));
+        }
+        self.pick(doc, input)
+    }
+
+    /// Picks the curve under `input` and turns the view to its editing plane.
+    fn pick(&mut self, doc: &Document, input: StrokeInput) -> ToolOutput {
+        let Some(model) = model_under(doc, &input) else {
+            return ToolOutput::None;
+        };
+        let mesh = &doc.models[model].mesh;
+        let sketch = Sketch {
+            camera: input.camera,
+            viewport: input.viewport_size(),
+            points: input.points().iter().map(|p| p.pos).collect(),
+            region: None,
+        };
+        match pick_curve(mesh, &sketch) {
+            Ok(path) => {
+                let plane = editing_plane(mesh, &path);
+                self.picked = Some(Picked {
+                    model,
+                    points: path.iter().map(|&v| mesh.position(v)).collect(),
+                    input,
+                });
+                ToolOutput::Face {
+                    point: plane.origin,
+                    normal: plane.normal,
+                }
+            }
+            Err(err) => ToolOutput::Refused(err.to_string()),
+        }
+    }
+
+    /// The op that gives the picked curve the shape of `stroke`.
+    fn deform(&mut self, picked: Picked, stroke: StrokeInput) -> Op {
+        let fixed = (self.fixed.take())
+            .filter(|(camera, _)| *camera == picked.input.camera)
+            .map(|(_, points)| {
+                points
+                    .iter()
+                    .map(|p| [p.pos.x, p.pos.y, p.pressure])
+                    .collect()
+            });
+        Op::CurveDeform(CurveDeformInput {
+            model: picked.model,
+            viewport: picked.input.viewport,
+            camera: picked.input.camera,
+            curve: picked.input.stroke,
+            stroke: stroke.stroke,
+            stroke_camera: (stroke.camera != picked.input.camera).then_some(stroke.camera),
+            plane: None,
+            fixed,
+            falloff: self.falloff,
+        })
+    }
+
+    /// Forgets the loop, the curve and the stroke.
+    pub fn cancel(&mut self) {
+        self.draw = DrawTool::Idle;
+        self.fixed = None;
+        self.picked = None;
+    }
+
+    /// The stroke being drawn, for live display.
+    pub fn preview(&self) -> Option<&[StrokePoint]> {
+        self.draw.preview()
+    }
+
+    /// The picked curve's points, to draw over the model.
+    pub fn curve(&self) -> Option<&[DVec3]> {
+        self.picked.as_ref().map(|p| p.points.as_slice())
+    }
+
+    /// The loop around what holds still, while the view is the one it was drawn in.
+    pub fn marks(&self, camera: &Camera) -> Vec<Mark> {
+        (self.fixed.iter())
+            .filter(|(c, _)| c == camera)
+            .map(|(_, points)| Mark {
+                points: points.clone(),
+                radius: None,
+                features: false,
+            })
+            .collect()
+    }
+
+    /// What the tool asks the user to do next.
+    pub fn hint(&self) -> Option<&'static str> {
+        Some(match (&self.picked, &self.fixed) {
+            (None, None) => {
+                "Draw a control curve along a model (a closed loop off it first holds a part still)"
+            }
+            (None, Some(_)) => "Now draw the control curve along the model",
+            (Some(_), _) => "Draw the curve's new shape; the model bends and keeps its volume",
+        })
+    }
+
+    /// The panel: the fall-off, and the timeline's key, delete and play.
+    pub fn settings_ui(&mut self, ui: &mut egui::Ui, doc: &Document) -> ToolOutput {
+        let mut output = ToolOutput::None;
+        for (falloff, label, hint) in [
+            (
+                Falloff::Linear,
+                "Linear",
+                "The bend spreads evenly toward what holds still",
+            ),
+            (
+                Falloff::Gaussian,
+                "Smooth",
+                "The bend gathers near the curve",
+            ),
+            (
+                Falloff::Constant,
+                "Rigid",
+                "Everything the curve reaches turns with it",
+            ),
+        ] {
+            let button = egui::Button::selectable(self.falloff == falloff, label)
+                .min_size(egui::vec2(36.0, 36.0));
+            if ui.add(button).on_hover_text(hint).clicked() {
+                self.falloff = falloff;
+            }
+        }
+        ui.separator();
+        ui.add(
+            egui::DragValue::new(&mut self.time)
+                .range(0.0..=600.0)
+                .speed(0.1)
+                .suffix(" s"),
+        )
+        .on_hover_text("The time of the next key");
+        let has_models = !doc.models.is_empty();
+        let key = ui.add_enabled(
+            has_models,
+            egui::Button::new("Key").min_size(egui::vec2(44.0, 36.0)),
+        );
+        if key
+            .on_hover_text("Keep every model's pose at this time")
+            .clicked()
+        {
+            output = ToolOutput::Commit(Op::Keyframe(KeyframeInput { time: self.time }));
+            self.time += KEY_STEP_S;
+        }
+        let keyed = doc
+            .models
+            .iter()
+            .any(|m| m.keyframes.iter().any(|k| k.time == self.time));
+        let delete = ui.add_enabled(keyed, egui::Button::new("Delete key"));
+        if delete
+            .on_hover_text("Remove the keys at this time")
+            .clicked()
+        {
+            output = ToolOutput::Commit(Op::DeleteKeyframe(KeyframeInput { time: self.time }));
+        }
+        let playable = doc.models.iter().any(|m| m.keyframes().count() >= 2);
+        let play = ui.add_enabled(
+            playable,
+            egui::Button::new("▶ Play").min_size(egui::vec2(44.0, 36.0)),
+        );
+        if play
+            .on_hover_text("Play the key-framed animation")
+            .clicked()
+        {
+            output = ToolOutput::Play;
+        }
+        output
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::input::Phase;
+    use crate::tools::test_support::{pen, shape, view};
+    use sketchmesh_core::geometry::enclosed_volume;
+
+    /// Feeds a stroke through `points` (screen points) and returns the tool's last output.
+    fn stroke(
+        tool: &mut PoseTool,
+        view: &ViewCtx,
+        doc: &Document,
+        points: &[(f32, f32)],
+    ) -> ToolOutput {
+        let last = points.len() - 1;
+        let mut output = ToolOutput::None;
+        for (k, &(x, y)) in points.iter().enumerate() {
+            let event = match k {
+                0 => ToolEvent::Begin(pen(Phase::Down, x, y)),
+                k if k == last => ToolEvent::End(pen(Phase::Up, x, y)),
+                _ => ToolEvent::Move(pen(Phase::Move, x, y)),
+            };
+            output = tool.on_event(&event, view, doc);
+        }
+        output
+    }
+
+    #[test]
+    fn a_curve_then_its_new_shape_bend_the_model_keeping_its_volume() {
+        let mut editor = shape();
+        let mut tool = PoseTool::default();
+        let front = view();
+        // Across the shape's middle, from left to right (the shape spans 250..550 x 190..490).
+        let across: Vec<(f32, f32)> = (0..=40).map(|k| (300.0 + 5.0 * k as f32, 340.0)).collect();
+        let output = stroke(&mut tool, &front, editor.document(), &across);
+        let ToolOutput::Face { point, normal } = output else {
+            panic!("no plane to face: {output:?}");
+        };
+        assert!(tool.curve().is_some_and(|c| c.len() > 5));
+        // The app turns the view to face the plane; the new shape is drawn there.
+        let mut camera = crate::camera::OrbitCamera::default();
+        camera.face(point, normal);
+        let side = ViewCtx {
+            camera: camera.camera(),
+            ..front
+        };
+        let eye_to_target = (side.camera.target - side.camera.eye).normalize();
+        assert!(eye_to_target.dot(normal).abs() > 0.99, "not face on");
+        // The curve as seen there, its right half swung up by up to 40 px: a bend.
+        let size = glam::DVec2::new(800.0, 600.0);
+        let seen: Vec<glam::DVec2> = tool
+            .curve()
+            .unwrap_or_default()
+            .iter()
+            .filter_map(|&p| side.camera.screen_from_world(p, size).map(|s| s.truncate()))
+            .collect();
+        let n = seen.len() as f32;
+        let bent: Vec<(f32, f32)> = seen
+            .iter()
+            .enumerate()
+            .map(|(k, s)| {
+                let lift = (k as f32 / n - 0.5).max(0.0) * 80.0;
+                (s.x as f32, s.y as f32 + 40.0 - lift)
+            })
+            .collect();
+        let output = stroke(&mut tool, &side, editor.document(), &bent);
+        let ToolOutput::Commit(op @ Op::CurveDeform(_)) = output else {
+            panic!("no curve deform: {output:?}");
+        };
+        let before = enclosed_volume(&editor.document().models[0].mesh);
+        editor.apply(op).unwrap();
+        let after = enclosed_volume(&editor.document().models[0].mesh);
+        assert!(
+            (after / before - 1.0).abs() < 0.05,
+            "volume {before} -> {after}"
+        );
+        assert!(tool.curve().is_none(), "the curve was used");
+    }
+}

@@ -3,9 +3,10 @@
 //!
 //! A closed loop drawn first (off the curve) holds still what it surrounds. A stroke along
 //! a model picks the control curve (the edge path under it) and the view turns to face the
-//! curve's editing plane, side on to the surface; the next stroke is the curve's new shape,
-//! and one `curve_deform` op applies it. The panel keys the pose at a time, deletes a key,
-//! and plays the animation.
+//! curve's editing plane, side on to the surface; the next stroke is the curve's new shape:
+//! it begins a `curve_deform` edit as a gesture at pointer-down, each sample extends it (the
+//! core back-substitutes, so the model follows the pen), and release commits it. The panel
+//! keys the pose at a time, deletes a key, and plays the animation.
 
 use glam::DVec3;
 use sketchmesh_core::camera::Camera;
@@ -17,7 +18,7 @@ use sketchmesh_core::feature::Sketch;
 use sketchmesh_core::volumetric::{Falloff, editing_plane, pick_curve};
 
 use super::context::{ToolOutput, ViewCtx};
-use super::draw::{DrawTool, is_tap};
+use super::draw::{DrawTool, is_tap, point};
 use super::optimize::Mark;
 use crate::input::router::ToolEvent;
 
@@ -41,6 +42,8 @@ pub struct PoseTool {
     /// The loop around what holds still, in the view it was drawn in.
     fixed: Option<(Camera, Vec<StrokePoint>)>,
     picked: Option<Picked>,
+    /// Whether the curve's new shape is being drawn (a gesture).
+    reshaping: bool,
     falloff: Falloff,
     /// The time the next key goes at (s).
     time: f64,
@@ -49,14 +52,14 @@ pub struct PoseTool {
 impl PoseTool {
     /// Feeds one event: strokes make the loop, the curve and its new shape.
     pub fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
+        if self.picked.is_some() {
+            return self.reshape(event, view);
+        }
         let Some(input) = self.draw.capture(event, view) else {
             return ToolOutput::None;
         };
         if is_tap(&input) {
             return ToolOutput::None;
-        }
-        if let Some(picked) = self.picked.take() {
-            return ToolOutput::Commit(self.deform(picked, input));
         }
         let points = input.points();
         if model_under(doc, &input).is_none() {
@@ -100,9 +103,37 @@ impl PoseTool {
         }
     }
 
-    /// The op that gives the picked curve the shape of `stroke`.
-    fn deform(&mut self, picked: Picked, stroke: StrokeInput) -> Op {
-        let fixed = (self.fixed.take())
+    /// The new shape's stroke: a gesture whose samples the edit follows.
+    fn reshape(&mut self, event: &ToolEvent, view: &ViewCtx) -> ToolOutput {
+        let sample = |s| {
+            let p = point(s, view);
+            [p.pos.x, p.pos.y, p.pressure]
+        };
+        match event {
+            ToolEvent::Begin(s) => {
+                let Some(picked) = &self.picked else {
+                    return ToolOutput::None;
+                };
+                self.reshaping = true;
+                ToolOutput::Begin(self.deform(picked, view.camera, sample(s)))
+            }
+            ToolEvent::Move(s) if self.reshaping => ToolOutput::Extend(sample(s)),
+            ToolEvent::End(s) if self.reshaping => {
+                self.cancel();
+                ToolOutput::End(sample(s))
+            }
+            ToolEvent::Cancel if self.reshaping => {
+                self.reshaping = false;
+                ToolOutput::Cancel
+            }
+            _ => ToolOutput::None,
+        }
+    }
+
+    /// The op that gives the picked curve the shape of a stroke drawn with `camera`, begun
+    /// with `first`.
+    fn deform(&self, picked: &Picked, camera: Camera, first: [f64; 3]) -> Op {
+        let fixed = (self.fixed.as_ref())
             .filter(|(camera, _)| *camera == picked.input.camera)
             .map(|(_, points)| {
                 points
@@ -114,9 +145,9 @@ impl PoseTool {
             model: picked.model,
             viewport: picked.input.viewport,
             camera: picked.input.camera,
-            curve: picked.input.stroke,
-            stroke: stroke.stroke,
-            stroke_camera: (stroke.camera != picked.input.camera).then_some(stroke.camera),
+            curve: picked.input.stroke.clone(),
+            stroke: vec![first],
+            stroke_camera: (camera != picked.input.camera).then_some(camera),
             plane: None,
             fixed,
             falloff: self.falloff,
@@ -128,6 +159,7 @@ impl PoseTool {
         self.draw = DrawTool::Idle;
         self.fixed = None;
         self.picked = None;
+        self.reshaping = false;
     }
 
     /// The stroke being drawn, for live display.
@@ -300,9 +332,26 @@ mod tests {
                 (s.x as f32, s.y as f32 + 40.0 - lift)
             })
             .collect();
-        let output = stroke(&mut tool, &side, editor.document(), &bent);
-        let ToolOutput::Commit(op @ Op::CurveDeform(_)) = output else {
-            panic!("no curve deform: {output:?}");
+        // The new shape is a gesture: begun at pointer-down, extended by every sample.
+        let mut op = None;
+        for (k, &(x, y)) in bent.iter().enumerate() {
+            let event = match k {
+                0 => ToolEvent::Begin(pen(Phase::Down, x, y)),
+                k if k + 1 == bent.len() => ToolEvent::End(pen(Phase::Up, x, y)),
+                _ => ToolEvent::Move(pen(Phase::Move, x, y)),
+            };
+            match tool.on_event(&event, &side, editor.document()) {
+                ToolOutput::Begin(begun) => op = Some(begun),
+                ToolOutput::Extend(sample) | ToolOutput::End(sample) => {
+                    if let Some(stroke) = op.as_mut().and_then(Op::stroke_mut) {
+                        stroke.push(sample);
+                    }
+                }
+                output => panic!("unexpected {output:?}"),
+            }
+        }
+        let Some(op @ Op::CurveDeform(_)) = op else {
+            panic!("no curve deform");
         };
         let before = enclosed_volume(&editor.document().models[0].mesh);
         editor.apply(op).unwrap();

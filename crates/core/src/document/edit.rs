@@ -70,6 +70,7 @@ use super::outcome::{Outcome, outcome, with_model};
 use super::oversketch::{OutlinePiece, OutlinePreview};
 use super::region_edit::RegionPreview;
 use super::skeleton::HandleDrag;
+use super::volumetric::CurvePreview;
 use super::{CommandError, Document, Editor, Op};
 
 /// What [`Edit::step`] left to do.
@@ -141,6 +142,8 @@ enum Work {
     Optimize(Box<OptimizePreview>),
     /// A feature sketch's live shape, following the op's amount.
     Feature(Box<FeaturePreview>),
+    /// A control curve's new shape being drawn: the volume follows each sample.
+    Curve(Box<CurvePreview>),
     /// A region edit's live shape, following the op's transform and levels.
     Region(Box<RegionPreview>),
     /// A model moving with a dragged handle, following the op's matrix.
@@ -173,6 +176,7 @@ impl Work {
             Op::Oversketch(input) => Work::Outline(Box::new(OutlinePreview::new(input))),
             Op::Optimize(input) => Work::Optimize(Box::new(OptimizePreview::start(base, input)?)),
             Op::SketchFeature(_) => Work::Feature(Box::new(FeaturePreview::new())),
+            Op::CurveDeform(_) => Work::Curve(Box::default()),
             Op::RegionEdit(_) => Work::Region(Box::new(RegionPreview::new())),
             Op::Transform(input) => {
                 Work::Transform(Box::new(TransformPreview::start(base, input)?))
@@ -282,6 +286,7 @@ impl Edit {
                 (Work::Outline(preview), _) => preview.step(base, stroke),
                 (Work::Optimize(preview), Op::Optimize(input)) => preview.step(base, input)?,
                 (Work::Feature(preview), Op::SketchFeature(input)) => preview.step(base, input)?,
+                (Work::Curve(preview), Op::CurveDeform(input)) => preview.step(base, input)?,
                 (Work::Region(preview), Op::RegionEdit(input)) => preview.step(base, input)?,
                 (Work::Transform(preview), Op::Transform(input)) => preview.step(base, input)?,
                 (Work::Handle(drag), Op::HandleEdit(input)) => drag.step(base, input)?,
@@ -320,6 +325,15 @@ impl Edit {
             // A feature's drag ended: its kept edit gives the exact result.
             Work::Feature(preview) => {
                 let Op::SketchFeature(input) = op else {
+                    self.work = Work::complete(base, op)?;
+                    return Ok((Progress::Working, true));
+                };
+                self.work = Work::Done(with_model(base, preview.result(base, input)?));
+                Ok((Progress::Done, true))
+            }
+            // A curve's new shape is drawn: its kept edit gives the exact result.
+            Work::Curve(preview) => {
+                let Op::CurveDeform(input) = op else {
                     self.work = Work::complete(base, op)?;
                     return Ok((Progress::Working, true));
                 };
@@ -445,6 +459,10 @@ impl Edit {
                 _ => None,
             },
             Work::Feature(preview) => preview.moved(),
+            Work::Curve(preview) => match &self.op {
+                Op::CurveDeform(input) => preview.moved(input),
+                _ => None,
+            },
             Work::Region(preview) => preview.moved(),
             Work::Transform(preview) => Some(preview.moved()),
             Work::Handle(drag) => drag.moved_model(),

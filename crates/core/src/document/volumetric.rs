@@ -200,43 +200,152 @@ pub(super) fn curve_deform_op(
     doc: &Document,
     input: &CurveDeformInput,
 ) -> Result<(usize, Model), CommandError> {
-    let mesh = &target(doc, input.model)?.mesh;
-    let viewport = input.viewport_size()?;
-    let sketch = Sketch {
-        camera: input.camera,
-        viewport,
-        points: screen_points(&input.curve),
-        region: None,
-    };
-    let path = pick_curve(mesh, &sketch)?;
-    let plane = plane_for(mesh, &path, input.plane);
-    let drawn = screen_points(&input.stroke)
-        .into_iter()
-        .map(|p| {
-            let camera = input.stroke_camera.unwrap_or(input.camera);
-            let (origin, dir) = camera.ray_in_world(p, viewport);
-            plane.hit(origin, dir)
-        })
-        .collect::<Option<Vec<DVec3>>>()
-        .ok_or(VolumetricError::EdgeOnPlane)?;
-    if drawn.len() < 2 {
-        return Err(VolumetricError::CurveTooShort.into());
-    }
-    let graph = graph_of(mesh)?;
-    let lasso = input.fixed.as_deref().map(screen_points);
-    let fixed: Vec<bool> = graph
-        .points()
-        .iter()
-        .map(|&p| {
-            let on_screen = input.camera.screen_from_world(p, viewport);
-            match (&lasso, on_screen) {
-                (Some(lasso), Some(s)) => contains(lasso, s.truncate()),
-                _ => false,
-            }
-        })
-        .collect();
-    let mut edit = CurveEdit::new(mesh, &graph, &path, &fixed, input.falloff)?;
-    let targets = curve_targets(mesh, &path, &plane, &drawn);
-    let positions = edit.deform(&targets)?.to_vec();
+    let picked = PickedCurve::new(doc, input)?;
+    let mut edit = picked.edit(input)?;
+    let positions = picked.deform(&mut edit, input)?.to_vec();
     Ok((input.model, with_positions(doc, input.model, &positions)))
+}
+
+/// A `curve_deform`'s control curve on its model, with its plane and graph.
+#[derive(Debug)]
+struct PickedCurve {
+    path: Vec<crate::mesh::VertexId>,
+    plane: Plane,
+    graph: Arc<VolumetricGraph>,
+    mesh: Mesh,
+    viewport: DVec2,
+}
+
+impl PickedCurve {
+    /// Picks the curve of `input` and gets its model's graph (built or kept).
+    ///
+    /// Errors: as [`curve_deform_op`].
+    fn new(doc: &Document, input: &CurveDeformInput) -> Result<PickedCurve, CommandError> {
+        let mesh = &target(doc, input.model)?.mesh;
+        let viewport = input.viewport_size()?;
+        let sketch = Sketch {
+            camera: input.camera,
+            viewport,
+            points: screen_points(&input.curve),
+            region: None,
+        };
+        let path = pick_curve(mesh, &sketch)?;
+        let plane = plane_for(mesh, &path, input.plane);
+        Ok(PickedCurve {
+            graph: graph_of(mesh)?,
+            path,
+            plane,
+            mesh: mesh.clone(),
+            viewport,
+        })
+    }
+
+    /// The factored edit of the curve with `input`'s fixed part and fall-off.
+    ///
+    /// Errors: the solve's.
+    fn edit(&self, input: &CurveDeformInput) -> Result<CurveEdit, CommandError> {
+        let lasso = input.fixed.as_deref().map(screen_points);
+        let fixed: Vec<bool> = (self.graph.points().iter())
+            .map(|&p| {
+                let on_screen = input.camera.screen_from_world(p, self.viewport);
+                match (&lasso, on_screen) {
+                    (Some(lasso), Some(s)) => contains(lasso, s.truncate()),
+                    _ => false,
+                }
+            })
+            .collect();
+        Ok(CurveEdit::new(
+            &self.mesh,
+            &self.graph,
+            &self.path,
+            &fixed,
+            input.falloff,
+        )?)
+    }
+
+    /// The mesh's positions with the curve given `input`'s new shape.
+    ///
+    /// Errors: a new curve on a plane seen edge-on, or of fewer than two points.
+    fn deform<'e>(
+        &self,
+        edit: &'e mut CurveEdit,
+        input: &CurveDeformInput,
+    ) -> Result<&'e [DVec3], CommandError> {
+        let camera = input.stroke_camera.unwrap_or(input.camera);
+        let drawn = screen_points(&input.stroke)
+            .into_iter()
+            .map(|p| {
+                let (origin, dir) = camera.ray_in_world(p, self.viewport);
+                self.plane.hit(origin, dir)
+            })
+            .collect::<Option<Vec<DVec3>>>()
+            .ok_or(VolumetricError::EdgeOnPlane)?;
+        if drawn.len() < 2 {
+            return Err(VolumetricError::CurveTooShort.into());
+        }
+        let targets = curve_targets(edit.rest(), &self.plane, &drawn);
+        Ok(edit.deform(&targets)?)
+    }
+}
+
+/// A `curve_deform` while its new curve is drawn: the curve picked and its graph got in a
+/// first step, factored in a second, then each step back-substitutes for the stroke so far.
+#[derive(Debug, Default)]
+pub(super) struct CurvePreview {
+    picked: Option<PickedCurve>,
+    edit: Option<CurveEdit>,
+    /// The number of stroke samples the shown positions are for.
+    shown_for: usize,
+    shown: Vec<DVec3>,
+}
+
+impl CurvePreview {
+    /// One step toward showing `input`'s stroke so far: `Some(true)` while setting up,
+    /// `Some(false)` after a new shape, `None` when it is shown already (or the stroke
+    /// has fewer than two samples).
+    ///
+    /// Errors: as [`curve_deform_op`].
+    pub(super) fn step(
+        &mut self,
+        base: &Document,
+        input: &CurveDeformInput,
+    ) -> Result<Option<bool>, CommandError> {
+        let Some(picked) = &self.picked else {
+            self.picked = Some(PickedCurve::new(base, input)?);
+            return Ok(Some(true));
+        };
+        let Some(edit) = &mut self.edit else {
+            self.edit = Some(picked.edit(input)?);
+            return Ok(Some(true));
+        };
+        if input.stroke.len() < 2 || input.stroke.len() == self.shown_for {
+            return Ok(None);
+        }
+        let positions = picked.deform(edit, input)?;
+        self.shown.clear();
+        self.shown.extend_from_slice(positions);
+        self.shown_for = input.stroke.len();
+        Ok(Some(false))
+    }
+
+    /// The model and the positions shown, once there are some.
+    pub(super) fn moved(&self, input: &CurveDeformInput) -> Option<(usize, &[DVec3])> {
+        (!self.shown.is_empty()).then_some((input.model, self.shown.as_slice()))
+    }
+
+    /// The committed result: the kept edit solved for the whole stroke, bit for bit what
+    /// [`curve_deform_op`] computes (the same factorization, built the same way).
+    ///
+    /// Errors: as [`curve_deform_op`].
+    pub(super) fn result(
+        &mut self,
+        base: &Document,
+        input: &CurveDeformInput,
+    ) -> Result<(usize, Model), CommandError> {
+        let (Some(picked), Some(edit)) = (&self.picked, &mut self.edit) else {
+            return curve_deform_op(base, input);
+        };
+        let positions = picked.deform(edit, input)?.to_vec();
+        Ok((input.model, with_positions(base, input.model, &positions)))
+    }
 }

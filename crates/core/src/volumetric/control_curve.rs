@@ -123,14 +123,13 @@ fn principal_directions(points: &[DVec3], origin: DVec3) -> [DVec3; 3] {
     [first, second, first.cross(second)]
 }
 
-/// Where each curve vertex goes when the curve's projection onto `plane` is replaced by
+/// Where each curve vertex (at `rest`) goes when the curve's projection onto `plane` is replaced by
 /// `drawn` (points on the plane, in drawing order): the drawn curve at the vertex's share
 /// of the projection's arc length, plus the vertex's offset from the plane. A curve drawn
 /// from the far end is taken the other way round.
-pub fn curve_targets(mesh: &Mesh, path: &[VertexId], plane: &Plane, drawn: &[DVec3]) -> Vec<DVec3> {
+pub fn curve_targets(rest: &[DVec3], plane: &Plane, drawn: &[DVec3]) -> Vec<DVec3> {
     let (u, w) = plane.normal.any_orthonormal_pair();
     let flat = |p: DVec3| DVec2::new((p - plane.origin).dot(u), (p - plane.origin).dot(w));
-    let rest: Vec<DVec3> = path.iter().map(|&v| mesh.position(v)).collect();
     let projected: Vec<DVec2> = rest.iter().map(|&p| flat(p)).collect();
     let mut drawn: Vec<DVec2> = drawn.iter().map(|&p| flat(p)).collect();
     let (first, last) = (projected[0], projected[projected.len() - 1]);
@@ -251,6 +250,11 @@ impl CurveEdit {
     /// The curve's vertices.
     pub fn path(&self) -> &[VertexId] {
         &self.path
+    }
+
+    /// The curve's vertices' rest positions.
+    pub fn rest(&self) -> &[DVec3] {
+        &self.rest
     }
 
     /// The mesh's vertex positions with the curve moved to `targets` (one per curve

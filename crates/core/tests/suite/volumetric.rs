@@ -9,7 +9,7 @@ use crate::common::{digest, import_mesh};
 use glam::{DMat4, DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    CurveDeformInput, DeformHandleInput, DeformInput, DeformMethod, Editor, Op,
+    CurveDeformInput, DeformHandleInput, DeformInput, DeformMethod, Editor, Op, Progress,
 };
 use sketchmesh_core::geometry::{Bvh, enclosed_volume};
 use sketchmesh_core::mesh::{Mesh, TriSoup, primitives};
@@ -563,7 +563,24 @@ fn a_control_curve_redrawn_in_its_plane_bends_the_capsule_and_keeps_its_volume()
         fixed: Some(fixed),
         falloff: Falloff::Linear,
     });
+    // The same op drawn as a gesture: the preview follows the stroke, and the commit is
+    // the op applied at once, bit for bit.
+    let mut drawn = Editor::new();
+    drawn.apply(import_mesh("capsule.glb", &mesh)).unwrap();
+    let Op::CurveDeform(whole) = &op else {
+        unreachable!()
+    };
+    let mut begun = whole.clone();
+    begun.stroke.truncate(1);
+    let mut gesture = drawn.begin_gesture(Op::CurveDeform(begun)).unwrap();
+    for &sample in &whole.stroke[1..] {
+        gesture.extend(sample);
+        while gesture.step().unwrap() == Progress::Working {}
+    }
+    assert!(gesture.moved_model().is_some(), "no preview");
+    gesture.finish(&mut drawn).unwrap();
     editor.apply(op).unwrap();
+    assert_eq!(digest(drawn.document()), digest(editor.document()));
     let moved = editor.document().models[0].mesh.positions().to_vec();
     let change = volume(&imported, &moved) / enclosed_volume(&imported) - 1.0;
     let tip = nearest_vertex(&imported, DVec3::new(3.5, 0.0, 0.0));

@@ -58,6 +58,9 @@ pub fn toolbar_ui(
     ui.spacing_mut().interact_size.y = TOUCH_TARGET;
     ui.spacing_mut().button_padding = egui::vec2(10.0, 6.0);
     row(ui, narrow, "tools", |ui| {
+        // Narrower padding in this row keeps its twelve tools and the view buttons on one
+        // line at 1280 points.
+        ui.spacing_mut().button_padding.x = 8.0;
         if narrow {
             ui.menu_button("☰", |ui| {
                 file_buttons(ui, editor, &mut action);

@@ -1129,6 +1129,55 @@ test('bend (J): a pen stroke across a shape makes a curve handle with dots; drag
     assert.deepEqual(fresh.errors, [], 'console errors while using handles');
 }));
 
+test('pose (Q): a pen stroke along a shape picks a control curve and turns the view face on to its plane; the new shape drawn there bends the shape live and commits one curve_deform; undo restores', () => withShape(async ({ fresh, created }) => {
+    const c = ELLIPSE.c;
+    const lastOp = () => lastOpOf(fresh.page);
+    await until(lastOp, (o) => o.op === 'create', 15_000);
+    const original = await glbOf(fresh.page);
+    await fresh.page.keyboard.press('q');
+    await frames(fresh.page, 3);
+    const front = await camera(fresh.page);
+    const pen = (points) => points.map((p) => ({ ...p, force: 0.5 }));
+    await penStroke(fresh.cdp, pen(line({ x: c.x - 130, y: c.y }, { x: c.x + 130, y: c.y }, 40)));
+    const faced = await until(() => camera(fresh.page), (cam) => cam.eye.some((v, k) => Math.abs(v - front.eye[k]) > 0.5), 5_000);
+    const eyeToTarget = faced.target.map((v, k) => v - faced.eye[k]);
+    const frontToTarget = front.target.map((v, k) => v - front.eye[k]);
+    const cos = eyeToTarget.reduce((s, v, k) => s + v * frontToTarget[k], 0) / (Math.hypot(...eyeToTarget) * Math.hypot(...frontToTarget));
+    assert.ok(Math.abs(cos) < 0.5, `the view turned to face the curve's plane side on (cos ${cos.toFixed(2)})`);
+    await frames(fresh.page, 3);
+    const before = await screenshot(fresh.page, out('pose-picked.png'));
+    // The new shape: the curve as seen now (across the view's middle), its right half swung up.
+    const bent = Array.from({ length: 41 }, (_, k) => {
+      const s = k / 40;
+      return { x: c.x - 200 + 400 * s, y: c.y - 80 - Math.max(0, s - 0.5) * 260 };
+    });
+    const at = (p) => ({ type: 'mouseMoved', x: p.x, y: p.y, buttons: 1, force: 0.5, pointerType: 'pen', button: 'left' });
+    await fresh.cdp.send('Input.dispatchMouseEvent', { ...at(bent[0]), type: 'mousePressed', clickCount: 1 });
+    for (const p of bent.slice(1)) {
+      await sleep(20);
+      await fresh.cdp.send('Input.dispatchMouseEvent', at(p));
+    }
+    await frames(fresh.page, 6);
+    const drawing = await screenshot(fresh.page, out('pose-drawing.png'));
+    const last = bent[bent.length - 1];
+    await fresh.cdp.send('Input.dispatchMouseEvent', { ...at(last), type: 'mouseReleased', buttons: 0, clickCount: 1, force: 0 });
+    const op = await until(lastOp, (o) => o.op === 'curve_deform', 15_000);
+    assert.equal(op.op, 'curve_deform', 'the new shape commits one curve_deform');
+    assert.ok(op.stroke_camera, 'the new shape was drawn in the turned view');
+    assert.deepEqual(await api(fresh.page, 'stats'), created, 'same vertices, triangles and curves');
+    await frames(fresh.page, 3);
+    const after = await screenshot(fresh.page, out('pose.png'));
+    const changed = imageChangedFraction(before, after);
+    const live = imageChangedFraction(before, drawing);
+    console.log(`    pose: ${(100 * changed).toFixed(1)}% of the view changed (${(100 * live).toFixed(1)}% while drawing)`);
+    assert.ok(changed > 0.01, `the shape bends (${changed})`);
+    assert.ok(live > 0.01, `the bend previews while the curve is drawn (${live})`);
+    await fresh.page.keyboard.press('Control+z');
+    await frames(fresh.page, 3);
+    assert.deepEqual(await glbOf(fresh.page), original, 'undo restores the shape bit for bit');
+    assert.deepEqual(fresh.errors, [], 'console errors while posing');
+}));
+
 test('region handles: with Handles picked, the curves get 3-axis handles; dragging the middle one up bends the region with its ends pinned, and Enter keeps the drags as one step', () => withShape(async ({ fresh, created }) => {
     const c = ELLIPSE.c;
     const lastOp = () => lastOpOf(fresh.page);

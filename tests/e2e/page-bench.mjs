@@ -614,18 +614,18 @@ try {
    * A 60 px pen drag up from `grab` in 40 steps, the page's animation frames recorded while
    * it moves and a screenshot before the release; the frames' times.
    */
-  const timedDrag = async (grab, shot) => {
+  const timedDrag = async (grab, shot, path = (i) => ({ x: grab.x, y: grab.y - 1.5 * i })) => {
     const pen = { pointerType: 'pen', button: 'left', force: 0.5 };
     await page.evaluate(() => { window.__bench.frames = []; window.__bench.recording = true; });
     await cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', ...grab, buttons: 1, clickCount: 1, ...pen });
     for (let i = 1; i <= 40; i++) {
       await sleep(16);
-      await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', x: grab.x, y: grab.y - 1.5 * i, buttons: 1, ...pen });
+      await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', ...path(i), buttons: 1, ...pen });
     }
     await sleep(100);
     const frames = await page.evaluate(() => { window.__bench.recording = false; return window.__bench.frames; });
     await screenshot(page, join(OUT_DIR, shot));
-    await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', x: grab.x, y: grab.y - 60, buttons: 0, clickCount: 1, ...pen });
+    await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', ...path(40), buttons: 0, clickCount: 1, ...pen });
     return frames;
   };
   /** What a timed drag of an `op` edit cost: its first step, later steps, frames, release. */
@@ -718,6 +718,40 @@ try {
     console.error(`WARNING: the bend fixture (${barPath}) is missing; the bend timing is skipped`);
   }
 
+  // The pose tool (volumetric graph Laplacian) on a capsule of 5,252 vertices, 31.6k graph
+  // points (SKETCHMESH_POSE_FIXTURE): a stroke along it picks the control curve and turns the
+  // view to its plane; the new curve, drawn left to right and bending up, is the timed drag
+  // (its first steps get the graph and factor; every later one back-substitutes).
+  let pose = null;
+  const capsulePath = process.env.SKETCHMESH_POSE_FIXTURE;
+  if (capsulePath && existsSync(capsulePath)) {
+    await page.evaluate((bytes) => {
+      window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
+      window.sketchmesh.loadGlb(new Uint8Array(bytes), 'capsule.glb');
+      window.sketchmesh.timings();
+    }, [...readFileSync(capsulePath)]);
+    await sleep(1000);
+    await page.keyboard.press('f');
+    await page.keyboard.press('q');
+    await sleep(300);
+    const r = await page.evaluate(() => {
+      const b = document.querySelector('canvas').getBoundingClientRect();
+      return { left: b.left, width: b.width, y: b.top + (b.height + 80) / 2 + 20 };
+    });
+    const from = { x: r.left + 0.3 * r.width, y: r.y };
+    const to = { x: r.left + 0.7 * r.width, y: r.y };
+    await penStroke(cdp, Array.from({ length: 41 }, (_, i) => ({ x: from.x + ((to.x - from.x) * i) / 40, y: r.y, force: 0.5 })), 8);
+    await sleep(800);
+    const width = to.x - from.x;
+    const frames = await timedDrag(from, 'bench-pose-drag.png', (i) => ({ x: from.x + (width * i) / 40, y: r.y - 40 - Math.max(0, i - 20) * 4 }));
+    await page.waitForFunction(() => JSON.parse(window.sketchmesh.session()).ops.at(-1)?.op === 'curve_deform', null, { timeout: 60_000, polling: 50 })
+      .catch(() => {});
+    pose = { vertices: (await api(page, 'stats')).vertices, ...(await dragReport('curve_deform', frames)) };
+    console.error(`pose: ${JSON.stringify(pose)}`);
+  } else {
+    console.error(`WARNING: the pose fixture (${capsulePath}) is missing; the pose timing is skipped`);
+  }
+
   const autosave = await autosaveBench();
   console.error(`autosave: ${JSON.stringify(autosave)}`);
   const gizmo = await gizmoBench();
@@ -747,6 +781,7 @@ try {
     feature,
     region,
     bend,
+    pose,
     autosave,
     gizmo,
   };

@@ -19,7 +19,7 @@ use sketchmesh_core::mesh::primitives;
 #[path = "../benches/common/fibermesh_shape.rs"]
 mod fibermesh_shape;
 
-const USAGE: &str = "usage: fixture_glb fibermesh VERTICES OUT.glb | fixture_glb bumpy-torus OUT.glb | fixture_glb bar OUT.glb";
+const USAGE: &str = "usage: fixture_glb fibermesh VERTICES OUT.glb | fixture_glb bumpy-torus OUT.glb | fixture_glb bar OUT.glb | fixture_glb capsule OUT.glb";
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -27,9 +27,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         [kind, vertices, path] if kind == "fibermesh" => {
             (fibermesh_shape::ellipse_document(vertices.parse()?)?, path)
         }
-        [kind, path] if kind == "bumpy-torus" || kind == "bar" => {
+        [kind, path] if kind == "bumpy-torus" || kind == "bar" || kind == "capsule" => {
             let mesh = match kind.as_str() {
                 "bar" => primitives::capsule(0.2, 1.0, 500, 1001),
+                // The volumetric bench's capsule: 5,252 vertices, 31.6k graph points.
+                "capsule" => primitives::capsule(0.5, 3.0, 42, 126),
                 _ => primitives::bumpy_torus(0.03, 384, 96),
             };
             let model = Model {

@@ -49,7 +49,7 @@ pub fn bench_command(workspace: &Workspace) -> anyhow::Result<()> {
     summary += &libigl;
 
     let web = steps.step("build-web", || build::build_web(workspace))?;
-    let (pulls, torus, bar) = steps.step("fixtures", || bench_fixtures(workspace))?;
+    let (pulls, torus, bar, capsule) = steps.step("fixtures", || bench_fixtures(workspace))?;
     let server = steps.step("start server", || StaticServer::start(&workspace.dist(), 0))?;
     let page = steps.step("page bench", || {
         let out = Command::new("node")
@@ -60,6 +60,7 @@ pub fn bench_command(workspace: &Workspace) -> anyhow::Result<()> {
             .env("SKETCHMESH_PULL_FIXTURES", &pulls)
             .env("SKETCHMESH_OVERSKETCH_FIXTURE", &torus)
             .env("SKETCHMESH_BEND_FIXTURE", &bar)
+            .env("SKETCHMESH_POSE_FIXTURE", &capsule)
             .env(
                 "SKETCHMESH_OPTIMIZE_FIXTURE",
                 workspace.root.join(OPTIMIZE_SCAN),
@@ -256,8 +257,8 @@ const PULL_SIZES: [usize; 2] = [10_000, 40_000];
 
 /// The page bench's fixtures as .glb files (the page makes shapes at its default resolution
 /// only): FiberMesh shapes of [`PULL_SIZES`] vertices to pull, comma-separated, and the
-/// bumpy torus to over-sketch.
-fn bench_fixtures(workspace: &Workspace) -> anyhow::Result<(String, String, String)> {
+/// bumpy torus to over-sketch, the bar to bend and the capsule to pose.
+fn bench_fixtures(workspace: &Workspace) -> anyhow::Result<(String, String, String, String)> {
     let dir = workspace.target_dir.join("bench-fixtures");
     fs::create_dir_all(&dir).with_context(|| format!("creating {}", dir.display()))?;
     let fixture = |args: &[&str]| {
@@ -281,7 +282,9 @@ fn bench_fixtures(workspace: &Workspace) -> anyhow::Result<(String, String, Stri
     fixture(&["bumpy-torus", &torus])?;
     let bar = dir.join("bar.glb").to_string_lossy().into_owned();
     fixture(&["bar", &bar])?;
-    Ok((pulls.join(","), torus, bar))
+    let capsule = dir.join("capsule.glb").to_string_lossy().into_owned();
+    fixture(&["capsule", &capsule])?;
+    Ok((pulls.join(","), torus, bar, capsule))
 }
 
 /// The scan the page bench optimizes (the shared test data, beside the repository; the page
@@ -440,6 +443,20 @@ fn page_table(page: &Value, wasm_gzip_size: u64) -> String {
             ms("/bend/drag_frame_ms/p50"),
         ),
         ("bend, release to committed", ms("/bend/apply_ms")),
+        (
+            "pose (curve on a capsule, 31.6k graph points), first step (curve picked, graph)",
+            ms("/pose/first_ms"),
+        ),
+        (
+            "pose, drag step (factor, then back-substitutions), max",
+            ms("/pose/step_ms/max"),
+        ),
+        ("pose, drag step, median", ms("/pose/step_ms/p50")),
+        (
+            "pose, frame while drawing, median",
+            ms("/pose/drag_frame_ms/p50"),
+        ),
+        ("pose, release to committed", ms("/pose/apply_ms")),
         (
             "Move tool drag of 100k triangles, frame interval, median",
             ms("/gizmo/interval_ms/p50"),

@@ -13,6 +13,14 @@ pub enum VolumetricError {
         "The volumetric deformation needs a closed surface, and this model has holes or is not one piece of surface."
     )]
     NotClosed,
+    /// More vertices than [`MAX_VERTICES`](super::MAX_VERTICES).
+    #[error(
+        "The volumetric deformation handles models of up to 60,000 vertices; this one has {vertices}. Simplify it first (the Optimize tool evens triangles, not counts), or bend it with the Bend tool."
+    )]
+    TooLarge {
+        /// The model's vertex count.
+        vertices: usize,
+    },
     /// The faces point inward.
     #[error(
         "The volumetric deformation needs a model whose faces point outward; this one is inside out."

@@ -35,7 +35,7 @@ pub use control_curve::{
 };
 pub use edit::{Constraints, GraphTerm, VolumetricEdit, VolumetricParams};
 pub use error::VolumetricError;
-pub use graph::VolumetricGraph;
+pub use graph::{MAX_VERTICES, VolumetricGraph};
 pub use similarity::Similarity;
 pub use sphere_handles::{Method, Sphere, SphereHandle, deform_with_spheres};
 pub use spread::{Falloff, spread};

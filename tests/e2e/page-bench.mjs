@@ -718,7 +718,7 @@ try {
     console.error(`WARNING: the bend fixture (${barPath}) is missing; the bend timing is skipped`);
   }
 
-  // The pose tool (volumetric graph Laplacian) on a capsule of 5,252 vertices, 31.6k graph
+  // The pose tool (volumetric graph Laplacian) on a capsule of 5,252 vertices, 28.6k graph
   // points (SKETCHMESH_POSE_FIXTURE): a stroke along it picks the control curve and turns the
   // view to its plane; the new curve, drawn left to right and bending up, is the timed drag
   // (its first steps get the graph and factor; every later one back-substitutes).

@@ -1,5 +1,5 @@
 //! The volumetric graph Laplacian (`core::volumetric`, Zhou et al. 2005) on a capsule whose
-//! graph has about 30k points: *graph* builds it (shells, lattice, collapse, smoothing, QP
+//! graph has about 29k points: *graph* builds it (shells, lattice, collapse, smoothing, QP
 //! weights), *factor* assembles and factors the energy for one handle set (a fixed end and
 //! a handle end), *frame* is one drag frame (the handle's turn spread to every point, the
 //! right-hand side, one back-substitution). Targets (issue 20): graph under 300 ms, factor

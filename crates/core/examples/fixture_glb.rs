@@ -30,7 +30,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         [kind, path] if kind == "bumpy-torus" || kind == "bar" || kind == "capsule" => {
             let mesh = match kind.as_str() {
                 "bar" => primitives::capsule(0.2, 1.0, 500, 1001),
-                // The volumetric bench's capsule: 5,252 vertices, 31.6k graph points.
+                // The volumetric bench's capsule: 5,252 vertices, 28.6k graph points.
                 "capsule" => primitives::capsule(0.5, 3.0, 42, 126),
                 _ => primitives::bumpy_torus(0.03, 384, 96),
             };

@@ -47,6 +47,11 @@ pub fn bench_command(workspace: &Workspace) -> anyhow::Result<()> {
     })?;
     summary += "\n## Feature sketching's region system against libigl\n\n";
     summary += &libigl;
+    let libigl = steps.step("libigl comparison, volumetric", || {
+        libigl_comparison(workspace, "volumetric_export", "libigl_volumetric.py")
+    })?;
+    summary += "\n## The volumetric graph Laplacian's frame against libigl\n\n";
+    summary += &libigl;
 
     let web = steps.step("build-web", || build::build_web(workspace))?;
     let (pulls, torus, bar, capsule) = steps.step("fixtures", || bench_fixtures(workspace))?;
@@ -444,7 +449,7 @@ fn page_table(page: &Value, wasm_gzip_size: u64) -> String {
         ),
         ("bend, release to committed", ms("/bend/apply_ms")),
         (
-            "pose (curve on a capsule, 31.6k graph points), first step (curve picked, graph)",
+            "pose (curve on a capsule, 28.6k graph points), first step (curve picked, graph)",
             ms("/pose/first_ms"),
         ),
         (

@@ -174,6 +174,11 @@ impl Prefactored {
         result
     }
 
+    /// The matrix `A` it was built for (its values as last refactored).
+    pub fn matrix(&self) -> &SparseMatrix {
+        &self.a
+    }
+
     /// Number of unknowns `n` (columns of `A`), free and fixed.
     pub fn n_unknowns(&self) -> usize {
         self.a.ncols()

@@ -34,7 +34,7 @@ use glam::DVec3;
 use super::{Similarity, VolumetricError, VolumetricGraph};
 use crate::deform::OneRingWeights;
 use crate::mesh::{Mesh, VertexId};
-use crate::solve::{Prefactored, Triplets};
+use crate::solve::{Prefactored, SparseMatrix, Triplets};
 
 /// How the volume term keeps the graph's shape; see the module docs.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -184,6 +184,19 @@ impl VolumetricEdit {
     /// The number of graph points (unknowns).
     pub fn n_points(&self) -> usize {
         self.rest.len()
+    }
+
+    /// The last frame's least-squares problem over the displacements from rest, for checking
+    /// against other solvers: `A`, `b`, which unknowns are fixed and their values (the
+    /// solution is what [`VolumetricEdit::deform`] added to the rest positions).
+    pub fn last_system(&self) -> (&SparseMatrix, &[DVec3], &[bool], &[DVec3]) {
+        let solver = &self.solver;
+        (
+            solver.matrix(),
+            &self.rhs,
+            solver.fixed(),
+            &self.fixed_values,
+        )
     }
 
     /// How many of the points are the mesh's vertices (the first ones).

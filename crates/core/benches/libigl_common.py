@@ -21,6 +21,19 @@ def median_ms(f):
     return result, 1e3 * sorted(samples)[len(samples) // 2]
 
 
+def read_system(directory):
+    """The sparse `A` (`a.txt`: `rows cols`, then `row col value` per entry) and `b`
+    (`b.txt`, `x y z` per row) an export wrote."""
+    with open(f"{directory}/a.txt") as lines:
+        rows, cols = map(int, lines.readline().split())
+    entries = np.loadtxt(f"{directory}/a.txt", skiprows=1, ndmin=2)
+    a = sp.csc_matrix(
+        (entries[:, 2], (entries[:, 0].astype(np.int64), entries[:, 1].astype(np.int64))),
+        shape=(rows, cols),
+    )
+    return a, np.loadtxt(f"{directory}/b.txt", ndmin=2)
+
+
 def region_rows(v, f, roi):
     """The normalised cotangent Laplacian rows (`L = I - D⁻¹ W`, weights of `igl.cotmatrix`
     clamped at zero, Nealen Eq. 4.3) of the region `roi` and its first anchor ring, and which

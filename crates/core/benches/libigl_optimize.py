@@ -17,18 +17,12 @@ import igl
 import numpy as np
 import scipy.sparse as sp
 
-from libigl_common import RUNS, median_ms
+from libigl_common import RUNS, median_ms, read_system
 
 
 def main(directory):
-    with open(f"{directory}/a.txt") as lines:
-        rows, cols = map(int, lines.readline().split())
-    entries = np.loadtxt(f"{directory}/a.txt", skiprows=1, ndmin=2)
-    a = sp.csc_matrix(
-        (entries[:, 2], (entries[:, 0].astype(np.int64), entries[:, 1].astype(np.int64))),
-        shape=(rows, cols),
-    )
-    b = np.loadtxt(f"{directory}/b.txt", ndmin=2)
+    a, b = read_system(directory)
+    cols = a.shape[1]
     ours = np.loadtxt(f"{directory}/ours.txt", ndmin=2)
 
     def build():

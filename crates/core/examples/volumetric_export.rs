@@ -12,15 +12,15 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::time::Instant;
 
-use glam::{DMat3, DMat4, DVec3};
-use sketchmesh_core::mesh::primitives;
-use sketchmesh_core::volumetric::{
-    Constraints, Falloff, Similarity, VolumetricEdit, VolumetricGraph, VolumetricParams, spread,
-};
+use glam::DVec3;
+use sketchmesh_core::volumetric::{Similarity, VolumetricEdit};
 
 #[path = "../benches/common/export.rs"]
 mod export;
+#[path = "../benches/common/volumetric_capsule.rs"]
+mod volumetric_capsule;
 use export::{RUNS, median_ms, vectors};
+use volumetric_capsule::Capsule;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let dir = PathBuf::from(
@@ -29,54 +29,24 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .unwrap_or_else(|| "/tmp/volumetric_compare".to_owned()),
     );
     std::fs::create_dir_all(&dir)?;
-    let mesh = primitives::capsule(0.5, 3.0, 42, 126);
-    let graph = VolumetricGraph::build(&mesh)?;
+    let capsule = Capsule::new();
+    let (mesh, graph) = (&capsule.mesh, &capsule.graph);
     let points = graph.points();
-    let ends = |keep: fn(f64) -> bool| -> Vec<u32> {
-        (0..points.len() as u32)
-            .filter(|&i| keep(points[i as usize].x))
-            .collect()
-    };
-    let (fixed, handle) = (ends(|x| x < -2.0), ends(|x| x > 2.0));
-    let mut hard = vec![false; points.len()];
-    for &i in fixed.iter().chain(&handle) {
-        hard[i as usize] = true;
-    }
-    let constraints = Constraints {
-        hard,
-        soft: Vec::new(),
-    };
-    let params = VolumetricParams::default();
+    let new_edit = || VolumetricEdit::new(mesh, graph, &capsule.constraints, capsule.params);
     let mut factor_times = Vec::new();
-    let mut edit = VolumetricEdit::new(&mesh, &graph, &constraints, params)?;
+    let mut edit = new_edit()?;
     for _ in 0..RUNS {
         let start = Instant::now();
-        edit = VolumetricEdit::new(&mesh, &graph, &constraints, params)?;
+        edit = new_edit()?;
         factor_times.push(start.elapsed().as_secs_f64());
     }
-    let angle = 60f64.to_radians();
-    let turn = Similarity::nearest(DMat3::from_rotation_z(angle)).ok_or("a turn")?;
     let mut transforms = vec![Similarity::IDENTITY; points.len()];
-    spread(
-        &[turn],
-        &[graph.distances(&mesh, &handle)],
-        &graph.distances(&mesh, &fixed),
-        Falloff::Linear,
-        &mut transforms,
-    );
-    let rotate = DMat4::from_rotation_z(angle);
-    let place = |_: usize, p: DVec3| {
-        if p.x > 2.0 {
-            rotate.transform_point3(p)
-        } else {
-            p
-        }
-    };
+    let place = capsule.turn(60f64.to_radians(), &mut transforms);
     let mut out = vec![DVec3::ZERO; points.len()];
     let mut solve_times = Vec::new();
     for _ in 0..RUNS {
         let start = Instant::now();
-        edit.deform(&transforms, place, &[], &mut out)?;
+        edit.deform(&transforms, &place, &[], &mut out)?;
         solve_times.push(start.elapsed().as_secs_f64());
     }
     println!(

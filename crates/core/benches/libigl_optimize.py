@@ -17,7 +17,7 @@ import igl
 import numpy as np
 import scipy.sparse as sp
 
-from libigl_common import RUNS, median_ms, read_system
+from libigl_common import RUNS, median_ms, precompute, read_system
 
 
 def main(directory):
@@ -32,12 +32,7 @@ def main(directory):
     known = np.zeros(0, dtype=np.int64)
     aeq = sp.csc_matrix((0, cols))
 
-    def precompute():
-        data = igl.min_quad_with_fixed_data()
-        igl.min_quad_with_fixed_precompute(q, known, aeq, True, data)
-        return data
-
-    data, factor_ms = median_ms(precompute)
+    data, factor_ms = median_ms(lambda: precompute(q, known, aeq))
     y = np.zeros((0, 3))
     beq = np.zeros((0, 3))
     x, solve_ms = median_ms(lambda: igl.min_quad_with_fixed_solve(data, linear, y, beq))

@@ -18,7 +18,7 @@ import igl
 import numpy as np
 import scipy.sparse as sp
 
-from libigl_common import RUNS, median_ms, read_system
+from libigl_common import RUNS, median_ms, precompute, read_system
 
 
 def main(directory):
@@ -34,12 +34,7 @@ def main(directory):
     (q, linear), build_ms = median_ms(build)
     aeq = sp.csc_matrix((0, cols))
 
-    def precompute():
-        data = igl.min_quad_with_fixed_data()
-        igl.min_quad_with_fixed_precompute(q, known, aeq, True, data)
-        return data
-
-    data, factor_ms = median_ms(precompute)
+    data, factor_ms = median_ms(lambda: precompute(q, known, aeq))
     beq = np.zeros((0, 3))
     x, solve_ms = median_ms(lambda: igl.min_quad_with_fixed_solve(data, linear, known_values, beq))
 

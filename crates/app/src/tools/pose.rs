@@ -15,7 +15,7 @@ use sketchmesh_core::document::{
     CLOSE_TOLERANCE_PX, CurveDeformInput, Document, KeyframeInput, Op, StrokeInput, model_under,
 };
 use sketchmesh_core::feature::Sketch;
-use sketchmesh_core::volumetric::{Falloff, editing_plane, pick_curve};
+use sketchmesh_core::volumetric::{Falloff, Plane, editing_plane, pick_curve};
 
 use super::context::{ToolOutput, ViewCtx};
 use super::draw::{DrawTool, is_tap, point};
@@ -33,7 +33,14 @@ struct Picked {
     input: StrokeInput,
     /// The curve's vertices' positions, to draw.
     points: Vec<DVec3>,
+    /// The editing plane: chosen for the curve, or turned by the user.
+    plane: Plane,
+    /// Whether the user turned it (the op then names its normal).
+    turned: bool,
 }
+
+/// How far **Turn plane** turns the editing plane about the curve's chord.
+const PLANE_TURN_DEG: f64 = 45.0;
 
 /// The pose tool's state.
 #[derive(Debug, Default)]
@@ -93,6 +100,8 @@ impl PoseTool {
                     model,
                     points: path.iter().map(|&v| mesh.position(v)).collect(),
                     input,
+                    plane,
+                    turned: false,
                 });
                 ToolOutput::Face {
                     point: plane.origin,
@@ -148,10 +157,29 @@ impl PoseTool {
             curve: picked.input.stroke.clone(),
             stroke: vec![first],
             stroke_camera: (camera != picked.input.camera).then_some(camera),
-            plane: None,
+            plane: picked.turned.then_some(picked.plane.normal.to_array()),
             fixed,
             falloff: self.falloff,
         })
+    }
+
+    /// Turns the picked curve's editing plane by [`PLANE_TURN_DEG`] about the curve's chord
+    /// (its ends' join), and the view to face it.
+    fn turn_plane(&mut self) -> ToolOutput {
+        let Some(picked) = &mut self.picked else {
+            return ToolOutput::None;
+        };
+        let (first, last) = (picked.points[0], picked.points[picked.points.len() - 1]);
+        let Some(axis) = (last - first).try_normalize() else {
+            return ToolOutput::None;
+        };
+        let turn = glam::DQuat::from_axis_angle(axis, PLANE_TURN_DEG.to_radians());
+        picked.plane.normal = (turn * picked.plane.normal).normalize();
+        picked.turned = true;
+        ToolOutput::Face {
+            point: picked.plane.origin,
+            normal: picked.plane.normal,
+        }
     }
 
     /// Forgets the loop, the curve and the stroke.
@@ -252,6 +280,13 @@ impl PoseTool {
         {
             output = ToolOutput::Commit(Op::DeleteKeyframe(KeyframeInput { time: self.time }));
         }
+        let turn = ui.add_enabled(self.picked.is_some(), egui::Button::new("Turn plane"));
+        if turn
+            .on_hover_text("Turn the editing plane about the curve by 45°")
+            .clicked()
+        {
+            output = self.turn_plane();
+        }
         let playable = doc.models.iter().any(|m| m.keyframes().count() >= 2);
         let play = ui.add_enabled(
             playable,
@@ -302,10 +337,23 @@ mod tests {
         // Across the shape's middle, from left to right (the shape spans 250..550 x 190..490).
         let across: Vec<(f32, f32)> = (0..=40).map(|k| (300.0 + 5.0 * k as f32, 340.0)).collect();
         let output = stroke(&mut tool, &front, editor.document(), &across);
-        let ToolOutput::Face { point, normal } = output else {
+        let ToolOutput::Face { normal, .. } = output else {
             panic!("no plane to face: {output:?}");
         };
         assert!(tool.curve().is_some_and(|c| c.len() > 5));
+        // Turning the plane twice and back: the op names the normal the view faces.
+        let turned = tool.turn_plane();
+        let ToolOutput::Face { normal: once, .. } = turned else {
+            panic!("no turn: {turned:?}");
+        };
+        assert!((once.angle_between(normal).to_degrees() - PLANE_TURN_DEG).abs() < 1e-6);
+        for _ in 0..7 {
+            tool.turn_plane();
+        }
+        let (point, normal) = match tool.picked.as_ref() {
+            Some(p) => (p.plane.origin, p.plane.normal),
+            None => panic!("the curve was dropped"),
+        };
         // The app turns the view to face the plane; the new shape is drawn there.
         let mut camera = crate::camera::OrbitCamera::default();
         camera.face(point, normal);

@@ -49,11 +49,6 @@ pub struct Plane {
 }
 
 impl Plane {
-    /// `p` moved along the normal onto the plane.
-    pub fn project(&self, p: DVec3) -> DVec3 {
-        p - self.normal * (p - self.origin).dot(self.normal)
-    }
-
     /// Where the ray from `origin` along `dir` meets the plane; `None` when it runs nearly
     /// along it.
     pub fn hit(&self, origin: DVec3, dir: DVec3) -> Option<DVec3> {
@@ -183,9 +178,9 @@ pub fn wire_transforms(rest: &[DVec3], moved: &[DVec3]) -> Vec<Similarity> {
 #[derive(Debug)]
 pub struct CurveEdit {
     edit: VolumetricEdit,
-    path: Vec<VertexId>,
+    /// The curve vertices' rest positions.
     rest: Vec<DVec3>,
-    /// Per graph point: the index in `path` of its nearest curve vertex (`u32::MAX` where
+    /// Per graph point: the index along the curve of its nearest curve vertex (`u32::MAX` where
     /// none is reached) and the strength there.
     nearest: Vec<(u32, f64)>,
     transforms: Vec<Similarity>,
@@ -238,18 +233,12 @@ impl CurveEdit {
         };
         let edit = VolumetricEdit::new(mesh, graph, &constraints, VolumetricParams::default())?;
         Ok(CurveEdit {
-            path: path.to_vec(),
             rest,
             nearest,
             transforms: vec![Similarity::IDENTITY; graph.n_points()],
             positions: vec![DVec3::ZERO; graph.n_points()],
             edit,
         })
-    }
-
-    /// The curve's vertices.
-    pub fn path(&self) -> &[VertexId] {
-        &self.path
     }
 
     /// The curve's vertices' rest positions.
@@ -262,7 +251,7 @@ impl CurveEdit {
     ///
     /// Errors: [`VolumetricError::Solve`] for the wrong number of targets.
     pub fn deform(&mut self, targets: &[DVec3]) -> Result<&[DVec3], VolumetricError> {
-        crate::solve::check_len("curve targets", self.path.len(), targets.len())?;
+        crate::solve::check_len("curve targets", self.rest.len(), targets.len())?;
         let at_vertex = wire_transforms(&self.rest, targets);
         for (t, &(seed, strength)) in self.transforms.iter_mut().zip(&self.nearest) {
             *t = at_vertex

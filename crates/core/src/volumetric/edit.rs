@@ -181,11 +181,6 @@ impl VolumetricEdit {
         })
     }
 
-    /// The number of graph points (unknowns).
-    pub fn n_points(&self) -> usize {
-        self.rest.len()
-    }
-
     /// The last frame's least-squares problem over the displacements from rest, for checking
     /// against other solvers: `A`, `b`, which unknowns are fixed and their values (the
     /// solution is what [`VolumetricEdit::deform`] added to the rest positions).

@@ -39,4 +39,3 @@ pub use graph::{MAX_VERTICES, VolumetricGraph};
 pub use similarity::Similarity;
 pub use sphere_handles::{Method, Sphere, SphereHandle, deform_with_spheres};
 pub use spread::{Falloff, spread};
-pub use weights::{LAMBDA, XI};

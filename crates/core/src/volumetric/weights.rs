@@ -25,9 +25,9 @@ use faer::{Mat, Par};
 use glam::DVec3;
 
 /// The paper's λ: the weight of the umbrella term.
-pub const LAMBDA: f64 = 0.01;
+const LAMBDA: f64 = 0.01;
 /// The paper's ξ: the least weight of a neighbour.
-pub const XI: f64 = 0.01;
+const XI: f64 = 0.01;
 /// Relative size of the ridge that makes `H` definite.
 const RIDGE: f64 = 1e-9;
 /// A multiplier this far below zero counts as negative.

@@ -5,7 +5,8 @@
 //! ops drawn from create, import, pull, add_curve (open, closed, cross-section), cut,
 //! tunnel, transform, delete, duplicate, erase,
 //! set_curve_type, rub, over-sketch (automatic or with a picked handle, exact or soft,
-//! near-handle or part ROI), undo and redo. A step is stored as parameters (an outline's
+//! near-handle or part ROI), feature, region edit, volumetric deform (sphere handles at a
+//! model's ends), key frames, undo and redo. A step is stored as parameters (an outline's
 //! centre and radius, which model, which curve, where along it, how far to drag...) and is
 //! turned into an op against the document of the moment: a pull starts on a visible point
 //! of an existing curve's screen projection, an erase follows a visible stretch of one, an
@@ -52,8 +53,9 @@ use proptest::prelude::*;
 use proptest::test_runner::{Config, FileFailurePersistence, RngSeed, TestRunner};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    CommandError, ControlCurve, Document, Editor, MergeInput, Model, ModelInput, Op, OversketchFit,
-    RegionEditInput, SketchFeatureInput, StrokeInput, StrokePairInput, TransformInput,
+    CommandError, ControlCurve, DeformHandleInput, DeformInput, DeformMethod, Document, Editor,
+    KeyframeInput, MergeInput, Model, ModelInput, Op, OversketchFit, RegionEditInput,
+    SketchFeatureInput, StrokeInput, StrokePairInput, TransformInput,
 };
 use sketchmesh_core::feature::FeatureKind;
 use sketchmesh_core::geometry::{Bvh, vertex_normals};
@@ -226,6 +228,17 @@ enum Step {
         boundary: f64,
         lift: f64,
         degrees: f64,
+    },
+    /// A model's far end turned and lifted by the volumetric deformation, its near end
+    /// held (sphere handles at the ends of its bounding box along x).
+    Deform {
+        model: usize,
+        degrees: f64,
+        lift: f64,
+    },
+    /// Every model's pose keyed at a time.
+    Key {
+        time: f64,
     },
     /// A curve tool or an over-sketch far from every model: refused.
     Stray {
@@ -417,11 +430,19 @@ fn step() -> impl Strategy<Value = Step> {
                 degrees,
             },
         );
+    let deform =
+        (0usize..8, -60.0..60.0f64, -0.3..0.3f64).prop_map(|(model, degrees, lift)| Step::Deform {
+            model,
+            degrees,
+            lift,
+        });
     prop_oneof![
         2 => outline_step().prop_map(Step::Create),
         1 => import,
         2 => feature,
         1 => region,
+        1 => deform,
+        1 => (0.0..3.0f64).prop_map(|time| Step::Key { time }),
         3 => pull,
         3 => add,
         2 => cut,
@@ -865,6 +886,31 @@ fn op_for(step: &Step, document: &Document) -> Op {
                 remesh: false,
             })
         }
+        Step::Deform {
+            model,
+            degrees,
+            lift,
+        } => {
+            let (lo, hi) = pick_model(document, *model)
+                .and_then(|m| m.mesh.bounding_box())
+                .unwrap_or((DVec3::ZERO, DVec3::ONE));
+            let (centre, size) = ((lo + hi) * 0.5, (hi - lo).length());
+            let end = |x: f64| [x, centre.y, centre.z, 0.25 * size];
+            let transform = DMat4::from_translation(DVec3::Y * (lift * size))
+                * DMat4::from_translation(centre)
+                * DMat4::from_rotation_z(degrees.to_radians())
+                * DMat4::from_translation(-centre);
+            Op::Deform(DeformInput {
+                method: DeformMethod::Volumetric,
+                model: pick_model(document, *model).map_or(0, |_| model % document.models.len()),
+                handles: vec![DeformHandleInput {
+                    sphere: end(hi.x),
+                    matrix: transform.to_cols_array(),
+                }],
+                fixed: vec![end(lo.x)],
+            })
+        }
+        Step::Key { time } => Op::Keyframe(KeyframeInput { time: *time }),
         Step::Stray { kind } => {
             let (camera, points) = (Camera::default(), nowhere());
             match kind {

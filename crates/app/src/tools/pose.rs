@@ -6,7 +6,9 @@
 //! curve's editing plane, side on to the surface; the next stroke is the curve's new shape:
 //! it begins a `curve_deform` edit as a gesture at pointer-down, each sample extends it (the
 //! core back-substitutes, so the model follows the pen), and release commits it. The panel
-//! keys the pose at a time, deletes a key, and plays the animation.
+//! keys the pose at a time, deletes a key, puts the models in their pose at a time (**Pose
+//! at**: to edit a pose between keys, or to start each frame of a retargeted motion from the
+//! rest pose), and plays the animation.
 
 use glam::DVec3;
 use sketchmesh_core::camera::Camera;
@@ -268,6 +270,13 @@ impl PoseTool {
         {
             output = ToolOutput::Commit(Op::Keyframe(KeyframeInput { time: self.time }));
             self.time += KEY_STEP_S;
+        }
+        let animated = doc.models.iter().any(|m| m.keyframes().next().is_some());
+        let go = ui.add_enabled(animated, egui::Button::new("Pose at"));
+        let hint = "Put the models in their pose at this time, to edit it (or to start each \
+                    frame of a retargeted motion from the rest pose)";
+        if go.on_hover_text(hint).clicked() {
+            output = ToolOutput::Commit(Op::PoseAt(KeyframeInput { time: self.time }));
         }
         let keyed = doc
             .models

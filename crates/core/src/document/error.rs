@@ -123,6 +123,9 @@ pub enum CommandError {
     /// A key frame with no model to key.
     #[error("There is nothing to key: the document has no model.")]
     NothingToKey,
+    /// A pose asked of an animation that has no key frames.
+    #[error("No model has key frames to take a pose from; key a pose first.")]
+    NoKeyframes,
     /// No key frame at that time.
     #[error("There is no key frame at {0} s.")]
     NoKeyAt(f64),

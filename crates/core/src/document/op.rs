@@ -87,6 +87,8 @@ pub enum Op {
     Keyframe(KeyframeInput),
     /// Remove the key frames at a time.
     DeleteKeyframe(KeyframeInput),
+    /// Put every animated model in its pose at a time.
+    PoseAt(KeyframeInput),
     /// Undo the last change.
     Undo,
     /// Redo the last undone change.
@@ -124,6 +126,7 @@ impl Op {
         "curve_deform",
         "keyframe",
         "delete_keyframe",
+        "pose_at",
         "undo",
         "redo",
     ];
@@ -158,6 +161,7 @@ impl Op {
             Op::CurveDeform(_) => "curve_deform",
             Op::Keyframe(_) => "keyframe",
             Op::DeleteKeyframe(_) => "delete_keyframe",
+            Op::PoseAt(_) => "pose_at",
             Op::Undo => "undo",
             Op::Redo => "redo",
         }
@@ -188,6 +192,7 @@ impl Op {
             | Op::Deform(_)
             | Op::Keyframe(_)
             | Op::DeleteKeyframe(_)
+            | Op::PoseAt(_)
             | Op::Delete(_)
             | Op::Duplicate(_)
             | Op::Undo
@@ -846,6 +851,7 @@ mod tests {
             }),
             Op::Keyframe(KeyframeInput { time: 0.0 }),
             Op::DeleteKeyframe(KeyframeInput { time: 0.0 }),
+            Op::PoseAt(KeyframeInput { time: 0.0 }),
             Op::Undo,
             Op::Redo,
         ];

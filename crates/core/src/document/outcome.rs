@@ -6,7 +6,7 @@ use std::sync::Arc;
 use super::arrange::{delete_op, duplicate_op, place_beside, transform_op};
 use super::create::CreateJob;
 use super::feature::feature_op;
-use super::keyframes::{delete_keyframe_op, keyframe_op};
+use super::keyframes::{delete_keyframe_op, keyframe_op, pose_at_op};
 use super::optimize::optimize_op;
 use super::oversketch::oversketch_op;
 use super::region_edit::region_edit_op;
@@ -101,6 +101,7 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
         Op::CurveDeform(input) => replaced(curve_deform_op(base, input)?),
         Op::Keyframe(input) => Outcome::Document(keyframe_op(base, input)?),
         Op::DeleteKeyframe(input) => Outcome::Document(delete_keyframe_op(base, input)?),
+        Op::PoseAt(input) => Outcome::Document(pose_at_op(base, input)?),
         Op::Undo => Outcome::Undo,
         Op::Redo => Outcome::Redo,
     })

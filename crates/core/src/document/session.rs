@@ -194,7 +194,8 @@ fn has_no_fields(op: &Op) -> bool {
         | Op::Deform(_)
         | Op::CurveDeform(_)
         | Op::Keyframe(_)
-        | Op::DeleteKeyframe(_) => false,
+        | Op::DeleteKeyframe(_)
+        | Op::PoseAt(_) => false,
         Op::Undo | Op::Redo => true,
     }
 }

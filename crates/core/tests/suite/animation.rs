@@ -189,6 +189,15 @@ fn three_keys_interpolate_export_and_come_back() {
         editor.document().models[0].keyframes
     );
 
+    // Posing at a time between keys puts the model in that in-between; the keys stay.
+    editor
+        .apply(Op::PoseAt(KeyframeInput { time: 0.5 }))
+        .unwrap();
+    assert!(editor.document().models[0].mesh.positions() == expected.as_slice());
+    assert_eq!(editor.document().models[0].keyframes().count(), 3);
+    editor.apply(Op::Undo).unwrap();
+    assert_eq!(digest(editor.document()), before);
+
     // Refusals change nothing.
     let err = editor.apply(keyframe(-1.0)).unwrap_err();
     assert!(err.to_string().contains("zero or more"), "{err}");

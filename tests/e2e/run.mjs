@@ -65,6 +65,9 @@ const CENTRE = { x: 660, y: 380 };
 const FILE_MENU = { x: 28, y: 20 };
 const MERGE_BUTTON = { x: 186, y: 63 };
 const DOCUMENTS_ITEM = { x: 56, y: 102 };
+/** The pose tool's Key and Play buttons, in the toolbar's second row. */
+const POSE_KEY = { x: 292, y: 59 };
+const POSE_PLAY = { x: 600, y: 59 };
 /** The region tool's Handles button, in the toolbar's second row. */
 const HANDLES_BUTTON = { x: 213, y: 59 };
 
@@ -1129,13 +1132,16 @@ test('bend (J): a pen stroke across a shape makes a curve handle with dots; drag
     assert.deepEqual(fresh.errors, [], 'console errors while using handles');
 }));
 
-test('pose (Q): a pen stroke along a shape picks a control curve and turns the view face on to its plane; the new shape drawn there bends the shape live and commits one curve_deform; undo restores', () => withShape(async ({ fresh, created }) => {
+test('pose (Q): keyed at rest, a pen stroke along a shape picks a control curve and turns the view face on to its plane; the new shape drawn there bends the shape live and commits one curve_deform; keyed again, Play animates between the keys; undo restores', () => withShape(async ({ fresh, created }) => {
     const c = ELLIPSE.c;
     const lastOp = () => lastOpOf(fresh.page);
     await until(lastOp, (o) => o.op === 'create', 15_000);
     const original = await glbOf(fresh.page);
     await fresh.page.keyboard.press('q');
     await frames(fresh.page, 3);
+    // The rest pose keyed at 0 s (the panel's Key, in the toolbar's second row).
+    await fresh.page.mouse.click(POSE_KEY.x, POSE_KEY.y);
+    await until(lastOp, (o) => o.op === 'keyframe', 5_000);
     const front = await camera(fresh.page);
     const pen = (points) => points.map((p) => ({ ...p, force: 0.5 }));
     await penStroke(fresh.cdp, pen(line({ x: c.x - 130, y: c.y }, { x: c.x + 130, y: c.y }, 40)));
@@ -1172,7 +1178,30 @@ test('pose (Q): a pen stroke along a shape picks a control curve and turns the v
     console.log(`    pose: ${(100 * changed).toFixed(1)}% of the view changed (${(100 * live).toFixed(1)}% while drawing)`);
     assert.ok(changed > 0.01, `the shape bends (${changed})`);
     assert.ok(live > 0.01, `the bend previews while the curve is drawn (${live})`);
-    await fresh.page.keyboard.press('Control+z');
+    // The bent pose keyed at 1 s, then played: half way it is between the two, at the end
+    // the bent one again.
+    await fresh.page.mouse.click(POSE_KEY.x, POSE_KEY.y);
+    const keyed = await until(lastOp, (o) => o.op === 'keyframe' && o.time === 1, 5_000);
+    assert.equal(keyed.time, 1, 'the second key is at 1 s');
+    // Play is enabled once the panel has drawn the second key.
+    await frames(fresh.page, 3);
+    await fresh.page.mouse.click(POSE_PLAY.x, POSE_PLAY.y);
+    await sleep(450);
+    const playing = await screenshot(fresh.page, out('pose-playing.png'));
+    // A slow frame advances the animation by at most 1/15 s: on SwiftShader it plays slower.
+    await sleep(4000);
+    await frames(fresh.page, 3);
+    const played = await screenshot(fresh.page, out('pose-played.png'));
+    const between = imageChangedFraction(after, playing);
+    const back = imageChangedFraction(after, played);
+    console.log(`    pose: playing, ${(100 * between).toFixed(1)}% of the view differs from the last key half way, ${(100 * back).toFixed(2)}% at the end`);
+    assert.ok(between > 0.01, `the animation plays (${between})`);
+    assert.ok(back < 0.005, `it ends on the last key (${back})`);
+    // Three steps back (key, bend, key), each in a frame of its own.
+    for (let k = 0; k < 3; k++) {
+      await fresh.page.keyboard.press('Control+z');
+      await frames(fresh.page, 3);
+    }
     await frames(fresh.page, 3);
     assert.deepEqual(await glbOf(fresh.page), original, 'undo restores the shape bit for bit');
     assert.deepEqual(fresh.errors, [], 'console errors while posing');

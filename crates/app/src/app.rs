@@ -942,7 +942,7 @@ impl SketchApp {
             return;
         };
         let time = playback
-            .time(clock::now_ms())
+            .advance(clock::now_ms())
             .filter(|_| self.edit.is_none());
         let Some(time) = time else {
             self.playback = None;

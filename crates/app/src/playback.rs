@@ -1,19 +1,25 @@
 //! Playing the key-framed animation in the page: every model with two or more keys follows
 //! its timeline (the core's in-betweens, each pair of keys factored when play starts), from
-//! the first key's time to the last, once; the document itself does not change.
+//! the first key's time to the last, once; the document itself does not change. Time runs
+//! with the clock, but a frame advances it by at most [`MAX_STEP_MS`]: on a machine too slow
+//! to draw the model smoothly the animation plays slower rather than skipping to its end.
 
 use glam::DVec3;
 use sketchmesh_core::animation::Timeline;
 use sketchmesh_core::document::Document;
+
+/// The most animation time one frame advances (ms).
+const MAX_STEP_MS: f64 = 1000.0 / 15.0;
 
 /// An animation being played.
 #[derive(Debug)]
 pub struct Playback {
     /// Each animated model's index, timeline and current pose.
     models: Vec<(usize, Timeline, Vec<DVec3>)>,
-    /// The clock (ms) when play started.
-    started_ms: f64,
-    start: f64,
+    /// The clock (ms) at the last frame.
+    last_ms: f64,
+    /// The animation's time now (s).
+    time: f64,
     end: f64,
 }
 
@@ -47,16 +53,19 @@ impl Playback {
         }
         Ok(Playback {
             models,
-            started_ms: now_ms,
-            start,
+            last_ms: now_ms,
+            time: start,
             end,
         })
     }
 
-    /// The animation's time at clock time `now_ms` (s), `None` once it has played through.
-    pub fn time(&self, now_ms: f64) -> Option<f64> {
-        let t = self.start + (now_ms - self.started_ms) / 1e3;
-        (t <= self.end).then_some(t)
+    /// The animation's time for the frame at clock time `now_ms` (s), `None` once it has
+    /// played through.
+    pub fn advance(&mut self, now_ms: f64) -> Option<f64> {
+        let step = (now_ms - self.last_ms).clamp(0.0, MAX_STEP_MS);
+        self.last_ms = now_ms;
+        self.time += step / 1e3;
+        (self.time <= self.end).then_some(self.time)
     }
 
     /// Each animated model's index and pose at time `t`.

@@ -212,7 +212,8 @@ struct PickedCurve {
     path: Vec<crate::mesh::VertexId>,
     plane: Plane,
     graph: Arc<VolumetricGraph>,
-    mesh: Mesh,
+    /// The model, shared with the document (not a copy of its mesh).
+    model: Arc<Model>,
     viewport: DVec2,
 }
 
@@ -221,7 +222,11 @@ impl PickedCurve {
     ///
     /// Errors: as [`curve_deform_op`].
     fn new(doc: &Document, input: &CurveDeformInput) -> Result<PickedCurve, CommandError> {
-        let mesh = &target(doc, input.model)?.mesh;
+        let model = doc
+            .models
+            .get(input.model)
+            .ok_or(CommandError::NoSuchModel(input.model))?;
+        let mesh = &model.mesh;
         let viewport = input.viewport_size()?;
         let sketch = Sketch {
             camera: input.camera,
@@ -235,7 +240,7 @@ impl PickedCurve {
             graph: graph_of(mesh)?,
             path,
             plane,
-            mesh: mesh.clone(),
+            model: Arc::clone(model),
             viewport,
         })
     }
@@ -255,7 +260,7 @@ impl PickedCurve {
             })
             .collect();
         Ok(CurveEdit::new(
-            &self.mesh,
+            &self.model.mesh,
             &self.graph,
             &self.path,
             &fixed,

@@ -583,6 +583,13 @@ fn a_control_curve_redrawn_in_its_plane_bends_the_capsule_and_keeps_its_volume()
     }
     assert!(gesture.moved_model().is_some(), "no preview");
     gesture.finish(&mut drawn).unwrap();
+    // Drawn in the front view the plane is seen edge-on: refused, nothing changes.
+    let mut edge_on = whole.clone();
+    edge_on.stroke_camera = None;
+    let before = digest(editor.document());
+    let err = editor.apply(Op::CurveDeform(edge_on)).unwrap_err();
+    assert!(err.to_string().contains("edge-on"), "{err}");
+    assert_eq!(digest(editor.document()), before);
     editor.apply(op).unwrap();
     assert_eq!(digest(drawn.document()), digest(editor.document()));
     let moved = editor.document().models[0].mesh.positions().to_vec();

@@ -1001,14 +1001,17 @@ impl SketchApp {
         for (points, confident, croppable) in picked.into_iter().chain(outline) {
             outline_ui(ui, viewport, points, confident, croppable);
         }
-        if let Some(curve) = self.tools.pose_curve() {
-            let camera = self.shared.borrow().camera.camera();
-            let size = glam::DVec2::new(viewport.width().into(), viewport.height().into());
+        let shared = self.shared.borrow();
+        let shown = (self.edit.as_ref()).map_or(shared.editor.document(), Edit::document);
+        let camera = shared.camera.camera();
+        let size = glam::DVec2::new(viewport.width().into(), viewport.height().into());
+        let moved = self.edit.as_ref().and_then(Edit::moved_model);
+        for (curve, active) in self.tools.pose_curves(shown, moved) {
             let on_screen: Vec<glam::DVec2> = curve
                 .iter()
                 .filter_map(|&p| camera.screen_from_world(p, size).map(|s| s.truncate()))
                 .collect();
-            outline_ui(ui, viewport, &on_screen, true, true);
+            outline_ui(ui, viewport, &on_screen, active, active);
         }
     }
 

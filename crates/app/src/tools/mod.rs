@@ -132,11 +132,12 @@ impl ToolSet {
         self.pose.settings_ui(ui, doc)
     }
 
-    /// The pose tool's picked control curve, to draw.
-    pub fn pose_curve(&self) -> Option<&[glam::DVec3]> {
+    /// The pose tool's picked control curves in `doc` (or as an edit in progress moves
+    /// them), to draw, each with whether it is the one redrawn.
+    pub fn pose_curves(&self, doc: &Document, moved: pose::Moved) -> Vec<(Vec<glam::DVec3>, bool)> {
         match self.mode {
-            Mode::Pose => self.pose.curve(),
-            _ => None,
+            Mode::Pose => self.pose.curves(doc, moved),
+            _ => Vec::new(),
         }
     }
 

@@ -17,6 +17,7 @@ use sketchmesh_core::document::{
     CLOSE_TOLERANCE_PX, CurveDeformInput, Document, KeyframeInput, Op, StrokeInput, model_under,
 };
 use sketchmesh_core::feature::Sketch;
+use sketchmesh_core::mesh::VertexId;
 use sketchmesh_core::volumetric::{Falloff, Plane, editing_plane, pick_curve};
 
 use super::context::{ToolOutput, ViewCtx};
@@ -27,19 +28,42 @@ use crate::input::router::ToolEvent;
 /// Seconds the time moves on after a key, so the next pose goes after it.
 const KEY_STEP_S: f64 = 1.0;
 
-/// A picked control curve, waiting for its new shape.
+/// A picked control curve: its vertices on its model (a deformation keeps them, so the curve
+/// can be redrawn again and again) and its editing plane.
 #[derive(Clone, Debug)]
-struct Picked {
+struct PoseCurve {
     model: usize,
-    /// The stroke along the surface, in the view it was drawn in.
-    input: StrokeInput,
-    /// The curve's vertices' positions, to draw.
-    points: Vec<DVec3>,
-    /// The editing plane: chosen for the curve, or turned by the user.
+    path: Vec<u32>,
+    /// The editing plane: chosen for the curve when picked, or turned by the user.
     plane: Plane,
-    /// Whether the user turned it (the op then names its normal).
-    turned: bool,
 }
+
+impl PoseCurve {
+    /// Whether the curve still lies on its model: the model is there and the curve's
+    /// vertices are still joined by edges (an undo past its model or a remesh breaks that).
+    fn fits(&self, doc: &Document) -> bool {
+        let Some(model) = doc.models.get(self.model) else {
+            return false;
+        };
+        let mesh = &model.mesh;
+        let n = mesh.n_vertices() as u32;
+        self.path.iter().all(|&v| v < n)
+            && (self.path.windows(2))
+                .all(|w| mesh.find_edge(VertexId(w[0]), VertexId(w[1])).is_some())
+    }
+
+    /// The curve's vertices' positions in `doc`.
+    fn points(&self, doc: &Document) -> Vec<DVec3> {
+        let mesh = &doc.models[self.model].mesh;
+        self.path
+            .iter()
+            .map(|&v| mesh.position(VertexId(v)))
+            .collect()
+    }
+}
+
+/// A model an edit in progress moves, and where its vertices are shown.
+pub type Moved<'a> = Option<(usize, &'a [DVec3])>;
 
 /// How far **Turn plane** turns the editing plane about the curve's chord.
 const PLANE_TURN_DEG: f64 = 45.0;
@@ -48,9 +72,13 @@ const PLANE_TURN_DEG: f64 = 45.0;
 #[derive(Debug, Default)]
 pub struct PoseTool {
     draw: DrawTool,
-    /// The loop around what holds still, in the view it was drawn in.
-    fixed: Option<(Camera, Vec<StrokePoint>)>,
-    picked: Option<Picked>,
+    /// The loop around what holds still, as drawn.
+    fixed: Option<StrokeInput>,
+    /// The picked curves: the active one is redrawn, the others on its model hold.
+    curves: Vec<PoseCurve>,
+    active: Option<usize>,
+    /// Whether the next stroke along a model picks another curve.
+    adding: bool,
     /// Whether the curve's new shape is being drawn (a gesture).
     reshaping: bool,
     falloff: Falloff,
@@ -59,9 +87,10 @@ pub struct PoseTool {
 }
 
 impl PoseTool {
-    /// Feeds one event: strokes make the loop, the curve and its new shape.
+    /// Feeds one event: strokes make the loop, the curves and their new shapes.
     pub fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
-        if self.picked.is_some() {
+        self.forget_stale(doc);
+        if self.active.is_some() && !self.adding {
             return self.reshape(event, view);
         }
         let Some(input) = self.draw.capture(event, view) else {
@@ -70,10 +99,9 @@ impl PoseTool {
         if is_tap(&input) {
             return ToolOutput::None;
         }
-        let points = input.points();
         if model_under(doc, &input).is_none() {
-            if is_closed_loop(&points, CLOSE_TOLERANCE_PX) {
-                self.fixed = Some((input.camera, points));
+            if is_closed_loop(&input.points(), CLOSE_TOLERANCE_PX) {
+                self.fixed = Some(input);
                 return ToolOutput::None;
             }
             return ToolOutput::Refused(String::from(
@@ -83,7 +111,17 @@ impl PoseTool {
         self.pick(doc, input)
     }
 
-    /// Picks the curve under `input` and turns the view to its editing plane.
+    /// Drops the curves that no longer lie on their models.
+    fn forget_stale(&mut self, doc: &Document) {
+        let active = self.active.map(|k| self.curves[k].clone());
+        self.curves.retain(|c| c.fits(doc));
+        self.active = active.and_then(|a| {
+            (self.curves.iter()).position(|c| c.model == a.model && c.path == a.path)
+        });
+    }
+
+    /// Picks the curve under `input`, makes it the active one and turns the view to its
+    /// editing plane.
     fn pick(&mut self, doc: &Document, input: StrokeInput) -> ToolOutput {
         let Some(model) = model_under(doc, &input) else {
             return ToolOutput::None;
@@ -98,19 +136,25 @@ impl PoseTool {
         match pick_curve(mesh, &sketch) {
             Ok(path) => {
                 let plane = editing_plane(mesh, &path);
-                self.picked = Some(Picked {
+                self.curves.push(PoseCurve {
                     model,
-                    points: path.iter().map(|&v| mesh.position(v)).collect(),
-                    input,
+                    path: path.iter().map(|v| v.0).collect(),
                     plane,
-                    turned: false,
                 });
-                ToolOutput::Face {
-                    point: plane.origin,
-                    normal: plane.normal,
-                }
+                self.select(self.curves.len() - 1)
             }
             Err(err) => ToolOutput::Refused(err.to_string()),
+        }
+    }
+
+    /// Makes curve `k` the one redrawn and turns the view to its plane.
+    fn select(&mut self, k: usize) -> ToolOutput {
+        self.active = Some(k);
+        self.adding = false;
+        let plane = self.curves[k].plane;
+        ToolOutput::Face {
+            point: plane.origin,
+            normal: plane.normal,
         }
     }
 
@@ -121,16 +165,16 @@ impl PoseTool {
             [p.pos.x, p.pos.y, p.pressure]
         };
         match event {
-            ToolEvent::Begin(s) => {
-                let Some(picked) = &self.picked else {
-                    return ToolOutput::None;
-                };
-                self.reshaping = true;
-                ToolOutput::Begin(self.deform(picked, view.camera, sample(s)))
-            }
+            ToolEvent::Begin(s) => match self.deform(view, sample(s)) {
+                Some(op) => {
+                    self.reshaping = true;
+                    ToolOutput::Begin(op)
+                }
+                None => ToolOutput::None,
+            },
             ToolEvent::Move(s) if self.reshaping => ToolOutput::Extend(sample(s)),
             ToolEvent::End(s) if self.reshaping => {
-                self.cancel();
+                self.reshaping = false;
                 ToolOutput::End(sample(s))
             }
             ToolEvent::Cancel if self.reshaping => {
@@ -141,55 +185,60 @@ impl PoseTool {
         }
     }
 
-    /// The op that gives the picked curve the shape of a stroke drawn with `camera`, begun
-    /// with `first`.
-    fn deform(&self, picked: &Picked, camera: Camera, first: [f64; 3]) -> Op {
-        let fixed = (self.fixed.as_ref())
-            .filter(|(camera, _)| *camera == picked.input.camera)
-            .map(|(_, points)| {
-                points
-                    .iter()
-                    .map(|p| [p.pos.x, p.pos.y, p.pressure])
-                    .collect()
-            });
-        Op::CurveDeform(CurveDeformInput {
-            model: picked.model,
-            viewport: picked.input.viewport,
-            camera: picked.input.camera,
-            curve: picked.input.stroke.clone(),
+    /// The op that gives the active curve the shape of a stroke drawn in `view`, begun with
+    /// `first`; the other curves on its model hold, and so does what the loop surrounds.
+    fn deform(&self, view: &ViewCtx, first: [f64; 3]) -> Option<Op> {
+        let active = self.active?;
+        let curve = &self.curves[active];
+        let held = (self.curves.iter().enumerate())
+            .filter(|&(k, c)| k != active && c.model == curve.model)
+            .map(|(_, c)| c.path.clone())
+            .collect();
+        let size = view.viewport.size();
+        let here = [f64::from(size.x), f64::from(size.y)];
+        let fixed = self.fixed.as_ref().filter(|f| f.viewport == here);
+        let camera = fixed.map_or(view.camera, |f| f.camera);
+        Some(Op::CurveDeform(CurveDeformInput {
+            model: curve.model,
+            viewport: here,
+            camera,
+            curve: Vec::new(),
+            path: Some(curve.path.clone()),
+            held,
             stroke: vec![first],
-            stroke_camera: (camera != picked.input.camera).then_some(camera),
-            plane: picked.turned.then_some(picked.plane.normal.to_array()),
-            fixed,
+            stroke_camera: (view.camera != camera).then_some(view.camera),
+            plane: Some(curve.plane.normal.to_array()),
+            fixed: fixed.map(|f| f.stroke.clone()),
             falloff: self.falloff,
-        })
+        }))
     }
 
-    /// Turns the picked curve's editing plane by [`PLANE_TURN_DEG`] about the curve's chord
+    /// Turns the active curve's editing plane by [`PLANE_TURN_DEG`] about the curve's chord
     /// (its ends' join), and the view to face it.
-    fn turn_plane(&mut self) -> ToolOutput {
-        let Some(picked) = &mut self.picked else {
+    fn turn_plane(&mut self, doc: &Document) -> ToolOutput {
+        let Some(curve) = self.active.map(|k| &mut self.curves[k]) else {
             return ToolOutput::None;
         };
-        let (first, last) = (picked.points[0], picked.points[picked.points.len() - 1]);
+        let points = curve.points(doc);
+        let (first, last) = (points[0], points[points.len() - 1]);
         let Some(axis) = (last - first).try_normalize() else {
             return ToolOutput::None;
         };
         let turn = glam::DQuat::from_axis_angle(axis, PLANE_TURN_DEG.to_radians());
-        picked.plane.normal = (turn * picked.plane.normal).normalize();
-        picked.turned = true;
+        curve.plane.normal = (turn * curve.plane.normal).normalize();
         ToolOutput::Face {
-            point: picked.plane.origin,
-            normal: picked.plane.normal,
+            point: curve.plane.origin,
+            normal: curve.plane.normal,
         }
     }
 
-    /// Forgets the loop, the curve and the stroke.
+    /// Forgets the loop, the curves and the stroke.
     pub fn cancel(&mut self) {
-        self.draw = DrawTool::Idle;
-        self.fixed = None;
-        self.picked = None;
-        self.reshaping = false;
+        *self = PoseTool {
+            falloff: self.falloff,
+            time: self.time,
+            ..PoseTool::default()
+        };
     }
 
     /// The stroke being drawn, for live display.
@@ -197,17 +246,29 @@ impl PoseTool {
         self.draw.preview()
     }
 
-    /// The picked curve's points, to draw over the model.
-    pub fn curve(&self) -> Option<&[DVec3]> {
-        self.picked.as_ref().map(|p| p.points.as_slice())
+    /// The picked curves' points in `doc`, or on the model an edit in progress `moves`, to
+    /// draw over the models, each with whether it is the one redrawn.
+    pub fn curves(&self, doc: &Document, moved: Moved) -> Vec<(Vec<DVec3>, bool)> {
+        (self.curves.iter().enumerate())
+            .filter(|(_, c)| c.fits(doc))
+            .map(|(k, c)| {
+                let points = match moved {
+                    Some((model, positions)) if model == c.model => {
+                        c.path.iter().map(|&v| positions[v as usize]).collect()
+                    }
+                    _ => c.points(doc),
+                };
+                (points, self.active == Some(k))
+            })
+            .collect()
     }
 
     /// The loop around what holds still, while the view is the one it was drawn in.
     pub fn marks(&self, camera: &Camera) -> Vec<Mark> {
         (self.fixed.iter())
-            .filter(|(c, _)| c == camera)
-            .map(|(_, points)| Mark {
-                points: points.clone(),
+            .filter(|f| f.camera == *camera)
+            .map(|f| Mark {
+                points: f.points(),
                 radius: None,
                 features: false,
             })
@@ -216,18 +277,67 @@ impl PoseTool {
 
     /// What the tool asks the user to do next.
     pub fn hint(&self) -> Option<&'static str> {
-        Some(match (&self.picked, &self.fixed) {
-            (None, None) => {
+        Some(match (self.active, self.adding, &self.fixed) {
+            (None, _, None) if self.curves.is_empty() => {
                 "Draw a control curve along a model (a closed loop off it first holds a part still)"
             }
-            (None, Some(_)) => "Now draw the control curve along the model",
-            (Some(_), _) => "Draw the curve's new shape; the model bends and keeps its volume",
+            (Some(_), false, _) => {
+                "Draw the curve's new shape; the model bends and keeps its volume (+ Curve picks another)"
+            }
+            (_, true, _) => {
+                "Draw another control curve along the model; the others hold their place"
+            }
+            _ => "Now draw the control curve along the model",
         })
     }
 
-    /// The panel: the fall-off, and the timeline's key, delete and play.
-    pub fn settings_ui(&mut self, ui: &mut egui::Ui, doc: &Document) -> ToolOutput {
+    /// The picked curves' buttons (which one is redrawn), **+ Curve** and **Clear**.
+    fn curves_ui(&mut self, ui: &mut egui::Ui, doc: &Document) -> ToolOutput {
         let mut output = ToolOutput::None;
+        for k in 0..self.curves.len() {
+            let chosen = self.active == Some(k) && !self.adding;
+            let button = egui::Button::selectable(chosen, format!("Curve {}", k + 1))
+                .min_size(egui::vec2(44.0, 36.0));
+            if ui
+                .add(button)
+                .on_hover_text("Redraw this curve; the others hold their place")
+                .clicked()
+            {
+                output = self.select(k);
+            }
+        }
+        let add = ui.add_enabled(
+            !self.curves.is_empty(),
+            egui::Button::selectable(self.adding, "+ Curve").min_size(egui::vec2(44.0, 36.0)),
+        );
+        if add
+            .on_hover_text("Draw another control curve; the picked ones hold their place")
+            .clicked()
+        {
+            self.adding = !self.adding;
+        }
+        let clear = ui.add_enabled(
+            !self.curves.is_empty() || self.fixed.is_some(),
+            egui::Button::new("Clear"),
+        );
+        if clear
+            .on_hover_text("Forget the picked curves and the held part")
+            .clicked()
+        {
+            self.cancel();
+        }
+        let turn = ui.add_enabled(self.active.is_some(), egui::Button::new("Turn plane"));
+        if turn
+            .on_hover_text("Turn the editing plane about the curve by 45°")
+            .clicked()
+        {
+            output = self.turn_plane(doc);
+        }
+        output
+    }
+
+    /// The panel: the fall-off, the curves, and the timeline's key, delete and play.
+    pub fn settings_ui(&mut self, ui: &mut egui::Ui, doc: &Document) -> ToolOutput {
         for (falloff, label, hint) in [
             (
                 Falloff::Linear,
@@ -251,6 +361,8 @@ impl PoseTool {
                 self.falloff = falloff;
             }
         }
+        ui.separator();
+        let mut output = ToolOutput::None;
         ui.separator();
         ui.add(
             egui::DragValue::new(&mut self.time)
@@ -289,13 +401,6 @@ impl PoseTool {
         {
             output = ToolOutput::Commit(Op::DeleteKeyframe(KeyframeInput { time: self.time }));
         }
-        let turn = ui.add_enabled(self.picked.is_some(), egui::Button::new("Turn plane"));
-        if turn
-            .on_hover_text("Turn the editing plane about the curve by 45°")
-            .clicked()
-        {
-            output = self.turn_plane();
-        }
         let playable = doc.models.iter().any(|m| m.keyframes().count() >= 2);
         let play = ui.add_enabled(
             playable,
@@ -306,6 +411,10 @@ impl PoseTool {
             .clicked()
         {
             output = ToolOutput::Play;
+        }
+        ui.separator();
+        if let face @ ToolOutput::Face { .. } = self.curves_ui(ui, doc) {
+            output = face;
         }
         output
     }
@@ -349,20 +458,20 @@ mod tests {
         let ToolOutput::Face { normal, .. } = output else {
             panic!("no plane to face: {output:?}");
         };
-        assert!(tool.curve().is_some_and(|c| c.len() > 5));
-        // Turning the plane twice and back: the op names the normal the view faces.
-        let turned = tool.turn_plane();
+        assert!(tool.curves(editor.document(), None)[0].0.len() > 5);
+        // Turning the plane round: the op names the normal the view faces.
+        let turned = tool.turn_plane(editor.document());
         let ToolOutput::Face { normal: once, .. } = turned else {
             panic!("no turn: {turned:?}");
         };
         assert!((once.angle_between(normal).to_degrees() - PLANE_TURN_DEG).abs() < 1e-6);
         for _ in 0..7 {
-            tool.turn_plane();
+            tool.turn_plane(editor.document());
         }
-        let (point, normal) = match tool.picked.as_ref() {
-            Some(p) => (p.plane.origin, p.plane.normal),
-            None => panic!("the curve was dropped"),
+        let Some(plane) = tool.active.map(|k| tool.curves[k].plane) else {
+            panic!("the curve was dropped");
         };
+        let (point, normal) = (plane.origin, plane.normal);
         // The app turns the view to face the plane; the new shape is drawn there.
         let mut camera = crate::camera::OrbitCamera::default();
         camera.face(point, normal);
@@ -374,9 +483,8 @@ mod tests {
         assert!(eye_to_target.dot(normal).abs() > 0.99, "not face on");
         // The curve as seen there, its right half swung up by up to 40 px: a bend.
         let size = glam::DVec2::new(800.0, 600.0);
-        let seen: Vec<glam::DVec2> = tool
-            .curve()
-            .unwrap_or_default()
+        let seen: Vec<glam::DVec2> = tool.curves(editor.document(), None)[0]
+            .0
             .iter()
             .filter_map(|&p| side.camera.screen_from_world(p, size).map(|s| s.truncate()))
             .collect();
@@ -411,12 +519,31 @@ mod tests {
             panic!("no curve deform");
         };
         let before = enclosed_volume(&editor.document().models[0].mesh);
+        let rest = tool.curves(editor.document(), None)[0].0.clone();
         editor.apply(op).unwrap();
         let after = enclosed_volume(&editor.document().models[0].mesh);
         assert!(
             (after / before - 1.0).abs() < 0.05,
             "volume {before} -> {after}"
         );
-        assert!(tool.curve().is_none(), "the curve was used");
+        // The curve stays picked, where the bend took it, to be redrawn again.
+        let curves = tool.curves(editor.document(), None);
+        assert!(curves.len() == 1 && curves[0].1, "{curves:?}");
+        assert!(curves[0].0 != rest, "the curve did not follow the model");
+        // **+ Curve**, then a stroke along the model's lower part picks a second curve; its
+        // new shape's op holds the first.
+        tool.adding = true;
+        let lower: Vec<(f32, f32)> = (0..=30).map(|k| (320.0 + 5.0 * k as f32, 420.0)).collect();
+        let picked = stroke(&mut tool, &front, editor.document(), &lower);
+        assert!(matches!(picked, ToolOutput::Face { .. }), "{picked:?}");
+        let down = ToolEvent::Begin(pen(Phase::Down, 400.0, 300.0));
+        let ToolOutput::Begin(Op::CurveDeform(second)) =
+            tool.on_event(&down, &front, editor.document())
+        else {
+            panic!("no second curve's edit");
+        };
+        assert_eq!(tool.active, Some(1));
+        assert_eq!(second.held, vec![tool.curves[0].path.clone()]);
+        assert_eq!(second.path.as_ref(), Some(&tool.curves[1].path));
     }
 }

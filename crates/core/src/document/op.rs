@@ -843,6 +843,8 @@ mod tests {
                 viewport: [1.0, 1.0],
                 camera: Camera::default(),
                 curve: Vec::new(),
+                path: None,
+                held: Vec::new(),
                 stroke: Vec::new(),
                 stroke_camera: None,
                 plane: None,

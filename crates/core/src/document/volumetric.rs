@@ -19,7 +19,7 @@ use super::{CommandError, Document, Model};
 use crate::camera::Camera;
 use crate::curve::polyline::contains;
 use crate::feature::Sketch;
-use crate::mesh::Mesh;
+use crate::mesh::{Mesh, VertexId};
 use crate::model::positions_hash;
 use crate::volumetric::{
     CurveEdit, Falloff, Method, Plane, Sphere, SphereHandle, VolumetricError, VolumetricGraph,
@@ -138,8 +138,16 @@ pub struct CurveDeformInput {
     /// The camera both strokes were drawn with.
     pub camera: Camera,
     /// Raw samples `[x, y, pressure]` of the stroke along the surface: the control curve is
-    /// the edge path under it.
+    /// the edge path under it. Empty when `path` names the curve.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub curve: Vec<[f64; 3]>,
+    /// The control curve as its vertices' indices, in order, each joined to the next by an
+    /// edge: a curve picked before (a deformation keeps the vertices), edited again.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub path: Option<Vec<u32>>,
+    /// Other control curves, as vertex chains, that keep their place while this one moves.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub held: Vec<Vec<u32>>,
     /// Raw samples `[x, y, pressure]` of the new curve, drawn on the editing plane.
     pub stroke: Vec<[f64; 3]>,
     /// The camera the new curve was drawn with, when the view turned to face the editing
@@ -181,9 +189,23 @@ fn screen_points(samples: &[[f64; 3]]) -> Vec<DVec2> {
     samples.iter().map(|&[x, y, _]| DVec2::new(x, y)).collect()
 }
 
+/// `mesh`'s vertices `ids`, when each exists and is joined to the next by an edge.
+fn vertex_chain(mesh: &Mesh, ids: &[u32]) -> Result<Vec<VertexId>, VolumetricError> {
+    let n = mesh.n_vertices();
+    let chain: Vec<VertexId> = ids.iter().map(|&i| VertexId(i)).collect();
+    let joined = chain
+        .windows(2)
+        .all(|w| mesh.find_edge(w[0], w[1]).is_some());
+    if ids.iter().all(|&i| (i as usize) < n) && joined {
+        Ok(chain)
+    } else {
+        Err(VolumetricError::BadPath)
+    }
+}
+
 /// The picked curve's editing plane: the given normal through the curve's centroid, or the
 /// one chosen for it.
-fn plane_for(mesh: &Mesh, path: &[crate::mesh::VertexId], normal: Option<[f64; 3]>) -> Plane {
+fn plane_for(mesh: &Mesh, path: &[VertexId], normal: Option<[f64; 3]>) -> Plane {
     let chosen = editing_plane(mesh, path);
     match normal.map(DVec3::from).and_then(DVec3::try_normalize) {
         Some(normal) => Plane { normal, ..chosen },
@@ -209,7 +231,9 @@ pub(super) fn curve_deform_op(
 /// A `curve_deform`'s control curve on its model, with its plane and graph.
 #[derive(Debug)]
 struct PickedCurve {
-    path: Vec<crate::mesh::VertexId>,
+    path: Vec<VertexId>,
+    /// The held curves' vertices, one list.
+    held: Vec<VertexId>,
     plane: Plane,
     graph: Arc<VolumetricGraph>,
     /// The model, shared with the document (not a copy of its mesh).
@@ -228,17 +252,28 @@ impl PickedCurve {
             .ok_or(CommandError::NoSuchModel(input.model))?;
         let mesh = &model.mesh;
         let viewport = input.viewport_size()?;
-        let sketch = Sketch {
-            camera: input.camera,
-            viewport,
-            points: screen_points(&input.curve),
-            region: None,
+        let path = match (&input.path, input.curve.is_empty()) {
+            (Some(ids), true) => vertex_chain(mesh, ids)?,
+            (None, false) => {
+                let sketch = Sketch {
+                    camera: input.camera,
+                    viewport,
+                    points: screen_points(&input.curve),
+                    region: None,
+                };
+                pick_curve(mesh, &sketch)?
+            }
+            _ => return Err(VolumetricError::BadPath.into()),
         };
-        let path = pick_curve(mesh, &sketch)?;
+        let mut held = Vec::new();
+        for chain in &input.held {
+            held.extend(vertex_chain(mesh, chain)?);
+        }
         let plane = plane_for(mesh, &path, input.plane);
         Ok(PickedCurve {
             graph: graph_of(mesh)?,
             path,
+            held,
             plane,
             model: Arc::clone(model),
             viewport,
@@ -263,6 +298,7 @@ impl PickedCurve {
             &self.model.mesh,
             &self.graph,
             &self.path,
+            &self.held,
             &fixed,
             input.falloff,
         )?)

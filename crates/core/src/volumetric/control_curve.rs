@@ -16,9 +16,13 @@
 //!   the paper's closest-curve-point weighting), blended toward the identity by the
 //!   strength field: with a fixed region `t = d_F / (d_F + d_C)`, else `t = 1 − d_C / R`
 //!   with `R` the curve's length.
+//! - **Several curves.** Other picked curves may be *held*: their vertices are pulled to
+//!   where they are (α rows, as the edited curve's) and count with the fixed region in the
+//!   strength field, so the bend fades toward them too and the parts they run along keep
+//!   their pose.
 //! - The curve vertices are pulled to their new places by the energy's α rows; the fixed
-//!   region's points hold still. Factored once per curve and fixed region; each new curve
-//!   is a back-substitution.
+//!   region's points hold still. Factored once per curve, held curves and fixed region;
+//!   each new curve is a back-substitution.
 
 use glam::{DQuat, DVec2, DVec3};
 
@@ -180,6 +184,8 @@ pub struct CurveEdit {
     edit: VolumetricEdit,
     /// The curve vertices' rest positions.
     rest: Vec<DVec3>,
+    /// The α rows' targets: the edited curve's, then the held curves' rest positions.
+    soft_targets: Vec<DVec3>,
     /// Per graph point: the index along the curve of its nearest curve vertex (`u32::MAX` where
     /// none is reached) and the strength there.
     nearest: Vec<(u32, f64)>,
@@ -188,20 +194,31 @@ pub struct CurveEdit {
 }
 
 impl CurveEdit {
-    /// The edit of `mesh` through `graph` by the curve `path`, with the graph points for
-    /// which `fixed` holds still.
+    /// The edit of `mesh` through `graph` by the curve `path`, with the vertices of other
+    /// curves, `held`, pulled to where they are and the graph points for which `fixed`
+    /// holds still.
     ///
     /// Errors: [`VolumetricError::CurveTooShort`], the solve's.
     pub fn new(
         mesh: &Mesh,
         graph: &VolumetricGraph,
         path: &[VertexId],
+        held: &[VertexId],
         fixed: &[bool],
         falloff: Falloff,
     ) -> Result<CurveEdit, VolumetricError> {
         if path.len() < 2 {
             return Err(VolumetricError::CurveTooShort);
         }
+        let mut on_curve = vec![false; graph.n_points()];
+        for &v in path {
+            on_curve[v.index()] = true;
+        }
+        let held: Vec<VertexId> = held
+            .iter()
+            .copied()
+            .filter(|v| !std::mem::replace(&mut on_curve[v.index()], true))
+            .collect();
         let seeds: Vec<u32> = path.iter().map(|v| v.0).collect();
         let reached = shortest_paths(
             graph.n_points(),
@@ -212,9 +229,13 @@ impl CurveEdit {
         );
         let fixed_seeds: Vec<u32> = (0..graph.n_points() as u32)
             .filter(|&i| fixed[i as usize])
+            .chain(held.iter().map(|v| v.0))
             .collect();
         let to_fixed = (!fixed_seeds.is_empty()).then(|| graph.distances(mesh, &fixed_seeds));
         let rest: Vec<DVec3> = path.iter().map(|&v| mesh.position(v)).collect();
+        let soft_targets = (rest.iter().copied())
+            .chain(held.iter().map(|&v| mesh.position(v)))
+            .collect();
         let reach: f64 = rest.windows(2).map(|w| w[0].distance(w[1])).sum();
         let nearest = (0..graph.n_points())
             .map(|i| {
@@ -229,11 +250,12 @@ impl CurveEdit {
             .collect();
         let constraints = Constraints {
             hard: fixed.to_vec(),
-            soft: path.to_vec(),
+            soft: path.iter().chain(&held).copied().collect(),
         };
         let edit = VolumetricEdit::new(mesh, graph, &constraints, VolumetricParams::default())?;
         Ok(CurveEdit {
             rest,
+            soft_targets,
             nearest,
             transforms: vec![Similarity::IDENTITY; graph.n_points()],
             positions: vec![DVec3::ZERO; graph.n_points()],
@@ -258,10 +280,11 @@ impl CurveEdit {
                 .get(seed as usize)
                 .map_or(Similarity::IDENTITY, |s| s.part(strength));
         }
+        self.soft_targets[..targets.len()].copy_from_slice(targets);
         self.edit.deform(
             &self.transforms,
             |_, rest| rest,
-            targets,
+            &self.soft_targets,
             &mut self.positions,
         )?;
         Ok(&self.positions[..self.edit.n_mesh()])

@@ -63,6 +63,12 @@ pub enum VolumetricError {
     /// A control curve stroke that could not be placed on the surface.
     #[error("{0}")]
     Curve(#[from] FeatureError),
+    /// A control curve given by its vertices names one the model lacks, or two in a row that
+    /// no edge joins; or it is given both ways, or neither.
+    #[error(
+        "A control curve must be given once, as a stroke along the surface or as a chain of the model's vertices joined by edges."
+    )]
+    BadPath,
     /// A control curve of fewer than two vertices.
     #[error("The control curve is too short: draw it along the surface over a few triangles.")]
     CurveTooShort,

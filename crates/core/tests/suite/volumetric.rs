@@ -11,11 +11,12 @@ use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
     CurveDeformInput, DeformHandleInput, DeformInput, DeformMethod, Editor, Op, Progress,
 };
+use sketchmesh_core::feature::Sketch;
 use sketchmesh_core::geometry::{Bvh, enclosed_volume};
 use sketchmesh_core::mesh::{Mesh, TriSoup, primitives};
 use sketchmesh_core::volumetric::{
     Falloff, GraphTerm, Method, Sphere, SphereHandle, VolumetricError, VolumetricGraph,
-    VolumetricParams, deform_with_spheres,
+    VolumetricParams, deform_with_spheres, pick_curve,
 };
 
 /// Bumps on the capsule: centre (x, angle around) of each.
@@ -497,12 +498,10 @@ fn screen_line(camera: &Camera, viewport: DVec2, from: DVec3, to: DVec3) -> Vec<
         .collect()
 }
 
-#[test]
-fn a_control_curve_redrawn_in_its_plane_bends_the_capsule_and_keeps_its_volume() {
-    let mesh = smooth_capsule();
-    let mut editor = Editor::new();
-    editor.apply(import_mesh("capsule.glb", &mesh)).unwrap();
-    let imported = editor.document().models[0].mesh.clone();
+/// A `curve_deform` of the smooth capsule: a curve along its front from x = −1.5 to 2.5,
+/// redrawn from above with its right three quarters swung out toward +z round a quarter
+/// circle, the capsule's left end (x < −2.2) lassoed to hold still.
+fn quarter_bend() -> CurveDeformInput {
     let viewport = DVec2::new(1000.0, 800.0);
     let front = Camera {
         eye: DVec3::new(0.0, 0.0, 12.0),
@@ -556,17 +555,28 @@ fn a_control_curve_redrawn_in_its_plane_bends_the_capsule_and_keeps_its_volume()
         corner(DVec3::new(-2.2, 0.8, 0.0)),
         corner(DVec3::new(-3.8, 0.8, 0.0)),
     ];
-    let op = Op::CurveDeform(CurveDeformInput {
+    CurveDeformInput {
         model: 0,
         viewport: viewport.to_array(),
         camera: front,
         curve,
+        path: None,
+        held: Vec::new(),
         stroke,
         stroke_camera: Some(above),
         plane: None,
         fixed: Some(fixed),
         falloff: Falloff::Linear,
-    });
+    }
+}
+
+#[test]
+fn a_control_curve_redrawn_in_its_plane_bends_the_capsule_and_keeps_its_volume() {
+    let mesh = smooth_capsule();
+    let mut editor = Editor::new();
+    editor.apply(import_mesh("capsule.glb", &mesh)).unwrap();
+    let imported = editor.document().models[0].mesh.clone();
+    let op = Op::CurveDeform(quarter_bend());
     // The same op drawn as a gesture: the preview follows the stroke, and the commit is
     // the op applied at once, bit for bit.
     let mut drawn = Editor::new();
@@ -676,4 +686,90 @@ fn spot_turns_its_head_keeping_its_volume() {
     let nose = nearest_vertex(spot, DVec3::new(0.0, 0.35, 1.05));
     let expected = turn.transform_point3(spot.positions()[nose]);
     assert!(turned[nose].distance(expected) < 1e-9);
+}
+
+/// The edge path `input`'s curve stroke picks on `mesh`.
+fn picked_path(mesh: &Mesh, input: &CurveDeformInput) -> Vec<u32> {
+    let sketch = Sketch {
+        camera: input.camera,
+        viewport: DVec2::from(input.viewport),
+        points: input
+            .curve
+            .iter()
+            .map(|&[x, y, _]| DVec2::new(x, y))
+            .collect(),
+        region: None,
+    };
+    pick_curve(mesh, &sketch)
+        .expect("the curve stroke lies on the capsule")
+        .iter()
+        .map(|v| v.0)
+        .collect()
+}
+
+/// Several curves: a curve named by its vertex chain bends exactly as the stroke that picks
+/// it; a second curve held (no lasso) keeps its part in place where, without it, the bend
+/// spreads over it; a chain with a gap is refused with a sentence and nothing changes.
+#[test]
+fn a_held_curve_keeps_its_part_while_another_curve_bends() {
+    let mesh = smooth_capsule();
+    let start = || {
+        let mut editor = Editor::new();
+        editor.apply(import_mesh("capsule.glb", &mesh)).unwrap();
+        editor
+    };
+    let imported = start().document().models[0].mesh.clone();
+    let mut stroked = quarter_bend();
+    stroked.fixed = None;
+    let path = picked_path(&imported, &stroked);
+    let mut by_path = stroked.clone();
+    by_path.curve.clear();
+    by_path.path = Some(path.clone());
+    let (mut a, mut b) = (start(), start());
+    a.apply(Op::CurveDeform(stroked.clone())).unwrap();
+    b.apply(Op::CurveDeform(by_path.clone())).unwrap();
+    assert_eq!(digest(a.document()), digest(b.document()));
+    // The held curve runs along the capsule's top over its left end.
+    let mut left = stroked.clone();
+    left.curve = screen_line(
+        &left.camera,
+        DVec2::from(left.viewport),
+        DVec3::new(-3.2, 0.25, 0.4),
+        DVec3::new(-2.0, 0.25, 0.4),
+    );
+    let held = picked_path(&imported, &left);
+    assert!(held.len() >= 3, "held curve of {} vertices", held.len());
+    let mut holding = by_path.clone();
+    holding.held = vec![held.clone()];
+    let mut c = start();
+    c.apply(Op::CurveDeform(holding.clone())).unwrap();
+    let drift = |editor: &Editor| {
+        let moved = editor.document().models[0].mesh.positions();
+        held.iter()
+            .map(|&v| moved[v as usize].distance(imported.positions()[v as usize]))
+            .fold(0.0, f64::max)
+    };
+    let (free, kept) = (drift(&a), drift(&c));
+    println!("held curve: its vertices move {kept:.4} at most, {free:.4} when not held");
+    assert!(free > 0.05, "the bend did not reach the left end ({free})");
+    assert!(kept < 0.2 * free, "held {kept} against {free}");
+    let moved = c.document().models[0].mesh.positions();
+    let change = volume(&imported, moved) / enclosed_volume(&imported) - 1.0;
+    assert!(change.abs() < 0.05, "volume {:+.2}%", 100.0 * change);
+    let replayed = Editor::replay_json(&c.session_json()).unwrap();
+    assert_eq!(digest(replayed.document()), digest(c.document()));
+    // A chain whose neighbours are not joined by an edge, or a curve given both ways.
+    let mut gap = by_path.clone();
+    gap.path = Some(vec![path[0], path[path.len() - 1]]);
+    let mut both = by_path;
+    both.curve = stroked.curve;
+    for bad in [gap, both] {
+        let before = digest(c.document());
+        let err = c.apply(Op::CurveDeform(bad)).unwrap_err();
+        assert!(
+            err.to_string().contains("chain of the model's vertices"),
+            "{err}"
+        );
+        assert_eq!(digest(c.document()), before);
+    }
 }

@@ -67,7 +67,7 @@ const MERGE_BUTTON = { x: 186, y: 63 };
 const DOCUMENTS_ITEM = { x: 56, y: 102 };
 /** The pose tool's Key and Play buttons, in the toolbar's second row. */
 const POSE_KEY = { x: 292, y: 59 };
-const POSE_PLAY = { x: 600, y: 59 };
+const POSE_PLAY = { x: 525, y: 59 };
 /** The region tool's Handles button, in the toolbar's second row. */
 const HANDLES_BUTTON = { x: 213, y: 59 };
 

@@ -1,0 +1,222 @@
+//! Clamped cubic B-splines in the plane: the coarse shape of a curve that the user edits by
+//! a few control points (Zhou et al. 2005, §4.1), fitted by least squares, with knots the
+//! user can add (Boehm's insertion keeps the shape exactly, so adding a knot never moves the
+//! curve, it only gives another control point).
+
+use glam::{DVec2, DVec3};
+
+use crate::solve::{SolveError, Triplets, solve_least_squares};
+
+/// The fewest control points a cubic needs.
+pub const MIN_CONTROLS: usize = 4;
+
+/// How strongly the fit keeps each control point near the mean of its neighbours, next to
+/// the data: enough that a knot span no sample falls in still has a defined control point,
+/// too little to bend the fit.
+const REGULARIZATION: f64 = 1e-3;
+
+/// A clamped cubic B-spline over `[0, 1]`: it starts at its first control point and ends at
+/// its last.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BSpline {
+    /// The interior knots, increasing, strictly inside `(0, 1)`; the end knots (0 and 1,
+    /// four times each) are implied.
+    pub knots: Vec<f64>,
+    /// `knots.len() + 4` control points.
+    pub controls: Vec<DVec2>,
+}
+
+/// The uniform interior knots of a spline with `controls` control points.
+pub fn uniform_knots(controls: usize) -> Vec<f64> {
+    let spans = controls.max(MIN_CONTROLS) - 3;
+    (1..spans).map(|k| k as f64 / spans as f64).collect()
+}
+
+/// The whole knot vector of a clamped cubic with these interior knots.
+fn full_knots(interior: &[f64]) -> Vec<f64> {
+    let mut knots = vec![0.0; 4];
+    knots.extend_from_slice(interior);
+    knots.extend([1.0; 4]);
+    knots
+}
+
+/// The index `k` of the knot span `[u_k, u_{k+1})` holding `t` (the last span holds 1), and
+/// the four basis functions that do not vanish there, for control points `k − 3..=k`
+/// (Cox–de Boor, as The NURBS Book's A2.2).
+fn basis(knots: &[f64], t: f64) -> (usize, [f64; 4]) {
+    let last = knots.len() - 5;
+    let t = t.clamp(0.0, 1.0);
+    let span = (3..=last)
+        .rev()
+        .find(|&k| knots[k] <= t)
+        .unwrap_or(3)
+        .min(last);
+    let mut n = [1.0, 0.0, 0.0, 0.0];
+    let mut left = [0.0; 4];
+    let mut right = [0.0; 4];
+    for j in 1..=3 {
+        left[j] = t - knots[span + 1 - j];
+        right[j] = knots[span + j] - t;
+        let mut saved = 0.0;
+        for r in 0..j {
+            let denominator = right[r + 1] + left[j - r];
+            let term = if denominator > 0.0 {
+                n[r] / denominator
+            } else {
+                0.0
+            };
+            n[r] = saved + right[r + 1] * term;
+            saved = left[j - r] * term;
+        }
+        n[j] = saved;
+    }
+    (span, n)
+}
+
+impl BSpline {
+    /// The least-squares spline through `points` at parameters `params` (increasing, from 0
+    /// to 1) with these interior knots: its ends are the first and last points.
+    ///
+    /// Errors: [`SolveError`] when the fit cannot be solved (non-finite points).
+    pub fn fit(points: &[DVec2], params: &[f64], knots: &[f64]) -> Result<BSpline, SolveError> {
+        let full = full_knots(knots);
+        let n = knots.len() + 4;
+        let rows = points.len() + n - 2;
+        let mut a = Triplets::with_capacity(rows, n, 4 * points.len() + 3 * n);
+        let mut b = Vec::with_capacity(rows);
+        for (i, (&p, &t)) in points.iter().zip(params).enumerate() {
+            let (span, weights) = basis(&full, t);
+            for (r, &w) in weights.iter().enumerate() {
+                a.push(i, span - 3 + r, w);
+            }
+            b.push(p.extend(0.0));
+        }
+        for j in 1..n - 1 {
+            let row = points.len() + j - 1;
+            a.push(row, j - 1, -0.5 * REGULARIZATION);
+            a.push(row, j, REGULARIZATION);
+            a.push(row, j + 1, -0.5 * REGULARIZATION);
+            b.push(DVec3::ZERO);
+        }
+        let mut fixed = vec![false; n];
+        let mut ends = vec![DVec3::ZERO; n];
+        (fixed[0], fixed[n - 1]) = (true, true);
+        ends[0] = points[0].extend(0.0);
+        ends[n - 1] = points[points.len() - 1].extend(0.0);
+        let solved = solve_least_squares(&a.build(), &b, &fixed, &ends)?;
+        Ok(BSpline {
+            knots: knots.to_vec(),
+            controls: solved.iter().map(|c| c.truncate()).collect(),
+        })
+    }
+
+    /// The point at parameter `t` in `[0, 1]`.
+    pub fn at(&self, t: f64) -> DVec2 {
+        let (span, weights) = basis(&full_knots(&self.knots), t);
+        (weights.iter().enumerate()).fold(DVec2::ZERO, |sum, (r, &w)| {
+            sum + self.controls[span - 3 + r] * w
+        })
+    }
+
+    /// The direction of travel at `t` (a central difference; the spline is C² between
+    /// distinct knots).
+    pub fn direction(&self, t: f64) -> DVec2 {
+        const H: f64 = 1e-4;
+        let (a, b) = ((t - H).max(0.0), (t + H).min(1.0));
+        self.at(b) - self.at(a)
+    }
+
+    /// The same curve with one more knot at `t` (Boehm's insertion): one more control
+    /// point, the shape unchanged. A `t` outside `(0, 1)` or on a knot already there adds
+    /// nothing.
+    pub fn with_knot(&self, t: f64) -> BSpline {
+        let exists = self.knots.iter().any(|&u| (u - t).abs() < 1e-9);
+        if !(t > 0.0 && t < 1.0) || exists {
+            return self.clone();
+        }
+        let full = full_knots(&self.knots);
+        let (span, _) = basis(&full, t);
+        let p = &self.controls;
+        let mut controls = Vec::with_capacity(p.len() + 1);
+        controls.extend_from_slice(&p[..=span - 3]);
+        for i in span - 2..=span {
+            let a = (t - full[i]) / (full[i + 3] - full[i]);
+            controls.push(p[i - 1] * (1.0 - a) + p[i] * a);
+        }
+        controls.extend_from_slice(&p[span..]);
+        let mut knots = self.knots.clone();
+        knots.insert(span - 3, t);
+        BSpline { knots, controls }
+    }
+
+    /// The midpoint of the longest knot span: where a knot adds the most freedom.
+    pub fn widest_span_middle(&self) -> f64 {
+        let full = full_knots(&self.knots);
+        (full.windows(2))
+            .map(|w| (w[1] - w[0], 0.5 * (w[0] + w[1])))
+            .fold(
+                (0.0, 0.5),
+                |best, span| if span.0 > best.0 { span } else { best },
+            )
+            .1
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn circle_arc(n: usize) -> (Vec<DVec2>, Vec<f64>) {
+        let params: Vec<f64> = (0..n).map(|i| i as f64 / (n - 1) as f64).collect();
+        let points = params
+            .iter()
+            .map(|&t| DVec2::new((2.0 * t).cos(), (2.0 * t).sin()))
+            .collect();
+        (points, params)
+    }
+
+    #[test]
+    fn the_basis_is_a_partition_of_unity() {
+        let knots = full_knots(&[0.2, 0.5, 0.55, 0.9]);
+        for k in 0..=100 {
+            let (_, n) = basis(&knots, k as f64 / 100.0);
+            assert!((n.iter().sum::<f64>() - 1.0).abs() < 1e-12, "at {k}");
+            assert!(n.iter().all(|&w| w >= -1e-15));
+        }
+    }
+
+    #[test]
+    fn a_cubic_is_fitted_exactly_and_its_ends_interpolated() {
+        // A cubic polynomial curve lies in the spline space whatever the knots.
+        let cubic = |t: f64| DVec2::new(t, 2.0 * t * t * t - t * t + 0.5 * t);
+        let params: Vec<f64> = (0..50).map(|i| i as f64 / 49.0).collect();
+        let points: Vec<DVec2> = params.iter().map(|&t| cubic(t)).collect();
+        let spline = BSpline::fit(&points, &params, &uniform_knots(6)).unwrap();
+        assert_eq!(spline.controls.len(), 6);
+        assert_eq!(spline.controls[0], points[0]);
+        assert_eq!(spline.controls[5], points[49]);
+        for &t in &[0.0, 0.13, 0.5, 0.77, 1.0] {
+            assert!(spline.at(t).distance(cubic(t)) < 1e-3, "at {t}");
+        }
+    }
+
+    #[test]
+    fn a_knot_inserted_keeps_the_shape_and_adds_a_control_point() {
+        let (points, params) = circle_arc(80);
+        let spline = BSpline::fit(&points, &params, &uniform_knots(5)).unwrap();
+        let middle = spline.widest_span_middle();
+        let finer = spline.with_knot(middle).with_knot(0.1);
+        assert_eq!(finer.controls.len(), 7);
+        assert_eq!(finer.knots.len(), 3);
+        for k in 0..=200 {
+            let t = k as f64 / 200.0;
+            assert!(finer.at(t).distance(spline.at(t)) < 1e-12, "at {t}");
+        }
+        // The fit is close to the arc it approximates.
+        for (&p, &t) in points.iter().zip(&params) {
+            assert!(spline.at(t).distance(p) < 5e-3);
+        }
+        assert_eq!(finer.with_knot(0.1), finer, "a knot already there");
+        assert_eq!(finer.with_knot(1.0), finer, "an end");
+    }
+}

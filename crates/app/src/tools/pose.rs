@@ -210,6 +210,7 @@ impl PoseTool {
             plane: Some(curve.plane.normal.to_array()),
             fixed: fixed.map(|f| f.stroke.clone()),
             falloff: self.falloff,
+            coarse: None,
         }))
     }
 

@@ -148,18 +148,27 @@ impl BSpline {
         knots.insert(span - 3, t);
         BSpline { knots, controls }
     }
+}
 
-    /// The midpoint of the longest knot span: where a knot adds the most freedom.
-    pub fn widest_span_middle(&self) -> f64 {
-        let full = full_knots(&self.knots);
-        (full.windows(2))
-            .map(|w| (w[1] - w[0], 0.5 * (w[0] + w[1])))
-            .fold(
-                (0.0, 0.5),
-                |best, span| if span.0 > best.0 { span } else { best },
-            )
-            .1
+/// Whether `knots` can be a spline's interior knots: increasing, strictly inside `(0, 1)`.
+pub fn valid_knots(knots: &[f64]) -> bool {
+    knots.iter().all(|&u| u > 0.0 && u < 1.0) && knots.windows(2).all(|w| w[0] < w[1])
+}
+
+/// `knots` with one more at the midpoint of the longest knot span: where a knot adds the
+/// most freedom.
+pub fn with_widest_span_split(knots: &[f64]) -> Vec<f64> {
+    let full = full_knots(knots);
+    let (mut widest, mut middle) = (0.0, 0.5);
+    for w in full.windows(2) {
+        if w[1] - w[0] > widest {
+            (widest, middle) = (w[1] - w[0], 0.5 * (w[0] + w[1]));
+        }
     }
+    let mut more = knots.to_vec();
+    more.push(middle);
+    more.sort_by(f64::total_cmp);
+    more
 }
 
 #[cfg(test)]
@@ -204,8 +213,11 @@ mod tests {
     fn a_knot_inserted_keeps_the_shape_and_adds_a_control_point() {
         let (points, params) = circle_arc(80);
         let spline = BSpline::fit(&points, &params, &uniform_knots(5)).unwrap();
-        let middle = spline.widest_span_middle();
-        let finer = spline.with_knot(middle).with_knot(0.1);
+        let split = with_widest_span_split(&spline.knots);
+        assert!(valid_knots(&split) && split.len() == spline.knots.len() + 1);
+        let middle = split.iter().find(|u| !spline.knots.contains(u)).copied();
+        assert_eq!(middle, Some(0.25), "the first of the widest spans, halved");
+        let finer = spline.with_knot(0.25).with_knot(0.1);
         assert_eq!(finer.controls.len(), 7);
         assert_eq!(finer.knots.len(), 3);
         for k in 0..=200 {

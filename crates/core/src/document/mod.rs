@@ -59,4 +59,4 @@ pub use oversketch::OutlinePiece;
 pub use region_edit::{RegionDrag, dragged_region, region_of};
 pub use session::{SESSION_FORMAT, SESSION_VERSION, Session};
 pub use session_error::SessionError;
-pub use volumetric::{CurveDeformInput, DeformHandleInput, DeformInput, DeformMethod};
+pub use volumetric::{CoarseInput, CurveDeformInput, DeformHandleInput, DeformInput, DeformMethod};

@@ -850,6 +850,7 @@ mod tests {
                 plane: None,
                 fixed: None,
                 falloff: crate::volumetric::Falloff::Linear,
+                coarse: None,
             }),
             Op::Keyframe(KeyframeInput { time: 0.0 }),
             Op::DeleteKeyframe(KeyframeInput { time: 0.0 }),

@@ -22,8 +22,9 @@ use crate::feature::Sketch;
 use crate::mesh::{Mesh, VertexId};
 use crate::model::positions_hash;
 use crate::volumetric::{
-    CurveEdit, Falloff, Method, Plane, Sphere, SphereHandle, VolumetricError, VolumetricGraph,
-    VolumetricParams, curve_targets, deform_with_spheres, editing_plane, pick_curve,
+    CoarsePlaneCurve, CurveEdit, Falloff, Method, Plane, Sphere, SphereHandle, VolumetricError,
+    VolumetricGraph, VolumetricParams, curve_targets, deform_with_spheres, editing_plane,
+    pick_curve,
 };
 
 thread_local! {
@@ -164,6 +165,23 @@ pub struct CurveDeformInput {
     /// How the curve's turns fade: `"linear"` (left out), `"constant"` or `"gaussian"`.
     #[serde(default, skip_serializing_if = "is_linear")]
     pub falloff: Falloff,
+    /// The new shape by the curve's coarse spline instead of a sketch: `stroke` is then the
+    /// drag of one of its control points.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub coarse: Option<CoarseInput>,
+}
+
+/// A `curve_deform`'s coarse edit: the curve's projection onto its plane fitted by a cubic
+/// B-spline with these knots, one control point dragged.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CoarseInput {
+    /// The spline's interior knots, increasing inside (0, 1): `knots.len() + 4` control
+    /// points.
+    pub knots: Vec<f64>,
+    /// The control point dragged: it moves by the stroke's last point less its first, on
+    /// the plane.
+    pub control: usize,
 }
 
 fn is_linear(falloff: &Falloff) -> bool {
@@ -321,10 +339,14 @@ impl PickedCurve {
             })
             .collect::<Option<Vec<DVec3>>>()
             .ok_or(VolumetricError::EdgeOnPlane)?;
-        if drawn.len() < 2 {
-            return Err(VolumetricError::CurveTooShort.into());
-        }
-        let targets = curve_targets(edit.rest(), &self.plane, &drawn);
+        let targets = match (&input.coarse, drawn.as_slice()) {
+            (Some(coarse), [first, .., last] | [first @ last]) => {
+                CoarsePlaneCurve::new(edit.rest(), &self.plane, &coarse.knots)?
+                    .targets(coarse.control, *last - *first)?
+            }
+            (None, [_, _, ..]) => curve_targets(edit.rest(), &self.plane, &drawn),
+            _ => return Err(VolumetricError::CurveTooShort.into()),
+        };
         Ok(edit.deform(&targets)?)
     }
 }

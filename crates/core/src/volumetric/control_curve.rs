@@ -11,11 +11,14 @@
 //! - **Sketch mode.** The new curve, drawn in the plane, replaces the curve's projection by
 //!   arc-length correspondence; each curve vertex keeps its offset from the plane.
 //! - **WIRE transforms.** At each curve vertex the turn taking its tangent to the new
-//!   tangent (about their cross product) and the ratio of its edges' lengths; every graph
+//!   tangent (about their cross product), without WIRE's scale (see [`wire_transforms`]); every graph
 //!   point takes the transform of its nearest curve vertex (geodesically, over the graph:
 //!   the paper's closest-curve-point weighting), blended toward the identity by the
 //!   strength field: with a fixed region `t = d_F / (d_F + d_C)`, else `t = 1 − d_C / R`
 //!   with `R` the curve's length.
+//! - **Coarse mode.** The curve's projection is fitted by a cubic B-spline (knots the user
+//!   may add); moving a control point reshapes the projection with its detail kept
+//!   ([`CoarseCurve`]), and each vertex keeps its offset from the plane.
 //! - **Several curves.** Other picked curves may be *held*: their vertices are pulled to
 //!   where they are (α rows, as the edited curve's) and count with the fixed region in the
 //!   strength field, so the bend fades toward them too and the parts they run along keep
@@ -30,6 +33,8 @@ use super::{
     Constraints, Falloff, Similarity, VolumetricEdit, VolumetricError, VolumetricGraph,
     VolumetricParams,
 };
+use crate::curve::CoarseCurve;
+use crate::curve::bspline::valid_knots;
 use crate::curve::polyline::{cumulative_lengths, point_at};
 use crate::feature::{Sketch, pick_path};
 use crate::geometry::vertex_normals;
@@ -42,6 +47,10 @@ const FLAT_NORMAL: f64 = 0.2;
 /// A plane seen this nearly edge-on (cosine between the view ray and the plane) cannot
 /// take a stroke.
 const EDGE_ON: f64 = 0.1;
+
+/// The control points a picked curve's coarse spline starts with: enough to bend a limb at
+/// two places and keep its ends.
+pub const COARSE_CONTROLS: usize = 6;
 
 /// A plane through `origin` with unit `normal`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -62,6 +71,20 @@ impl Plane {
         }
         let t = (self.origin - origin).dot(self.normal) / dir.dot(self.normal);
         Some(origin + dir * t)
+    }
+
+    /// `p` in the plane's own 2D coordinates (its projection), and its offset along the
+    /// normal.
+    fn flat(&self, p: DVec3) -> (DVec2, f64) {
+        let (u, w) = self.normal.any_orthonormal_pair();
+        let d = p - self.origin;
+        (DVec2::new(d.dot(u), d.dot(w)), d.dot(self.normal))
+    }
+
+    /// The point at 2D coordinates `q` on the plane, lifted by `offset` along its normal.
+    fn lift(&self, q: DVec2, offset: f64) -> DVec3 {
+        let (u, w) = self.normal.any_orthonormal_pair();
+        self.origin + u * q.x + w * q.y + self.normal * offset
     }
 }
 
@@ -127,10 +150,8 @@ fn principal_directions(points: &[DVec3], origin: DVec3) -> [DVec3; 3] {
 /// of the projection's arc length, plus the vertex's offset from the plane. A curve drawn
 /// from the far end is taken the other way round.
 pub fn curve_targets(rest: &[DVec3], plane: &Plane, drawn: &[DVec3]) -> Vec<DVec3> {
-    let (u, w) = plane.normal.any_orthonormal_pair();
-    let flat = |p: DVec3| DVec2::new((p - plane.origin).dot(u), (p - plane.origin).dot(w));
-    let projected: Vec<DVec2> = rest.iter().map(|&p| flat(p)).collect();
-    let mut drawn: Vec<DVec2> = drawn.iter().map(|&p| flat(p)).collect();
+    let projected: Vec<DVec2> = rest.iter().map(|&p| plane.flat(p).0).collect();
+    let mut drawn: Vec<DVec2> = drawn.iter().map(|&p| plane.flat(p).0).collect();
     let (first, last) = (projected[0], projected[projected.len() - 1]);
     let straight = first.distance(drawn[0]) + last.distance(drawn[drawn.len() - 1]);
     let reversed = first.distance(drawn[drawn.len() - 1]) + last.distance(drawn[0]);
@@ -145,35 +166,90 @@ pub fn curve_targets(rest: &[DVec3], plane: &Plane, drawn: &[DVec3]) -> Vec<DVec
         .zip(&along)
         .map(|(&p, &s)| {
             let q = point_at(&drawn, &drawn_along, s / total * drawn_total);
-            let offset = (p - plane.origin).dot(plane.normal);
-            plane.origin + u * q.x + w * q.y + plane.normal * offset
+            plane.lift(q, plane.flat(p).1)
         })
         .collect()
 }
 
+/// A curve's coarse shape in its editing plane: the spline with interior `knots` fitted to
+/// the projection of the curve vertices at `rest`.
+#[derive(Clone, Debug)]
+pub struct CoarsePlaneCurve {
+    plane: Plane,
+    coarse: CoarseCurve,
+    rest: Vec<DVec3>,
+}
+
+impl CoarsePlaneCurve {
+    /// Fits the spline.
+    ///
+    /// Errors: [`VolumetricError::BadSpline`] for knots that are not increasing inside
+    /// (0, 1), [`VolumetricError::CurveTooShort`], the fit's.
+    pub fn new(
+        rest: &[DVec3],
+        plane: &Plane,
+        knots: &[f64],
+    ) -> Result<CoarsePlaneCurve, VolumetricError> {
+        if !valid_knots(knots) {
+            return Err(VolumetricError::BadSpline {
+                controls: knots.len() + 4,
+            });
+        }
+        if rest.len() < 2 {
+            return Err(VolumetricError::CurveTooShort);
+        }
+        let projected: Vec<DVec2> = rest.iter().map(|&p| plane.flat(p).0).collect();
+        Ok(CoarsePlaneCurve {
+            plane: *plane,
+            coarse: CoarseCurve::fit(&projected, knots)?,
+            rest: rest.to_vec(),
+        })
+    }
+
+    /// The spline's control points, on the plane.
+    pub fn controls(&self) -> Vec<DVec3> {
+        let controls = &self.coarse.spline().controls;
+        controls.iter().map(|&c| self.plane.lift(c, 0.0)).collect()
+    }
+
+    /// Where each curve vertex goes when control point `k` moves by `shift` (its part along
+    /// the plane counts): on the reshaped projection at its share of the arc length (as a
+    /// sketched curve; the spline alone would bunch the vertices near a moved end and
+    /// stretch the edges there many times over, and WIRE would scale the part with them),
+    /// plus its offset from the plane.
+    ///
+    /// Errors: [`VolumetricError::BadSpline`] for a control point the spline lacks, the
+    /// solve's.
+    pub fn targets(&self, k: usize, shift: DVec3) -> Result<Vec<DVec3>, VolumetricError> {
+        let mut controls = self.coarse.spline().controls.clone();
+        let n = controls.len();
+        let control = controls
+            .get_mut(k)
+            .ok_or(VolumetricError::BadSpline { controls: n })?;
+        let (to, _) = self.plane.flat(self.plane.origin + shift);
+        *control += to;
+        let moved: Vec<DVec3> = (self.coarse.reshape(&controls)?.iter())
+            .map(|&q| self.plane.lift(q, 0.0))
+            .collect();
+        Ok(curve_targets(&self.rest, &self.plane, &moved))
+    }
+}
+
 /// WIRE's transform at each curve vertex from its rest position to `moved`: the turn of its
-/// tangent and the ratio of its edges' lengths.
+/// tangent. WIRE's scale (the ratio of the edges' lengths) is left at 1: a curve drawn
+/// longer then stretches its part along itself instead of fattening it all round (with the
+/// scale, a capsule's curve dragged 17% longer grew the capsule's volume by 48%).
 pub fn wire_transforms(rest: &[DVec3], moved: &[DVec3]) -> Vec<Similarity> {
     let n = rest.len();
     let tangent =
         |x: &[DVec3], i: usize| (x[(i + 1).min(n - 1)] - x[i.saturating_sub(1)]).try_normalize();
-    let edges = |x: &[DVec3], i: usize| {
-        x[(i + 1).min(n - 1)].distance(x[i]) + x[i].distance(x[i.saturating_sub(1)])
-    };
     (0..n)
-        .map(|i| {
-            let (Some(t), Some(t_moved)) = (tangent(rest, i), tangent(moved, i)) else {
-                return Similarity::IDENTITY;
-            };
-            let scale = edges(moved, i) / edges(rest, i);
-            Similarity {
+        .map(|i| match (tangent(rest, i), tangent(moved, i)) {
+            (Some(t), Some(t_moved)) => Similarity {
                 rotation: DQuat::from_rotation_arc(t, t_moved),
-                scale: if scale.is_finite() && scale > 0.0 {
-                    scale
-                } else {
-                    1.0
-                },
-            }
+                scale: 1.0,
+            },
+            _ => Similarity::IDENTITY,
         })
         .collect()
 }

@@ -69,6 +69,15 @@ pub enum VolumetricError {
         "A control curve must be given once, as a stroke along the surface or as a chain of the model's vertices joined by edges."
     )]
     BadPath,
+    /// A coarse edit's knots are not increasing inside (0, 1), or it names a control point
+    /// its spline lacks.
+    #[error(
+        "The curve's spline needs increasing knots strictly between 0 and 1, and a control point it has ({controls} with these knots)."
+    )]
+    BadSpline {
+        /// How many control points the knots give.
+        controls: usize,
+    },
     /// A control curve of fewer than two vertices.
     #[error("The control curve is too short: draw it along the surface over a few triangles.")]
     CurveTooShort,

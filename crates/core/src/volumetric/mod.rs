@@ -31,7 +31,8 @@ mod spread;
 mod weights;
 
 pub use control_curve::{
-    CurveEdit, Plane, curve_targets, editing_plane, pick_curve, wire_transforms,
+    COARSE_CONTROLS, CoarsePlaneCurve, CurveEdit, Plane, curve_targets, editing_plane, pick_curve,
+    wire_transforms,
 };
 pub use edit::{Constraints, GraphTerm, VolumetricEdit, VolumetricParams};
 pub use error::VolumetricError;

@@ -8,15 +8,17 @@ use crate::common::{digest, import_mesh};
 
 use glam::{DMat4, DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
+use sketchmesh_core::curve::bspline::uniform_knots;
 use sketchmesh_core::document::{
-    CurveDeformInput, DeformHandleInput, DeformInput, DeformMethod, Editor, Op, Progress,
+    CoarseInput, CurveDeformInput, DeformHandleInput, DeformInput, DeformMethod, Editor, Op,
+    Progress,
 };
 use sketchmesh_core::feature::Sketch;
 use sketchmesh_core::geometry::{Bvh, enclosed_volume};
 use sketchmesh_core::mesh::{Mesh, TriSoup, primitives};
 use sketchmesh_core::volumetric::{
-    Falloff, GraphTerm, Method, Sphere, SphereHandle, VolumetricError, VolumetricGraph,
-    VolumetricParams, deform_with_spheres, pick_curve,
+    COARSE_CONTROLS, Falloff, GraphTerm, Method, Sphere, SphereHandle, VolumetricError,
+    VolumetricGraph, VolumetricParams, deform_with_spheres, pick_curve,
 };
 
 /// Bumps on the capsule: centre (x, angle around) of each.
@@ -567,6 +569,7 @@ fn quarter_bend() -> CurveDeformInput {
         plane: None,
         fixed: Some(fixed),
         falloff: Falloff::Linear,
+        coarse: None,
     }
 }
 
@@ -772,4 +775,101 @@ fn a_held_curve_keeps_its_part_while_another_curve_bends() {
         );
         assert_eq!(digest(c.document()), before);
     }
+}
+
+/// Coarse editing: the curve's last spline control point dragged 1.5 toward +z (seen from
+/// above, face on to the plane) swings the capsule's right end out with it; the curve gets
+/// longer and the tube keeps its cross-section (the volume grows by the radius' disc times
+/// the curve's new length, within 2% of the volume); a drag that goes nowhere moves nothing measurable; bad knots or a control point
+/// the spline lacks are refused with a sentence, nothing changed.
+#[test]
+fn dragging_a_spline_control_point_bends_the_capsule() {
+    let mesh = smooth_capsule();
+    let mut editor = Editor::new();
+    editor.apply(import_mesh("capsule.glb", &mesh)).unwrap();
+    let imported = editor.document().models[0].mesh.clone();
+    let mut input = quarter_bend();
+    let above = input.stroke_camera.expect("drawn from above");
+    let viewport = DVec2::from(input.viewport);
+    let knots = uniform_knots(COARSE_CONTROLS);
+    let last = COARSE_CONTROLS - 1;
+    let tip = DVec3::new(2.5, 0.0, 0.5);
+    input.stroke = screen_line(&above, viewport, tip, tip + DVec3::new(0.0, 0.0, 1.5));
+    input.coarse = Some(CoarseInput {
+        knots: knots.clone(),
+        control: last,
+    });
+    let path = picked_path(&imported, &input);
+    let end = path[path.len() - 1] as usize;
+    let middle = path[path.len() / 2] as usize;
+    // Refused: knots out of order, a control point past the last.
+    for coarse in [
+        CoarseInput {
+            knots: vec![0.6, 0.3],
+            control: 0,
+        },
+        CoarseInput {
+            knots: knots.clone(),
+            control: COARSE_CONTROLS,
+        },
+    ] {
+        let bad = CurveDeformInput {
+            coarse: Some(coarse),
+            ..input.clone()
+        };
+        let before = digest(editor.document());
+        let err = editor.apply(Op::CurveDeform(bad)).unwrap_err();
+        assert!(
+            err.to_string().contains("spline needs increasing knots"),
+            "{err}"
+        );
+        assert_eq!(digest(editor.document()), before);
+    }
+    // A drag back to where it began.
+    let mut nowhere = input.clone();
+    let first = nowhere.stroke[0];
+    nowhere.stroke = vec![first, nowhere.stroke[10], first];
+    let mut still = Editor::new();
+    still.apply(import_mesh("capsule.glb", &mesh)).unwrap();
+    still.apply(Op::CurveDeform(nowhere)).unwrap();
+    let drift = (still.document().models[0].mesh.positions().iter())
+        .zip(imported.positions())
+        .map(|(a, b)| a.distance(*b))
+        .fold(0.0, f64::max);
+    assert!(drift < 1e-6, "an unmoved spline moved a vertex by {drift}");
+    editor.apply(Op::CurveDeform(input)).unwrap();
+    let moved = editor.document().models[0].mesh.positions().to_vec();
+    let rise = |v: usize| moved[v].z - imported.positions()[v].z;
+    let rest_volume = enclosed_volume(&imported);
+    let change = volume(&imported, &moved) / rest_volume - 1.0;
+    let length = |x: &[DVec3]| {
+        (path.windows(2))
+            .map(|w| x[w[0] as usize].distance(x[w[1] as usize]))
+            .sum::<f64>()
+    };
+    let longer = length(&moved) - length(imported.positions());
+    let tube = PI * 0.5 * 0.5 * longer / rest_volume;
+    println!(
+        "coarse drag: the curve's end rises {:.3}, its middle {:.3}; the curve {longer:+.3} \
+         longer; volume {:+.2}% ({:+.2}% for a tube that long)",
+        rise(end),
+        rise(middle),
+        100.0 * change,
+        100.0 * tube
+    );
+    assert!(rise(end) > 0.75, "the end rose {}", rise(end));
+    assert!(
+        rise(middle) < 0.5 * rise(end),
+        "the middle rose {}",
+        rise(middle)
+    );
+    assert!(
+        (change - tube).abs() < 0.02,
+        "volume {:+.2}% against {:+.2}%",
+        100.0 * change,
+        100.0 * tube
+    );
+    assert_eq!(crossing_pairs(&imported, &moved), 0);
+    let replayed = Editor::replay_json(&editor.session_json()).unwrap();
+    assert_eq!(digest(replayed.document()), digest(editor.document()));
 }

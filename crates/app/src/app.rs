@@ -1013,6 +1013,19 @@ impl SketchApp {
                 .collect();
             outline_ui(ui, viewport, &on_screen, active, active);
         }
+        let controls: Vec<egui::Pos2> = (self.tools.pose_controls(shown, moved).iter())
+            .filter_map(|&p| camera.screen_from_world(p, size))
+            .map(|s| viewport.min + egui::vec2(s.x as f32, s.y as f32))
+            .collect();
+        let colour = egui::Color32::from_rgb(250, 210, 80);
+        ui.painter().add(egui::Shape::line(
+            controls.clone(),
+            egui::Stroke::new(1.5, colour.gamma_multiply(0.7)),
+        ));
+        for c in controls {
+            ui.painter()
+                .circle(c, 9.0, colour, egui::Stroke::new(2.0, egui::Color32::BLACK));
+        }
     }
 
     /// The curve handles, in the handles tool, at the pose a drag previews.

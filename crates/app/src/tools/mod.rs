@@ -141,6 +141,14 @@ impl ToolSet {
         }
     }
 
+    /// The pose tool's spline control points, to draw, while it reshapes by them.
+    pub fn pose_controls(&self, doc: &Document, moved: pose::Moved) -> Vec<glam::DVec3> {
+        match self.mode {
+            Mode::Pose => self.pose.controls(doc, moved),
+            _ => Vec::new(),
+        }
+    }
+
     /// The move tool's panel; what the user did there.
     pub fn arrange_ui(&mut self, ui: &mut egui::Ui, doc: &Document) -> ToolOutput {
         self.arrange.settings_ui(ui, doc)

@@ -12,13 +12,17 @@
 
 use glam::DVec3;
 use sketchmesh_core::camera::Camera;
+use sketchmesh_core::curve::bspline::{uniform_knots, with_widest_span_split};
 use sketchmesh_core::curve::{StrokePoint, is_closed_loop};
 use sketchmesh_core::document::{
-    CLOSE_TOLERANCE_PX, CurveDeformInput, Document, KeyframeInput, Op, StrokeInput, model_under,
+    CLOSE_TOLERANCE_PX, CoarseInput, CurveDeformInput, Document, KeyframeInput, Op, StrokeInput,
+    model_under,
 };
 use sketchmesh_core::feature::Sketch;
 use sketchmesh_core::mesh::VertexId;
-use sketchmesh_core::volumetric::{Falloff, Plane, editing_plane, pick_curve};
+use sketchmesh_core::volumetric::{
+    COARSE_CONTROLS, CoarsePlaneCurve, Falloff, Plane, editing_plane, pick_curve,
+};
 
 use super::context::{ToolOutput, ViewCtx};
 use super::draw::{DrawTool, is_tap, point};
@@ -36,6 +40,8 @@ struct PoseCurve {
     path: Vec<u32>,
     /// The editing plane: chosen for the curve when picked, or turned by the user.
     plane: Plane,
+    /// The interior knots of its coarse spline.
+    knots: Vec<f64>,
 }
 
 impl PoseCurve {
@@ -52,15 +58,40 @@ impl PoseCurve {
                 .all(|w| mesh.find_edge(VertexId(w[0]), VertexId(w[1])).is_some())
     }
 
-    /// The curve's vertices' positions in `doc`.
-    fn points(&self, doc: &Document) -> Vec<DVec3> {
-        let mesh = &doc.models[self.model].mesh;
-        self.path
-            .iter()
-            .map(|&v| mesh.position(VertexId(v)))
-            .collect()
+    /// The curve's vertices' positions in `doc`, or on the model an edit in progress
+    /// `moves`.
+    fn points(&self, doc: &Document, moved: Moved) -> Vec<DVec3> {
+        match moved {
+            Some((model, positions)) if model == self.model => {
+                self.path.iter().map(|&v| positions[v as usize]).collect()
+            }
+            _ => {
+                let mesh = &doc.models[self.model].mesh;
+                self.path
+                    .iter()
+                    .map(|&v| mesh.position(VertexId(v)))
+                    .collect()
+            }
+        }
+    }
+
+    /// Its coarse spline's control points where the curve is (fitted to it, as the op
+    /// fits it: on the plane through the curve's centroid); none if the fit fails.
+    fn controls(&self, doc: &Document, moved: Moved) -> Vec<DVec3> {
+        let points = self.points(doc, moved);
+        let origin = points.iter().sum::<DVec3>() / points.len().max(1) as f64;
+        let plane = Plane {
+            origin,
+            ..self.plane
+        };
+        CoarsePlaneCurve::new(&points, &plane, &self.knots)
+            .map(|coarse| coarse.controls())
+            .unwrap_or_default()
     }
 }
+
+/// How near (CSS px) a pointer must come down to a control point to drag it: a fingertip.
+const GRAB_PX: f64 = 28.0;
 
 /// A model an edit in progress moves, and where its vertices are shown.
 pub type Moved<'a> = Option<(usize, &'a [DVec3])>;
@@ -81,6 +112,8 @@ pub struct PoseTool {
     adding: bool,
     /// Whether the curve's new shape is being drawn (a gesture).
     reshaping: bool,
+    /// Whether the curve is reshaped by its spline's control points, not by a sketch.
+    spline: bool,
     falloff: Falloff,
     /// The time the next key goes at (s).
     time: f64,
@@ -91,7 +124,7 @@ impl PoseTool {
     pub fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
         self.forget_stale(doc);
         if self.active.is_some() && !self.adding {
-            return self.reshape(event, view);
+            return self.reshape(event, view, doc);
         }
         let Some(input) = self.draw.capture(event, view) else {
             return ToolOutput::None;
@@ -140,6 +173,7 @@ impl PoseTool {
                     model,
                     path: path.iter().map(|v| v.0).collect(),
                     plane,
+                    knots: uniform_knots(COARSE_CONTROLS),
                 });
                 self.select(self.curves.len() - 1)
             }
@@ -158,20 +192,35 @@ impl PoseTool {
         }
     }
 
-    /// The new shape's stroke: a gesture whose samples the edit follows.
-    fn reshape(&mut self, event: &ToolEvent, view: &ViewCtx) -> ToolOutput {
+    /// The new shape's stroke, or a control point's drag: a gesture whose samples the edit
+    /// follows.
+    fn reshape(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
         let sample = |s| {
             let p = point(s, view);
             [p.pos.x, p.pos.y, p.pressure]
         };
         match event {
-            ToolEvent::Begin(s) => match self.deform(view, sample(s)) {
-                Some(op) => {
-                    self.reshaping = true;
-                    ToolOutput::Begin(op)
+            ToolEvent::Begin(s) => {
+                let first = sample(s);
+                let coarse = match self.spline {
+                    true => match self.grabbed(doc, view, first) {
+                        Some(k) => Some(k),
+                        None => {
+                            return ToolOutput::Refused(String::from(
+                                "Drag one of the curve's round control points (+ Knot adds one), or choose Sketch to redraw it.",
+                            ));
+                        }
+                    },
+                    false => None,
+                };
+                match self.deform(view, first, coarse) {
+                    Some(op) => {
+                        self.reshaping = true;
+                        ToolOutput::Begin(op)
+                    }
+                    None => ToolOutput::None,
                 }
-                None => ToolOutput::None,
-            },
+            }
             ToolEvent::Move(s) if self.reshaping => ToolOutput::Extend(sample(s)),
             ToolEvent::End(s) if self.reshaping => {
                 self.reshaping = false;
@@ -185,9 +234,27 @@ impl PoseTool {
         }
     }
 
+    /// The active curve's control point nearest the screen point `at`, when it is within
+    /// [`GRAB_PX`].
+    fn grabbed(&self, doc: &Document, view: &ViewCtx, at: [f64; 3]) -> Option<usize> {
+        let curve = &self.curves[self.active?];
+        let size = view.viewport.size();
+        let size = glam::DVec2::new(size.x.into(), size.y.into());
+        let at = glam::DVec2::new(at[0], at[1]);
+        (curve.controls(doc, None).iter().enumerate())
+            .filter_map(|(k, &c)| {
+                let s = view.camera.screen_from_world(c, size)?.truncate();
+                Some((k, s.distance(at)))
+            })
+            .filter(|&(_, d)| d <= GRAB_PX)
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+            .map(|(k, _)| k)
+    }
+
     /// The op that gives the active curve the shape of a stroke drawn in `view`, begun with
-    /// `first`; the other curves on its model hold, and so does what the loop surrounds.
-    fn deform(&self, view: &ViewCtx, first: [f64; 3]) -> Option<Op> {
+    /// `first` (with `coarse`, the drag of that control point of its spline); the other
+    /// curves on its model hold, and so does what the loop surrounds.
+    fn deform(&self, view: &ViewCtx, first: [f64; 3], coarse: Option<usize>) -> Option<Op> {
         let active = self.active?;
         let curve = &self.curves[active];
         let held = (self.curves.iter().enumerate())
@@ -210,7 +277,10 @@ impl PoseTool {
             plane: Some(curve.plane.normal.to_array()),
             fixed: fixed.map(|f| f.stroke.clone()),
             falloff: self.falloff,
-            coarse: None,
+            coarse: coarse.map(|control| CoarseInput {
+                knots: curve.knots.clone(),
+                control,
+            }),
         }))
     }
 
@@ -220,7 +290,7 @@ impl PoseTool {
         let Some(curve) = self.active.map(|k| &mut self.curves[k]) else {
             return ToolOutput::None;
         };
-        let points = curve.points(doc);
+        let points = curve.points(doc, None);
         let (first, last) = (points[0], points[points.len() - 1]);
         let Some(axis) = (last - first).try_normalize() else {
             return ToolOutput::None;
@@ -252,16 +322,17 @@ impl PoseTool {
     pub fn curves(&self, doc: &Document, moved: Moved) -> Vec<(Vec<DVec3>, bool)> {
         (self.curves.iter().enumerate())
             .filter(|(_, c)| c.fits(doc))
-            .map(|(k, c)| {
-                let points = match moved {
-                    Some((model, positions)) if model == c.model => {
-                        c.path.iter().map(|&v| positions[v as usize]).collect()
-                    }
-                    _ => c.points(doc),
-                };
-                (points, self.active == Some(k))
-            })
+            .map(|(k, c)| (c.points(doc, moved), self.active == Some(k)))
             .collect()
+    }
+
+    /// The active curve's spline control points in `doc` (or as an edit in progress `moves`
+    /// them), to draw, while the curve is reshaped by them.
+    pub fn controls(&self, doc: &Document, moved: Moved) -> Vec<DVec3> {
+        match self.active.map(|k| &self.curves[k]) {
+            Some(curve) if self.spline && curve.fits(doc) => curve.controls(doc, moved),
+            _ => Vec::new(),
+        }
     }
 
     /// The loop around what holds still, while the view is the one it was drawn in.
@@ -281,6 +352,9 @@ impl PoseTool {
         Some(match (self.active, self.adding, &self.fixed) {
             (None, _, None) if self.curves.is_empty() => {
                 "Draw a control curve along a model (a closed loop off it first holds a part still)"
+            }
+            (Some(_), false, _) if self.spline => {
+                "Drag the curve's control points; the model bends and keeps its volume"
             }
             (Some(_), false, _) => {
                 "Draw the curve's new shape; the model bends and keeps its volume (+ Curve picks another)"
@@ -326,6 +400,31 @@ impl PoseTool {
             .clicked()
         {
             self.cancel();
+        }
+        for (spline, label, hint) in [
+            (false, "Sketch", "Draw the curve's whole new shape"),
+            (
+                true,
+                "Spline",
+                "Drag the control points of the curve's coarse shape; its detail stays",
+            ),
+        ] {
+            let button = egui::Button::selectable(self.spline == spline, label)
+                .min_size(egui::vec2(44.0, 36.0));
+            if ui.add(button).on_hover_text(hint).clicked() {
+                self.spline = spline;
+            }
+        }
+        let knot = ui.add_enabled(
+            self.spline && self.active.is_some(),
+            egui::Button::new("+ Knot").min_size(egui::vec2(44.0, 36.0)),
+        );
+        if knot
+            .on_hover_text("One more control point, in the widest span")
+            .clicked()
+            && let Some(curve) = self.active.map(|k| &mut self.curves[k])
+        {
+            curve.knots = with_widest_span_split(&curve.knots);
         }
         let turn = ui.add_enabled(self.active.is_some(), egui::Button::new("Turn plane"));
         if turn
@@ -546,5 +645,64 @@ mod tests {
         assert_eq!(tool.active, Some(1));
         assert_eq!(second.held, vec![tool.curves[0].path.clone()]);
         assert_eq!(second.path.as_ref(), Some(&tool.curves[1].path));
+    }
+
+    #[test]
+    fn in_spline_mode_a_press_on_a_control_point_drags_it_and_elsewhere_is_refused() {
+        let mut editor = shape();
+        let mut tool = PoseTool::default();
+        let front = view();
+        let across: Vec<(f32, f32)> = (0..=40).map(|k| (300.0 + 5.0 * k as f32, 340.0)).collect();
+        let ToolOutput::Face { point, normal } =
+            stroke(&mut tool, &front, editor.document(), &across)
+        else {
+            panic!("no plane to face");
+        };
+        let mut camera = crate::camera::OrbitCamera::default();
+        camera.face(point, normal);
+        let side = ViewCtx {
+            camera: camera.camera(),
+            ..front
+        };
+        tool.spline = true;
+        let controls = tool.controls(editor.document(), None);
+        assert_eq!(controls.len(), COARSE_CONTROLS);
+        let size = glam::DVec2::new(800.0, 600.0);
+        let Some(last) = front
+            .camera
+            .screen_from_world(controls[COARSE_CONTROLS - 1], size)
+        else {
+            panic!("the last control point is off screen");
+        };
+        // The viewport starts 40 px down the screen.
+        let (x, y) = (last.x as f32 + 5.0, last.y as f32 + 40.0);
+        let near = ToolEvent::Begin(pen(Phase::Down, x, y));
+        let ToolOutput::Begin(Op::CurveDeform(drag)) =
+            tool.on_event(&near, &side, editor.document())
+        else {
+            panic!("no drag");
+        };
+        let coarse = drag.coarse.as_ref().map(|c| c.control);
+        assert_eq!(coarse, Some(COARSE_CONTROLS - 1));
+        // Released 60 px up: the op bends the shape.
+        let up = ToolEvent::End(pen(Phase::Up, x, y - 60.0));
+        let ToolOutput::End(sample) = tool.on_event(&up, &side, editor.document()) else {
+            panic!("no end");
+        };
+        let mut drag = drag;
+        drag.stroke.push(sample);
+        let before = editor.document().models[0].mesh.positions().to_vec();
+        editor.apply(Op::CurveDeform(drag)).unwrap();
+        assert!(editor.document().models[0].mesh.positions() != before.as_slice());
+        // Far from every control point: refused with a sentence; + Knot gives one more.
+        let far = ToolEvent::Begin(pen(Phase::Down, 20.0, 20.0));
+        let refused = tool.on_event(&far, &side, editor.document());
+        assert!(matches!(refused, ToolOutput::Refused(_)), "{refused:?}");
+        let curve = &mut tool.curves[0];
+        curve.knots = with_widest_span_split(&curve.knots);
+        assert_eq!(
+            tool.controls(editor.document(), None).len(),
+            COARSE_CONTROLS + 1
+        );
     }
 }

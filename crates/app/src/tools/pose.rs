@@ -668,7 +668,7 @@ mod tests {
         let controls = tool.controls(editor.document(), None);
         assert_eq!(controls.len(), COARSE_CONTROLS);
         let size = glam::DVec2::new(800.0, 600.0);
-        let Some(last) = front
+        let Some(last) = side
             .camera
             .screen_from_world(controls[COARSE_CONTROLS - 1], size)
         else {

@@ -22,6 +22,7 @@ use sketchmesh_core::optimize::quality_report;
 use sketchmesh_core::oversketch::OversketchRoi;
 
 use crate::autosave;
+use crate::backdrop::Backdrop;
 use crate::camera::OrbitCamera;
 use crate::clock;
 use crate::files::{self, ImportQueue};
@@ -118,6 +119,8 @@ pub struct SketchApp {
     moved_normals: Vec<glam::DVec3>,
     /// The key-framed animation being played, if any.
     playback: Option<Playback>,
+    /// The reference image over the view, to trace a motion's frames.
+    backdrop: Backdrop,
     /// The edit in progress: begun from a tool's op, stepped every frame, finished when done.
     edit: Option<Edit>,
     /// How many edits were begun: tells apart the documents of two edits of equal revision.
@@ -197,6 +200,7 @@ impl SketchApp {
             shown_motion: None,
             moved_normals: Vec::new(),
             playback: None,
+            backdrop: Backdrop::default(),
             edit: None,
             edits_begun: 0,
             falloff_panel: Default::default(),
@@ -401,6 +405,13 @@ impl SketchApp {
             ToolOutput::Face { point, normal } => {
                 self.shared.borrow_mut().camera.face(point, normal);
             }
+            ToolOutput::Backdrop(load) => {
+                if !load {
+                    self.backdrop.remove();
+                } else if let Err(message) = self.backdrop.pick() {
+                    self.set_status(message, now);
+                }
+            }
             ToolOutput::Play => {
                 let played =
                     Playback::start(self.shared.borrow().editor.document(), clock::now_ms());
@@ -490,6 +501,9 @@ impl SketchApp {
         let dropped = ctx.input(|i| i.raw.dropped_files.clone());
         let imports = self.shared.borrow().imports.clone();
         files::accept_dropped(dropped, &imports, ctx);
+        if let Some(message) = self.backdrop.poll(ctx) {
+            self.set_status(message, now);
+        }
         if let Some(incoming) = self.announced_import.take() {
             match incoming {
                 files::Incoming::Import(input) => self.import_now(input, now),
@@ -861,6 +875,7 @@ impl SketchApp {
             ui.painter()
                 .add(egui_wgpu::Callback::new_paint_callback(viewport, callback));
         }
+        self.backdrop.paint(ui, viewport);
         self.live_stroke_ui(ui, viewport);
         if let Some(edit) = &self.edit {
             let levels = falloff_levels(edit);

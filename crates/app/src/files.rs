@@ -142,6 +142,35 @@ fn queue_files(files: Vec<(String, Vec<u8>)>, queue: &ImportQueue, ctx: &egui::C
 /// Opens the browser's file picker; chosen files are queued. Native builds import by drop.
 #[cfg(target_arch = "wasm32")]
 pub fn pick_files(queue: &ImportQueue, ctx: &egui::Context) -> Result<(), String> {
+    let (queue, ctx) = (queue.clone(), ctx.clone());
+    open_picker(
+        ".glb,.gltf,.bin,.png,.jpg,.jpeg,.json",
+        true,
+        move |files| {
+            wasm_bindgen_futures::spawn_local(async move {
+                let mut read = Vec::new();
+                for file in files {
+                    let Ok(buffer) =
+                        wasm_bindgen_futures::JsFuture::from(file.array_buffer()).await
+                    else {
+                        continue;
+                    };
+                    read.push((file.name(), js_sys::Uint8Array::new(&buffer).to_vec()));
+                }
+                queue_files(read, &queue, &ctx);
+            });
+        },
+    )
+}
+
+/// Opens the browser's file picker for files matching `accept` (one, or several when
+/// `multiple`); `chosen` gets them once the user picks.
+#[cfg(target_arch = "wasm32")]
+pub fn open_picker(
+    accept: &str,
+    multiple: bool,
+    chosen: impl FnOnce(Vec<web_sys::File>) + 'static,
+) -> Result<(), String> {
     use wasm_bindgen::JsCast as _;
     use wasm_bindgen::prelude::Closure;
     let describe = |e: wasm_bindgen::JsValue| format!("{e:?}");
@@ -154,23 +183,12 @@ pub fn pick_files(queue: &ImportQueue, ctx: &egui::Context) -> Result<(), String
         .dyn_into()
         .map_err(|_| "not an input element")?;
     input.set_type("file");
-    input.set_multiple(true);
-    input.set_accept(".glb,.gltf,.bin,.png,.jpg,.jpeg,.json");
-    let (queue, ctx, target) = (queue.clone(), ctx.clone(), input.clone());
+    input.set_multiple(multiple);
+    input.set_accept(accept);
+    let target = input.clone();
     let on_change = Closure::once_into_js(move || {
         let Some(list) = target.files() else { return };
-        let files: Vec<web_sys::File> = (0..list.length()).filter_map(|i| list.get(i)).collect();
-        wasm_bindgen_futures::spawn_local(async move {
-            let mut read = Vec::new();
-            for file in files {
-                let Ok(buffer) = wasm_bindgen_futures::JsFuture::from(file.array_buffer()).await
-                else {
-                    continue;
-                };
-                read.push((file.name(), js_sys::Uint8Array::new(&buffer).to_vec()));
-            }
-            queue_files(read, &queue, &ctx);
-        });
+        chosen((0..list.length()).filter_map(|i| list.get(i)).collect());
     });
     input.set_onchange(Some(on_change.unchecked_ref()));
     input.click();

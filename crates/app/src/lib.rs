@@ -6,6 +6,7 @@
 
 pub mod app;
 pub mod autosave;
+pub mod backdrop;
 pub mod camera;
 pub mod clock;
 pub mod files;

@@ -50,4 +50,6 @@ pub enum ToolOutput {
     },
     /// Play the key-framed animation.
     Play,
+    /// Load a backdrop image to trace over (`true`), or remove it (`false`).
+    Backdrop(bool),
 }

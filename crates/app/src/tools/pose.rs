@@ -516,6 +516,21 @@ impl PoseTool {
         if let face @ ToolOutput::Face { .. } = self.curves_ui(ui, doc) {
             output = face;
         }
+        ui.separator();
+        if ui
+            .button("Backdrop…")
+            .on_hover_text("Show an image over the view, to trace a motion's frames")
+            .clicked()
+        {
+            output = ToolOutput::Backdrop(true);
+        }
+        if ui
+            .button("No backdrop")
+            .on_hover_text("Remove the image")
+            .clicked()
+        {
+            output = ToolOutput::Backdrop(false);
+        }
         output
     }
 }

@@ -401,19 +401,16 @@ impl PoseTool {
         {
             self.cancel();
         }
-        for (spline, label, hint) in [
-            (false, "Sketch", "Draw the curve's whole new shape"),
-            (
-                true,
-                "Spline",
-                "Drag the control points of the curve's coarse shape; its detail stays",
-            ),
-        ] {
-            let button = egui::Button::selectable(self.spline == spline, label)
-                .min_size(egui::vec2(44.0, 36.0));
-            if ui.add(button).on_hover_text(hint).clicked() {
-                self.spline = spline;
-            }
+        let spline =
+            egui::Button::selectable(self.spline, "Spline").min_size(egui::vec2(44.0, 36.0));
+        if ui
+            .add(spline)
+            .on_hover_text(
+                "Drag the control points of the curve's coarse shape, its detail kept (off: draw the whole new shape)",
+            )
+            .clicked()
+        {
+            self.spline = !self.spline;
         }
         let knot = ui.add_enabled(
             self.spline && self.active.is_some(),
@@ -426,19 +423,30 @@ impl PoseTool {
         {
             curve.knots = with_widest_span_split(&curve.knots);
         }
-        let turn = ui.add_enabled(self.active.is_some(), egui::Button::new("Turn plane"));
-        if turn
-            .on_hover_text("Turn the editing plane about the curve by 45°")
-            .clicked()
-        {
-            output = self.turn_plane(doc);
-        }
+        ui.menu_button("⋯", |ui| {
+            let turn = ui.add_enabled(self.active.is_some(), egui::Button::new("Turn plane"));
+            if turn
+                .on_hover_text("Turn the editing plane about the curve by 45°")
+                .clicked()
+            {
+                output = self.turn_plane(doc);
+            }
+            let hint = "Show an image over the view, to trace a motion's frames";
+            if ui.button("Backdrop…").on_hover_text(hint).clicked() {
+                output = ToolOutput::Backdrop(true);
+            }
+            if ui.button("No backdrop").clicked() {
+                output = ToolOutput::Backdrop(false);
+            }
+        })
+        .response
+        .on_hover_text("Turn the plane; a backdrop image to trace");
         output
     }
 
     /// The panel: the fall-off, the curves, and the timeline's key, delete and play.
     pub fn settings_ui(&mut self, ui: &mut egui::Ui, doc: &Document) -> ToolOutput {
-        for (falloff, label, hint) in [
+        let falloffs = [
             (
                 Falloff::Linear,
                 "Linear",
@@ -454,16 +462,21 @@ impl PoseTool {
                 "Rigid",
                 "Everything the curve reaches turns with it",
             ),
-        ] {
-            let button = egui::Button::selectable(self.falloff == falloff, label)
-                .min_size(egui::vec2(36.0, 36.0));
-            if ui.add(button).on_hover_text(hint).clicked() {
-                self.falloff = falloff;
-            }
-        }
+        ];
+        let chosen = falloffs.iter().find(|f| f.0 == self.falloff);
+        egui::ComboBox::from_id_salt("pose falloff")
+            .selected_text(chosen.map_or("", |f| f.1))
+            .height(200.0)
+            .show_ui(ui, |ui| {
+                for (falloff, label, hint) in falloffs {
+                    ui.selectable_value(&mut self.falloff, falloff, label)
+                        .on_hover_text(hint);
+                }
+            })
+            .response
+            .on_hover_text("How the bend fades toward what holds still");
         ui.separator();
         let mut output = ToolOutput::None;
-        ui.separator();
         ui.add(
             egui::DragValue::new(&mut self.time)
                 .range(0.0..=600.0)
@@ -515,21 +528,6 @@ impl PoseTool {
         ui.separator();
         if let face @ ToolOutput::Face { .. } = self.curves_ui(ui, doc) {
             output = face;
-        }
-        ui.separator();
-        if ui
-            .button("Backdrop…")
-            .on_hover_text("Show an image over the view, to trace a motion's frames")
-            .clicked()
-        {
-            output = ToolOutput::Backdrop(true);
-        }
-        if ui
-            .button("No backdrop")
-            .on_hover_text("Remove the image")
-            .clicked()
-        {
-            output = ToolOutput::Backdrop(false);
         }
         output
     }

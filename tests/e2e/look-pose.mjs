@@ -1,0 +1,16 @@
+import { launch, openApp, penStroke, frames, api, camera, line, sleep, screenshot } from './lib.mjs';
+const url = 'http://127.0.0.1:8080/';
+const browser = await launch('webgl2');
+const { page, cdp, errors } = await openApp(browser, url, 'webgl2', { width: 1280, height: 720 });
+const c = { x: 640, y: 400 };
+const ellipse = Array.from({ length: 80 }, (_, k) => ({ x: c.x + 170 * Math.cos(k / 79 * 2 * Math.PI), y: c.y + 120 * Math.sin(k / 79 * 2 * Math.PI) }));
+await penStroke(cdp, ellipse.map((p) => ({ ...p, force: 0.5 })));
+await sleep(3000);
+await page.keyboard.press('q');
+await frames(page, 3);
+await penStroke(cdp, line({ x: c.x - 130, y: c.y }, { x: c.x + 130, y: c.y }, 40).map((p) => ({ ...p, force: 0.5 })));
+await sleep(1500);
+await frames(page, 3);
+await screenshot(page, 'tests/out/look-picked.png');
+console.log(JSON.stringify(await api(page, 'stats')), errors);
+await browser.close();

@@ -366,7 +366,8 @@ impl PoseTool {
         })
     }
 
-    /// The picked curves' buttons (which one is redrawn), **+ Curve** and **Clear**.
+    /// The picked curves' buttons (which one is redrawn), **+ Curve**, **Clear**, **Spline**,
+    /// **+ Knot**, and the **⋯** menu (turn the plane, the backdrop).
     fn curves_ui(&mut self, ui: &mut egui::Ui, doc: &Document) -> ToolOutput {
         let mut output = ToolOutput::None;
         for k in 0..self.curves.len() {
@@ -424,7 +425,8 @@ impl PoseTool {
             curve.knots = with_widest_span_split(&curve.knots);
         }
         ui.menu_button("⋯", |ui| {
-            let turn = ui.add_enabled(self.active.is_some(), egui::Button::new("Turn plane"));
+            let item = |label| egui::Button::new(label).min_size(egui::vec2(140.0, 36.0));
+            let turn = ui.add_enabled(self.active.is_some(), item("Turn plane"));
             if turn
                 .on_hover_text("Turn the editing plane about the curve by 45°")
                 .clicked()
@@ -432,10 +434,10 @@ impl PoseTool {
                 output = self.turn_plane(doc);
             }
             let hint = "Show an image over the view, to trace a motion's frames";
-            if ui.button("Backdrop…").on_hover_text(hint).clicked() {
+            if ui.add(item("Backdrop…")).on_hover_text(hint).clicked() {
                 output = ToolOutput::Backdrop(true);
             }
-            if ui.button("No backdrop").clicked() {
+            if ui.add(item("No backdrop")).clicked() {
                 output = ToolOutput::Backdrop(false);
             }
         })
@@ -526,8 +528,9 @@ impl PoseTool {
             output = ToolOutput::Play;
         }
         ui.separator();
-        if let face @ ToolOutput::Face { .. } = self.curves_ui(ui, doc) {
-            output = face;
+        let curves = self.curves_ui(ui, doc);
+        if curves != ToolOutput::None {
+            output = curves;
         }
         output
     }

@@ -1,0 +1,10 @@
+import { launch, openApp, frames, sleep, screenshot } from './lib.mjs';
+const browser = await launch('webgl2');
+const { page, errors } = await openApp(browser, 'http://127.0.0.1:8080/', 'webgl2', { width: 1280, height: 720 });
+await page.mouse.click(26, 20);
+await frames(page, 3);
+await screenshot(page, 'tests/out/look-file.png');
+const chooser = page.waitForEvent('filechooser', { timeout: 5000 }).catch(() => null);
+await page.mouse.click(42, 150);
+console.log('import chooser', !!(await chooser));
+await browser.close();

@@ -65,9 +65,14 @@ const CENTRE = { x: 660, y: 380 };
 const FILE_MENU = { x: 28, y: 20 };
 const MERGE_BUTTON = { x: 186, y: 63 };
 const DOCUMENTS_ITEM = { x: 56, y: 102 };
-/** The pose tool's Key and Play buttons, in the toolbar's second row. */
-const POSE_KEY = { x: 292, y: 59 };
-const POSE_PLAY = { x: 525, y: 59 };
+/** The pose tool's Key, Play and Spline buttons, in the toolbar's second row; its ⋯ menu and
+ * that menu's Backdrop… and No backdrop items. */
+const POSE_KEY = { x: 206, y: 59 };
+const POSE_PLAY = { x: 424, y: 59 };
+const POSE_SPLINE = { x: 704, y: 59 };
+const POSE_MORE = { x: 822, y: 59 };
+const POSE_BACKDROP = { x: 850, y: 141 };
+const POSE_NO_BACKDROP = { x: 850, y: 180 };
 /** The region tool's Handles button, in the toolbar's second row. */
 const HANDLES_BUTTON = { x: 213, y: 59 };
 
@@ -1205,6 +1210,77 @@ test('pose (Q): keyed at rest, a pen stroke along a shape picks a control curve 
     await frames(fresh.page, 3);
     assert.deepEqual(await glbOf(fresh.page), original, 'undo restores the shape bit for bit');
     assert.deepEqual(fresh.errors, [], 'console errors while posing');
+}));
+
+test('pose (Q) spline and backdrop: Spline shows the picked curve\'s control points; dragging an end one up commits a coarse curve_deform that bends the shape; a backdrop image loads over the view and goes again', () => withShape(async ({ fresh }) => {
+    const c = ELLIPSE.c;
+    const lastOp = () => lastOpOf(fresh.page);
+    await until(lastOp, (o) => o.op === 'create', 15_000);
+    await fresh.page.keyboard.press('q');
+    await frames(fresh.page, 3);
+    const pen = (points) => points.map((p) => ({ ...p, force: 0.5 }));
+    const front = await camera(fresh.page);
+    await penStroke(fresh.cdp, pen(line({ x: c.x - 130, y: c.y }, { x: c.x + 130, y: c.y }, 40)));
+    await until(() => camera(fresh.page), (cam) => cam.eye.some((v, k) => Math.abs(v - front.eye[k]) > 0.5), 5_000);
+    await fresh.page.mouse.click(POSE_SPLINE.x, POSE_SPLINE.y);
+    await frames(fresh.page, 4);
+    const shown = await screenshot(fresh.page, out('pose-spline.png'));
+    // The control points are filled in amber: the rightmost is one of the ends.
+    const amber = [];
+    for (let y = 90; y < shown.height; y++) {
+      for (let x = 0; x < shown.width; x++) {
+        const i = 4 * (y * shown.width + x);
+        const [r, g, b] = [shown.data[i], shown.data[i + 1], shown.data[i + 2]];
+        if (r > 230 && g > 190 && g < 230 && b < 110) amber.push({ x, y });
+      }
+    }
+    assert.ok(amber.length > 6 * 150, `six control points drawn (${amber.length} amber px)`);
+    const right = amber.reduce((a, p) => (p.x > a.x ? p : a));
+    const grab = { x: right.x - 6, y: right.y };
+    await penStroke(fresh.cdp, pen(line(grab, { x: grab.x, y: grab.y - 120 }, 30)));
+    const op = await until(lastOp, (o) => o.op === 'curve_deform', 15_000);
+    assert.ok([0, 5].includes(op.coarse?.control), `an end control point was dragged (${op.coarse?.control})`);
+    assert.deepEqual(op.coarse.knots.length, 2, 'six control points: two interior knots');
+    await frames(fresh.page, 3);
+    const bent = await screenshot(fresh.page, out('pose-spline-dragged.png'));
+    const changed = imageChangedFraction(shown, bent);
+    console.log(`    pose spline: ${(100 * changed).toFixed(1)}% of the view changed`);
+    assert.ok(changed > 0.01, `the shape bends (${changed})`);
+    // A magenta image as the backdrop: the view takes its tint, then loses it again.
+    const png = await fresh.page.evaluate(() => {
+      const canvas = document.createElement('canvas');
+      [canvas.width, canvas.height] = [64, 48];
+      const g = canvas.getContext('2d');
+      g.fillStyle = '#ff00ff';
+      g.fillRect(0, 0, 64, 48);
+      return canvas.toDataURL('image/png').split(',')[1];
+    });
+    // The ⋯ menu, then its item, each pressed over a frame of its own (a press and release
+    // in one frame can pass a menu by while the commit's refit makes frames slow).
+    const press = async (at) => {
+      await fresh.page.mouse.move(at.x, at.y);
+      await fresh.page.mouse.down();
+      await frames(fresh.page, 2);
+      await fresh.page.mouse.up();
+      await frames(fresh.page, 3);
+    };
+    await press(POSE_MORE);
+    await screenshot(fresh.page, out('pose-more.png'));
+    const chooser = fresh.page.waitForEvent('filechooser', { timeout: 5_000 });
+    await press(POSE_BACKDROP);
+    await (await chooser).setFiles({ name: 'frame.png', mimeType: 'image/png', buffer: Buffer.from(png, 'base64') });
+    await sleep(500);
+    await frames(fresh.page, 4);
+    const traced = await screenshot(fresh.page, out('pose-backdrop.png'));
+    const tinted = imageChangedFraction(bent, traced, 40);
+    console.log(`    pose backdrop: ${(100 * tinted).toFixed(1)}% of the view tinted`);
+    assert.ok(tinted > 0.5, `the backdrop covers the view (${tinted})`);
+    await press(POSE_MORE);
+    await press(POSE_NO_BACKDROP);
+    await frames(fresh.page, 4);
+    const gone = await screenshot(fresh.page, out('pose-no-backdrop.png'));
+    assert.ok(imageChangedFraction(bent, gone) < 0.01, 'the backdrop is gone');
+    assert.deepEqual(fresh.errors, [], 'console errors');
 }));
 
 test('region handles: with Handles picked, the curves get 3-axis handles; dragging the middle one up bends the region with its ends pinned, and Enter keeps the drags as one step', () => withShape(async ({ fresh, created }) => {

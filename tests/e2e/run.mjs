@@ -1222,8 +1222,19 @@ test('pose (Q) spline and backdrop: Spline shows the picked curve\'s control poi
     const front = await camera(fresh.page);
     await penStroke(fresh.cdp, pen(line({ x: c.x - 130, y: c.y }, { x: c.x + 130, y: c.y }, 40)));
     await until(() => camera(fresh.page), (cam) => cam.eye.some((v, k) => Math.abs(v - front.eye[k]) > 0.5), 5_000);
-    await fresh.page.mouse.click(POSE_SPLINE.x, POSE_SPLINE.y);
-    await frames(fresh.page, 4);
+    // Buttons pressed over frames of their own: a press and release within one frame can
+    // pass a button by while a slow frame (the graph's, a commit's refit) runs.
+    const press = async (at) => {
+      await fresh.page.mouse.move(at.x, at.y);
+      await fresh.page.mouse.down();
+      await frames(fresh.page, 2);
+      await fresh.page.mouse.up();
+      await frames(fresh.page, 3);
+    };
+    await sleep(600);
+    await frames(fresh.page, 3);
+    await press(POSE_SPLINE);
+    await frames(fresh.page, 2);
     const shown = await screenshot(fresh.page, out('pose-spline.png'));
     // The control points are filled in amber: the rightmost is one of the ends.
     const amber = [];
@@ -1255,15 +1266,6 @@ test('pose (Q) spline and backdrop: Spline shows the picked curve\'s control poi
       g.fillRect(0, 0, 64, 48);
       return canvas.toDataURL('image/png').split(',')[1];
     });
-    // The ⋯ menu, then its item, each pressed over a frame of its own (a press and release
-    // in one frame can pass a menu by while the commit's refit makes frames slow).
-    const press = async (at) => {
-      await fresh.page.mouse.move(at.x, at.y);
-      await fresh.page.mouse.down();
-      await frames(fresh.page, 2);
-      await fresh.page.mouse.up();
-      await frames(fresh.page, 3);
-    };
     await press(POSE_MORE);
     await screenshot(fresh.page, out('pose-more.png'));
     const chooser = fresh.page.waitForEvent('filechooser', { timeout: 5_000 });

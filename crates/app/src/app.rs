@@ -209,6 +209,7 @@ impl SketchApp {
             options: ViewOptions {
                 wireframe: false,
                 grid: true,
+                clay: false,
             },
             show_help: false,
             status: None,

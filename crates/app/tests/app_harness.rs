@@ -5,6 +5,7 @@
 
 use egui::{Event, Modifiers, PointerButton, Pos2, pos2, vec2};
 use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable as _;
 use sketchmesh_app::SketchApp;
 use sketchmesh_app::panels::falloff::{falloff_gray, panel_rect};
 
@@ -574,5 +575,58 @@ fn a_curve_handle_drawn_and_dragged_in_the_app_is_its_session_replayed() {
     assert!(
         replays_bit_for_bit(&h),
         "the handle edit committed in the app differs from apply"
+    );
+}
+
+/// An imported model is drawn in its material's colour (Khronos' BoxInterleaved: a base
+/// colour factor of dark red), and as clay once **Clay** is on.
+#[test]
+fn an_imported_model_shows_its_base_colour_and_clay_on_request() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../../shared/testdata/gltf/real/BoxInterleaved.glb");
+    let bytes = std::fs::read(&path).unwrap_or_else(|e| {
+        panic!(
+            "TEST DATA MISSING: {} ({e}); the app's colour test needs ../shared/testdata",
+            path.display()
+        )
+    });
+    let mut editor = sketchmesh_core::document::Editor::new();
+    let import = sketchmesh_core::document::ImportInput {
+        files: vec![sketchmesh_core::document::FileInput {
+            name: "BoxInterleaved.glb".to_owned(),
+            data: Some(std::sync::Arc::new(bytes)),
+        }],
+        beside: false,
+    };
+    editor
+        .apply(sketchmesh_core::document::Op::Import(import))
+        .expect("imports");
+    let mut h = harness();
+    h.run();
+    h.state().shared().borrow_mut().open(editor);
+    h.key_press(egui::Key::G);
+    h.key_press(egui::Key::F);
+    h.run();
+    let centre = h.state().edit_in_view().1.center();
+    let pixel = |image: &image::RgbaImage| {
+        let ppp = image.width() as f32 / 900.0;
+        *image.get_pixel((centre.x * ppp) as u32, (centre.y * ppp) as u32)
+    };
+    let coloured = h.render().expect("render");
+    save(&coloured, "imported-colour");
+    let [r, g, b, _] = pixel(&coloured).0;
+    assert!(
+        r > 90 && u32::from(g) * 3 < u32::from(r) && u32::from(b) * 3 < u32::from(r),
+        "the box is not red: {:?}",
+        [r, g, b]
+    );
+    h.get_by_label("Clay").click();
+    h.run();
+    let clay = h.render().expect("render");
+    let [r, g, b, _] = pixel(&clay).0;
+    assert!(
+        g > 60 && u32::from(r) < u32::from(g) * 3 / 2,
+        "clay is not clay: {:?}",
+        [r, g, b]
     );
 }

@@ -293,6 +293,12 @@ fn view_buttons(
     );
     toggle(ui, &mut options.wireframe, "Edges", "Show mesh edges (W)");
     toggle(ui, &mut options.grid, "Grid", "Show the ground grid (G)");
+    toggle(
+        ui,
+        &mut options.clay,
+        "Clay",
+        "Draw imported models as clay, without their colours",
+    );
     toggle(ui, show_help, "Help", "Shortcuts and gestures (H)");
 }
 

@@ -5,7 +5,7 @@
 //! edit moves a model's vertices, as a pull's preview does): it rewrites one model's vertices
 //! and curves in place, allocating nothing.
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 use std::ops::Range;
 
 use bytemuck::{Pod, Zeroable};
@@ -26,7 +26,21 @@ pub struct MeshVertex {
     /// show it (0 black: stays, 1 white: moves fully), or [`NO_SHADE`] for the model's own
     /// colour.
     pub shade: [f32; 2],
+    /// The imported colour it is drawn with (linear RGBA), or [`CLAY`].
+    pub color: [f32; 4],
 }
+
+/// What an imported model's triangle corners (`3 * face + k`) bring to its drawing.
+#[derive(Clone, Copy, Debug, Default)]
+struct Corners<'a> {
+    /// Linear RGBA colours.
+    colors: Option<&'a [[f32; 4]]>,
+    /// The file's unit normals, while they still apply.
+    normals: Option<&'a [[f32; 3]]>,
+}
+
+/// [`MeshVertex::color`] of a vertex drawn as clay (alpha 0: no imported colour).
+pub const CLAY: [f32; 4] = [0.0; 4];
 
 /// [`MeshVertex::shade`] of a vertex drawn in the model's own colour.
 pub const NO_SHADE: [f32; 2] = [-1.0, 0.0];
@@ -63,8 +77,11 @@ pub const CONTROL_CURVE_WIDTH: f32 = 3.0;
 /// Where one model's data sit in a [`SceneGeometry`].
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct ModelRange {
-    /// Its mesh vertices.
+    /// Its drawn vertices: one per mesh vertex, or more where corners of one vertex take
+    /// different colours.
     pub vertices: Range<usize>,
+    /// Its mesh's vertex count.
+    pub mesh_vertices: usize,
     /// Its control curves' segments.
     pub curves: Range<usize>,
 }
@@ -81,6 +98,10 @@ pub struct SceneGeometry {
     pub model_ranges: Vec<ModelRange>,
     /// All models' vertices, concatenated.
     pub vertices: Vec<MeshVertex>,
+    /// For each of `vertices`, the index of the mesh vertex it draws, in its model.
+    pub welded: Vec<u32>,
+    /// A shade per mesh vertex, kept between [`SceneGeometry::shade_model`] calls.
+    shades: Vec<[f32; 2]>,
     /// Triangle indices into `vertices`.
     pub triangles: Vec<u32>,
     /// Edge indices (pairs) for the wireframe.
@@ -100,10 +121,18 @@ impl SceneGeometry {
         };
         for model in doc.models.iter().map(|m| m.as_ref()) {
             let (vertices, curves) = (scene.vertices.len(), scene.curves.len());
+            let look = (model.appearance.as_deref()).filter(|a| a.fits(&model.mesh));
+            let colors = look.and_then(|a| a.corner_colors());
+            let normals =
+                (look.filter(|a| a.normals_fit(&model.mesh))).and_then(|a| a.normals.as_deref());
             scene.add_mesh(
                 model.mesh.positions(),
                 model.mesh.triangle_indices(),
                 &vertex_normals(&model.mesh),
+                Corners {
+                    colors: colors.as_deref(),
+                    normals,
+                },
             );
             for curve in &model.curves {
                 let color = if curve.is_sharp() {
@@ -117,6 +146,7 @@ impl SceneGeometry {
             }
             scene.model_ranges.push(ModelRange {
                 vertices: vertices..scene.vertices.len(),
+                mesh_vertices: model.mesh.n_vertices(),
                 curves: curves..scene.curves.len(),
             });
         }
@@ -147,17 +177,17 @@ impl SceneGeometry {
         let Some(range) = self.model_ranges.get(index).cloned() else {
             return;
         };
-        if range.vertices.len() != positions.len() {
+        if range.mesh_vertices != positions.len() {
             return;
         }
         vertex_normals_of(model.mesh.triangles(), positions, normals);
-        for ((vertex, p), n) in self.vertices[range.vertices]
+        let drawn = range.vertices.clone();
+        for (vertex, &v) in self.vertices[drawn.clone()]
             .iter_mut()
-            .zip(positions)
-            .zip(normals.iter())
+            .zip(&self.welded[drawn])
         {
-            vertex.pos = p.as_vec3().to_array();
-            vertex.normal = n.as_vec3().to_array();
+            vertex.pos = positions[v as usize].as_vec3().to_array();
+            vertex.normal = normals[v as usize].as_vec3().to_array();
         }
         let mut segments = self.curves[range.curves].iter_mut();
         for curve in &model.curves {
@@ -191,36 +221,82 @@ impl SceneGeometry {
         let Some(range) = self.model_ranges.get(index).cloned() else {
             return;
         };
-        let model = &mut self.vertices[range.vertices];
-        model.iter_mut().for_each(|v| v.shade = NO_SHADE);
+        self.shades.clear();
+        self.shades.resize(range.mesh_vertices, NO_SHADE);
         for (v, &w) in vertices.iter().zip(weights) {
-            if let Some(vertex) = model.get_mut(v.index()) {
-                vertex.shade = [w.clamp(0.0, 1.0) as f32, levels.max(2) as f32];
+            if let Some(shade) = self.shades.get_mut(v.index()) {
+                *shade = [w.clamp(0.0, 1.0) as f32, levels.max(2) as f32];
             }
+        }
+        let drawn = range.vertices;
+        for (vertex, &v) in self.vertices[drawn.clone()]
+            .iter_mut()
+            .zip(&self.welded[drawn])
+        {
+            vertex.shade = self.shades[v as usize];
         }
         self.motion += 1;
     }
 
-    fn add_mesh(&mut self, positions: &[DVec3], triangles: &[u32], normals: &[DVec3]) {
+    /// A mesh, drawn as clay or in its corners' colours, with its corners' own normals
+    /// where the file's still apply: a vertex whose corners differ is drawn once per colour
+    /// and normal, so colours meet in crisp lines along material borders and a box keeps its
+    /// edges, instead of blending across triangles.
+    fn add_mesh(
+        &mut self,
+        positions: &[DVec3],
+        triangles: &[u32],
+        normals: &[DVec3],
+        corners: Corners<'_>,
+    ) {
         let base = self.vertices.len() as u32;
-        for (p, n) in positions.iter().zip(normals) {
-            self.vertices.push(MeshVertex {
-                pos: p.as_vec3().to_array(),
-                normal: n.as_vec3().to_array(),
-                shade: NO_SHADE,
-            });
+        let vertex = |v: u32, normal: [f32; 3], color| MeshVertex {
+            pos: positions[v as usize].as_vec3().to_array(),
+            normal,
+            shade: NO_SHADE,
+            color,
+        };
+        let welded = |v: u32| normals[v as usize].as_vec3().to_array();
+        let mut drawn_corners = Vec::with_capacity(triangles.len());
+        let varied = corners
+            .colors
+            .filter(|c| c.windows(2).any(|w| w[0] != w[1]));
+        if varied.is_none() && corners.normals.is_none() {
+            let color = corners.colors.and_then(|c| c.first().copied());
+            let color = color.unwrap_or(CLAY);
+            for v in 0..positions.len() as u32 {
+                self.vertices.push(vertex(v, welded(v), color));
+                self.welded.push(v);
+            }
+            drawn_corners.extend(triangles.iter().map(|i| base + i));
+        } else {
+            let mut drawn: HashMap<(u32, [u32; 4], [u32; 3]), u32> = HashMap::new();
+            for (c, &v) in triangles.iter().enumerate() {
+                let color = corners.colors.map_or(CLAY, |colors| colors[c]);
+                let normal = corners.normals.map_or_else(|| welded(v), |n| n[c]);
+                let key = (v, color.map(f32::to_bits), normal.map(f32::to_bits));
+                let next = self.vertices.len() as u32;
+                let index = *drawn.entry(key).or_insert(next);
+                if index == next {
+                    self.vertices.push(vertex(v, normal, color));
+                    self.welded.push(v);
+                }
+                drawn_corners.push(index);
+            }
+        }
+        for p in positions {
             self.grow_bounds(*p);
         }
-        self.triangles.extend(triangles.iter().map(|i| base + i));
         let mut seen = HashSet::new();
-        for tri in triangles.chunks_exact(3) {
+        for (tri, drawn) in triangles.chunks_exact(3).zip(drawn_corners.chunks_exact(3)) {
             for k in 0..3 {
                 let (a, b) = (tri[k], tri[(k + 1) % 3]);
                 if seen.insert((a.min(b), a.max(b))) {
-                    self.edges.extend([base + a, base + b]);
+                    self.edges.extend([drawn[k], drawn[(k + 1) % 3]]);
                 }
             }
         }
+        self.triangles.extend(drawn_corners);
     }
 
     fn add_polyline(&mut self, points: &[DVec3], widths: &[f64], closed: bool, color: [f32; 4]) {

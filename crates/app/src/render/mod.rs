@@ -29,7 +29,7 @@ pub struct Uniforms {
     pub clip_from_world: [[f32; 4]; 4],
     /// Eye position (w unused).
     pub eye: [f32; 4],
-    /// Target width and height in pixels, pixels per point, unused.
+    /// Target width and height in pixels, pixels per point, 1 to draw everything as clay.
     pub viewport: [f32; 4],
 }
 
@@ -40,6 +40,8 @@ pub struct ViewOptions {
     pub wireframe: bool,
     /// Draw the ground grid.
     pub grid: bool,
+    /// Draw imported models as clay, not in their colours.
+    pub clay: bool,
 }
 
 /// GPU buffers holding one [`SceneGeometry`].
@@ -250,7 +252,8 @@ impl CallbackTrait for SceneCallback {
         ];
         renderer.upload(device, queue, &self.geometry);
         let mut uniforms = self.uniforms;
-        uniforms.viewport = [size[0] as f32, size[1] as f32, ppp, 0.0];
+        let clay = if self.options.clay { 1.0 } else { 0.0 };
+        uniforms.viewport = [size[0] as f32, size[1] as f32, ppp, clay];
         queue.write_buffer(&renderer.uniforms, 0, bytemuck::bytes_of(&uniforms));
         SceneTarget::ensure(
             &mut renderer.target,

@@ -5,7 +5,7 @@
 struct Uniforms {
     clip_from_world: mat4x4<f32>,
     eye: vec4<f32>,
-    // x, y: target size in physical pixels; z: pixels per point; w: unused.
+    // x, y: target size in physical pixels; z: pixels per point; w: 1 to draw as clay.
     viewport: vec4<f32>,
 };
 
@@ -29,15 +29,23 @@ struct MeshOut {
     // A region edit's fall-off weight in [0, 1] (negative: the model's own colour) and how
     // many gray levels show it.
     @location(2) shade: vec2<f32>,
+    // The imported linear colour; alpha 0 for clay.
+    @location(3) color: vec4<f32>,
 };
 
 @vertex
-fn vs_mesh(@location(0) pos: vec3<f32>, @location(1) normal: vec3<f32>, @location(2) shade: vec2<f32>) -> MeshOut {
+fn vs_mesh(
+    @location(0) pos: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) shade: vec2<f32>,
+    @location(3) color: vec4<f32>,
+) -> MeshOut {
     var out: MeshOut;
     out.clip = u.clip_from_world * vec4<f32>(pos, 1.0);
     out.normal = normal;
     out.world = pos;
     out.shade = shade;
+    out.color = color;
     return out;
 }
 
@@ -47,9 +55,12 @@ fn fs_mesh(in: MeshOut, @builtin(front_facing) front: bool) -> @location(0) vec4
     var n = normalize(in.normal);
     // Two-sided: open surfaces and imported soups show their back faces, tinted.
     var base = vec3<f32>(0.78, 0.74, 0.68);
+    if (in.color.a > 0.0 && u.viewport.w < 0.5) {
+        base = in.color.rgb;
+    }
     if (dot(n, to_eye) < 0.0) {
         n = -n;
-        base = vec3<f32>(0.55, 0.45, 0.50);
+        base = base * vec3<f32>(0.7, 0.6, 0.73);
     }
     // A key light above the viewer's shoulder, a fill from below and a hemisphere ambient.
     let key = normalize(to_eye + vec3<f32>(0.4, 0.8, 0.2));

@@ -37,6 +37,34 @@ impl Appearance {
         self.triangles == mesh.triangles()
     }
 
+    /// The linear RGBA colour each triangle corner (`3 * face + k`) is drawn with: its
+    /// material's base colour factor times its vertex colour (glTF's base colour, without
+    /// the texture). `None` when the file gave neither a coloured material nor vertex
+    /// colours (a texture on a white factor included: textures are not drawn yet): such a
+    /// model is drawn as clay rather than in glTF's default white.
+    pub fn corner_colors(&self) -> Option<Vec<[f32; 4]>> {
+        let coloured = |m: &Material| m.base_color != [1.0; 4];
+        if self.colors.is_none() && !self.materials.iter().any(coloured) {
+            return None;
+        }
+        let corners = 3 * self.triangles.len();
+        let factor = |face: usize| {
+            (self.face_materials.get(face).copied().flatten())
+                .and_then(|m| self.materials.get(m as usize))
+                .map_or([1.0; 4], |m| m.base_color)
+        };
+        Some(
+            (0..corners)
+                .map(|c| {
+                    let vertex = self.colors.as_ref().and_then(|v| v.get(c).copied());
+                    let [r, g, b, a] = vertex.unwrap_or([1.0; 4]);
+                    let [fr, fg, fb, fa] = factor(c / 3);
+                    [r * fr, g * fg, b * fb, a * fa]
+                })
+                .collect(),
+        )
+    }
+
     /// Whether the imported normals still apply (same triangles and same positions).
     pub fn normals_fit(&self, mesh: &Mesh) -> bool {
         self.normals.is_some() && self.fits(mesh) && self.positions_hash == positions_hash(mesh)
@@ -109,4 +137,42 @@ pub struct Image {
     pub mime_type: String,
     /// The file's bytes.
     pub bytes: Vec<u8>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn material(base_color: [f32; 4]) -> Material {
+        Material {
+            name: None,
+            base_color,
+            base_color_texture: None,
+            metallic: 0.0,
+            roughness: 1.0,
+            emissive: [0.0; 3],
+            double_sided: false,
+            alpha_mode: AlphaMode::Opaque,
+        }
+    }
+
+    #[test]
+    fn corners_take_their_material_times_their_vertex_colour() {
+        let mut look = Appearance {
+            triangles: vec![[0, 1, 2], [0, 2, 3]],
+            face_materials: vec![Some(0), None],
+            materials: vec![material([0.5, 0.25, 1.0, 1.0])],
+            ..Appearance::default()
+        };
+        let colors = look.corner_colors().unwrap();
+        assert_eq!(colors.len(), 6);
+        assert_eq!(colors[2], [0.5, 0.25, 1.0, 1.0]);
+        assert_eq!(colors[3], [1.0; 4], "the default material is white");
+        look.colors = Some(vec![[0.5, 0.5, 0.5, 1.0]; 6]);
+        assert_eq!(look.corner_colors().unwrap()[0], [0.25, 0.125, 0.5, 1.0]);
+        // White materials and no vertex colours: clay.
+        look.colors = None;
+        look.materials = vec![material([1.0; 4])];
+        assert_eq!(look.corner_colors(), None);
+    }
 }

@@ -15,7 +15,8 @@ use eframe::egui_wgpu;
 use egui::{Key, KeyboardShortcut, Modifiers};
 use sketchmesh_core::curve::{StrokePoint, process_stroke};
 use sketchmesh_core::document::{
-    Document, Edit, Editor, GizmoHandle, ImportInput, Op, Progress, StrokeInput, model_under,
+    Document, Edit, Editor, GizmoHandle, ImportInput, ModelInput, Op, Progress, StrokeInput,
+    model_under,
 };
 use sketchmesh_core::feature::FeatureKind;
 use sketchmesh_core::optimize::quality_report;
@@ -26,10 +27,11 @@ use crate::backdrop::Backdrop;
 use crate::camera::OrbitCamera;
 use crate::clock;
 use crate::files::{self, ImportQueue};
-use crate::input::PointerSample;
 use crate::input::router::{Hands, InputRouter, Routed};
 use crate::input::taps::TapCommand;
+use crate::input::{PointerSample, sample_clock};
 use crate::panels;
+use crate::panels::context_menu::{ContextAction, ContextMenu, context_menu_ui};
 use crate::playback::Playback;
 use crate::render::geometry::pressure_width;
 use crate::render::{SceneCallback, SceneGeometry, SceneRenderer, Uniforms, ViewOptions};
@@ -121,6 +123,8 @@ pub struct SketchApp {
     playback: Option<Playback>,
     /// The reference image over the view, to trace a motion's frames.
     backdrop: Backdrop,
+    /// A model's context actions, open after a long press on it.
+    context_menu: Option<ContextMenu>,
     /// The edit in progress: begun from a tool's op, stepped every frame, finished when done.
     edit: Option<Edit>,
     /// How many edits were begun: tells apart the documents of two edits of equal revision.
@@ -201,6 +205,7 @@ impl SketchApp {
             moved_normals: Vec::new(),
             playback: None,
             backdrop: Backdrop::default(),
+            context_menu: None,
             edit: None,
             edits_begun: 0,
             falloff_panel: Default::default(),
@@ -774,13 +779,21 @@ impl SketchApp {
         self.samples.extend(self.web_samples.borrow_mut().drain(..));
         let now = ctx.input(|i| i.time);
         let mut routed = Vec::new();
-        for sample in std::mem::take(&mut self.samples) {
-            let on_view = viewport.contains(sample.pos_in_screen)
-                && ctx
-                    .layer_id_at(sample.pos_in_screen)
-                    .is_none_or(|l| l.order == egui::Order::Background);
+        let samples = std::mem::take(&mut self.samples);
+        let polled = samples.len();
+        for k in 0..=polled {
             routed.clear();
-            self.router.route(&sample, on_view, &mut routed);
+            match samples.get(k) {
+                Some(sample) => {
+                    let on_view = viewport.contains(sample.pos_in_screen)
+                        && ctx
+                            .layer_id_at(sample.pos_in_screen)
+                            .is_none_or(|l| l.order == egui::Order::Background);
+                    self.router.route(sample, on_view, &mut routed);
+                }
+                // Between samples: a finger held still becomes a long press.
+                None => self.router.poll(sample_clock(ctx), &mut routed),
+            }
             for r in &routed {
                 match r {
                     Routed::Hands(hands) => self.handle_hands(hands, viewport, now),
@@ -792,6 +805,7 @@ impl SketchApp {
                     Routed::Tap(TapCommand::Undo) => self.undo(now),
                     Routed::Tap(TapCommand::Redo) => self.begin(Op::Redo, false, now),
                     Routed::Tap(TapCommand::DoubleTap(at)) => self.double_tap(*at, viewport),
+                    Routed::Tap(TapCommand::LongPress(at)) => self.long_press(*at, viewport),
                     Routed::Tool(event) => {
                         // The pen's eraser erases whatever the tool, for one stroke.
                         if let ToolEvent::Begin(sample) = event
@@ -820,6 +834,10 @@ impl SketchApp {
                 }
             }
         }
+        // A finger down may become a long press without another sample.
+        if self.router.is_touching() {
+            ctx.request_repaint_after(std::time::Duration::from_millis(50));
+        }
         // A stroke across a shape cuts it when no tap follows in time.
         let (output, wait) = self.tools.poll(now);
         self.take_output(output, now);
@@ -831,6 +849,20 @@ impl SketchApp {
     /// A one-finger double tap at `at`: on empty canvas it frames everything, as in 3D apps
     /// on tablets; on a model it does nothing more than its taps did.
     fn double_tap(&mut self, at: egui::Pos2, viewport: egui::Rect) {
+        if self.model_at(at, viewport).is_none() {
+            self.frame_all();
+        }
+    }
+
+    /// A long press at `at`: the context actions of the model there, if any.
+    fn long_press(&mut self, at: egui::Pos2, viewport: egui::Rect) {
+        self.context_menu = self
+            .model_at(at, viewport)
+            .map(|model| ContextMenu { at, model });
+    }
+
+    /// The index of the model seen at screen point `at`.
+    fn model_at(&self, at: egui::Pos2, viewport: egui::Rect) -> Option<usize> {
         let relative = at - viewport.min;
         let size = viewport.size();
         let tap = StrokeInput {
@@ -838,8 +870,23 @@ impl SketchApp {
             camera: self.shared.borrow().camera.camera(),
             stroke: vec![[relative.x.into(), relative.y.into(), 0.5]],
         };
-        if model_under(self.shared.borrow().editor.document(), &tap).is_none() {
-            self.frame_all();
+        model_under(self.shared.borrow().editor.document(), &tap)
+    }
+
+    /// Carries out a context menu's choice for model `model`.
+    fn context_action(&mut self, model: usize, action: ContextAction, now: f64) {
+        match action {
+            ContextAction::Frame => {
+                let mut shared = self.shared.borrow_mut();
+                let bounds = (shared.editor.document().models.get(model))
+                    .and_then(|m| m.mesh.bounding_box());
+                if let Some((min, max)) = bounds {
+                    shared.camera.frame(min, max);
+                }
+            }
+            ContextAction::Duplicate => self.begin(Op::Duplicate(ModelInput { model }), false, now),
+            ContextAction::Delete => self.begin(Op::Delete(ModelInput { model }), false, now),
+            ContextAction::Oversketch => self.set_mode(Mode::Oversketch, now),
         }
     }
 
@@ -1405,6 +1452,9 @@ impl eframe::App for SketchApp {
             .borrow_mut()
             .thumbnails
             .run(&ctx, self.view_rect);
+        if let Some((model, action)) = context_menu_ui(&ctx, &mut self.context_menu) {
+            self.context_action(model, action, now);
+        }
         let backend = self.shared.borrow().backend.clone();
         panels::help::help_ui(&ctx, &mut self.show_help, &backend, self.router.pen_seen());
         let mut shared = self.shared.borrow_mut();

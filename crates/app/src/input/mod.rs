@@ -87,3 +87,17 @@ impl PointerSample {
         }
     }
 }
+
+/// Now on the clock pointer samples are stamped with (seconds): the page's event time
+/// (`performance.now()`), or egui's input time natively.
+pub fn sample_clock(ctx: &egui::Context) -> f64 {
+    #[cfg(target_arch = "wasm32")]
+    {
+        let _ = ctx;
+        crate::clock::now_ms() / 1000.0
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        ctx.input(|i| i.time)
+    }
+}

@@ -119,6 +119,19 @@ impl InputRouter {
         !self.touches.is_empty()
     }
 
+    /// Between samples, at `now` (the samples' clock): a finger held still long enough is a
+    /// long press ([`TapCommand::LongPress`]); the stroke it began is cancelled and it does
+    /// nothing more until every finger lifts.
+    pub fn poll(&mut self, now: f64, out: &mut Vec<Routed>) {
+        let Some(at) = self.taps.long_press(now) else {
+            return;
+        };
+        self.cancel_touch_strokes(out);
+        self.drags.retain(|id, _| !self.touches.contains_key(id));
+        self.touches_spent = true;
+        out.push(Routed::Tap(TapCommand::LongPress(at)));
+    }
+
     /// Routes one sample. `starts_in_viewport` says whether a `Down` lands on the 3D view
     /// rather than on a panel; samples of pointers that went down elsewhere are dropped.
     pub fn route(&mut self, s: &PointerSample, starts_in_viewport: bool, out: &mut Vec<Routed>) {
@@ -347,6 +360,58 @@ mod tests {
             sample(id, t, Phase::Move, 150.0, 120.0),
             sample(id, t, Phase::Up, 150.0, 120.0),
         ]
+    }
+
+    #[test]
+    fn a_finger_held_still_is_a_long_press_that_cancels_its_stroke_and_then_does_nothing() {
+        let mut router = InputRouter::default();
+        let touch = PointerKind::Touch;
+        let down = sample(1, touch, Phase::Down, 100.0, 100.0);
+        let out = route_all(&mut router, &[down]);
+        assert!(matches!(out[0], Routed::Tool(ToolEvent::Begin(_))));
+        let mut polled = Vec::new();
+        router.poll(0.3, &mut polled);
+        assert!(polled.is_empty(), "too soon: {polled:?}");
+        let wobble = PointerSample {
+            time: 0.4,
+            ..sample(1, touch, Phase::Move, 104.0, 102.0)
+        };
+        let out = route_all(&mut router, &[wobble]);
+        assert!(matches!(out[..], [Routed::Tool(ToolEvent::Move(_))]));
+        router.poll(0.6, &mut polled);
+        assert_eq!(
+            polled,
+            vec![
+                Routed::Tool(ToolEvent::Cancel),
+                Routed::Tap(TapCommand::LongPress(pos2(100.0, 100.0)))
+            ]
+        );
+        polled.clear();
+        router.poll(0.9, &mut polled);
+        assert!(polled.is_empty(), "once per press: {polled:?}");
+        let after = [
+            PointerSample {
+                time: 1.0,
+                ..sample(1, touch, Phase::Move, 160.0, 100.0)
+            },
+            PointerSample {
+                time: 1.1,
+                ..sample(1, touch, Phase::Up, 160.0, 100.0)
+            },
+        ];
+        let out = route_all(&mut router, &after);
+        assert!(out.is_empty(), "the held finger does nothing more: {out:?}");
+        // A finger that moves is a stroke, never a long press.
+        let stroke = [
+            sample(2, touch, Phase::Down, 100.0, 100.0),
+            PointerSample {
+                time: 0.1,
+                ..sample(2, touch, Phase::Move, 140.0, 100.0)
+            },
+        ];
+        route_all(&mut router, &stroke);
+        router.poll(2.0, &mut polled);
+        assert!(polled.is_empty(), "{polled:?}");
     }
 
     #[test]

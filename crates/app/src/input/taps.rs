@@ -1,5 +1,6 @@
 //! Taps, the shortcuts of tablet drawing apps (Procreate, Nomad, Concepts): two fingers
-//! tapped together undo, three redo, and one finger tapped twice frames everything.
+//! tapped together undo, three redo, one finger tapped twice frames everything, and one
+//! finger held still for [`LONG_PRESS_SECONDS`] asks for a model's context actions.
 //!
 //! A tap is a touch sequence, from the first finger down to the last one up, that lasts at
 //! most [`TAP_SECONDS`] and in which no finger moves more than [`TAP_TRAVEL`] points from
@@ -23,6 +24,8 @@ pub const TAP_TRAVEL: f32 = 10.0;
 pub const DOUBLE_TAP_SECONDS: f64 = 0.4;
 /// Farthest the second tap of a double tap may land from the first, in points.
 pub const DOUBLE_TAP_REACH: f32 = 30.0;
+/// How long one finger held still (within [`TAP_TRAVEL`]) is a long press, in seconds.
+pub const LONG_PRESS_SECONDS: f64 = 0.5;
 
 /// What a tap asks for.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -33,6 +36,8 @@ pub enum TapCommand {
     Redo,
     /// One finger, twice, here: frame everything (if it is not on a model).
     DoubleTap(Pos2),
+    /// One finger held still here: the context actions of the model under it.
+    LongPress(Pos2),
 }
 
 /// The touch sequence in progress, if any.
@@ -105,6 +110,18 @@ impl TapDetector {
 }
 
 impl TapDetector {
+    /// At `now` (the samples' clock), the place of the one finger held still since
+    /// [`LONG_PRESS_SECONDS`], once per touch sequence; the sequence is then no tap.
+    pub fn long_press(&mut self, now: f64) -> Option<Pos2> {
+        let held = self.down.len() == 1 && self.most == 1 && self.is_tap;
+        if !held || now - self.started < LONG_PRESS_SECONDS {
+            return None;
+        }
+        self.is_tap = false;
+        self.single = None;
+        self.down.values().next().copied()
+    }
+
     /// A one-finger tap ended at `time` at `at`: the second of a double tap, or the first.
     fn single_tap(&mut self, time: f64, at: Pos2) -> Option<TapCommand> {
         let is_second = self.single.take().is_some_and(|(then, there)| {

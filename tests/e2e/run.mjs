@@ -1285,6 +1285,32 @@ test('pose (Q) spline and backdrop: Spline shows the picked curve\'s control poi
     assert.deepEqual(fresh.errors, [], 'console errors');
 }));
 
+test('long press: a finger held still on a model opens its context menu; Duplicate adds a copy, Delete removes it, each one undoable op', () => withShape(async ({ fresh }) => {
+    const c = ELLIPSE.c;
+    const lastOp = () => lastOpOf(fresh.page);
+    await until(lastOp, (o) => o.op === 'create', 15_000);
+    const before = await camera(fresh.page);
+    // The menu's rows are 44 px tall below the press point: Frame, Duplicate, Delete.
+    const row = (k) => ({ x: c.x + 80, y: c.y + 8 + 48 * k + 22 });
+    const hold = async () => {
+      await touchGesture(fresh.cdp, [Array.from({ length: 25 }, () => ({ x: c.x, y: c.y }))]);
+      await frames(fresh.page, 4);
+    };
+    await hold();
+    await screenshot(fresh.page, out('long-press-menu.png'));
+    assert.deepEqual(await camera(fresh.page), before, 'a finger held still does not move the view');
+    await touchTap(fresh.cdp, [row(1)]);
+    const two = await until(() => api(fresh.page, 'stats'), (st) => st.models === 2, 5_000);
+    assert.equal(two.models, 2, 'Duplicate adds a copy');
+    assert.equal((await lastOp()).op, 'duplicate');
+    await hold();
+    await touchTap(fresh.cdp, [row(2)]);
+    const one = await until(() => api(fresh.page, 'stats'), (st) => st.models === 1, 5_000);
+    assert.equal(one.models, 1, 'Delete removes the model held');
+    assert.equal((await lastOp()).op, 'delete');
+    assert.deepEqual(fresh.errors, [], 'console errors');
+}));
+
 test('region handles: with Handles picked, the curves get 3-axis handles; dragging the middle one up bends the region with its ends pinned, and Enter keeps the drags as one step', () => withShape(async ({ fresh, created }) => {
     const c = ELLIPSE.c;
     const lastOp = () => lastOpOf(fresh.page);

@@ -35,6 +35,7 @@ use crate::panels::context_menu::{ContextAction, ContextMenu, context_menu_ui};
 use crate::playback::Playback;
 use crate::render::geometry::pressure_width;
 use crate::render::{SceneCallback, SceneGeometry, SceneRenderer, Uniforms, ViewOptions};
+use crate::textures::Textures;
 use crate::tools::{Mark, Mode, ToolEvent, ToolOutput, ToolSet, ViewCtx};
 
 /// How long a status message stays up, in seconds.
@@ -113,7 +114,9 @@ pub struct SketchApp {
     geometry: Arc<SceneGeometry>,
     /// What `geometry` was built from: the editor's revision, and the edit's number and
     /// revision when it shows another document than the editor's.
-    geometry_source: (autosave::Revision, Option<(u64, u64)>),
+    geometry_source: (autosave::Revision, Option<(u64, u64)>, u64),
+    /// Imported models' textures, decoded for the view.
+    textures: Textures,
     /// The edit generation whose moved model `geometry` shows, if it shows one (it is rebuilt
     /// when the edit stops moving it).
     shown_motion: Option<u64>,
@@ -200,7 +203,9 @@ impl SketchApp {
                     edits: u64::MAX,
                 },
                 None,
+                0,
             ),
+            textures: Textures::default(),
             shown_motion: None,
             moved_normals: Vec::new(),
             playback: None,
@@ -906,6 +911,10 @@ impl SketchApp {
             }
         }
         self.step_edit(ui.ctx());
+        let shared = self.shared.borrow();
+        let shown = (self.edit.as_ref()).map_or(shared.editor.document(), Edit::document);
+        self.textures.poll(shown, ui.ctx());
+        drop(shared);
         self.update_geometry();
         if self.has_renderer {
             let camera = self.shared.borrow().camera.camera();
@@ -964,6 +973,7 @@ impl SketchApp {
             edit.map(Edit::revision)
                 .filter(|&revision| revision != 0)
                 .map(|revision| (self.edits_begun, revision)),
+            self.textures.version,
         );
         let moved = edit.and_then(Edit::moved_model);
         let motion_ended = self.shown_motion.is_some() && moved.is_none();
@@ -972,7 +982,7 @@ impl SketchApp {
             let shared = self.shared.borrow();
             let document = edit.map_or(shared.editor.document(), Edit::document);
             let generation = self.geometry.generation + 1;
-            self.geometry = Arc::new(SceneGeometry::build(document, generation));
+            self.geometry = Arc::new(SceneGeometry::build(document, generation, &self.textures));
             self.geometry_source = source;
             self.shown_motion = None;
         }

@@ -41,7 +41,7 @@ impl Backdrop {
                 };
                 wasm_bindgen_futures::spawn_local(async move {
                     let name = file.name();
-                    let decoded = decode(file)
+                    let decoded = crate::image_decode::decode(&file, MAX_SIDE)
                         .await
                         .map_err(|why| format!("{name} could not be shown as a backdrop: {why}."));
                     *arrived.borrow_mut() = Some(decoded);
@@ -89,53 +89,4 @@ impl Backdrop {
         let tint = egui::Color32::from_white_alpha(OPACITY);
         ui.painter().image(texture.id(), rect, uv, tint);
     }
-}
-
-/// The pixels of an image file, decoded by the browser and scaled to fit [`MAX_SIDE`].
-#[cfg(target_arch = "wasm32")]
-async fn decode(file: web_sys::File) -> Result<egui::ColorImage, String> {
-    use wasm_bindgen::JsCast as _;
-    let window = web_sys::window().ok_or("no window")?;
-    let unreadable = |_| String::from("the browser cannot read it as an image");
-    let promise = window
-        .create_image_bitmap_with_blob(&file)
-        .map_err(unreadable)?;
-    let bitmap: web_sys::ImageBitmap = wasm_bindgen_futures::JsFuture::from(promise)
-        .await
-        .map_err(unreadable)?
-        .dyn_into()
-        .map_err(unreadable)?;
-    let (w, h) = (bitmap.width().max(1), bitmap.height().max(1));
-    let shrink = (MAX_SIDE as f64 / w.max(h) as f64).min(1.0);
-    let (w, h) = (
-        ((w as f64 * shrink).round() as u32).max(1),
-        ((h as f64 * shrink).round() as u32).max(1),
-    );
-    let failed = |e: wasm_bindgen::JsValue| format!("{e:?}");
-    let canvas: web_sys::HtmlCanvasElement = window
-        .document()
-        .ok_or("no document")?
-        .create_element("canvas")
-        .map_err(failed)?
-        .dyn_into()
-        .map_err(|_| "not a canvas")?;
-    canvas.set_width(w);
-    canvas.set_height(h);
-    let context: web_sys::CanvasRenderingContext2d = canvas
-        .get_context("2d")
-        .map_err(failed)?
-        .ok_or("no 2D canvas")?
-        .dyn_into()
-        .map_err(|_| "not a 2D context")?;
-    context
-        .draw_image_with_image_bitmap_and_dw_and_dh(&bitmap, 0.0, 0.0, w.into(), h.into())
-        .map_err(failed)?;
-    let pixels = context
-        .get_image_data(0.0, 0.0, w.into(), h.into())
-        .map_err(failed)?
-        .data();
-    Ok(egui::ColorImage::from_rgba_unmultiplied(
-        [w as usize, h as usize],
-        &pixels,
-    ))
 }

@@ -10,10 +10,13 @@ pub mod backdrop;
 pub mod camera;
 pub mod clock;
 pub mod files;
+#[cfg(target_arch = "wasm32")]
+pub mod image_decode;
 pub mod input;
 pub mod panels;
 pub mod playback;
 pub mod render;
+pub mod textures;
 pub mod thumbnail;
 pub mod tools;
 #[cfg(target_arch = "wasm32")]

@@ -11,6 +11,10 @@ use std::ops::Range;
 use bytemuck::{Pod, Zeroable};
 use glam::DVec3;
 use sketchmesh_core::document::{Document, Model};
+use sketchmesh_core::model::Appearance;
+use std::sync::Arc;
+
+use crate::textures::{TextureImage, Textures};
 use sketchmesh_core::geometry::{vertex_normals, vertex_normals_of};
 use sketchmesh_core::mesh::VertexId;
 
@@ -28,6 +32,17 @@ pub struct MeshVertex {
     pub shade: [f32; 2],
     /// The imported colour it is drawn with (linear RGBA), or [`CLAY`].
     pub color: [f32; 4],
+    /// Its base-colour texture coordinate (0, 0 where the face has no texture).
+    pub uv: [f32; 2],
+}
+
+/// A run of [`SceneGeometry::triangles`] drawn with one base-colour texture.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshDraw {
+    /// The run, in indices (three per triangle).
+    pub indices: Range<u32>,
+    /// The texture, if the faces have one (decoded).
+    pub texture: Option<Arc<TextureImage>>,
 }
 
 /// What an imported model's triangle corners (`3 * face + k`) bring to its drawing.
@@ -37,6 +52,46 @@ struct Corners<'a> {
     colors: Option<&'a [[f32; 4]]>,
     /// The file's unit normals, while they still apply.
     normals: Option<&'a [[f32; 3]]>,
+    /// Texture coordinates, with each face's texture (an index into the list, or
+    /// [`NO_TEXTURE`]).
+    textures: Option<FaceTextures<'a>>,
+}
+
+/// The decoded base-colour textures of a model's faces.
+#[derive(Clone, Copy, Debug)]
+struct FaceTextures<'a> {
+    uvs: &'a [[f32; 2]],
+    slots: &'a [u32],
+    list: &'a [Arc<TextureImage>],
+}
+
+/// A face without a texture in [`FaceTextures::slots`].
+const NO_TEXTURE: u32 = u32::MAX;
+
+/// The textures of `look`'s faces that are decoded in `textures`: each face's slot in the
+/// list, or `None` when no face shows one.
+fn face_textures(
+    look: &Appearance,
+    textures: &Textures,
+) -> Option<(Vec<u32>, Vec<Arc<TextureImage>>)> {
+    look.uvs.as_ref()?;
+    let mut list: Vec<Arc<TextureImage>> = Vec::new();
+    let slots: Vec<u32> = (look.face_materials.iter())
+        .map(|m| {
+            let texture = m
+                .and_then(|m| look.materials.get(m as usize))
+                .and_then(|m| m.base_color_texture.as_ref())
+                .and_then(|t| textures.get(&t.image));
+            texture.map_or(NO_TEXTURE, |t| {
+                let at = list.iter().position(|known| Arc::ptr_eq(known, &t));
+                at.unwrap_or_else(|| {
+                    list.push(t);
+                    list.len() - 1
+                }) as u32
+            })
+        })
+        .collect();
+    (!list.is_empty()).then_some((slots, list))
 }
 
 /// [`MeshVertex::color`] of a vertex drawn as clay (alpha 0: no imported colour).
@@ -100,6 +155,8 @@ pub struct SceneGeometry {
     pub vertices: Vec<MeshVertex>,
     /// For each of `vertices`, the index of the mesh vertex it draws, in its model.
     pub welded: Vec<u32>,
+    /// `triangles` in runs by texture.
+    pub draws: Vec<MeshDraw>,
     /// A shade per mesh vertex, kept between [`SceneGeometry::shade_model`] calls.
     shades: Vec<[f32; 2]>,
     /// Triangle indices into `vertices`.
@@ -113,8 +170,8 @@ pub struct SceneGeometry {
 }
 
 impl SceneGeometry {
-    /// Builds the arrays for `doc` as `generation`.
-    pub fn build(doc: &Document, generation: u64) -> Self {
+    /// Builds the arrays for `doc` as `generation`, with the textures decoded so far.
+    pub fn build(doc: &Document, generation: u64, textures: &Textures) -> Self {
         let mut scene = Self {
             generation,
             ..Self::default()
@@ -125,6 +182,7 @@ impl SceneGeometry {
             let colors = look.and_then(|a| a.corner_colors());
             let normals =
                 (look.filter(|a| a.normals_fit(&model.mesh))).and_then(|a| a.normals.as_deref());
+            let faces = look.and_then(|a| face_textures(a, textures));
             scene.add_mesh(
                 model.mesh.positions(),
                 model.mesh.triangle_indices(),
@@ -132,6 +190,13 @@ impl SceneGeometry {
                 Corners {
                     colors: colors.as_deref(),
                     normals,
+                    textures: look.zip(faces.as_ref()).and_then(|(a, (slots, list))| {
+                        Some(FaceTextures {
+                            uvs: a.uvs.as_deref()?,
+                            slots,
+                            list,
+                        })
+                    }),
                 },
             );
             for curve in &model.curves {
@@ -250,45 +315,65 @@ impl SceneGeometry {
         corners: Corners<'_>,
     ) {
         let base = self.vertices.len() as u32;
-        let vertex = |v: u32, normal: [f32; 3], color| MeshVertex {
+        let vertex = |v: u32, normal: [f32; 3], color, uv| MeshVertex {
             pos: positions[v as usize].as_vec3().to_array(),
             normal,
             shade: NO_SHADE,
             color,
+            uv,
         };
         let welded = |v: u32| normals[v as usize].as_vec3().to_array();
+        // Faces in runs by texture (one run, in order, without textures), each run one draw.
+        let n_faces = triangles.len() / 3;
+        let slot = |f: usize| corners.textures.map_or(NO_TEXTURE, |t| t.slots[f]);
+        let mut faces: Vec<usize> = (0..n_faces).collect();
+        faces.sort_by_key(|&f| slot(f));
         let mut drawn_corners = Vec::with_capacity(triangles.len());
         let varied = corners
             .colors
             .filter(|c| c.windows(2).any(|w| w[0] != w[1]));
-        if varied.is_none() && corners.normals.is_none() {
+        if varied.is_none() && corners.normals.is_none() && corners.textures.is_none() {
             let color = corners.colors.and_then(|c| c.first().copied());
             let color = color.unwrap_or(CLAY);
             for v in 0..positions.len() as u32 {
-                self.vertices.push(vertex(v, welded(v), color));
+                self.vertices.push(vertex(v, welded(v), color, [0.0; 2]));
                 self.welded.push(v);
             }
             drawn_corners.extend(triangles.iter().map(|i| base + i));
         } else {
-            let mut drawn: HashMap<(u32, [u32; 4], [u32; 3]), u32> = HashMap::new();
-            for (c, &v) in triangles.iter().enumerate() {
-                let color = corners.colors.map_or(CLAY, |colors| colors[c]);
-                let normal = corners.normals.map_or_else(|| welded(v), |n| n[c]);
-                let key = (v, color.map(f32::to_bits), normal.map(f32::to_bits));
-                let next = self.vertices.len() as u32;
-                let index = *drawn.entry(key).or_insert(next);
-                if index == next {
-                    self.vertices.push(vertex(v, normal, color));
-                    self.welded.push(v);
+            type Key = (u32, [u32; 4], [u32; 3], [u32; 2]);
+            let mut drawn: HashMap<Key, u32> = HashMap::new();
+            for &f in &faces {
+                for c in 3 * f..3 * f + 3 {
+                    let v = triangles[c];
+                    let color = corners.colors.map_or(CLAY, |colors| colors[c]);
+                    let normal = corners.normals.map_or_else(|| welded(v), |n| n[c]);
+                    let uv = match corners.textures {
+                        Some(t) if t.slots[f] != NO_TEXTURE => t.uvs[c],
+                        _ => [0.0; 2],
+                    };
+                    let key = (
+                        v,
+                        color.map(f32::to_bits),
+                        normal.map(f32::to_bits),
+                        uv.map(f32::to_bits),
+                    );
+                    let next = self.vertices.len() as u32;
+                    let index = *drawn.entry(key).or_insert(next);
+                    if index == next {
+                        self.vertices.push(vertex(v, normal, color, uv));
+                        self.welded.push(v);
+                    }
+                    drawn_corners.push(index);
                 }
-                drawn_corners.push(index);
             }
         }
         for p in positions {
             self.grow_bounds(*p);
         }
         let mut seen = HashSet::new();
-        for (tri, drawn) in triangles.chunks_exact(3).zip(drawn_corners.chunks_exact(3)) {
+        for (&f, drawn) in faces.iter().zip(drawn_corners.chunks_exact(3)) {
+            let tri = &triangles[3 * f..3 * f + 3];
             for k in 0..3 {
                 let (a, b) = (tri[k], tri[(k + 1) % 3]);
                 if seen.insert((a.min(b), a.max(b))) {
@@ -296,7 +381,31 @@ impl SceneGeometry {
                 }
             }
         }
+        let first = self.triangles.len() as u32;
         self.triangles.extend(drawn_corners);
+        let mut start = first;
+        for run in faces.chunk_by(|&a, &b| slot(a) == slot(b)) {
+            let end = start + 3 * run.len() as u32;
+            let texture = corners
+                .textures
+                .and_then(|t| t.list.get(slot(run[0]) as usize).cloned());
+            self.add_draw(start..end, texture);
+            start = end;
+        }
+    }
+
+    /// Adds a run of triangles, joining it to the last draw when both have no texture.
+    fn add_draw(&mut self, indices: Range<u32>, texture: Option<Arc<TextureImage>>) {
+        match self.draws.last_mut() {
+            Some(last)
+                if last.texture.is_none()
+                    && texture.is_none()
+                    && last.indices.end == indices.start =>
+            {
+                last.indices.end = indices.end;
+            }
+            _ => self.draws.push(MeshDraw { indices, texture }),
+        }
     }
 
     fn add_polyline(&mut self, points: &[DVec3], widths: &[f64], closed: bool, color: [f32; 4]) {

@@ -8,6 +8,7 @@
 
 pub mod geometry;
 mod grid;
+mod mesh_textures;
 mod pipelines;
 mod target;
 
@@ -18,6 +19,7 @@ use eframe::egui_wgpu::{self, CallbackResources, CallbackTrait, ScreenDescriptor
 use eframe::wgpu::util::DeviceExt;
 
 pub use geometry::SceneGeometry;
+use mesh_textures::MeshTextures;
 use pipelines::Pipelines;
 use target::SceneTarget;
 
@@ -53,6 +55,8 @@ struct GeometryBuffers {
     triangles: Option<(wgpu::Buffer, u32)>,
     edges: Option<(wgpu::Buffer, u32)>,
     curves: Option<(wgpu::Buffer, u32)>,
+    /// The triangles' runs, each with its texture's key.
+    draws: Vec<(std::ops::Range<u32>, Option<usize>)>,
 }
 
 /// GPU state of the 3D view, kept in egui's callback resources.
@@ -64,6 +68,7 @@ pub struct SceneRenderer {
     blit_params: wgpu::Buffer,
     sampler: wgpu::Sampler,
     grid: (wgpu::Buffer, u32),
+    textures: MeshTextures,
     geometry: Option<GeometryBuffers>,
     target: Option<SceneTarget>,
 }
@@ -110,7 +115,9 @@ impl SceneRenderer {
             contents: bytemuck::cast_slice(&grid_vertices),
             usage: wgpu::BufferUsages::VERTEX,
         });
+        let textures = MeshTextures::new(device, &rs.queue, &pipelines.texture_layout);
         let renderer = Self {
+            textures,
             pipelines,
             samples,
             uniforms,
@@ -149,6 +156,8 @@ impl SceneRenderer {
         }
         let vertex = wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST;
         let index = wgpu::BufferUsages::INDEX;
+        let layout = &self.pipelines.texture_layout;
+        self.textures.keep(device, queue, layout, &scene.draws);
         self.geometry = Some(GeometryBuffers {
             generation: scene.generation,
             motion: scene.motion,
@@ -156,6 +165,14 @@ impl SceneRenderer {
             triangles: buffer(device, "mesh triangles", &scene.triangles, index),
             edges: buffer(device, "mesh edges", &scene.edges, index),
             curves: buffer(device, "curves", &scene.curves, vertex),
+            draws: (scene.draws.iter())
+                .map(|d| {
+                    (
+                        d.indices.clone(),
+                        d.texture.as_ref().map(mesh_textures::key),
+                    )
+                })
+                .collect(),
         });
     }
 
@@ -168,7 +185,11 @@ impl SceneRenderer {
             pass.set_pipeline(&self.pipelines.mesh);
             pass.set_vertex_buffer(0, vertices.slice(..));
             pass.set_index_buffer(triangles.slice(..), wgpu::IndexFormat::Uint32);
-            pass.draw_indexed(0..*n, 0, 0..1);
+            for (indices, texture) in &g.draws {
+                pass.set_bind_group(1, self.textures.bind_group(*texture), &[]);
+                pass.draw_indexed(indices.clone(), 0, 0..1);
+            }
+            debug_assert_eq!(g.draws.last().map(|d| d.0.end), Some(*n));
             if let (true, Some((edges, n))) = (options.wireframe, &g.edges) {
                 pass.set_pipeline(&self.pipelines.wire);
                 pass.set_index_buffer(edges.slice(..), wgpu::IndexFormat::Uint32);

@@ -14,6 +14,8 @@ pub const SCENE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
 pub struct Pipelines {
     /// Uniforms shared by the scene pipelines.
     pub scene_layout: wgpu::BindGroupLayout,
+    /// A mesh draw's base-colour texture and its sampler.
+    pub texture_layout: wgpu::BindGroupLayout,
     /// Texture, sampler and flags of the blit.
     pub blit_layout: wgpu::BindGroupLayout,
     /// Lit triangles.
@@ -105,10 +107,36 @@ impl Pipelines {
                 count: None,
             }],
         });
+        let texture_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("mesh texture"),
+            entries: &[
+                wgpu::BindGroupLayoutEntry {
+                    binding: 0,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Texture {
+                        sample_type: wgpu::TextureSampleType::Float { filterable: true },
+                        view_dimension: wgpu::TextureViewDimension::D2,
+                        multisampled: false,
+                    },
+                    count: None,
+                },
+                wgpu::BindGroupLayoutEntry {
+                    binding: 1,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+                    count: None,
+                },
+            ],
+        });
         let module = device.create_shader_module(wgpu::include_wgsl!("scene.wgsl"));
         let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("scene"),
             bind_group_layouts: &[Some(&scene_layout)],
+            immediate_size: 0,
+        });
+        let mesh_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("mesh"),
+            bind_group_layouts: &[Some(&scene_layout), Some(&texture_layout)],
             immediate_size: 0,
         });
         let pass = Pass {
@@ -116,6 +144,10 @@ impl Pipelines {
             module: &module,
             layout: &layout,
             samples,
+        };
+        let mesh_pass = Pass {
+            layout: &mesh_layout,
+            ..pass
         };
         let premultiplied = Some(wgpu::BlendState::PREMULTIPLIED_ALPHA_BLENDING);
         let tri = wgpu::PrimitiveTopology::TriangleList;
@@ -125,7 +157,7 @@ impl Pipelines {
         let curve_buffers = [Some(CurveSegment::layout())];
         let (blit_layout, blit) = blit_pipeline(device, output);
         Self {
-            mesh: pass.pipeline(
+            mesh: mesh_pass.pipeline(
                 "mesh",
                 ("vs_mesh", "fs_mesh"),
                 &mesh_buffers,
@@ -166,6 +198,7 @@ impl Pipelines {
                 premultiplied,
             ),
             scene_layout,
+            texture_layout,
             blit_layout,
             blit,
         }
@@ -242,8 +275,8 @@ fn blit_pipeline(
 }
 
 impl MeshVertex {
-    const ATTRIBUTES: [wgpu::VertexAttribute; 4] = wgpu::vertex_attr_array![
-        0 => Float32x3, 1 => Float32x3, 2 => Float32x2, 3 => Float32x4
+    const ATTRIBUTES: [wgpu::VertexAttribute; 5] = wgpu::vertex_attr_array![
+        0 => Float32x3, 1 => Float32x3, 2 => Float32x2, 3 => Float32x4, 4 => Float32x2
     ];
 
     fn layout() -> wgpu::VertexBufferLayout<'static> {

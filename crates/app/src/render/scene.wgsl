@@ -10,6 +10,9 @@ struct Uniforms {
 };
 
 @group(0) @binding(0) var<uniform> u: Uniforms;
+// A mesh draw's base-colour texture (sRGB, so sampled linear; white where there is none).
+@group(1) @binding(0) var base_texture: texture_2d<f32>;
+@group(1) @binding(1) var base_sampler: sampler;
 
 fn to_srgb(linear: vec3<f32>) -> vec3<f32> {
     return pow(clamp(linear, vec3<f32>(0.0), vec3<f32>(1.0)), vec3<f32>(1.0 / 2.2));
@@ -31,6 +34,7 @@ struct MeshOut {
     @location(2) shade: vec2<f32>,
     // The imported linear colour; alpha 0 for clay.
     @location(3) color: vec4<f32>,
+    @location(4) uv: vec2<f32>,
 };
 
 @vertex
@@ -39,6 +43,7 @@ fn vs_mesh(
     @location(1) normal: vec3<f32>,
     @location(2) shade: vec2<f32>,
     @location(3) color: vec4<f32>,
+    @location(4) uv: vec2<f32>,
 ) -> MeshOut {
     var out: MeshOut;
     out.clip = u.clip_from_world * vec4<f32>(pos, 1.0);
@@ -46,17 +51,20 @@ fn vs_mesh(
     out.world = pos;
     out.shade = shade;
     out.color = color;
+    out.uv = uv;
     return out;
 }
 
 @fragment
 fn fs_mesh(in: MeshOut, @builtin(front_facing) front: bool) -> @location(0) vec4<f32> {
+    // Sampled before any branch: texture sampling needs uniform control flow.
+    let texel = textureSample(base_texture, base_sampler, in.uv);
     let to_eye = normalize(u.eye.xyz - in.world);
     var n = normalize(in.normal);
     // Two-sided: open surfaces and imported soups show their back faces, tinted.
     var base = vec3<f32>(0.78, 0.74, 0.68);
     if (in.color.a > 0.0 && u.viewport.w < 0.5) {
-        base = in.color.rgb;
+        base = in.color.rgb * texel.rgb;
     }
     if (dot(n, to_eye) < 0.0) {
         n = -n;

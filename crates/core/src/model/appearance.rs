@@ -38,12 +38,12 @@ impl Appearance {
     }
 
     /// The linear RGBA colour each triangle corner (`3 * face + k`) is drawn with: its
-    /// material's base colour factor times its vertex colour (glTF's base colour, without
-    /// the texture). `None` when the file gave neither a coloured material nor vertex
-    /// colours (a texture on a white factor included: textures are not drawn yet): such a
-    /// model is drawn as clay rather than in glTF's default white.
+    /// material's base colour factor times its vertex colour (glTF's base colour, which the
+    /// texture, if any, then multiplies). `None` when the file gave no coloured or textured
+    /// material and no vertex colours: such a model is drawn as clay rather than in glTF's
+    /// default white.
     pub fn corner_colors(&self) -> Option<Vec<[f32; 4]>> {
-        let coloured = |m: &Material| m.base_color != [1.0; 4];
+        let coloured = |m: &Material| m.base_color != [1.0; 4] || m.base_color_texture.is_some();
         if self.colors.is_none() && !self.materials.iter().any(coloured) {
             return None;
         }

@@ -1,0 +1,17 @@
+import { readFileSync } from 'node:fs';
+import { launch, openApp, frames, sleep, screenshot, api } from './lib.mjs';
+const browser = await launch('webgl2');
+const { page, errors } = await openApp(browser, 'http://127.0.0.1:8080/', 'webgl2', { width: 1280, height: 720 });
+const bytes = readFileSync('/work/shared/testdata/gltf/real/BoxTextured.glb');
+await page.evaluate((b) => window.sketchmesh.loadGlb(new Uint8Array(b), 'BoxTextured.glb'), [...bytes]);
+await sleep(1500);
+await frames(page, 4);
+await screenshot(page, 'tests/out/look-tex.png');
+const bytes2 = readFileSync('/work/shared/testdata/gltf/real/Duck.glb');
+await page.evaluate((b) => window.sketchmesh.loadGlb(new Uint8Array(b), 'Duck.glb'), [...bytes2]);
+await sleep(1500);
+await page.keyboard.press('f');
+await frames(page, 4);
+await screenshot(page, 'tests/out/look-duck.png');
+console.log(errors, JSON.stringify(await api(page, 'stats')));
+await browser.close();

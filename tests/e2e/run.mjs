@@ -536,6 +536,77 @@ test('an import that needed repairs says so in a notes panel; OK or Escape dismi
   }
 });
 
+/** The first image of a GLB file (its bytes), as glTF's JSON chunk places it. */
+function glbImage(glb) {
+  const jsonLength = glb.readUInt32LE(12);
+  const json = JSON.parse(glb.subarray(20, 20 + jsonLength).toString('utf8'));
+  const binStart = 20 + jsonLength + 8;
+  const view = json.bufferViews[json.images[0].bufferView];
+  const start = binStart + (view.byteOffset ?? 0);
+  return glb.subarray(start, start + view.byteLength);
+}
+
+/** Mean [r, g, b] of `image`'s pixels where `keep(x, y)` holds, and their share. */
+function meanColour(image, keep) {
+  const sum = [0, 0, 0];
+  let n = 0;
+  for (let y = 0; y < image.height; y++) {
+    for (let x = 0; x < image.width; x++) {
+      if (!keep(x, y)) continue;
+      const i = 4 * (y * image.width + x);
+      for (let c = 0; c < 3; c++) sum[c] += image.data[i + c];
+      n++;
+    }
+  }
+  return { mean: sum.map((v) => v / Math.max(n, 1)), share: n / (image.width * image.height) };
+}
+
+const chroma = ([r, g, b]) => [r / (r + g + b), g / (r + g + b)];
+
+test('an imported textured model shows its base-colour texture: the model\'s mean colour on screen has the texture\'s hue; Clay hides it', async () => {
+  const fresh = await openApp(browser, url, gpu);
+  try {
+    const { page } = fresh;
+    const glb = readFileSync(join(dirname(fileURLToPath(import.meta.url)), '..', '..', '..', 'shared', 'testdata', 'gltf', 'real', 'BoxTextured.glb'));
+    const texture = await page.evaluate(async (bytes) => {
+      const bitmap = await createImageBitmap(new Blob([new Uint8Array(bytes)], { type: 'image/png' }));
+      const canvas = document.createElement('canvas');
+      [canvas.width, canvas.height] = [bitmap.width, bitmap.height];
+      const g = canvas.getContext('2d');
+      g.drawImage(bitmap, 0, 0);
+      const data = g.getImageData(0, 0, bitmap.width, bitmap.height).data;
+      const sum = [0, 0, 0];
+      for (let i = 0; i < data.length; i += 4) for (let c = 0; c < 3; c++) sum[c] += data[i + c];
+      return sum.map((v) => v / (data.length / 4));
+    }, [...glbImage(glb)]);
+    const empty = await screenshot(page, out('texture-empty.png'));
+    await page.evaluate((bytes) => window.sketchmesh.loadGlb(new Uint8Array(bytes), 'BoxTextured.glb'), [...glb]);
+    await until(() => api(page, 'stats'), (st) => st.models === 1, 5_000);
+    // The texture arrives from the browser's decoder a few frames later.
+    await sleep(800);
+    await frames(page, 4);
+    const textured = await screenshot(page, out('texture.png'));
+    const model = (x, y) => y > 90 && maxDiffNear(empty, textured, x, y, 0) > 40;
+    const seen = meanColour(textured, model);
+    const [want, got] = [chroma(texture), chroma(seen.mean)];
+    console.log(`    texture: mean ${texture.map((v) => v.toFixed(0))}, on screen ${seen.mean.map((v) => v.toFixed(0))} over ${(100 * seen.share).toFixed(1)}% of the page; chroma ${want.map((v) => v.toFixed(3))} against ${got.map((v) => v.toFixed(3))}`);
+    assert.ok(seen.share > 0.01, 'the box is on screen');
+    assert.ok(Math.abs(want[0] - got[0]) < 0.04 && Math.abs(want[1] - got[1]) < 0.04, 'the box has the texture\'s hue');
+    await page.mouse.move(1182, 20);
+    await page.mouse.down();
+    await frames(page, 2);
+    await page.mouse.up();
+    await frames(page, 4);
+    const clay = meanColour(await screenshot(page, out('texture-clay.png')), model);
+    const blueish = (c) => c[2] - c[0];
+    console.log(`    clay: mean ${clay.mean.map((v) => v.toFixed(0))}`);
+    assert.ok(blueish(seen.mean) - blueish(clay.mean) > 15, 'Clay drops the texture\'s blue');
+    assert.deepEqual(fresh.errors, [], 'console errors with a texture');
+  } finally {
+    await fresh.context.close();
+  }
+});
+
 test('a one-finger double tap on empty canvas frames everything; on a model it does not', () => withShape(async ({ fresh }) => {
   const { page, cdp } = fresh;
   await until(() => lastOpOf(page), (o) => o.op === 'create', 15_000);

@@ -810,7 +810,7 @@ impl SketchApp {
                     Routed::Tap(TapCommand::Undo) => self.undo(now),
                     Routed::Tap(TapCommand::Redo) => self.begin(Op::Redo, false, now),
                     Routed::Tap(TapCommand::DoubleTap(at)) => self.double_tap(*at, viewport),
-                    Routed::Tap(TapCommand::LongPress(at)) => self.long_press(*at, viewport),
+                    Routed::Tap(TapCommand::LongPress(at)) => self.long_press(*at, viewport, now),
                     Routed::Tool(event) => {
                         // The pen's eraser erases whatever the tool, for one stroke.
                         if let ToolEvent::Begin(sample) = event
@@ -859,11 +859,23 @@ impl SketchApp {
         }
     }
 
-    /// A long press at `at`: the context actions of the model there, if any.
-    fn long_press(&mut self, at: egui::Pos2, viewport: egui::Rect) {
-        self.context_menu = self
-            .model_at(at, viewport)
-            .map(|model| ContextMenu { at, model });
+    /// A long press at `at`: on a model, its context actions (the finger's stroke is
+    /// cancelled); elsewhere nothing, and the stroke goes on.
+    fn long_press(&mut self, at: egui::Pos2, viewport: egui::Rect, now: f64) {
+        let Some(model) = self.model_at(at, viewport) else {
+            return;
+        };
+        let mut cancelled = Vec::new();
+        self.router.take_touch(&mut cancelled);
+        for routed in &cancelled {
+            if let Routed::Tool(event) = routed {
+                let output = self.feed_tool(viewport, |tools, view, doc| {
+                    tools.on_event(event, view, doc)
+                });
+                self.take_output(output, now);
+            }
+        }
+        self.context_menu = Some(ContextMenu { at, model });
     }
 
     /// The index of the model seen at screen point `at`.

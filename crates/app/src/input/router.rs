@@ -120,16 +120,21 @@ impl InputRouter {
     }
 
     /// Between samples, at `now` (the samples' clock): a finger held still long enough is a
-    /// long press ([`TapCommand::LongPress`]); the stroke it began is cancelled and it does
-    /// nothing more until every finger lifts.
+    /// long press ([`TapCommand::LongPress`]). Its stroke goes on unless the app takes the
+    /// touch ([`InputRouter::take_touch`]): a slow start of a stroke on empty canvas is not
+    /// lost.
     pub fn poll(&mut self, now: f64, out: &mut Vec<Routed>) {
-        let Some(at) = self.taps.long_press(now) else {
-            return;
-        };
+        if let Some(at) = self.taps.long_press(now) {
+            out.push(Routed::Tap(TapCommand::LongPress(at)));
+        }
+    }
+
+    /// Takes the fingers down for the app (a long press that opened a menu): the strokes
+    /// they began are cancelled, and they do nothing more until every finger lifts.
+    pub fn take_touch(&mut self, out: &mut Vec<Routed>) {
         self.cancel_touch_strokes(out);
         self.drags.retain(|id, _| !self.touches.contains_key(id));
         self.touches_spent = true;
-        out.push(Routed::Tap(TapCommand::LongPress(at)));
     }
 
     /// Routes one sample. `starts_in_viewport` says whether a `Down` lands on the 3D view
@@ -363,7 +368,7 @@ mod tests {
     }
 
     #[test]
-    fn a_finger_held_still_is_a_long_press_that_cancels_its_stroke_and_then_does_nothing() {
+    fn a_finger_held_still_is_a_long_press_and_once_taken_it_cancels_its_stroke_and_does_nothing() {
         let mut router = InputRouter::default();
         let touch = PointerKind::Touch;
         let down = sample(1, touch, Phase::Down, 100.0, 100.0);
@@ -381,11 +386,11 @@ mod tests {
         router.poll(0.6, &mut polled);
         assert_eq!(
             polled,
-            vec![
-                Routed::Tool(ToolEvent::Cancel),
-                Routed::Tap(TapCommand::LongPress(pos2(100.0, 100.0)))
-            ]
+            vec![Routed::Tap(TapCommand::LongPress(pos2(100.0, 100.0)))]
         );
+        polled.clear();
+        router.take_touch(&mut polled);
+        assert_eq!(polled, vec![Routed::Tool(ToolEvent::Cancel)]);
         polled.clear();
         router.poll(0.9, &mut polled);
         assert!(polled.is_empty(), "once per press: {polled:?}");

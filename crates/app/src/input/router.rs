@@ -26,6 +26,10 @@ use super::{Phase, PointerKind, PointerSample, buttons};
 pub const PALM_CONTACT: f32 = 20.0;
 /// How long after the pen's last sample (down, moving or hovering) a wide touch is a palm.
 pub const PALM_PEN_SECONDS: f64 = 1.0;
+/// The longest time between two polls for a held finger to count as a long press: the
+/// browser delivers touch events with frames, so after a slower frame a finger that looks
+/// still may have moves on their way.
+pub const LONG_PRESS_STEADY_SECONDS: f64 = 0.2;
 
 /// An input for the active tool.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -95,6 +99,8 @@ pub struct InputRouter {
     palms: BTreeSet<i64>,
     /// Where the pen hovers, if it does.
     pen_hover: Option<Pos2>,
+    /// When [`InputRouter::poll`] last ran.
+    last_poll: f64,
 }
 
 impl InputRouter {
@@ -120,11 +126,12 @@ impl InputRouter {
     }
 
     /// Between samples, at `now` (the samples' clock): a finger held still long enough is a
-    /// long press ([`TapCommand::LongPress`]). Its stroke goes on unless the app takes the
-    /// touch ([`InputRouter::take_touch`]): a slow start of a stroke on empty canvas is not
-    /// lost.
+    /// long press ([`TapCommand::LongPress`]), judged only while frames come quickly (see
+    /// [`LONG_PRESS_STEADY_SECONDS`]). Its stroke goes on unless the app takes the touch
+    /// ([`InputRouter::take_touch`]): a slow start of a stroke on empty canvas is not lost.
     pub fn poll(&mut self, now: f64, out: &mut Vec<Routed>) {
-        if let Some(at) = self.taps.long_press(now) {
+        let steady = now - std::mem::replace(&mut self.last_poll, now) <= LONG_PRESS_STEADY_SECONDS;
+        if steady && let Some(at) = self.taps.long_press(now) {
             out.push(Routed::Tap(TapCommand::LongPress(at)));
         }
     }
@@ -375,6 +382,7 @@ mod tests {
         let out = route_all(&mut router, &[down]);
         assert!(matches!(out[0], Routed::Tool(ToolEvent::Begin(_))));
         let mut polled = Vec::new();
+        router.poll(0.15, &mut polled);
         router.poll(0.3, &mut polled);
         assert!(polled.is_empty(), "too soon: {polled:?}");
         let wobble = PointerSample {
@@ -383,7 +391,11 @@ mod tests {
         };
         let out = route_all(&mut router, &[wobble]);
         assert!(matches!(out[..], [Routed::Tool(ToolEvent::Move(_))]));
-        router.poll(0.6, &mut polled);
+        router.poll(0.45, &mut polled);
+        // A slow frame: the finger may have moved meanwhile, so no long press yet.
+        router.poll(0.75, &mut polled);
+        assert!(polled.is_empty(), "after a slow frame: {polled:?}");
+        router.poll(0.8, &mut polled);
         assert_eq!(
             polled,
             vec![Routed::Tap(TapCommand::LongPress(pos2(100.0, 100.0)))]
@@ -415,6 +427,7 @@ mod tests {
             },
         ];
         route_all(&mut router, &stroke);
+        router.poll(1.95, &mut polled);
         router.poll(2.0, &mut polled);
         assert!(polled.is_empty(), "{polled:?}");
     }

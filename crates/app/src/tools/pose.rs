@@ -202,16 +202,15 @@ impl PoseTool {
         match event {
             ToolEvent::Begin(s) => {
                 let first = sample(s);
-                let coarse = match self.spline {
-                    true => match self.grabbed(doc, view, first) {
-                        Some(k) => Some(k),
-                        None => {
-                            return ToolOutput::Refused(String::from(
-                                "Drag one of the curve's round control points (+ Knot adds one), or choose Sketch to redraw it.",
-                            ));
-                        }
-                    },
-                    false => None,
+                let coarse = if self.spline {
+                    let Some(control) = self.grabbed(doc, view, first) else {
+                        return ToolOutput::Refused(String::from(
+                            "Drag one of the curve's round control points (+ Knot adds one), or turn Spline off to redraw the curve.",
+                        ));
+                    };
+                    Some(control)
+                } else {
+                    None
                 };
                 match self.deform(view, first, coarse) {
                     Some(op) => {

@@ -43,6 +43,7 @@ fn new_optimizer(doc: &Document, input: &OptimizeInput) -> Result<Optimizer, Com
                 .chain(painted_vertices(mesh, &input.painted)?),
         ),
         features: union(painted_vertices(mesh, &input.painted_features)?),
+        sliding: None,
     };
     Ok(Optimizer::new(mesh, &input.settings, &selection)?)
 }

@@ -138,6 +138,12 @@ pub struct Selection {
     /// most curved vertices get with `features` (§6.5.3), so it holds its place while its
     /// neighbours move around it.
     pub features: Option<Vec<bool>>,
+    /// Per vertex: a direction it may only slide along, or `None` (then free, or held by
+    /// `movable`). Used with tangent-plane rows: one more row holds the vertex near the line
+    /// through it along the direction, and the solution is put exactly on it, so that a
+    /// control curve's vertices even out their spacing without leaving the curve (the tidy-up
+    /// after a curve op). Ignored without `tangent_plane`.
+    pub sliding: Option<Vec<Option<DVec3>>>,
 }
 
 /// The optimized positions of `mesh` (one per vertex, same order; the triangles stay).
@@ -279,6 +285,59 @@ mod tests {
         assert!(b.mean_radius_ratio > b.input_mean_radius_ratio);
     }
 
+    /// Sliding vertices even out along their line and stay on it: a jittered grid whose
+    /// middle row may only slide along x keeps that row at its y and in the plane, while the
+    /// row's spacing evens out.
+    #[test]
+    fn sliding_vertices_stay_on_their_lines_and_even_out() {
+        let mut mesh = primitives::grid(12, 12, 1.0);
+        let row: Vec<usize> = (0..mesh.n_vertices())
+            .filter(|&i| mesh.positions()[i].y.abs() < 1e-9)
+            .collect();
+        assert_eq!(row.len(), 13);
+        for (i, p) in mesh.positions_mut().iter_mut().enumerate() {
+            let along_row = if row.contains(&i) { 1.0 } else { 0.3 };
+            let jitter_y = if row.contains(&i) { 0.0 } else { jitter(i, 1) };
+            *p += DVec3::new(jitter(i, 0) * along_row, jitter_y * 0.3, 0.0) * 0.03;
+        }
+        let mut sliding = vec![None; mesh.n_vertices()];
+        for &i in &row {
+            sliding[i] = Some(DVec3::X);
+        }
+        let selection = Selection {
+            sliding: Some(sliding),
+            ..Selection::default()
+        };
+        let params = OptimizeParams {
+            tangent_plane: true,
+            ..OptimizeParams::default()
+        };
+        let result = Optimizer::new(&mesh, &params, &selection)
+            .unwrap()
+            .solve(1.0)
+            .unwrap();
+        let edge = mesh.mean_edge_length();
+        for &i in &row {
+            assert!(result[i].y.abs() < 1e-12 * edge, "vertex {i} left its line");
+        }
+        assert!(
+            result.iter().all(|p| p.z.abs() < 1e-12),
+            "the grid left its plane"
+        );
+        let spread = |positions: &[DVec3]| {
+            let mut xs: Vec<f64> = row.iter().map(|&i| positions[i].x).collect();
+            xs.sort_by(f64::total_cmp);
+            let gaps: Vec<f64> = xs.windows(2).map(|w| w[1] - w[0]).collect();
+            gaps.iter().fold(0.0f64, |m, &g| m.max(g)) - gaps.iter().fold(1.0f64, |m, &g| m.min(g))
+        };
+        assert!(
+            spread(&result) < 0.5 * spread(mesh.positions()),
+            "the row's spacing: {} before, {} after",
+            spread(mesh.positions()),
+            spread(&result)
+        );
+    }
+
     /// A cube of side 1 tessellated into `n × n` quads per side, welded.
     #[test]
     fn a_rescaled_optimizer_gives_what_a_fresh_one_gives_bit_for_bit() {
@@ -374,7 +433,7 @@ mod tests {
             };
             let selection = Selection {
                 movable: Some(movable.clone()),
-                features: None,
+                ..Selection::default()
             };
             let mut optimizer = Optimizer::new(&mesh, &params, &selection).unwrap();
             let mut shown = optimizer.solve(1.0).unwrap();
@@ -391,7 +450,7 @@ mod tests {
         }
         let nothing = Selection {
             movable: Some(vec![false; mesh.n_vertices()]),
-            features: None,
+            ..Selection::default()
         };
         let refused = Optimizer::new(&mesh, &OptimizeParams::default(), &nothing);
         assert_eq!(refused.err(), Some(OptimizeError::EmptyRegion));
@@ -508,6 +567,7 @@ mod tests {
                     .map(|&p| on_edge(p).bitmask().count_ones() >= 2)
                     .collect(),
             ),
+            sliding: None,
         };
         let params = smooth(false, FeatureFalloff::Linear);
         let kept = Optimizer::new(&noisy, &params, &tagged)

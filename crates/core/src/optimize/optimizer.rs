@@ -60,7 +60,12 @@ impl Optimizer {
         if fixed.len() != mesh.n_vertices() || fixed.iter().all(|&f| f) {
             return Err(OptimizeError::EmptyRegion);
         }
-        let rows = Rows::new(mesh, params, selection.features.as_deref());
+        let rows = Rows::new(
+            mesh,
+            params,
+            selection.features.as_deref(),
+            selection.sliding.as_deref(),
+        );
         let a = rows.matrix(params.scale);
         let unknowns_fixed: Vec<bool> = match rows.is_coupled() {
             true => fixed.iter().flat_map(|&f| [f; 3]).collect(),
@@ -116,9 +121,12 @@ impl Optimizer {
             let rhs = self.rows.coupled_rhs(scale);
             let held: Vec<f64> = held.iter().flat_map(|p| p.to_array()).collect();
             self.solver.solve_scalar(&rhs, &held, &mut x)?;
-            x.chunks_exact(3)
+            let mut positions: Vec<DVec3> = x
+                .chunks_exact(3)
                 .map(|c| DVec3::new(c[0], c[1], c[2]))
-                .collect()
+                .collect();
+            self.rows.keep_on_lines(&mut positions);
+            positions
         } else {
             let mut x = vec![DVec3::ZERO; n];
             let rhs = self.rows.rhs(scale);

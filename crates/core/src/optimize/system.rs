@@ -15,6 +15,13 @@ use crate::geometry::{
 use crate::mesh::Mesh;
 use crate::solve::{SparseMatrix, Triplets};
 
+/// The weight of the two planes that keep a sliding vertex on its line, against 1 for the
+/// Laplacian rows (their squares meet in the normal equations): after the curve ops of the
+/// golden sessions the solve left the vertices 0.004–0.011 edge lengths off their lines
+/// (against 0.09–0.18 with the planes weighted 1; a hundred held them no closer), and
+/// [`Rows::keep_on_lines`] then puts them on.
+const LINE_WEIGHT: f64 = 10.0;
+
 /// `W_L L` and `W_L f` of Eq. 6.11, `W_p` at `s = 1`, and what the tangent-plane rows need.
 pub(super) struct Rows {
     /// The Laplacian with each row scaled by its `W_L` (which does not depend on `s`).
@@ -27,12 +34,19 @@ pub(super) struct Rows {
     positions: Vec<DVec3>,
     /// The input's vertex normals, when the tangent-plane rows are on.
     normals: Option<Vec<DVec3>>,
+    /// The sliding vertices of the coupled system.
+    lines: Vec<Line>,
 }
 
 impl Rows {
     /// The rows for `mesh` and `params` (whose `scale` is ignored: see [`Rows::matrix`]);
     /// the vertices `tagged` marks are features that hold (see [`super::Selection`]).
-    pub(super) fn new(mesh: &Mesh, params: &OptimizeParams, tagged: Option<&[bool]>) -> Rows {
+    pub(super) fn new(
+        mesh: &Mesh,
+        params: &OptimizeParams,
+        tagged: Option<&[bool]>,
+        sliding: Option<&[Option<DVec3>]>,
+    ) -> Rows {
         let kappa = curvature_magnitudes(mesh);
         let (mut positional, mut row_weights) = match (params.features, params.feature_falloff) {
             (false, _) => (
@@ -72,6 +86,11 @@ impl Rows {
                 vec![DVec3::ZERO; mesh.n_vertices()],
             ),
         };
+        let normals = params.tangent_plane.then(|| vertex_normals(mesh));
+        let lines = match (&normals, sliding) {
+            (Some(normals), Some(sliding)) => sliding_planes(normals, sliding),
+            _ => Vec::new(),
+        };
         Rows {
             laplacian: laplacian.scale_rows(&row_weights),
             target: target
@@ -81,7 +100,8 @@ impl Rows {
                 .collect(),
             positional,
             positions: mesh.positions().to_vec(),
-            normals: params.tangent_plane.then(|| vertex_normals(mesh)),
+            normals,
+            lines,
         }
     }
 
@@ -98,9 +118,9 @@ impl Rows {
     /// The system matrix at `scale`; its pattern is the same for every scale.
     ///
     /// Separable: `[W_L L; s W_p]`, `2n × n`, shared by x, y and z. Coupled: the `7n × 3n`
-    /// system with unknown `3 i + d` for coordinate `d` of vertex `i`, whose last `n` rows
+    /// system with unknown `3 i + d` for coordinate `d` of vertex `i`, whose rows `6n..7n`
     /// are the tangent-plane rows `s n_i · v'_i` (Eq. 6.15; weighted `s` to match the
-    /// positional rows).
+    /// positional rows), then one row `s b_i · v'_i` per sliding vertex.
     pub(super) fn matrix(&self, scale: f64) -> SparseMatrix {
         let n = self.positions.len();
         let Some(normals) = &self.normals else {
@@ -111,19 +131,51 @@ impl Rows {
             }
             return a.build();
         };
-        let mut a = Triplets::with_capacity(7 * n, 3 * n, 3 * self.laplacian.nnz() + 6 * n);
+        let rows = 7 * n + self.lines.len();
+        let entries = 3 * self.laplacian.nnz() + 6 * n + 3 * self.lines.len();
+        let mut a = Triplets::with_capacity(rows, 3 * n, entries);
         for d in 0..3 {
             push_block(&mut a, &self.laplacian, d * n, d, 3);
             for (i, &w) in self.positional.iter().enumerate() {
                 a.push(3 * n + d * n + i, 3 * i + d, scale * w);
             }
         }
+        let plane_weights = self.plane_weights();
         for (i, normal) in normals.iter().enumerate() {
             for d in 0..3 {
-                a.push(6 * n + i, 3 * i + d, scale * normal[d]);
+                a.push(6 * n + i, 3 * i + d, scale * plane_weights[i] * normal[d]);
+            }
+        }
+        for (k, line) in self.lines.iter().enumerate() {
+            for d in 0..3 {
+                a.push(
+                    7 * n + k,
+                    3 * line.vertex + d,
+                    scale * LINE_WEIGHT * line.plane[d],
+                );
             }
         }
         a.build()
+    }
+
+    /// The weight of each vertex's tangent-plane row: [`LINE_WEIGHT`] for a sliding vertex,
+    /// whose line is the crossing of that plane with its second one, else 1.
+    fn plane_weights(&self) -> Vec<f64> {
+        let mut weights = vec![1.0; self.positions.len()];
+        for line in &self.lines {
+            weights[line.vertex] = LINE_WEIGHT;
+        }
+        weights
+    }
+
+    /// Puts each sliding vertex of `positions` exactly on its line: the rows hold it there
+    /// only in the least-squares sense, and a curve on a plane (a cut's rim) must stay on it.
+    pub(super) fn keep_on_lines(&self, positions: &mut [DVec3]) {
+        for line in &self.lines {
+            let origin = self.positions[line.vertex];
+            let offset = positions[line.vertex] - origin;
+            positions[line.vertex] = origin + line.direction * offset.dot(line.direction);
+        }
     }
 
     /// The right-hand side at `scale` of the separable system: `[W_L f; s W_p V]`.
@@ -173,13 +225,40 @@ impl Rows {
             rhs.extend(held.map(|(p, &w)| scale * w * p[d]));
         }
         let normals = self.normals.iter().flatten();
+        let planes = normals.zip(&self.positions).zip(self.plane_weights());
+        rhs.extend(planes.map(|((normal, p), w)| scale * w * normal.dot(*p)));
+        let lines = self.lines.iter();
         rhs.extend(
-            normals
-                .zip(&self.positions)
-                .map(|(normal, p)| scale * normal.dot(*p)),
+            lines.map(|line| scale * LINE_WEIGHT * line.plane.dot(self.positions[line.vertex])),
         );
         rhs
     }
+}
+
+/// A vertex that may only slide along a line through its input position.
+struct Line {
+    vertex: usize,
+    /// The unit direction of the line.
+    direction: DVec3,
+    /// The normal of the plane through the line that crosses the vertex's tangent plane
+    /// (`normal × direction`): the two planes' rows leave the vertex the line.
+    plane: DVec3,
+}
+
+/// The lines of the vertices with a sliding direction (and a normal across it).
+fn sliding_planes(normals: &[DVec3], sliding: &[Option<DVec3>]) -> Vec<Line> {
+    let lines = normals.iter().zip(sliding).enumerate();
+    lines
+        .filter_map(|(vertex, (normal, direction))| {
+            let direction = (*direction)?.try_normalize()?;
+            let plane = normal.cross(direction).try_normalize()?;
+            Some(Line {
+                vertex,
+                direction,
+                plane,
+            })
+        })
+        .collect()
 }
 
 /// The input's normalized cotangent Laplacian coordinates `v_i − Σ_j w_ij v_j` with

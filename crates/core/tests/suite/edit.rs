@@ -416,6 +416,7 @@ fn a_painted_area_bounds_the_optimization_and_painted_features_are_tagged() {
     let selection = Selection {
         movable: Some(covered(&band)),
         features: Some(covered(&keep)),
+        sliding: None,
     };
     let expected = Optimizer::new(mesh, &settings, &selection)
         .unwrap()

@@ -23,6 +23,7 @@ mod oversketch;
 mod pull;
 mod settle;
 mod shared;
+mod tidy;
 mod tunnel;
 
 pub use add::add_curve_op;

@@ -1,5 +1,6 @@
 //! Settling a model after a curve op: re-optimize the fair surface through its curves
-//! around what changed, and remesh where the topology may change.
+//! around what changed, and remesh where the topology may change (then tidy the triangles
+//! the remesh left poor, see [`super::tidy`]).
 //!
 //! Only a region around the changed curves is re-optimized; the rest of the shape stays
 //! exactly. Besides being faster, this keeps edits from drifting the whole shape: measuring
@@ -9,6 +10,7 @@
 
 use glam::DVec3;
 
+use super::tidy::tidy_poor_triangles;
 use crate::document::CommandError;
 use crate::fibermesh::{ControlCurve, FairSurface, region_around};
 use crate::mesh::remesh::{Chain, RemeshParams, remesh_within};
@@ -70,14 +72,15 @@ pub(super) fn settle(
     };
     if relax {
         run(mesh.positions_mut()).map_err(CommandError::Surface)?;
-        return Ok(());
+    } else {
+        let mut still = rest.to_vec();
+        run(&mut still).map_err(CommandError::Surface)?;
+        run(mesh.positions_mut()).map_err(CommandError::Surface)?;
+        for ((p, &r), &s) in mesh.positions_mut().iter_mut().zip(rest).zip(&still) {
+            *p += r - s;
+        }
     }
-    let mut still = rest.to_vec();
-    run(&mut still).map_err(CommandError::Surface)?;
-    run(mesh.positions_mut()).map_err(CommandError::Surface)?;
-    for ((p, &r), &s) in mesh.positions_mut().iter_mut().zip(rest).zip(&still) {
-        *p += r - s;
-    }
+    tidy_poor_triangles(mesh, curves, &region);
     Ok(())
 }
 
@@ -109,13 +112,14 @@ pub(super) fn remesh_and_settle_within(
         mut mesh,
         curves,
         is_new,
-        ..
+        is_remeshed,
     } = remesh(mesh, curves, region)?;
     let mut surface = FairSurface::new_regional(&mesh, &curves, &is_new, &is_new)
         .map_err(CommandError::Surface)?;
     surface
         .run(mesh.positions_mut(), ITERATIONS_AFTER_REMESH, TOLERANCE)
         .map_err(CommandError::Surface)?;
+    tidy_poor_triangles(&mut mesh, &curves, &is_remeshed);
     Ok((mesh, curves))
 }
 
@@ -155,6 +159,7 @@ pub(super) fn remesh_and_fair_within(
     surface
         .run(mesh.positions_mut(), MAX_ITERATIONS, TOLERANCE)
         .map_err(CommandError::Surface)?;
+    tidy_poor_triangles(&mut mesh, &curves, &is_remeshed);
     Ok((mesh, curves))
 }
 

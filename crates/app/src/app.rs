@@ -156,6 +156,9 @@ pub struct SketchApp {
     /// The tool to go back to when the pen's eraser stroke (eraser end or barrel button)
     /// in progress ends.
     erasing_from: Option<Mode>,
+    /// Whether the screen's main pointer is a finger (the page's `(pointer: coarse)`): the
+    /// toolbar then takes the touch layout where it is narrow enough.
+    coarse_pointer: bool,
 }
 
 impl SketchApp {
@@ -229,7 +232,13 @@ impl SketchApp {
             opened: 0,
             view_rect: egui::Rect::NOTHING,
             erasing_from: None,
+            coarse_pointer: false,
         }
+    }
+
+    /// Says whether the screen's main pointer is a finger (see [`panels::toolbar::Layout`]).
+    pub fn set_coarse_pointer(&mut self, coarse: bool) {
+        self.coarse_pointer = coarse;
     }
 
     /// The edit in progress, if any, and the 3D view's rectangle last frame in points: what
@@ -1441,11 +1450,18 @@ impl eframe::App for SketchApp {
         if self.is_playing() {
             ctx.request_repaint();
         }
-        let action = egui::Panel::top("toolbar")
+        let layout =
+            panels::toolbar::Layout::for_screen(ctx.content_rect().size(), self.coarse_pointer);
+        let panel = match layout.bottom {
+            true => egui::Panel::bottom("toolbar"),
+            false => egui::Panel::top("toolbar"),
+        };
+        let action = panel
             .show(ui, |ui| {
                 let shared = self.shared.borrow();
                 panels::toolbar::toolbar_ui(
                     ui,
+                    layout,
                     &shared.editor,
                     &mut self.options,
                     &mut self.tools,

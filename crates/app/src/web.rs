@@ -35,7 +35,8 @@ pub async fn start(canvas_id: String) -> Result<(), JsValue> {
             canvas,
             eframe::WebOptions::default(),
             Box::new(move |cc| {
-                let app = SketchApp::new(cc);
+                let mut app = SketchApp::new(cc);
+                app.set_coarse_pointer(is_pointer_coarse());
                 let ctx = cc.egui_ctx.clone();
                 let pointer = WebPointer::listen(&listen_on, app.web_samples.clone(), move || {
                     ctx.request_repaint()
@@ -49,6 +50,13 @@ pub async fn start(canvas_id: String) -> Result<(), JsValue> {
             }),
         )
         .await
+}
+
+/// Whether the page's main pointer is coarse (a finger), as CSS's `(pointer: coarse)` says.
+fn is_pointer_coarse() -> bool {
+    web_sys::window()
+        .and_then(|w| w.match_media("(pointer: coarse)").ok().flatten())
+        .is_some_and(|query| query.matches())
 }
 
 /// Chains a panic hook after the installed one (eframe's, which logs the panic and stops the

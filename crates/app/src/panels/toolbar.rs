@@ -34,18 +34,85 @@ pub enum Action {
     Tool(Box<ToolOutput>),
 }
 
-/// Minimum touch target, in points, so buttons are easy to hit with a finger.
-const TOUCH_TARGET: f32 = 36.0;
+/// Minimum target, in points, with a mouse or pen.
+const POINTER_TARGET: f32 = 36.0;
+
+/// Minimum target, in points (CSS px), for a finger: what touch guidelines ask for.
+const FINGER_TARGET: f32 = 44.0;
 
 /// Below this width (points) the toolbar is two rows that scroll sideways, with the file and
 /// view buttons in one menu: wrapped, it took four rows, a third of a phone's screen.
 const NARROW: f32 = 700.0;
 
-/// Shows the toolbar: two rows, the tools and the mode's options; on a wide screen they wrap
-/// and the file buttons sit in a File menu, on a narrow one they scroll sideways and the file
-/// and view buttons sit in one menu (☰).
+/// Below this width a screen whose main pointer is a finger (phones, tablets upright) gets
+/// the touch layout. Wider touch screens (a tablet on its side, a touch laptop) keep the
+/// desktop one, whose wrapped rows fit there.
+const TOUCH_WIDE: f32 = 1000.0;
+
+/// How the toolbar is laid out for a screen and its pointer.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Layout {
+    /// Rows that scroll sideways, the file and view buttons behind one menu.
+    pub compact: bool,
+    /// The smallest width and height of a target, in points.
+    pub target: f32,
+    /// Docked at the bottom with the tools in the last row, in reach of a thumb.
+    pub bottom: bool,
+}
+
+impl Layout {
+    /// The layout for a screen of `size` points whose main pointer is coarse (a finger:
+    /// the page's `(pointer: coarse)`) or not.
+    pub fn for_screen(size: egui::Vec2, coarse_pointer: bool) -> Layout {
+        let touch = coarse_pointer && size.x < TOUCH_WIDE;
+        Layout {
+            compact: touch || size.x < NARROW,
+            target: if touch { FINGER_TARGET } else { POINTER_TARGET },
+            bottom: touch && size.y > size.x,
+        }
+    }
+
+    /// The space above and below a button's text: egui sizes a text button to its text, so
+    /// for a finger it pads a line of body text (about 17 points) out to the target.
+    fn padding(self) -> f32 {
+        if self.target > POINTER_TARGET {
+            (self.target - 17.0) / 2.0
+        } else {
+            6.0
+        }
+    }
+}
+
+/// Shows the toolbar: two rows, the tools and the mode's options (on the bottom the options
+/// come first, so that the tools are nearest the thumb); on a wide screen they wrap and the
+/// file buttons sit in a File menu, in the compact layout they scroll sideways and the file
+/// and view buttons sit in one menu.
 pub fn toolbar_ui(
     ui: &mut egui::Ui,
+    layout: Layout,
+    editor: &Editor,
+    options: &mut ViewOptions,
+    tools: &mut ToolSet,
+    show_help: &mut bool,
+) -> Option<Action> {
+    let interact = &mut ui.spacing_mut().interact_size;
+    *interact = egui::vec2(interact.x.max(layout.target), layout.target);
+    ui.spacing_mut().button_padding = egui::vec2(10.0, layout.padding());
+    let mut action = None;
+    if layout.bottom {
+        action = options_row(ui, layout, editor, tools);
+    }
+    let picked = tools_row(ui, layout, editor, options, tools, show_help);
+    if !layout.bottom {
+        action = options_row(ui, layout, editor, tools);
+    }
+    picked.or(action)
+}
+
+/// The tools row: the menus, undo and redo, the tools and (wide) the view buttons.
+fn tools_row(
+    ui: &mut egui::Ui,
+    layout: Layout,
     editor: &Editor,
     options: &mut ViewOptions,
     tools: &mut ToolSet,
@@ -54,26 +121,26 @@ pub fn toolbar_ui(
     let mut action = None;
     let mut picked_mode = None;
     let mode = tools.mode();
-    let narrow = ui.available_width() < NARROW;
-    ui.spacing_mut().interact_size.y = TOUCH_TARGET;
-    ui.spacing_mut().button_padding = egui::vec2(10.0, 6.0);
-    row(ui, narrow, "tools", |ui| {
+    let target = egui::vec2(layout.target, layout.target);
+    row(ui, layout.compact, "tools", |ui| {
         // Narrower padding in this row keeps its twelve tools and the view buttons on one
         // line at 1280 points.
         ui.spacing_mut().button_padding.x = 8.0;
-        if narrow {
-            ui.menu_button("☰", |ui| {
-                file_buttons(ui, editor, &mut action);
+        if layout.compact {
+            let menu = egui::Button::new("☰").min_size(target);
+            egui::containers::menu::MenuButton::from_button(menu).ui(ui, |ui| {
+                file_buttons(ui, layout, editor, &mut action);
                 ui.separator();
-                view_buttons(ui, options, show_help, &mut action);
+                view_buttons(ui, layout, options, show_help, &mut action);
             });
         } else {
             // No title: the page's is enough, and the row needs the room for the buttons.
-            ui.menu_button("File", |ui| file_buttons(ui, editor, &mut action));
+            ui.menu_button("File", |ui| file_buttons(ui, layout, editor, &mut action));
             ui.separator();
         }
         button(
             ui,
+            layout,
             editor.can_undo(),
             "Undo",
             "Undo (Ctrl+Z)",
@@ -82,6 +149,7 @@ pub fn toolbar_ui(
         );
         button(
             ui,
+            layout,
             editor.can_redo(),
             "Redo",
             "Redo (Ctrl+Shift+Z or Ctrl+Y)",
@@ -90,22 +158,31 @@ pub fn toolbar_ui(
         );
         ui.separator();
         for m in Mode::ALL {
-            let button = egui::Button::selectable(m == mode, m.label())
-                .min_size(egui::vec2(TOUCH_TARGET, TOUCH_TARGET));
+            let button = egui::Button::selectable(m == mode, m.label()).min_size(target);
             let hint = format!("{} ({})", m.hint(), m.key().name());
             if ui.add(button).on_hover_text(hint).clicked() {
                 picked_mode = Some(m);
             }
         }
-        if !narrow {
+        if !layout.compact {
             ui.separator();
-            view_buttons(ui, options, show_help, &mut action);
+            view_buttons(ui, layout, options, show_help, &mut action);
         }
     });
-    // The second row, always there so that the viewport keeps its size whatever the mode:
-    // the mode's options and, on a wide screen, the document's size. (Messages show over
-    // the view.)
-    row(ui, narrow, "options", |ui| {
+    action.or(picked_mode.map(Action::Mode))
+}
+
+/// The second row, always there so that the viewport keeps its size whatever the mode: the
+/// mode's options and, on a wide screen, the document's size. (Messages show over the view.)
+fn options_row(
+    ui: &mut egui::Ui,
+    layout: Layout,
+    editor: &Editor,
+    tools: &mut ToolSet,
+) -> Option<Action> {
+    let mut action = None;
+    let mode = tools.mode();
+    row(ui, layout.compact, "options", |ui| {
         match mode {
             Mode::Oversketch => {
                 oversketch_options_ui(ui, tools.oversketch_settings_mut());
@@ -160,7 +237,7 @@ pub fn toolbar_ui(
             "{} models · {} vertices · {} triangles · {} curves",
             stats.models, stats.vertices, stats.triangles, stats.curves
         );
-        if narrow {
+        if layout.compact {
             ui.label(format!("{} vertices", stats.vertices))
                 .on_hover_text(size);
         } else {
@@ -186,13 +263,19 @@ pub fn toolbar_ui(
             }
         }
     });
-    action.or(picked_mode.map(Action::Mode))
+    action
 }
 
-/// One toolbar row: wrapped onto more lines, or on a `narrow` screen one line that scrolls
-/// sideways (a finger drags it).
-fn row(ui: &mut egui::Ui, narrow: bool, id: &str, add: impl FnOnce(&mut egui::Ui)) {
-    if narrow {
+/// The smallest size of a target in the toolbar's `ui`: square, the layout's target, which
+/// [`toolbar_ui`] puts in `interact_size.y`, so that every tool's options follow the layout.
+pub fn target_size(ui: &egui::Ui) -> egui::Vec2 {
+    egui::Vec2::splat(ui.spacing().interact_size.y)
+}
+
+/// One toolbar row: wrapped onto more lines, or in the `compact` layout one line that
+/// scrolls sideways (a finger drags it).
+fn row(ui: &mut egui::Ui, compact: bool, id: &str, add: impl FnOnce(&mut egui::Ui)) {
+    if compact {
         egui::ScrollArea::horizontal().id_salt(id).show(ui, |ui| {
             ui.horizontal(add);
         });
@@ -201,9 +284,10 @@ fn row(ui: &mut egui::Ui, narrow: bool, id: &str, add: impl FnOnce(&mut egui::Ui
     }
 }
 
-/// A button at least [`TOUCH_TARGET`] square that sets `action` to `a` when pressed.
+/// A button at least a target square that sets `action` to `a` when pressed.
 fn button(
     ui: &mut egui::Ui,
+    layout: Layout,
     enabled: bool,
     label: &str,
     hint: &str,
@@ -212,7 +296,7 @@ fn button(
 ) {
     let response = ui.add_enabled(
         enabled,
-        egui::Button::new(label).min_size(egui::vec2(TOUCH_TARGET, TOUCH_TARGET)),
+        egui::Button::new(label).min_size(egui::vec2(layout.target, layout.target)),
     );
     if response.on_hover_text(hint).clicked() {
         *action = Some(a);
@@ -220,11 +304,12 @@ fn button(
 }
 
 /// New, Documents, Import, Export and Save.
-fn file_buttons(ui: &mut egui::Ui, editor: &Editor, action: &mut Option<Action>) {
+fn file_buttons(ui: &mut egui::Ui, layout: Layout, editor: &Editor, action: &mut Option<Action>) {
     // The documents live in the page's storage: the desktop build has none.
     let has_store = cfg!(target_arch = "wasm32");
     button(
         ui,
+        layout,
         has_store,
         "New",
         "Keep this document under Documents and start an empty one",
@@ -233,6 +318,7 @@ fn file_buttons(ui: &mut egui::Ui, editor: &Editor, action: &mut Option<Action>)
     );
     button(
         ui,
+        layout,
         has_store,
         "Documents…",
         "The documents kept in this browser: open, rename or delete them",
@@ -242,6 +328,7 @@ fn file_buttons(ui: &mut egui::Ui, editor: &Editor, action: &mut Option<Action>)
     ui.separator();
     button(
         ui,
+        layout,
         true,
         "Import…",
         "Import a .glb or .gltf file, or open a saved session (.sketchmesh.json) (Ctrl+O); \
@@ -251,6 +338,7 @@ fn file_buttons(ui: &mut egui::Ui, editor: &Editor, action: &mut Option<Action>)
     );
     button(
         ui,
+        layout,
         !editor.document().is_empty(),
         "Export",
         "Download everything as .glb (Ctrl+S)",
@@ -259,6 +347,7 @@ fn file_buttons(ui: &mut egui::Ui, editor: &Editor, action: &mut Option<Action>)
     );
     button(
         ui,
+        layout,
         editor.can_undo() || editor.can_redo(),
         "Save session",
         "Save the session, every step of it, to replay or to open elsewhere \
@@ -271,12 +360,14 @@ fn file_buttons(ui: &mut egui::Ui, editor: &Editor, action: &mut Option<Action>)
 /// Frame, Reset and the view switches.
 fn view_buttons(
     ui: &mut egui::Ui,
+    layout: Layout,
     options: &mut ViewOptions,
     show_help: &mut bool,
     action: &mut Option<Action>,
 ) {
     button(
         ui,
+        layout,
         true,
         "Frame",
         "Frame everything (F)",
@@ -285,27 +376,41 @@ fn view_buttons(
     );
     button(
         ui,
+        layout,
         true,
         "Reset",
         "Back to the front view (R)",
         Action::ResetView,
         action,
     );
-    toggle(ui, &mut options.wireframe, "Edges", "Show mesh edges (W)");
-    toggle(ui, &mut options.grid, "Grid", "Show the ground grid (G)");
     toggle(
         ui,
+        layout,
+        &mut options.wireframe,
+        "Edges",
+        "Show mesh edges (W)",
+    );
+    toggle(
+        ui,
+        layout,
+        &mut options.grid,
+        "Grid",
+        "Show the ground grid (G)",
+    );
+    toggle(
+        ui,
+        layout,
         &mut options.clay,
         "Clay",
         "Draw imported models as clay, without their colours",
     );
-    toggle(ui, show_help, "Help", "Shortcuts and gestures (H)");
+    toggle(ui, layout, show_help, "Help", "Shortcuts and gestures (H)");
 }
 
-/// A toggle button at least [`TOUCH_TARGET`] square (in the narrow screen's menu too).
-fn toggle(ui: &mut egui::Ui, value: &mut bool, label: &str, hint: &str) {
+/// A toggle button at least a target square (in the compact layout's menu too).
+fn toggle(ui: &mut egui::Ui, layout: Layout, value: &mut bool, label: &str, hint: &str) {
     let button =
-        egui::Button::selectable(*value, label).min_size(egui::vec2(TOUCH_TARGET, TOUCH_TARGET));
+        egui::Button::selectable(*value, label).min_size(egui::vec2(layout.target, layout.target));
     if ui.add(button).on_hover_text(hint).clicked() {
         *value = !*value;
     }

@@ -9,6 +9,7 @@
 //! last amount. Dragging up (or right, for suggestive contours) raises: 15 px per unit of the
 //! factor, so a drag of 100–150 px raises a ridge about as tall as its band is wide.
 
+use crate::panels::toolbar::target_size;
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::{StrokePoint, is_closed_loop};
@@ -206,7 +207,7 @@ impl FeatureTool {
             ),
         ] {
             let button =
-                egui::Button::selectable(self.kind == kind, label).min_size(egui::vec2(36.0, 36.0));
+                egui::Button::selectable(self.kind == kind, label).min_size(target_size(ui));
             if ui.add(button).on_hover_text(hint).clicked() && self.kind != kind {
                 self.kind = kind;
                 self.stage = Stage::Sketching;

@@ -7,6 +7,7 @@
 //! that does begins a `handle_edit` gesture at pointer-down, each move revises it (the core
 //! only rebuilds points from new frames) and release commits it: one undo step per drag.
 
+use crate::panels::toolbar::target_size;
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::StrokePoint;
@@ -269,7 +270,7 @@ impl HandlesTool {
     /// The panel: the kind of a new handle, its control points, rigid limbs, what a drag
     /// does, and Delete.
     pub fn settings_ui(&mut self, ui: &mut egui::Ui) -> ToolOutput {
-        let size = egui::vec2(36.0, 36.0);
+        let size = target_size(ui);
         choice_ui(
             ui,
             &mut self.kind,
@@ -361,8 +362,7 @@ fn choice_ui<T: Copy + PartialEq, const N: usize>(
     choices: [(T, &str, &str); N],
 ) {
     for (choice, label, hint) in choices {
-        let button =
-            egui::Button::selectable(*current == choice, label).min_size(egui::vec2(36.0, 36.0));
+        let button = egui::Button::selectable(*current == choice, label).min_size(target_size(ui));
         if ui.add(button).on_hover_text(hint).clicked() {
             *current = choice;
         }

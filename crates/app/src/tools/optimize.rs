@@ -429,12 +429,16 @@ fn combo<T: Copy + PartialEq>(
     choices: &[(T, &str, &str)],
 ) {
     let selected = choices.iter().find(|c| c.0 == *value).map_or("", |c| c.1);
-    egui::ComboBox::from_id_salt(id)
+    let response = egui::ComboBox::from_id_salt(id)
         .selected_text(selected)
         .show_ui(ui, |ui| {
             for &(choice, label, hint) in choices {
                 ui.selectable_value(value, choice, label)
                     .on_hover_text(hint);
             }
-        });
+        })
+        .response;
+    // Screen readers name it by its setting ("optimize-mode": "optimize mode").
+    let name = id.replace('-', " ");
+    response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::ComboBox, true, &name));
 }

@@ -10,6 +10,7 @@
 //! at**: to edit a pose between keys, or to start each frame of a retargeted motion from the
 //! rest pose), and plays the animation.
 
+use crate::panels::toolbar::target_size;
 use glam::DVec3;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::bspline::{uniform_knots, with_widest_span_split};
@@ -372,7 +373,7 @@ impl PoseTool {
         for k in 0..self.curves.len() {
             let chosen = self.active == Some(k) && !self.adding;
             let button = egui::Button::selectable(chosen, format!("Curve {}", k + 1))
-                .min_size(egui::vec2(44.0, 36.0));
+                .min_size(egui::vec2(44.0, target_size(ui).y));
             if ui
                 .add(button)
                 .on_hover_text("Redraw this curve; the others hold their place")
@@ -383,7 +384,8 @@ impl PoseTool {
         }
         let add = ui.add_enabled(
             !self.curves.is_empty(),
-            egui::Button::selectable(self.adding, "+ Curve").min_size(egui::vec2(44.0, 36.0)),
+            egui::Button::selectable(self.adding, "+ Curve")
+                .min_size(egui::vec2(44.0, target_size(ui).y)),
         );
         if add
             .on_hover_text("Draw another control curve; the picked ones hold their place")
@@ -401,8 +403,8 @@ impl PoseTool {
         {
             self.cancel();
         }
-        let spline =
-            egui::Button::selectable(self.spline, "Spline").min_size(egui::vec2(44.0, 36.0));
+        let spline = egui::Button::selectable(self.spline, "Spline")
+            .min_size(egui::vec2(44.0, target_size(ui).y));
         if ui
             .add(spline)
             .on_hover_text(
@@ -414,7 +416,7 @@ impl PoseTool {
         }
         let knot = ui.add_enabled(
             self.spline && self.active.is_some(),
-            egui::Button::new("+ Knot").min_size(egui::vec2(44.0, 36.0)),
+            egui::Button::new("+ Knot").min_size(egui::vec2(44.0, target_size(ui).y)),
         );
         if knot
             .on_hover_text("One more control point, in the widest span")
@@ -423,25 +425,29 @@ impl PoseTool {
         {
             curve.knots = with_widest_span_split(&curve.knots);
         }
-        ui.menu_button("⋯", |ui| {
-            let item = |label| egui::Button::new(label).min_size(egui::vec2(140.0, 36.0));
-            let turn = ui.add_enabled(self.active.is_some(), item("Turn plane"));
-            if turn
-                .on_hover_text("Turn the editing plane about the curve by 45°")
-                .clicked()
-            {
-                output = self.turn_plane(doc);
-            }
-            let hint = "Show an image over the view, to trace a motion's frames";
-            if ui.add(item("Backdrop…")).on_hover_text(hint).clicked() {
-                output = ToolOutput::Backdrop(true);
-            }
-            if ui.add(item("No backdrop")).clicked() {
-                output = ToolOutput::Backdrop(false);
-            }
-        })
-        .response
-        .on_hover_text("Turn the plane; a backdrop image to trace");
+        // The menu's own ui has the context's style, not the toolbar's: take the size here.
+        let height = target_size(ui).y;
+        let more = egui::Button::new("⋯").min_size(target_size(ui));
+        egui::containers::menu::MenuButton::from_button(more)
+            .ui(ui, |ui| {
+                let item = |label| egui::Button::new(label).min_size(egui::vec2(140.0, height));
+                let turn = ui.add_enabled(self.active.is_some(), item("Turn plane"));
+                if turn
+                    .on_hover_text("Turn the editing plane about the curve by 45°")
+                    .clicked()
+                {
+                    output = self.turn_plane(doc);
+                }
+                let hint = "Show an image over the view, to trace a motion's frames";
+                if ui.add(item("Backdrop…")).on_hover_text(hint).clicked() {
+                    output = ToolOutput::Backdrop(true);
+                }
+                if ui.add(item("No backdrop")).clicked() {
+                    output = ToolOutput::Backdrop(false);
+                }
+            })
+            .0
+            .on_hover_text("Turn the plane; a backdrop image to trace");
         output
     }
 
@@ -475,7 +481,8 @@ impl PoseTool {
                 }
             })
             .response
-            .on_hover_text("How the bend fades toward what holds still");
+            .on_hover_text("How the bend fades toward what holds still")
+            .widget_info(|| egui::WidgetInfo::labeled(egui::Role::ComboBox, true, "pose fall-off"));
         ui.separator();
         let mut output = ToolOutput::None;
         ui.add(
@@ -488,7 +495,7 @@ impl PoseTool {
         let has_models = !doc.models.is_empty();
         let key = ui.add_enabled(
             has_models,
-            egui::Button::new("Key").min_size(egui::vec2(44.0, 36.0)),
+            egui::Button::new("Key").min_size(egui::vec2(44.0, target_size(ui).y)),
         );
         if key
             .on_hover_text("Keep every model's pose at this time")
@@ -518,7 +525,7 @@ impl PoseTool {
         let playable = doc.models.iter().any(|m| m.keyframes().count() >= 2);
         let play = ui.add_enabled(
             playable,
-            egui::Button::new("▶ Play").min_size(egui::vec2(44.0, 36.0)),
+            egui::Button::new("▶ Play").min_size(egui::vec2(44.0, target_size(ui).y)),
         );
         if play
             .on_hover_text("Play the key-framed animation")

@@ -414,24 +414,27 @@ test('tablet (820x1180, DPR 2, touch): a finger-drawn outline creates a model; a
   }
 });
 
-test('phone (390x844, DPR 2, touch): the toolbar is two rows that scroll sideways, with the file and view buttons behind a menu; a finger outline creates a model', async () => {
+test('phone (390x844, DPR 2, touch): the toolbar is two rows at the bottom that scroll sideways, the tools nearest the thumb and the file and view buttons behind a menu; a finger outline creates a model', async () => {
   const phoneBrowser = await launch(gpu, { deviceScaleFactor: 2 });
   try {
     const phone = await openApp(phoneBrowser, url, gpu, { width: 390, height: 844, deviceScaleFactor: 2 });
     const px = (img, x, y) => Array.from(img.data.slice((y * img.width + x) * 4, (y * img.width + x) * 4 + 3));
     const shot = await screenshot(phone.page, out('phone.png'));
-    // The toolbar's height: down its left margin until the view's colours begin.
-    const panel = px(shot, 2, 2);
+    // The toolbar's height: up its left margin from the bottom until the view's colours begin.
+    const bottom = shot.height - 1;
+    const panel = px(shot, 2, bottom);
     let height = 0;
-    while (height < shot.height && px(shot, 2, height).every((v, i) => Math.abs(v - panel[i]) < 12)) height += 1;
+    while (height < shot.height && px(shot, 2, bottom - height).every((v, i) => Math.abs(v - panel[i]) < 12)) height += 1;
     console.log(`    toolbar ${height} px of 844`);
-    assert.ok(height > 40 && height < 0.15 * 844, `the toolbar is ${height} px tall`);
-    // The menu button opens the file and view buttons over the view.
-    await touchTap(phone.cdp, [{ x: 22, y: 20 }]);
+    // Two rows of 44 px targets, and the view keeps at least 80% of the screen.
+    assert.ok(height >= 2 * 44 && height <= 0.2 * 844, `the toolbar is ${height} px tall`);
+    // The menu button, bottom left, opens the file and view buttons over the view.
+    const menuButton = { x: 30, y: 844 - 30 };
+    await touchTap(phone.cdp, [menuButton]);
     await frames(phone.page, 3);
     const menu = await screenshot(phone.page, out('phone-menu.png'));
-    assert.ok(maxDiffNear(shot, menu, 35, 150, 10) > 40, 'the menu opened below its button');
-    await touchTap(phone.cdp, [{ x: 300, y: 700 }]);
+    assert.ok(maxDiffNear(shot, menu, 60, 844 - height - 60, 20) > 40, 'the menu opened above its button');
+    await touchTap(phone.cdp, [{ x: 300, y: 300 }]);
     await frames(phone.page, 3);
     const c = { x: 195, y: 450 };
     const outline = Array.from({ length: 13 }, (_, i) => {

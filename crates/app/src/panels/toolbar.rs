@@ -157,10 +157,19 @@ fn tools_row(
             &mut action,
         );
         ui.separator();
+        // In a row that scrolls, a tool picked by key or menu is brought into sight, once:
+        // the finger stays free to scroll the row afterwards.
+        let shown = egui::Id::unique("toolbar mode brought into sight");
+        let bring = layout.compact && ui.data(|d| d.get_temp::<Mode>(shown)) != Some(mode);
         for m in Mode::ALL {
             let button = egui::Button::selectable(m == mode, m.label()).min_size(target);
             let hint = format!("{} ({})", m.hint(), m.key().name());
-            if ui.add(button).on_hover_text(hint).clicked() {
+            let response = ui.add(button).on_hover_text(hint);
+            if bring && m == mode {
+                response.scroll_to_me(None);
+                ui.data_mut(|d| d.insert_temp(shown, mode));
+            }
+            if response.clicked() {
                 picked_mode = Some(m);
             }
         }

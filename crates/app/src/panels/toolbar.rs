@@ -83,10 +83,11 @@ impl Layout {
     }
 }
 
-/// Shows the toolbar: two rows, the tools and the mode's options (on the bottom the options
-/// come first, so that the tools are nearest the thumb); on a wide screen they wrap and the
-/// file buttons sit in a File menu, in the compact layout they scroll sideways and the file
-/// and view buttons sit in one menu.
+/// Shows the toolbar: two rows, the tools (the menus, undo and redo, the tools and, wide,
+/// the view buttons) and the mode's options (on the bottom the options come first, so that
+/// the tools are nearest the thumb); on a wide screen they wrap and the file buttons sit in a
+/// File menu, in the compact layout they scroll sideways and the file and view buttons sit
+/// in one menu.
 pub fn toolbar_ui(
     ui: &mut egui::Ui,
     layout: Layout,
@@ -98,26 +99,10 @@ pub fn toolbar_ui(
     let interact = &mut ui.spacing_mut().interact_size;
     *interact = egui::vec2(interact.x.max(layout.target), layout.target);
     ui.spacing_mut().button_padding = egui::vec2(10.0, layout.padding());
-    let mut action = None;
-    if layout.bottom {
-        action = options_row(ui, layout, editor, tools);
-    }
-    let picked = tools_row(ui, layout, editor, options, tools, show_help);
-    if !layout.bottom {
-        action = options_row(ui, layout, editor, tools);
-    }
-    picked.or(action)
-}
-
-/// The tools row: the menus, undo and redo, the tools and (wide) the view buttons.
-fn tools_row(
-    ui: &mut egui::Ui,
-    layout: Layout,
-    editor: &Editor,
-    options: &mut ViewOptions,
-    tools: &mut ToolSet,
-    show_help: &mut bool,
-) -> Option<Action> {
+    // Bottom first: the tools row ends up nearest the thumb.
+    let options_first = layout
+        .bottom
+        .then(|| options_row(ui, layout, editor, tools));
     let mut action = None;
     let mut picked_mode = None;
     let mode = tools.mode();
@@ -178,7 +163,10 @@ fn tools_row(
             view_buttons(ui, layout, options, show_help, &mut action);
         }
     });
-    action.or(picked_mode.map(Action::Mode))
+    let options_last = (!layout.bottom).then(|| options_row(ui, layout, editor, tools));
+    (action.or(picked_mode.map(Action::Mode)))
+        .or(options_first.flatten())
+        .or(options_last.flatten())
 }
 
 /// The second row, always there so that the viewport keeps its size whatever the mode: the

@@ -369,11 +369,12 @@ impl PoseTool {
     /// The picked curves' buttons (which one is redrawn), **+ Curve**, **Clear**, **Spline**,
     /// **+ Knot**, and the **⋯** menu (turn the plane, the backdrop).
     fn curves_ui(&mut self, ui: &mut egui::Ui, doc: &Document) -> ToolOutput {
+        let button_size = wide_target(ui);
         let mut output = ToolOutput::None;
         for k in 0..self.curves.len() {
             let chosen = self.active == Some(k) && !self.adding;
-            let button = egui::Button::selectable(chosen, format!("Curve {}", k + 1))
-                .min_size(egui::vec2(44.0, target_size(ui).y));
+            let button =
+                egui::Button::selectable(chosen, format!("Curve {}", k + 1)).min_size(button_size);
             if ui
                 .add(button)
                 .on_hover_text("Redraw this curve; the others hold their place")
@@ -384,8 +385,7 @@ impl PoseTool {
         }
         let add = ui.add_enabled(
             !self.curves.is_empty(),
-            egui::Button::selectable(self.adding, "+ Curve")
-                .min_size(egui::vec2(44.0, target_size(ui).y)),
+            egui::Button::selectable(self.adding, "+ Curve").min_size(button_size),
         );
         if add
             .on_hover_text("Draw another control curve; the picked ones hold their place")
@@ -403,8 +403,7 @@ impl PoseTool {
         {
             self.cancel();
         }
-        let spline = egui::Button::selectable(self.spline, "Spline")
-            .min_size(egui::vec2(44.0, target_size(ui).y));
+        let spline = egui::Button::selectable(self.spline, "Spline").min_size(button_size);
         if ui
             .add(spline)
             .on_hover_text(
@@ -416,7 +415,7 @@ impl PoseTool {
         }
         let knot = ui.add_enabled(
             self.spline && self.active.is_some(),
-            egui::Button::new("+ Knot").min_size(egui::vec2(44.0, target_size(ui).y)),
+            egui::Button::new("+ Knot").min_size(button_size),
         );
         if knot
             .on_hover_text("One more control point, in the widest span")
@@ -453,6 +452,7 @@ impl PoseTool {
 
     /// The panel: the fall-off, the curves, and the timeline's key, delete and play.
     pub fn settings_ui(&mut self, ui: &mut egui::Ui, doc: &Document) -> ToolOutput {
+        let button_size = wide_target(ui);
         let falloffs = [
             (
                 Falloff::Linear,
@@ -493,10 +493,7 @@ impl PoseTool {
         )
         .on_hover_text("The time of the next key");
         let has_models = !doc.models.is_empty();
-        let key = ui.add_enabled(
-            has_models,
-            egui::Button::new("Key").min_size(egui::vec2(44.0, target_size(ui).y)),
-        );
+        let key = ui.add_enabled(has_models, egui::Button::new("Key").min_size(button_size));
         if key
             .on_hover_text("Keep every model's pose at this time")
             .clicked()
@@ -523,10 +520,7 @@ impl PoseTool {
             output = ToolOutput::Commit(Op::DeleteKeyframe(KeyframeInput { time: self.time }));
         }
         let playable = doc.models.iter().any(|m| m.keyframes().count() >= 2);
-        let play = ui.add_enabled(
-            playable,
-            egui::Button::new("▶ Play").min_size(egui::vec2(44.0, target_size(ui).y)),
-        );
+        let play = ui.add_enabled(playable, egui::Button::new("▶ Play").min_size(button_size));
         if play
             .on_hover_text("Play the key-framed animation")
             .clicked()
@@ -540,6 +534,12 @@ impl PoseTool {
         }
         output
     }
+}
+
+/// The toolbar's target, at least 44 points wide: the panel's short labels ("Key", "Clear")
+/// read as buttons at that width.
+fn wide_target(ui: &egui::Ui) -> egui::Vec2 {
+    target_size(ui).max(egui::vec2(44.0, 0.0))
 }
 
 #[cfg(test)]

@@ -536,7 +536,7 @@ impl PoseTool {
     }
 }
 
-/// The toolbar's target, at least 44 points wide: the panel's short labels ("Key", "Clear")
+/// The toolbar's target, at least 44 points wide: the panel's short labels ("Key", "Spline")
 /// read as buttons at that width.
 fn wide_target(ui: &egui::Ui) -> egui::Vec2 {
     target_size(ui).max(egui::vec2(44.0, 0.0))

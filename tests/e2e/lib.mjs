@@ -300,3 +300,65 @@ export function imageChangedFraction(a, b, threshold = 60) {
   }
   return changed / (a.width * a.height);
 }
+
+/**
+ * Page script defining `window.gridGlb(n)`: a .glb of an n x n grid of squares (2 n² triangles,
+ * positions and u32 indices; 708 gives a million triangles), built in the page so the test sends
+ * no 24 MB file over CDP. Run it with `page.evaluate(GRID_GLB_SOURCE)`.
+ */
+export const GRID_GLB_SOURCE = `
+window.gridGlb = (n) => {
+  const nv = (n + 1) * (n + 1);
+  const positions = new Float32Array(nv * 3);
+  for (let j = 0; j <= n; j++) {
+    for (let i = 0; i <= n; i++) {
+      const k = 3 * (j * (n + 1) + i);
+      positions[k] = i / n;
+      positions[k + 1] = j / n;
+      positions[k + 2] = 0.05 * Math.sin(10 * i / n) * Math.cos(7 * j / n);
+    }
+  }
+  const indices = new Uint32Array(6 * n * n);
+  let t = 0;
+  for (let j = 0; j < n; j++) {
+    for (let i = 0; i < n; i++) {
+      const a = j * (n + 1) + i;
+      indices.set([a, a + 1, a + n + 2, a, a + n + 2, a + n + 1], t);
+      t += 6;
+    }
+  }
+  const bin = new Uint8Array(positions.byteLength + indices.byteLength);
+  bin.set(new Uint8Array(positions.buffer), 0);
+  bin.set(new Uint8Array(indices.buffer), positions.byteLength);
+  const json = JSON.stringify({
+    asset: { version: '2.0' }, scene: 0, scenes: [{ nodes: [0] }], nodes: [{ mesh: 0 }],
+    meshes: [{ primitives: [{ attributes: { POSITION: 0 }, indices: 1 }] }],
+    accessors: [
+      { bufferView: 0, componentType: 5126, count: nv, type: 'VEC3', min: [0, 0, -0.05], max: [1, 1, 0.05] },
+      { bufferView: 1, componentType: 5125, count: indices.length, type: 'SCALAR' },
+    ],
+    bufferViews: [
+      { buffer: 0, byteLength: positions.byteLength },
+      { buffer: 0, byteOffset: positions.byteLength, byteLength: indices.byteLength },
+    ],
+    buffers: [{ byteLength: bin.byteLength }],
+  });
+  let jsonBytes = new TextEncoder().encode(json);
+  const padded = new Uint8Array(Math.ceil(jsonBytes.length / 4) * 4).fill(32);
+  padded.set(jsonBytes);
+  jsonBytes = padded;
+  const total = 12 + 8 + jsonBytes.length + 8 + bin.length;
+  const glb = new Uint8Array(total);
+  const view = new DataView(glb.buffer);
+  view.setUint32(0, 0x46546c67, true);
+  view.setUint32(4, 2, true);
+  view.setUint32(8, total, true);
+  view.setUint32(12, jsonBytes.length, true);
+  view.setUint32(16, 0x4e4f534a, true);
+  glb.set(jsonBytes, 20);
+  view.setUint32(20 + jsonBytes.length, bin.length, true);
+  view.setUint32(24 + jsonBytes.length, 0x004e4942, true);
+  glb.set(bin, 28 + jsonBytes.length);
+  return glb;
+};
+`;

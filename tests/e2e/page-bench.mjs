@@ -10,7 +10,7 @@
 import { existsSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 
-import { OUT_DIR, api, launch, penStroke, screenshot, settings, sleep } from './lib.mjs';
+import { GRID_GLB_SOURCE, OUT_DIR, api, launch, penStroke, screenshot, settings, sleep } from './lib.mjs';
 
 const round = (ms) => (ms === null || ms === undefined ? null : Math.round(ms * 10) / 10);
 
@@ -56,8 +56,8 @@ async function nefertitiPage(what) {
   const page = await context.newPage();
   await page.goto(url, { waitUntil: 'load' });
   await page.waitForFunction(() => window.sketchmesh?.stats !== undefined, null, { timeout: 30_000 });
-  const triangles = await page.evaluate((data) => {
-    window.sketchmesh.loadGlb(new Uint8Array(data), 'nefertiti.glb');
+  const triangles = await page.evaluate(async (data) => {
+    await window.sketchmesh.loadGlb(new Uint8Array(data), 'nefertiti.glb');
     return window.sketchmesh.stats().triangles;
   }, [...readFileSync(file)]);
   await sleep(1500);
@@ -215,63 +215,16 @@ try {
 
   // Import of a 1 M-triangle .glb (a 708 x 708 grid, built in the page) through loadGlb: the
   // parse, weld and manifold check, timed inside the page.
-  const imported = await page.evaluate((n) => {
-    const nv = (n + 1) * (n + 1);
-    const positions = new Float32Array(nv * 3);
-    for (let j = 0; j <= n; j++) {
-      for (let i = 0; i <= n; i++) {
-        const k = 3 * (j * (n + 1) + i);
-        positions[k] = i / n;
-        positions[k + 1] = j / n;
-        positions[k + 2] = 0.05 * Math.sin(10 * i / n) * Math.cos(7 * j / n);
-      }
-    }
-    const indices = new Uint32Array(6 * n * n);
-    let t = 0;
-    for (let j = 0; j < n; j++) {
-      for (let i = 0; i < n; i++) {
-        const a = j * (n + 1) + i;
-        indices.set([a, a + 1, a + n + 2, a, a + n + 2, a + n + 1], t);
-        t += 6;
-      }
-    }
-    const bin = new Uint8Array(positions.byteLength + indices.byteLength);
-    bin.set(new Uint8Array(positions.buffer), 0);
-    bin.set(new Uint8Array(indices.buffer), positions.byteLength);
-    const json = JSON.stringify({
-      asset: { version: '2.0' }, scene: 0, scenes: [{ nodes: [0] }], nodes: [{ mesh: 0 }],
-      meshes: [{ primitives: [{ attributes: { POSITION: 0 }, indices: 1 }] }],
-      accessors: [
-        { bufferView: 0, componentType: 5126, count: nv, type: 'VEC3', min: [0, 0, -0.05], max: [1, 1, 0.05] },
-        { bufferView: 1, componentType: 5125, count: indices.length, type: 'SCALAR' },
-      ],
-      bufferViews: [
-        { buffer: 0, byteLength: positions.byteLength },
-        { buffer: 0, byteOffset: positions.byteLength, byteLength: indices.byteLength },
-      ],
-      buffers: [{ byteLength: bin.byteLength }],
-    });
-    let jsonBytes = new TextEncoder().encode(json);
-    const padded = new Uint8Array(Math.ceil(jsonBytes.length / 4) * 4).fill(32);
-    padded.set(jsonBytes);
-    jsonBytes = padded;
-    const total = 12 + 8 + jsonBytes.length + 8 + bin.length;
-    const glb = new Uint8Array(total);
-    const view = new DataView(glb.buffer);
-    view.setUint32(0, 0x46546c67, true);
-    view.setUint32(4, 2, true);
-    view.setUint32(8, total, true);
-    view.setUint32(12, jsonBytes.length, true);
-    view.setUint32(16, 0x4e4f534a, true);
-    glb.set(jsonBytes, 20);
-    view.setUint32(20 + jsonBytes.length, bin.length, true);
-    view.setUint32(24 + jsonBytes.length, 0x004e4942, true);
-    glb.set(bin, 28 + jsonBytes.length);
+  await page.evaluate(GRID_GLB_SOURCE);
+  const imported = await page.evaluate(async (n) => {
+    const glb = window.gridGlb(n);
     window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
     const started = performance.now();
-    window.sketchmesh.loadGlb(glb, 'grid.glb');
+    const landed = window.sketchmesh.loadGlb(glb, 'grid.glb');
+    const returnedMs = performance.now() - started;
+    await landed;
     const ms = performance.now() - started;
-    return { ms, bytes: glb.length, triangles: window.sketchmesh.stats().triangles };
+    return { ms, returnedMs, bytes: glb.length, triangles: window.sketchmesh.stats().triangles };
   }, 708);
 
   // Curve pulls on FiberMesh shapes of 10k and 40k vertices (written by `cargo xtask bench`,
@@ -284,9 +237,9 @@ try {
   await sleep(1000);
   for (const path of (process.env.SKETCHMESH_PULL_FIXTURES ?? '').split(',').filter(Boolean)) {
     const bytes = [...readFileSync(path)];
-    const vertices = await page.evaluate((data) => {
+    const vertices = await page.evaluate(async (data) => {
       window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
-      window.sketchmesh.loadGlb(new Uint8Array(data), 'fixture.glb');
+      await window.sketchmesh.loadGlb(new Uint8Array(data), 'fixture.glb');
       window.sketchmesh.timings();
       return window.sketchmesh.stats().vertices;
     }, bytes);
@@ -452,9 +405,9 @@ try {
   let oversketch = null;
   const torusPath = process.env.SKETCHMESH_OVERSKETCH_FIXTURE;
   if (torusPath) {
-    const vertices = await page.evaluate((data) => {
+    const vertices = await page.evaluate(async (data) => {
       window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
-      window.sketchmesh.loadGlb(new Uint8Array(data), 'bumpy-torus.glb');
+      await window.sketchmesh.loadGlb(new Uint8Array(data), 'bumpy-torus.glb');
       window.sketchmesh.timings();
       return window.sketchmesh.stats().vertices;
     }, [...readFileSync(torusPath)]);
@@ -534,9 +487,9 @@ try {
   let optimize = null;
   const scanPath = process.env.SKETCHMESH_OPTIMIZE_FIXTURE;
   if (scanPath && existsSync(scanPath)) {
-    const vertices = await page.evaluate((data) => {
+    const vertices = await page.evaluate(async (data) => {
       window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
-      window.sketchmesh.loadGlb(new Uint8Array(data), 'bunny.glb');
+      await window.sketchmesh.loadGlb(new Uint8Array(data), 'bunny.glb');
       window.sketchmesh.timings();
       return window.sketchmesh.stats().vertices;
     }, [...readFileSync(scanPath)]);
@@ -589,9 +542,9 @@ try {
    * (a little below centre, where the bunny's body is), in page px.
    */
   const bunnyWith = async (key) => {
-    await page.evaluate((data) => {
+    await page.evaluate(async (data) => {
       window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
-      window.sketchmesh.loadGlb(new Uint8Array(data), 'bunny.glb');
+      await window.sketchmesh.loadGlb(new Uint8Array(data), 'bunny.glb');
       window.sketchmesh.timings();
     }, [...readFileSync(scanPath)]);
     await sleep(500);
@@ -687,12 +640,12 @@ try {
   const barPath = process.env.SKETCHMESH_BEND_FIXTURE;
   if (barPath && existsSync(barPath)) {
     // 24 MB, handed over as base64 text (as an array of numbers it exhausts Node's heap).
-    await page.evaluate((base64) => {
+    await page.evaluate(async (base64) => {
       const text = atob(base64);
       const data = new Uint8Array(text.length);
       for (let i = 0; i < text.length; i++) data[i] = text.charCodeAt(i);
       window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
-      window.sketchmesh.loadGlb(data, 'bar.glb');
+      await window.sketchmesh.loadGlb(data, 'bar.glb');
       window.sketchmesh.timings();
     }, readFileSync(barPath).toString('base64'));
     await sleep(1000);
@@ -725,9 +678,9 @@ try {
   let pose = null;
   const capsulePath = process.env.SKETCHMESH_POSE_FIXTURE;
   if (capsulePath && existsSync(capsulePath)) {
-    await page.evaluate((bytes) => {
+    await page.evaluate(async (bytes) => {
       window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
-      window.sketchmesh.loadGlb(new Uint8Array(bytes), 'capsule.glb');
+      await window.sketchmesh.loadGlb(new Uint8Array(bytes), 'capsule.glb');
       window.sketchmesh.timings();
     }, [...readFileSync(capsulePath)]);
     await sleep(1000);
@@ -774,7 +727,7 @@ try {
       curves_after: stats.curves,
       frame_ms: { mean: round(mean), p50: round(quantile(0.5)), p95: round(quantile(0.95)), max: round(sorted.at(-1)) },
     },
-    import_glb: { triangles: imported.triangles, bytes: imported.bytes, ms: round(imported.ms) },
+    import_glb: { triangles: imported.triangles, bytes: imported.bytes, ms: round(imported.ms), returned_ms: round(imported.returnedMs) },
     pulls,
     oversketch,
     optimize,

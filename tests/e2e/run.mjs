@@ -325,9 +325,9 @@ test('replay(session()) reproduces the stats; malformed JSON throws and changes 
     assert.ok(message.length > 5 && !message.startsWith('non-Error'), `a useful Error message, got ${message}`);
     await expectStats(app.page, stats, 'a failed replay leaves the document unchanged');
   }
-  const loadGlb = await app.page.evaluate(() => {
+  const loadGlb = await app.page.evaluate(async () => {
     try {
-      window.sketchmesh.loadGlb(new Uint8Array([0x67, 0x6c, 0x54, 0x46]));
+      await window.sketchmesh.loadGlb(new Uint8Array([0x67, 0x6c, 0x54, 0x46]));
       return null;
     } catch (e) {
       return e.message;
@@ -754,16 +754,16 @@ test('a dropped .glb imports and is framed; Export downloads a valid file; bad f
     assert.ok(downloaded.subarray(0, 4).equals(Buffer.from('glTF')), 'the download is a .glb');
 
     // The same bytes through the page API, into a fresh document, give the same model.
-    const reloaded = await fresh.page.evaluate((bytes) => {
+    const reloaded = await fresh.page.evaluate(async (bytes) => {
       window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
-      window.sketchmesh.loadGlb(new Uint8Array(bytes), 'again.glb');
+      await window.sketchmesh.loadGlb(new Uint8Array(bytes), 'again.glb');
       return window.sketchmesh.stats();
     }, Array.from(downloaded));
     assert.deepEqual(reloaded, stats, 'an export imports back to the same model');
 
-    const refusal = await fresh.page.evaluate(() => {
+    const refusal = await fresh.page.evaluate(async () => {
       try {
-        window.sketchmesh.loadGlb(new Uint8Array([103, 108, 84, 70, 2, 0, 0, 0, 9, 9, 9, 9]), 'broken.glb');
+        await window.sketchmesh.loadGlb(new Uint8Array([103, 108, 84, 70, 2, 0, 0, 0, 9, 9, 9, 9]), 'broken.glb');
         return null;
       } catch (err) {
         return String(err.message);

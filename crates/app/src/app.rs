@@ -30,6 +30,7 @@ use crate::files::{self, ImportQueue};
 use crate::input::router::{Hands, InputRouter, Routed};
 use crate::input::taps::TapCommand;
 use crate::input::{PointerSample, sample_clock};
+use crate::offload::{Offload, Poll};
 use crate::panels;
 use crate::panels::context_menu::{ContextAction, ContextMenu, context_menu_ui};
 use crate::playback::Playback;
@@ -130,6 +131,10 @@ pub struct SketchApp {
     context_menu: Option<ContextMenu>,
     /// The edit in progress: begun from a tool's op, stepped every frame, finished when done.
     edit: Option<Edit>,
+    /// The page's worker, which reads imports off the frame.
+    offload: Offload,
+    /// The import the edit in progress is, if it is one.
+    import: Option<ImportInProgress>,
     /// How many edits were begun: tells apart the documents of two edits of equal revision.
     edits_begun: u64,
     /// The fall-off panel's painted disc, kept between frames.
@@ -173,7 +178,9 @@ impl SketchApp {
         }
         // The 3D view is dark; a light toolbar beside it would glare.
         cc.egui_ctx.set_theme(egui::Theme::Dark);
-        Self::with_backend(backend, cc.wgpu_render_state.is_some())
+        let mut app = Self::with_backend(backend, cc.wgpu_render_state.is_some());
+        app.offload = Offload::new(&cc.egui_ctx);
+        app
     }
 
     /// Creates the app without graphics, for tests that drive input and tools.
@@ -215,6 +222,8 @@ impl SketchApp {
             backdrop: Backdrop::default(),
             context_menu: None,
             edit: None,
+            offload: Offload::default(),
+            import: None,
             edits_begun: 0,
             falloff_panel: Default::default(),
             is_edit_new: false,
@@ -280,12 +289,6 @@ impl SketchApp {
         }
     }
 
-    /// Applies `op` at once (begun and finished in this call).
-    fn apply_now(&mut self, op: Op, now: f64) {
-        self.begin(op, false, now);
-        self.finish_edit(now);
-    }
-
     /// Runs the steps of the edit in progress while [`FRAME_BUDGET_MS`] lasts (at least
     /// one; none in the frame it was begun in), and finishes it once done.
     fn step_edit(&mut self, ctx: &egui::Context) {
@@ -296,6 +299,14 @@ impl SketchApp {
         if std::mem::take(&mut self.is_edit_new) {
             ctx.request_repaint();
             return;
+        }
+        if let Some(input) = edit.import_to_read() {
+            match self.offload.poll(self.edits_begun, input) {
+                // The worker's answer repaints.
+                Poll::Pending => return,
+                Poll::Arrived(imported) => edit.supply_import(imported),
+                Poll::NotOffloaded => {}
+            }
         }
         let was_gesture = edit.is_gesture();
         let started = clock::now_ms();
@@ -318,6 +329,7 @@ impl SketchApp {
                     self.tools.gesture_refused();
                 }
                 self.set_status(e.to_string(), now);
+                self.settle_import(Err(e.to_string()), now);
             }
         }
     }
@@ -328,6 +340,9 @@ impl SketchApp {
         let Some(edit) = self.edit.take() else {
             return;
         };
+        // The worker's answer would come too late: the import is finished here.
+        self.offload.cancel();
+        let models_before = self.shared.borrow().editor.document().models.len();
         let optimized = match edit.op() {
             Op::Optimize(input) => self
                 .shared
@@ -345,6 +360,13 @@ impl SketchApp {
         let ms = clock::now_ms() - started;
         self.edit_clock
             .finished(ms, &mut self.shared.borrow_mut().timings);
+        if self.import.is_some() {
+            let settled = result.as_ref().map(|_| ()).map_err(ToString::to_string);
+            if settled.is_ok() {
+                self.frame_after_rebuild = Some(models_before);
+            }
+            self.settle_import(settled, now);
+        }
         match (result, optimized) {
             (Err(e), _) => self.set_status(e.to_string(), now),
             (Ok(()), Some((index, before))) => {
@@ -366,11 +388,35 @@ impl SketchApp {
         }
     }
 
-    /// Drops the gesture in progress and the tool's part of it (Esc): nothing changes.
+    /// Drops the gesture in progress and the tool's part of it (Esc), or the import the
+    /// worker is reading: nothing changes.
     fn drop_gesture(&mut self, now: f64) {
+        self.cancel_import(now);
         self.cancel_gesture();
         let dropped = self.tools.cancel();
         self.take_output(dropped, now);
+    }
+
+    /// Drops the import in progress, if the edit in progress is one: nothing changes.
+    fn cancel_import(&mut self, now: f64) {
+        if self.import.is_none() {
+            return;
+        }
+        self.offload.cancel();
+        self.edit = None;
+        self.settle_import(Err(String::from("The import was cancelled.")), now);
+    }
+
+    /// Ends the import in progress: says how it went, and tells who waits for it.
+    fn settle_import(&mut self, result: Result<(), String>, now: f64) {
+        let Some(import) = self.import.take() else {
+            return;
+        };
+        match &result {
+            Ok(()) => self.set_status(format!("Imported {}.", import.name), now),
+            Err(why) => self.set_status(why.clone(), now),
+        }
+        import.reply.send(result);
     }
 
     /// Drops the edit in progress if its gesture is still going on: nothing changes.
@@ -463,6 +509,7 @@ impl SketchApp {
         };
         if opened != self.opened {
             self.opened = opened;
+            self.cancel_import(now);
             self.cancel_gesture();
             self.edit = None;
             let dropped = self.tools.cancel();
@@ -526,13 +573,13 @@ impl SketchApp {
         }
         if let Some(incoming) = self.announced_import.take() {
             match incoming {
-                files::Incoming::Import(input) => self.import_now(input, now),
+                files::Incoming::Import(input, reply) => self.begin_import(input, reply, now),
                 files::Incoming::Session { name, bytes } => self.open_session(&name, bytes, now),
             }
         }
         if let Some(incoming) = imports.borrow_mut().pop_front() {
             let (name, bytes): (&str, usize) = match &incoming {
-                files::Incoming::Import(input) => (
+                files::Incoming::Import(input, _) => (
                     &input.files[0].name,
                     (input.files.iter())
                         .filter_map(|f| f.data.as_ref())
@@ -548,15 +595,25 @@ impl SketchApp {
         }
     }
 
-    fn import_now(&mut self, input: ImportInput, now: f64) {
+    /// Begins importing: in the page the worker reads the files while the view keeps
+    /// drawing, with a progress line and Cancel; the import lands as one undoable step.
+    fn begin_import(&mut self, input: ImportInput, reply: files::Reply, now: f64) {
         let name = input.files[0].name.clone();
+        let bytes: usize = (input.files.iter())
+            .filter_map(|f| f.data.as_ref())
+            .map(|d| d.len())
+            .sum();
         self.status = None;
-        let first_new = self.shared.borrow().editor.document().models.len();
-        self.apply_now(Op::Import(input), now);
-        if self.status.is_none() {
-            self.set_status(format!("Imported {name}."), now);
-            self.frame_after_rebuild = Some(first_new);
+        self.begin(Op::Import(input), false, now);
+        if self.edit.is_none() {
+            let why = self.status.as_ref().map(|(why, _)| why.clone());
+            return reply.send(Err(why.unwrap_or_default()));
         }
+        self.import = Some(ImportInProgress {
+            name,
+            megabytes: bytes as f64 / 1e6,
+            reply,
+        });
     }
 
     /// Opens a session file as a document of its own (its history comes with it). A file
@@ -974,6 +1031,12 @@ impl SketchApp {
         let idle = self.stroke_preview().is_none() && self.edit.is_none();
         if self.shared.borrow().thumbnails.is_capturing() {
             // A thumbnail is being taken: the shapes only.
+        } else if let Some(import) = &self.import {
+            let what = format!("Importing {} ({:.1} MB)…", import.name, import.megabytes);
+            if panels::progress::progress_ui(ui.ctx(), viewport, &what) {
+                let now = ui.input(|i| i.time);
+                self.cancel_import(now);
+            }
         } else if let Some((status, _)) = &self.status {
             status_ui(ui, viewport, status);
         } else if self.shared.borrow().editor.document().is_empty() && idle {
@@ -1501,6 +1564,14 @@ impl eframe::App for SketchApp {
         notes.follow((revision.opened, revision.edits), editor.notes());
         panels::notes::notes_ui(&ctx, notes);
     }
+}
+
+/// An import being read (in the page, by the worker): what the progress line says, and who
+/// waits for it to land.
+struct ImportInProgress {
+    name: String,
+    megabytes: f64,
+    reply: files::Reply,
 }
 
 /// The costs of the edit in progress, recorded in [`clock::Timings`] under its op's name as

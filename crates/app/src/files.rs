@@ -15,11 +15,11 @@ use sketchmesh_core::document::{FileInput, ImportInput};
 /// Files waiting for the next frame.
 pub type ImportQueue = Rc<RefCell<VecDeque<Incoming>>>;
 
-/// What a drop or the picker brought.
+/// What a drop, the picker or the page API brought.
 #[derive(Debug)]
 pub enum Incoming {
-    /// glTF files to import into the document.
-    Import(ImportInput),
+    /// glTF files to import into the document, and who waits to hear how it went.
+    Import(ImportInput, Reply),
     /// A session file (`.json`) to open in place of the document.
     Session {
         /// The file's name.
@@ -27,6 +27,38 @@ pub enum Incoming {
         /// Its bytes (UTF-8 JSON, if it is what it says).
         bytes: Vec<u8>,
     },
+}
+
+/// Who waits for an import to land (the page API's `loadGlb` Promise): told once, when the
+/// import is in the document or when it is refused or cancelled (with the sentence).
+#[derive(Default)]
+pub struct Reply(Option<Box<dyn FnOnce(Landed)>>);
+
+/// How an import went: in the document, or the sentence of its refusal or cancel.
+pub type Landed = Result<(), String>;
+
+impl Reply {
+    /// A reply that calls `tell`.
+    pub fn to(tell: impl FnOnce(Landed) + 'static) -> Reply {
+        Reply(Some(Box::new(tell)))
+    }
+
+    /// Tells how it went (nothing when nobody waits).
+    pub fn send(self, result: Landed) {
+        if let Some(tell) = self.0 {
+            tell(result);
+        }
+    }
+}
+
+impl std::fmt::Debug for Reply {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(if self.0.is_some() {
+            "Reply(waited for)"
+        } else {
+            "Reply(none)"
+        })
+    }
 }
 
 /// A session file among `files` (the first `.json`), else their glTF import, else `None`.
@@ -39,7 +71,7 @@ pub fn incoming(mut files: Vec<(String, Vec<u8>)>) -> Option<Incoming> {
             let (name, bytes) = files.swap_remove(index);
             Some(Incoming::Session { name, bytes })
         }
-        None => import_input(files).map(Incoming::Import),
+        None => import_input(files).map(|input| Incoming::Import(input, Reply::default())),
     }
 }
 
@@ -306,7 +338,7 @@ mod tests {
             other => panic!("expected a session, got {other:?}"),
         }
         let glb = incoming(vec![(String::from("a.glb"), vec![1])]);
-        assert!(matches!(glb, Some(Incoming::Import(_))));
+        assert!(matches!(glb, Some(Incoming::Import(..))));
         assert!(incoming(vec![(String::from("a.txt"), vec![])]).is_none());
     }
 

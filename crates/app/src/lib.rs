@@ -13,6 +13,7 @@ pub mod files;
 #[cfg(target_arch = "wasm32")]
 pub mod image_decode;
 pub mod input;
+pub mod offload;
 pub mod panels;
 pub mod playback;
 pub mod render;

@@ -140,17 +140,27 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
     let (s, c) = (shared.clone(), ctx.clone());
     set(
         "loadGlb",
-        Closure::<dyn Fn(Uint8Array, Option<String>) -> Result<(), JsValue>>::new(
+        Closure::<dyn Fn(Uint8Array, Option<String>) -> js_sys::Promise>::new(
             move |bytes: Uint8Array, name: Option<String>| {
                 let name = name.unwrap_or_else(|| String::from("loaded.glb"));
-                let input = crate::files::import_input(vec![(name, bytes.to_vec())])
-                    .ok_or_else(|| js_error("The file name must end in .glb or .gltf."))?;
-                let result = s
-                    .borrow_mut()
-                    .editor
-                    .apply(sketchmesh_core::document::Op::Import(input));
+                let mut input = crate::files::import_input(vec![(name, bytes.to_vec())]);
+                let imports = s.borrow().imports.clone();
                 c.request_repaint();
-                result.map_err(|e| js_error(&e.to_string()))
+                js_sys::Promise::new(&mut |resolve, reject| {
+                    let Some(input) = input.take() else {
+                        let why = js_error("The file name must end in .glb or .gltf.");
+                        let _ = reject.call1(&JsValue::NULL, &why);
+                        return;
+                    };
+                    let reply = crate::files::Reply::to(move |landed| {
+                        let _ = match landed {
+                            Ok(()) => resolve.call0(&JsValue::NULL),
+                            Err(why) => reject.call1(&JsValue::NULL, &js_error(&why)),
+                        };
+                    });
+                    let incoming = crate::files::Incoming::Import(input, reply);
+                    imports.borrow_mut().push_back(incoming);
+                })
             },
         )
         .into_js_value(),

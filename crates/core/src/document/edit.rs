@@ -66,12 +66,13 @@ use super::create::CreateJob;
 use super::curve_edit::PullPreview;
 use super::feature::FeaturePreview;
 use super::optimize::OptimizePreview;
-use super::outcome::{Outcome, outcome, with_model};
+use super::outcome::{Outcome, outcome, with_imported, with_model};
 use super::oversketch::{OutlinePiece, OutlinePreview};
 use super::region_edit::RegionPreview;
 use super::skeleton::HandleDrag;
 use super::volumetric::CurvePreview;
-use super::{CommandError, Document, Editor, Op};
+use super::{CommandError, Document, Editor, ImportInput, Op};
+use crate::io::Imported;
 
 /// What [`Edit::step`] left to do.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -430,6 +431,32 @@ impl Edit {
 
     /// Drops the edit: the editor stays as it is.
     pub fn cancel(self) {}
+
+    /// The files of an import whose result is not computed yet: the page reads them in its
+    /// worker with [`import_files`](super::import_files), a pure function of the files, and
+    /// hands the result to [`Edit::supply_import`], so the long part of an import never
+    /// runs in a frame. `None` for any other edit, and once the import is computed.
+    pub fn import_to_read(&self) -> Option<&ImportInput> {
+        match (&self.work, &self.op) {
+            (Work::Whole, Op::Import(input)) if !self.is_gesture => Some(input),
+            _ => None,
+        }
+    }
+
+    /// Completes an import with what [`import_files`](super::import_files) made of its
+    /// files elsewhere: the same result, placed the same way, as stepping it here. Ignored
+    /// for any other edit, or once its result is computed.
+    pub fn supply_import(&mut self, imported: Result<Imported, CommandError>) {
+        let Some(input) = self.import_to_read() else {
+            return;
+        };
+        self.work = match imported {
+            Ok(imported) => Work::Done(with_imported(&self.base, input, imported)),
+            Err(error) => Work::Failed(error),
+        };
+        self.revision += 1;
+        self.generation += 1;
+    }
 
     /// The op as far as it is known (a gesture's stroke grows).
     pub fn op(&self) -> &Op {

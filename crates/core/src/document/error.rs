@@ -51,6 +51,10 @@ pub enum CommandError {
     /// A file could not be imported.
     #[error("{0}")]
     Import(#[from] GltfError),
+    /// Work the page ran in its worker was refused there (the sentence is that refusal), or
+    /// its result could not be read back.
+    #[error("{0}")]
+    Elsewhere(String),
     /// An over-sketch was refused.
     #[error("{0}")]
     Oversketch(#[from] OversketchError),

@@ -54,23 +54,7 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
             while !job.step()? {}
             Outcome::Document(job.into_document())
         }
-        Op::Import(input) => {
-            let mut imported = import_files(input)?;
-            if input.beside {
-                place_beside(base, &mut imported);
-            }
-            let mut next = base.clone();
-            next.models
-                .extend(imported.models.into_iter().map(Arc::new));
-            next.sketches
-                .extend(imported.sketches.into_iter().map(Arc::new));
-            next.point_clouds
-                .extend(imported.point_clouds.into_iter().map(Arc::new));
-            Outcome::Imported {
-                next,
-                notes: imported.notes,
-            }
-        }
+        Op::Import(input) => with_imported(base, input, import_files(input)?),
         Op::Oversketch(input) => replaced(oversketch_op(base, input)?),
         Op::Pull(input) => replaced(curve_edit::pull_op(base, input)?),
         Op::AddCurve(input) => replaced(curve_edit::add_curve_op(base, input)?),
@@ -151,8 +135,35 @@ fn place_stroke(input: &StrokeInput) -> Result<SketchCurve, CommandError> {
     Ok(sketch)
 }
 
-/// Imports the files of an import op with the default limits.
-fn import_files(input: &ImportInput) -> Result<Imported, CommandError> {
+/// `base` with what the files of `input` brought ([`import_files`]) added: placed beside
+/// its contents when the op asks.
+pub(super) fn with_imported(
+    base: &Document,
+    input: &ImportInput,
+    mut imported: Imported,
+) -> Outcome {
+    if input.beside {
+        place_beside(base, &mut imported);
+    }
+    let mut next = base.clone();
+    next.models
+        .extend(imported.models.into_iter().map(Arc::new));
+    next.sketches
+        .extend(imported.sketches.into_iter().map(Arc::new));
+    next.point_clouds
+        .extend(imported.point_clouds.into_iter().map(Arc::new));
+    Outcome::Imported {
+        next,
+        notes: imported.notes,
+    }
+}
+
+/// Reads the files of an import op with the default limits: the long part of an import,
+/// and a pure one (files in, models out), so the page may run it in a worker and hand the
+/// result to [`super::Edit::supply_import`].
+///
+/// Errors: [`CommandError::FileNotLoaded`], [`CommandError::NoFile`], or the file's problem.
+pub fn import_files(input: &ImportInput) -> Result<Imported, CommandError> {
     let files = input
         .files
         .iter()

@@ -34,6 +34,7 @@ mod input;
 mod parse;
 mod resources;
 mod scene;
+mod transfer;
 mod weld;
 
 pub use error::GltfError;
@@ -43,3 +44,4 @@ pub use import::{Imported, import_gltf};
 pub use info::{Info, inspect_gltf};
 pub use input::{ImportFile, ImportLimits};
 pub use resources::referenced_files;
+pub use transfer::{TransferError, decode_imported, encode_imported};

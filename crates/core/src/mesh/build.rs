@@ -8,7 +8,62 @@
 
 use super::{INVALID, Mesh, MeshError, TriSoup};
 
+/// The arrays a [`Mesh`] is made of, to move one whole between wasm instances
+/// (`io::transfer`) without building its twins again.
+#[derive(Debug)]
+pub(crate) struct MeshParts<P, T, U> {
+    pub positions: P,
+    pub triangles: T,
+    pub twin: U,
+    pub vertex_halfedge: U,
+    pub n_dead_vertices: u32,
+    pub n_dead_faces: u32,
+}
+
 impl Mesh {
+    /// Its arrays, borrowed.
+    pub(crate) fn parts(&self) -> MeshParts<&[glam::DVec3], &[[u32; 3]], &[u32]> {
+        MeshParts {
+            positions: &self.positions,
+            triangles: &self.triangles,
+            twin: &self.twin,
+            vertex_halfedge: &self.vertex_halfedge,
+            n_dead_vertices: self.n_dead_vertices,
+            n_dead_faces: self.n_dead_faces,
+        }
+    }
+
+    /// The mesh [`Mesh::parts`] gave. Linear checks only (lengths, and every index in range
+    /// or [`INVALID`]), so a corrupt buffer cannot make navigation index out of bounds; the
+    /// full [`Mesh::validate`] is the caller's to run where the parts may be foreign.
+    ///
+    /// Errors: [`MeshError::InvalidConnectivity`] when the arrays do not fit together.
+    pub(crate) fn from_parts(
+        parts: MeshParts<Vec<glam::DVec3>, Vec<[u32; 3]>, Vec<u32>>,
+    ) -> Result<Mesh, MeshError> {
+        let n_vertices = parts.positions.len();
+        let n_halfedges = 3 * parts.triangles.len();
+        let in_range = |i: u32, n: usize| i == INVALID || (i as usize) < n;
+        let fits = parts.twin.len() == n_halfedges
+            && parts.vertex_halfedge.len() == n_vertices
+            && (parts.triangles.iter().flatten()).all(|&v| in_range(v, n_vertices))
+            && parts.twin.iter().all(|&h| in_range(h, n_halfedges))
+            && (parts.vertex_halfedge.iter()).all(|&h| in_range(h, n_halfedges));
+        if !fits {
+            return Err(MeshError::InvalidConnectivity(String::from(
+                "the arrays of a mesh do not fit together",
+            )));
+        }
+        Ok(Mesh {
+            positions: parts.positions,
+            triangles: parts.triangles,
+            twin: parts.twin,
+            vertex_halfedge: parts.vertex_halfedge,
+            n_dead_vertices: parts.n_dead_vertices,
+            n_dead_faces: parts.n_dead_faces,
+        })
+    }
+
     /// Builds the half-edge mesh of an oriented manifold soup.
     ///
     /// Fails on the first problem found: an index out of range, a triangle that repeats a

@@ -39,6 +39,7 @@ mod validate;
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
+pub(crate) use build::MeshParts;
 pub use edit::Remap;
 pub use error::MeshError;
 pub use halfedge::OutgoingHalfedges;

@@ -566,3 +566,53 @@ fn a_dragged_feature_commits_what_apply_makes() {
     );
     assert_eq!((editor.document(), editor.ops().len()), (&before, n_ops));
 }
+
+/// The page reads an import's files in its worker and hands the result, through the transfer
+/// buffer, to the edit: the document and the session are those `apply` gives, placed beside
+/// what the document holds. A refusal handed over changes nothing; so does a cancel.
+#[test]
+fn an_import_read_elsewhere_lands_as_the_applied_import() {
+    use sketchmesh_core::document::{FileInput, ImportInput, import_files};
+    use sketchmesh_core::io::{decode_imported, encode_imported};
+    use std::sync::Arc;
+    let Some(root) = crate::common::testdata() else {
+        return;
+    };
+    let bytes = std::fs::read(root.join("meshes/spot.glb")).unwrap();
+    let import = Op::Import(ImportInput {
+        files: vec![FileInput {
+            name: String::from("spot.glb"),
+            data: Some(Arc::new(bytes)),
+        }],
+        beside: true,
+    });
+    let mut applied = Editor::new();
+    applied.apply(Op::Create(circle(CENTRE, 120.0))).unwrap();
+    let mut by_worker = applied.clone();
+    applied.apply(import.clone()).unwrap();
+
+    let mut edit = by_worker.begin(import.clone()).unwrap();
+    let input = edit.import_to_read().unwrap().clone();
+    // What the worker does: read, encode; what the page does: decode, hand over.
+    let buffer = encode_imported(&import_files(&input).unwrap());
+    edit.supply_import(Ok(decode_imported(&buffer).unwrap()));
+    assert!(edit.import_to_read().is_none(), "read once");
+    assert_eq!(edit.step().unwrap(), Progress::Done);
+    edit.finish(&mut by_worker).unwrap();
+    assert_eq!(by_worker.document(), applied.document());
+    assert_eq!(by_worker.session_json(), applied.session_json());
+    assert_eq!(
+        by_worker.document().models.len(),
+        2,
+        "spot beside the shape"
+    );
+
+    let before = by_worker.clone();
+    let mut refused = by_worker.begin(import.clone()).unwrap();
+    refused.supply_import(Err(CommandError::Elsewhere(String::from("Not today."))));
+    assert_eq!(refused.step().unwrap_err().to_string(), "Not today.");
+    assert_eq!(by_worker.document(), before.document());
+    by_worker.begin(import).unwrap().cancel();
+    assert_eq!(by_worker.document(), before.document());
+    assert_eq!(by_worker.session_json(), before.session_json());
+}

@@ -10,7 +10,10 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use crate::common::testdata;
-use sketchmesh_core::io::{GltfError, ImportFile, ImportLimits, import_gltf, inspect_gltf};
+use sketchmesh_core::io::{
+    GltfError, ImportFile, ImportLimits, Imported, decode_imported, encode_imported, import_gltf,
+    inspect_gltf,
+};
 
 /// The file and every other file in its directory (a .gltf's .bin and images).
 fn load(path: &Path) -> (Vec<u8>, Vec<(String, Vec<u8>)>) {
@@ -162,6 +165,7 @@ fn real_files_load_with_the_right_triangles_and_bounds() {
                 .validate()
                 .unwrap_or_else(|e| panic!("{file}: {e}"));
         }
+        assert_crosses_unchanged(&imported, file);
     }
     // A file whose nodes hold nothing is refused with a sentence.
     let path = root.join("gltf/real/empty_nodes.glb");
@@ -197,6 +201,9 @@ fn import_all(dir: &Path) -> Vec<(String, Result<usize, GltfError>)> {
                 path.display(),
                 start.elapsed()
             );
+            if let Ok(imported) = &result {
+                assert_crosses_unchanged(imported, &path.display().to_string());
+            }
             if let Err(error) = &result {
                 let sentence = error.to_string();
                 assert!(
@@ -213,6 +220,23 @@ fn import_all(dir: &Path) -> Vec<(String, Result<usize, GltfError>)> {
             (name, result.map(|imported| imported.models.len()))
         })
         .collect()
+}
+
+/// What the page's worker sends of `imported` arrives as it was (`io::transfer`), and the
+/// same buffer cut short anywhere is refused, never decoded into something else.
+fn assert_crosses_unchanged(imported: &Imported, file: &str) {
+    let bytes = encode_imported(imported);
+    let arrived = decode_imported(&bytes).unwrap_or_else(|e| panic!("{file}: {e}"));
+    assert_eq!(arrived.models, imported.models, "{file}");
+    assert_eq!(arrived.sketches, imported.sketches, "{file}");
+    assert_eq!(arrived.point_clouds, imported.point_clouds, "{file}");
+    assert_eq!(arrived.notes, imported.notes, "{file}");
+    for cut in [0, 7, bytes.len() / 3, bytes.len() - 1] {
+        assert!(
+            decode_imported(&bytes[..cut]).is_err(),
+            "{file} cut at {cut}"
+        );
+    }
 }
 
 fn walk(dir: &Path) -> Vec<PathBuf> {

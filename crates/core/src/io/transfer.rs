@@ -1,0 +1,342 @@
+//! An import's result as one flat buffer, to move it from the wasm instance that computed it
+//! (the page's worker) to the one that shows it.
+//!
+//! Why not serde: the buffer is decoded on the page's main thread, where every millisecond is
+//! a frame's. A million-triangle import is about 60 MB of arrays; element-wise formats
+//! (postcard, bincode) decode them one number at a time, several times slower than the
+//! bulk copies ([`bytemuck::pod_collect_to_vec`]) used here, which run at memory speed.
+//!
+//! Not a file format: both ends are the same build of this crate (the page loads one wasm
+//! file into both instances), so the layout is whatever this file writes, in the machine's
+//! byte order, with no version. A buffer that is cut short or inconsistent is still refused
+//! with a [`TransferError`], never trusted into a broken mesh.
+
+use std::sync::Arc;
+
+use bytemuck::Pod;
+use glam::DVec3;
+
+use super::import::Imported;
+use crate::fibermesh::{ControlCurve, CurveKind};
+use crate::mesh::{Mesh, MeshParts, TriSoup, VertexId};
+use crate::model::{
+    AlphaMode, Appearance, AsImported, Image, Keyframe, Material, Model, PointCloud, SketchCurve,
+    Texture,
+};
+
+/// A buffer that does not decode: cut short, or arrays that do not fit together.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("The worker's result could not be read ({0}).")]
+pub struct TransferError(&'static str);
+
+/// `imported` as one buffer for [`decode_imported`].
+pub fn encode_imported(imported: &Imported) -> Vec<u8> {
+    let mut out = Writer::default();
+    out.seq(&imported.models, Writer::model);
+    out.seq(&imported.sketches, |out, sketch| {
+        out.pods(&sketch.points);
+        out.pods(&sketch.pressures);
+    });
+    out.seq(&imported.point_clouds, |out, cloud| {
+        out.pods(&cloud.positions);
+        out.option(cloud.colors.as_deref(), Writer::pods);
+    });
+    out.seq(&imported.notes, |out, note| out.text(note));
+    out.bytes
+}
+
+/// The import [`encode_imported`] wrote.
+///
+/// Errors: [`TransferError`] when the buffer is not one it wrote.
+pub fn decode_imported(bytes: &[u8]) -> Result<Imported, TransferError> {
+    let mut input = Reader { bytes };
+    let imported = Imported {
+        models: input.seq(Reader::model)?,
+        sketches: input.seq(|input| {
+            Ok(SketchCurve {
+                points: input.pods()?,
+                pressures: input.pods()?,
+            })
+        })?,
+        point_clouds: input.seq(|input| {
+            Ok(PointCloud {
+                positions: input.pods()?,
+                colors: input.option(Reader::pods)?,
+            })
+        })?,
+        notes: input.seq(Reader::text)?,
+    };
+    if !input.bytes.is_empty() {
+        return Err(TransferError("bytes left over"));
+    }
+    Ok(imported)
+}
+
+#[derive(Default)]
+struct Writer {
+    bytes: Vec<u8>,
+}
+
+impl Writer {
+    fn count(&mut self, n: usize) {
+        self.bytes.extend_from_slice(&(n as u64).to_ne_bytes());
+    }
+
+    fn pod<T: Pod>(&mut self, value: T) {
+        self.bytes.extend_from_slice(bytemuck::bytes_of(&value));
+    }
+
+    fn pods<T: Pod>(&mut self, values: &[T]) {
+        self.count(values.len());
+        self.bytes.extend_from_slice(bytemuck::cast_slice(values));
+    }
+
+    fn text(&mut self, text: &str) {
+        self.pods(text.as_bytes());
+    }
+
+    fn seq<T>(&mut self, items: &[T], mut each: impl FnMut(&mut Self, &T)) {
+        self.count(items.len());
+        for item in items {
+            each(self, item);
+        }
+    }
+
+    fn option<T: ?Sized>(&mut self, value: Option<&T>, each: impl FnOnce(&mut Self, &T)) {
+        self.pod(u8::from(value.is_some()));
+        if let Some(value) = value {
+            each(self, value);
+        }
+    }
+
+    fn model(&mut self, model: &Model) {
+        self.mesh(&model.mesh);
+        self.seq(&model.curves, |out, curve| {
+            let vertices: Vec<u32> = curve.vertices.iter().map(|v| v.0).collect();
+            out.pods(&vertices);
+            out.pod(u8::from(curve.is_closed));
+            out.pod(u8::from(curve.kind == CurveKind::Sharp));
+        });
+        self.option(model.name.as_deref(), Self::text);
+        self.option(model.appearance.as_deref(), Self::appearance);
+        self.option(model.as_imported.as_deref(), |out, as_imported| {
+            out.pods(&as_imported.soup.positions);
+            out.pods(&as_imported.soup.triangles);
+            out.pods(&as_imported.vertex_source);
+            out.pods(&as_imported.mesh_triangles);
+            out.option(as_imported.appearance.as_deref(), Self::appearance);
+        });
+        self.seq(&model.keyframes, |out, keyframe| {
+            out.pod(keyframe.time);
+            out.pods(&keyframe.positions);
+        });
+    }
+
+    fn mesh(&mut self, mesh: &Mesh) {
+        let parts = mesh.parts();
+        self.pods(parts.positions);
+        self.pods(parts.triangles);
+        self.pods(parts.twin);
+        self.pods(parts.vertex_halfedge);
+        self.pod(parts.n_dead_vertices);
+        self.pod(parts.n_dead_faces);
+    }
+
+    fn appearance(&mut self, appearance: &Appearance) {
+        self.pods(&appearance.triangles);
+        self.pod(appearance.positions_hash);
+        self.option(appearance.normals.as_deref(), Self::pods);
+        self.option(appearance.uvs.as_deref(), Self::pods);
+        self.option(appearance.colors.as_deref(), Self::pods);
+        let face_materials: Vec<u32> = (appearance.face_materials.iter())
+            .map(|m| m.unwrap_or(u32::MAX))
+            .collect();
+        self.pods(&face_materials);
+        self.seq(&appearance.materials, Self::material);
+    }
+
+    fn material(&mut self, material: &Material) {
+        self.option(material.name.as_deref(), Self::text);
+        self.pod(material.base_color);
+        self.option(material.base_color_texture.as_ref(), |out, texture| {
+            out.text(&texture.image.mime_type);
+            out.pods(&texture.image.bytes);
+            out.pod(texture.mag_filter.unwrap_or(u32::MAX));
+            out.pod(texture.min_filter.unwrap_or(u32::MAX));
+            out.pod(texture.wrap);
+        });
+        self.pod(material.metallic);
+        self.pod(material.roughness);
+        self.pod(material.emissive);
+        self.pod(u8::from(material.double_sided));
+        let (mode, cutoff) = match material.alpha_mode {
+            AlphaMode::Opaque => (0u8, 0.0),
+            AlphaMode::Mask(cutoff) => (1, cutoff),
+            AlphaMode::Blend => (2, 0.0),
+        };
+        self.pod(mode);
+        self.pod(cutoff);
+    }
+}
+
+struct Reader<'a> {
+    bytes: &'a [u8],
+}
+
+impl Reader<'_> {
+    fn take(&mut self, n: usize) -> Result<&[u8], TransferError> {
+        if n > self.bytes.len() {
+            return Err(TransferError("cut short"));
+        }
+        let (taken, rest) = self.bytes.split_at(n);
+        self.bytes = rest;
+        Ok(taken)
+    }
+
+    fn count(&mut self) -> Result<usize, TransferError> {
+        let n: u64 = self.pod()?;
+        usize::try_from(n).map_err(|_| TransferError("a length out of range"))
+    }
+
+    fn pod<T: Pod>(&mut self) -> Result<T, TransferError> {
+        Ok(bytemuck::pod_read_unaligned(self.take(size_of::<T>())?))
+    }
+
+    fn pods<T: Pod>(&mut self) -> Result<Vec<T>, TransferError> {
+        let n = self.count()?;
+        let size = n
+            .checked_mul(size_of::<T>())
+            .ok_or(TransferError("a length out of range"))?;
+        Ok(bytemuck::pod_collect_to_vec(self.take(size)?))
+    }
+
+    fn flag(&mut self) -> Result<bool, TransferError> {
+        match self.pod::<u8>()? {
+            0 => Ok(false),
+            1 => Ok(true),
+            _ => Err(TransferError("a flag that is neither 0 nor 1")),
+        }
+    }
+
+    fn text(&mut self) -> Result<String, TransferError> {
+        String::from_utf8(self.pods()?).map_err(|_| TransferError("text that is not UTF-8"))
+    }
+
+    fn seq<T>(
+        &mut self,
+        mut each: impl FnMut(&mut Self) -> Result<T, TransferError>,
+    ) -> Result<Vec<T>, TransferError> {
+        let n = self.count()?;
+        // Every item takes at least one byte, so a corrupt count cannot reserve gigabytes.
+        let mut items = Vec::with_capacity(n.min(self.bytes.len()));
+        for _ in 0..n {
+            items.push(each(self)?);
+        }
+        Ok(items)
+    }
+
+    fn option<T>(
+        &mut self,
+        each: impl FnOnce(&mut Self) -> Result<T, TransferError>,
+    ) -> Result<Option<T>, TransferError> {
+        self.flag()?.then(|| each(self)).transpose()
+    }
+
+    fn model(&mut self) -> Result<Model, TransferError> {
+        let mesh = self.mesh()?;
+        let curves = self.seq(|input| {
+            let vertices: Vec<u32> = input.pods()?;
+            Ok(ControlCurve {
+                vertices: vertices.into_iter().map(VertexId).collect(),
+                is_closed: input.flag()?,
+                kind: if input.flag()? {
+                    CurveKind::Sharp
+                } else {
+                    CurveKind::Smooth
+                },
+            })
+        })?;
+        let n = mesh.n_vertices();
+        if (curves.iter().flat_map(|c| &c.vertices)).any(|v| v.index() >= n) {
+            return Err(TransferError("a curve off its mesh"));
+        }
+        Ok(Model {
+            mesh,
+            curves,
+            name: self.option(Self::text)?,
+            appearance: self.option(Self::appearance)?.map(Arc::new),
+            as_imported: self.option(|input| {
+                Ok(Arc::new(AsImported {
+                    soup: TriSoup {
+                        positions: input.pods()?,
+                        triangles: input.pods()?,
+                    },
+                    vertex_source: input.pods()?,
+                    mesh_triangles: input.pods()?,
+                    appearance: input.option(Self::appearance)?.map(Arc::new),
+                }))
+            })?,
+            keyframes: self.seq(|input| {
+                Ok(Keyframe {
+                    time: input.pod()?,
+                    positions: Arc::new(input.pods()?),
+                })
+            })?,
+        })
+    }
+
+    fn mesh(&mut self) -> Result<Mesh, TransferError> {
+        let parts = MeshParts {
+            positions: self.pods::<DVec3>()?,
+            triangles: self.pods()?,
+            twin: self.pods()?,
+            vertex_halfedge: self.pods()?,
+            n_dead_vertices: self.pod()?,
+            n_dead_faces: self.pod()?,
+        };
+        Mesh::from_parts(parts).map_err(|_| TransferError("a mesh whose arrays do not fit"))
+    }
+
+    fn appearance(&mut self) -> Result<Appearance, TransferError> {
+        Ok(Appearance {
+            triangles: self.pods()?,
+            positions_hash: self.pod()?,
+            normals: self.option(Self::pods)?,
+            uvs: self.option(Self::pods)?,
+            colors: self.option(Self::pods)?,
+            face_materials: (self.pods::<u32>()?.into_iter())
+                .map(|m| (m != u32::MAX).then_some(m))
+                .collect(),
+            materials: self.seq(Self::material)?,
+        })
+    }
+
+    fn material(&mut self) -> Result<Material, TransferError> {
+        let optional = |code: u32| (code != u32::MAX).then_some(code);
+        Ok(Material {
+            name: self.option(Self::text)?,
+            base_color: self.pod()?,
+            base_color_texture: self.option(|input| {
+                Ok(Texture {
+                    image: Arc::new(Image {
+                        mime_type: input.text()?,
+                        bytes: input.pods()?,
+                    }),
+                    mag_filter: optional(input.pod()?),
+                    min_filter: optional(input.pod()?),
+                    wrap: input.pod()?,
+                })
+            })?,
+            metallic: self.pod()?,
+            roughness: self.pod()?,
+            emissive: self.pod()?,
+            double_sided: self.flag()?,
+            alpha_mode: match (self.pod::<u8>()?, self.pod::<f32>()?) {
+                (0, _) => AlphaMode::Opaque,
+                (1, cutoff) => AlphaMode::Mask(cutoff),
+                (2, _) => AlphaMode::Blend,
+                _ => return Err(TransferError("an unknown alpha mode")),
+            },
+        })
+    }
+}

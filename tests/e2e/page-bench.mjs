@@ -218,7 +218,7 @@ try {
   await page.evaluate(GRID_GLB_SOURCE);
   const imported = await page.evaluate(async (n) => {
     const glb = window.gridGlb(n);
-    window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
+    await window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
     const started = performance.now();
     const landed = window.sketchmesh.loadGlb(glb, 'grid.glb');
     const returnedMs = performance.now() - started;
@@ -238,7 +238,7 @@ try {
   for (const path of (process.env.SKETCHMESH_PULL_FIXTURES ?? '').split(',').filter(Boolean)) {
     const bytes = [...readFileSync(path)];
     const vertices = await page.evaluate(async (data) => {
-      window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
+      await window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
       await window.sketchmesh.loadGlb(new Uint8Array(data), 'fixture.glb');
       window.sketchmesh.timings();
       return window.sketchmesh.stats().vertices;
@@ -373,9 +373,9 @@ try {
     const ops = JSON.parse(await api(page, 'session')).ops;
     const half = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1.8 - 1.2 * 3.59, 0, 0, 1];
     const prefix = [ops[0], { op: 'duplicate', model: 0 }, { op: 'transform', model: 1, matrix: half }];
-    const replayMs = (list) => page.evaluate((text) => {
+    const replayMs = (list) => page.evaluate(async (text) => {
       const start = performance.now();
-      window.sketchmesh.replay(text);
+      await window.sketchmesh.replay(text);
       return performance.now() - start;
     }, JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: list }));
     const withoutMerge = await replayMs(prefix);
@@ -406,7 +406,7 @@ try {
   const torusPath = process.env.SKETCHMESH_OVERSKETCH_FIXTURE;
   if (torusPath) {
     const vertices = await page.evaluate(async (data) => {
-      window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
+      await window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
       await window.sketchmesh.loadGlb(new Uint8Array(data), 'bumpy-torus.glb');
       window.sketchmesh.timings();
       return window.sketchmesh.stats().vertices;
@@ -488,7 +488,7 @@ try {
   const scanPath = process.env.SKETCHMESH_OPTIMIZE_FIXTURE;
   if (scanPath && existsSync(scanPath)) {
     const vertices = await page.evaluate(async (data) => {
-      window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
+      await window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
       await window.sketchmesh.loadGlb(new Uint8Array(data), 'bunny.glb');
       window.sketchmesh.timings();
       return window.sketchmesh.stats().vertices;
@@ -543,7 +543,7 @@ try {
    */
   const bunnyWith = async (key) => {
     await page.evaluate(async (data) => {
-      window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
+      await window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
       await window.sketchmesh.loadGlb(new Uint8Array(data), 'bunny.glb');
       window.sketchmesh.timings();
     }, [...readFileSync(scanPath)]);
@@ -644,7 +644,7 @@ try {
       const text = atob(base64);
       const data = new Uint8Array(text.length);
       for (let i = 0; i < text.length; i++) data[i] = text.charCodeAt(i);
-      window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
+      await window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
       await window.sketchmesh.loadGlb(data, 'bar.glb');
       window.sketchmesh.timings();
     }, readFileSync(barPath).toString('base64'));
@@ -679,7 +679,7 @@ try {
   const capsulePath = process.env.SKETCHMESH_POSE_FIXTURE;
   if (capsulePath && existsSync(capsulePath)) {
     await page.evaluate(async (bytes) => {
-      window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
+      await window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
       await window.sketchmesh.loadGlb(new Uint8Array(bytes), 'capsule.glb');
       window.sketchmesh.timings();
     }, [...readFileSync(capsulePath)]);

@@ -15,7 +15,7 @@ import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 import {
-  EXPECTED_BACKEND, OUT_DIR, api, camera, cameraDistance, changedFraction, distinctColours, frames,
+  EXPECTED_BACKEND, GRID_GLB_SOURCE, OUT_DIR, api, camera, cameraDistance, changedFraction, distinctColours, frames,
   imageChangedFraction, launch, line, maxDiffNear, nonBackgroundFraction, openApp, penStroke, screenshot,
   serveDirectory, settings, sleep, touchGesture, touchTap,
 } from './lib.mjs';
@@ -304,24 +304,31 @@ test('exportGlb() returns a GLB (glTF magic, version 2, consistent length)', asy
   console.log(`    ${bytes.length} bytes -> ${out('export.glb')}`);
 });
 
-test('replay(session()) reproduces the stats; malformed JSON throws and changes nothing', async () => {
+test('replay(session()) reproduces the stats; malformed JSON is refused (the Promise rejects) and changes nothing', async () => {
   const stats = await api(app.page, 'stats');
   const session = await api(app.page, 'session');
   assert.ok(stats.curves >= 2, 'the session has strokes to replay');
-  await app.page.evaluate((s) => window.sketchmesh.replay(s), session);
+  const returnedMs = await app.page.evaluate(async (s) => {
+    const started = performance.now();
+    const replayed = window.sketchmesh.replay(s);
+    const ms = performance.now() - started;
+    await replayed;
+    return ms;
+  }, session);
+  assert.ok(returnedMs < 50, `replay returns within 50 ms, its Promise resolving later: ${returnedMs.toFixed(1)} ms`);
   await expectStats(app.page, stats, 'replaying the session rebuilds the same document');
   assert.equal(await api(app.page, 'session'), session, 'the replayed session logs the same ops');
 
   for (const bad of ['{"format":"sketchmesh-session","version":1,"ops":[', '{"format":"nope"}', '[1,2']) {
-    const message = await app.page.evaluate((s) => {
+    const message = await app.page.evaluate(async (s) => {
       try {
-        window.sketchmesh.replay(s);
+        await window.sketchmesh.replay(s);
         return null;
       } catch (e) {
         return e instanceof Error ? e.message : `non-Error: ${String(e)}`;
       }
     }, bad);
-    assert.ok(message, `replay(${JSON.stringify(bad)}) must throw`);
+    assert.ok(message, `replay(${JSON.stringify(bad)}) must reject`);
     assert.ok(message.length > 5 && !message.startsWith('non-Error'), `a useful Error message, got ${message}`);
     await expectStats(app.page, stats, 'a failed replay leaves the document unchanged');
   }
@@ -755,7 +762,7 @@ test('a dropped .glb imports and is framed; Export downloads a valid file; bad f
 
     // The same bytes through the page API, into a fresh document, give the same model.
     const reloaded = await fresh.page.evaluate(async (bytes) => {
-      window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
+      await window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] }));
       await window.sketchmesh.loadGlb(new Uint8Array(bytes), 'again.glb');
       return window.sketchmesh.stats();
     }, Array.from(downloaded));
@@ -2006,6 +2013,89 @@ test('offline: after one visit, with the server stopped, a reload opens the app 
     await visit.context.close();
     await server.close();
     rmSync(site, { recursive: true, force: true });
+  }
+});
+
+/** A right-button drag across the view: an orbit, as a mouse user does it. */
+async function orbitDrag(cdp, from = { x: 640, y: 420 }, dx = 240, steps = 12) {
+  const at = (i) => ({ x: from.x + (dx * i) / steps, y: from.y });
+  await cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', ...from, button: 'right', buttons: 2, clickCount: 1 });
+  for (let i = 1; i <= steps; i++) {
+    await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', ...at(i), button: 'right', buttons: 2 });
+    await sleep(16);
+  }
+  await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', ...at(steps), button: 'right', buttons: 0, clickCount: 1 });
+}
+
+test('a 1 M-triangle import runs off the frame: loadGlb returns at once, frames stay short, an orbit turns the view meanwhile, Escape cancels and changes nothing', async () => {
+  const fresh = await openApp(browser, url, gpu);
+  try {
+    const { page, cdp } = fresh;
+    await page.evaluate(GRID_GLB_SOURCE);
+    // Every animation frame's interval: a frame the page could not draw shows as a long one.
+    await page.evaluate(() => {
+      window.__glb = window.gridGlb(708);
+      window.__frames = { on: false, list: [] };
+      let last = performance.now();
+      const tick = (t) => {
+        if (window.__frames.on) window.__frames.list.push(t - last);
+        last = t;
+        requestAnimationFrame(tick);
+      };
+      requestAnimationFrame(tick);
+    });
+    const record = (on) => page.evaluate((on) => {
+      const f = window.__frames;
+      f.on = on;
+      if (on) f.list = [];
+      return Math.max(0, ...f.list);
+    }, on);
+    // The same scene without the work: an orbit of the empty view.
+    await record(true);
+    await orbitDrag(cdp);
+    await sleep(200);
+    const idleLongest = await record(false);
+
+    const before = await camera(page);
+    await record(true);
+    const returnedMs = await page.evaluate(() => {
+      const started = performance.now();
+      window.__landed = null;
+      window.sketchmesh.loadGlb(window.__glb, 'grid.glb').then(
+        () => { window.__landed = { at: performance.now() }; },
+        (e) => { window.__landed = { error: e.message }; });
+      return performance.now() - started;
+    });
+    await sleep(40);
+    await orbitDrag(cdp);
+    const turned = await camera(page);
+    const midWork = await page.evaluate(() => window.__landed === null);
+    await screenshot(page, out('import-progress.png'));
+    const workLongest = await until(() => page.evaluate(() => window.__landed), (l) => l !== null, 60_000)
+      .then(() => record(false));
+    const landed = await page.evaluate(() => window.__landed);
+    assert.ok(!landed.error, `the import lands: ${landed.error}`);
+    const stats = await api(page, 'stats');
+    assert.equal(stats.triangles, 1_002_528, 'the grid is in the document');
+    assert.equal(await api(page, 'opCount'), 1, 'as one op');
+    assert.ok(returnedMs < 50, `loadGlb returns within 50 ms: ${returnedMs.toFixed(1)} ms`);
+    assert.ok(midWork, 'the orbit ended before the import landed (the work was still running)');
+    assert.ok(Math.hypot(...turned.eye.map((e, i) => e - before.eye[i])) > 1e-3, `an orbit during the work turns the view: ${before.eye} -> ${turned.eye}`);
+    const limit = 1.5 * idleLongest + 50;
+    console.log(`    # longest frame: ${idleLongest.toFixed(0)} ms without the work, ${workLongest.toFixed(0)} ms while the worker read 1 M triangles (limit ${limit.toFixed(0)})`);
+    assert.ok(workLongest <= limit, `no frame stalls while the worker reads: ${workLongest.toFixed(0)} ms > ${limit.toFixed(0)} ms`);
+
+    // Escape while a second import is read: it is refused as cancelled, nothing changes.
+    const rejected = page.evaluate(() => window.sketchmesh.loadGlb(window.__glb, 'again.glb').then(() => null, (e) => e.message));
+    await sleep(150);
+    await page.keyboard.press('Escape');
+    assert.equal(await rejected, 'The import was cancelled.', 'the Promise rejects with the sentence');
+    await sleep(500);
+    assert.deepEqual(await api(page, 'stats'), stats, 'a cancelled import leaves the document as it was');
+    assert.equal(await api(page, 'opCount'), 1, 'and the session too');
+    assert.deepEqual(fresh.errors, [], 'console errors while importing');
+  } finally {
+    await fresh.context.close();
   }
 });
 

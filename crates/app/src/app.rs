@@ -15,8 +15,8 @@ use eframe::egui_wgpu;
 use egui::{Key, KeyboardShortcut, Modifiers};
 use sketchmesh_core::curve::{StrokePoint, process_stroke};
 use sketchmesh_core::document::{
-    Document, Edit, Editor, GizmoHandle, ImportInput, ModelInput, Op, Progress, StrokeInput,
-    model_under,
+    Document, Edit, Editor, GizmoHandle, ImportInput, ModelInput, Op, Progress, Replay, Session,
+    StrokeInput, model_under,
 };
 use sketchmesh_core::feature::FeatureKind;
 use sketchmesh_core::optimize::quality_report;
@@ -30,7 +30,7 @@ use crate::files::{self, ImportQueue};
 use crate::input::router::{Hands, InputRouter, Routed};
 use crate::input::taps::TapCommand;
 use crate::input::{PointerSample, sample_clock};
-use crate::offload::{Offload, Poll};
+use crate::offload::{JobId, Offload, Poll};
 use crate::panels;
 use crate::panels::context_menu::{ContextAction, ContextMenu, context_menu_ui};
 use crate::playback::Playback;
@@ -135,6 +135,9 @@ pub struct SketchApp {
     offload: Offload,
     /// The import the edit in progress is, if it is one.
     import: Option<ImportInProgress>,
+    /// A session being replayed over frames (the page API's `replay`), to replace the
+    /// document once it is through.
+    replay: Option<ReplayInProgress>,
     /// How many edits were begun: tells apart the documents of two edits of equal revision.
     edits_begun: u64,
     /// The fall-off panel's painted disc, kept between frames.
@@ -224,6 +227,7 @@ impl SketchApp {
             edit: None,
             offload: Offload::default(),
             import: None,
+            replay: None,
             edits_begun: 0,
             falloff_panel: Default::default(),
             is_edit_new: false,
@@ -300,8 +304,8 @@ impl SketchApp {
             ctx.request_repaint();
             return;
         }
-        if let Some(input) = edit.import_to_read() {
-            match self.offload.poll(self.edits_begun, input) {
+        if let (Some(input), Some(import)) = (edit.import_to_read(), &self.import) {
+            match self.offload.poll(import.job, input) {
                 // The worker's answer repaints.
                 Poll::Pending => return,
                 Poll::Arrived(imported) => edit.supply_import(imported),
@@ -341,7 +345,9 @@ impl SketchApp {
             return;
         };
         // The worker's answer would come too late: the import is finished here.
-        self.offload.cancel();
+        if let Some(import) = &self.import {
+            self.offload.cancel(import.job);
+        }
         let models_before = self.shared.borrow().editor.document().models.len();
         let optimized = match edit.op() {
             Op::Optimize(input) => self
@@ -392,6 +398,7 @@ impl SketchApp {
     /// worker is reading: nothing changes.
     fn drop_gesture(&mut self, now: f64) {
         self.cancel_import(now);
+        self.cancel_replay(now);
         self.cancel_gesture();
         let dropped = self.tools.cancel();
         self.take_output(dropped, now);
@@ -399,10 +406,10 @@ impl SketchApp {
 
     /// Drops the import in progress, if the edit in progress is one: nothing changes.
     fn cancel_import(&mut self, now: f64) {
-        if self.import.is_none() {
+        let Some(import) = &self.import else {
             return;
-        }
-        self.offload.cancel();
+        };
+        self.offload.cancel(import.job);
         self.edit = None;
         self.settle_import(Err(String::from("The import was cancelled.")), now);
     }
@@ -571,13 +578,21 @@ impl SketchApp {
         if let Some(message) = self.backdrop.poll(ctx) {
             self.set_status(message, now);
         }
+        if self.replay.is_some() {
+            // What comes next applies to the replayed document: it waits for it.
+            return;
+        }
         if let Some(incoming) = self.announced_import.take() {
             match incoming {
                 files::Incoming::Import(input, reply) => self.begin_import(input, reply, now),
                 files::Incoming::Session { name, bytes } => self.open_session(&name, bytes, now),
+                files::Incoming::Replay(json, reply) => self.begin_replay(&json, reply, now),
             }
         }
-        if let Some(incoming) = imports.borrow_mut().pop_front() {
+        let incoming = imports.borrow_mut().pop_front();
+        if let Some(files::Incoming::Replay(json, reply)) = incoming {
+            self.begin_replay(&json, reply, now);
+        } else if let Some(incoming) = incoming {
             let (name, bytes): (&str, usize) = match &incoming {
                 files::Incoming::Import(input, _) => (
                     &input.files[0].name,
@@ -587,12 +602,98 @@ impl SketchApp {
                         .sum(),
                 ),
                 files::Incoming::Session { name, bytes } => (name, bytes.len()),
+                files::Incoming::Replay(json, _) => ("the session", json.len()),
             };
             let what = format!("Opening {name} ({:.1} MB)…", bytes as f64 / 1e6);
             self.set_status(what, now);
             self.announced_import = Some(incoming);
             ctx.request_repaint();
         }
+    }
+
+    /// Begins replaying a session (the page API's `replay`): parsed now, its ops applied over
+    /// the next frames (an import's files read by the worker), the document replaced once
+    /// it is through. Bad JSON or a refused op changes nothing.
+    fn begin_replay(&mut self, json: &str, reply: files::Reply, now: f64) {
+        match Session::from_json(json) {
+            Ok(session) => {
+                self.replay = Some(ReplayInProgress {
+                    replay: Replay::new(session.ops),
+                    job: None,
+                    reply,
+                });
+            }
+            Err(e) => {
+                self.set_status(e.to_string(), now);
+                reply.send(Err(e.to_string()));
+            }
+        }
+    }
+
+    /// Runs the replay's steps while [`FRAME_BUDGET_MS`] lasts, and opens its document once
+    /// it is through.
+    fn step_replay(&mut self, ctx: &egui::Context) {
+        let now = ctx.input(|i| i.time);
+        let Some(replaying) = self.replay.as_mut() else {
+            return;
+        };
+        let started = clock::now_ms();
+        let stepped = loop {
+            let (index, _) = replaying.replay.done_of();
+            if let Some(edit) = replaying.replay.edit_mut()
+                && let Some(input) = edit.import_to_read().cloned()
+            {
+                let job = match replaying.job {
+                    Some((at, job)) if at == index => job,
+                    _ => replaying.job.insert((index, self.offload.job())).1,
+                };
+                match self.offload.poll(job, &input) {
+                    Poll::Pending => break Ok(false),
+                    Poll::Arrived(imported) => edit.supply_import(imported),
+                    Poll::NotOffloaded => {}
+                }
+            }
+            match replaying.replay.step() {
+                Ok(Progress::Done) => break Ok(true),
+                Ok(_) if clock::now_ms() - started < FRAME_BUDGET_MS => {}
+                Ok(_) => {
+                    ctx.request_repaint();
+                    break Ok(false);
+                }
+                Err(e) => break Err(e),
+            }
+        };
+        match stepped {
+            Ok(false) => {}
+            Ok(true) => {
+                if let Some(replaying) = self.replay.take() {
+                    self.shared
+                        .borrow_mut()
+                        .open(replaying.replay.into_editor());
+                    replaying.reply.send(Ok(()));
+                }
+                ctx.request_repaint();
+            }
+            Err(e) => {
+                if let Some(replaying) = self.replay.take() {
+                    replaying.reply.send(Err(e.to_string()));
+                }
+                self.set_status(format!("Could not replay the session: {e}"), now);
+            }
+        }
+    }
+
+    /// Drops the replay in progress: the document stays as it was.
+    fn cancel_replay(&mut self, now: f64) {
+        let Some(replaying) = self.replay.take() else {
+            return;
+        };
+        if let Some((_, job)) = replaying.job {
+            self.offload.cancel(job);
+        }
+        let why = String::from("The replay was cancelled.");
+        self.set_status(why.clone(), now);
+        replaying.reply.send(Err(why));
     }
 
     /// Begins importing: in the page the worker reads the files while the view keeps
@@ -610,6 +711,7 @@ impl SketchApp {
             return reply.send(Err(why.unwrap_or_default()));
         }
         self.import = Some(ImportInProgress {
+            job: self.offload.job(),
             name,
             megabytes: bytes as f64 / 1e6,
             reply,
@@ -989,6 +1091,7 @@ impl SketchApp {
             }
         }
         self.step_edit(ui.ctx());
+        self.step_replay(ui.ctx());
         let shared = self.shared.borrow();
         let shown = (self.edit.as_ref()).map_or(shared.editor.document(), Edit::document);
         self.textures.poll(shown, ui.ctx());
@@ -1037,6 +1140,13 @@ impl SketchApp {
                 let now = ui.input(|i| i.time);
                 self.cancel_import(now);
             }
+        } else if let Some(replaying) = &self.replay {
+            let (done, of) = replaying.replay.done_of();
+            let what = format!("Replaying the session: op {} of {of}…", (done + 1).min(of));
+            if panels::progress::progress_ui(ui.ctx(), viewport, &what) {
+                let now = ui.input(|i| i.time);
+                self.cancel_replay(now);
+            }
         } else if let Some((status, _)) = &self.status {
             status_ui(ui, viewport, status);
         } else if self.shared.borrow().editor.document().is_empty() && idle {
@@ -1066,7 +1176,15 @@ impl SketchApp {
             let shared = self.shared.borrow();
             let document = edit.map_or(shared.editor.document(), Edit::document);
             let generation = self.geometry.generation + 1;
+            let started = clock::now_ms();
             self.geometry = Arc::new(SceneGeometry::build(document, generation, &self.textures));
+            // What a new document costs the frame before the GPU sees it (the page bench).
+            let ms = clock::now_ms() - started;
+            drop(shared);
+            clock::record(
+                &mut self.shared.borrow_mut().timings.of("scene").frame_ms,
+                ms,
+            );
             self.geometry_source = source;
             self.shown_motion = None;
         }
@@ -1569,8 +1687,17 @@ impl eframe::App for SketchApp {
 /// An import being read (in the page, by the worker): what the progress line says, and who
 /// waits for it to land.
 struct ImportInProgress {
+    job: JobId,
     name: String,
     megabytes: f64,
+    reply: files::Reply,
+}
+
+/// A session being replayed over frames: its steps, the worker's job for the import in
+/// progress (with that op's position), and who waits for the result.
+struct ReplayInProgress {
+    replay: Replay,
+    job: Option<(usize, JobId)>,
     reply: files::Reply,
 }
 

@@ -20,6 +20,9 @@ pub type ImportQueue = Rc<RefCell<VecDeque<Incoming>>>;
 pub enum Incoming {
     /// glTF files to import into the document, and who waits to hear how it went.
     Import(ImportInput, Reply),
+    /// A session (JSON) to replay in place of the document (the page API's `replay`), and
+    /// who waits to hear how it went.
+    Replay(String, Reply),
     /// A session file (`.json`) to open in place of the document.
     Session {
         /// The file's name.

@@ -30,11 +30,17 @@ pub enum Poll {
     Arrived(Result<Imported, CommandError>),
 }
 
+/// One piece of work for the worker: the import of one edit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct JobId(u64);
+
 /// The page's worker and the job it runs (none natively).
 #[derive(Default)]
 pub struct Offload {
     #[cfg(target_arch = "wasm32")]
     worker: Option<page::Worker>,
+    /// How many jobs were handed out.
+    jobs: u64,
 }
 
 impl Offload {
@@ -45,7 +51,7 @@ impl Offload {
             let worker = page::Worker::spawn(ctx.clone())
                 .inspect_err(|why| log::warn!("No worker, imports run in the frame: {why}"))
                 .ok();
-            Offload { worker }
+            Offload { worker, jobs: 0 }
         }
         #[cfg(not(target_arch = "wasm32"))]
         {
@@ -54,32 +60,32 @@ impl Offload {
         }
     }
 
-    /// Sends job `id`'s files to the worker the first time it is asked about them, and says
-    /// whether the answer is there.
-    pub fn poll(&mut self, id: u64, input: &ImportInput) -> Poll {
+    /// A new job's id.
+    pub fn job(&mut self) -> JobId {
+        self.jobs += 1;
+        JobId(self.jobs)
+    }
+
+    /// Sends `job`'s files to the worker the first time it is asked about them, and says
+    /// whether the answer is there. While the worker runs another job, this one is not
+    /// offloaded (it runs in the frame).
+    pub fn poll(&mut self, job: JobId, input: &ImportInput) -> Poll {
         #[cfg(target_arch = "wasm32")]
         if let Some(worker) = self.worker.as_mut() {
-            return worker.poll(id, input);
+            return worker.poll(job.0, input);
         }
-        let _ = (id, input);
+        let _ = (job, input);
         Poll::NotOffloaded
     }
 
-    /// Whether a job is with the worker: what the progress line and Cancel show.
-    pub fn is_busy(&self) -> bool {
-        #[cfg(target_arch = "wasm32")]
-        if let Some(worker) = &self.worker {
-            return worker.is_busy();
-        }
-        false
-    }
-
-    /// Stops the job in hand (the worker is replaced, so the cores are free at once).
-    pub fn cancel(&mut self) {
+    /// Stops `job` if the worker runs it (the worker is replaced, so the cores are free at
+    /// once).
+    pub fn cancel(&mut self, job: JobId) {
         #[cfg(target_arch = "wasm32")]
         if let Some(worker) = self.worker.as_mut() {
-            worker.cancel();
+            worker.cancel(job.0);
         }
+        let _ = job;
     }
 }
 
@@ -156,11 +162,10 @@ mod page {
             if *self.broken.borrow() {
                 return Poll::NotOffloaded;
             }
-            if self.sent != Some(id) {
-                if self.sent.is_some() {
-                    // The worker is busy with a job nobody waits for any more.
-                    self.cancel();
-                }
+            if self.sent.is_some_and(|sent| sent != id) {
+                return Poll::NotOffloaded;
+            }
+            if self.sent.is_none() {
                 if let Err(why) = self.send(id, &input.files) {
                     log::warn!("Could not hand the import to the worker: {why:?}");
                     return Poll::NotOffloaded;
@@ -177,12 +182,8 @@ mod page {
             }))
         }
 
-        pub(super) fn is_busy(&self) -> bool {
-            self.sent.is_some() && !*self.broken.borrow()
-        }
-
-        pub(super) fn cancel(&mut self) {
-            if self.sent.take().is_none() {
+        pub(super) fn cancel(&mut self, id: u64) {
+            if self.sent != Some(id) {
                 return;
             }
             self.worker.terminate();

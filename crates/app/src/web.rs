@@ -128,12 +128,16 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
     let (s, c) = (shared.clone(), ctx.clone());
     set(
         "replay",
-        Closure::<dyn Fn(String) -> Result<(), JsValue>>::new(move |session: String| {
-            let editor = sketchmesh_core::document::Editor::replay_json(&session)
-                .map_err(|e| js_error(&e.to_string()))?;
-            s.borrow_mut().open(editor);
+        Closure::<dyn Fn(String) -> js_sys::Promise>::new(move |session: String| {
+            let imports = s.borrow().imports.clone();
             c.request_repaint();
-            Ok(())
+            let mut session = Some(session);
+            promise_of(&mut |reply| {
+                if let Some(session) = session.take() {
+                    let incoming = crate::files::Incoming::Replay(session, reply);
+                    imports.borrow_mut().push_back(incoming);
+                }
+            })
         })
         .into_js_value(),
     )?;
@@ -146,20 +150,14 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
                 let mut input = crate::files::import_input(vec![(name, bytes.to_vec())]);
                 let imports = s.borrow().imports.clone();
                 c.request_repaint();
-                js_sys::Promise::new(&mut |resolve, reject| {
-                    let Some(input) = input.take() else {
-                        let why = js_error("The file name must end in .glb or .gltf.");
-                        let _ = reject.call1(&JsValue::NULL, &why);
-                        return;
-                    };
-                    let reply = crate::files::Reply::to(move |landed| {
-                        let _ = match landed {
-                            Ok(()) => resolve.call0(&JsValue::NULL),
-                            Err(why) => reject.call1(&JsValue::NULL, &js_error(&why)),
-                        };
-                    });
-                    let incoming = crate::files::Incoming::Import(input, reply);
-                    imports.borrow_mut().push_back(incoming);
+                promise_of(&mut |reply| match input.take() {
+                    Some(input) => {
+                        let incoming = crate::files::Incoming::Import(input, reply);
+                        imports.borrow_mut().push_back(incoming);
+                    }
+                    None => reply.send(Err(String::from(
+                        "The file name must end in .glb or .gltf.",
+                    ))),
                 })
             },
         )
@@ -358,6 +356,19 @@ fn getter(f: impl Fn() -> Result<JsValue, JsValue> + 'static) -> JsValue {
 fn json(value: &impl serde::Serialize) -> Result<JsValue, JsValue> {
     let text = serde_json::to_string(value).map_err(|e| js_error(&e.to_string()))?;
     js_sys::JSON::parse(&text)
+}
+
+/// A Promise settled by the [`Reply`](crate::files::Reply) `queue` is given: resolved when
+/// the work is in the document, rejected with an `Error` holding the sentence otherwise.
+fn promise_of(queue: &mut dyn FnMut(crate::files::Reply)) -> js_sys::Promise {
+    js_sys::Promise::new(&mut |resolve, reject| {
+        queue(crate::files::Reply::to(move |landed| {
+            let _ = match landed {
+                Ok(()) => resolve.call0(&JsValue::NULL),
+                Err(why) => reject.call1(&JsValue::NULL, &js_error(&why)),
+            };
+        }));
+    })
 }
 
 fn js_error(message: &str) -> JsValue {

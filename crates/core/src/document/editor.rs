@@ -1,6 +1,8 @@
 //! The editor: a document, its undo history and the log of applied ops. Ops change it only
 //! through edits ([`Edit`], in `edit.rs`): [`Editor::apply`] is an edit begun and finished.
 
+use std::sync::OnceLock;
+
 #[cfg(doc)]
 use super::Edit;
 use super::history::History;
@@ -13,6 +15,9 @@ pub struct Editor {
     document: Document,
     history: History,
     log: Vec<Op>,
+    /// Each logged op as session JSON, written the first time the session is (an import's
+    /// op carries its file: re-encoding it at every autosave cost a frame per op).
+    log_json: Vec<OnceLock<String>>,
     revision: u64,
     /// What the last op wants the user to know (an import's repairs and textures left
     /// behind); empty after any other op.
@@ -53,6 +58,7 @@ impl Editor {
             }
         }
         self.log.push(op);
+        self.log_json.push(OnceLock::new());
         self.revision += 1;
         self.notes = notes;
         Ok(())
@@ -98,6 +104,12 @@ impl Editor {
     /// The ops applied so far, in order.
     pub fn ops(&self) -> &[Op] {
         &self.log
+    }
+
+    /// The ops applied so far as JSON, in order, each written once and kept.
+    pub(super) fn ops_json(&self) -> impl Iterator<Item = &str> {
+        (self.log.iter().zip(&self.log_json))
+            .map(|(op, json)| json.get_or_init(|| op.to_json()).as_str())
     }
 }
 

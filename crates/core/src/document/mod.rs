@@ -28,6 +28,7 @@ mod optimize;
 mod outcome;
 mod oversketch;
 mod region_edit;
+mod replay;
 mod session;
 mod session_error;
 mod skeleton;
@@ -58,6 +59,7 @@ pub use op::{
 pub use outcome::import_files;
 pub use oversketch::OutlinePiece;
 pub use region_edit::{RegionDrag, dragged_region, region_of};
+pub use replay::Replay;
 pub use session::{SESSION_FORMAT, SESSION_VERSION, Session};
 pub use session_error::SessionError;
 pub use volumetric::{CoarseInput, CurveDeformInput, DeformHandleInput, DeformInput, DeformMethod};

@@ -96,6 +96,16 @@ pub enum Op {
 }
 
 impl Op {
+    /// The op as one line of session JSON.
+    pub fn to_json(&self) -> String {
+        // Serializing these plain structs cannot fail: every map key is a string and
+        // serde_json writes non-finite numbers as null (which a refused op never logs anyway).
+        serde_json::to_string(self).unwrap_or_else(|error| {
+            debug_assert!(false, "op serialization failed: {error}");
+            String::from("null")
+        })
+    }
+
     /// The `"op"` tag of every kind of op, as written in session files (in step with
     /// [`Op::name`]; a test checks both against serde).
     pub const NAMES: &'static [&'static str] = &[

@@ -7,7 +7,7 @@
 use serde_json::Value;
 
 use super::session_error::SessionError;
-use super::{Editor, Op};
+use super::{Editor, Op, Progress, Replay};
 
 /// The `"format"` value of a session file.
 pub const SESSION_FORMAT: &str = "sketchmesh-session";
@@ -24,17 +24,8 @@ pub struct Session {
 impl Session {
     /// The session as JSON: one op per line, so files diff well.
     pub fn to_json(&self) -> String {
-        let mut json =
-            format!(r#"{{"format":"{SESSION_FORMAT}","version":{SESSION_VERSION},"ops":["#);
-        for (index, op) in self.ops.iter().enumerate() {
-            json.push_str(if index == 0 { "\n" } else { ",\n" });
-            json.push_str(&op_json(op));
-        }
-        if !self.ops.is_empty() {
-            json.push('\n');
-        }
-        json.push_str("]}\n");
-        json
+        let ops: Vec<String> = self.ops.iter().map(Op::to_json).collect();
+        session_text(ops.iter().map(String::as_str))
     }
 
     /// Parses a session file.
@@ -96,20 +87,18 @@ impl Editor {
         }
     }
 
-    /// The ops applied so far as session JSON ([`Session::to_json`]).
+    /// The ops applied so far as session JSON ([`Session::to_json`]), from the ops' JSON
+    /// kept since they were first written.
     pub fn session_json(&self) -> String {
-        self.session().to_json()
+        session_text(self.ops_json())
     }
 
-    /// Applies every op of a session to a new editor; the first refused op is an error.
+    /// Applies every op of a session to a new editor; the first refused op is an error. The
+    /// steps are those of a [`Replay`] the page runs over frames.
     pub fn replay(session: &Session) -> Result<Editor, SessionError> {
-        let mut editor = Editor::new();
-        for (index, op) in session.ops.iter().enumerate() {
-            editor
-                .apply(op.clone())
-                .map_err(|source| SessionError::Command { index, source })?;
-        }
-        Ok(editor)
+        let mut replay = Replay::new(session.ops.clone());
+        while replay.step()? != Progress::Done {}
+        Ok(replay.into_editor())
     }
 
     /// Parses session JSON and replays it.
@@ -122,13 +111,20 @@ fn format_error(message: &str) -> SessionError {
     SessionError::Format(message.to_owned())
 }
 
-fn op_json(op: &Op) -> String {
-    // Serializing these plain structs cannot fail: every map key is a string and serde_json
-    // writes non-finite numbers as null (which a refused op never logs anyway).
-    serde_json::to_string(op).unwrap_or_else(|error| {
-        debug_assert!(false, "op serialization failed: {error}");
-        String::from("null")
-    })
+/// A session file around ops already written as JSON, one per line.
+fn session_text<'a>(ops: impl Iterator<Item = &'a str>) -> String {
+    let mut json = format!(r#"{{"format":"{SESSION_FORMAT}","version":{SESSION_VERSION},"ops":["#);
+    let mut any = false;
+    for op in ops {
+        json.push_str(if any { ",\n" } else { "\n" });
+        json.push_str(op);
+        any = true;
+    }
+    if any {
+        json.push('\n');
+    }
+    json.push_str("]}\n");
+    json
 }
 
 /// Parses one op, with an error message fit to follow "op N: ".

@@ -2061,38 +2061,50 @@ test('a 1 M-triangle import runs off the frame: loadGlb returns at once, frames 
     const returnedMs = await page.evaluate(() => {
       const started = performance.now();
       window.__landed = null;
+      // Settled inside the frame that lands the import: the frames before it are the work's.
+      const during = () => Math.max(0, ...window.__frames.list);
       window.sketchmesh.loadGlb(window.__glb, 'grid.glb').then(
-        () => { window.__landed = { at: performance.now() }; },
+        () => { window.__landed = { during: during(), camera: window.sketchmesh.camera() }; },
         (e) => { window.__landed = { error: e.message }; });
       return performance.now() - started;
     });
-    await sleep(40);
-    await orbitDrag(cdp);
-    const turned = await camera(page);
-    const midWork = await page.evaluate(() => window.__landed === null);
+    await orbitDrag(cdp, undefined, 240, 6);
     await screenshot(page, out('import-progress.png'));
-    const workLongest = await until(() => page.evaluate(() => window.__landed), (l) => l !== null, 60_000)
-      .then(() => record(false));
-    const landed = await page.evaluate(() => window.__landed);
-    assert.ok(!landed.error, `the import lands: ${landed.error}`);
+    const landed = await until(() => page.evaluate(() => window.__landed), (l) => l !== null, 60_000);
+    assert.ok(landed && !landed.error, `the import lands: ${landed?.error}`);
+    const workLongest = landed.during;
+    // The frame that lands it (commit, the scene's arrays built and uploaded, the first draw
+    // of a million triangles), beside an orbit of the same scene: reported, see BENCHMARKS.md.
+    await sleep(1500);
+    const landingLongest = await record(false);
+    await record(true);
+    await orbitDrag(cdp);
+    await sleep(300);
+    const modelLongest = await record(false);
     const stats = await api(page, 'stats');
     assert.equal(stats.triangles, 1_002_528, 'the grid is in the document');
     assert.equal(await api(page, 'opCount'), 1, 'as one op');
     assert.ok(returnedMs < 50, `loadGlb returns within 50 ms: ${returnedMs.toFixed(1)} ms`);
-    assert.ok(midWork, 'the orbit ended before the import landed (the work was still running)');
-    assert.ok(Math.hypot(...turned.eye.map((e, i) => e - before.eye[i])) > 1e-3, `an orbit during the work turns the view: ${before.eye} -> ${turned.eye}`);
+    const turned = landed.camera;
+    assert.ok(Math.hypot(...turned.eye.map((e, i) => e - before.eye[i])) > 1e-3, `an orbit during the work turns the view before the import lands: ${before.eye} -> ${turned.eye}`);
     const limit = 1.5 * idleLongest + 50;
-    console.log(`    # longest frame: ${idleLongest.toFixed(0)} ms without the work, ${workLongest.toFixed(0)} ms while the worker read 1 M triangles (limit ${limit.toFixed(0)})`);
+    console.log(`    # longest frame: ${idleLongest.toFixed(0)} ms without the work, ${workLongest.toFixed(0)} ms while the worker read 1 M triangles (limit ${limit.toFixed(0)}); the landing frame ${landingLongest.toFixed(0)} ms, an orbit of the million triangles ${modelLongest.toFixed(0)} ms`);
     assert.ok(workLongest <= limit, `no frame stalls while the worker reads: ${workLongest.toFixed(0)} ms > ${limit.toFixed(0)} ms`);
 
-    // Escape while a second import is read: it is refused as cancelled, nothing changes.
+    // Escape while the file is read again into an empty document (its frames are short, so
+    // the import is under way two frames after the call): refused as cancelled, and the
+    // document and its session stay empty.
+    await page.evaluate(() => window.sketchmesh.replay(JSON.stringify({ format: 'sketchmesh-session', version: 1, ops: [] })));
+    const empty = await api(page, 'stats');
     const rejected = page.evaluate(() => window.sketchmesh.loadGlb(window.__glb, 'again.glb').then(() => null, (e) => e.message));
-    await sleep(150);
+    const progress = await until(() => api(page, 'progress'), (p) => p !== null, 5_000);
+    assert.equal(progress, 'Importing again.glb (24.1 MB)…', 'the progress line says what is read');
     await page.keyboard.press('Escape');
     assert.equal(await rejected, 'The import was cancelled.', 'the Promise rejects with the sentence');
     await sleep(500);
-    assert.deepEqual(await api(page, 'stats'), stats, 'a cancelled import leaves the document as it was');
-    assert.equal(await api(page, 'opCount'), 1, 'and the session too');
+    assert.deepEqual(await api(page, 'stats'), empty, 'a cancelled import leaves the document as it was');
+    assert.equal(await api(page, 'opCount'), 0, 'and the session too');
+    assert.equal(await api(page, 'progress'), null, 'and the progress line is gone');
     assert.deepEqual(fresh.errors, [], 'console errors while importing');
   } finally {
     await fresh.context.close();

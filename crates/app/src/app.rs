@@ -68,6 +68,8 @@ pub struct Shared {
     pub thumbnails: crate::thumbnail::Capture,
     /// The notes panel (an import's repairs), which the page API reads too.
     pub notes: panels::notes::Notes,
+    /// What the progress line says while work runs off the frame (an import, a replay).
+    pub progress: Option<String>,
     /// Editors that replaced the first one (see [`autosave::Revision`]).
     opened: u64,
 }
@@ -200,6 +202,7 @@ impl SketchApp {
                 notice: None,
                 thumbnails: Default::default(),
                 notes: Default::default(),
+                progress: None,
                 opened: 0,
             })),
             router: InputRouter::default(),
@@ -1132,19 +1135,27 @@ impl SketchApp {
         }
         self.view_rect = viewport;
         let idle = self.stroke_preview().is_none() && self.edit.is_none();
+        let progress = match (&self.import, &self.replay) {
+            (Some(import), _) => Some(format!(
+                "Importing {} ({:.1} MB)…",
+                import.name, import.megabytes
+            )),
+            (None, Some(replaying)) => {
+                let (done, of) = replaying.replay.done_of();
+                Some(format!(
+                    "Replaying the session: op {} of {of}…",
+                    (done + 1).min(of)
+                ))
+            }
+            (None, None) => None,
+        };
+        self.shared.borrow_mut().progress.clone_from(&progress);
         if self.shared.borrow().thumbnails.is_capturing() {
             // A thumbnail is being taken: the shapes only.
-        } else if let Some(import) = &self.import {
-            let what = format!("Importing {} ({:.1} MB)…", import.name, import.megabytes);
+        } else if let Some(what) = progress {
             if panels::progress::progress_ui(ui.ctx(), viewport, &what) {
                 let now = ui.input(|i| i.time);
                 self.cancel_import(now);
-            }
-        } else if let Some(replaying) = &self.replay {
-            let (done, of) = replaying.replay.done_of();
-            let what = format!("Replaying the session: op {} of {of}…", (done + 1).min(of));
-            if panels::progress::progress_ui(ui.ctx(), viewport, &what) {
-                let now = ui.input(|i| i.time);
                 self.cancel_replay(now);
             }
         } else if let Some((status, _)) = &self.status {

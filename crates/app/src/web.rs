@@ -116,6 +116,8 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
     let s = shared.clone();
     set("notes", getter(move || json(&s.borrow().notes.shown)))?;
     let s = shared.clone();
+    set("progress", getter(move || json(&s.borrow().progress)))?;
+    let s = shared.clone();
     set(
         "opCount",
         getter(move || Ok(JsValue::from(s.borrow().editor.ops().len() as u32))),

@@ -54,9 +54,13 @@
 //! document, as replaying the session will. Edits run one at a time: the app finishes the
 //! one in progress before beginning the next, so ops are logged in the order they were made.
 //!
-//! Limits: the committed results of pull, over-sketch, the other curve ops and import are
-//! one step each (a pull's release at 40k vertices is one long frame); their settle and
-//! remesh would split along the same lines as a creation's iterations.
+//! **Work done elsewhere.** An import's long part is a pure function of its files
+//! ([`import_files`](super::import_files)): the page reads them in a Web Worker and hands
+//! the result to [`Edit::supply_import`], and the edit finishes as it would have here.
+//!
+//! Limits: the committed results of pull, over-sketch and the other curve ops are one step
+//! each (a pull's release at 40k vertices is one long frame); their settle and remesh would
+//! split along the same lines as a creation's iterations.
 
 use crate::mesh::VertexId;
 use glam::{DVec2, DVec3};

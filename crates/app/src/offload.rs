@@ -105,8 +105,10 @@ mod page {
     /// The script the worker runs, next to the page.
     const SCRIPT: &str = "worker.js";
 
-    /// A job's answer: the encoded import, or the sentence of its refusal.
-    type Answer = (u64, Result<Vec<u8>, String>);
+    /// A job's answer: the encoded import (still in JavaScript's memory: it is copied into
+    /// the wasm when the edit takes it, in the frame that lands it, not when it arrives), or
+    /// the sentence of its refusal.
+    type Answer = (u64, Result<Uint8Array, String>);
 
     /// The page's worker, its message handlers, and the job in hand.
     pub(super) struct Worker {
@@ -178,7 +180,7 @@ mod page {
             };
             self.sent = None;
             Poll::Arrived(answer.map_err(CommandError::Elsewhere).and_then(|bytes| {
-                decode_imported(&bytes).map_err(|e| CommandError::Elsewhere(e.to_string()))
+                decode_imported(&bytes.to_vec()).map_err(|e| CommandError::Elsewhere(e.to_string()))
             }))
         }
 
@@ -220,7 +222,7 @@ mod page {
         let field = |name: &str| Reflect::get(data, &name.into()).unwrap_or(JsValue::UNDEFINED);
         let id = field("id").as_f64().unwrap_or(-1.0) as u64;
         let result = match field("bytes").dyn_into::<Uint8Array>() {
-            Ok(bytes) => Ok(bytes.to_vec()),
+            Ok(bytes) => Ok(bytes),
             Err(_) => Err(field("error")
                 .as_string()
                 .unwrap_or_else(|| String::from("The worker gave no answer."))),

@@ -1188,7 +1188,11 @@ impl SketchApp {
             let document = edit.map_or(shared.editor.document(), Edit::document);
             let generation = self.geometry.generation + 1;
             let started = clock::now_ms();
-            self.geometry = Arc::new(SceneGeometry::build(document, generation, &self.textures));
+            // The arrays of unchanged models are copied, unless textures were decoded since.
+            let previous =
+                (self.geometry_source.2 == self.textures.version).then_some(&*self.geometry);
+            let built = SceneGeometry::build(document, generation, &self.textures, previous);
+            self.geometry = Arc::new(built);
             // What a new document costs the frame before the GPU sees it (the page bench).
             let ms = clock::now_ms() - started;
             drop(shared);

@@ -1,5 +1,10 @@
 //! GPU-ready arrays built from the document, once per document revision.
 //!
+//! A rebuild copies the arrays of every model that did not change since the last one (the
+//! same `Arc`, not moved by a preview) instead of building them again: after an import of a
+//! million triangles, an op on another model would otherwise spend a quarter of a second
+//! (in the page) rebuilding the scan's arrays.
+//!
 //! Kept free of wgpu so it can be tested natively and shared (in an `Arc`) between the UI
 //! thread and the paint callback. Only [`SceneGeometry::move_model`] runs per frame (while an
 //! edit moves a model's vertices, as a pull's preview does): it rewrites one model's vertices
@@ -94,6 +99,16 @@ fn face_textures(
     (!list.is_empty()).then_some((slots, list))
 }
 
+/// The smallest box holding `points`.
+fn bounds_of(points: &[DVec3]) -> Option<(DVec3, DVec3)> {
+    let first = *points.first()?;
+    Some(
+        points
+            .iter()
+            .fold((first, first), |(lo, hi), &p| (lo.min(p), hi.max(p))),
+    )
+}
+
 /// [`MeshVertex::color`] of a vertex drawn as clay (alpha 0: no imported colour).
 pub const CLAY: [f32; 4] = [0.0; 4];
 
@@ -139,6 +154,18 @@ pub struct ModelRange {
     pub mesh_vertices: usize,
     /// Its control curves' segments.
     pub curves: Range<usize>,
+    /// Its triangle indices.
+    triangles: Range<usize>,
+    /// Its edge indices.
+    edges: Range<usize>,
+    /// Its own runs by texture, relative to `triangles.start` (in the scene's draws, runs
+    /// without a texture are joined across models).
+    draws: Vec<MeshDraw>,
+    /// Its bounds.
+    bounds: Option<(DVec3, DVec3)>,
+    /// The model the arrays show, while they show it as it is (`None` once a preview moved
+    /// or shaded them): a rebuild copies them when the document still holds this model.
+    source: Option<Arc<Model>>,
 }
 
 /// Everything the scene pass draws that comes from the document.
@@ -170,20 +197,37 @@ pub struct SceneGeometry {
 }
 
 impl SceneGeometry {
-    /// Builds the arrays for `doc` as `generation`, with the textures decoded so far.
-    pub fn build(doc: &Document, generation: u64, textures: &Textures) -> Self {
+    /// Builds the arrays for `doc` as `generation`, with the textures decoded so far,
+    /// copying from `previous` (built with the same textures) the models it already shows.
+    pub fn build(
+        doc: &Document,
+        generation: u64,
+        textures: &Textures,
+        previous: Option<&SceneGeometry>,
+    ) -> Self {
         let mut scene = Self {
             generation,
             ..Self::default()
         };
-        for model in doc.models.iter().map(|m| m.as_ref()) {
+        for shared in &doc.models {
+            let built = previous.and_then(|previous| {
+                let range = (previous.model_ranges.iter())
+                    .find(|r| r.source.as_ref().is_some_and(|s| Arc::ptr_eq(s, shared)))?;
+                Some((previous, range))
+            });
+            if let Some((previous, range)) = built {
+                scene.copy_model(previous, range);
+                continue;
+            }
+            let model = shared.as_ref();
             let (vertices, curves) = (scene.vertices.len(), scene.curves.len());
+            let (triangles, edges) = (scene.triangles.len(), scene.edges.len());
             let look = (model.appearance.as_deref()).filter(|a| a.fits(&model.mesh));
             let colors = look.and_then(|a| a.corner_colors());
             let normals =
                 (look.filter(|a| a.normals_fit(&model.mesh))).and_then(|a| a.normals.as_deref());
             let faces = look.and_then(|a| face_textures(a, textures));
-            scene.add_mesh(
+            let draws = scene.add_mesh(
                 &model.mesh,
                 &vertex_normals(&model.mesh),
                 Corners {
@@ -212,6 +256,11 @@ impl SceneGeometry {
                 vertices: vertices..scene.vertices.len(),
                 mesh_vertices: model.mesh.n_vertices(),
                 curves: curves..scene.curves.len(),
+                triangles: triangles..scene.triangles.len(),
+                edges: edges..scene.edges.len(),
+                draws,
+                bounds: bounds_of(model.mesh.positions()),
+                source: Some(Arc::clone(shared)),
             });
         }
         for sketch in &doc.sketches {
@@ -245,6 +294,7 @@ impl SceneGeometry {
             return;
         }
         vertex_normals_of(model.mesh.triangles(), positions, normals);
+        self.model_ranges[index].source = None;
         let drawn = range.vertices.clone();
         for (vertex, &v) in self.vertices[drawn.clone()]
             .iter_mut()
@@ -285,6 +335,7 @@ impl SceneGeometry {
         let Some(range) = self.model_ranges.get(index).cloned() else {
             return;
         };
+        self.model_ranges[index].source = None;
         self.shades.clear();
         self.shades.resize(range.mesh_vertices, NO_SHADE);
         for (v, &w) in vertices.iter().zip(weights) {
@@ -306,7 +357,8 @@ impl SceneGeometry {
     /// where the file's still apply: a vertex whose corners differ is drawn once per colour
     /// and normal, so colours meet in crisp lines along material borders and a box keeps its
     /// edges, instead of blending across triangles.
-    fn add_mesh(&mut self, mesh: &Mesh, normals: &[DVec3], corners: Corners<'_>) {
+    /// Returns its runs by texture, relative to its first triangle index.
+    fn add_mesh(&mut self, mesh: &Mesh, normals: &[DVec3], corners: Corners<'_>) -> Vec<MeshDraw> {
         let (positions, triangles) = (mesh.positions(), mesh.triangle_indices());
         // Grown once (growing by pushes copied a million-triangle scan's arrays many times).
         self.vertices.reserve(positions.len());
@@ -382,15 +434,65 @@ impl SceneGeometry {
         }
         let first = self.triangles.len() as u32;
         self.triangles.extend(drawn_corners);
-        let mut start = first;
+        let mut own = Vec::new();
+        let mut start = 0;
         for run in faces.chunk_by(|&a, &b| slot(a) == slot(b)) {
             let end = start + 3 * run.len() as u32;
             let texture = corners
                 .textures
                 .and_then(|t| t.list.get(slot(run[0]) as usize).cloned());
-            self.add_draw(start..end, texture);
+            self.add_draw(first + start..first + end, texture.clone());
+            own.push(MeshDraw {
+                indices: start..end,
+                texture,
+            });
             start = end;
         }
+        own
+    }
+
+    /// Appends the arrays `previous` built for one model (`range`), their indices moved to
+    /// where they now start.
+    fn copy_model(&mut self, previous: &SceneGeometry, range: &ModelRange) {
+        let (vertices, curves) = (self.vertices.len(), self.curves.len());
+        let (triangles, edges) = (self.triangles.len(), self.edges.len());
+        self.vertices
+            .extend_from_slice(&previous.vertices[range.vertices.clone()]);
+        self.welded
+            .extend_from_slice(&previous.welded[range.vertices.clone()]);
+        let shift = vertices as i64 - range.vertices.start as i64;
+        for (to, from) in [
+            (
+                &mut self.triangles,
+                &previous.triangles[range.triangles.clone()],
+            ),
+            (&mut self.edges, &previous.edges[range.edges.clone()]),
+        ] {
+            match shift {
+                0 => to.extend_from_slice(from),
+                _ => to.extend(from.iter().map(|&i| (i64::from(i) + shift) as u32)),
+            }
+        }
+        for draw in &range.draws {
+            let at = triangles as u32;
+            self.add_draw(
+                at + draw.indices.start..at + draw.indices.end,
+                draw.texture.clone(),
+            );
+        }
+        self.curves
+            .extend_from_slice(&previous.curves[range.curves.clone()]);
+        if let Some((lo, hi)) = range.bounds {
+            self.grow_bounds(lo);
+            self.grow_bounds(hi);
+        }
+        self.model_ranges.push(ModelRange {
+            vertices: vertices..self.vertices.len(),
+            curves: curves..self.curves.len(),
+            triangles: triangles..self.triangles.len(),
+            edges: edges..self.edges.len(),
+            ..range.clone()
+        });
     }
 
     /// Adds a run of triangles, joining it to the last draw when both have no texture.
@@ -458,4 +560,73 @@ impl SceneGeometry {
 /// Stroke width in points for a pen pressure, shared by the live stroke and stored sketches.
 pub fn pressure_width(pressure: f64) -> f64 {
     1.5 + 6.0 * pressure.clamp(0.0, 1.0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use sketchmesh_core::mesh::primitives::{grid, icosphere};
+
+    fn model(mesh: Mesh) -> Arc<Model> {
+        Arc::new(Model {
+            mesh,
+            ..Model::default()
+        })
+    }
+
+    fn document(models: Vec<Arc<Model>>) -> Document {
+        Document {
+            models,
+            ..Document::default()
+        }
+    }
+
+    #[test]
+    fn each_edge_is_drawn_once() {
+        let (sphere, sheet) = (icosphere(1.0, 2), grid(4, 3, 1.0));
+        let doc = document(vec![model(sphere.clone()), model(sheet.clone())]);
+        let scene = SceneGeometry::build(&doc, 1, &Textures::default(), None);
+        // Every edge of both, closed and open, once.
+        assert_eq!(3 * sphere.n_faces() / 2, sphere.n_edges());
+        assert_eq!(scene.edges.len() / 2, sphere.n_edges() + sheet.n_edges());
+        let mut pairs: Vec<(u32, u32)> = (scene.edges.chunks_exact(2))
+            .map(|e| (e[0].min(e[1]), e[0].max(e[1])))
+            .collect();
+        pairs.sort_unstable();
+        pairs.dedup();
+        assert_eq!(pairs.len(), scene.edges.len() / 2, "no edge twice");
+    }
+
+    #[test]
+    fn a_rebuild_copies_unchanged_models_and_rebuilds_the_rest() {
+        let textures = Textures::default();
+        let (a, b, c) = (
+            model(icosphere(1.0, 2)),
+            model(grid(5, 5, 2.0)),
+            model(icosphere(0.5, 1)),
+        );
+        let before = document(vec![a.clone(), b.clone()]);
+        let mut previous = SceneGeometry::build(&before, 1, &textures, None);
+        // A mark on b's first drawn vertex: if the rebuild copies b, the mark comes along.
+        let b_first = previous.model_ranges[1].vertices.start;
+        previous.vertices[b_first].uv = [7.0, 7.0];
+
+        // a replaced by a smaller sphere (b's indices move), c appended.
+        let a2 = model(icosphere(1.0, 1));
+        let after = document(vec![a2, b.clone(), c]);
+        let rebuilt = SceneGeometry::build(&after, 2, &textures, Some(&previous));
+        let fresh = SceneGeometry::build(&after, 2, &textures, None);
+        let b_now = rebuilt.model_ranges[1].vertices.start;
+        assert_eq!(rebuilt.vertices[b_now].uv, [7.0, 7.0], "b was copied");
+        let mut unmarked = rebuilt.clone();
+        unmarked.vertices[b_now].uv = [0.0, 0.0];
+        assert_eq!(unmarked, fresh, "the copy is what a build gives");
+
+        // A model a preview moved is built again, not copied.
+        let mut moved = fresh.clone();
+        let positions: Vec<DVec3> = (b.mesh.positions().iter()).map(|p| *p + DVec3::Z).collect();
+        moved.move_model(1, &b, &positions, &mut Vec::new());
+        let again = SceneGeometry::build(&after, 3, &textures, Some(&moved));
+        assert_eq!(again.vertices, fresh.vertices);
+    }
 }

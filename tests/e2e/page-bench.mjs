@@ -494,7 +494,7 @@ try {
       return window.sketchmesh.stats().vertices;
     }, [...readFileSync(scanPath)]);
     await sleep(500);
-    // loadGlb does not frame (a dropped file is framed): frame it, as a user would.
+    // loadGlb frames what it imports, as a dropped file is; 'f' frames again (harmless), 'm' picks Move.
     await page.keyboard.press('f');
     await page.keyboard.press('m');
     await sleep(300);

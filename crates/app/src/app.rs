@@ -344,11 +344,16 @@ impl SketchApp {
     /// Finishes the edit in progress, if any (closing its gesture and running the steps it
     /// has left); a refusal becomes a status message.
     fn finish_edit(&mut self, now: f64) {
-        let Some(edit) = self.edit.take() else {
+        let Some(mut edit) = self.edit.take() else {
             return;
         };
-        // The worker's answer would come too late: the import is finished here.
+        // The worker's answer, if it is there, lands now; else the import is finished here.
         if let Some(import) = &self.import {
+            if edit.import_to_read().is_some()
+                && let Some(imported) = self.offload.answer(import.job)
+            {
+                edit.supply_import(imported);
+            }
             self.offload.cancel(import.job);
         }
         let models_before = self.shared.borrow().editor.document().models.len();
@@ -392,16 +397,16 @@ impl SketchApp {
     fn undo(&mut self, now: f64) {
         if self.edit.as_ref().is_some_and(Edit::is_gesture) {
             self.drop_gesture(now);
+        } else if self.import.is_some() {
+            // Undoing an import still being read is not making it.
+            self.cancel_import(now);
         } else {
             self.begin(Op::Undo, false, now);
         }
     }
 
-    /// Drops the gesture in progress and the tool's part of it (Esc), or the import the
-    /// worker is reading: nothing changes.
+    /// Drops the gesture in progress and the tool's part of it: nothing changes.
     fn drop_gesture(&mut self, now: f64) {
-        self.cancel_import(now);
-        self.cancel_replay(now);
         self.cancel_gesture();
         let dropped = self.tools.cancel();
         self.take_output(dropped, now);
@@ -520,6 +525,8 @@ impl SketchApp {
         if opened != self.opened {
             self.opened = opened;
             self.cancel_import(now);
+            // A replay still running would replace the document opened meanwhile.
+            self.cancel_replay(now);
             self.cancel_gesture();
             self.edit = None;
             let dropped = self.tools.cancel();
@@ -835,6 +842,9 @@ impl SketchApp {
             self.take_output(confirmed, now);
         }
         if pressed(Key::Escape) {
+            // Stops what runs: an import being read, a replay, the gesture.
+            self.cancel_import(now);
+            self.cancel_replay(now);
             self.drop_gesture(now);
         }
         for (key, factor) in [(Key::OpenBracket, 1.0 / 1.25), (Key::CloseBracket, 1.25)] {

@@ -78,6 +78,16 @@ impl Offload {
         Poll::NotOffloaded
     }
 
+    /// `job`'s answer if it has arrived, without sending anything.
+    pub fn answer(&mut self, job: JobId) -> Option<Result<Imported, CommandError>> {
+        #[cfg(target_arch = "wasm32")]
+        if let Some(worker) = self.worker.as_mut() {
+            return worker.answer(job.0);
+        }
+        let _ = job;
+        None
+    }
+
     /// Stops `job` if the worker runs it (the worker is replaced, so the cores are free at
     /// once).
     pub fn cancel(&mut self, job: JobId) {
@@ -99,6 +109,8 @@ mod page {
     use sketchmesh_core::io::{decode_imported, encode_imported};
     use wasm_bindgen::JsCast as _;
     use wasm_bindgen::prelude::*;
+
+    use sketchmesh_core::io::Imported;
 
     use super::Poll;
 
@@ -168,18 +180,30 @@ mod page {
                 return Poll::NotOffloaded;
             }
             if self.sent.is_none() {
+                if input.files.iter().any(|f| f.data.is_none()) {
+                    // The edit says which file is missing.
+                    return Poll::NotOffloaded;
+                }
                 if let Err(why) = self.send(id, &input.files) {
                     log::warn!("Could not hand the import to the worker: {why:?}");
                     return Poll::NotOffloaded;
                 }
                 self.sent = Some(id);
             }
-            let answer = self.inbox.borrow_mut().take_if(|(job, _)| *job == id);
-            let Some((_, answer)) = answer else {
-                return Poll::Pending;
-            };
+            match self.answer(id) {
+                Some(answer) => Poll::Arrived(answer),
+                None => Poll::Pending,
+            }
+        }
+
+        pub(super) fn answer(&mut self, id: u64) -> Option<Result<Imported, CommandError>> {
+            let (_, answer) = self.inbox.borrow_mut().take_if(|(job, _)| *job == id)?;
+            if answer.is_err() {
+                // A refusal may come from a trapped instance: the next job gets a new one.
+                self.cancel(id);
+            }
             self.sent = None;
-            Poll::Arrived(answer.map_err(CommandError::Elsewhere).and_then(|bytes| {
+            Some(answer.map_err(CommandError::Elsewhere).and_then(|bytes| {
                 decode_imported(&bytes.to_vec()).map_err(|e| CommandError::Elsewhere(e.to_string()))
             }))
         }
@@ -188,6 +212,8 @@ mod page {
             if self.sent != Some(id) {
                 return;
             }
+            self.worker.set_onmessage(None);
+            self.worker.set_onerror(None);
             self.worker.terminate();
             match Worker::spawn(self.ctx.clone()) {
                 Ok(fresh) => *self = fresh,

@@ -32,6 +32,32 @@ pub struct TransferError(&'static str);
 /// `imported` as one buffer for [`decode_imported`].
 pub fn encode_imported(imported: &Imported) -> Vec<u8> {
     let mut out = Writer::default();
+    // Images once, before the models, in a table the materials refer to: the importer
+    // shares one image between materials, models and their looks as imported, and the
+    // page decodes and uploads each shared image once.
+    for material in (imported.models.iter())
+        .flat_map(|m| {
+            [
+                m.appearance.as_deref(),
+                m.as_imported.as_ref().and_then(|a| a.appearance.as_deref()),
+            ]
+        })
+        .flatten()
+        .flat_map(|a| &a.materials)
+    {
+        if let Some(texture) = &material.base_color_texture
+            && !out
+                .images
+                .iter()
+                .any(|known| Arc::ptr_eq(known, &texture.image))
+        {
+            out.images.push(Arc::clone(&texture.image));
+        }
+    }
+    out.seq(&out.images.clone(), |out, image| {
+        out.text(&image.mime_type);
+        out.pods(&image.bytes);
+    });
     out.seq(&imported.models, Writer::model);
     out.seq(&imported.sketches, |out, sketch| {
         out.pods(&sketch.points);
@@ -49,7 +75,16 @@ pub fn encode_imported(imported: &Imported) -> Vec<u8> {
 ///
 /// Errors: [`TransferError`] when the buffer is not one it wrote.
 pub fn decode_imported(bytes: &[u8]) -> Result<Imported, TransferError> {
-    let mut input = Reader { bytes };
+    let mut input = Reader {
+        bytes,
+        images: Vec::new(),
+    };
+    input.images = input.seq(|input| {
+        Ok(Arc::new(Image {
+            mime_type: input.text()?,
+            bytes: input.pods()?,
+        }))
+    })?;
     let imported = Imported {
         models: input.seq(Reader::model)?,
         sketches: input.seq(|input| {
@@ -75,6 +110,8 @@ pub fn decode_imported(bytes: &[u8]) -> Result<Imported, TransferError> {
 #[derive(Default)]
 struct Writer {
     bytes: Vec<u8>,
+    /// The images written, in order: a texture is written as its index here.
+    images: Vec<Arc<Image>>,
 }
 
 impl Writer {
@@ -159,8 +196,8 @@ impl Writer {
         self.option(material.name.as_deref(), Self::text);
         self.pod(material.base_color);
         self.option(material.base_color_texture.as_ref(), |out, texture| {
-            out.text(&texture.image.mime_type);
-            out.pods(&texture.image.bytes);
+            let index = (out.images.iter()).position(|known| Arc::ptr_eq(known, &texture.image));
+            out.pod(index.map_or(u64::MAX, |i| i as u64));
             out.pod(texture.mag_filter.unwrap_or(u32::MAX));
             out.pod(texture.min_filter.unwrap_or(u32::MAX));
             out.pod(texture.wrap);
@@ -181,6 +218,8 @@ impl Writer {
 
 struct Reader<'a> {
     bytes: &'a [u8],
+    /// The image table, read first.
+    images: Vec<Arc<Image>>,
 }
 
 impl Reader<'_> {
@@ -227,8 +266,9 @@ impl Reader<'_> {
         mut each: impl FnMut(&mut Self) -> Result<T, TransferError>,
     ) -> Result<Vec<T>, TransferError> {
         let n = self.count()?;
-        // Every item takes at least one byte, so a corrupt count cannot reserve gigabytes.
-        let mut items = Vec::with_capacity(n.min(self.bytes.len()));
+        // No more room than the bytes left could fill, so a corrupt count cannot reserve
+        // gigabytes.
+        let mut items = Vec::with_capacity(n.min(self.bytes.len() / size_of::<T>().max(1)));
         for _ in 0..n {
             items.push(each(self)?);
         }
@@ -317,11 +357,10 @@ impl Reader<'_> {
             name: self.option(Self::text)?,
             base_color: self.pod()?,
             base_color_texture: self.option(|input| {
+                let index = usize::try_from(input.pod::<u64>()?).ok();
+                let image = index.and_then(|i| input.images.get(i));
                 Ok(Texture {
-                    image: Arc::new(Image {
-                        mime_type: input.text()?,
-                        bytes: input.pods()?,
-                    }),
+                    image: Arc::clone(image.ok_or(TransferError("an image not in the table"))?),
                     mag_filter: optional(input.pod()?),
                     min_filter: optional(input.pod()?),
                     wrap: input.pod()?,

@@ -20,6 +20,9 @@ pub(crate) struct MeshParts<P, T, U> {
     pub n_dead_faces: u32,
 }
 
+/// [`MeshParts`] holding their arrays.
+pub(crate) type OwnedParts = MeshParts<Vec<glam::DVec3>, Vec<[u32; 3]>, Vec<u32>>;
+
 impl Mesh {
     /// Its arrays, borrowed.
     pub(crate) fn parts(&self) -> MeshParts<&[glam::DVec3], &[[u32; 3]], &[u32]> {
@@ -33,22 +36,49 @@ impl Mesh {
         }
     }
 
-    /// The mesh [`Mesh::parts`] gave. Linear checks only (lengths, and every index in range
-    /// or [`INVALID`]), so a corrupt buffer cannot make navigation index out of bounds; the
-    /// full [`Mesh::validate`] is the caller's to run where the parts may be foreign.
+    /// The mesh [`Mesh::parts`] gave, checked in linear time for what navigation relies on,
+    /// so that a corrupt buffer can neither index out of bounds nor make a one-ring walk
+    /// loop for ever: every face live (three distinct vertices) or dead (all corners
+    /// [`INVALID`]), as many dead as said; twins paired both ways between live faces, each
+    /// running the other way along the same edge; each vertex's half-edge leaving it, or
+    /// [`INVALID`] for as many dead vertices as said. Not checked: manifoldness and finite
+    /// positions, which [`Mesh::validate`] covers; the parts come from this program.
     ///
     /// Errors: [`MeshError::InvalidConnectivity`] when the arrays do not fit together.
-    pub(crate) fn from_parts(
-        parts: MeshParts<Vec<glam::DVec3>, Vec<[u32; 3]>, Vec<u32>>,
-    ) -> Result<Mesh, MeshError> {
-        let n_vertices = parts.positions.len();
-        let n_halfedges = 3 * parts.triangles.len();
-        let in_range = |i: u32, n: usize| i == INVALID || (i as usize) < n;
-        let fits = parts.twin.len() == n_halfedges
+    pub(crate) fn from_parts(parts: OwnedParts) -> Result<Mesh, MeshError> {
+        let (n_vertices, n_halfedges) = (parts.positions.len(), 3 * parts.triangles.len());
+        let tris = &parts.triangles;
+        let is_live = |f: usize| tris[f][0] != INVALID;
+        let tail = |h: usize| tris[h / 3][h % 3];
+        let head = |h: usize| tris[h / 3][(h % 3 + 1) % 3];
+        let faces_fit = tris.iter().all(|&[a, b, c]| {
+            let live = [a, b, c].iter().all(|&v| (v as usize) < n_vertices);
+            (live && a != b && b != c && a != c) || [a, b, c] == [INVALID; 3]
+        });
+        let fits = faces_fit
+            && parts.twin.len() == n_halfedges
             && parts.vertex_halfedge.len() == n_vertices
-            && (parts.triangles.iter().flatten()).all(|&v| in_range(v, n_vertices))
-            && parts.twin.iter().all(|&h| in_range(h, n_halfedges))
-            && (parts.vertex_halfedge.iter()).all(|&h| in_range(h, n_halfedges));
+            && tris.iter().filter(|t| t[0] == INVALID).count() == parts.n_dead_faces as usize
+            && (parts.twin.iter().enumerate()).all(|(h, &t)| {
+                let t = t as usize;
+                t == INVALID as usize
+                    || (t < n_halfedges
+                        && t != h
+                        && parts.twin[t] as usize == h
+                        && is_live(h / 3)
+                        && is_live(t / 3)
+                        && tail(h) == head(t)
+                        && head(h) == tail(t))
+            })
+            && (parts.vertex_halfedge.iter().enumerate()).all(|(v, &h)| {
+                let h = h as usize;
+                h == INVALID as usize
+                    || (h < n_halfedges && is_live(h / 3) && tail(h) as usize == v)
+            })
+            && (parts.vertex_halfedge.iter())
+                .filter(|&&h| h == INVALID)
+                .count()
+                == parts.n_dead_vertices as usize;
         if !fits {
             return Err(MeshError::InvalidConnectivity(String::from(
                 "the arrays of a mesh do not fit together",
@@ -242,6 +272,47 @@ mod tests {
     use super::*;
     use crate::mesh::{VertexId, primitives};
     use glam::DVec3;
+
+    /// A mesh's parts, after `corrupt` changed them.
+    fn rebuilt(mesh: &Mesh, corrupt: impl FnOnce(&mut OwnedParts)) -> Result<Mesh, MeshError> {
+        let parts = mesh.parts();
+        let mut owned = MeshParts {
+            positions: parts.positions.to_vec(),
+            triangles: parts.triangles.to_vec(),
+            twin: parts.twin.to_vec(),
+            vertex_halfedge: parts.vertex_halfedge.to_vec(),
+            n_dead_vertices: parts.n_dead_vertices,
+            n_dead_faces: parts.n_dead_faces,
+        };
+        corrupt(&mut owned);
+        Mesh::from_parts(owned)
+    }
+
+    #[test]
+    fn parts_rebuild_the_mesh_and_corrupt_parts_are_refused() {
+        let mesh = primitives::grid(3, 3, 1.0);
+        assert_eq!(rebuilt(&mesh, |_| {}).unwrap(), mesh);
+        let refused: [&dyn Fn(&mut OwnedParts); 6] = [
+            // Half a dead face: navigation would read its invalid corner.
+            &|p| p.triangles[0][1] = INVALID,
+            // A twin that does not point back: a one-ring walk could loop for ever.
+            &|p| {
+                let h = p.twin.iter().position(|&t| t != INVALID).unwrap();
+                let t = p.twin[h] as usize;
+                let other = (0..p.twin.len())
+                    .find(|&k| k != h && k != t && p.twin[k] != INVALID)
+                    .unwrap();
+                p.twin[other] = p.twin[h];
+            },
+            &|p| p.twin.pop().map(drop).unwrap_or(()),
+            &|p| p.vertex_halfedge[0] = p.vertex_halfedge[1],
+            &|p| p.n_dead_faces = 1,
+            &|p| p.triangles[2] = [0, 0, 1],
+        ];
+        for (k, corrupt) in refused.iter().enumerate() {
+            assert!(rebuilt(&mesh, corrupt).is_err(), "corruption {k} passed");
+        }
+    }
 
     fn ids(indices: &[u32]) -> Vec<VertexId> {
         indices.iter().map(|&i| VertexId(i)).collect()

@@ -231,12 +231,39 @@ fn assert_crosses_unchanged(imported: &Imported, file: &str) {
     assert_eq!(arrived.sketches, imported.sketches, "{file}");
     assert_eq!(arrived.point_clouds, imported.point_clouds, "{file}");
     assert_eq!(arrived.notes, imported.notes, "{file}");
+    assert_eq!(
+        distinct_images(&arrived),
+        distinct_images(imported),
+        "{file}: shared images stay shared"
+    );
     for cut in [0, 7, bytes.len() / 3, bytes.len() - 1] {
         assert!(
             decode_imported(&bytes[..cut]).is_err(),
             "{file} cut at {cut}"
         );
     }
+}
+
+/// How many distinct images (by address) the textures of `imported` use.
+fn distinct_images(imported: &Imported) -> usize {
+    let mut seen: Vec<*const sketchmesh_core::model::Image> = Vec::new();
+    let looks = imported.models.iter().flat_map(|m| {
+        let as_imported = m.as_imported.as_ref().and_then(|a| a.appearance.clone());
+        [m.appearance.clone(), as_imported]
+    });
+    for look in looks.flatten() {
+        for texture in look
+            .materials
+            .iter()
+            .filter_map(|m| m.base_color_texture.as_ref())
+        {
+            let at = std::sync::Arc::as_ptr(&texture.image);
+            if !seen.contains(&at) {
+                seen.push(at);
+            }
+        }
+    }
+    seen.len()
 }
 
 fn walk(dir: &Path) -> Vec<PathBuf> {

@@ -96,12 +96,13 @@ impl CreateJob {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::camera::Camera;
     use crate::document::{Editor, Op, Progress};
 
-    fn ellipse() -> StrokeInput {
+    /// A closed ellipse stroke on an 800 × 600 view (other tests of the document use it).
+    pub(in crate::document) fn ellipse() -> StrokeInput {
         let n = 90;
         StrokeInput {
             viewport: [800.0, 600.0],

@@ -92,26 +92,11 @@ impl Replay {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::camera::Camera;
-    use crate::document::StrokeInput;
-
-    fn ellipse() -> Op {
-        let stroke = (0..=60)
-            .map(|i| {
-                let a = std::f64::consts::TAU * f64::from(i) / 60.0;
-                [400.0 + 150.0 * a.cos(), 300.0 + 100.0 * a.sin(), 0.5]
-            })
-            .collect();
-        Op::Create(StrokeInput {
-            viewport: [800.0, 600.0],
-            camera: Camera::default(),
-            stroke,
-        })
-    }
+    use crate::document::create::tests::ellipse;
 
     #[test]
     fn stepping_a_replay_counts_its_ops_and_stops_at_the_first_refusal() {
-        let mut replay = Replay::new(vec![ellipse(), Op::Undo, Op::Undo]);
+        let mut replay = Replay::new(vec![Op::Create(ellipse()), Op::Undo, Op::Undo]);
         assert_eq!(replay.done_of(), (0, 3));
         let mut steps = 0;
         let error = loop {

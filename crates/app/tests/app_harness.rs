@@ -699,3 +699,78 @@ fn the_touch_layout_gives_every_toolbar_target_44_points() {
         assert!(checked > 100, "{name}: only {checked} targets found");
     }
 }
+
+/// Issue 17: a session replayed through the page API's path runs over frames behind a
+/// progress line; its Cancel (a touch-sized button, as a finger would press it) stops it and
+/// leaves the document as it was, telling whoever waits; replayed to the end, the document is
+/// the session's.
+#[test]
+fn a_replay_runs_over_frames_and_its_cancel_changes_nothing() {
+    use sketchmesh_app::files::{Incoming, Reply};
+    use std::cell::RefCell;
+    use std::rc::Rc;
+    let mut source = sketchmesh_core::document::Editor::new();
+    // Enough work that it takes many frames of the app's 12 ms budget.
+    for k in 0..24 {
+        let centre = pos2(
+            120.0 + 130.0 * (k % 6) as f32,
+            120.0 + 110.0 * (k / 6) as f32,
+        );
+        let stroke = ellipse(centre, vec2(50.0, 40.0))
+            .iter()
+            .map(|p| [f64::from(p.x), f64::from(p.y), 0.5])
+            .collect();
+        let op = sketchmesh_core::document::Op::Create(sketchmesh_core::document::StrokeInput {
+            viewport: [900.0, 600.0],
+            camera: sketchmesh_core::camera::Camera::default(),
+            stroke,
+        });
+        source.apply(op).expect("creates");
+    }
+    let session = source.session_json();
+    let heard: Rc<RefCell<Vec<Result<(), String>>>> = Rc::default();
+    let replay = |h: &Harness<'_, SketchApp>| {
+        let heard = heard.clone();
+        let reply = Reply::to(move |landed| heard.borrow_mut().push(landed));
+        let shared = h.state().shared();
+        let imports = shared.borrow().imports.clone();
+        imports
+            .borrow_mut()
+            .push_back(Incoming::Replay(session.clone(), reply));
+    };
+    let mut h = harness();
+    h.run();
+    replay(&h);
+    let mut frames = 0;
+    while h.query_by_label("Cancel").is_none() && frames < 20 {
+        h.step();
+        frames += 1;
+    }
+    let progress = h.state().shared().borrow().progress.clone();
+    assert!(
+        progress.is_some_and(|p| p.starts_with("Replaying the session")),
+        "a progress line while it runs"
+    );
+    h.get_by_label("Cancel").click();
+    h.run();
+    assert_eq!(
+        *heard.borrow(),
+        [Err(String::from("The replay was cancelled."))]
+    );
+    assert!(
+        h.state().shared().borrow().editor.ops().is_empty(),
+        "nothing changed"
+    );
+
+    replay(&h);
+    for _ in 0..200 {
+        h.step();
+        if heard.borrow().len() == 2 {
+            break;
+        }
+    }
+    assert_eq!(heard.borrow()[1], Ok(()));
+    let shared = h.state().shared();
+    assert_eq!(shared.borrow().editor.document(), source.document());
+    assert_eq!(shared.borrow().progress, None);
+}

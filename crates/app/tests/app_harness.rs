@@ -701,7 +701,7 @@ fn the_touch_layout_gives_every_toolbar_target_44_points() {
 }
 
 /// Issue 17: a session replayed through the page API's path runs over frames behind a
-/// progress line; its Cancel (a touch-sized button, as a finger would press it) stops it and
+/// progress line; its Cancel (a touch-sized button on a phone's screen) stops it and
 /// leaves the document as it was, telling whoever waits; replayed to the end, the document is
 /// the session's.
 #[test]
@@ -738,7 +738,16 @@ fn a_replay_runs_over_frames_and_its_cancel_changes_nothing() {
             .borrow_mut()
             .push_back(Incoming::Replay(session.clone(), reply));
     };
-    let mut h = harness();
+    // On a phone, with a finger as the pointer (☰ is drawn by the page's browser).
+    let mut h = Harness::builder()
+        .with_size(vec2(390.0, 844.0))
+        .allow_missing_glyphs()
+        .wgpu()
+        .build_eframe(|cc| {
+            let mut app = SketchApp::new(cc);
+            app.set_coarse_pointer(true);
+            app
+        });
     h.run();
     replay(&h);
     let mut frames = 0;
@@ -751,6 +760,13 @@ fn a_replay_runs_over_frames_and_its_cancel_changes_nothing() {
         progress.is_some_and(|p| p.starts_with("Replaying the session")),
         "a progress line while it runs"
     );
+    let cancel = h.get_by_label("Cancel").rect();
+    let screen = egui::Rect::from_min_size(Pos2::ZERO, vec2(390.0, 844.0));
+    assert!(
+        cancel.width() >= 44.0 && cancel.height() >= 44.0 && screen.contains_rect(cancel),
+        "a touch-sized Cancel on the phone's screen: {cancel:?}"
+    );
+    save(&h.render().expect("render"), "replay-progress-phone");
     h.get_by_label("Cancel").click();
     h.run();
     assert_eq!(

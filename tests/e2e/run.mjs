@@ -2050,10 +2050,13 @@ test('a 1 M-triangle import runs off the frame: loadGlb returns at once, frames 
       if (on) f.list = [];
       return Math.max(0, ...f.list);
     }, on);
-    // The same scene without the work: an orbit of the empty view.
+    // The same scene without the work: orbits of the empty view, over about as long as the
+    // worker takes.
     await record(true);
     await orbitDrag(cdp);
-    await sleep(200);
+    await sleep(400);
+    await orbitDrag(cdp, { x: 880, y: 420 }, -240);
+    await sleep(300);
     const idleLongest = await record(false);
 
     const before = await camera(page);

@@ -183,6 +183,7 @@ impl SketchApp {
         }
         // The 3D view is dark; a light toolbar beside it would glare.
         cc.egui_ctx.set_theme(egui::Theme::Dark);
+        cc.egui_ctx.set_fonts(crate::fonts::definitions());
         let mut app = Self::with_backend(backend, cc.wgpu_render_state.is_some());
         app.offload = Offload::new(&cc.egui_ctx);
         app

@@ -10,6 +10,7 @@ pub mod backdrop;
 pub mod camera;
 pub mod clock;
 pub mod files;
+pub mod fonts;
 #[cfg(target_arch = "wasm32")]
 pub mod image_decode;
 pub mod input;

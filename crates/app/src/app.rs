@@ -605,13 +605,9 @@ impl SketchApp {
             self.begin_replay(&json, reply, now);
         } else if let Some(incoming) = incoming {
             let (name, bytes): (&str, usize) = match &incoming {
-                files::Incoming::Import(input, _) => (
-                    &input.files[0].name,
-                    (input.files.iter())
-                        .filter_map(|f| f.data.as_ref())
-                        .map(|d| d.len())
-                        .sum(),
-                ),
+                files::Incoming::Import(input, _) => {
+                    (&input.files[0].name, files::import_bytes(input))
+                }
                 files::Incoming::Session { name, bytes } => (name, bytes.len()),
                 files::Incoming::Replay(json, _) => ("the session", json.len()),
             };
@@ -711,10 +707,7 @@ impl SketchApp {
     /// drawing, with a progress line and Cancel; the import lands as one undoable step.
     fn begin_import(&mut self, input: ImportInput, reply: files::Reply, now: f64) {
         let name = input.files[0].name.clone();
-        let bytes: usize = (input.files.iter())
-            .filter_map(|f| f.data.as_ref())
-            .map(|d| d.len())
-            .sum();
+        let bytes = files::import_bytes(&input);
         self.status = None;
         self.begin(Op::Import(input), false, now);
         if self.edit.is_none() {

@@ -117,6 +117,14 @@ pub fn import_input(mut files: Vec<(String, Vec<u8>)>) -> Option<ImportInput> {
     })
 }
 
+/// How many bytes the loaded files of an import hold: what the progress line says.
+pub fn import_bytes(input: &ImportInput) -> usize {
+    (input.files.iter())
+        .filter_map(|f| f.data.as_ref())
+        .map(|d| d.len())
+        .sum()
+}
+
 /// `sketchmesh-YYYYMMDD-HHMM.<extension>` for a local date and time.
 pub fn file_name(
     kind: Download,

@@ -21,6 +21,22 @@ fn harness() -> Harness<'static, SketchApp> {
     h
 }
 
+/// The app on a touch screen of `size` points, with a finger as the pointer.
+fn touch_harness(size: egui::Vec2) -> Harness<'static, SketchApp> {
+    Harness::builder()
+        .with_size(size)
+        .with_max_steps(40)
+        // The page's browser draws what egui's bundled font lacks (☰, ▶, ⋯); here only that
+        // font is installed, and the sizes are what is checked.
+        .allow_missing_glyphs()
+        .wgpu()
+        .build_eframe(|cc| {
+            let mut app = SketchApp::new(cc);
+            app.set_coarse_pointer(true);
+            app
+        })
+}
+
 fn press(h: &Harness<'_, SketchApp>, pos: Pos2, button: PointerButton, pressed: bool) {
     h.event(Event::PointerButton {
         pos,
@@ -652,18 +668,7 @@ fn the_touch_layout_gives_every_toolbar_target_44_points() {
         ("phone", vec2(390.0, 844.0)),
         ("tablet", vec2(820.0, 1180.0)),
     ] {
-        let mut h = Harness::builder()
-            .with_size(size)
-            .with_max_steps(40)
-            // The page's browser draws what egui's bundled font lacks (☰, ▶, ⋯); here only
-            // that font is installed, and the sizes are what is checked.
-            .allow_missing_glyphs()
-            .wgpu()
-            .build_eframe(|cc| {
-                let mut app = SketchApp::new(cc);
-                app.set_coarse_pointer(true);
-                app
-            });
+        let mut h = touch_harness(size);
         h.run();
         let view = h.state().edit_in_view().1;
         assert!(
@@ -738,16 +743,7 @@ fn a_replay_runs_over_frames_and_its_cancel_changes_nothing() {
             .borrow_mut()
             .push_back(Incoming::Replay(session.clone(), reply));
     };
-    // On a phone, with a finger as the pointer (☰ is drawn by the page's browser).
-    let mut h = Harness::builder()
-        .with_size(vec2(390.0, 844.0))
-        .allow_missing_glyphs()
-        .wgpu()
-        .build_eframe(|cc| {
-            let mut app = SketchApp::new(cc);
-            app.set_coarse_pointer(true);
-            app
-        });
+    let mut h = touch_harness(vec2(390.0, 844.0));
     h.run();
     replay(&h);
     let mut frames = 0;

@@ -262,6 +262,8 @@ impl SceneGeometry {
                 bounds: bounds_of(model.mesh.positions()),
                 source: Some(Arc::clone(shared)),
             });
+            let bounds = scene.model_ranges.last().and_then(|range| range.bounds);
+            scene.grow_to(bounds);
         }
         for sketch in &doc.sketches {
             let widths: Vec<f64> = sketch
@@ -419,9 +421,6 @@ impl SceneGeometry {
                 }
             }
         }
-        for p in positions {
-            self.grow_bounds(*p);
-        }
         // Each edge once: by its boundary half-edge, or by the lower of its two half-edges
         // (a hash set of vertex pairs cost 0.3 s at a million triangles in the page).
         for (&f, drawn) in faces.iter().zip(drawn_corners.chunks_exact(3)) {
@@ -482,10 +481,7 @@ impl SceneGeometry {
         }
         self.curves
             .extend_from_slice(&previous.curves[range.curves.clone()]);
-        if let Some((lo, hi)) = range.bounds {
-            self.grow_bounds(lo);
-            self.grow_bounds(hi);
-        }
+        self.grow_to(range.bounds);
         self.model_ranges.push(ModelRange {
             vertices: vertices..self.vertices.len(),
             curves: curves..self.curves.len(),
@@ -546,6 +542,14 @@ impl SceneGeometry {
                     .unwrap_or(POINT_COLOR),
             });
             self.grow_bounds(*p);
+        }
+    }
+
+    /// Grows the bounds to hold a model's.
+    fn grow_to(&mut self, bounds: Option<(DVec3, DVec3)>) {
+        if let Some((lo, hi)) = bounds {
+            self.grow_bounds(lo);
+            self.grow_bounds(hi);
         }
     }
 

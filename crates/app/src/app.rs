@@ -42,6 +42,9 @@ use crate::tools::{Mark, Mode, ToolEvent, ToolOutput, ToolSet, ViewCtx};
 /// How long a status message stays up, in seconds.
 const STATUS_SECONDS: f64 = 6.0;
 
+/// Why an op is refused while an import or a replay runs (see [`SketchApp::is_busy`]).
+const BUSY: &str = "Wait for the import or replay in progress to land, or cancel it (Esc).";
+
 /// How long the steps of the edit in progress may run in one frame, in ms. At least one step
 /// runs every frame, whatever it costs (a factorization can take longer).
 pub const FRAME_BUDGET_MS: f64 = 12.0;
@@ -142,6 +145,9 @@ pub struct SketchApp {
     replay: Option<ReplayInProgress>,
     /// How many edits were begun: tells apart the documents of two edits of equal revision.
     edits_begun: u64,
+    /// Whether the stroke in progress began while work ran off the frame: it reaches no
+    /// tool, to its end (see [`SketchApp::is_busy`]).
+    holding_stroke: bool,
     /// The fall-off panel's painted disc, kept between frames.
     falloff_panel: panels::falloff::FalloffPanel,
     /// Whether the edit in progress was begun this frame: it is drawn once before its first
@@ -232,6 +238,7 @@ impl SketchApp {
             offload: Offload::default(),
             import: None,
             replay: None,
+            holding_stroke: false,
             edits_begun: 0,
             falloff_panel: Default::default(),
             is_edit_new: false,
@@ -273,6 +280,10 @@ impl SketchApp {
     /// edit in progress, so ops are logged in the order they were made; this frame's steps
     /// run it. A refusal becomes a status message; nothing changes then.
     fn begin(&mut self, op: Op, is_gesture: bool, now: f64) {
+        if self.is_busy() {
+            self.set_status(String::from(BUSY), now);
+            return;
+        }
         self.finish_edit(now);
         let name = op.name();
         let started = clock::now_ms();
@@ -295,6 +306,14 @@ impl SketchApp {
             }
             Err(e) => self.set_status(e.to_string(), now),
         }
+    }
+
+    /// Whether an import or a replay runs off the frame. The next op must apply to its
+    /// result, as it will in the session: begun now, it would finish the import here, in one
+    /// long frame, or be lost under the replayed document. So it is refused (the view still
+    /// orbits, and Cancel, Esc or undo stops the work).
+    fn is_busy(&self) -> bool {
+        self.import.is_some() || self.replay.is_some()
     }
 
     /// Runs the steps of the edit in progress while [`FRAME_BUDGET_MS`] lasts (at least
@@ -398,9 +417,10 @@ impl SketchApp {
     fn undo(&mut self, now: f64) {
         if self.edit.as_ref().is_some_and(Edit::is_gesture) {
             self.drop_gesture(now);
-        } else if self.import.is_some() {
-            // Undoing an import still being read is not making it.
+        } else if self.is_busy() {
+            // Undoing an import or a replay still running is not making it.
             self.cancel_import(now);
+            self.cancel_replay(now);
         } else {
             self.begin(Op::Undo, false, now);
         }
@@ -589,8 +609,8 @@ impl SketchApp {
         if let Some(message) = self.backdrop.poll(ctx) {
             self.set_status(message, now);
         }
-        if self.replay.is_some() {
-            // What comes next applies to the replayed document: it waits for it.
+        if self.is_busy() {
+            // What comes next applies to the imported or replayed document: it waits.
             return;
         }
         if let Some(incoming) = self.announced_import.take() {
@@ -986,6 +1006,7 @@ impl SketchApp {
                     Routed::Tap(TapCommand::Redo) => self.begin(Op::Redo, false, now),
                     Routed::Tap(TapCommand::DoubleTap(at)) => self.double_tap(*at, viewport),
                     Routed::Tap(TapCommand::LongPress(at)) => self.long_press(*at, viewport, now),
+                    Routed::Tool(event) if self.holds_stroke(event) => {}
                     Routed::Tool(event) => {
                         // The pen's eraser erases whatever the tool, for one stroke.
                         if let ToolEvent::Begin(sample) = event
@@ -1024,6 +1045,19 @@ impl SketchApp {
         if let Some(seconds) = wait {
             ctx.request_repaint_after(std::time::Duration::from_secs_f64(seconds));
         }
+    }
+
+    /// Whether `event` belongs to a stroke begun while the app was busy (see
+    /// [`SketchApp::is_busy`]): such a stroke draws nothing, from its beginning to its end.
+    fn holds_stroke(&mut self, event: &ToolEvent) -> bool {
+        if matches!(event, ToolEvent::Begin(_)) {
+            self.holding_stroke = self.is_busy();
+        }
+        let held = self.holding_stroke;
+        if matches!(event, ToolEvent::End(_) | ToolEvent::Cancel) {
+            self.holding_stroke = false;
+        }
+        held
     }
 
     /// A one-finger double tap at `at`: on empty canvas it frames everything, as in 3D apps

@@ -62,19 +62,19 @@ async function runAll() {
 const CENTRE = { x: 660, y: 380 };
 
 /** The toolbar's File menu button, and its Documents item once it is open. */
-const FILE_MENU = { x: 28, y: 20 };
-const MERGE_BUTTON = { x: 186, y: 63 };
-const DOCUMENTS_ITEM = { x: 56, y: 102 };
+const FILE_MENU = { x: 28, y: 24 };
+const MERGE_BUTTON = { x: 186, y: 71 };
+const DOCUMENTS_ITEM = { x: 56, y: 122 };
 /** The pose tool's Key, Play and Spline buttons, in the toolbar's second row; its ⋯ menu and
  * that menu's Backdrop… and No backdrop items. */
-const POSE_KEY = { x: 206, y: 59 };
-const POSE_PLAY = { x: 424, y: 59 };
-const POSE_SPLINE = { x: 704, y: 59 };
-const POSE_MORE = { x: 822, y: 59 };
-const POSE_BACKDROP = { x: 850, y: 141 };
-const POSE_NO_BACKDROP = { x: 850, y: 180 };
+const POSE_KEY = { x: 206, y: 71 };
+const POSE_PLAY = { x: 424, y: 71 };
+const POSE_SPLINE = { x: 704, y: 71 };
+const POSE_MORE = { x: 822, y: 71 };
+const POSE_BACKDROP = { x: 850, y: 169 };
+const POSE_NO_BACKDROP = { x: 850, y: 216 };
 /** The region tool's Handles button, in the toolbar's second row. */
-const HANDLES_BUTTON = { x: 213, y: 59 };
+const HANDLES_BUTTON = { x: 213, y: 71 };
 
 /** The ellipse the shape tests draw: centre, radii. */
 const ELLIPSE = { c: { x: 640, y: 400 }, rx: 170, ry: 120 };
@@ -754,7 +754,7 @@ test('a dropped .glb imports and is framed; Export downloads a valid file; bad f
     await frames(fresh.page, 3);
     const [clicked] = await Promise.all([
       fresh.page.waitForEvent('download', { timeout: 10_000 }),
-      fresh.page.mouse.click(36, 189),
+      fresh.page.mouse.click(36, 225),
     ]);
     await clicked.saveAs(out('download-button.glb'));
     assert.ok(readFileSync(out('download-button.glb')).equals(downloaded), 'the Export button downloads the same file');

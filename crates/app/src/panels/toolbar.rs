@@ -45,8 +45,8 @@ const FINGER_TARGET: f32 = 44.0;
 const NARROW: f32 = 700.0;
 
 /// Below this width a screen whose main pointer is a finger (phones, tablets upright) gets
-/// the touch layout. Wider touch screens (a tablet on its side, a touch laptop) keep the
-/// desktop one, whose wrapped rows fit there.
+/// the touch layout. Wider touch screens (a tablet on its side) keep the desktop one, whose
+/// wrapped rows fit there, with targets for a finger all the same.
 const TOUCH_WIDE: f32 = 1000.0;
 
 /// How the toolbar is laid out for a screen and its pointer.
@@ -67,7 +67,11 @@ impl Layout {
         let touch = coarse_pointer && size.x < TOUCH_WIDE;
         Layout {
             compact: touch || size.x < NARROW,
-            target: if touch { FINGER_TARGET } else { POINTER_TARGET },
+            target: if coarse_pointer {
+                FINGER_TARGET
+            } else {
+                POINTER_TARGET
+            },
             bottom: touch && size.y > size.x,
         }
     }
@@ -109,8 +113,8 @@ pub fn toolbar_ui(
     let target = egui::vec2(layout.target, layout.target);
     row(ui, layout.compact, "tools", |ui| {
         // Narrower padding in this row keeps its twelve tools and the view buttons on one
-        // line at 1280 points.
-        ui.spacing_mut().button_padding.x = 8.0;
+        // line at 1280 points, with a finger's 44-point File button too.
+        ui.spacing_mut().button_padding.x = 7.0;
         if layout.compact {
             let menu = egui::Button::new("☰").min_size(target);
             egui::containers::menu::MenuButton::from_button(menu).ui(ui, |ui| {
@@ -120,7 +124,9 @@ pub fn toolbar_ui(
             });
         } else {
             // No title: the page's is enough, and the row needs the room for the buttons.
-            ui.menu_button("File", |ui| file_buttons(ui, layout, editor, &mut action));
+            let menu = egui::Button::new("File").min_size(target);
+            egui::containers::menu::MenuButton::from_button(menu)
+                .ui(ui, |ui| file_buttons(ui, layout, editor, &mut action));
             ui.separator();
         }
         button(

@@ -56,11 +56,14 @@
 //!
 //! **Work done elsewhere.** An import's long part is a pure function of its files
 //! ([`import_files`](super::import_files)): the page reads them in a Web Worker and hands
-//! the result to [`Edit::supply_import`], and the edit finishes as it would have here.
-//!
-//! Limits: the committed results of pull, over-sketch and the other curve ops are one step
-//! each (a pull's release at 40k vertices is one long frame); their settle and remesh would
-//! split along the same lines as a creation's iterations.
+//! the result to [`Edit::supply_import`], and the edit finishes as it would have here. The
+//! committed result of a curve op or an over-sketch (a pull's release at 40k vertices takes
+//! a second in the page) is a pure function of the models and the op
+//! ([`model_op`](super::model_op)): the page computes it in the worker too
+//! ([`Edit::model_op_to_run`], [`Edit::supply_model`]), while the pull's last preview stays
+//! on screen.
+
+use std::sync::Arc;
 
 use crate::mesh::VertexId;
 use glam::{DVec2, DVec3};
@@ -70,12 +73,12 @@ use super::create::CreateJob;
 use super::curve_edit::PullPreview;
 use super::feature::FeaturePreview;
 use super::optimize::OptimizePreview;
-use super::outcome::{Outcome, outcome, with_imported, with_model};
+use super::outcome::{Outcome, outcome, sharing_looks, target, with_imported, with_model};
 use super::oversketch::{OutlinePiece, OutlinePreview};
 use super::region_edit::RegionPreview;
 use super::skeleton::HandleDrag;
 use super::volumetric::CurvePreview;
-use super::{CommandError, Document, Editor, ImportInput, Op};
+use super::{CommandError, Document, Editor, ImportInput, Model, Op};
 use crate::io::Imported;
 
 /// What [`Edit::step`] left to do.
@@ -132,6 +135,9 @@ pub struct Edit {
     revision: u64,
     /// Changes whenever anything the edit shows does.
     generation: u64,
+    /// A pull's last previewed positions (model index, positions), still shown while its
+    /// committed result is computed elsewhere, so the shape does not jump back meanwhile.
+    held: Option<(usize, Vec<DVec3>)>,
 }
 
 /// Where an edit is.
@@ -241,6 +247,7 @@ impl Edit {
             work,
             revision: shown,
             generation: shown,
+            held: None,
         })
     }
 
@@ -369,6 +376,10 @@ impl Edit {
             | Work::Outline(_)
             | Work::Transform(_)
             | Work::Failed(_) => {
+                if let Work::Pull(preview) = &self.work {
+                    let (index, positions) = preview.moved();
+                    self.held = Some((index, positions.to_vec()));
+                }
                 self.work = Work::complete(base, op)?;
                 Ok((Progress::Working, true))
             }
@@ -462,6 +473,42 @@ impl Edit {
         self.generation += 1;
     }
 
+    /// An op that [changes one model](Op::changes_one_model), not computed yet: the page
+    /// computes it in its worker with [`model_op`](super::model_op) on a copy of these models
+    /// and hands the result to [`Edit::supply_model`], so a long curve op or over-sketch
+    /// never runs in a frame. `None` for any other edit, and once the result is computed.
+    pub fn model_op_to_run(&self) -> Option<(&[Arc<Model>], &Op)> {
+        match &self.work {
+            Work::Whole if !self.is_gesture && self.op.changes_one_model() => {
+                Some((&self.base.models, &self.op))
+            }
+            _ => None,
+        }
+    }
+
+    /// Completes an op of [`Edit::model_op_to_run`] with what
+    /// [`model_op`](super::model_op) made of the models elsewhere: the same result, landed
+    /// the same way, as stepping it here. Ignored for any other edit, or once its result is
+    /// computed.
+    pub fn supply_model(&mut self, changed: Result<(usize, Model), CommandError>) {
+        if self.model_op_to_run().is_none() {
+            return;
+        }
+        let landed = changed.and_then(|(index, model)| {
+            let before = target(&self.base, index)?;
+            Ok(with_model(
+                &self.base,
+                (index, sharing_looks(before, model)),
+            ))
+        });
+        self.work = match landed {
+            Ok(outcome) => Work::Done(outcome),
+            Err(error) => Work::Failed(error),
+        };
+        self.revision += 1;
+        self.generation += 1;
+    }
+
     /// The op as far as it is known (a gesture's stroke grows).
     pub fn op(&self) -> &Op {
         &self.op
@@ -497,6 +544,7 @@ impl Edit {
             Work::Region(preview) => preview.moved(),
             Work::Transform(preview) => Some(preview.moved()),
             Work::Handle(drag) => drag.moved_model(),
+            Work::Whole => (self.held.as_ref()).map(|(index, positions)| (*index, &positions[..])),
             _ => None,
         }
     }

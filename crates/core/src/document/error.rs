@@ -55,6 +55,10 @@ pub enum CommandError {
     /// its result could not be read back.
     #[error("{0}")]
     Elsewhere(String),
+    /// An op was handed to [`model_op`](super::model_op) that changes more than one model
+    /// (a programming error of the caller: see [`Op::changes_one_model`](super::Op::changes_one_model)).
+    #[error("The {0} op cannot be computed from the models alone.")]
+    NotOneModel(&'static str),
     /// An over-sketch was refused.
     #[error("{0}")]
     Oversketch(#[from] OversketchError),

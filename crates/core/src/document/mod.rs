@@ -56,7 +56,7 @@ pub use op::{
     Op, OptimizeInput, OversketchFit, OversketchInput, ProfileInput, RegionEditInput,
     SketchFeatureInput, StrokeInput, StrokePairInput, TransformInput,
 };
-pub use outcome::import_files;
+pub use outcome::{import_files, model_op};
 pub use oversketch::OutlinePiece;
 pub use region_edit::{RegionDrag, dragged_region, region_of};
 pub use replay::Replay;

@@ -141,6 +141,24 @@ impl Op {
         "redo",
     ];
 
+    /// Whether the op changes one model and reads nothing but the document's models (the
+    /// curve ops and the over-sketch): a pure function of the models and the op, which the
+    /// page may compute in its worker ([`model_op`](super::model_op)).
+    pub fn changes_one_model(&self) -> bool {
+        matches!(
+            self,
+            Op::Oversketch(_)
+                | Op::Pull(_)
+                | Op::AddCurve(_)
+                | Op::Cut(_)
+                | Op::Tunnel(_)
+                | Op::Extrude(_)
+                | Op::Erase(_)
+                | Op::SetCurveType(_)
+                | Op::Rub(_)
+        )
+    }
+
     /// The `"op"` tag of this op.
     pub fn name(&self) -> &'static str {
         match self {

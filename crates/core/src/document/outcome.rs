@@ -55,12 +55,6 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
             Outcome::Document(job.into_document())
         }
         Op::Import(input) => with_imported(base, input, import_files(input)?),
-        Op::Oversketch(input) => replaced(oversketch_op(base, input)?),
-        Op::Pull(input) => replaced(curve_edit::pull_op(base, input)?),
-        Op::AddCurve(input) => replaced(curve_edit::add_curve_op(base, input)?),
-        Op::Cut(input) => replaced(curve_edit::cut_op(base, input)?),
-        Op::Tunnel(input) => replaced(curve_edit::tunnel_op(base, input)?),
-        Op::Extrude(input) => replaced(curve_edit::extrude_op(base, input)?),
         Op::Merge(input) => {
             let (kept, gone, merged) = curve_edit::merge_op(base, input)?;
             let mut next = base.clone();
@@ -71,9 +65,6 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
         Op::Transform(input) => replaced(transform_op(base, input)?),
         Op::Delete(input) => delete_op(base, input)?,
         Op::Duplicate(input) => duplicate_op(base, input)?,
-        Op::Erase(input) => replaced(curve_edit::erase_op(base, input)?),
-        Op::SetCurveType(input) => replaced(curve_edit::set_curve_type_op(base, input)?),
-        Op::Rub(input) => replaced(curve_edit::rub_op(base, input)?),
         Op::Optimize(input) => replaced(optimize_op(base, input)?),
         Op::SketchFeature(input) => replaced(feature_op(base, input)?),
         Op::RegionEdit(input) => replaced(region_edit_op(base, input)?),
@@ -88,7 +79,30 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
         Op::PoseAt(input) => Outcome::Document(pose_at_op(base, input)?),
         Op::Undo => Outcome::Undo,
         Op::Redo => Outcome::Redo,
+        // The curve ops and the over-sketch: one model, from the models alone.
+        _ => replaced(model_op(base, op)?),
     })
+}
+
+/// What an op that [changes one model](Op::changes_one_model) makes of `doc`: the model's
+/// index and its next version. It reads the models only, so the page computes it in its
+/// worker on a copy of them, and [`super::Edit::supply_model`] lands the result as if it
+/// had been computed here.
+///
+/// Errors: the op's refusal; [`CommandError::NotOneModel`] for any other op.
+pub fn model_op(doc: &Document, op: &Op) -> Result<(usize, Model), CommandError> {
+    match op {
+        Op::Oversketch(input) => oversketch_op(doc, input),
+        Op::Pull(input) => curve_edit::pull_op(doc, input),
+        Op::AddCurve(input) => curve_edit::add_curve_op(doc, input),
+        Op::Cut(input) => curve_edit::cut_op(doc, input),
+        Op::Tunnel(input) => curve_edit::tunnel_op(doc, input),
+        Op::Extrude(input) => curve_edit::extrude_op(doc, input),
+        Op::Erase(input) => curve_edit::erase_op(doc, input),
+        Op::SetCurveType(input) => curve_edit::set_curve_type_op(doc, input),
+        Op::Rub(input) => curve_edit::rub_op(doc, input),
+        other => Err(CommandError::NotOneModel(other.name())),
+    }
 }
 
 /// Processes the stroke in screen space and projects each point onto the plane through the
@@ -109,6 +123,23 @@ pub(super) fn with_positions(doc: &Document, index: usize, positions: &[glam::DV
     let mut next = Model::clone(&doc.models[index]);
     next.mesh.positions_mut().copy_from_slice(positions);
     next
+}
+
+/// `model`, the next version of `before` computed elsewhere, sharing `before`'s looks, its
+/// soup as imported and its key frames again where they are the same: the copies that went
+/// to the page's worker and back are dropped, and the page's textures, kept per image, are
+/// not decoded and uploaded again.
+pub(super) fn sharing_looks(before: &Model, mut model: Model) -> Model {
+    if model.appearance == before.appearance {
+        model.appearance.clone_from(&before.appearance);
+    }
+    if model.as_imported == before.as_imported {
+        model.as_imported.clone_from(&before.as_imported);
+    }
+    if model.keyframes == before.keyframes {
+        model.keyframes.clone_from(&before.keyframes);
+    }
+    model
 }
 
 /// `base` with model `index` replaced.

@@ -44,4 +44,7 @@ pub use import::{Imported, import_gltf};
 pub use info::{Info, inspect_gltf};
 pub use input::{ImportFile, ImportLimits};
 pub use resources::referenced_files;
-pub use transfer::{TransferError, decode_imported, encode_imported};
+pub use transfer::{
+    TransferError, decode_changed, decode_imported, decode_models, encode_changed, encode_imported,
+    encode_models,
+};

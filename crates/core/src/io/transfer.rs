@@ -32,33 +32,7 @@ pub struct TransferError(&'static str);
 /// `imported` as one buffer for [`decode_imported`].
 pub fn encode_imported(imported: &Imported) -> Vec<u8> {
     let mut out = Writer::default();
-    // Images once, before the models, in a table the materials refer to: the importer
-    // shares one image between materials, models and their looks as imported, and the
-    // page decodes and uploads each shared image once.
-    for material in (imported.models.iter())
-        .flat_map(|m| {
-            [
-                m.appearance.as_deref(),
-                m.as_imported.as_ref().and_then(|a| a.appearance.as_deref()),
-            ]
-        })
-        .flatten()
-        .flat_map(|a| &a.materials)
-    {
-        if let Some(texture) = &material.base_color_texture
-            && !out
-                .images
-                .iter()
-                .any(|known| Arc::ptr_eq(known, &texture.image))
-        {
-            out.images.push(Arc::clone(&texture.image));
-        }
-    }
-    out.seq(&out.images.clone(), |out, image| {
-        out.text(&image.mime_type);
-        out.pods(&image.bytes);
-    });
-    out.seq(&imported.models, Writer::model);
+    out.models(&imported.models.iter().collect::<Vec<_>>());
     out.seq(&imported.sketches, |out, sketch| {
         out.pods(&sketch.points);
         out.pods(&sketch.pressures);
@@ -75,18 +49,9 @@ pub fn encode_imported(imported: &Imported) -> Vec<u8> {
 ///
 /// Errors: [`TransferError`] when the buffer is not one it wrote.
 pub fn decode_imported(bytes: &[u8]) -> Result<Imported, TransferError> {
-    let mut input = Reader {
-        bytes,
-        images: Vec::new(),
-    };
-    input.images = input.seq(|input| {
-        Ok(Arc::new(Image {
-            mime_type: input.text()?,
-            bytes: input.pods()?,
-        }))
-    })?;
+    let mut input = Reader::new(bytes);
     let imported = Imported {
-        models: input.seq(Reader::model)?,
+        models: input.models()?,
         sketches: input.seq(|input| {
             Ok(SketchCurve {
                 points: input.pods()?,
@@ -101,10 +66,46 @@ pub fn decode_imported(bytes: &[u8]) -> Result<Imported, TransferError> {
         })?,
         notes: input.seq(Reader::text)?,
     };
-    if !input.bytes.is_empty() {
-        return Err(TransferError("bytes left over"));
-    }
+    input.end()?;
     Ok(imported)
+}
+
+/// A document's models as one buffer for [`decode_models`]: what the page's worker needs to
+/// compute an op that changes one model from the models alone.
+pub fn encode_models(models: &[&Model]) -> Vec<u8> {
+    let mut out = Writer::default();
+    out.models(models);
+    out.bytes
+}
+
+/// The models [`encode_models`] wrote.
+///
+/// Errors: [`TransferError`] when the buffer is not one it wrote.
+pub fn decode_models(bytes: &[u8]) -> Result<Vec<Model>, TransferError> {
+    let mut input = Reader::new(bytes);
+    let models = input.models()?;
+    input.end()?;
+    Ok(models)
+}
+
+/// What an op that changes one model made of it elsewhere (the model's index, its next
+/// version) as one buffer for [`decode_changed`].
+pub fn encode_changed(index: usize, model: &Model) -> Vec<u8> {
+    let mut out = Writer::default();
+    out.count(index);
+    out.models(&[model]);
+    out.bytes
+}
+
+/// The changed model [`encode_changed`] wrote.
+///
+/// Errors: [`TransferError`] when the buffer is not one it wrote.
+pub fn decode_changed(bytes: &[u8]) -> Result<(usize, Model), TransferError> {
+    let mut input = Reader::new(bytes);
+    let index = input.count()?;
+    let model = input.models()?.pop();
+    input.end()?;
+    Ok((index, model.ok_or(TransferError("no model"))?))
 }
 
 #[derive(Default)]
@@ -137,6 +138,33 @@ impl Writer {
         for item in items {
             each(self, item);
         }
+    }
+
+    /// The image table, then `models`. Images go once, before the models, in a table the
+    /// materials refer to: the importer shares one image between materials, models and
+    /// their looks as imported, and the page decodes and uploads each shared image once.
+    fn models(&mut self, models: &[&Model]) {
+        for material in (models.iter())
+            .flat_map(|m| {
+                [
+                    m.appearance.as_deref(),
+                    m.as_imported.as_ref().and_then(|a| a.appearance.as_deref()),
+                ]
+            })
+            .flatten()
+            .flat_map(|a| &a.materials)
+        {
+            if let Some(texture) = &material.base_color_texture
+                && !(self.images.iter()).any(|known| Arc::ptr_eq(known, &texture.image))
+            {
+                self.images.push(Arc::clone(&texture.image));
+            }
+        }
+        self.seq(&self.images.clone(), |out, image| {
+            out.text(&image.mime_type);
+            out.pods(&image.bytes);
+        });
+        self.seq(models, |out, model| out.model(model));
     }
 
     fn option<T: ?Sized>(&mut self, value: Option<&T>, each: impl FnOnce(&mut Self, &T)) {
@@ -222,7 +250,34 @@ struct Reader<'a> {
     images: Vec<Arc<Image>>,
 }
 
-impl Reader<'_> {
+impl<'a> Reader<'a> {
+    fn new(bytes: &'a [u8]) -> Self {
+        Reader {
+            bytes,
+            images: Vec::new(),
+        }
+    }
+
+    /// What [`Writer::models`] wrote: the image table, then the models.
+    fn models(&mut self) -> Result<Vec<Model>, TransferError> {
+        self.images = self.seq(|input| {
+            Ok(Arc::new(Image {
+                mime_type: input.text()?,
+                bytes: input.pods()?,
+            }))
+        })?;
+        self.seq(Reader::model)
+    }
+
+    /// Refuses bytes after the end.
+    fn end(&self) -> Result<(), TransferError> {
+        if self.bytes.is_empty() {
+            Ok(())
+        } else {
+            Err(TransferError("bytes left over"))
+        }
+    }
+
     fn take(&mut self, n: usize) -> Result<&[u8], TransferError> {
         if n > self.bytes.len() {
             return Err(TransferError("cut short"));

@@ -616,3 +616,82 @@ fn an_import_read_elsewhere_lands_as_the_applied_import() {
     assert_eq!(by_worker.document(), before.document());
     assert_eq!(by_worker.session_json(), before.session_json());
 }
+
+/// The page computes a curve op or an over-sketch in its worker from a copy of the models
+/// (through the transfer buffer) and hands the changed model to the edit: every recorded
+/// session, its curve ops and over-sketches landed that way, is the session replayed, bit
+/// for bit, and the looks of an imported model stay shared with the model before. A refusal
+/// handed over changes nothing.
+#[test]
+fn curve_ops_computed_elsewhere_land_as_the_applied_ones() {
+    use sketchmesh_core::document::{Document, Session, model_op};
+    use sketchmesh_core::io::{decode_changed, decode_models, encode_changed, encode_models};
+    use std::sync::Arc;
+    // What the worker does: decode the models, compute, encode the one changed; what the
+    // page does: decode it, hand it over.
+    let elsewhere = |models: &[Arc<sketchmesh_core::document::Model>], op: &Op| {
+        let sent = encode_models(&models.iter().map(|m| &**m).collect::<Vec<_>>());
+        let doc = Document {
+            models: decode_models(&sent)
+                .unwrap()
+                .into_iter()
+                .map(Arc::new)
+                .collect(),
+            ..Document::default()
+        };
+        model_op(&doc, op)
+            .map(|(index, model)| decode_changed(&encode_changed(index, &model)).unwrap())
+    };
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/sessions");
+    let mut offloaded = 0;
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        if !path.to_string_lossy().ends_with(".json") || path.ends_with("golden.json") {
+            continue;
+        }
+        let json = std::fs::read_to_string(&path).unwrap();
+        let mut editor = Editor::new();
+        for op in Session::from_json(&json).unwrap().ops {
+            let mut edit = editor.begin(op).unwrap();
+            if let Some((models, op)) = edit.model_op_to_run() {
+                let changed = elsewhere(models, op);
+                let looks = changed
+                    .as_ref()
+                    .ok()
+                    .map(|&(i, _)| (i, models[i].appearance.clone()));
+                edit.supply_model(changed);
+                assert!(edit.model_op_to_run().is_none(), "computed once");
+                assert_eq!(edit.step().unwrap(), Progress::Done);
+                if let Some((index, Some(looks))) = looks {
+                    let after = edit.document().models[index].appearance.as_ref().unwrap();
+                    assert!(
+                        **after != *looks || Arc::ptr_eq(after, &looks),
+                        "model {index}'s unchanged looks are shared again"
+                    );
+                }
+                offloaded += 1;
+            }
+            edit.finish(&mut editor).unwrap();
+        }
+        let replayed = Editor::replay_json(&json).unwrap();
+        assert_eq!(editor.document(), replayed.document(), "{}", path.display());
+        assert_eq!(editor.session_json(), replayed.session_json());
+    }
+    assert!(offloaded >= 10, "only {offloaded} ops went elsewhere");
+
+    let mut editor = Editor::new();
+    editor.apply(Op::Create(circle(CENTRE, 120.0))).unwrap();
+    let before = editor.clone();
+    let far = StrokeInput {
+        stroke: vec![[20.0, 20.0, 0.5], [40.0, 30.0, 0.5]],
+        ..circle(CENTRE, 120.0)
+    };
+    let mut refused = editor.begin(Op::Pull(far)).unwrap();
+    let (models, op) = refused.model_op_to_run().unwrap();
+    let answer = elsewhere(models, op);
+    assert_eq!(answer.as_ref().unwrap_err(), &CommandError::NoCurveHere);
+    refused.supply_model(answer);
+    assert_eq!(refused.step().unwrap_err(), CommandError::NoCurveHere);
+    assert_eq!(editor.document(), before.document());
+    assert_eq!(editor.session_json(), before.session_json());
+}

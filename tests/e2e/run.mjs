@@ -906,7 +906,7 @@ test('manual over-sketch (K): pick an outline piece, redraw it; pick a curve on 
     assert.deepEqual(fresh.errors, [], 'console errors while over-sketching by hand');
 }));
 
-test('curve tools with the pen: pull (live preview), add a curve, make it sharp, rub, erase; undo restores', async () => {
+test('curve tools with the pen: pull (live preview, its result computed by the page\'s worker), add a curve, make it sharp, rub, erase; undo restores', async () => {
   const fresh = await openApp(browser, url, gpu);
   try {
     const c = ELLIPSE.c;
@@ -941,6 +941,8 @@ test('curve tools with the pen: pull (live preview), add a curve, make it sharp,
     const released = Date.now();
     const pull = await waitOp('pull');
     console.log(`    pull committed ${Date.now() - released} ms after release (including polling)`);
+    const timed = (await api(fresh.page, 'timings')).pull;
+    assert.equal(timed?.elsewhere_ms?.length, 1, `the page's worker computed the committed pull: ${JSON.stringify(timed)}`);
     assert.equal(pull.stroke[0][0], c.x + 170, 'the pull starts where the curve was grabbed');
     await frames(fresh.page, 3);
     const pulled = await screenshot(fresh.page, out('curves-pull.png'));

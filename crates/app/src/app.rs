@@ -30,7 +30,7 @@ use crate::files::{self, ImportQueue};
 use crate::input::router::{Hands, InputRouter, Routed};
 use crate::input::taps::TapCommand;
 use crate::input::{PointerSample, sample_clock};
-use crate::offload::{JobId, Offload, Poll};
+use crate::offload::{Answer, JobId, Offload, Poll, Work};
 use crate::panels;
 use crate::panels::context_menu::{ContextAction, ContextMenu, context_menu_ui};
 use crate::playback::Playback;
@@ -44,6 +44,9 @@ const STATUS_SECONDS: f64 = 6.0;
 
 /// Why an op is refused while an import or a replay runs (see [`SketchApp::is_busy`]).
 const BUSY: &str = "Wait for the import or replay in progress to land, or cancel it (Esc).";
+
+/// How long an op may run in the page's worker before the progress line says so, in seconds.
+const PROGRESS_AFTER_S: f64 = 0.25;
 
 /// How long the steps of the edit in progress may run in one frame, in ms. At least one step
 /// runs every frame, whatever it costs (a factorization can take longer).
@@ -140,6 +143,9 @@ pub struct SketchApp {
     offload: Offload,
     /// The import the edit in progress is, if it is one.
     import: Option<ImportInProgress>,
+    /// The worker's job for the long part of the edit in progress (an import's read, a
+    /// curve op's result), and when it was handed over (seconds).
+    worker_job: Option<(JobId, f64)>,
     /// A session being replayed over frames (the page API's `replay`), to replace the
     /// document once it is through.
     replay: Option<ReplayInProgress>,
@@ -238,6 +244,7 @@ impl SketchApp {
             offload: Offload::default(),
             import: None,
             replay: None,
+            worker_job: None,
             holding_stroke: false,
             edits_begun: 0,
             falloff_panel: Default::default(),
@@ -327,25 +334,30 @@ impl SketchApp {
             ctx.request_repaint();
             return;
         }
-        if let (Some(input), Some(import)) = (edit.import_to_read(), &self.import) {
-            match self.offload.poll(import.job, input) {
-                // The worker's answer repaints.
-                Poll::Pending => return,
-                Poll::Arrived(imported) => edit.supply_import(imported),
-                Poll::NotOffloaded => {}
-            }
-        }
         let was_gesture = edit.is_gesture();
         let started = clock::now_ms();
         let stepped = loop {
+            match hand_over(&mut self.offload, &mut self.worker_job, edit, now) {
+                HandOver::Waiting => break None,
+                HandOver::Landed { seconds } => {
+                    let timings = &mut self.shared.borrow_mut().timings;
+                    self.edit_clock.elsewhere(1000.0 * seconds, timings);
+                }
+                HandOver::Here => {}
+            }
             match edit.step() {
                 Ok(Progress::Working) if clock::now_ms() - started < FRAME_BUDGET_MS => {}
-                other => break other,
+                other => break Some(other),
             }
         };
         let ms = clock::now_ms() - started;
         self.edit_clock
             .stepped(ms, was_gesture, &mut self.shared.borrow_mut().timings);
+        // With the worker: its answer repaints, and the progress line shows if it is late.
+        let Some(stepped) = stepped else {
+            ctx.request_repaint_after(std::time::Duration::from_secs_f64(PROGRESS_AFTER_S));
+            return;
+        };
         match stepped {
             Ok(Progress::Done) => self.finish_edit(now),
             // More work, or a gesture whose next samples may come from the page's listeners.
@@ -367,14 +379,12 @@ impl SketchApp {
         let Some(mut edit) = self.edit.take() else {
             return;
         };
-        // The worker's answer, if it is there, lands now; else the import is finished here.
-        if let Some(import) = &self.import {
-            if edit.import_to_read().is_some()
-                && let Some(imported) = self.offload.answer(import.job)
-            {
-                edit.supply_import(imported);
+        // The worker's answer, if it is there, lands now; else the edit is finished here.
+        if let Some((job, _)) = self.worker_job.take() {
+            if let Some(answer) = self.offload.answer(job) {
+                supply(&mut edit, answer);
             }
-            self.offload.cancel(import.job);
+            self.offload.cancel(job);
         }
         let models_before = self.shared.borrow().editor.document().models.len();
         let optimized = match edit.op() {
@@ -417,9 +427,9 @@ impl SketchApp {
     fn undo(&mut self, now: f64) {
         if self.edit.as_ref().is_some_and(Edit::is_gesture) {
             self.drop_gesture(now);
-        } else if self.is_busy() {
-            // Undoing an import or a replay still running is not making it.
-            self.cancel_import(now);
+        } else if self.is_busy() || self.worker_job.is_some() {
+            // Undoing an import, a replay or an op still running is not making it.
+            self.cancel_offloaded(now);
             self.cancel_replay(now);
         } else {
             self.begin(Op::Undo, false, now);
@@ -433,14 +443,33 @@ impl SketchApp {
         self.take_output(dropped, now);
     }
 
-    /// Drops the import in progress, if the edit in progress is one: nothing changes.
-    fn cancel_import(&mut self, now: f64) {
-        let Some(import) = &self.import else {
+    /// What the progress line says while the worker computes the edit's op, once it has
+    /// taken [`PROGRESS_AFTER_S`] (a quick one shows no line that flickers).
+    fn computing(&self, now: f64) -> Option<String> {
+        let (_, since) = self.worker_job?;
+        let edit = self
+            .edit
+            .as_ref()
+            .filter(|e| e.model_op_to_run().is_some())?;
+        let name = edit.op().name().replace('_', " ");
+        (now - since >= PROGRESS_AFTER_S).then(|| format!("Computing the {name}…"))
+    }
+
+    /// Drops the edit in progress if the worker runs its long part (an import, a curve
+    /// op): nothing changes.
+    fn cancel_offloaded(&mut self, now: f64) {
+        let Some((job, _)) = self.worker_job.take() else {
             return;
         };
-        self.offload.cancel(import.job);
-        self.edit = None;
-        self.settle_import(Err(String::from("The import was cancelled.")), now);
+        self.offload.cancel(job);
+        let Some(edit) = self.edit.take() else {
+            return;
+        };
+        if self.import.is_some() {
+            self.settle_import(Err(String::from("The import was cancelled.")), now);
+        } else {
+            self.set_status(format!("The {} was cancelled.", edit.op().name()), now);
+        }
     }
 
     /// Ends the import in progress: says how it went, and tells who waits for it.
@@ -545,7 +574,7 @@ impl SketchApp {
         };
         if opened != self.opened {
             self.opened = opened;
-            self.cancel_import(now);
+            self.cancel_offloaded(now);
             // A replay still running would replace the document opened meanwhile.
             self.cancel_replay(now);
             self.cancel_gesture();
@@ -674,9 +703,9 @@ impl SketchApp {
                     Some((at, job)) if at == index => job,
                     _ => replaying.job.insert((index, self.offload.job())).1,
                 };
-                match self.offload.poll(job, &input) {
+                match self.offload.poll(job, Work::Import(&input)) {
                     Poll::Pending => break Ok(false),
-                    Poll::Arrived(imported) => edit.supply_import(imported),
+                    Poll::Arrived(answer) => supply(edit, answer),
                     Poll::NotOffloaded => {}
                 }
             }
@@ -735,7 +764,6 @@ impl SketchApp {
             return reply.send(Err(why.unwrap_or_default()));
         }
         self.import = Some(ImportInProgress {
-            job: self.offload.job(),
             name,
             megabytes: bytes as f64 / 1e6,
             reply,
@@ -856,8 +884,8 @@ impl SketchApp {
             self.take_output(confirmed, now);
         }
         if pressed(Key::Escape) {
-            // Stops what runs: an import being read, a replay, the gesture.
-            self.cancel_import(now);
+            // Stops what runs: an import being read, an op computed, a replay, the gesture.
+            self.cancel_offloaded(now);
             self.cancel_replay(now);
             self.drop_gesture(now);
         }
@@ -1185,7 +1213,7 @@ impl SketchApp {
                     (done + 1).min(of)
                 ))
             }
-            (None, None) => None,
+            (None, None) => self.computing(ui.input(|i| i.time)),
         };
         self.shared.borrow_mut().progress.clone_from(&progress);
         if self.shared.borrow().thumbnails.is_capturing() {
@@ -1193,7 +1221,7 @@ impl SketchApp {
         } else if let Some(what) = progress {
             if panels::progress::progress_ui(ui.ctx(), viewport, &what) {
                 let now = ui.input(|i| i.time);
-                self.cancel_import(now);
+                self.cancel_offloaded(now);
                 self.cancel_replay(now);
             }
         } else if let Some((status, _)) = &self.status {
@@ -1737,10 +1765,57 @@ impl eframe::App for SketchApp {
     }
 }
 
+/// What became of the long part of an edit, see [`hand_over`].
+enum HandOver {
+    /// Nothing for the worker: step the edit here.
+    Here,
+    /// The worker is on it: nothing to step here meanwhile.
+    Waiting,
+    /// The worker's answer landed in the edit, this long after it was handed over.
+    Landed { seconds: f64 },
+}
+
+/// Hands the long, pure part of `edit` (an import's read, a curve op's result) to the
+/// page's worker as `job`, or lands the worker's answer in it.
+fn hand_over(
+    offload: &mut Offload,
+    job: &mut Option<(JobId, f64)>,
+    edit: &mut Edit,
+    now: f64,
+) -> HandOver {
+    let work = match (edit.import_to_read(), edit.model_op_to_run()) {
+        (Some(input), _) => Work::Import(input),
+        (None, Some((models, op))) => Work::ModelOp(models, op),
+        (None, None) => return HandOver::Here,
+    };
+    let (id, since) = *job.get_or_insert_with(|| (offload.job(), now));
+    match offload.poll(id, work) {
+        Poll::Pending => HandOver::Waiting,
+        Poll::Arrived(answer) => {
+            *job = None;
+            supply(edit, answer);
+            HandOver::Landed {
+                seconds: now - since,
+            }
+        }
+        Poll::NotOffloaded => {
+            *job = None;
+            HandOver::Here
+        }
+    }
+}
+
+/// Lands the worker's answer in the edit it was computed for.
+fn supply(edit: &mut Edit, answer: Answer) {
+    match answer {
+        Answer::Imported(imported) => edit.supply_import(imported),
+        Answer::Model(changed) => edit.supply_model(changed),
+    }
+}
+
 /// An import being read (in the page, by the worker): what the progress line says, and who
 /// waits for it to land.
 struct ImportInProgress {
-    job: JobId,
     name: String,
     megabytes: f64,
     reply: files::Reply,
@@ -1799,6 +1874,11 @@ impl EditClock {
                 self.finish_ms += ms;
             }
         }
+    }
+
+    /// The worker's part, which took `ms` while the page drew.
+    fn elsewhere(&self, ms: f64, timings: &mut clock::Timings) {
+        clock::record(&mut timings.of(self.name).elsewhere_ms, ms);
     }
 
     /// The finish, which took `ms`.

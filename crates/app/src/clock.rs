@@ -38,8 +38,11 @@ pub struct EditTimings {
     /// The steps of each later frame while its gesture goes on (a pull's drag frames).
     pub frame_ms: Vec<f64>,
     /// Everything after its input was complete, over however many frames: the steps left and
-    /// the commit (a pull's release, a whole over-sketch or creation).
+    /// the commit (a pull's release, a whole over-sketch or creation), in the page's frames.
     pub finish_ms: Vec<f64>,
+    /// The page's worker's part, from handing it over to its answer landing (an import's
+    /// read, a curve op's result): time the page kept drawing.
+    pub elsewhere_ms: Vec<f64>,
 }
 
 impl Timings {

@@ -1,36 +1,61 @@
-//! Long work off the frame: in the page, an import's files are read by a Web Worker running
-//! this same wasm in its own instance (`web/worker.js`), so parsing a million triangles
-//! never freezes the view; orbiting, drawing the scene and the Cancel button keep working.
+//! Long work off the frame: in the page, a Web Worker runs this same wasm in its own
+//! instance (`web/worker.js`), so reading a million triangles or computing a curve op on a
+//! 40k-vertex shape never freezes the view; orbiting, drawing the scene and the Cancel
+//! button keep working.
 //!
-//! The worker runs [`import_files`], the pure part of an import (files in, models out), and
-//! sends the result back as one transferable buffer (`sketchmesh_core::io::transfer`). The
-//! edit in progress takes it ([`Edit::supply_import`]) and finishes as it would have on the
+//! The worker runs the pure part of an edit: an import's [`import_files`] (files in, models
+//! out), or a curve op's or over-sketch's [`model_op`] (the document's models and the op in,
+//! the changed model out). Both cross as transferable buffers
+//! (`sketchmesh_core::io::transfer`). The edit in progress takes the answer
+//! ([`Edit::supply_import`], [`Edit::supply_model`]) and finishes as it would have on the
 //! main thread: the same code on the same build, so replaying the session gives the same
-//! document. The order of ops is kept: an op begun while the worker reads finishes the
-//! import first, on the main thread (that one frame is long; the worker's answer is then
-//! dropped).
+//! document. The order of ops is kept: while an import runs, ops wait (see the app's
+//! `is_busy`); an op begun while a curve op is computed finishes that one first, on the main
+//! thread (that one frame is long; the worker's answer is then dropped).
 //!
 //! Natively, and when the page cannot start a worker, nothing is offloaded: [`Offload::poll`]
 //! says so and the app steps the edit itself, as before.
 //!
 //! [`import_files`]: sketchmesh_core::document::import_files
+//! [`model_op`]: sketchmesh_core::document::model_op
 //! [`Edit::supply_import`]: sketchmesh_core::document::Edit::supply_import
+//! [`Edit::supply_model`]: sketchmesh_core::document::Edit::supply_model
 
-use sketchmesh_core::document::{CommandError, ImportInput};
+use std::sync::Arc;
+
+use sketchmesh_core::document::{CommandError, ImportInput, Model, Op};
 use sketchmesh_core::io::Imported;
 
-/// What became of the import the edit in progress needs.
+/// The work of an edit the worker can do.
+#[derive(Clone, Copy, Debug)]
+pub enum Work<'a> {
+    /// Read an import's files.
+    Import(&'a ImportInput),
+    /// Compute an op that changes one model, from the document's models.
+    ModelOp(&'a [Arc<Model>], &'a Op),
+}
+
+/// The worker's answer to a [`Work`].
+#[derive(Debug)]
+pub enum Answer {
+    /// What the import's files hold.
+    Imported(Result<Imported, CommandError>),
+    /// The changed model's index and its next version.
+    Model(Result<(usize, Model), CommandError>),
+}
+
+/// What became of the work the edit in progress needs.
 #[derive(Debug)]
 pub enum Poll {
     /// No worker: step the edit here.
     NotOffloaded,
-    /// The worker is reading it; its answer repaints.
+    /// The worker is on it; its answer repaints.
     Pending,
     /// The worker's answer.
-    Arrived(Result<Imported, CommandError>),
+    Arrived(Answer),
 }
 
-/// One piece of work for the worker: the import of one edit.
+/// One piece of work for the worker: the import or the op of one edit.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct JobId(u64);
 
@@ -66,20 +91,20 @@ impl Offload {
         JobId(self.jobs)
     }
 
-    /// Sends `job`'s files to the worker the first time it is asked about them, and says
+    /// Sends `job`'s work to the worker the first time it is asked about it, and says
     /// whether the answer is there. While the worker runs another job, this one is not
     /// offloaded (it runs in the frame).
-    pub fn poll(&mut self, job: JobId, input: &ImportInput) -> Poll {
+    pub fn poll(&mut self, job: JobId, work: Work<'_>) -> Poll {
         #[cfg(target_arch = "wasm32")]
         if let Some(worker) = self.worker.as_mut() {
-            return worker.poll(job.0, input);
+            return worker.poll(job.0, work);
         }
-        let _ = (job, input);
+        let _ = (job, work);
         Poll::NotOffloaded
     }
 
     /// `job`'s answer if it has arrived, without sending anything.
-    pub fn answer(&mut self, job: JobId) -> Option<Result<Imported, CommandError>> {
+    pub fn answer(&mut self, job: JobId) -> Option<Answer> {
         #[cfg(target_arch = "wasm32")]
         if let Some(worker) = self.worker.as_mut() {
             return worker.answer(job.0);
@@ -105,32 +130,35 @@ mod page {
     use std::rc::Rc;
 
     use js_sys::{Array, Object, Reflect, Uint8Array};
-    use sketchmesh_core::document::{CommandError, FileInput, ImportInput, import_files};
-    use sketchmesh_core::io::{decode_imported, encode_imported};
+    use sketchmesh_core::document::{
+        CommandError, Document, FileInput, ImportInput, Op, import_files, model_op,
+    };
+    use sketchmesh_core::io::{
+        decode_changed, decode_imported, decode_models, encode_changed, encode_imported,
+        encode_models,
+    };
     use wasm_bindgen::JsCast as _;
     use wasm_bindgen::prelude::*;
 
-    use sketchmesh_core::io::Imported;
-
-    use super::Poll;
+    use super::{Answer, Poll, Work};
 
     /// The script the worker runs, next to the page.
     const SCRIPT: &str = "worker.js";
 
-    /// A job's answer: the encoded import (still in JavaScript's memory: it is copied into
+    /// A job's message: the encoded result (still in JavaScript's memory: it is copied into
     /// the wasm when the edit takes it, in the frame that lands it, not when it arrives), or
     /// the sentence of its refusal.
-    type Answer = (u64, Result<Uint8Array, String>);
+    type Message = (u64, Result<Uint8Array, String>);
 
     /// The page's worker, its message handlers, and the job in hand.
     pub(super) struct Worker {
         worker: web_sys::Worker,
         /// The worker's answers and failures land here.
-        inbox: Rc<RefCell<Option<Answer>>>,
+        inbox: Rc<RefCell<Option<Message>>>,
         /// Set when the worker itself failed (its script did not load).
         broken: Rc<RefCell<bool>>,
-        /// The job sent and not yet answered.
-        sent: Option<u64>,
+        /// The job sent and not yet answered, and whether it is an import (else an op).
+        sent: Option<(u64, bool)>,
         ctx: egui::Context,
         _on_message: Closure<dyn FnMut(web_sys::MessageEvent)>,
         _on_error: Closure<dyn FnMut(web_sys::Event)>,
@@ -147,7 +175,7 @@ mod page {
             let on_message = {
                 let (inbox, ctx) = (inbox.clone(), ctx.clone());
                 Closure::<dyn FnMut(_)>::new(move |event: web_sys::MessageEvent| {
-                    *inbox.borrow_mut() = Some(answer(&event.data()));
+                    *inbox.borrow_mut() = Some(message(&event.data()));
                     ctx.request_repaint();
                 })
             };
@@ -172,23 +200,27 @@ mod page {
             })
         }
 
-        pub(super) fn poll(&mut self, id: u64, input: &ImportInput) -> Poll {
+        pub(super) fn poll(&mut self, id: u64, work: Work<'_>) -> Poll {
             if *self.broken.borrow() {
                 return Poll::NotOffloaded;
             }
-            if self.sent.is_some_and(|sent| sent != id) {
+            if self.sent.is_some_and(|(sent, _)| sent != id) {
                 return Poll::NotOffloaded;
             }
             if self.sent.is_none() {
-                if input.files.iter().any(|f| f.data.is_none()) {
+                let sent = match work {
                     // The edit says which file is missing.
+                    Work::Import(input) if input.files.iter().any(|f| f.data.is_none()) => {
+                        return Poll::NotOffloaded;
+                    }
+                    Work::Import(input) => self.send_import(id, &input.files),
+                    Work::ModelOp(models, op) => self.send_op(id, models, op),
+                };
+                if let Err(why) = sent {
+                    log::warn!("Could not hand the work to the worker: {why:?}");
                     return Poll::NotOffloaded;
                 }
-                if let Err(why) = self.send(id, &input.files) {
-                    log::warn!("Could not hand the import to the worker: {why:?}");
-                    return Poll::NotOffloaded;
-                }
-                self.sent = Some(id);
+                self.sent = Some((id, matches!(work, Work::Import(_))));
             }
             match self.answer(id) {
                 Some(answer) => Poll::Arrived(answer),
@@ -196,20 +228,34 @@ mod page {
             }
         }
 
-        pub(super) fn answer(&mut self, id: u64) -> Option<Result<Imported, CommandError>> {
+        pub(super) fn answer(&mut self, id: u64) -> Option<Answer> {
+            let (_, is_import) = self.sent.filter(|&(sent, _)| sent == id)?;
             let (_, answer) = self.inbox.borrow_mut().take_if(|(job, _)| *job == id)?;
             if answer.is_err() {
                 // A refusal may come from a trapped instance: the next job gets a new one.
                 self.cancel(id);
             }
             self.sent = None;
-            Some(answer.map_err(CommandError::Elsewhere).and_then(|bytes| {
-                decode_imported(&bytes.to_vec()).map_err(|e| CommandError::Elsewhere(e.to_string()))
-            }))
+            let bytes = answer.map(|bytes| bytes.to_vec());
+            let unreadable =
+                |e: sketchmesh_core::io::TransferError| CommandError::Elsewhere(e.to_string());
+            Some(if is_import {
+                Answer::Imported(
+                    bytes
+                        .map_err(CommandError::Elsewhere)
+                        .and_then(|bytes| decode_imported(&bytes).map_err(unreadable)),
+                )
+            } else {
+                Answer::Model(
+                    bytes
+                        .map_err(CommandError::Elsewhere)
+                        .and_then(|bytes| decode_changed(&bytes).map_err(unreadable)),
+                )
+            })
         }
 
         pub(super) fn cancel(&mut self, id: u64) {
-            if self.sent != Some(id) {
+            if self.sent.is_none_or(|(sent, _)| sent != id) {
                 return;
             }
             self.worker.set_onmessage(None);
@@ -224,9 +270,27 @@ mod page {
             }
         }
 
+        /// Posts `{id, models, op}`: the document's models in one transferred buffer, the
+        /// op as its session JSON.
+        fn send_op(
+            &self,
+            id: u64,
+            models: &[std::sync::Arc<sketchmesh_core::document::Model>],
+            op: &Op,
+        ) -> Result<(), JsValue> {
+            let models = encode_models(&models.iter().map(|m| &**m).collect::<Vec<_>>());
+            let models = Uint8Array::from(models.as_slice());
+            let message = Object::new();
+            Reflect::set(&message, &"id".into(), &JsValue::from_f64(id as f64))?;
+            Reflect::set(&message, &"models".into(), &models)?;
+            Reflect::set(&message, &"op".into(), &JsValue::from_str(&op.to_json()))?;
+            self.worker
+                .post_message_with_transfer(&message, &Array::of1(&models.buffer()))
+        }
+
         /// Posts `{id, names, files}`; the files are copied (the op keeps its bytes for
         /// the session).
-        fn send(&self, id: u64, files: &[FileInput]) -> Result<(), JsValue> {
+        fn send_import(&self, id: u64, files: &[FileInput]) -> Result<(), JsValue> {
             let (names, datas, transfer) = (Array::new(), Array::new(), Array::new());
             for file in files {
                 names.push(&JsValue::from_str(&file.name));
@@ -244,7 +308,7 @@ mod page {
     }
 
     /// A message from the worker: `{id, bytes}` or `{id, error}`.
-    fn answer(data: &JsValue) -> Answer {
+    fn message(data: &JsValue) -> Message {
         let field = |name: &str| Reflect::get(data, &name.into()).unwrap_or(JsValue::UNDEFINED);
         let id = field("id").as_f64().unwrap_or(-1.0) as u64;
         let result = match field("bytes").dyn_into::<Uint8Array>() {
@@ -279,6 +343,26 @@ mod page {
         match import_files(&input) {
             Ok(imported) => Ok(Uint8Array::from(encode_imported(&imported).as_slice())),
             Err(error) => Err(JsValue::from_str(&error.to_string())),
+        }
+    }
+
+    /// The worker's entry for an op that changes one model (`web/worker.js` calls it):
+    /// computes it on the document's models, as the editor would, into one buffer for
+    /// [`decode_changed`].
+    ///
+    /// Errors: the op's refusal, as the sentence the editor would show.
+    #[wasm_bindgen]
+    pub fn run_model_op(models: Uint8Array, op: String) -> Result<Uint8Array, JsValue> {
+        let refused = |why: String| JsValue::from_str(&why);
+        let models = decode_models(&models.to_vec()).map_err(|e| refused(e.to_string()))?;
+        let op: Op = serde_json::from_str(&op).map_err(|e| refused(e.to_string()))?;
+        let doc = Document {
+            models: models.into_iter().map(std::sync::Arc::new).collect(),
+            ..Document::default()
+        };
+        match model_op(&doc, &op) {
+            Ok((index, model)) => Ok(Uint8Array::from(encode_changed(index, &model).as_slice())),
+            Err(error) => Err(refused(error.to_string())),
         }
     }
 }

@@ -389,10 +389,16 @@ try {
       vertices,
       grab_ms: round(pull.begin_ms.at(-1) ?? null),
       frame_ms: stats(pull.frame_ms),
+      // The committed ops' work in the page's frames, and in its worker (the page drew
+      // meanwhile).
       release_ms: round(pull.finish_ms.at(-1) ?? null),
+      release_worker_ms: round(pull.elsewhere_ms?.at(-1) ?? null),
       cut_ms: round(cut?.finish_ms.at(-1) ?? null),
+      cut_worker_ms: round(cut?.elsewhere_ms?.at(-1) ?? null),
       tunnel_ms: round(tunnel?.finish_ms.at(-1) ?? null),
+      tunnel_worker_ms: round(tunnel?.elsewhere_ms?.at(-1) ?? null),
       extrude_ms: round(extrude?.finish_ms.at(-1) ?? null),
+      extrude_worker_ms: round(extrude?.elsewhere_ms?.at(-1) ?? null),
       merge_ms: round(merge_ms),
     });
     console.error(`pull, cut and tunnel at ${vertices} vertices: ${JSON.stringify(pulls.at(-1))}`);

@@ -455,20 +455,19 @@ impl SketchApp {
         (now - since >= PROGRESS_AFTER_S).then(|| format!("Computing the {name}…"))
     }
 
-    /// Drops the edit in progress if the worker runs its long part (an import, a curve
-    /// op): nothing changes.
+    /// Drops the edit in progress if it is an import, or if the worker computes its op:
+    /// nothing changes.
     fn cancel_offloaded(&mut self, now: f64) {
-        let Some((job, _)) = self.worker_job.take() else {
-            return;
-        };
-        self.offload.cancel(job);
-        let Some(edit) = self.edit.take() else {
-            return;
-        };
+        let job = self.worker_job.take();
+        if let Some((job, _)) = job {
+            self.offload.cancel(job);
+        }
         if self.import.is_some() {
+            self.edit = None;
             self.settle_import(Err(String::from("The import was cancelled.")), now);
-        } else {
-            self.set_status(format!("The {} was cancelled.", edit.op().name()), now);
+        } else if let Some(edit) = self.edit.take_if(|_| job.is_some()) {
+            let name = edit.op().name().replace('_', " ");
+            self.set_status(format!("The {name} was cancelled."), now);
         }
     }
 

@@ -6,7 +6,9 @@
 //! The worker runs the pure part of an edit: an import's [`import_files`] (files in, models
 //! out), or a curve op's or over-sketch's [`model_op`] (the document's models and the op in,
 //! the changed model out). Both cross as transferable buffers
-//! (`sketchmesh_core::io::transfer`). The edit in progress takes the answer
+//! (`sketchmesh_core::io::transfer`); the worker keeps the models of its last op, so an op
+//! sends only the models that changed since (a scan beside the shape being pulled crosses
+//! once, not at every pull). The edit in progress takes the answer
 //! ([`Edit::supply_import`], [`Edit::supply_model`]) and finishes as it would have on the
 //! main thread: the same code on the same build, so replaying the session gives the same
 //! document. The order of ops is kept: while an import runs, ops wait (see the app's
@@ -124,14 +126,41 @@ impl Offload {
     }
 }
 
+/// For each of `models`, its index among the models the worker `known`s from its last op,
+/// or -1 where it must be sent.
+#[cfg(any(target_arch = "wasm32", test))]
+fn kept(known: &[std::sync::Weak<Model>], models: &[Arc<Model>]) -> Vec<i32> {
+    (models.iter())
+        .map(|model| {
+            let held = known.iter().position(|k| k.as_ptr() == Arc::as_ptr(model));
+            held.and_then(|j| i32::try_from(j).ok()).unwrap_or(-1)
+        })
+        .collect()
+}
+
+/// The models [`kept`] described: `previous` ones at the indices it gives, the `fresh` ones
+/// in order where it says -1; `None` when they do not fit together.
+#[cfg(any(target_arch = "wasm32", test))]
+fn with_kept(previous: &[Arc<Model>], kept: &[i32], fresh: Vec<Model>) -> Option<Vec<Arc<Model>>> {
+    let mut fresh = fresh.into_iter().map(Arc::new);
+    let models = (kept.iter())
+        .map(|&k| match usize::try_from(k) {
+            Ok(j) => previous.get(j).cloned(),
+            Err(_) => fresh.next(),
+        })
+        .collect();
+    fresh.next().is_none().then_some(models).flatten()
+}
+
 #[cfg(target_arch = "wasm32")]
 mod page {
     use std::cell::RefCell;
     use std::rc::Rc;
+    use std::sync::{Arc, Weak};
 
-    use js_sys::{Array, Object, Reflect, Uint8Array};
+    use js_sys::{Array, Int32Array, Object, Reflect, Uint8Array};
     use sketchmesh_core::document::{
-        CommandError, Document, FileInput, ImportInput, Op, import_files, model_op,
+        CommandError, Document, FileInput, ImportInput, Model, Op, import_files, model_op,
     };
     use sketchmesh_core::io::{
         decode_changed, decode_imported, decode_models, encode_changed, encode_imported,
@@ -147,8 +176,9 @@ mod page {
 
     /// A job's message: the encoded result (still in JavaScript's memory: it is copied into
     /// the wasm when the edit takes it, in the frame that lands it, not when it arrives), or
-    /// the sentence of its refusal.
-    type Message = (u64, Result<Uint8Array, String>);
+    /// the sentence of its refusal and whether the instance broke (it trapped, or its wasm
+    /// did not load) rather than refused.
+    type Message = (u64, Result<Uint8Array, (String, bool)>);
 
     /// The page's worker, its message handlers, and the job in hand.
     pub(super) struct Worker {
@@ -159,6 +189,11 @@ mod page {
         broken: Rc<RefCell<bool>>,
         /// The job sent and not yet answered, and whether it is an import (else an op).
         sent: Option<(u64, bool)>,
+        /// The models the worker keeps from its last op, in order: an op sends only the
+        /// models not among them (a scan beside the shape being pulled is sent once).
+        /// Weak, so that a model the document dropped is not kept alive, and its address is
+        /// not reused while it is listed here.
+        known: Vec<Weak<Model>>,
         ctx: egui::Context,
         _on_message: Closure<dyn FnMut(web_sys::MessageEvent)>,
         _on_error: Closure<dyn FnMut(web_sys::Event)>,
@@ -194,6 +229,7 @@ mod page {
                 inbox,
                 broken,
                 sent: None,
+                known: Vec::new(),
                 ctx,
                 _on_message: on_message,
                 _on_error: on_error,
@@ -231,12 +267,15 @@ mod page {
         pub(super) fn answer(&mut self, id: u64) -> Option<Answer> {
             let (_, is_import) = self.sent.filter(|&(sent, _)| sent == id)?;
             let (_, answer) = self.inbox.borrow_mut().take_if(|(job, _)| *job == id)?;
-            if answer.is_err() {
-                // A refusal may come from a trapped instance: the next job gets a new one.
+            if answer.as_ref().is_err_and(|&(_, broke)| broke) {
+                // A trapped instance is never used again: the next job gets a new one.
                 self.cancel(id);
+            } else if answer.is_err() && !is_import {
+                // Which models the worker kept is not sure: the next op sends them all.
+                self.known.clear();
             }
             self.sent = None;
-            let bytes = answer.map(|bytes| bytes.to_vec());
+            let bytes = answer.map(|bytes| bytes.to_vec()).map_err(|(why, _)| why);
             let unreadable =
                 |e: sketchmesh_core::io::TransferError| CommandError::Elsewhere(e.to_string());
             Some(if is_import {
@@ -270,22 +309,25 @@ mod page {
             }
         }
 
-        /// Posts `{id, models, op}`: the document's models in one transferred buffer, the
-        /// op as its session JSON.
-        fn send_op(
-            &self,
-            id: u64,
-            models: &[std::sync::Arc<sketchmesh_core::document::Model>],
-            op: &Op,
-        ) -> Result<(), JsValue> {
-            let models = encode_models(&models.iter().map(|m| &**m).collect::<Vec<_>>());
-            let models = Uint8Array::from(models.as_slice());
+        /// Posts `{id, models, kept, op}`: for each of the document's models where the
+        /// worker holds it already (`kept`, its index there, or -1), the others in one
+        /// transferred buffer, and the op as its session JSON.
+        fn send_op(&mut self, id: u64, models: &[Arc<Model>], op: &Op) -> Result<(), JsValue> {
+            let kept = super::kept(&self.known, models);
+            let fresh: Vec<&Model> = (models.iter().zip(&kept))
+                .filter(|&(_, &k)| k < 0)
+                .map(|(model, _)| &**model)
+                .collect();
+            let bytes = Uint8Array::from(encode_models(&fresh).as_slice());
             let message = Object::new();
             Reflect::set(&message, &"id".into(), &JsValue::from_f64(id as f64))?;
-            Reflect::set(&message, &"models".into(), &models)?;
+            Reflect::set(&message, &"models".into(), &bytes)?;
+            Reflect::set(&message, &"kept".into(), &Int32Array::from(kept.as_slice()))?;
             Reflect::set(&message, &"op".into(), &JsValue::from_str(&op.to_json()))?;
             self.worker
-                .post_message_with_transfer(&message, &Array::of1(&models.buffer()))
+                .post_message_with_transfer(&message, &Array::of1(&bytes.buffer()))?;
+            self.known = models.iter().map(Arc::downgrade).collect();
+            Ok(())
         }
 
         /// Posts `{id, names, files}`; the files are copied (the op keeps its bytes for
@@ -313,9 +355,12 @@ mod page {
         let id = field("id").as_f64().unwrap_or(-1.0) as u64;
         let result = match field("bytes").dyn_into::<Uint8Array>() {
             Ok(bytes) => Ok(bytes),
-            Err(_) => Err(field("error")
-                .as_string()
-                .unwrap_or_else(|| String::from("The worker gave no answer."))),
+            Err(_) => Err((
+                field("error")
+                    .as_string()
+                    .unwrap_or_else(|| String::from("The worker gave no answer.")),
+                !field("refused").is_truthy(),
+            )),
         };
         (id, result)
     }
@@ -346,23 +391,83 @@ mod page {
         }
     }
 
+    thread_local! {
+        /// In the worker's instance: the models of its last op, which the next one may keep.
+        static KEPT: RefCell<Vec<Arc<Model>>> = RefCell::default();
+    }
+
     /// The worker's entry for an op that changes one model (`web/worker.js` calls it):
     /// computes it on the document's models, as the editor would, into one buffer for
-    /// [`decode_changed`].
+    /// [`decode_changed`]. The models are those of the worker's last op at the indices
+    /// `kept` gives, the ones in `models` where it says -1.
     ///
     /// Errors: the op's refusal, as the sentence the editor would show.
     #[wasm_bindgen]
-    pub fn run_model_op(models: Uint8Array, op: String) -> Result<Uint8Array, JsValue> {
+    pub fn run_model_op(
+        models: Uint8Array,
+        kept: Vec<i32>,
+        op: String,
+    ) -> Result<Uint8Array, JsValue> {
         let refused = |why: String| JsValue::from_str(&why);
-        let models = decode_models(&models.to_vec()).map_err(|e| refused(e.to_string()))?;
+        let fresh = decode_models(&models.to_vec()).map_err(|e| refused(e.to_string()))?;
+        let models = KEPT.with_borrow(|previous| super::with_kept(previous, &kept, fresh));
+        let models = models.ok_or_else(|| refused(String::from("The worker lost a model.")))?;
+        KEPT.set(models.clone());
         let op: Op = serde_json::from_str(&op).map_err(|e| refused(e.to_string()))?;
         let doc = Document {
-            models: models.into_iter().map(std::sync::Arc::new).collect(),
+            models,
             ..Document::default()
         };
         match model_op(&doc, &op) {
             Ok((index, model)) => Ok(Uint8Array::from(encode_changed(index, &model).as_slice())),
             Err(error) => Err(refused(error.to_string())),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn model(size: f64) -> Arc<Model> {
+        let mut editor = sketchmesh_core::document::Editor::new();
+        let ellipse = (0..=60).map(|i| {
+            let a = std::f64::consts::TAU * f64::from(i) / 60.0;
+            [400.0 + size * a.cos(), 300.0 + 0.7 * size * a.sin(), 0.5]
+        });
+        let op = Op::Create(sketchmesh_core::document::StrokeInput {
+            viewport: [800.0, 600.0],
+            camera: sketchmesh_core::camera::Camera::default(),
+            stroke: ellipse.collect(),
+        });
+        editor.apply(op).expect("creates");
+        Arc::clone(&editor.document().models[0])
+    }
+
+    /// What the page sends and what the worker rebuilds agree: kept models are the very same,
+    /// changed ones cross, and a description that does not fit is refused.
+    #[test]
+    fn the_worker_rebuilds_the_models_the_page_describes() {
+        let (a, b, c) = (model(100.0), model(150.0), model(200.0));
+        let known: Vec<_> = [&a, &b].iter().map(|m| Arc::downgrade(m)).collect();
+        let now = [Arc::clone(&b), Arc::clone(&c), Arc::clone(&a)];
+        let kept = kept(&known, &now);
+        assert_eq!(kept, [1, -1, 0]);
+        let previous = [Arc::clone(&a), Arc::clone(&b)];
+        let rebuilt = with_kept(&previous, &kept, vec![Model::clone(&c)]).expect("fits");
+        assert!(Arc::ptr_eq(&rebuilt[0], &b) && Arc::ptr_eq(&rebuilt[2], &a));
+        assert_eq!(*rebuilt[1], *c);
+        assert_eq!(
+            with_kept(&previous, &[2], Vec::new()),
+            None,
+            "an index past the kept"
+        );
+        assert_eq!(
+            with_kept(&previous, &[-1], Vec::new()),
+            None,
+            "a model missing"
+        );
+        let extra = vec![Model::clone(&c)];
+        assert_eq!(with_kept(&previous, &[0], extra), None, "one too many");
     }
 }

@@ -346,20 +346,24 @@ fn page_table(page: &Value, wasm_gzip_size: u64) -> String {
                 ms("/grab_ms"),
             ),
             (
-                format!("pull at {vertices} vertices, release to committed"),
+                format!("pull at {vertices} vertices, release: in the page's frames"),
                 ms("/release_ms"),
             ),
             (
-                format!("cut at {vertices} vertices, the op alone"),
-                ms("/cut_ms"),
+                format!("pull at {vertices} vertices, release: in the worker, the page drawing"),
+                ms("/release_worker_ms"),
             ),
             (
-                format!("tunnel at {vertices} vertices, the op alone"),
-                ms("/tunnel_ms"),
+                format!("cut at {vertices} vertices, the op in the worker"),
+                ms("/cut_worker_ms"),
             ),
             (
-                format!("extrude at {vertices} vertices, the op alone"),
-                ms("/extrude_ms"),
+                format!("tunnel at {vertices} vertices, the op in the worker"),
+                ms("/tunnel_worker_ms"),
+            ),
+            (
+                format!("extrude at {vertices} vertices, the op in the worker"),
+                ms("/extrude_worker_ms"),
             ),
             (
                 format!("merge of two {vertices}-vertex shapes, replayed op"),

@@ -353,9 +353,16 @@ impl SketchApp {
         let ms = clock::now_ms() - started;
         self.edit_clock
             .stepped(ms, was_gesture, &mut self.shared.borrow_mut().timings);
-        // With the worker: its answer repaints, and the progress line shows if it is late.
+        // With the worker: its answer repaints; one repaint shows the progress line once it
+        // is due, and its ring then ticks. Nothing else repaints: every frame draws the whole
+        // scene, which costs the worker its core on a machine without a GPU.
         let Some(stepped) = stepped else {
-            ctx.request_repaint_after(std::time::Duration::from_secs_f64(PROGRESS_AFTER_S));
+            if let Some((_, since)) = self.worker_job
+                && since + PROGRESS_AFTER_S > now
+            {
+                let due = since + PROGRESS_AFTER_S - now;
+                ctx.request_repaint_after(std::time::Duration::from_secs_f64(due));
+            }
             return;
         };
         match stepped {

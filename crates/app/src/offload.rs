@@ -225,9 +225,8 @@ mod page {
             worker.set_onmessage(Some(on_message.as_ref().unchecked_ref()));
             worker.set_onerror(Some(on_error.as_ref().unchecked_ref()));
             // This instance's compiled module first: the worker shares its machine code,
-            // already optimized while the page ran, instead of compiling the file again and
-            // running its first long op in the engine's unoptimized tier (a 40k-vertex
-            // pull took 10.7 s there against 1.4 s here).
+            // already optimized while the page ran, instead of fetching and compiling the
+            // file again.
             let module = Object::new();
             Reflect::set(&module, &"module".into(), &wasm_bindgen::module())
                 .and_then(|_| worker.post_message(&module))

@@ -6,9 +6,9 @@
 //! Its ring turns in two ticks a second rather than at every frame (egui's spinner): every
 //! repaint draws the whole scene again, and while the worker takes one core, a page
 //! repainting often competes with it for the other (a tablet would also spend its battery on
-//! an animation). On this project's 2-core machine, with the software rasterizer, eight
-//! ticks a second over a 40k-vertex shape made a pull's result take 10.5 s in the worker
-//! instead of the 1.4 s it takes in a frame.
+//! an animation). On this project's 2-core machine, with the software rasterizer and a
+//! 40k-vertex shape on screen, the page's repaints kept its main thread busy for 11 of the
+//! 11 s a pull's result took in the worker; with fewer, for 5–7 of 8–12 s.
 
 /// Touch-sized Cancel.
 const CANCEL: egui::Vec2 = egui::vec2(88.0, 44.0);

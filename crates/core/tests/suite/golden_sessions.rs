@@ -72,6 +72,11 @@ use sketchmesh_core::oversketch::{ManualHandle, OutlineKind, OversketchRoi, pick
 /// sliding along their curves). The worst radius ratio after their add-curve ops rose from
 /// 0.249, 0.034, 0.213 and 0.062 to 0.345, 0.345, 0.354 and 0.525; sessions without a poor
 /// triangle after a curve op replay as before.
+///
+/// Re-recorded on purpose: the same three, when the tidy-up came to move only the vertices
+/// within eight rings of the poor triangles instead of the whole remeshed region (it took
+/// 0.65 s of a 0.9 s pull at 40k vertices). The worst radius ratios after the add-curve ops
+/// stayed 0.338 and 0.344 (to the fifth digit).
 /// Sessions allowed to differ slightly from their golden, each with the reason: an entry
 /// needs a refactor that had to reorder floating-point operations, named here.
 const ALLOWANCES: &[(&str, &str)] = &[];

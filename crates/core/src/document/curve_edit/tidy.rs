@@ -11,34 +11,67 @@
 //! tangent there, and the uniform Laplacian evens out its spacing. Where curves meet, and at
 //! the ends of open curves, vertices hold.
 //!
-//! It runs only when a triangle of the region is below [`POOR`], and its result is kept only
-//! when the region's worst radius ratio rises, so it never leaves the mesh worse than the
+//! It runs only when a triangle of the region is below [`POOR`], moves only the vertices
+//! within [`RINGS`] rings of the poor triangles (an optimization of the whole region cost
+//! 0.65 s after a pull at 40k vertices, for one triangle at 0.29), and its result is kept
+//! only when the worst radius ratio there rises, so it never leaves the mesh worse than the
 //! remesh did.
 
 use glam::DVec3;
 
 use crate::fibermesh::ControlCurve;
-use crate::mesh::Mesh;
+use crate::mesh::{Mesh, VertexId};
 use crate::optimize::quality::radius_ratio;
 use crate::optimize::{Mode, OptimizeParams, Optimizer, Selection, WeightScheme};
 
-/// A triangle with a radius ratio below this is poor enough to tidy its region.
+/// A triangle with a radius ratio below this is poor enough to tidy around it.
 const POOR: f64 = 0.3;
 
-/// Moves the vertices of `region` (a vertex mask) to better triangles when a triangle there
-/// is poor, curve vertices along their curves; does nothing when that does not raise the
-/// region's worst radius ratio.
+/// How many rings of vertices around the poor triangles move: enough room to even out a
+/// sliver and its neighbours, little enough that the solve stays small. Where two curve
+/// vertices crowd, their curve's spacing evens out over several edges on each side: with
+/// 3–6 rings a golden session's sliver stayed at 0.034, 7 raised it to 0.338.
+const RINGS: usize = 8;
+
+/// Moves the vertices of `region` (a vertex mask) near its poor triangles to better
+/// triangles, curve vertices along their curves; does nothing when that does not raise the
+/// worst radius ratio there.
 pub(super) fn tidy_poor_triangles(mesh: &mut Mesh, curves: &[ControlCurve], region: &[bool]) {
-    let before = worst_ratio(mesh, mesh.positions(), region);
-    if before >= POOR {
-        return;
-    }
-    let Some(positions) = optimized(mesh, curves, region) else {
+    let Some(near) = near_poor_triangles(mesh, region) else {
         return;
     };
-    if worst_ratio(mesh, &positions, region) > before {
+    let before = worst_ratio(mesh, mesh.positions(), &near);
+    let Some(positions) = optimized(mesh, curves, &near) else {
+        return;
+    };
+    if worst_ratio(mesh, &positions, &near) > before {
         mesh.positions_mut().copy_from_slice(&positions);
     }
+}
+
+/// The vertices of `region` within [`RINGS`] rings of its triangles below [`POOR`] (a
+/// vertex mask), or `None` when it has none.
+fn near_poor_triangles(mesh: &Mesh, region: &[bool]) -> Option<Vec<bool>> {
+    let mut near = vec![false; mesh.n_vertices()];
+    let mut front: Vec<VertexId> = mesh
+        .faces()
+        .map(|f| mesh.face_vertices(f))
+        .filter(|vertices| vertices.iter().any(|v| region[v.index()]))
+        .filter(|vertices| radius_ratio(vertices.map(|v| mesh.position(v))) < POOR)
+        .flatten()
+        .filter(|v| region[v.index()] && !std::mem::replace(&mut near[v.index()], true))
+        .collect();
+    if front.is_empty() {
+        return None;
+    }
+    for _ in 0..RINGS {
+        front = front
+            .iter()
+            .flat_map(|&v| mesh.vertex_neighbors(v))
+            .filter(|w| region[w.index()] && !std::mem::replace(&mut near[w.index()], true))
+            .collect();
+    }
+    Some(near)
 }
 
 /// One shape optimization of `region` with the curve vertices sliding, or `None` when the

@@ -734,6 +734,10 @@ impl SketchApp {
                         .open(replaying.replay.into_editor());
                     replaying.reply.send(Ok(()));
                 }
+                // Followed now, not in the next frame: a replay the page starts as soon as
+                // this one's Promise resolves would be taken for the old document's, and
+                // cancelled.
+                self.follow_page(now);
                 ctx.request_repaint();
             }
             Err(e) => {

@@ -442,11 +442,14 @@ mod tests {
             let a = std::f64::consts::TAU * f64::from(i) / 60.0;
             [400.0 + size * a.cos(), 300.0 + 0.7 * size * a.sin(), 0.5]
         });
-        let op = Op::Create(sketchmesh_core::document::StrokeInput {
-            viewport: [800.0, 600.0],
-            camera: sketchmesh_core::camera::Camera::default(),
-            stroke: ellipse.collect(),
-        });
+        let op = Op::Create(
+            sketchmesh_core::document::StrokeInput {
+                viewport: [800.0, 600.0],
+                camera: sketchmesh_core::camera::Camera::default(),
+                stroke: ellipse.collect(),
+            }
+            .into(),
+        );
         editor.apply(op).expect("creates");
         Arc::clone(&editor.document().models[0])
     }

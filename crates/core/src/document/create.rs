@@ -6,14 +6,62 @@
 //! the fair surface's only convergence loop ([`Convergence`], with its divergence guard).
 //! The shape is built in place in the document the edit shows, so the last step leaves the
 //! document to commit.
+//!
+//! Past [`STEPPED_MAX_VERTICES`] a creation is one piece of work ([`create_op`]), which the
+//! page runs in its worker: its seed and its factorization are each longer than a frame.
 
 use std::sync::Arc;
 
-use super::{CommandError, ControlCurve, Document, Model, StrokeInput};
+use super::{CommandError, ControlCurve, CreateInput, Document, Model, StrokeInput};
 use crate::fibermesh::{
     self, Convergence, CreateError, CreateParams, CurveKind, FairSurface, first_iteration,
     seed_from_stroke,
 };
+
+/// The finest creation that steps in the frames: natively the factorizations and first
+/// iteration take 12 ms at 2,000 vertices and 105 ms at 10,000 (BENCHMARKS.md), and the
+/// page's wasm is 2–3× slower, so past about 5,000 one step would stall a frame.
+pub const STEPPED_MAX_VERTICES: usize = 5_000;
+
+/// The resolutions a `create` op may ask for: below, a shape is too coarse to edit; above,
+/// it takes minutes in a page.
+pub const CREATE_VERTICES: std::ops::RangeInclusive<usize> = 500..=100_000;
+
+/// Whether `input`'s creation steps in the frames ([`CreateJob`]) rather than being
+/// computed whole ([`create_op`]).
+///
+/// Errors: [`CommandError::CreateVertices`], at once, whichever way it is computed.
+pub(super) fn is_stepped(input: &CreateInput) -> Result<bool, CommandError> {
+    let vertices = params(input).target_vertices;
+    match CREATE_VERTICES.contains(&vertices) {
+        true => Ok(vertices <= STEPPED_MAX_VERTICES),
+        false => Err(CommandError::CreateVertices(vertices)),
+    }
+}
+
+/// The creation `input` makes of `doc`, whole: the new model's index (after the others)
+/// and the model.
+///
+/// Errors: as [`CreateJob::start`] and [`CreateJob::step`].
+pub(super) fn create_op(
+    doc: &Document,
+    input: &CreateInput,
+) -> Result<(usize, Model), CommandError> {
+    let mut job = CreateJob::start(doc, input)?;
+    while !job.step()? {}
+    let index = job.index;
+    let model = job.document.models.swap_remove(index);
+    Ok((index, Arc::unwrap_or_clone(model)))
+}
+
+/// The settings `input` asks for.
+fn params(input: &CreateInput) -> CreateParams {
+    let default = CreateParams::default();
+    CreateParams {
+        target_vertices: input.vertices.unwrap_or(default.target_vertices),
+        ..default
+    }
+}
 
 /// A closed stroke being inflated into a new model, the last of its document.
 #[derive(Debug)]
@@ -30,11 +78,14 @@ pub(super) struct CreateJob {
 impl CreateJob {
     /// Meshes the stroke and builds the seed shape, cheaply: no factorization yet.
     ///
-    /// Errors: the stroke's problems as sentences, see [`CommandError`].
-    pub(super) fn start(base: &Document, input: &StrokeInput) -> Result<Self, CommandError> {
-        let viewport = input.checked_viewport()?;
-        let params = CreateParams::default();
-        let seed = seed_from_stroke(&input.points(), &input.camera, viewport, &params)?;
+    /// Errors: the stroke's problems as sentences, see [`CommandError`], and a resolution
+    /// outside [`CREATE_VERTICES`].
+    pub(super) fn start(base: &Document, input: &CreateInput) -> Result<Self, CommandError> {
+        is_stepped(input)?;
+        let params = params(input);
+        let stroke = StrokeInput::of_create(input);
+        let viewport = stroke.checked_viewport()?;
+        let seed = seed_from_stroke(&stroke.points(), &stroke.camera, viewport, &params)?;
         let model = Model {
             curves: vec![ControlCurve {
                 vertices: seed.curve_vertices,
@@ -119,7 +170,9 @@ pub(super) mod tests {
     #[test]
     fn the_seed_shows_at_once_then_every_step_refines_it_to_what_apply_gives() {
         let mut progressive = Editor::new();
-        let mut edit = progressive.begin(Op::Create(ellipse())).expect("begin");
+        let mut edit = progressive
+            .begin(Op::Create(ellipse().into()))
+            .expect("begin");
         let seed = edit.document().models[0].clone();
         assert!(progressive.document().is_empty(), "nothing committed yet");
         assert_eq!((edit.revision(), edit.generation()), (1, 1));
@@ -133,7 +186,7 @@ pub(super) mod tests {
         assert!(shown.windows(2).all(|w| w[0] != w[1]));
         edit.finish(&mut progressive).expect("finish");
         let mut direct = Editor::new();
-        direct.apply(Op::Create(ellipse())).expect("apply");
+        direct.apply(Op::Create(ellipse().into())).expect("apply");
         assert_eq!(progressive.document(), direct.document());
         assert_eq!(progressive.session_json(), direct.session_json());
         let replayed = Editor::replay_json(&progressive.session_json()).expect("replay");
@@ -143,6 +196,72 @@ pub(super) mod tests {
         let curve = &model.curves[0];
         assert!(curve.is_closed && !curve.is_sharp());
         assert!(curve.vertices.len() > 8);
+    }
+
+    /// A creation at `vertices` of the [`ellipse`].
+    fn fine_ellipse(vertices: usize) -> Op {
+        Op::Create(CreateInput {
+            vertices: Some(vertices),
+            ..ellipse().into()
+        })
+    }
+
+    #[test]
+    fn a_fine_creation_is_computed_whole_and_lands_as_if_stepped_here() {
+        let mut editor = Editor::new();
+        editor
+            .apply(Op::Create(ellipse().into()))
+            .expect("a first shape");
+        let op = fine_ellipse(12_000);
+        let mut edit = editor.begin(op.clone()).expect("begin");
+        // Nothing is computed in a frame: the document shown is the one before.
+        assert_eq!(edit.document(), editor.document());
+        let (models, to_run) = edit.model_op_to_run().expect("computed elsewhere");
+        let elsewhere = Document {
+            models: models.to_vec(),
+            ..Document::default()
+        };
+        let made = super::super::model_op(&elsewhere, to_run);
+        let (index, model) = made.clone().expect("created");
+        assert_eq!(index, 1, "after the first shape");
+        let n = model.mesh.n_vertices();
+        assert!((10_800..=13_200).contains(&n), "{n} vertices for 12,000");
+        edit.supply_model(made);
+        edit.finish(&mut editor).expect("lands");
+        let mut applied = Editor::new();
+        applied
+            .apply(Op::Create(ellipse().into()))
+            .expect("a first shape");
+        applied.apply(op).expect("apply");
+        assert_eq!(editor.document(), applied.document());
+        let json = editor.session_json();
+        assert!(json.contains(r#""vertices":12000"#), "{json}");
+        assert_eq!(
+            Editor::replay_json(&json).expect("replay").document(),
+            applied.document()
+        );
+    }
+
+    #[test]
+    fn a_creation_computed_whole_is_the_stepped_one() {
+        let op = fine_ellipse(STEPPED_MAX_VERTICES);
+        let mut stepped = Editor::new();
+        let mut edit = stepped.begin(op.clone()).expect("begin");
+        assert!(edit.model_op_to_run().is_none(), "steps in the frames");
+        while edit.step().expect("step") == Progress::Working {}
+        edit.finish(&mut stepped).expect("finish");
+        let (_, whole) = super::super::model_op(&Document::default(), &op).expect("whole");
+        assert_eq!(*stepped.document().models[0], whole);
+    }
+
+    #[test]
+    fn a_resolution_out_of_range_is_refused_at_once() {
+        let editor = Editor::new();
+        for vertices in [0, 499, 100_001] {
+            let error = editor.begin(fine_ellipse(vertices)).expect_err("refused");
+            assert_eq!(error, CommandError::CreateVertices(vertices));
+            assert!(error.to_string().contains("500 to 100,000"), "{error}");
+        }
     }
 
     #[test]
@@ -155,7 +274,7 @@ pub(super) mod tests {
             }))
             .expect("ink");
         let before = editor.document().clone();
-        editor.apply(Op::Create(ellipse())).expect("create");
+        editor.apply(Op::Create(ellipse().into())).expect("create");
         let after = editor.document().clone();
         assert_eq!(after.stats().models, 1);
         editor.undo().expect("undo");
@@ -167,16 +286,18 @@ pub(super) mod tests {
     #[test]
     fn a_refused_creation_leaves_the_editor_untouched() {
         let mut editor = Editor::new();
-        editor.apply(Op::Create(ellipse())).expect("create");
+        editor.apply(Op::Create(ellipse().into())).expect("create");
         let (doc, ops) = (editor.document().clone(), editor.ops().len());
         let open = StrokeInput {
             stroke: ellipse().stroke[..40].to_vec(),
             ..ellipse()
         };
         // Refused at begin, before any work.
-        let error = editor.begin(Op::Create(open.clone())).expect_err("open");
+        let error = editor
+            .begin(Op::Create(open.clone().into()))
+            .expect_err("open");
         assert!(error.to_string().contains("Close the outline"), "{error}");
-        assert_eq!(editor.apply(Op::Create(open)), Err(error));
+        assert_eq!(editor.apply(Op::Create(open.into())), Err(error));
         assert_eq!(editor.document(), &doc);
         assert_eq!(editor.ops().len(), ops);
         assert!(editor.can_undo() && !editor.can_redo());

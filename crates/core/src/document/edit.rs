@@ -69,11 +69,11 @@ use crate::mesh::VertexId;
 use glam::{DVec2, DVec3};
 
 use super::arrange::TransformPreview;
-use super::create::CreateJob;
+use super::create::{CreateJob, is_stepped};
 use super::curve_edit::PullPreview;
 use super::feature::FeaturePreview;
 use super::optimize::OptimizePreview;
-use super::outcome::{Outcome, outcome, sharing_looks, target, with_imported, with_model};
+use super::outcome::{Outcome, outcome, sharing_looks, with_imported, with_model};
 use super::oversketch::{OutlinePiece, OutlinePreview};
 use super::region_edit::RegionPreview;
 use super::skeleton::HandleDrag;
@@ -97,16 +97,17 @@ pub enum Progress {
 /// op in the session) or [`Edit::cancel`]led (nothing changes).
 ///
 /// ```
-/// # use sketchmesh_core::document::{Editor, Op, Progress, StrokeInput};
+/// # use sketchmesh_core::document::{CreateInput, Editor, Op, Progress};
 /// # use sketchmesh_core::camera::Camera;
 /// let ellipse = (0..=90).map(|i| {
 ///     let a = std::f64::consts::TAU * f64::from(i) / 90.0;
 ///     [400.0 + 160.0 * a.cos(), 300.0 + 110.0 * a.sin(), 0.5]
 /// });
-/// let op = Op::Create(StrokeInput {
+/// let op = Op::Create(CreateInput {
 ///     viewport: [800.0, 600.0],
 ///     camera: Camera::default(),
 ///     stroke: ellipse.collect(),
+///     vertices: None,
 /// });
 /// let mut editor = Editor::new();
 /// let mut edit = editor.begin(op.clone())?; // the seed shape, shown at once
@@ -172,10 +173,13 @@ enum Work {
 }
 
 impl Work {
-    /// The work of a complete op: a creation steps, everything else is one step.
+    /// The work of a complete op: a creation up to [`super::STEPPED_MAX_VERTICES`] steps,
+    /// everything else is one step.
     fn complete(base: &Document, op: &Op) -> Result<Work, CommandError> {
         Ok(match op {
-            Op::Create(input) => Work::Create(Box::new(CreateJob::start(base, input)?)),
+            Op::Create(input) if is_stepped(input)? => {
+                Work::Create(Box::new(CreateJob::start(base, input)?))
+            }
             _ => Work::Whole,
         })
     }
@@ -473,13 +477,13 @@ impl Edit {
         self.generation += 1;
     }
 
-    /// An op that [changes one model](Op::changes_one_model), not computed yet: the page
+    /// An op that [makes one model](Op::makes_one_model), not computed yet: the page
     /// computes it in its worker with [`model_op`](super::model_op) on a copy of these models
-    /// and hands the result to [`Edit::supply_model`], so a long curve op or over-sketch
-    /// never runs in a frame. `None` for any other edit, and once the result is computed.
+    /// and hands the result to [`Edit::supply_model`], so a long curve op, over-sketch or
+    /// fine creation never runs in a frame (a creation that steps in the frames is not one). `None` for any other edit, and once the result is computed.
     pub fn model_op_to_run(&self) -> Option<(&[Arc<Model>], &Op)> {
         match &self.work {
-            Work::Whole if !self.is_gesture && self.op.changes_one_model() => {
+            Work::Whole if !self.is_gesture && self.op.makes_one_model() => {
                 Some((&self.base.models, &self.op))
             }
             _ => None,
@@ -495,11 +499,12 @@ impl Edit {
             return;
         }
         let landed = changed.and_then(|(index, model)| {
-            let before = target(&self.base, index)?;
-            Ok(with_model(
-                &self.base,
-                (index, sharing_looks(before, model)),
-            ))
+            let model = match self.base.models.get(index) {
+                Some(before) => sharing_looks(before, model),
+                None if index == self.base.models.len() => model,
+                None => return Err(CommandError::NoSuchModel(index)),
+            };
+            Ok(with_model(&self.base, (index, model)))
         });
         self.work = match landed {
             Ok(outcome) => Work::Done(outcome),

@@ -42,6 +42,10 @@ pub enum CommandError {
     /// A closed stroke did not become a shape.
     #[error("{0}")]
     Create(#[from] CreateError),
+    /// A `create` op asks for a resolution outside
+    /// [`CREATE_VERTICES`](super::CREATE_VERTICES).
+    #[error("A new shape takes 500 to 100,000 vertices, not {0}.")]
+    CreateVertices(usize),
     /// An import op names a file whose contents were not loaded.
     #[error("The contents of {0} are not in the session; replay it next to that file.")]
     FileNotLoaded(String),
@@ -55,8 +59,8 @@ pub enum CommandError {
     /// its result could not be read back.
     #[error("{0}")]
     Elsewhere(String),
-    /// An op was handed to [`model_op`](super::model_op) that changes more than one model
-    /// (a programming error of the caller: see [`Op::changes_one_model`](super::Op::changes_one_model)).
+    /// An op was handed to [`model_op`](super::model_op) that does not make one model
+    /// (a programming error of the caller: see [`Op::makes_one_model`](super::Op::makes_one_model)).
     #[error("The {0} op cannot be computed from the models alone.")]
     NotOneModel(&'static str),
     /// An over-sketch was refused.

@@ -40,7 +40,7 @@ pub fn op_for_stroke(doc: &Document, input: StrokeInput) -> Op {
     if starts_on_curved {
         Op::AddCurve(curve_input(input, closed, false))
     } else if closed && !starts_on_model(doc, &input) {
-        Op::Create(input)
+        Op::Create(input.into())
     } else if !closed && !ends_on_curved && input.stroke.len() > 2 && crosses_curved() {
         Op::AddCurve(curve_input(input, false, true))
     } else {
@@ -246,7 +246,9 @@ mod tests {
     fn strokes_on_a_shape_add_curves() {
         let mut editor = crate::document::Editor::new();
         editor
-            .apply(Op::Create(circle(DVec2::new(400.0, 300.0), 150.0, 1.0)))
+            .apply(Op::Create(
+                circle(DVec2::new(400.0, 300.0), 150.0, 1.0).into(),
+            ))
             .expect("creation");
         let doc = editor.document();
         // Open, starting on the model: an open curve, applied at once.
@@ -270,7 +272,9 @@ mod tests {
     fn closed_stroke_starting_on_a_model_is_not_a_creation() {
         let mut editor = crate::document::Editor::new();
         editor
-            .apply(Op::Create(circle(DVec2::new(400.0, 300.0), 150.0, 1.0)))
+            .apply(Op::Create(
+                circle(DVec2::new(400.0, 300.0), 150.0, 1.0).into(),
+            ))
             .expect("creation");
         let doc = editor.document();
         // Starts at (470, 300): on the model, so a closed curve after a tap. Beside it, at

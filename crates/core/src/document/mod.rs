@@ -40,6 +40,7 @@ pub use crate::model::{
     positions_hash,
 };
 pub use arrange::overlapping_model;
+pub use create::{CREATE_VERTICES, STEPPED_MAX_VERTICES};
 pub use curve_edit::{CURVE_PICK_RADIUS_PX, curve_type_toggle};
 pub use edit::{Edit, Progress};
 pub use editor::Editor;
@@ -51,10 +52,10 @@ pub use intent::{
 };
 pub use keyframes::KeyframeInput;
 pub use op::{
-    AddCurveInput, AreaInput, BrushInput, CurveHandleInput, CurveTypeInput, DeleteHandleInput,
-    FileInput, HandleEditInput, HandleInput, ImportInput, LinkHandlesInput, MergeInput, ModelInput,
-    Op, OptimizeInput, OversketchFit, OversketchInput, ProfileInput, RegionEditInput,
-    SketchFeatureInput, StrokeInput, StrokePairInput, TransformInput,
+    AddCurveInput, AreaInput, BrushInput, CreateInput, CurveHandleInput, CurveTypeInput,
+    DeleteHandleInput, FileInput, HandleEditInput, HandleInput, ImportInput, LinkHandlesInput,
+    MergeInput, ModelInput, Op, OptimizeInput, OversketchFit, OversketchInput, ProfileInput,
+    RegionEditInput, SketchFeatureInput, StrokeInput, StrokePairInput, TransformInput,
 };
 pub use outcome::{import_files, model_op};
 pub use oversketch::OutlinePiece;

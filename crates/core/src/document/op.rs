@@ -23,7 +23,7 @@ pub enum Op {
     /// Draw a sketch stroke on the plane through the camera target facing the camera.
     Stroke(StrokeInput),
     /// Inflate a closed stroke drawn on empty canvas into a new FiberMesh model.
-    Create(StrokeInput),
+    Create(CreateInput),
     /// Add the models, sketches and points of a glTF file.
     Import(ImportInput),
     /// Redraw part of a model's outline: the silhouette piece the stroke matches moves onto
@@ -141,13 +141,14 @@ impl Op {
         "redo",
     ];
 
-    /// Whether the op changes one model and reads nothing but the document's models (the
-    /// curve ops and the over-sketch): a pure function of the models and the op, which the
-    /// page may compute in its worker ([`model_op`](super::model_op)).
-    pub fn changes_one_model(&self) -> bool {
+    /// Whether the op makes one model, new or changed, and reads nothing but the document's
+    /// models (a creation, the curve ops and the over-sketch): a pure function of the models
+    /// and the op, which the page may compute in its worker ([`model_op`](super::model_op)).
+    pub fn makes_one_model(&self) -> bool {
         matches!(
             self,
-            Op::Oversketch(_)
+            Op::Create(_)
+                | Op::Oversketch(_)
                 | Op::Pull(_)
                 | Op::AddCurve(_)
                 | Op::Cut(_)
@@ -195,11 +196,21 @@ impl Op {
         }
     }
 
+    /// What the op makes or does, as a sentence names it ("Computing the new shape…").
+    pub fn title(&self) -> String {
+        match self {
+            Op::Create(_) => String::from("new shape"),
+            Op::Oversketch(_) => String::from("over-sketch"),
+            other => other.name().replace('_', " "),
+        }
+    }
+
     /// The raw samples of the op's stroke; `None` for the ops without one (import, undo,
     /// redo).
     pub fn stroke(&self) -> Option<&[[f64; 3]]> {
         match self {
-            Op::Stroke(input) | Op::Create(input) | Op::Pull(input) => Some(&input.stroke),
+            Op::Stroke(input) | Op::Pull(input) => Some(&input.stroke),
+            Op::Create(input) => Some(&input.stroke),
             Op::Erase(input) | Op::Rub(input) | Op::Cut(input) => Some(&input.stroke),
             Op::Oversketch(input) => Some(&input.stroke),
             Op::AddCurve(input) => Some(&input.stroke),
@@ -231,7 +242,8 @@ impl Op {
     /// [`Op::stroke`], to extend while the stroke is drawn.
     pub fn stroke_mut(&mut self) -> Option<&mut Vec<[f64; 3]>> {
         match self {
-            Op::Stroke(input) | Op::Create(input) | Op::Pull(input) => Some(&mut input.stroke),
+            Op::Stroke(input) | Op::Pull(input) => Some(&mut input.stroke),
+            Op::Create(input) => Some(&mut input.stroke),
             Op::Erase(input) | Op::Rub(input) | Op::Cut(input) => Some(&mut input.stroke),
             Op::Oversketch(input) => Some(&mut input.stroke),
             Op::AddCurve(input) => Some(&mut input.stroke),
@@ -525,6 +537,34 @@ pub struct BrushInput {
     pub radius: f64,
 }
 
+/// A `create` op: the closed stroke, and how finely the new shape is meshed.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CreateInput {
+    /// Viewport size `[width, height]` in CSS px.
+    pub viewport: [f64; 2],
+    /// The camera the stroke was drawn with.
+    pub camera: Camera,
+    /// Raw samples `[x, y, pressure]`, as in [`StrokeInput`].
+    pub stroke: Vec<[f64; 3]>,
+    /// About how many vertices the shape gets; absent (left out of session files): the
+    /// default, [`CreateParams::default`](crate::fibermesh::CreateParams)'s 2,500.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub vertices: Option<usize>,
+}
+
+impl From<StrokeInput> for CreateInput {
+    /// A creation at the default resolution.
+    fn from(input: StrokeInput) -> CreateInput {
+        CreateInput {
+            viewport: input.viewport,
+            camera: input.camera,
+            stroke: input.stroke,
+            vertices: None,
+        }
+    }
+}
+
 /// An `add_curve` op: the stroke and which kind of curve it makes.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -684,6 +724,11 @@ pub struct StrokeInput {
 }
 
 impl StrokeInput {
+    /// The stroke part of a `create` op.
+    pub fn of_create(input: &CreateInput) -> StrokeInput {
+        StrokeInput::in_view(input.viewport, input.camera, &input.stroke)
+    }
+
     /// The stroke part of an `add_curve` op.
     pub fn of_add_curve(input: &AddCurveInput) -> StrokeInput {
         StrokeInput::in_view(input.viewport, input.camera, &input.stroke)
@@ -757,10 +802,11 @@ mod tests {
                 camera: Camera::default(),
                 stroke: Vec::new(),
             }),
-            Op::Create(StrokeInput {
+            Op::Create(CreateInput {
                 viewport: [1.0, 1.0],
                 camera: Camera::default(),
                 stroke: Vec::new(),
+                vertices: Some(10_000),
             }),
             Op::Import(ImportInput {
                 files: vec![FileInput {

@@ -4,7 +4,7 @@
 use std::sync::Arc;
 
 use super::arrange::{delete_op, duplicate_op, place_beside, transform_op};
-use super::create::CreateJob;
+use super::create::create_op;
 use super::feature::feature_op;
 use super::keyframes::{delete_keyframe_op, keyframe_op, pose_at_op};
 use super::optimize::optimize_op;
@@ -37,8 +37,9 @@ pub(super) enum Outcome {
     Redo,
 }
 
-/// Computes `op` on `base` in one go. A `create` runs its steps to the end here; the edits
-/// that spread an op over steps ([`super::Edit`]) end with the same result.
+/// Computes `op` on `base` in one go. A `create` runs its steps to the end here
+/// ([`create_op`]); the edits that spread an op over steps ([`super::Edit`]) end with the
+/// same result.
 ///
 /// Errors: the op's refusal, see [`CommandError`].
 pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError> {
@@ -48,11 +49,6 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
             let mut next = base.clone();
             next.sketches.push(Arc::new(place_stroke(input)?));
             Outcome::Document(next)
-        }
-        Op::Create(input) => {
-            let mut job = CreateJob::start(base, input)?;
-            while !job.step()? {}
-            Outcome::Document(job.into_document())
         }
         Op::Import(input) => with_imported(base, input, import_files(input)?),
         Op::Merge(input) => {
@@ -79,19 +75,20 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
         Op::PoseAt(input) => Outcome::Document(pose_at_op(base, input)?),
         Op::Undo => Outcome::Undo,
         Op::Redo => Outcome::Redo,
-        // The curve ops and the over-sketch: one model, from the models alone.
+        // A creation, the curve ops and the over-sketch: one model, from the models alone.
         _ => replaced(model_op(base, op)?),
     })
 }
 
-/// What an op that [changes one model](Op::changes_one_model) makes of `doc`: the model's
-/// index and its next version. It reads the models only, so the page computes it in its
+/// What an op that [makes one model](Op::makes_one_model) makes of `doc`: the model's
+/// index and its next version (a new model's index is `doc.models.len()`). It reads the models only, so the page computes it in its
 /// worker on a copy of them, and [`super::Edit::supply_model`] lands the result as if it
 /// had been computed here.
 ///
 /// Errors: the op's refusal; [`CommandError::NotOneModel`] for any other op.
 pub fn model_op(doc: &Document, op: &Op) -> Result<(usize, Model), CommandError> {
     match op {
+        Op::Create(input) => create_op(doc, input),
         Op::Oversketch(input) => oversketch_op(doc, input),
         Op::Pull(input) => curve_edit::pull_op(doc, input),
         Op::AddCurve(input) => curve_edit::add_curve_op(doc, input),
@@ -142,10 +139,13 @@ pub(super) fn sharing_looks(before: &Model, mut model: Model) -> Model {
     model
 }
 
-/// `base` with model `index` replaced.
+/// `base` with model `index` replaced, or added when `index` is past its models.
 pub(super) fn with_model(base: &Document, (index, model): (usize, Model)) -> Outcome {
     let mut next = base.clone();
-    next.models[index] = Arc::new(model);
+    match next.models.get_mut(index) {
+        Some(slot) => *slot = Arc::new(model),
+        None => next.models.push(Arc::new(model)),
+    }
     Outcome::Document(next)
 }
 

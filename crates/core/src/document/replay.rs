@@ -96,7 +96,7 @@ mod tests {
 
     #[test]
     fn stepping_a_replay_counts_its_ops_and_stops_at_the_first_refusal() {
-        let mut replay = Replay::new(vec![Op::Create(ellipse()), Op::Undo, Op::Undo]);
+        let mut replay = Replay::new(vec![Op::Create(ellipse().into()), Op::Undo, Op::Undo]);
         assert_eq!(replay.done_of(), (0, 3));
         let mut steps = 0;
         let error = loop {

@@ -49,7 +49,7 @@ fn screen(p: DVec3) -> DVec2 {
 /// the centre to 90 px right.
 fn shape_with_front_curve() -> Editor {
     let mut editor = Editor::new();
-    editor.apply(Op::Create(circle(150.0))).unwrap();
+    editor.apply(Op::Create(circle(150.0).into())).unwrap();
     let across = segment(CENTRE - DVec2::X * 90.0, CENTRE + DVec2::X * 90.0);
     editor
         .apply(Op::AddCurve(add_input(&across, false, false)))
@@ -258,7 +258,7 @@ fn folded_edges(mesh: &Mesh) -> usize {
 #[test]
 fn erasing_the_added_curve_after_a_pull_returns_close_to_the_creation() {
     let mut editor = Editor::new();
-    editor.apply(Op::Create(circle(150.0))).unwrap();
+    editor.apply(Op::Create(circle(150.0).into())).unwrap();
     let created = model(&editor).clone();
     let across = segment(CENTRE - DVec2::X * 90.0, CENTRE + DVec2::X * 90.0);
     editor
@@ -295,7 +295,7 @@ const ERASE_TOLERANCE: f64 = 0.03;
 #[test]
 fn a_sharp_curve_creases_at_least_30_degrees_more_than_smooth() {
     let mut editor = Editor::new();
-    editor.apply(Op::Create(circle(150.0))).unwrap();
+    editor.apply(Op::Create(circle(150.0).into())).unwrap();
     let right = points(model(&editor), 0)
         .into_iter()
         .max_by(|a, b| a.x.total_cmp(&b.x))
@@ -344,7 +344,7 @@ fn rubbing_smooths_a_wobbly_curve_more_with_more_passes() {
         })
         .collect();
     let mut editor = Editor::new();
-    editor.apply(Op::Create(circle(150.0))).unwrap();
+    editor.apply(Op::Create(circle(150.0).into())).unwrap();
     editor
         .apply(Op::AddCurve(add_input(&wobbly, false, false)))
         .unwrap();
@@ -432,7 +432,7 @@ fn curve_tools_away_from_curves_are_refused_and_change_nothing() {
 #[test]
 fn erasing_the_last_curve_is_refused() {
     let mut editor = Editor::new();
-    editor.apply(Op::Create(circle(150.0))).unwrap();
+    editor.apply(Op::Create(circle(150.0).into())).unwrap();
     let outline = points(model(&editor), 0);
     assert_eq!(
         editor.apply(Op::Erase(along(&outline))),

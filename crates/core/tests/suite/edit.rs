@@ -79,7 +79,7 @@ fn session() -> Vec<MakeOp> {
                 DVec2::new(200.0, 60.0),
             )))
         }),
-        Box::new(|_| Op::Create(circle(CENTRE, 150.0))),
+        Box::new(|_| Op::Create(circle(CENTRE, 150.0).into())),
         Box::new(|_| {
             let stroke = input(segment(CENTRE - DVec2::X * 90.0, CENTRE + DVec2::X * 90.0));
             Op::AddCurve(AddCurveInput {
@@ -446,7 +446,7 @@ fn a_cancelled_edit_leaves_the_document_and_history_untouched() {
     };
     let before = state(&editor);
     let mut creation = editor
-        .begin(Op::Create(circle(CENTRE + DVec2::X * 200.0, 60.0)))
+        .begin(Op::Create(circle(CENTRE + DVec2::X * 200.0, 60.0).into()))
         .unwrap();
     for _ in 0..3 {
         creation.step().unwrap();
@@ -501,7 +501,7 @@ fn an_edit_finished_after_the_document_changed_is_computed_again() {
         DVec2::new(40.0, 40.0),
         DVec2::new(200.0, 60.0),
     )));
-    let second = Op::Create(circle(CENTRE, 120.0));
+    let second = Op::Create(circle(CENTRE, 120.0).into());
     let mut editor = Editor::new();
     let late = editor.begin(first.clone()).unwrap();
     editor.apply(second.clone()).unwrap();
@@ -587,7 +587,9 @@ fn an_import_read_elsewhere_lands_as_the_applied_import() {
         beside: true,
     });
     let mut applied = Editor::new();
-    applied.apply(Op::Create(circle(CENTRE, 120.0))).unwrap();
+    applied
+        .apply(Op::Create(circle(CENTRE, 120.0).into()))
+        .unwrap();
     let mut by_worker = applied.clone();
     applied.apply(import.clone()).unwrap();
 
@@ -680,7 +682,9 @@ fn curve_ops_computed_elsewhere_land_as_the_applied_ones() {
     assert!(offloaded >= 10, "only {offloaded} ops went elsewhere");
 
     let mut editor = Editor::new();
-    editor.apply(Op::Create(circle(CENTRE, 120.0))).unwrap();
+    editor
+        .apply(Op::Create(circle(CENTRE, 120.0).into()))
+        .unwrap();
     let before = editor.clone();
     let far = StrokeInput {
         stroke: vec![[20.0, 20.0, 0.5], [40.0, 30.0, 0.5]],

@@ -574,7 +574,7 @@ fn imported_shape(shape: u8, offset: DVec2) -> Op {
                 let mut editor = Editor::new();
                 let circle = crate::common::circle(VIEWPORT / 2.0, 110.0);
                 editor
-                    .apply(Op::Create(input(Camera::default(), &circle)))
+                    .apply(Op::Create(input(Camera::default(), &circle).into()))
                     .unwrap();
                 Model::clone(&editor.document().models[0])
             })
@@ -600,7 +600,7 @@ fn op_for(step: &Step, document: &Document) -> Op {
     match step {
         Step::Create(o) => {
             let points = outline(o.centre, o.radius, &o.waves, o.squash, o.turn, 120);
-            Op::Create(input(o.view.camera(), &tremble(points, o.noise)))
+            Op::Create(input(o.view.camera(), &tremble(points, o.noise)).into())
         }
         Step::Import { shape, offset } => imported_shape(*shape, *offset),
         Step::Pull { view, along, drag } => {

@@ -762,11 +762,14 @@ fn create_op(centre_x: f64) -> Op {
             ]
         })
         .collect();
-    Op::Create(StrokeInput {
-        viewport: [800.0, 600.0],
-        camera: Camera::default(),
-        stroke,
-    })
+    Op::Create(
+        StrokeInput {
+            viewport: [800.0, 600.0],
+            camera: Camera::default(),
+            stroke,
+        }
+        .into(),
+    )
 }
 
 #[test]

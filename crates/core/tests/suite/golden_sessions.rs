@@ -419,7 +419,7 @@ fn apply(editor: &mut Editor, op: Op) {
 }
 
 fn create(points: &[DVec2], camera: Camera) -> Op {
-    Op::Create(stroke_input(VIEWPORT, camera, points))
+    Op::Create(stroke_input(VIEWPORT, camera, points).into())
 }
 
 /// Deterministic wobble, as a hand adds to a stroke.
@@ -641,7 +641,7 @@ fn oversketch_created() -> Editor {
     let circle_points: Vec<DVec2> = circle(SQUARE / 2.0, 180.0);
     apply(
         &mut editor,
-        Op::Create(stroke_input(SQUARE, camera, &circle_points)),
+        Op::Create(stroke_input(SQUARE, camera, &circle_points).into()),
     );
     let mesh = editor.document().models[0].mesh.clone();
     let outline = longest_outline(&mesh, &camera, SQUARE).unwrap();

@@ -601,11 +601,14 @@ fn created(rx: f64, ry: f64, n: usize) -> Editor {
         .collect();
     let mut editor = Editor::new();
     editor
-        .apply(Op::Create(StrokeInput {
-            viewport: VIEWPORT.to_array(),
-            camera: Camera::default(),
-            stroke: outline,
-        }))
+        .apply(Op::Create(
+            StrokeInput {
+                viewport: VIEWPORT.to_array(),
+                camera: Camera::default(),
+                stroke: outline,
+            }
+            .into(),
+        ))
         .unwrap();
     editor
 }

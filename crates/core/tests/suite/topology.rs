@@ -36,7 +36,7 @@ fn created_circle() -> Editor {
         .collect();
     let mut editor = Editor::new();
     editor
-        .apply(Op::Create(input(Camera::default(), &circle)))
+        .apply(Op::Create(input(Camera::default(), &circle).into()))
         .unwrap();
     editor
 }
@@ -530,7 +530,7 @@ fn two_shapes_overlapping(overlap: f64) -> Editor {
         })
         .collect();
     editor
-        .apply(Op::Create(input(Camera::default(), &beside)))
+        .apply(Op::Create(input(Camera::default(), &beside).into()))
         .unwrap();
     let camera = Camera::default();
     let at = |x: f64| {
@@ -669,7 +669,9 @@ fn a_session_of_every_topology_op_replays_to_the_same_mesh() {
     let ball: Vec<DVec2> = (0..=64)
         .map(|i| DVec2::new(700.0, 500.0) + 60.0 * DVec2::from_angle(TAU * f64::from(i) / 64.0))
         .collect();
-    editor.apply(Op::Create(input(camera, &ball))).unwrap();
+    editor
+        .apply(Op::Create(input(camera, &ball).into()))
+        .unwrap();
     assert_eq!(editor.document().models.len(), 2);
     let at = |s: DVec2| camera.point_on_target_plane(s, VIEWPORT).unwrap();
     let shift = at(CENTRE + DVec2::new(0.0, 140.0)) - at(DVec2::new(700.0, 500.0));

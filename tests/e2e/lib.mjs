@@ -160,6 +160,30 @@ export async function frames(page, n = 2, settleMs = 50) {
 
 export const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
 
+/**
+ * Records every animation frame's interval in `page` (a frame the page could not draw shows
+ * as a long one) in `window.__frames.list`; returns `record(on)`, which starts a fresh
+ * recording (`true`) or stops it (`false`), and gives the longest interval so far.
+ */
+export async function recordFrames(page) {
+  await page.evaluate(() => {
+    window.__frames = { on: false, list: [] };
+    let last = performance.now();
+    const tick = (t) => {
+      if (window.__frames.on) window.__frames.list.push(t - last);
+      last = t;
+      requestAnimationFrame(tick);
+    };
+    requestAnimationFrame(tick);
+  });
+  return (on) => page.evaluate((on) => {
+    const f = window.__frames;
+    f.on = on;
+    if (on) f.list = [];
+    return Math.max(0, ...f.list);
+  }, on);
+}
+
 /** Calls a `window.sketchmesh` method in the page. */
 export function api(page, method, ...args) {
   return page.evaluate(([m, a]) => window.sketchmesh[m](...a), [method, args]);

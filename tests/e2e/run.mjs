@@ -16,8 +16,8 @@ import { fileURLToPath } from 'node:url';
 
 import {
   EXPECTED_BACKEND, GRID_GLB_SOURCE, OUT_DIR, api, camera, cameraDistance, changedFraction, distinctColours, frames,
-  imageChangedFraction, launch, line, maxDiffNear, nonBackgroundFraction, openApp, penStroke, screenshot,
-  serveDirectory, settings, sleep, touchGesture, touchTap,
+  imageChangedFraction, launch, line, maxDiffNear, nonBackgroundFraction, openApp, penStroke, recordFrames,
+  screenshot, serveDirectory, settings, sleep, touchGesture, touchTap,
 } from './lib.mjs';
 
 const WATCHDOG_MS = 600_000;
@@ -73,6 +73,8 @@ const POSE_SPLINE = { x: 704, y: 71 };
 const POSE_MORE = { x: 822, y: 71 };
 const POSE_BACKDROP = { x: 850, y: 169 };
 const POSE_NO_BACKDROP = { x: 850, y: 216 };
+/** The sketch tool's 40k detail button, in the toolbar's second row. */
+const DETAIL_40K = { x: 176, y: 71 };
 /** The region tool's Handles button, in the toolbar's second row. */
 const HANDLES_BUTTON = { x: 213, y: 71 };
 
@@ -2029,37 +2031,27 @@ async function orbitDrag(cdp, from = { x: 640, y: 420 }, dx = 240, steps = 12) {
   await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', ...at(steps), button: 'right', buttons: 0, clickCount: 1 });
 }
 
+/**
+ * The longest frame of the scene as it is, without work: two orbits of it, over about as long
+ * as the worker takes, recorded with `record` (from `recordFrames`).
+ */
+async function idleOrbits(cdp, record) {
+  await record(true);
+  await orbitDrag(cdp);
+  await sleep(400);
+  await orbitDrag(cdp, { x: 880, y: 420 }, -240);
+  await sleep(300);
+  return record(false);
+}
+
 test('a 1 M-triangle import runs off the frame: loadGlb returns at once, frames stay short, an orbit turns the view meanwhile, Escape cancels and changes nothing', async () => {
   const fresh = await openApp(browser, url, gpu);
   try {
     const { page, cdp } = fresh;
     await page.evaluate(GRID_GLB_SOURCE);
-    // Every animation frame's interval: a frame the page could not draw shows as a long one.
-    await page.evaluate(() => {
-      window.__glb = window.gridGlb(708);
-      window.__frames = { on: false, list: [] };
-      let last = performance.now();
-      const tick = (t) => {
-        if (window.__frames.on) window.__frames.list.push(t - last);
-        last = t;
-        requestAnimationFrame(tick);
-      };
-      requestAnimationFrame(tick);
-    });
-    const record = (on) => page.evaluate((on) => {
-      const f = window.__frames;
-      f.on = on;
-      if (on) f.list = [];
-      return Math.max(0, ...f.list);
-    }, on);
-    // The same scene without the work: orbits of the empty view, over about as long as the
-    // worker takes.
-    await record(true);
-    await orbitDrag(cdp);
-    await sleep(400);
-    await orbitDrag(cdp, { x: 880, y: 420 }, -240);
-    await sleep(300);
-    const idleLongest = await record(false);
+    await page.evaluate(() => { window.__glb = window.gridGlb(708); });
+    const record = await recordFrames(page);
+    const idleLongest = await idleOrbits(cdp, record);
 
     const before = await camera(page);
     await record(true);
@@ -2112,6 +2104,55 @@ test('a 1 M-triangle import runs off the frame: loadGlb returns at once, frames 
     assert.equal(await api(page, 'opCount'), 0, 'and the session too');
     assert.equal(await api(page, 'progress'), null, 'and the progress line is gone');
     assert.deepEqual(fresh.errors, [], 'console errors while importing');
+  } finally {
+    await fresh.context.close();
+  }
+});
+
+test('a 40k-vertex shape is created off the frame: its outline stays with a progress line, frames stay short, an orbit turns the view meanwhile, Escape cancels and changes nothing', async () => {
+  const fresh = await openApp(browser, url, gpu);
+  try {
+    const { page, cdp } = fresh;
+    await page.mouse.click(DETAIL_40K.x, DETAIL_40K.y);
+    const record = await recordFrames(page);
+    const idleLongest = await idleOrbits(cdp, record);
+    await record(true);
+    await penStroke(cdp, onEllipse());
+    const before = await camera(page);
+    await orbitDrag(cdp, undefined, 120, 6);
+    const turned = await camera(page);
+    assert.equal((await api(page, 'stats')).models, 0, `the orbit came before the shape landed (worker too quick to test the stall)`);
+    assert.ok(Math.hypot(...turned.eye.map((e, i) => e - before.eye[i])) > 1e-3, 'an orbit during the work turns the view');
+    const progress = await until(() => api(page, 'progress'), (p) => p !== null, 5_000);
+    assert.equal(progress, 'Computing the new shape…', 'a progress line says what is computed');
+    await screenshot(page, out('create-40k-progress.png'));
+    const workLongest = await page.evaluate(() => new Promise((resolve) => {
+      // Settled in the frame that lands the shape: the frames before it are the work's.
+      const wait = () => (window.sketchmesh.stats().models === 1 ? resolve(Math.max(0, ...window.__frames.list)) : setTimeout(wait, 5));
+      wait();
+    }));
+    await record(false);
+    const stats = await api(page, 'stats');
+    assert.ok(stats.vertices > 36_000 && stats.vertices < 44_000 && stats.triangles === 2 * stats.vertices - 4, `a closed 40k-vertex shape: ${JSON.stringify(stats)}`);
+    const op = await lastOpOf(page);
+    assert.equal(op.op, 'create');
+    assert.equal(op.vertices, 40_000, 'the session records the detail');
+    const limit = 1.5 * idleLongest + 50;
+    console.log(`    # longest frame: ${idleLongest.toFixed(0)} ms without the work, ${workLongest.toFixed(0)} ms while the worker created ${stats.vertices} vertices (limit ${limit.toFixed(0)})`);
+    assert.ok(workLongest <= limit, `no frame stalls while the worker creates: ${workLongest.toFixed(0)} ms > ${limit.toFixed(0)} ms`);
+    await frames(page, 3);
+    await screenshot(page, out('create-40k.png'));
+
+    // A second outline, beside the first, cancelled while it is computed.
+    const { c } = ELLIPSE;
+    await penStroke(cdp, onEllipse().map((p) => ({ ...p, x: 250 + 0.5 * (p.x - c.x), y: 260 + 0.5 * (p.y - c.y) })));
+    await until(() => api(page, 'progress'), (p) => p !== null, 5_000);
+    await page.keyboard.press('Escape');
+    await sleep(500);
+    assert.deepEqual(await api(page, 'stats'), stats, 'a cancelled creation leaves the document as it was');
+    assert.equal(await api(page, 'opCount'), 1, 'and the session too');
+    assert.equal(await api(page, 'progress'), null, 'and the progress line is gone');
+    assert.deepEqual(fresh.errors, [], 'console errors while creating');
   } finally {
     await fresh.context.close();
   }

@@ -458,7 +458,7 @@ impl SketchApp {
             .edit
             .as_ref()
             .filter(|e| e.model_op_to_run().is_some())?;
-        let name = edit.op().name().replace('_', " ");
+        let name = edit.op().title();
         (now - since >= PROGRESS_AFTER_S).then(|| format!("Computing the {name}…"))
     }
 
@@ -473,8 +473,7 @@ impl SketchApp {
             self.edit = None;
             self.settle_import(Err(String::from("The import was cancelled.")), now);
         } else if let Some(edit) = self.edit.take_if(|_| job.is_some()) {
-            let name = edit.op().name().replace('_', " ");
-            self.set_status(format!("The {name} was cancelled."), now);
+            self.set_status(format!("The {} was cancelled.", edit.op().title()), now);
         }
     }
 
@@ -1571,6 +1570,14 @@ impl SketchApp {
         }
         if let Some(raw) = self.stroke_preview() {
             stroke_ui(ui, viewport, raw, egui::Color32::from_rgb(242, 199, 82));
+        }
+        // The outline of a fine shape the worker computes stays, dimmer, until the shape
+        // lands.
+        if let Some(Op::Create(input)) = self.edit.as_ref().map(Edit::op)
+            && self.worker_job.is_some()
+        {
+            let points = StrokeInput::of_create(input).points();
+            stroke_ui(ui, viewport, &points, egui::Color32::from_rgb(200, 170, 90));
         }
     }
 }

@@ -403,7 +403,7 @@ mod page {
         static KEPT: RefCell<Vec<Arc<Model>>> = RefCell::default();
     }
 
-    /// The worker's entry for an op that changes one model (`web/worker.js` calls it):
+    /// The worker's entry for an op that makes one model (`web/worker.js` calls it):
     /// computes it on the document's models, as the editor would, into one buffer for
     /// [`decode_changed`]. The models are those of the worker's last op at the indices
     /// `kept` gives, the ones in `models` where it says -1.

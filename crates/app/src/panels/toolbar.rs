@@ -187,6 +187,10 @@ fn options_row(
     let mode = tools.mode();
     row(ui, layout.compact, "options", |ui| {
         match mode {
+            Mode::Sketch => {
+                tools.sketch_ui(ui);
+                ui.separator();
+            }
             Mode::Oversketch => {
                 oversketch_options_ui(ui, tools.oversketch_settings_mut());
                 ui.separator();

@@ -83,6 +83,11 @@ impl ToolSet {
         self.oversketch.settings_mut()
     }
 
+    /// The sketch tool's options.
+    pub fn sketch_ui(&mut self, ui: &mut egui::Ui) {
+        self.sketch.settings_ui(ui);
+    }
+
     /// The optimize tool's panel; what the user did there.
     pub fn optimize_ui(&mut self, ui: &mut egui::Ui) -> ToolOutput {
         self.optimize.settings_ui(ui)

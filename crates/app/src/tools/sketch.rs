@@ -15,6 +15,47 @@ use sketchmesh_core::document::{
 use super::context::{ToolOutput, ViewCtx};
 use super::draw::{DrawTool, is_tap};
 use crate::input::router::ToolEvent;
+use crate::panels::toolbar::target_size;
+
+/// How finely a new shape is meshed: about how many vertices it gets. Coarse shapes edit
+/// fastest; fine ones hold small detail (and a fine creation is computed off the frame,
+/// with a progress line).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Detail {
+    /// The default, 2,500 vertices: created and edited live on any device.
+    #[default]
+    Standard,
+    /// 10,000 vertices.
+    Fine,
+    /// 40,000 vertices.
+    Finest,
+}
+
+impl Detail {
+    /// Every choice, with its label and what it means.
+    const ALL: [(Detail, &'static str, &'static str); 3] = [
+        (
+            Detail::Standard,
+            "2.5k",
+            "New shapes get about 2,500 vertices: fastest to edit",
+        ),
+        (Detail::Fine, "10k", "New shapes get about 10,000 vertices"),
+        (
+            Detail::Finest,
+            "40k",
+            "New shapes get about 40,000 vertices: fine detail, slower edits",
+        ),
+    ];
+
+    /// The `create` op's `vertices`: none for the default, so sessions stay as they were.
+    fn vertices(self) -> Option<usize> {
+        match self {
+            Detail::Standard => None,
+            Detail::Fine => Some(10_000),
+            Detail::Finest => Some(40_000),
+        }
+    }
+}
 
 /// How long a stroke across a shape waits for the tap that makes it a cross-section curve
 /// before it cuts: a little longer than a double tap's gap, so a deliberate tap makes it.
@@ -45,6 +86,7 @@ impl Waiting {
 pub struct SketchTool {
     draw: DrawTool,
     waiting: Option<Waiting>,
+    detail: Detail,
 }
 
 impl SketchTool {
@@ -60,7 +102,10 @@ impl SketchTool {
         if let Some(extrusion) = held.as_ref().and_then(|w| extrude_from(doc, &w.op, &input)) {
             return ToolOutput::Commit(extrusion);
         }
-        let op = op_for_stroke(doc, input);
+        let mut op = op_for_stroke(doc, input);
+        if let Op::Create(create) = &mut op {
+            create.vertices = self.detail.vertices();
+        }
         if let Some(tunnel) = held.as_ref().and_then(|w| tunnel_from(&w.op, &op)) {
             return ToolOutput::Commit(tunnel);
         }
@@ -78,6 +123,18 @@ impl SketchTool {
             0 => ToolOutput::None,
             1 => ToolOutput::Commit(ops.remove(0)),
             _ => ToolOutput::CommitAll(ops),
+        }
+    }
+
+    /// The tool's options in the toolbar: the detail of new shapes.
+    pub fn settings_ui(&mut self, ui: &mut egui::Ui) {
+        ui.label("Detail");
+        for (detail, label, hint) in Detail::ALL {
+            let button =
+                egui::Button::selectable(self.detail == detail, label).min_size(target_size(ui));
+            if ui.add(button).on_hover_text(hint).clicked() {
+                self.detail = detail;
+            }
         }
     }
 
@@ -241,6 +298,46 @@ mod tests {
         let out = draw_path(&mut tool, doc, &silhouette);
         assert!(matches!(out, ToolOutput::Commit(Op::Extrude(_))), "{out:?}");
         assert!(tool.waiting().is_none());
+    }
+
+    #[test]
+    fn a_closed_outline_creates_at_the_chosen_detail() {
+        let doc = Document::default();
+        let v = view();
+        let outline = |tool: &mut SketchTool| {
+            let at = |k: usize| {
+                let a = std::f32::consts::TAU * k as f32 / 40.0;
+                (400.0 + 120.0 * a.cos(), 340.0 + 90.0 * a.sin())
+            };
+            tool.on_event(
+                &ToolEvent::Begin(pen(Phase::Down, at(0).0, at(0).1)),
+                &v,
+                &doc,
+            );
+            for k in 1..40 {
+                tool.on_event(
+                    &ToolEvent::Move(pen(Phase::Move, at(k).0, at(k).1)),
+                    &v,
+                    &doc,
+                );
+            }
+            match tool.on_event(
+                &ToolEvent::End(pen(Phase::Up, at(40).0, at(40).1)),
+                &v,
+                &doc,
+            ) {
+                ToolOutput::Commit(Op::Create(input)) => input.vertices,
+                other => panic!("not a creation: {other:?}"),
+            }
+        };
+        let mut tool = SketchTool::default();
+        assert_eq!(
+            outline(&mut tool),
+            None,
+            "the default leaves sessions as they were"
+        );
+        tool.detail = Detail::Finest;
+        assert_eq!(outline(&mut tool), Some(40_000));
     }
 
     #[test]

@@ -44,6 +44,6 @@ pub fn shape() -> Editor {
         camera: Camera::default(),
         stroke: circle,
     };
-    editor.apply(Op::Create(input)).unwrap();
+    editor.apply(Op::Create(input.into())).unwrap();
     editor
 }

@@ -240,17 +240,21 @@ fn options_row(
             _ => {}
         }
         let stats = editor.document().stats();
-        let size = format!(
-            "{} models · {} vertices · {} triangles · {} curves",
-            stats.models, stats.vertices, stats.triangles, stats.curves
-        );
+        let size = [
+            (stats.models, "model"),
+            (stats.vertices, "vertex"),
+            (stats.triangles, "triangle"),
+            (stats.curves, "curve"),
+        ]
+        .map(|(n, noun)| counted(n, noun))
+        .join(" · ");
         if layout.compact {
-            ui.label(format!("{} vertices", stats.vertices))
+            ui.label(counted(stats.vertices, "vertex"))
                 .on_hover_text(size);
         } else {
             // Shorter, or left out, where the mode's options leave too little room: wrapped,
             // it would add a row as the options change, and the view below would jump.
-            let short = format!("{} vertices", stats.vertices);
+            let short = counted(stats.vertices, "vertex");
             let room = ui.available_size_before_wrap().x;
             let width = |text: &str| {
                 egui::WidgetText::from(text)
@@ -271,6 +275,22 @@ fn options_row(
         }
     });
     action
+}
+
+/// `n` and `noun`, plural unless `n` is one: "1 model", "2,500 vertices".
+fn counted(n: usize, noun: &str) -> String {
+    let digits = n.to_string();
+    let grouped: Vec<&str> = (0..digits.len())
+        .rev()
+        .step_by(3)
+        .map(|end| &digits[end.saturating_sub(2)..=end])
+        .collect();
+    let number = grouped.into_iter().rev().collect::<Vec<_>>().join(",");
+    match (n, noun) {
+        (1, _) => format!("{number} {noun}"),
+        (_, "vertex") => format!("{number} vertices"),
+        _ => format!("{number} {noun}s"),
+    }
 }
 
 /// The smallest size of a target in the toolbar's `ui`: square, the layout's target, which
@@ -461,5 +481,19 @@ fn toggle_between<T: Copy + PartialEq>(
         .changed()
     {
         *value = if is_on { on } else { off };
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::counted;
+
+    #[test]
+    fn counts_read_as_words() {
+        assert_eq!(counted(1, "model"), "1 model");
+        assert_eq!(counted(0, "curve"), "0 curves");
+        assert_eq!(counted(39_340, "vertex"), "39,340 vertices");
+        assert_eq!(counted(1_002_528, "triangle"), "1,002,528 triangles");
+        assert_eq!(counted(100, "vertex"), "100 vertices");
     }
 }

@@ -2044,6 +2044,16 @@ async function idleOrbits(cdp, record) {
   return record(false);
 }
 
+/**
+ * The frame that lands the work's result (the commit, the scene's arrays built and uploaded,
+ * the first draw) is no longer than the same scene's frames with the result in it, as an
+ * orbit shows them: 1.5 × its longest plus 50 ms, the rule for the frames during the work.
+ */
+function assertLandingFrame(landingLongest, sceneLongest) {
+  const limit = 1.5 * sceneLongest + 50;
+  assert.ok(landingLongest <= limit, `the frame that lands the result stalls: ${landingLongest.toFixed(0)} ms > ${limit.toFixed(0)} ms`);
+}
+
 test('a 1 M-triangle import runs off the frame: loadGlb returns at once, frames stay short, an orbit turns the view meanwhile, Escape cancels and changes nothing', async () => {
   const fresh = await openApp(browser, url, gpu);
   try {
@@ -2087,6 +2097,7 @@ test('a 1 M-triangle import runs off the frame: loadGlb returns at once, frames 
     const limit = 1.5 * idleLongest + 50;
     console.log(`    # longest frame: ${idleLongest.toFixed(0)} ms without the work, ${workLongest.toFixed(0)} ms while the worker read 1 M triangles (limit ${limit.toFixed(0)}); the landing frame ${landingLongest.toFixed(0)} ms, an orbit of the million triangles ${modelLongest.toFixed(0)} ms`);
     assert.ok(workLongest <= limit, `no frame stalls while the worker reads: ${workLongest.toFixed(0)} ms > ${limit.toFixed(0)} ms`);
+    assertLandingFrame(landingLongest, modelLongest);
 
     // Escape while the file is read again into an empty document (its frames are short, so
     // the import is under way two frames after the call): refused as cancelled, and the
@@ -2109,7 +2120,7 @@ test('a 1 M-triangle import runs off the frame: loadGlb returns at once, frames 
   }
 });
 
-test('a 40k-vertex shape is created off the frame: its outline stays with a progress line, frames stay short, an orbit turns the view meanwhile, Escape cancels and changes nothing', async () => {
+test('a 40k-vertex shape is created off the frame: its outline stays with a progress line, frames stay short, an orbit turns the view meanwhile, Escape cancels and changes nothing; its replay runs in the worker too', async () => {
   const fresh = await openApp(browser, url, gpu);
   try {
     const { page, cdp } = fresh;
@@ -2131,7 +2142,6 @@ test('a 40k-vertex shape is created off the frame: its outline stays with a prog
       const wait = () => (window.sketchmesh.stats().models === 1 ? resolve(Math.max(0, ...window.__frames.list)) : setTimeout(wait, 5));
       wait();
     }));
-    await record(false);
     const stats = await api(page, 'stats');
     assert.ok(stats.vertices > 36_000 && stats.vertices < 44_000 && stats.triangles === 2 * stats.vertices - 4, `a closed 40k-vertex shape: ${JSON.stringify(stats)}`);
     const op = await lastOpOf(page);
@@ -2140,6 +2150,14 @@ test('a 40k-vertex shape is created off the frame: its outline stays with a prog
     const limit = 1.5 * idleLongest + 50;
     console.log(`    # longest frame: ${idleLongest.toFixed(0)} ms without the work, ${workLongest.toFixed(0)} ms while the worker created ${stats.vertices} vertices (limit ${limit.toFixed(0)})`);
     assert.ok(workLongest <= limit, `no frame stalls while the worker creates: ${workLongest.toFixed(0)} ms > ${limit.toFixed(0)} ms`);
+    await sleep(1500);
+    const landingLongest = await record(false);
+    await record(true);
+    await orbitDrag(cdp, undefined, 120, 6);
+    await sleep(300);
+    const shapeLongest = await record(false);
+    console.log(`    # the landing frame ${landingLongest.toFixed(0)} ms, an orbit of the shape ${shapeLongest.toFixed(0)} ms`);
+    assertLandingFrame(landingLongest, shapeLongest);
     await frames(page, 3);
     await screenshot(page, out('create-40k.png'));
 
@@ -2152,6 +2170,25 @@ test('a 40k-vertex shape is created off the frame: its outline stays with a prog
     assert.deepEqual(await api(page, 'stats'), stats, 'a cancelled creation leaves the document as it was');
     assert.equal(await api(page, 'opCount'), 1, 'and the session too');
     assert.equal(await api(page, 'progress'), null, 'and the progress line is gone');
+
+    // Its session replayed in the page: the creation is computed in the worker there too.
+    const session = await api(page, 'session');
+    await record(true);
+    const replay = await page.evaluate((text) => {
+      const started = performance.now();
+      window.__replayed = null;
+      window.sketchmesh.replay(text).then(
+        () => { window.__replayed = { during: Math.max(0, ...window.__frames.list) }; },
+        (e) => { window.__replayed = { error: e.message }; });
+      return performance.now() - started;
+    }, session);
+    const replayed = await until(() => page.evaluate(() => window.__replayed), (r) => r !== null, 60_000);
+    await record(false);
+    assert.ok(replayed && !replayed.error, `the replay lands: ${replayed?.error}`);
+    assert.ok(replay < 50, `replay returns within 50 ms: ${replay.toFixed(1)} ms`);
+    assert.deepEqual(await api(page, 'stats'), stats, 'the replay makes the same shape');
+    console.log(`    # replayed in the worker: longest frame ${replayed.during.toFixed(0)} ms (limit ${limit.toFixed(0)})`);
+    assert.ok(replayed.during <= limit, `no frame stalls while a replay creates: ${replayed.during.toFixed(0)} ms > ${limit.toFixed(0)} ms`);
     assert.deepEqual(fresh.errors, [], 'console errors while creating');
   } finally {
     await fresh.context.close();

@@ -700,19 +700,13 @@ impl SketchApp {
         };
         let started = clock::now_ms();
         let stepped = loop {
-            let (index, _) = replaying.replay.done_of();
+            // An import's read and a curve op's or fine creation's result: in the worker,
+            // as when the user makes them.
             if let Some(edit) = replaying.replay.edit_mut()
-                && let Some(input) = edit.import_to_read().cloned()
+                && let HandOver::Waiting =
+                    hand_over(&mut self.offload, &mut replaying.job, edit, now)
             {
-                let job = match replaying.job {
-                    Some((at, job)) if at == index => job,
-                    _ => replaying.job.insert((index, self.offload.job())).1,
-                };
-                match self.offload.poll(job, Work::Import(&input)) {
-                    Poll::Pending => break Ok(false),
-                    Poll::Arrived(answer) => supply(edit, answer),
-                    Poll::NotOffloaded => {}
-                }
+                break Ok(false);
             }
             match replaying.replay.step() {
                 Ok(Progress::Done) => break Ok(true),
@@ -753,7 +747,7 @@ impl SketchApp {
         let Some(replaying) = self.replay.take() else {
             return;
         };
-        if let Some((_, job)) = replaying.job {
+        if let Some((job, _)) = replaying.job {
             self.offload.cancel(job);
         }
         let why = String::from("The replay was cancelled.");
@@ -1838,11 +1832,11 @@ struct ImportInProgress {
     reply: files::Reply,
 }
 
-/// A session being replayed over frames: its steps, the worker's job for the import in
-/// progress (with that op's position), and who waits for the result.
+/// A session being replayed over frames: its steps, the worker's job for the op in progress
+/// (as [`hand_over`] keeps it), and who waits for the result.
 struct ReplayInProgress {
     replay: Replay,
-    job: Option<(usize, JobId)>,
+    job: Option<(JobId, f64)>,
     reply: files::Reply,
 }
 

@@ -380,9 +380,8 @@ impl Edit {
             | Work::Outline(_)
             | Work::Transform(_)
             | Work::Failed(_) => {
-                if let Work::Pull(preview) = &self.work {
-                    let (index, positions) = preview.moved();
-                    self.held = Some((index, positions.to_vec()));
+                if let Work::Pull(preview) = std::mem::replace(&mut self.work, Work::Whole) {
+                    self.held = Some(preview.into_moved());
                 }
                 self.work = Work::complete(base, op)?;
                 Ok((Progress::Working, true))

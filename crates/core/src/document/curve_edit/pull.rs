@@ -182,6 +182,11 @@ impl PullPreview {
     pub(in crate::document) fn moved(&self) -> (usize, &[DVec3]) {
         (self.model_index, &self.positions)
     }
+
+    /// [`PullPreview::moved`], kept when the drag ends (shown until the result lands).
+    pub(in crate::document) fn into_moved(self) -> (usize, Vec<DVec3>) {
+        (self.model_index, self.positions)
+    }
 }
 
 /// How far from the grabbed point (along the surface) a pull with a peel of `peel_radius`

@@ -164,13 +164,30 @@ export const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
  * Records every animation frame's interval in `page` (a frame the page could not draw shows
  * as a long one) in `window.__frames.list`; returns `record(on)`, which starts a fresh
  * recording (`true`) or stops it (`false`), and gives the longest interval so far.
+ *
+ * A recording also stops at the first frame in which `window.__frames.stopWhen()` holds: the
+ * app landed a result in this frame or the last (its frame callback may run before or after
+ * this one). The intervals of this frame and the next, one of which holds the landing, stay
+ * out of the list; the longer is `window.__frames.landing`.
  */
 export async function recordFrames(page) {
   await page.evaluate(() => {
-    window.__frames = { on: false, list: [] };
+    window.__frames = { on: false, list: [], stopWhen: null, landing: null };
     let last = performance.now();
+    let landingTicks = 0;
     const tick = (t) => {
-      if (window.__frames.on) window.__frames.list.push(t - last);
+      const f = window.__frames;
+      if (f.on && f.stopWhen?.()) {
+        f.on = false;
+        f.stopWhen = null;
+        f.landing = 0;
+        landingTicks = 2;
+      }
+      if (landingTicks > 0) {
+        f.landing = Math.max(f.landing, t - last);
+        landingTicks--;
+      }
+      if (f.on) f.list.push(t - last);
       last = t;
       requestAnimationFrame(tick);
     };

@@ -68,6 +68,11 @@ impl Replay {
         {
             edit.finish(&mut self.editor)?;
             self.index += 1;
+            // Done with the last op's finish, not one step later: the page lands the last
+            // op and opens the document in one frame, not over two.
+            if self.ops.len() == 0 {
+                return Ok(Progress::Done);
+            }
         }
         Ok(Progress::Working)
     }
@@ -93,6 +98,16 @@ impl Replay {
 mod tests {
     use super::*;
     use crate::document::create::tests::ellipse;
+
+    #[test]
+    fn a_replay_is_done_with_its_last_op() {
+        let mut replay = Replay::new(vec![Op::Create(ellipse().into())]);
+        while replay.step().expect("replays") == Progress::Working {
+            assert_eq!(replay.done_of(), (0, 1), "working on the creation");
+        }
+        assert_eq!(replay.done_of(), (1, 1));
+        assert_eq!(replay.into_editor().document().models.len(), 1);
+    }
 
     #[test]
     fn stepping_a_replay_counts_its_ops_and_stops_at_the_first_refusal() {

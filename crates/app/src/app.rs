@@ -8,6 +8,7 @@
 //! changes, and moves a model's vertices in place while an edit moves them.
 
 use std::cell::RefCell;
+use std::collections::VecDeque;
 use std::rc::Rc;
 use std::sync::Arc;
 
@@ -146,6 +147,10 @@ pub struct SketchApp {
     /// The worker's job for the long part of the edit in progress (an import's read, a
     /// curve op's result), and when it was handed over (seconds).
     worker_job: Option<(JobId, f64)>,
+    /// Ops made while the worker computes the edit in progress (a stroke drawn while a
+    /// fine shape is created), in order: begun one at a time once it lands, so that no
+    /// frame has to finish the worker's op itself.
+    waiting: VecDeque<Op>,
     /// A session being replayed over frames (the page API's `replay`), to replace the
     /// document once it is through.
     replay: Option<ReplayInProgress>,
@@ -245,6 +250,7 @@ impl SketchApp {
             import: None,
             replay: None,
             worker_job: None,
+            waiting: VecDeque::new(),
             holding_stroke: false,
             edits_begun: 0,
             falloff_panel: Default::default(),
@@ -285,12 +291,33 @@ impl SketchApp {
 
     /// Begins `op` (as a gesture when its stroke is still being drawn) after finishing the
     /// edit in progress, so ops are logged in the order they were made; this frame's steps
-    /// run it. A refusal becomes a status message; nothing changes then.
+    /// run it. While the worker computes the edit in progress, an op that is not a gesture
+    /// waits for it instead ([`SketchApp::begin_waiting`]); a gesture finishes it here, as
+    /// its preview needs the result. A refusal becomes a status message; nothing changes
+    /// then.
     fn begin(&mut self, op: Op, is_gesture: bool, now: f64) {
         if self.is_busy() {
             self.set_status(String::from(BUSY), now);
             return;
         }
+        if !is_gesture && (self.worker_job.is_some() || !self.waiting.is_empty()) {
+            self.waiting.push_back(op);
+            return;
+        }
+        self.begin_now(op, is_gesture, now);
+    }
+
+    /// Begins the next op that waited for the worker, once the edit it waited for is over.
+    fn begin_waiting(&mut self, now: f64) {
+        if self.edit.is_none()
+            && let Some(op) = self.waiting.pop_front()
+        {
+            self.begin_now(op, false, now);
+        }
+    }
+
+    /// [`SketchApp::begin`], without waiting for the worker.
+    fn begin_now(&mut self, op: Op, is_gesture: bool, now: f64) {
         self.finish_edit(now);
         let name = op.name();
         let started = clock::now_ms();
@@ -327,6 +354,10 @@ impl SketchApp {
     /// one; none in the frame it was begun in), and finishes it once done.
     fn step_edit(&mut self, ctx: &egui::Context) {
         let now = ctx.input(|i| i.time);
+        self.begin_waiting(now);
+        if !self.waiting.is_empty() && self.worker_job.is_none() {
+            ctx.request_repaint();
+        }
         let Some(edit) = self.edit.as_mut() else {
             return;
         };
@@ -377,6 +408,17 @@ impl SketchApp {
                 self.set_status(e.to_string(), now);
                 self.settle_import(Err(e.to_string()), now);
             }
+        }
+    }
+
+    /// Before a new gesture: it acts on the document with the edit in progress committed (a
+    /// shape still refining is finished first), unless the worker computes that edit. Then
+    /// the gesture sees the document as shown, and what it makes waits for the worker
+    /// ([`SketchApp::begin`]): a frame that finished the worker's op would stall for as long
+    /// as the worker takes (seconds for a 40k shape), and an orbit or a stroke must not.
+    fn finish_edit_unless_offloaded(&mut self, now: f64) {
+        if self.worker_job.is_none() {
+            self.finish_edit(now);
         }
     }
 
@@ -584,6 +626,7 @@ impl SketchApp {
             self.cancel_replay(now);
             self.cancel_gesture();
             self.edit = None;
+            self.waiting.clear();
             let dropped = self.tools.cancel();
             self.take_output(dropped, now);
         }
@@ -992,7 +1035,7 @@ impl SketchApp {
     fn handle_hands(&mut self, hands: &Hands, viewport: egui::Rect, now: f64) {
         if matches!(hands, Hands::Down(_)) {
             self.cancel_gesture();
-            self.finish_edit(now);
+            self.finish_edit_unless_offloaded(now);
         }
         let output = self.feed_tool(viewport, |tools, view, doc| {
             tools.on_hands(hands, view, doc)
@@ -1047,11 +1090,9 @@ impl SketchApp {
                             self.erasing_from = Some(self.tools.mode());
                             self.set_mode(Mode::Erase, now);
                         }
-                        // A new gesture acts on the document with the edit in progress
-                        // committed (a shape still refining is finished first).
                         if matches!(event, ToolEvent::Begin(_)) {
                             self.cancel_gesture();
-                            self.finish_edit(now);
+                            self.finish_edit_unless_offloaded(now);
                         }
                         let output = self.feed_tool(viewport, |tools, view, doc| {
                             tools.on_event(event, view, doc)
@@ -1566,11 +1607,11 @@ impl SketchApp {
             stroke_ui(ui, viewport, raw, egui::Color32::from_rgb(242, 199, 82));
         }
         // The outline of a fine shape the worker computes stays, dimmer, until the shape
-        // lands.
-        if let Some(Op::Create(input)) = self.edit.as_ref().map(Edit::op)
-            && self.worker_job.is_some()
-        {
-            let points = StrokeInput::of_create(input).points();
+        // lands, and so do the strokes made meanwhile, which wait for it.
+        let computed = (self.edit.as_ref())
+            .filter(|edit| self.worker_job.is_some() && matches!(edit.op(), Op::Create(_)));
+        for op in computed.map(Edit::op).into_iter().chain(&self.waiting) {
+            let points = op.stroke_points();
             stroke_ui(ui, viewport, &points, egui::Color32::from_rgb(200, 170, 90));
         }
     }

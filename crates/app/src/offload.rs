@@ -11,9 +11,10 @@
 //! once, not at every pull). The edit in progress takes the answer
 //! ([`Edit::supply_import`], [`Edit::supply_model`]) and finishes as it would have on the
 //! main thread: the same code on the same build, so replaying the session gives the same
-//! document. The order of ops is kept: while an import runs, ops wait (see the app's
-//! `is_busy`); an op begun while a curve op is computed finishes that one first, on the main
-//! thread (that one frame is long; the worker's answer is then dropped).
+//! document. The order of ops is kept: while an import runs, ops are refused (see the app's
+//! `is_busy`); an op made while a curve op or a fine creation is computed waits for it (the
+//! app's `waiting`), and a gesture begun then finishes it first, on the main thread (that
+//! one frame is long; the worker's answer is used if it came).
 //!
 //! Natively, and when the page cannot start a worker, nothing is offloaded: [`Offload::poll`]
 //! says so and the app steps the edit itself, as before.

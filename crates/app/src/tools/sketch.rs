@@ -8,7 +8,7 @@
 
 use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::document::{
-    Document, Op, StrokeInput, cut_instead, extrude_from, ink_instead, is_cross_section, needs_tap,
+    Document, Op, cut_instead, extrude_from, ink_instead, is_cross_section, needs_tap,
     op_for_stroke, tunnel_from,
 };
 
@@ -112,7 +112,7 @@ impl SketchTool {
         let mut ops: Vec<Op> = held.map(Waiting::without_tap).into_iter().collect();
         if needs_tap(&op) {
             self.waiting = Some(Waiting {
-                points: stroke_points(&op),
+                points: op.stroke_points(),
                 op,
                 deadline: None,
             });
@@ -181,14 +181,6 @@ impl SketchTool {
             }
         };
         Some((&waiting.points, what))
-    }
-}
-
-/// The samples of an `add_curve` op, for showing it while it waits.
-fn stroke_points(op: &Op) -> Vec<StrokePoint> {
-    match op {
-        Op::AddCurve(input) => StrokeInput::of_add_curve(input).points(),
-        _ => Vec::new(),
     }
 }
 

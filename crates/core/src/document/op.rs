@@ -239,6 +239,11 @@ impl Op {
         }
     }
 
+    /// [`Op::stroke`] as [`StrokePoint`]s (none for the ops without a stroke).
+    pub fn stroke_points(&self) -> Vec<StrokePoint> {
+        self.stroke().map(points_of).unwrap_or_default()
+    }
+
     /// [`Op::stroke`], to extend while the stroke is drawn.
     pub fn stroke_mut(&mut self) -> Option<&mut Vec<[f64; 3]>> {
         match self {
@@ -709,6 +714,14 @@ mod base64_bytes {
     }
 }
 
+/// Raw samples `[x, y, pressure]` as [`StrokePoint`]s.
+fn points_of(stroke: &[[f64; 3]]) -> Vec<StrokePoint> {
+    stroke
+        .iter()
+        .map(|&[x, y, pressure]| StrokePoint::new(DVec2::new(x, y), pressure))
+        .collect()
+}
+
 /// A pointer stroke as the app saw it: the viewport and camera at the time, and the raw
 /// samples.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -756,10 +769,7 @@ impl StrokeInput {
 
     /// The samples as [`StrokePoint`]s.
     pub fn points(&self) -> Vec<StrokePoint> {
-        self.stroke
-            .iter()
-            .map(|&[x, y, pressure]| StrokePoint::new(DVec2::new(x, y), pressure))
-            .collect()
+        points_of(&self.stroke)
     }
 
     /// The viewport size in CSS px.

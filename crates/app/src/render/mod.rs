@@ -227,8 +227,16 @@ fn buffer<T: Pod>(
     })
 }
 
-/// 4× MSAA when both scene formats support it on this adapter, else none.
+/// 4× MSAA when both scene formats support it on a GPU, else none. A software adapter
+/// (SwiftShader, llvmpipe: a machine without a GPU) rasterizes on the cores that also run
+/// the page and its worker: four samples a pixel would make every frame several times
+/// longer there, and a frame drawn while the worker computes longer still.
 fn msaa_samples(adapter: &wgpu::Adapter) -> u32 {
+    let info = adapter.get_info();
+    log::info!("Adapter: {:?} {:?}", info.device_type, info.name);
+    if info.device_type == wgpu::DeviceType::Cpu {
+        return 1;
+    }
     let supports = |format| {
         adapter
             .get_texture_format_features(format)

@@ -2025,6 +2025,50 @@ test('offline: after one visit, with the server stopped, a reload opens the app 
   }
 });
 
+test('a pull dragged while the worker computes the last pull of a 40k shape is refused, not computed in the frame; dragged again once it landed, it pulls', async () => {
+  const fresh = await openApp(browser, url, gpu);
+  try {
+    const { page, cdp } = fresh;
+    const c = ELLIPSE.c;
+    await page.mouse.click(DETAIL_40K.x, DETAIL_40K.y);
+    await penStroke(cdp, onEllipse());
+    await until(() => api(page, 'opCount'), (n) => n === 1, 60_000);
+    await page.keyboard.press('p');
+    await frames(page, 3);
+    const pen = { pointerType: 'pen', button: 'left' };
+    const send = (type, x, y, buttons) => cdp.send('Input.dispatchMouseEvent', { type, x, y, buttons, clickCount: 1, force: 0.5, ...pen });
+    const drag = async (x, dx) => {
+      await send('mousePressed', x, c.y, 1);
+      for (let i = 1; i <= 8; i++) {
+        await sleep(25);
+        await send('mouseMoved', x + dx * i, c.y, 1);
+      }
+      await send('mouseReleased', x + 8 * dx, c.y, 0);
+    };
+    // The outline's right end pulled out: the worker computes the pull (about 0.5 s at 40k).
+    await drag(c.x + 170, 5);
+    // Its left end dragged meanwhile (a few frames later, so that the pull was handed over):
+    // refused (no op), and the first pull still lands from the worker, not computed by this
+    // drag's frame. (A drag after the landing would pull: the ops below would say so.)
+    await sleep(100);
+    await drag(c.x - 170, -5);
+    await until(() => api(page, 'progress'), (p) => p === null, 60_000);
+    await sleep(500);
+    const ops = JSON.parse(await api(page, 'session')).ops;
+    assert.deepEqual(ops.map((o) => o.op), ['create', 'pull'], 'the drag made during the work made nothing');
+    assert.equal(ops[1].stroke[0][0], c.x + 170, 'the pull is the first drag');
+    const timed = (await api(page, 'timings')).pull;
+    assert.equal(timed?.elsewhere_ms?.length, 1, `the worker computed the pull, not the frame: ${JSON.stringify(timed)}`);
+    // Dragged again now, the left end pulls.
+    await drag(c.x - 170, -5);
+    const second = await until(() => lastOpOf(page), (o) => o.op === 'pull' && o.stroke[0][0] === c.x - 170, 60_000);
+    assert.equal(second.stroke?.[0]?.[0], c.x - 170, 'the same drag, after the landing, pulls');
+    assert.deepEqual(fresh.errors, [], 'console errors while pulling');
+  } finally {
+    await fresh.context.close();
+  }
+});
+
 /** A right-button drag across the view: an orbit, as a mouse user does it. */
 async function orbitDrag(cdp, from = { x: 640, y: 420 }, dx = 240, steps = 12) {
   const at = (i) => ({ x: from.x + (dx * i) / steps, y: from.y });

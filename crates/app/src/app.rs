@@ -46,6 +46,9 @@ const STATUS_SECONDS: f64 = 6.0;
 /// Why an op is refused while an import or a replay runs (see [`SketchApp::is_busy`]).
 const BUSY: &str = "Wait for the import or replay in progress to land, or cancel it (Esc).";
 
+/// The sentence for a drag begun while the worker computes the last change.
+const COMPUTING: &str = "Wait for the change being computed to land, or cancel it (Esc).";
+
 /// How long an op may run in the page's worker before the progress line says so, in seconds.
 const PROGRESS_AFTER_S: f64 = 0.25;
 
@@ -292,12 +295,18 @@ impl SketchApp {
     /// Begins `op` (as a gesture when its stroke is still being drawn) after finishing the
     /// edit in progress, so ops are logged in the order they were made; this frame's steps
     /// run it. While the worker computes the edit in progress, an op that is not a gesture
-    /// waits for it instead ([`SketchApp::begin_waiting`]); a gesture finishes it here, as
-    /// its preview needs the result. A refusal becomes a status message; nothing changes
-    /// then.
+    /// waits for it instead ([`SketchApp::begin_waiting`]); a gesture is refused with a
+    /// sentence, as its live preview needs the result: finishing the worker's op here would
+    /// freeze the page for as long as the worker takes, and the gesture would come before
+    /// the ops waiting for it. A refusal becomes a status message; nothing changes then.
     fn begin(&mut self, op: Op, is_gesture: bool, now: f64) {
         if self.is_busy() {
             self.set_status(String::from(BUSY), now);
+            return;
+        }
+        if is_gesture && (self.worker_job.is_some() || !self.waiting.is_empty()) {
+            self.tools.gesture_refused();
+            self.set_status(String::from(COMPUTING), now);
             return;
         }
         if !is_gesture && (self.worker_job.is_some() || !self.waiting.is_empty()) {

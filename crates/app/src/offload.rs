@@ -13,8 +13,8 @@
 //! main thread: the same code on the same build, so replaying the session gives the same
 //! document. The order of ops is kept: while an import runs, ops are refused (see the app's
 //! `is_busy`); an op made while a curve op or a fine creation is computed waits for it (the
-//! app's `waiting`), and a gesture begun then finishes it first, on the main thread (that
-//! one frame is long; the worker's answer is used if it came).
+//! app's `waiting`), and a drag begun then is refused with a sentence (its live preview
+//! needs the result, and computing it in the frame would freeze the page).
 //!
 //! Natively, and when the page cannot start a worker, nothing is offloaded: [`Offload::poll`]
 //! says so and the app steps the edit itself, as before.

@@ -2052,6 +2052,7 @@ test('a pull dragged while the worker computes the last pull of a 40k shape is r
     // drag's frame. (A drag after the landing would pull: the ops below would say so.)
     await sleep(100);
     await drag(c.x - 170, -5);
+    await screenshot(page, out('pull-refused.png'));
     await until(() => api(page, 'progress'), (p) => p === null, 60_000);
     await sleep(500);
     const ops = JSON.parse(await api(page, 'session')).ops;

@@ -216,6 +216,16 @@ export function cameraDistance(cam) {
 }
 
 /**
+ * A function sending one pen event of `type` (mousePressed, mouseMoved, mouseReleased) at
+ * (x, y) with `buttons` and half pressure via CDP: for drags paced by the test.
+ */
+export function penSender(cdp) {
+  return (type, x, y, buttons) => cdp.send('Input.dispatchMouseEvent', {
+    type, x, y, buttons, clickCount: 1, force: 0.5, pointerType: 'pen', button: 'left',
+  });
+}
+
+/**
  * A pen stroke through `points` ([{x, y, force}] in CSS px) via CDP, one event per `gapMs` so that
  * the moves land in different frames (back-to-back events collapse into one egui frame).
  */

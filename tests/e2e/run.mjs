@@ -16,7 +16,7 @@ import { fileURLToPath } from 'node:url';
 
 import {
   EXPECTED_BACKEND, GRID_GLB_SOURCE, OUT_DIR, api, camera, cameraDistance, changedFraction, distinctColours, frames,
-  imageChangedFraction, launch, line, maxDiffNear, nonBackgroundFraction, openApp, penStroke, recordFrames,
+  imageChangedFraction, launch, line, maxDiffNear, nonBackgroundFraction, openApp, penSender, penStroke, recordFrames,
   screenshot, serveDirectory, settings, sleep, touchGesture, touchTap,
 } from './lib.mjs';
 
@@ -928,9 +928,7 @@ test('curve tools with the pen: pull (live preview, its result computed by the p
 
     // Pull the outline's rightmost point 80 px out; look at the live preview before release.
     await fresh.page.keyboard.press('p');
-    const pen = { pointerType: 'pen', button: 'left' };
-    const send = (type, x, y, buttons) =>
-      fresh.cdp.send('Input.dispatchMouseEvent', { type, x, y, buttons, clickCount: 1, force: 0.5, ...pen });
+    const send = penSender(fresh.cdp);
     await send('mousePressed', c.x + 170, c.y, 1);
     for (let i = 1; i <= 16; i++) {
       await sleep(25);
@@ -2035,8 +2033,7 @@ test('a pull dragged while the worker computes the last pull of a 40k shape is r
     await until(() => api(page, 'opCount'), (n) => n === 1, 60_000);
     await page.keyboard.press('p');
     await frames(page, 3);
-    const pen = { pointerType: 'pen', button: 'left' };
-    const send = (type, x, y, buttons) => cdp.send('Input.dispatchMouseEvent', { type, x, y, buttons, clickCount: 1, force: 0.5, ...pen });
+    const send = penSender(cdp);
     const drag = async (x, dx) => {
       await send('mousePressed', x, c.y, 1);
       for (let i = 1; i <= 8; i++) {

@@ -304,12 +304,13 @@ impl SketchApp {
             self.set_status(String::from(BUSY), now);
             return;
         }
-        if is_gesture && (self.worker_job.is_some() || !self.waiting.is_empty()) {
+        let behind_the_worker = self.worker_job.is_some() || !self.waiting.is_empty();
+        if behind_the_worker && is_gesture {
             self.tools.gesture_refused();
             self.set_status(String::from(COMPUTING), now);
             return;
         }
-        if !is_gesture && (self.worker_job.is_some() || !self.waiting.is_empty()) {
+        if behind_the_worker {
             self.waiting.push_back(op);
             return;
         }

@@ -61,7 +61,11 @@
 //! a second in the page) is a pure function of the models and the op
 //! ([`model_op`](super::model_op)): the page computes it in the worker too
 //! ([`Edit::model_op_to_run`], [`Edit::supply_model`]), while the pull's last preview stays
-//! on screen.
+//! on screen. So does a pull's preview while it is dragged ([`Edit::preview_to_run`],
+//! [`Edit::preview_elsewhere`], [`Edit::supply_preview`]): the worker keeps its own edit of
+//! the drag, factors the region once and follows the samples the page sends, and the page
+//! shows each preview that comes back; the region's refactor when the peel outgrows it
+//! (0.2–0.5 s in the page at 40k vertices) no longer stalls a frame.
 
 use std::sync::Arc;
 
@@ -136,10 +140,17 @@ pub struct Edit {
     revision: u64,
     /// Changes whenever anything the edit shows does.
     generation: u64,
-    /// A pull's last previewed positions (model index, positions), still shown while its
+    /// A pull's previewed positions (model index, positions) when they were computed
+    /// elsewhere ([`Edit::supply_preview`]), or its last ones, still shown while its
     /// committed result is computed elsewhere, so the shape does not jump back meanwhile.
     held: Option<(usize, Vec<DVec3>)>,
+    /// How many samples of the stroke the preview computed elsewhere follows (0: none).
+    held_for: usize,
 }
+
+/// A gesture's preview computed elsewhere: how many samples of its stroke it follows, the
+/// moved model's index and where its vertices are drawn.
+pub type MovedElsewhere = (usize, usize, Vec<DVec3>);
 
 /// Where an edit is.
 #[derive(Debug)]
@@ -236,7 +247,57 @@ impl Edit {
             Op::Redo if !editor.can_redo() => return Err(CommandError::NothingToRedo),
             _ => {}
         }
-        let base = editor.document().clone();
+        Edit::begin_on(editor.document().clone(), op, is_gesture)
+    }
+
+    /// What the page's worker runs for [`Edit::preview_to_run`]: the preview of the gesture
+    /// `op` on `models`, followed up to `op`'s last sample. `kept` is the worker's edit of
+    /// the previous request; when it is the same gesture on the same models (`op`'s stroke
+    /// extends its stroke), it goes on from there, so the region it factored is factored
+    /// once per drag, as here. Returns the edit to keep and its preview for
+    /// [`Edit::supply_preview`].
+    ///
+    /// Errors: the gesture's refusal (no curve under the grab, a failed solve).
+    pub fn preview_elsewhere(
+        kept: Option<Edit>,
+        models: Vec<Arc<Model>>,
+        op: Op,
+    ) -> Result<(Edit, MovedElsewhere), CommandError> {
+        let samples = op.stroke().unwrap_or_default().to_vec();
+        let same_gesture = |edit: &Edit| {
+            let mut start = op.clone();
+            let followed = edit.op.stroke().map_or(0, <[_]>::len);
+            if let Some(stroke) = start.stroke_mut() {
+                stroke.truncate(followed);
+            }
+            edit.is_gesture && start == edit.op && same_items(&edit.base.models, &models)
+        };
+        let mut edit = match kept.filter(same_gesture) {
+            Some(edit) => edit,
+            None => {
+                let base = Document {
+                    models,
+                    ..Document::default()
+                };
+                Edit::begin_on(base, op, true)?
+            }
+        };
+        let followed = edit.op.stroke().map_or(0, <[_]>::len);
+        for &sample in samples.iter().skip(followed) {
+            edit.extend(sample);
+        }
+        while edit.step()? == Progress::Working {}
+        let (index, positions) =
+            edit.moved_model()
+                .ok_or(CommandError::Elsewhere(String::from(
+                    "The drag has no preview to compute elsewhere.",
+                )))?;
+        let moved = (samples.len(), index, positions.to_vec());
+        Ok((edit, moved))
+    }
+
+    /// [`Edit::begin`] on `base`, with no editor.
+    fn begin_on(base: Document, op: Op, is_gesture: bool) -> Result<Edit, CommandError> {
         let work = if is_gesture {
             Work::gesture(&base, &op)?
         } else {
@@ -252,6 +313,7 @@ impl Edit {
             revision: shown,
             generation: shown,
             held: None,
+            held_for: 0,
         })
     }
 
@@ -298,6 +360,8 @@ impl Edit {
         if self.is_gesture {
             let stroke = op.stroke().unwrap_or_default();
             let stepped = match (&mut self.work, op) {
+                // Its preview is computed elsewhere ([`Edit::supply_preview`]).
+                (Work::Pull(_), _) if self.held.is_some() => None,
                 (Work::Pull(preview), _) => preview.step(stroke)?,
                 (Work::Outline(preview), _) => preview.step(base, stroke),
                 (Work::Optimize(preview), Op::Optimize(input)) => preview.step(base, input)?,
@@ -380,7 +444,9 @@ impl Edit {
             | Work::Outline(_)
             | Work::Transform(_)
             | Work::Failed(_) => {
-                if let Work::Pull(preview) = std::mem::replace(&mut self.work, Work::Whole) {
+                if let Work::Pull(preview) = std::mem::replace(&mut self.work, Work::Whole)
+                    && self.held.is_none()
+                {
                     self.held = Some(preview.into_moved());
                 }
                 self.work = Work::complete(base, op)?;
@@ -513,6 +579,57 @@ impl Edit {
         self.generation += 1;
     }
 
+    /// A pull's drag whose preview does not follow its latest sample yet: the page computes
+    /// the preview in its worker ([`Edit::preview_elsewhere`] on a copy of these models and
+    /// this op) and hands it to [`Edit::supply_preview`], so factoring the region around the
+    /// grab, and again each time the peel outgrows it (0.2–0.5 s in the page at 40k
+    /// vertices), never runs in a frame. Once a preview was supplied, steps here leave it to
+    /// the worker. `None` for any other edit, once the gesture ended, and while the preview
+    /// supplied follows the whole stroke.
+    pub fn preview_to_run(&self) -> Option<(&[Arc<Model>], &Op)> {
+        let samples = self.op.stroke().map_or(0, <[_]>::len);
+        match &self.work {
+            Work::Pull(_) if self.is_gesture && samples > self.held_for => {
+                Some((&self.base.models, &self.op))
+            }
+            _ => None,
+        }
+    }
+
+    /// Shows a preview of [`Edit::preview_to_run`] computed elsewhere: the same positions a
+    /// step here would show for those samples. A preview for fewer samples than the one
+    /// shown is ignored, as is one for another edit or after the result is computed; once
+    /// the gesture ended, the preview shown until the result lands is replaced. A refusal
+    /// (no curve under the grab, a failed solve) fails the edit, as a step here would.
+    pub fn supply_preview(&mut self, moved: Result<MovedElsewhere, CommandError>) {
+        let shows_a_pull = match &self.work {
+            Work::Pull(_) => self.is_gesture,
+            Work::Whole => self.held.is_some() && matches!(self.op, Op::Pull(_)),
+            _ => false,
+        };
+        if !shows_a_pull {
+            return;
+        }
+        let fits = |&(_, index, ref positions): &MovedElsewhere| {
+            let model = self.base.models.get(index);
+            model.is_some_and(|m| m.mesh.positions().len() == positions.len())
+        };
+        match moved {
+            Ok(moved) if !fits(&moved) => {
+                self.work = Work::Failed(CommandError::Elsewhere(String::from(
+                    "The preview computed elsewhere does not fit the model.",
+                )));
+            }
+            Ok((samples, index, positions)) if samples > self.held_for => {
+                self.held = Some((index, positions));
+                self.held_for = samples;
+                self.generation += 1;
+            }
+            Ok(_) => {}
+            Err(error) => self.work = Work::Failed(error),
+        }
+    }
+
     /// The op as far as it is known (a gesture's stroke grows).
     pub fn op(&self) -> &Op {
         &self.op
@@ -535,7 +652,10 @@ impl Edit {
     /// of [`Edit::document`] and where its vertices are drawn (the same topology).
     pub fn moved_model(&self) -> Option<(usize, &[DVec3])> {
         match &self.work {
-            Work::Pull(preview) => Some(preview.moved()),
+            Work::Pull(preview) => Some(match &self.held {
+                Some((index, positions)) => (*index, &positions[..]),
+                None => preview.moved(),
+            }),
             Work::Optimize(preview) => match &self.op {
                 Op::Optimize(input) => Some(preview.moved(input)),
                 _ => None,
@@ -624,10 +744,12 @@ fn optimized(
 
 /// Whether two documents hold the very same models, sketches and point clouds.
 fn same_document(a: &Document, b: &Document) -> bool {
-    fn same<T>(a: &[std::sync::Arc<T>], b: &[std::sync::Arc<T>]) -> bool {
-        a.len() == b.len() && a.iter().zip(b).all(|(x, y)| std::sync::Arc::ptr_eq(x, y))
-    }
-    same(&a.models, &b.models)
-        && same(&a.sketches, &b.sketches)
-        && same(&a.point_clouds, &b.point_clouds)
+    same_items(&a.models, &b.models)
+        && same_items(&a.sketches, &b.sketches)
+        && same_items(&a.point_clouds, &b.point_clouds)
+}
+
+/// Whether `a` and `b` hold the very same shared items, in order.
+fn same_items<T>(a: &[Arc<T>], b: &[Arc<T>]) -> bool {
+    a.len() == b.len() && a.iter().zip(b).all(|(x, y)| Arc::ptr_eq(x, y))
 }

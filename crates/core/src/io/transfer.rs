@@ -108,6 +108,28 @@ pub fn decode_changed(bytes: &[u8]) -> Result<(usize, Model), TransferError> {
     Ok((index, model.ok_or(TransferError("no model"))?))
 }
 
+/// A gesture's preview computed elsewhere: how many samples of its stroke it follows, the
+/// moved model's index and where its vertices are drawn, as one buffer for [`decode_moved`].
+pub fn encode_moved(samples: usize, index: usize, positions: &[DVec3]) -> Vec<u8> {
+    let mut out = Writer::default();
+    out.count(samples);
+    out.count(index);
+    out.pods(positions);
+    out.bytes
+}
+
+/// The preview [`encode_moved`] wrote: `(samples, index, positions)`.
+///
+/// Errors: [`TransferError`] when the buffer is not one it wrote.
+pub fn decode_moved(bytes: &[u8]) -> Result<(usize, usize, Vec<DVec3>), TransferError> {
+    let mut input = Reader::new(bytes);
+    let samples = input.count()?;
+    let index = input.count()?;
+    let positions = input.pods()?;
+    input.end()?;
+    Ok((samples, index, positions))
+}
+
 #[derive(Default)]
 struct Writer {
     bytes: Vec<u8>,

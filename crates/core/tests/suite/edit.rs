@@ -699,3 +699,66 @@ fn curve_ops_computed_elsewhere_land_as_the_applied_ones() {
     assert_eq!(editor.document(), before.document());
     assert_eq!(editor.session_json(), before.session_json());
 }
+
+/// The page computes a pull's preview in its worker while the pointer moves: the worker's
+/// edit follows the samples the page sends (one factorization for the whole drag), every
+/// preview it hands back through the transfer buffer is the one a step here shows for the
+/// same samples, bit for bit, a late one for fewer samples is ignored, and the drag commits
+/// what `apply` makes.
+#[test]
+fn a_pull_previewed_elsewhere_shows_what_stepping_here_shows() {
+    use sketchmesh_core::document::Edit;
+    use sketchmesh_core::io::{decode_moved, encode_moved};
+    let mut editor = Editor::new();
+    for make in &session()[1..3] {
+        editor.apply(make(&editor)).unwrap();
+    }
+    let Op::Pull(drag) = session()[3](&editor) else {
+        unreachable!("the fourth op is a pull")
+    };
+    let grab = Op::Pull(StrokeInput {
+        stroke: drag.stroke[..1].to_vec(),
+        ..drag.clone()
+    });
+    let mut here = editor.begin_gesture(grab.clone()).unwrap();
+    let mut there = editor.begin_gesture(grab).unwrap();
+    let mut worker: Option<Edit> = None;
+    let mut followed = 1;
+    for samples in [1, 4, 9, drag.stroke.len()] {
+        for &sample in &drag.stroke[followed..samples] {
+            here.extend(sample);
+            there.extend(sample);
+        }
+        followed = samples;
+        while here.step().unwrap() == Progress::Working {}
+        let (models, op) = there
+            .preview_to_run()
+            .expect("a preview to compute elsewhere");
+        let (kept, (n, index, positions)) =
+            Edit::preview_elsewhere(worker.take(), models.to_vec(), op.clone()).unwrap();
+        worker = Some(kept);
+        there.supply_preview(Ok(
+            decode_moved(&encode_moved(n, index, &positions)).unwrap()
+        ));
+        assert!(there.preview_to_run().is_none(), "up to date");
+        let generation = there.generation();
+        assert_eq!(there.step().unwrap(), Progress::Waiting);
+        assert_eq!(
+            there.generation(),
+            generation,
+            "no step here once previewed there"
+        );
+        assert_eq!(there.moved_model(), here.moved_model(), "{samples} samples");
+    }
+    let rest = editor.document().models[0].mesh.positions().to_vec();
+    there.supply_preview(Ok((2, 0, rest)));
+    assert_eq!(there.moved_model(), here.moved_model(), "an older preview");
+    for edit in [&mut here, &mut there] {
+        edit.end_gesture();
+    }
+    let mut applied = editor.clone();
+    applied.apply(Op::Pull(drag)).unwrap();
+    here.finish(&mut editor.clone()).unwrap();
+    there.finish(&mut editor).unwrap();
+    assert_eq!(editor.document(), applied.document());
+}

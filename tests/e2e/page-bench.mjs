@@ -389,6 +389,9 @@ try {
       vertices,
       grab_ms: round(pull.begin_ms.at(-1) ?? null),
       frame_ms: stats(pull.frame_ms),
+      // Each preview the worker computed while the pen moved, asked to shown (the region's
+      // factorizations run there).
+      preview_ms: stats(pull.preview_ms ?? []),
       // The committed ops' work in the page's frames, and in its worker (the page drew
       // meanwhile).
       release_ms: round(pull.finish_ms.at(-1) ?? null),

@@ -2067,6 +2067,61 @@ test('a pull dragged while the worker computes the last pull of a 40k shape is r
   }
 });
 
+test('a long pull of a 40k shape is previewed by the worker: the shape follows the pen, refactoring the region as the peel grows stalls no frame, and the release commits the pull', async () => {
+  const fresh = await openApp(browser, url, gpu);
+  try {
+    const { page, cdp } = fresh;
+    const c = ELLIPSE.c;
+    await page.mouse.click(DETAIL_40K.x, DETAIL_40K.y);
+    await penStroke(cdp, onEllipse());
+    await until(() => api(page, 'opCount'), (n) => n === 1, 60_000);
+    await page.keyboard.press('p');
+    await frames(page, 3);
+    const record = await recordFrames(page);
+    const idleLongest = await idleOrbits(cdp, record);
+    await frames(page, 3);
+    const before = await screenshot(page, out('pull-40k-before.png'));
+    // The outline's right end pulled 90 px right and 30 up in 60 samples (the page bench's
+    // drag): the peel outgrows the region factored at the grab, which is factored again.
+    const send = penSender(cdp);
+    const grab = { x: c.x + 170, y: c.y };
+    // The app's timings of the pull, gathered (each read takes them).
+    await api(page, 'timings');
+    const timed = { preview_ms: [], frame_ms: [], elsewhere_ms: [] };
+    const gather = async () => {
+      const pull = (await api(page, 'timings')).pull ?? {};
+      for (const [key, list] of Object.entries(timed)) list.push(...(pull[key] ?? []));
+      return timed;
+    };
+    await record(true);
+    await send('mousePressed', grab.x, grab.y, 1);
+    for (let i = 1; i <= 60; i++) {
+      await sleep(16);
+      await send('mouseMoved', grab.x + 1.5 * i, grab.y - 0.5 * i, 1);
+    }
+    await until(gather, (t) => t.preview_ms.length >= 2, 10_000);
+    await sleep(1000);
+    const dragLongest = await record(false);
+    const previewed = await screenshot(page, out('pull-40k-preview.png'));
+    await send('mouseReleased', grab.x + 90, grab.y - 30, 0);
+    const pulled = await until(() => lastOpOf(page), (o) => o.op === 'pull', 60_000);
+    assert.equal(pulled.stroke.length, 61, 'the pull is the whole drag');
+    await gather();
+    const inFrame = Math.max(...timed.frame_ms);
+    const limit = 1.5 * idleLongest + 50;
+    console.log(`    # previews from the worker: ${timed.preview_ms.map((ms) => ms.toFixed(0)).join(', ')} ms; the drag's own work per frame at most ${inFrame.toFixed(1)} ms; longest frame ${dragLongest.toFixed(0)} ms (idle ${idleLongest.toFixed(0)}, limit ${limit.toFixed(0)})`);
+    assert.ok(timed.preview_ms.length >= 2, 'the worker previewed the drag');
+    assert.ok(inFrame < 50, `no drag frame factors or solves: ${inFrame.toFixed(1)} ms of work in one`);
+    assert.ok(dragLongest <= limit, `no frame stalls while the worker previews the pull: ${dragLongest.toFixed(0)} ms > ${limit.toFixed(0)} ms`);
+    assert.equal(timed.elsewhere_ms?.length, 1, `the worker computed the committed pull: ${JSON.stringify(timed)}`);
+    const moved = imageChangedFraction(before, previewed);
+    assert.ok(moved > 0.002, `the preview shows the shape pulled (${(100 * moved).toFixed(2)} % of the view changed)`);
+    assert.deepEqual(fresh.errors, [], 'console errors while pulling');
+  } finally {
+    await fresh.context.close();
+  }
+});
+
 /** A right-button drag across the view: an orbit, as a mouse user does it. */
 async function orbitDrag(cdp, from = { x: 640, y: 420 }, dx = 240, steps = 12) {
   const at = (i) => ({ x: from.x + (dx * i) / steps, y: from.y });

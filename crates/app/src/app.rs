@@ -384,6 +384,12 @@ impl SketchApp {
                     let timings = &mut self.shared.borrow_mut().timings;
                     self.edit_clock.elsewhere(1000.0 * seconds, timings);
                 }
+                HandOver::Previewed { seconds } => {
+                    let timings = &mut self.shared.borrow_mut().timings;
+                    self.edit_clock.previewed(1000.0 * seconds, timings);
+                    // The next preview, or the committed result, goes to the worker too.
+                    continue;
+                }
                 HandOver::Here => {}
             }
             match edit.step() {
@@ -545,6 +551,10 @@ impl SketchApp {
     fn cancel_gesture(&mut self) {
         if let Some(edit) = self.edit.take_if(|edit| edit.is_gesture()) {
             edit.cancel();
+            // The worker's job can only be the gesture's preview.
+            if let Some((job, _)) = self.worker_job.take() {
+                self.offload.cancel(job);
+            }
         }
     }
 
@@ -1835,10 +1845,14 @@ enum HandOver {
     Waiting,
     /// The worker's answer landed in the edit, this long after it was handed over.
     Landed { seconds: f64 },
+    /// The worker's preview of a gesture landed in the edit, this long after it was asked.
+    Previewed { seconds: f64 },
 }
 
-/// Hands the long, pure part of `edit` (an import's read, a curve op's result) to the
-/// page's worker as `job`, or lands the worker's answer in it.
+/// Hands the long, pure part of `edit` (an import's read, a curve op's result, a pull's
+/// preview) to the page's worker as `job`, or lands the worker's answer in it. A job in
+/// hand is polled whatever the edit needs now: a preview asked for while the pointer was
+/// down lands (and shows) before the committed result is asked for.
 fn hand_over(
     offload: &mut Offload,
     job: &mut Option<(JobId, f64)>,
@@ -1848,11 +1862,24 @@ fn hand_over(
     let work = match (edit.import_to_read(), edit.model_op_to_run()) {
         (Some(input), _) => Work::Import(input),
         (None, Some((models, op))) => Work::ModelOp(models, op),
-        (None, None) => return HandOver::Here,
+        (None, None) => match edit.preview_to_run() {
+            Some((models, op)) => Work::Preview(models, op),
+            // A preview asked for while the pointer was down, polled (what a job computes
+            // is sent once, the first time it is polled).
+            None if job.is_some() => Work::Preview(&[], edit.op()),
+            None => return HandOver::Here,
+        },
     };
     let (id, since) = *job.get_or_insert_with(|| (offload.job(), now));
     match offload.poll(id, work) {
         Poll::Pending => HandOver::Waiting,
+        Poll::Arrived(Answer::Moved(moved)) => {
+            *job = None;
+            edit.supply_preview(moved);
+            HandOver::Previewed {
+                seconds: now - since,
+            }
+        }
         Poll::Arrived(answer) => {
             *job = None;
             supply(edit, answer);
@@ -1872,6 +1899,7 @@ fn supply(edit: &mut Edit, answer: Answer) {
     match answer {
         Answer::Imported(imported) => edit.supply_import(imported),
         Answer::Model(changed) => edit.supply_model(changed),
+        Answer::Moved(moved) => edit.supply_preview(moved),
     }
 }
 
@@ -1941,6 +1969,11 @@ impl EditClock {
     /// The worker's part, which took `ms` while the page drew.
     fn elsewhere(&self, ms: f64, timings: &mut clock::Timings) {
         clock::record(&mut timings.of(self.name).elsewhere_ms, ms);
+    }
+
+    /// A preview the worker computed, which took `ms` (asked to shown) while the page drew.
+    fn previewed(&self, ms: f64, timings: &mut clock::Timings) {
+        clock::record(&mut timings.of(self.name).preview_ms, ms);
     }
 
     /// The finish, which took `ms`.

@@ -43,6 +43,9 @@ pub struct EditTimings {
     /// The page's worker's part, from handing it over to its answer landing (an import's
     /// read, a curve op's result): time the page kept drawing.
     pub elsewhere_ms: Vec<f64>,
+    /// Each preview of its gesture the worker computed, from asked to shown (a pull's drag:
+    /// the region factored, and refactored when the peel outgrows it, there).
+    pub preview_ms: Vec<f64>,
 }
 
 impl Timings {

@@ -4,8 +4,11 @@
 //! button keep working.
 //!
 //! The worker runs the pure part of an edit: an import's [`import_files`] (files in, models
-//! out), or a curve op's or over-sketch's [`model_op`] (the document's models and the op in,
-//! the changed model out). Both cross as transferable buffers
+//! out), a curve op's or over-sketch's [`model_op`] (the document's models and the op in,
+//! the changed model out), or a pull's preview while it is dragged
+//! ([`Edit::preview_elsewhere`]: the drag so far in, the moved positions out; the worker
+//! keeps its edit of the drag between requests, so the region is factored once per drag, and
+//! refactored there when the peel outgrows it, not in a frame). Both cross as transferable buffers
 //! (`sketchmesh_core::io::transfer`); the worker keeps the models of its last op, so an op
 //! sends only the models that changed since (a scan beside the shape being pulled crosses
 //! once, not at every pull). The edit in progress takes the answer
@@ -23,10 +26,11 @@
 //! [`model_op`]: sketchmesh_core::document::model_op
 //! [`Edit::supply_import`]: sketchmesh_core::document::Edit::supply_import
 //! [`Edit::supply_model`]: sketchmesh_core::document::Edit::supply_model
+//! [`Edit::preview_elsewhere`]: sketchmesh_core::document::Edit::preview_elsewhere
 
 use std::sync::Arc;
 
-use sketchmesh_core::document::{CommandError, ImportInput, Model, Op};
+use sketchmesh_core::document::{CommandError, ImportInput, Model, MovedElsewhere, Op};
 use sketchmesh_core::io::Imported;
 
 /// The work of an edit the worker can do.
@@ -36,6 +40,8 @@ pub enum Work<'a> {
     Import(&'a ImportInput),
     /// Compute an op that changes one model, from the document's models.
     ModelOp(&'a [Arc<Model>], &'a Op),
+    /// Preview a gesture's op so far, from the document's models.
+    Preview(&'a [Arc<Model>], &'a Op),
 }
 
 /// The worker's answer to a [`Work`].
@@ -45,6 +51,8 @@ pub enum Answer {
     Imported(Result<Imported, CommandError>),
     /// The changed model's index and its next version.
     Model(Result<(usize, Model), CommandError>),
+    /// A gesture's preview.
+    Moved(Result<MovedElsewhere, CommandError>),
 }
 
 /// What became of the work the edit in progress needs.
@@ -161,11 +169,11 @@ mod page {
 
     use js_sys::{Array, Int32Array, Object, Reflect, Uint8Array};
     use sketchmesh_core::document::{
-        CommandError, Document, FileInput, ImportInput, Model, Op, import_files, model_op,
+        CommandError, Document, Edit, FileInput, ImportInput, Model, Op, import_files, model_op,
     };
     use sketchmesh_core::io::{
-        decode_changed, decode_imported, decode_models, encode_changed, encode_imported,
-        encode_models,
+        decode_changed, decode_imported, decode_models, decode_moved, encode_changed,
+        encode_imported, encode_models, encode_moved,
     };
     use wasm_bindgen::JsCast as _;
     use wasm_bindgen::prelude::*;
@@ -181,6 +189,14 @@ mod page {
     /// did not load) rather than refused.
     type Message = (u64, Result<Uint8Array, (String, bool)>);
 
+    /// What a job sent to the worker computes.
+    #[derive(Clone, Copy, PartialEq, Eq)]
+    enum Kind {
+        Import,
+        ModelOp,
+        Preview,
+    }
+
     /// The page's worker, its message handlers, and the job in hand.
     pub(super) struct Worker {
         worker: web_sys::Worker,
@@ -188,8 +204,8 @@ mod page {
         inbox: Rc<RefCell<Option<Message>>>,
         /// Set when the worker itself failed (its script did not load).
         broken: Rc<RefCell<bool>>,
-        /// The job sent and not yet answered, and whether it is an import (else an op).
-        sent: Option<(u64, bool)>,
+        /// The job sent and not yet answered, and what it computes.
+        sent: Option<(u64, Kind)>,
         /// The models the worker keeps from its last op, in order: an op sends only the
         /// models not among them (a scan beside the shape being pulled is sent once).
         /// Weak, so that a model the document dropped is not kept alive, and its address is
@@ -252,19 +268,24 @@ mod page {
                 return Poll::NotOffloaded;
             }
             if self.sent.is_none() {
-                let sent = match work {
+                let (sent, kind) = match work {
                     // The edit says which file is missing.
                     Work::Import(input) if input.files.iter().any(|f| f.data.is_none()) => {
                         return Poll::NotOffloaded;
                     }
-                    Work::Import(input) => self.send_import(id, &input.files),
-                    Work::ModelOp(models, op) => self.send_op(id, models, op),
+                    Work::Import(input) => (self.send_import(id, &input.files), Kind::Import),
+                    Work::ModelOp(models, op) => {
+                        (self.send_op(id, models, op, false), Kind::ModelOp)
+                    }
+                    Work::Preview(models, op) => {
+                        (self.send_op(id, models, op, true), Kind::Preview)
+                    }
                 };
                 if let Err(why) = sent {
                     log::warn!("Could not hand the work to the worker: {why:?}");
                     return Poll::NotOffloaded;
                 }
-                self.sent = Some((id, matches!(work, Work::Import(_))));
+                self.sent = Some((id, kind));
             }
             match self.answer(id) {
                 Some(answer) => Poll::Arrived(answer),
@@ -273,12 +294,12 @@ mod page {
         }
 
         pub(super) fn answer(&mut self, id: u64) -> Option<Answer> {
-            let (_, is_import) = self.sent.filter(|&(sent, _)| sent == id)?;
+            let (_, kind) = self.sent.filter(|&(sent, _)| sent == id)?;
             let (_, answer) = self.inbox.borrow_mut().take_if(|(job, _)| *job == id)?;
             if answer.as_ref().is_err_and(|&(_, broke)| broke) {
                 // A trapped instance is never used again: the next job gets a new one.
                 self.cancel(id);
-            } else if answer.is_err() && !is_import {
+            } else if answer.is_err() && kind != Kind::Import {
                 // Which models the worker kept is not sure: the next op sends them all.
                 self.known.clear();
             }
@@ -286,18 +307,17 @@ mod page {
             let bytes = answer.map(|bytes| bytes.to_vec()).map_err(|(why, _)| why);
             let unreadable =
                 |e: sketchmesh_core::io::TransferError| CommandError::Elsewhere(e.to_string());
-            Some(if is_import {
-                Answer::Imported(
-                    bytes
-                        .map_err(CommandError::Elsewhere)
-                        .and_then(|bytes| decode_imported(&bytes).map_err(unreadable)),
-                )
-            } else {
-                Answer::Model(
-                    bytes
-                        .map_err(CommandError::Elsewhere)
-                        .and_then(|bytes| decode_changed(&bytes).map_err(unreadable)),
-                )
+            let bytes = bytes.map_err(CommandError::Elsewhere);
+            Some(match kind {
+                Kind::Import => Answer::Imported(
+                    bytes.and_then(|bytes| decode_imported(&bytes).map_err(unreadable)),
+                ),
+                Kind::ModelOp => Answer::Model(
+                    bytes.and_then(|bytes| decode_changed(&bytes).map_err(unreadable)),
+                ),
+                Kind::Preview => {
+                    Answer::Moved(bytes.and_then(|bytes| decode_moved(&bytes).map_err(unreadable)))
+                }
             })
         }
 
@@ -317,10 +337,17 @@ mod page {
             }
         }
 
-        /// Posts `{id, models, kept, op}`: for each of the document's models where the
-        /// worker holds it already (`kept`, its index there, or -1), the others in one
-        /// transferred buffer, and the op as its session JSON.
-        fn send_op(&mut self, id: u64, models: &[Arc<Model>], op: &Op) -> Result<(), JsValue> {
+        /// Posts `{id, models, kept, op, preview}`: for each of the document's models where
+        /// the worker holds it already (`kept`, its index there, or -1), the others in one
+        /// transferred buffer, the op as its session JSON, and whether to preview it (a
+        /// gesture's op so far) rather than compute it.
+        fn send_op(
+            &mut self,
+            id: u64,
+            models: &[Arc<Model>],
+            op: &Op,
+            preview: bool,
+        ) -> Result<(), JsValue> {
             let kept = super::kept(&self.known, models);
             let fresh: Vec<&Model> = (models.iter().zip(&kept))
                 .filter(|&(_, &k)| k < 0)
@@ -332,6 +359,7 @@ mod page {
             Reflect::set(&message, &"models".into(), &bytes)?;
             Reflect::set(&message, &"kept".into(), &Int32Array::from(kept.as_slice()))?;
             Reflect::set(&message, &"op".into(), &JsValue::from_str(&op.to_json()))?;
+            Reflect::set(&message, &"preview".into(), &JsValue::from_bool(preview))?;
             self.worker
                 .post_message_with_transfer(&message, &Array::of1(&bytes.buffer()))?;
             self.known = models.iter().map(Arc::downgrade).collect();
@@ -402,6 +430,8 @@ mod page {
     thread_local! {
         /// In the worker's instance: the models of its last op, which the next one may keep.
         static KEPT: RefCell<Vec<Arc<Model>>> = RefCell::default();
+        /// In the worker's instance: its edit of the gesture it last previewed.
+        static PREVIEWING: RefCell<Option<Edit>> = RefCell::default();
     }
 
     /// The worker's entry for an op that makes one model (`web/worker.js` calls it):
@@ -416,20 +446,57 @@ mod page {
         kept: Vec<i32>,
         op: String,
     ) -> Result<Uint8Array, JsValue> {
-        let refused = |why: String| JsValue::from_str(&why);
-        let fresh = decode_models(&models.to_vec()).map_err(|e| refused(e.to_string()))?;
-        let models = KEPT.with_borrow(|previous| super::with_kept(previous, &kept, fresh));
-        let models = models.ok_or_else(|| refused(String::from("The worker lost a model.")))?;
-        KEPT.set(models.clone());
-        let op: Op = serde_json::from_str(&op).map_err(|e| refused(e.to_string()))?;
+        let (models, op) = received(&models, &kept, &op)?;
+        PREVIEWING.set(None);
         let doc = Document {
             models,
             ..Document::default()
         };
         match model_op(&doc, &op) {
             Ok((index, model)) => Ok(Uint8Array::from(encode_changed(index, &model).as_slice())),
-            Err(error) => Err(refused(error.to_string())),
+            Err(error) => Err(JsValue::from_str(&error.to_string())),
         }
+    }
+
+    /// The worker's entry for a gesture's preview (`web/worker.js` calls it): previews the
+    /// op so far on the document's models, going on with the edit of the last request when
+    /// it is the same drag, into one buffer for [`decode_moved`]. The models are received as
+    /// [`run_model_op`]'s.
+    ///
+    /// Errors: the gesture's refusal, as the sentence the editor would show.
+    #[wasm_bindgen]
+    pub fn run_preview(
+        models: Uint8Array,
+        kept: Vec<i32>,
+        op: String,
+    ) -> Result<Uint8Array, JsValue> {
+        let (models, op) = received(&models, &kept, &op)?;
+        let previous = PREVIEWING.take();
+        match Edit::preview_elsewhere(previous, models, op) {
+            Ok((edit, (samples, index, positions))) => {
+                PREVIEWING.set(Some(edit));
+                Ok(Uint8Array::from(
+                    encode_moved(samples, index, &positions).as_slice(),
+                ))
+            }
+            Err(error) => Err(JsValue::from_str(&error.to_string())),
+        }
+    }
+
+    /// The document's models (those the worker keeps at the indices `kept` gives, the ones
+    /// in `models` where it says -1), now kept for the next request, and the op.
+    fn received(
+        models: &Uint8Array,
+        kept: &[i32],
+        op: &str,
+    ) -> Result<(Vec<Arc<Model>>, Op), JsValue> {
+        let refused = |why: String| JsValue::from_str(&why);
+        let fresh = decode_models(&models.to_vec()).map_err(|e| refused(e.to_string()))?;
+        let models = KEPT.with_borrow(|previous| super::with_kept(previous, kept, fresh));
+        let models = models.ok_or_else(|| refused(String::from("The worker lost a model.")))?;
+        KEPT.set(models.clone());
+        let op: Op = serde_json::from_str(op).map_err(|e| refused(e.to_string()))?;
+        Ok((models, op))
     }
 }
 

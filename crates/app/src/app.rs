@@ -1849,7 +1849,7 @@ enum HandOver {
     Previewed { seconds: f64 },
 }
 
-/// Hands the long, pure part of `edit` (an import's read, a curve op's result, a pull's
+/// Hands the long, pure part of `edit` (an import's read, a curve op's result, a drag's
 /// preview) to the page's worker as `job`, or lands the worker's answer in it. A job in
 /// hand is polled whatever the edit needs now: a preview asked for while the pointer was
 /// down lands (and shows) before the committed result is asked for.

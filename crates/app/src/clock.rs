@@ -43,8 +43,8 @@ pub struct EditTimings {
     /// The page's worker's part, from handing it over to its answer landing (an import's
     /// read, a curve op's result): time the page kept drawing.
     pub elsewhere_ms: Vec<f64>,
-    /// Each preview of its gesture the worker computed, from asked to shown (a pull's drag:
-    /// the region factored, and refactored when the peel outgrows it, there).
+    /// Each preview of its gesture the worker computed, from asked to shown (a pull's drag,
+    /// a control curve's new shape: what they factor is factored there).
     pub preview_ms: Vec<f64>,
 }
 

@@ -4,11 +4,12 @@
 //! button keep working.
 //!
 //! The worker runs the pure part of an edit: an import's [`import_files`] (files in, models
-//! out), a curve op's or over-sketch's [`model_op`] (the document's models and the op in,
-//! the changed model out), or a pull's preview while it is dragged
-//! ([`Edit::preview_elsewhere`]: the drag so far in, the moved positions out; the worker
-//! keeps its edit of the drag between requests, so the region is factored once per drag, and
-//! refactored there when the peel outgrows it, not in a frame). Both cross as transferable buffers
+//! out), a curve op's, over-sketch's or volumetric curve deformation's [`model_op`] (the
+//! document's models and the op in, the changed model out), or the preview of a pull or a
+//! control curve's new shape while it is drawn ([`Edit::preview_elsewhere`]: the stroke so
+//! far in, the moved positions out; the worker keeps its edit of the drag between requests,
+//! so what it factors is factored once per drag, and a pull's region is refactored there when
+//! the peel outgrows it, not in a frame). Both cross as transferable buffers
 //! (`sketchmesh_core::io::transfer`); the worker keeps the models of its last op, so an op
 //! sends only the models that changed since (a scan beside the shape being pulled crosses
 //! once, not at every pull). The edit in progress takes the answer
@@ -473,11 +474,13 @@ mod page {
         let (models, op) = received(&models, &kept, &op)?;
         let previous = PREVIEWING.take();
         match Edit::preview_elsewhere(previous, models, op) {
-            Ok((edit, (samples, index, positions))) => {
+            Ok((edit, (samples, moved))) => {
+                let moved = moved
+                    .as_ref()
+                    .map(|(index, positions)| (*index, &positions[..]));
+                let bytes = encode_moved(samples, moved);
                 PREVIEWING.set(Some(edit));
-                Ok(Uint8Array::from(
-                    encode_moved(samples, index, &positions).as_slice(),
-                ))
+                Ok(Uint8Array::from(bytes.as_slice()))
             }
             Err(error) => Err(JsValue::from_str(&error.to_string())),
         }

@@ -140,17 +140,19 @@ pub struct Edit {
     revision: u64,
     /// Changes whenever anything the edit shows does.
     generation: u64,
-    /// A pull's previewed positions (model index, positions) when they were computed
-    /// elsewhere ([`Edit::supply_preview`]), or its last ones, still shown while its
-    /// committed result is computed elsewhere, so the shape does not jump back meanwhile.
+    /// A preview's positions (model index, positions) when they were computed elsewhere
+    /// ([`Edit::supply_preview`]), or a pull's last ones, still shown while its committed
+    /// result is computed elsewhere, so the shape does not jump back meanwhile.
     held: Option<(usize, Vec<DVec3>)>,
-    /// How many samples of the stroke the preview computed elsewhere follows (0: none).
-    held_for: usize,
+    /// How many samples of the stroke the preview computed elsewhere follows; `None` while
+    /// none was supplied (steps here compute the preview).
+    elsewhere: Option<usize>,
 }
 
-/// A gesture's preview computed elsewhere: how many samples of its stroke it follows, the
-/// moved model's index and where its vertices are drawn.
-pub type MovedElsewhere = (usize, usize, Vec<DVec3>);
+/// A gesture's preview computed elsewhere: how many samples of its stroke it follows, and
+/// the moved model's index and where its vertices are drawn (`None` while there is nothing
+/// to show yet: a curve of fewer than two samples).
+pub type MovedElsewhere = (usize, Option<(usize, Vec<DVec3>)>);
 
 /// Where an edit is.
 #[derive(Debug)]
@@ -287,13 +289,8 @@ impl Edit {
             edit.extend(sample);
         }
         while edit.step()? == Progress::Working {}
-        let (index, positions) =
-            edit.moved_model()
-                .ok_or(CommandError::Elsewhere(String::from(
-                    "The drag has no preview to compute elsewhere.",
-                )))?;
-        let moved = (samples.len(), index, positions.to_vec());
-        Ok((edit, moved))
+        let moved = (edit.moved_model()).map(|(index, positions)| (index, positions.to_vec()));
+        Ok((edit, (samples.len(), moved)))
     }
 
     /// [`Edit::begin`] on `base`, with no editor.
@@ -313,7 +310,7 @@ impl Edit {
             revision: shown,
             generation: shown,
             held: None,
-            held_for: 0,
+            elsewhere: None,
         })
     }
 
@@ -361,7 +358,7 @@ impl Edit {
             let stroke = op.stroke().unwrap_or_default();
             let stepped = match (&mut self.work, op) {
                 // Its preview is computed elsewhere ([`Edit::supply_preview`]).
-                (Work::Pull(_), _) if self.held.is_some() => None,
+                (Work::Pull(_) | Work::Curve(_), _) if self.elsewhere.is_some() => None,
                 (Work::Pull(preview), _) => preview.step(stroke)?,
                 (Work::Outline(preview), _) => preview.step(base, stroke),
                 (Work::Optimize(preview), Op::Optimize(input)) => preview.step(base, input)?,
@@ -411,9 +408,10 @@ impl Edit {
                 self.work = Work::Done(with_model(base, preview.result(base, input)?));
                 Ok((Progress::Done, true))
             }
-            // A curve's new shape is drawn: its kept edit gives the exact result.
+            // A curve's new shape is drawn: its kept edit gives the exact result, or, when
+            // the preview was computed elsewhere, the op computed whole (elsewhere too).
             Work::Curve(preview) => {
-                let Op::CurveDeform(input) = op else {
+                let (Op::CurveDeform(input), None) = (op, self.elsewhere) else {
                     self.work = Work::complete(base, op)?;
                     return Ok((Progress::Working, true));
                 };
@@ -579,17 +577,20 @@ impl Edit {
         self.generation += 1;
     }
 
-    /// A pull's drag whose preview does not follow its latest sample yet: the page computes
-    /// the preview in its worker ([`Edit::preview_elsewhere`] on a copy of these models and
-    /// this op) and hands it to [`Edit::supply_preview`], so factoring the region around the
-    /// grab, and again each time the peel outgrows it (0.2–0.5 s in the page at 40k
-    /// vertices), never runs in a frame. Once a preview was supplied, steps here leave it to
-    /// the worker. `None` for any other edit, once the gesture ended, and while the preview
-    /// supplied follows the whole stroke.
+    /// A pull's drag or a control curve's new shape being drawn whose preview does not
+    /// follow its latest sample yet: the page computes the preview in its worker
+    /// ([`Edit::preview_elsewhere`] on a copy of these models and this op) and hands it to
+    /// [`Edit::supply_preview`], so that no frame factors: not a pull's region around the
+    /// grab, nor again each time the peel outgrows it (0.2–0.5 s in the page at 40k
+    /// vertices), nor a curve's volumetric graph and energy (about 1 s in the page at 30k
+    /// graph points). Once a preview was supplied, steps here leave it to the worker, and a
+    /// curve's committed result is computed whole (elsewhere too). `None` for any other
+    /// edit, once the gesture ended, and while the preview supplied follows the whole stroke.
     pub fn preview_to_run(&self) -> Option<(&[Arc<Model>], &Op)> {
         let samples = self.op.stroke().map_or(0, <[_]>::len);
+        let behind = samples > self.elsewhere.unwrap_or(0);
         match &self.work {
-            Work::Pull(_) if self.is_gesture && samples > self.held_for => {
+            Work::Pull(_) | Work::Curve(_) if self.is_gesture && behind => {
                 Some((&self.base.models, &self.op))
             }
             _ => None,
@@ -602,28 +603,31 @@ impl Edit {
     /// the gesture ended, the preview shown until the result lands is replaced. A refusal
     /// (no curve under the grab, a failed solve) fails the edit, as a step here would.
     pub fn supply_preview(&mut self, moved: Result<MovedElsewhere, CommandError>) {
-        let shows_a_pull = match &self.work {
-            Work::Pull(_) => self.is_gesture,
-            Work::Whole => self.held.is_some() && matches!(self.op, Op::Pull(_)),
+        let previews = match &self.work {
+            Work::Pull(_) | Work::Curve(_) => self.is_gesture,
+            Work::Whole => self.elsewhere.is_some(),
             _ => false,
         };
-        if !shows_a_pull {
+        if !previews {
             return;
         }
-        let fits = |&(_, index, ref positions): &MovedElsewhere| {
-            let model = self.base.models.get(index);
-            model.is_some_and(|m| m.mesh.positions().len() == positions.len())
+        let fits = |moved: &Option<(usize, Vec<DVec3>)>| match moved {
+            Some((index, positions)) => (self.base.models.get(*index))
+                .is_some_and(|m| m.mesh.positions().len() == positions.len()),
+            None => true,
         };
         match moved {
-            Ok(moved) if !fits(&moved) => {
+            Ok((_, moved)) if !fits(&moved) => {
                 self.work = Work::Failed(CommandError::Elsewhere(String::from(
                     "The preview computed elsewhere does not fit the model.",
                 )));
             }
-            Ok((samples, index, positions)) if samples > self.held_for => {
-                self.held = Some((index, positions));
-                self.held_for = samples;
-                self.generation += 1;
+            Ok((samples, moved)) if samples > self.elsewhere.unwrap_or(0) => {
+                if moved.is_some() {
+                    self.held = moved;
+                    self.generation += 1;
+                }
+                self.elsewhere = Some(samples);
             }
             Ok(_) => {}
             Err(error) => self.work = Work::Failed(error),
@@ -661,6 +665,9 @@ impl Edit {
                 _ => None,
             },
             Work::Feature(preview) => preview.moved(),
+            Work::Curve(_) if self.elsewhere.is_some() => {
+                (self.held.as_ref()).map(|(index, positions)| (*index, &positions[..]))
+            }
             Work::Curve(preview) => match &self.op {
                 Op::CurveDeform(input) => preview.moved(input),
                 _ => None,

@@ -69,13 +69,13 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
         Op::LinkHandles(input) => Outcome::Document(link_handles_op(base, input)?),
         Op::DeleteHandle(input) => Outcome::Document(delete_handle_op(base, input.handle)?),
         Op::Deform(input) => replaced(deform_op(base, input)?),
-        Op::CurveDeform(input) => replaced(curve_deform_op(base, input)?),
         Op::Keyframe(input) => Outcome::Document(keyframe_op(base, input)?),
         Op::DeleteKeyframe(input) => Outcome::Document(delete_keyframe_op(base, input)?),
         Op::PoseAt(input) => Outcome::Document(pose_at_op(base, input)?),
         Op::Undo => Outcome::Undo,
         Op::Redo => Outcome::Redo,
-        // A creation, the curve ops and the over-sketch: one model, from the models alone.
+        // A creation, the curve ops, the over-sketch and a curve's volumetric deformation:
+        // one model, from the models alone.
         _ => replaced(model_op(base, op)?),
     })
 }
@@ -98,6 +98,7 @@ pub fn model_op(doc: &Document, op: &Op) -> Result<(usize, Model), CommandError>
         Op::Erase(input) => curve_edit::erase_op(doc, input),
         Op::SetCurveType(input) => curve_edit::set_curve_type_op(doc, input),
         Op::Rub(input) => curve_edit::rub_op(doc, input),
+        Op::CurveDeform(input) => curve_deform_op(doc, input),
         other => Err(CommandError::NotOneModel(other.name())),
     }
 }

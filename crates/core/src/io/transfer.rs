@@ -108,26 +108,31 @@ pub fn decode_changed(bytes: &[u8]) -> Result<(usize, Model), TransferError> {
     Ok((index, model.ok_or(TransferError("no model"))?))
 }
 
-/// A gesture's preview computed elsewhere: how many samples of its stroke it follows, the
-/// moved model's index and where its vertices are drawn, as one buffer for [`decode_moved`].
-pub fn encode_moved(samples: usize, index: usize, positions: &[DVec3]) -> Vec<u8> {
+/// A gesture's preview computed elsewhere: how many samples of its stroke it follows, and
+/// the moved model's index and where its vertices are drawn (`None` while there is nothing
+/// to show yet), as one buffer for [`decode_moved`].
+pub fn encode_moved(samples: usize, moved: Option<(usize, &[DVec3])>) -> Vec<u8> {
     let mut out = Writer::default();
     out.count(samples);
-    out.count(index);
-    out.pods(positions);
+    out.option(moved.as_ref(), |out, &(index, positions)| {
+        out.count(index);
+        out.pods(positions);
+    });
     out.bytes
 }
 
-/// The preview [`encode_moved`] wrote: `(samples, index, positions)`.
+/// The model's index and the positions [`encode_moved`] wrote.
+type Moved = Option<(usize, Vec<DVec3>)>;
+
+/// The preview [`encode_moved`] wrote: `(samples, moved)`.
 ///
 /// Errors: [`TransferError`] when the buffer is not one it wrote.
-pub fn decode_moved(bytes: &[u8]) -> Result<(usize, usize, Vec<DVec3>), TransferError> {
+pub fn decode_moved(bytes: &[u8]) -> Result<(usize, Moved), TransferError> {
     let mut input = Reader::new(bytes);
     let samples = input.count()?;
-    let index = input.count()?;
-    let positions = input.pods()?;
+    let moved = input.option(|input| Ok((input.count()?, input.pods()?)))?;
     input.end()?;
-    Ok((samples, index, positions))
+    Ok((samples, moved))
 }
 
 #[derive(Default)]

@@ -734,12 +734,13 @@ fn a_pull_previewed_elsewhere_shows_what_stepping_here_shows() {
         let (models, op) = there
             .preview_to_run()
             .expect("a preview to compute elsewhere");
-        let (kept, (n, index, positions)) =
+        let (kept, (n, moved)) =
             Edit::preview_elsewhere(worker.take(), models.to_vec(), op.clone()).unwrap();
         worker = Some(kept);
-        there.supply_preview(Ok(
-            decode_moved(&encode_moved(n, index, &positions)).unwrap()
-        ));
+        let moved = moved
+            .as_ref()
+            .map(|(index, positions)| (*index, &positions[..]));
+        there.supply_preview(Ok(decode_moved(&encode_moved(n, moved)).unwrap()));
         assert!(there.preview_to_run().is_none(), "up to date");
         let generation = there.generation();
         assert_eq!(there.step().unwrap(), Progress::Waiting);
@@ -751,7 +752,7 @@ fn a_pull_previewed_elsewhere_shows_what_stepping_here_shows() {
         assert_eq!(there.moved_model(), here.moved_model(), "{samples} samples");
     }
     let rest = editor.document().models[0].mesh.positions().to_vec();
-    there.supply_preview(Ok((2, 0, rest)));
+    there.supply_preview(Ok((2, Some((0, rest)))));
     assert_eq!(there.moved_model(), here.moved_model(), "an older preview");
     for edit in [&mut here, &mut there] {
         edit.end_gesture();

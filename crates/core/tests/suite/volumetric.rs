@@ -10,8 +10,8 @@ use glam::{DMat4, DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::bspline::uniform_knots;
 use sketchmesh_core::document::{
-    CoarseInput, CurveDeformInput, DeformHandleInput, DeformInput, DeformMethod, Editor, Op,
-    Progress,
+    CoarseInput, CurveDeformInput, DeformHandleInput, DeformInput, DeformMethod, Document, Edit,
+    Editor, Op, Progress, model_op,
 };
 use sketchmesh_core::feature::Sketch;
 use sketchmesh_core::geometry::{Bvh, enclosed_volume};
@@ -596,6 +596,42 @@ fn a_control_curve_redrawn_in_its_plane_bends_the_capsule_and_keeps_its_volume()
     }
     assert!(gesture.moved_model().is_some(), "no preview");
     gesture.finish(&mut drawn).unwrap();
+    // And as the page draws it with its worker: each preview computed elsewhere by the
+    // worker's own edit of the drag, the commit computed whole elsewhere.
+    let mut offloaded = Editor::new();
+    offloaded.apply(import_mesh("capsule.glb", &mesh)).unwrap();
+    let mut begun = whole.clone();
+    begun.stroke.truncate(1);
+    let mut gesture = offloaded.begin_gesture(Op::CurveDeform(begun)).unwrap();
+    let mut worker = None;
+    for &sample in &whole.stroke[1..] {
+        gesture.extend(sample);
+        let (models, op) = gesture
+            .preview_to_run()
+            .expect("a preview to compute elsewhere");
+        let (kept, moved) =
+            Edit::preview_elsewhere(worker.take(), models.to_vec(), op.clone()).unwrap();
+        worker = Some(kept);
+        gesture.supply_preview(Ok(moved));
+        assert_eq!(
+            gesture.step().unwrap(),
+            Progress::Waiting,
+            "nothing to step here"
+        );
+    }
+    assert!(gesture.moved_model().is_some(), "no preview from elsewhere");
+    gesture.end_gesture();
+    assert_eq!(gesture.step().unwrap(), Progress::Working);
+    let (models, commit) = gesture
+        .model_op_to_run()
+        .expect("the commit computed elsewhere");
+    let doc = Document {
+        models: models.to_vec(),
+        ..Document::default()
+    };
+    let changed = model_op(&doc, commit);
+    gesture.supply_model(changed);
+    gesture.finish(&mut offloaded).unwrap();
     // Drawn in the front view the plane is seen edge-on: refused, nothing changes.
     let mut edge_on = whole.clone();
     edge_on.stroke_camera = None;
@@ -605,6 +641,7 @@ fn a_control_curve_redrawn_in_its_plane_bends_the_capsule_and_keeps_its_volume()
     assert_eq!(digest(editor.document()), before);
     editor.apply(op).unwrap();
     assert_eq!(digest(drawn.document()), digest(editor.document()));
+    assert_eq!(digest(offloaded.document()), digest(editor.document()));
     let moved = editor.document().models[0].mesh.positions().to_vec();
     let change = volume(&imported, &moved) / enclosed_volume(&imported) - 1.0;
     let tip = nearest_vertex(&imported, DVec3::new(3.5, 0.0, 0.0));

@@ -14,6 +14,14 @@ import { GRID_GLB_SOURCE, OUT_DIR, api, launch, penStroke, screenshot, settings,
 
 const round = (ms) => (ms === null || ms === undefined ? null : Math.round(ms * 10) / 10);
 
+/** Count, mean, median, 95th percentile and maximum of a list of times. */
+function distribution(list) {
+  const sorted = [...list].sort((a, b) => a - b);
+  const at = (q) => (sorted.length ? sorted[Math.min(sorted.length - 1, Math.floor(q * sorted.length))] : null);
+  const mean = sorted.length ? sorted.reduce((a, b) => a + b, 0) / sorted.length : null;
+  return { n: sorted.length, mean: round(mean), p50: round(at(0.5)), p95: round(at(0.95)), max: round(sorted.at(-1) ?? null) };
+}
+
 const STROKE_POINTS = 90;
 const { url, gpu } = settings();
 
@@ -288,12 +296,6 @@ try {
     await page.waitForFunction(() => JSON.parse(window.sketchmesh.session()).ops.at(-1)?.op === 'pull', null, { timeout: 30_000, polling: 50 })
       .catch(() => {});
     const t = await api(page, 'timings');
-    const stats = (list) => {
-      const sorted = [...list].sort((a, b) => a - b);
-      const at = (q) => (sorted.length ? sorted[Math.min(sorted.length - 1, Math.floor(q * sorted.length))] : null);
-      const mean = sorted.length ? sorted.reduce((a, b) => a + b, 0) / sorted.length : null;
-      return { n: sorted.length, mean: round(mean), p50: round(at(0.5)), p95: round(at(0.95)), max: round(sorted.at(-1) ?? null) };
-    };
     const pull = t.pull ?? { begin_ms: [], frame_ms: [], finish_ms: [] };
     // A cut across the same shape, left of the pull, with the pen in the sketch tool: the
     // stroke waits 0.6 s for a tap, then cuts; the app times the op itself (and the tunnel's
@@ -388,10 +390,10 @@ try {
     pulls.push({
       vertices,
       grab_ms: round(pull.begin_ms.at(-1) ?? null),
-      frame_ms: stats(pull.frame_ms),
+      frame_ms: distribution(pull.frame_ms),
       // Each preview the worker computed while the pen moved, asked to shown (the region's
       // factorizations run there).
-      preview_ms: stats(pull.preview_ms ?? []),
+      preview_ms: distribution(pull.preview_ms ?? []),
       // The committed ops' work in the page's frames, and in its worker (the page drew
       // meanwhile).
       release_ms: round(pull.finish_ms.at(-1) ?? null),
@@ -603,6 +605,9 @@ try {
       step_ms: { n: steps.length, p50: round(steps[Math.floor(steps.length / 2)] ?? null), max: round(steps.at(-1) ?? null) },
       drag_frame_ms: { n: later.length, p50: round(later[Math.floor(later.length / 2)] ?? null), max: round(later.at(-1) ?? null) },
       apply_ms: round(t?.finish_ms.at(-1) ?? null),
+      // Previews computed by the page's worker (asked to shown), and commits computed there.
+      preview_ms: distribution(t?.preview_ms ?? []),
+      worker_ms: round(t?.elsewhere_ms?.at(-1) ?? null),
     };
   };
 

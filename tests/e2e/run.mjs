@@ -1245,6 +1245,7 @@ test('pose (Q): keyed at rest, a pen stroke along a shape picks a control curve 
     assert.ok(Math.abs(cos) < 0.5, `the view turned to face the curve's plane side on (cos ${cos.toFixed(2)})`);
     await frames(fresh.page, 3);
     const before = await screenshot(fresh.page, out('pose-picked.png'));
+    await api(fresh.page, 'timings');
     // The new shape: the curve as seen now (across the view's middle), its right half swung up.
     const bent = Array.from({ length: 41 }, (_, k) => {
       const s = k / 40;
@@ -1256,8 +1257,20 @@ test('pose (Q): keyed at rest, a pen stroke along a shape picks a control curve 
       await sleep(20);
       await fresh.cdp.send('Input.dispatchMouseEvent', at(p));
     }
-    await frames(fresh.page, 6);
+    // The page's worker previews the drag (it builds and factors the volumetric graph, no
+    // frame does); each read of the timings takes them.
+    const timed = { preview_ms: [], frame_ms: [] };
+    await until(async () => {
+      const t = (await api(fresh.page, 'timings')).curve_deform ?? {};
+      for (const [key, list] of Object.entries(timed)) list.push(...(t[key] ?? []));
+      return timed.preview_ms.length;
+    }, (n) => n >= 2, 15_000);
+    await frames(fresh.page, 3);
     const drawing = await screenshot(fresh.page, out('pose-drawing.png'));
+    const inFrame = Math.max(0, ...timed.frame_ms);
+    console.log(`    pose: previews from the worker ${timed.preview_ms.map((ms) => ms.toFixed(0)).join(', ')} ms; the drag's own work per frame at most ${inFrame.toFixed(1)} ms`);
+    assert.ok(timed.preview_ms.length >= 2, 'the worker previews the drawn curve');
+    assert.ok(inFrame < 50, `no drag frame builds, factors or solves: ${inFrame.toFixed(1)} ms of work in one`);
     const last = bent[bent.length - 1];
     await fresh.cdp.send('Input.dispatchMouseEvent', { ...at(last), type: 'mouseReleased', buttons: 0, clickCount: 1, force: 0 });
     const op = await until(lastOp, (o) => o.op === 'curve_deform', 15_000);

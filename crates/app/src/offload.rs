@@ -170,7 +170,7 @@ mod page {
 
     use js_sys::{Array, Int32Array, Object, Reflect, Uint8Array};
     use sketchmesh_core::document::{
-        CommandError, Document, Edit, FileInput, ImportInput, Model, Op, import_files, model_op,
+        CommandError, Edit, FileInput, ImportInput, Model, Op, import_files,
     };
     use sketchmesh_core::io::{
         decode_changed, decode_imported, decode_models, decode_moved, encode_changed,
@@ -436,7 +436,8 @@ mod page {
     }
 
     /// The worker's entry for an op that makes one model (`web/worker.js` calls it):
-    /// computes it on the document's models, as the editor would, into one buffer for
+    /// computes it on the document's models, as the editor would (from the worker's edit of
+    /// the op's gesture where it keeps what the op needs), into one buffer for
     /// [`decode_changed`]. The models are those of the worker's last op at the indices
     /// `kept` gives, the ones in `models` where it says -1.
     ///
@@ -448,12 +449,7 @@ mod page {
         op: String,
     ) -> Result<Uint8Array, JsValue> {
         let (models, op) = received(&models, &kept, &op)?;
-        PREVIEWING.set(None);
-        let doc = Document {
-            models,
-            ..Document::default()
-        };
-        match model_op(&doc, &op) {
+        match Edit::finish_elsewhere(PREVIEWING.take(), models, &op) {
             Ok((index, model)) => Ok(Uint8Array::from(encode_changed(index, &model).as_slice())),
             Err(error) => Err(JsValue::from_str(&error.to_string())),
         }

@@ -342,6 +342,18 @@ fn page_table(page: &Value, wasm_gzip_size: u64) -> String {
                 ms("/frame_ms/p95"),
             ),
             (
+                format!("pull at {vertices} vertices, frame max"),
+                ms("/frame_ms/max"),
+            ),
+            (
+                format!("pull at {vertices} vertices, preview in the worker, median"),
+                ms("/preview_ms/p50"),
+            ),
+            (
+                format!("pull at {vertices} vertices, preview in the worker, max"),
+                ms("/preview_ms/max"),
+            ),
+            (
                 format!("pull at {vertices} vertices, grab (pointer-down)"),
                 ms("/grab_ms"),
             ),
@@ -456,16 +468,25 @@ fn page_table(page: &Value, wasm_gzip_size: u64) -> String {
             "pose (curve on a capsule, 28.6k graph points), first step (curve picked, graph)",
             ms("/pose/first_ms"),
         ),
+        ("pose, drag step in the frame, max", ms("/pose/step_ms/max")),
         (
-            "pose, drag step (factor, then back-substitutions), max",
-            ms("/pose/step_ms/max"),
+            "pose, drag step in the frame, median",
+            ms("/pose/step_ms/p50"),
         ),
-        ("pose, drag step, median", ms("/pose/step_ms/p50")),
+        (
+            "pose, preview in the worker (graph, factor, then back-substitutions), median",
+            ms("/pose/preview_ms/p50"),
+        ),
+        (
+            "pose, preview in the worker, max",
+            ms("/pose/preview_ms/max"),
+        ),
         (
             "pose, frame while drawing, median",
             ms("/pose/drag_frame_ms/p50"),
         ),
         ("pose, release to committed", ms("/pose/apply_ms")),
+        ("pose, the commit in the worker", ms("/pose/worker_ms")),
         (
             "Move tool drag of 100k triangles, frame interval, median",
             ms("/gizmo/interval_ms/p50"),

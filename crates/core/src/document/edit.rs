@@ -254,10 +254,9 @@ impl Edit {
 
     /// What the page's worker runs for [`Edit::preview_to_run`]: the preview of the gesture
     /// `op` on `models`, followed up to `op`'s last sample. `kept` is the worker's edit of
-    /// the previous request; when it is the same gesture on the same models (`op`'s stroke
-    /// extends its stroke), it goes on from there, so the region it factored is factored
-    /// once per drag, as here. Returns the edit to keep and its preview for
-    /// [`Edit::supply_preview`].
+    /// the previous request; when `op` continues it ([`Edit::is_continued_by`]), it goes on
+    /// from there, so what it factored is factored once per drag, as here. Returns the edit
+    /// to keep and its preview for [`Edit::supply_preview`].
     ///
     /// Errors: the gesture's refusal (no curve under the grab, a failed solve).
     pub fn preview_elsewhere(
@@ -265,17 +264,12 @@ impl Edit {
         models: Vec<Arc<Model>>,
         op: Op,
     ) -> Result<(Edit, MovedElsewhere), CommandError> {
-        let samples = op.stroke().unwrap_or_default().to_vec();
-        let same_gesture = |edit: &Edit| {
-            let mut start = op.clone();
-            let followed = edit.op.stroke().map_or(0, <[_]>::len);
-            if let Some(stroke) = start.stroke_mut() {
-                stroke.truncate(followed);
+        let samples = op.stroke().map_or(0, <[_]>::len);
+        let mut edit = match kept.filter(|edit| edit.is_continued_by(&models, &op)) {
+            Some(mut edit) => {
+                edit.follow(&op);
+                edit
             }
-            edit.is_gesture && start == edit.op && same_items(&edit.base.models, &models)
-        };
-        let mut edit = match kept.filter(same_gesture) {
-            Some(edit) => edit,
             None => {
                 let base = Document {
                     models,
@@ -284,13 +278,55 @@ impl Edit {
                 Edit::begin_on(base, op, true)?
             }
         };
-        let followed = edit.op.stroke().map_or(0, <[_]>::len);
-        for &sample in samples.iter().skip(followed) {
-            edit.extend(sample);
-        }
         while edit.step()? == Progress::Working {}
         let moved = (edit.moved_model()).map(|(index, positions)| (index, positions.to_vec()));
-        Ok((edit, (samples.len(), moved)))
+        Ok((edit, (samples, moved)))
+    }
+
+    /// What the page's worker runs for [`Edit::model_op_to_run`]: [`model_op`] of `op` on
+    /// `models`, or, when `kept` is the worker's edit of the same gesture
+    /// ([`Edit::preview_elsewhere`]) and keeps what the op needs (a curve's factored
+    /// volumetric energy), the result from it: the same model, bit for bit, without
+    /// factoring again.
+    ///
+    /// Errors: the op's refusal.
+    ///
+    /// [`model_op`]: super::model_op
+    pub fn finish_elsewhere(
+        kept: Option<Edit>,
+        models: Vec<Arc<Model>>,
+        op: &Op,
+    ) -> Result<(usize, Model), CommandError> {
+        if let Some(mut edit) = kept.filter(|edit| edit.is_continued_by(&models, op)) {
+            edit.follow(op);
+            if let (Work::Curve(preview), Op::CurveDeform(input)) = (&mut edit.work, op) {
+                return preview.result(&edit.base, input);
+            }
+        }
+        let doc = Document {
+            models,
+            ..Document::default()
+        };
+        super::model_op(&doc, op)
+    }
+
+    /// Whether `op` on `models` goes on with this gesture: the same op on the very same
+    /// models, its stroke this one's and maybe more.
+    fn is_continued_by(&self, models: &[Arc<Model>], op: &Op) -> bool {
+        let mut start = op.clone();
+        let followed = self.op.stroke().map_or(0, <[_]>::len);
+        if let Some(stroke) = start.stroke_mut() {
+            stroke.truncate(followed);
+        }
+        self.is_gesture && start == self.op && same_items(&self.base.models, models)
+    }
+
+    /// Extends this gesture's stroke with `op`'s samples past it.
+    fn follow(&mut self, op: &Op) {
+        let followed = self.op.stroke().map_or(0, <[_]>::len);
+        for &sample in op.stroke().unwrap_or_default().iter().skip(followed) {
+            self.extend(sample);
+        }
     }
 
     /// [`Edit::begin`] on `base`, with no editor.

@@ -625,12 +625,19 @@ fn a_control_curve_redrawn_in_its_plane_bends_the_capsule_and_keeps_its_volume()
     let (models, commit) = gesture
         .model_op_to_run()
         .expect("the commit computed elsewhere");
+    // By the worker's kept edit (no second factorization), and whole as a worker that did
+    // not preview the drag would: the same model.
+    let kept = Edit::finish_elsewhere(worker, models.to_vec(), commit).unwrap();
     let doc = Document {
         models: models.to_vec(),
         ..Document::default()
     };
-    let changed = model_op(&doc, commit);
-    gesture.supply_model(changed);
+    let computed = model_op(&doc, commit).unwrap();
+    assert!(
+        kept == computed,
+        "the kept edit's commit is the op computed whole"
+    );
+    gesture.supply_model(Ok(kept));
     gesture.finish(&mut offloaded).unwrap();
     // Drawn in the front view the plane is seen edge-on: refused, nothing changes.
     let mut edge_on = whole.clone();

@@ -2080,7 +2080,7 @@ test('a pull dragged while the worker computes the last pull of a 40k shape is r
   }
 });
 
-test('a long pull of a 40k shape is previewed by the worker: the shape follows the pen, refactoring the region as the peel grows stalls no frame, and the release commits the pull', async () => {
+test('a long pull of a 40k shape is previewed by the worker: the shape follows the pen, refactoring the region as the peel grows stalls no frame, and the release commits the pull; Esc during a drag makes nothing and the next drag pulls', async () => {
   const fresh = await openApp(browser, url, gpu);
   try {
     const { page, cdp } = fresh;
@@ -2129,6 +2129,25 @@ test('a long pull of a 40k shape is previewed by the worker: the shape follows t
     assert.equal(timed.elsewhere_ms?.length, 1, `the worker computed the committed pull: ${JSON.stringify(timed)}`);
     const moved = imageChangedFraction(before, previewed);
     assert.ok(moved > 0.002, `the preview shows the shape pulled (${(100 * moved).toFixed(2)} % of the view changed)`);
+    // The outline's left end dragged, and Esc pressed while the worker previews it: nothing
+    // is made (the worker is replaced, as a cancel does); the same drag again pulls.
+    const left = { x: c.x - 170, y: c.y };
+    const leftDrag = async (cancel) => {
+      await send('mousePressed', left.x, left.y, 1);
+      for (let i = 1; i <= 10; i++) {
+        await sleep(16);
+        await send('mouseMoved', left.x - 3 * i, left.y, 1);
+      }
+      if (cancel) await page.keyboard.press('Escape');
+      await send('mouseReleased', left.x - 30, left.y, 0);
+    };
+    await leftDrag(true);
+    await sleep(500);
+    assert.equal(await api(page, 'opCount'), 2, 'Esc during the drag makes nothing');
+    await leftDrag(false);
+    const again = await until(() => lastOpOf(page), (o) => o.op === 'pull' && o.stroke[0][0] === left.x, 60_000);
+    assert.equal(again.stroke?.[0]?.[0], left.x, 'after the cancel, a drag pulls');
+    assert.equal(await api(page, 'opCount'), 3, 'one pull for the drag');
     assert.deepEqual(fresh.errors, [], 'console errors while pulling');
   } finally {
     await fresh.context.close();

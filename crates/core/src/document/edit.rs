@@ -61,11 +61,13 @@
 //! a second in the page) is a pure function of the models and the op
 //! ([`model_op`](super::model_op)): the page computes it in the worker too
 //! ([`Edit::model_op_to_run`], [`Edit::supply_model`]), while the pull's last preview stays
-//! on screen. So does a pull's preview while it is dragged ([`Edit::preview_to_run`],
-//! [`Edit::preview_elsewhere`], [`Edit::supply_preview`]): the worker keeps its own edit of
-//! the drag, factors the region once and follows the samples the page sends, and the page
-//! shows each preview that comes back; the region's refactor when the peel outgrows it
-//! (0.2–0.5 s in the page at 40k vertices) no longer stalls a frame.
+//! on screen. So do the previews of a pull's drag and of a control curve's new shape
+//! ([`Edit::preview_to_run`], [`Edit::preview_elsewhere`], [`Edit::supply_preview`]): the
+//! worker keeps its own edit of the drag, factors once and follows the samples the page
+//! sends, and the page shows each preview that comes back, so neither a pull's region
+//! refactor when the peel outgrows it (0.2–0.5 s in the page at 40k vertices) nor a curve's
+//! volumetric graph and factorization (1–1.6 s) stalls a frame; the curve's commit then
+//! comes from that kept edit ([`Edit::finish_elsewhere`]).
 
 use std::sync::Arc;
 

@@ -2,10 +2,10 @@
 // wasm, so the page keeps drawing meanwhile (crates/app/src/offload.rs). Its first message is
 // the page's compiled module, {module}: sharing it shares its machine code, already optimized
 // while the page ran. It answers an import's {id, names, files} or an op's
-// {id, models, kept, op, preview} (the preview of a gesture's op so far when `preview`) with
-// {id, bytes} (the result, transferred) or {id, error, refused} (the sentence; `refused` when
-// the wasm refused the work, as opposed to a wasm that failed to load or trapped, which the
-// page replaces, so a trapped instance is never used again).
+// {id, models, kept, op, preview?} (the preview of a gesture's op so far, `preview` its
+// version) with {id, bytes} (the result, transferred) or {id, error, refused} (the sentence;
+// `refused` when the wasm refused the work, as opposed to a wasm that failed to load or
+// trapped, which the page replaces, so a trapped instance is never used again).
 
 import init, { read_import, run_model_op, run_preview } from "./sketchmesh_app.js";
 
@@ -22,7 +22,9 @@ self.onmessage = async ({ data }) => {
     await (ready ??= init());
     const bytes = data.op === undefined
       ? read_import(data.names, data.files)
-      : (data.preview ? run_preview : run_model_op)(data.models, data.kept, data.op);
+      : data.preview === undefined
+        ? run_model_op(data.models, data.kept, data.op)
+        : run_preview(data.models, data.kept, data.op, data.preview);
     self.postMessage({ id, bytes }, [bytes.buffer]);
   } catch (e) {
     self.postMessage({ id, error: String(e?.message ?? e), refused: typeof e === "string" });

@@ -1004,8 +1004,13 @@ test('optimize (M): a tap previews the shape optimized, Esc drops it, Enter comm
     await fresh.page.keyboard.press('w');
     await frames(fresh.page, 3);
     const before = await screenshot(fresh.page, out('optimize-before.png'));
+    // A tap begins the preview; the page's worker computes it (each read of the timings
+    // takes them).
+    const previewed = () => api(fresh.page, 'timings').then((t) => t.optimize?.preview_ms?.length ?? 0);
     const tap = async () => {
+      await previewed();
       await penStroke(fresh.cdp, [{ x: c.x + 40, y: c.y, force: 0.5 }, { x: c.x + 40, y: c.y, force: 0.5 }]);
+      await until(previewed, (n) => n >= 1, 15_000);
       await frames(fresh.page, 6);
     };
     // Sample points inside the shape, away from the hint line above it.

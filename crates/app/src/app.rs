@@ -1863,10 +1863,10 @@ fn hand_over(
         (Some(input), _) => Work::Import(input),
         (None, Some((models, op))) => Work::ModelOp(models, op),
         (None, None) => match edit.preview_to_run() {
-            Some((models, op)) => Work::Preview(models, op),
+            Some((models, op, version)) => Work::Preview(models, op, version),
             // A preview asked for while the pointer was down, polled (what a job computes
             // is sent once, the first time it is polled).
-            None if job.is_some() => Work::Preview(&[], edit.op()),
+            None if job.is_some() => Work::Preview(&[], edit.op(), edit.version()),
             None => return HandOver::Here,
         },
     };

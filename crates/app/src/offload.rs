@@ -41,8 +41,8 @@ pub enum Work<'a> {
     Import(&'a ImportInput),
     /// Compute an op that changes one model, from the document's models.
     ModelOp(&'a [Arc<Model>], &'a Op),
-    /// Preview a gesture's op so far, from the document's models.
-    Preview(&'a [Arc<Model>], &'a Op),
+    /// Preview a gesture's op so far (its version), from the document's models.
+    Preview(&'a [Arc<Model>], &'a Op, usize),
 }
 
 /// The worker's answer to a [`Work`].
@@ -276,10 +276,10 @@ mod page {
                     }
                     Work::Import(input) => (self.send_import(id, &input.files), Kind::Import),
                     Work::ModelOp(models, op) => {
-                        (self.send_op(id, models, op, false), Kind::ModelOp)
+                        (self.send_op(id, models, op, None), Kind::ModelOp)
                     }
-                    Work::Preview(models, op) => {
-                        (self.send_op(id, models, op, true), Kind::Preview)
+                    Work::Preview(models, op, version) => {
+                        (self.send_op(id, models, op, Some(version)), Kind::Preview)
                     }
                 };
                 if let Err(why) = sent {
@@ -340,14 +340,14 @@ mod page {
 
         /// Posts `{id, models, kept, op, preview}`: for each of the document's models where
         /// the worker holds it already (`kept`, its index there, or -1), the others in one
-        /// transferred buffer, the op as its session JSON, and whether to preview it (a
-        /// gesture's op so far) rather than compute it.
+        /// transferred buffer, the op as its session JSON, and, to preview it (a gesture's
+        /// op so far) rather than compute it, the op's version.
         fn send_op(
             &mut self,
             id: u64,
             models: &[Arc<Model>],
             op: &Op,
-            preview: bool,
+            preview: Option<usize>,
         ) -> Result<(), JsValue> {
             let kept = super::kept(&self.known, models);
             let fresh: Vec<&Model> = (models.iter().zip(&kept))
@@ -360,7 +360,13 @@ mod page {
             Reflect::set(&message, &"models".into(), &bytes)?;
             Reflect::set(&message, &"kept".into(), &Int32Array::from(kept.as_slice()))?;
             Reflect::set(&message, &"op".into(), &JsValue::from_str(&op.to_json()))?;
-            Reflect::set(&message, &"preview".into(), &JsValue::from_bool(preview))?;
+            if let Some(version) = preview {
+                Reflect::set(
+                    &message,
+                    &"preview".into(),
+                    &JsValue::from_f64(version as f64),
+                )?;
+            }
             self.worker
                 .post_message_with_transfer(&message, &Array::of1(&bytes.buffer()))?;
             self.known = models.iter().map(Arc::downgrade).collect();
@@ -456,9 +462,9 @@ mod page {
     }
 
     /// The worker's entry for a gesture's preview (`web/worker.js` calls it): previews the
-    /// op so far on the document's models, going on with the edit of the last request when
-    /// it is the same drag, into one buffer for [`decode_moved`]. The models are received as
-    /// [`run_model_op`]'s.
+    /// op so far (`version` of it) on the document's models, going on with the edit of the
+    /// last request when it is the same gesture, into one buffer for [`decode_moved`]. The
+    /// models are received as [`run_model_op`]'s.
     ///
     /// Errors: the gesture's refusal, as the sentence the editor would show.
     #[wasm_bindgen]
@@ -466,15 +472,16 @@ mod page {
         models: Uint8Array,
         kept: Vec<i32>,
         op: String,
+        version: f64,
     ) -> Result<Uint8Array, JsValue> {
         let (models, op) = received(&models, &kept, &op)?;
         let previous = PREVIEWING.take();
         match Edit::preview_elsewhere(previous, models, op) {
-            Ok((edit, (samples, moved))) => {
+            Ok((edit, moved)) => {
                 let moved = moved
                     .as_ref()
                     .map(|(index, positions)| (*index, &positions[..]));
-                let bytes = encode_moved(samples, moved);
+                let bytes = encode_moved(version as usize, moved);
                 PREVIEWING.set(Some(edit));
                 Ok(Uint8Array::from(bytes.as_slice()))
             }

@@ -146,14 +146,17 @@ pub struct Edit {
     /// ([`Edit::supply_preview`]), or a pull's last ones, still shown while its committed
     /// result is computed elsewhere, so the shape does not jump back meanwhile.
     held: Option<(usize, Vec<DVec3>)>,
-    /// How many samples of the stroke the preview computed elsewhere follows; `None` while
-    /// none was supplied (steps here compute the preview).
+    /// How far the gesture's op has come: 1 as begun, one more for each sample added and
+    /// each revision.
+    version: usize,
+    /// The [`Edit::version`] the preview computed elsewhere shows; `None` while none was
+    /// supplied (steps here compute the preview).
     elsewhere: Option<usize>,
 }
 
-/// A gesture's preview computed elsewhere: how many samples of its stroke it follows, and
-/// the moved model's index and where its vertices are drawn (`None` while there is nothing
-/// to show yet: a curve of fewer than two samples).
+/// A gesture's preview computed elsewhere: the [`Edit::version`] of the op it was computed
+/// for, and the moved model's index and where its vertices are drawn (`None` while there is
+/// nothing to show yet: a curve of fewer than two samples).
 pub type MovedElsewhere = (usize, Option<(usize, Vec<DVec3>)>);
 
 /// Where an edit is.
@@ -261,15 +264,15 @@ impl Edit {
     /// to keep and its preview for [`Edit::supply_preview`].
     ///
     /// Errors: the gesture's refusal (no curve under the grab, a failed solve).
+    #[allow(clippy::type_complexity)] // The edit to keep, and the model's index and positions.
     pub fn preview_elsewhere(
         kept: Option<Edit>,
         models: Vec<Arc<Model>>,
         op: Op,
-    ) -> Result<(Edit, MovedElsewhere), CommandError> {
-        let samples = op.stroke().map_or(0, <[_]>::len);
+    ) -> Result<(Edit, Option<(usize, Vec<DVec3>)>), CommandError> {
         let mut edit = match kept.filter(|edit| edit.is_continued_by(&models, &op)) {
             Some(mut edit) => {
-                edit.follow(&op);
+                edit.revise(op);
                 edit
             }
             None => {
@@ -282,7 +285,7 @@ impl Edit {
         };
         while edit.step()? == Progress::Working {}
         let moved = (edit.moved_model()).map(|(index, positions)| (index, positions.to_vec()));
-        Ok((edit, (samples, moved)))
+        Ok((edit, moved))
     }
 
     /// What the page's worker runs for [`Edit::model_op_to_run`]: [`model_op`] of `op` on
@@ -300,9 +303,14 @@ impl Edit {
         op: &Op,
     ) -> Result<(usize, Model), CommandError> {
         if let Some(mut edit) = kept.filter(|edit| edit.is_continued_by(&models, op)) {
-            edit.follow(op);
-            if let (Work::Curve(preview), Op::CurveDeform(input)) = (&mut edit.work, op) {
-                return preview.result(&edit.base, input);
+            match (&mut edit.work, op) {
+                (Work::Curve(preview), Op::CurveDeform(input)) => {
+                    return preview.result(&edit.base, input);
+                }
+                (Work::Optimize(preview), Op::Optimize(input)) => {
+                    return preview.result(&edit.base, input);
+                }
+                _ => {}
             }
         }
         let doc = Document {
@@ -312,23 +320,20 @@ impl Edit {
         super::model_op(&doc, op)
     }
 
-    /// Whether `op` on `models` goes on with this gesture: the same op on the very same
-    /// models, its stroke this one's and maybe more.
+    /// Whether `op` on `models` goes on with this gesture, on the very same models: a drag's
+    /// op whose stroke is this one's and maybe more, or an optimization with any settings
+    /// (its preview keeps its optimizer only while it serves them).
     fn is_continued_by(&self, models: &[Arc<Model>], op: &Op) -> bool {
         let mut start = op.clone();
         let followed = self.op.stroke().map_or(0, <[_]>::len);
         if let Some(stroke) = start.stroke_mut() {
             stroke.truncate(followed);
         }
-        self.is_gesture && start == self.op && same_items(&self.base.models, models)
-    }
-
-    /// Extends this gesture's stroke with `op`'s samples past it.
-    fn follow(&mut self, op: &Op) {
-        let followed = self.op.stroke().map_or(0, <[_]>::len);
-        for &sample in op.stroke().unwrap_or_default().iter().skip(followed) {
-            self.extend(sample);
-        }
+        let continues = match (op, &self.op) {
+            (Op::Optimize(_), Op::Optimize(_)) => true,
+            _ => start == self.op,
+        };
+        self.is_gesture && continues && same_items(&self.base.models, models)
     }
 
     /// [`Edit::begin`] on `base`, with no editor.
@@ -348,6 +353,7 @@ impl Edit {
             revision: shown,
             generation: shown,
             held: None,
+            version: 1,
             elsewhere: None,
         })
     }
@@ -396,7 +402,11 @@ impl Edit {
             let stroke = op.stroke().unwrap_or_default();
             let stepped = match (&mut self.work, op) {
                 // Its preview is computed elsewhere ([`Edit::supply_preview`]).
-                (Work::Pull(_) | Work::Curve(_), _) if self.elsewhere.is_some() => None,
+                (Work::Pull(_) | Work::Curve(_) | Work::Optimize(_), _)
+                    if self.elsewhere.is_some() =>
+                {
+                    None
+                }
                 (Work::Pull(preview), _) => preview.step(stroke)?,
                 (Work::Outline(preview), _) => preview.step(base, stroke),
                 (Work::Optimize(preview), Op::Optimize(input)) => preview.step(base, input)?,
@@ -428,9 +438,14 @@ impl Edit {
                 self.work = Work::Done(outcome(base, op)?);
                 Ok((Progress::Done, true))
             }
-            // An optimization's gesture ended: its kept optimizer gives the exact result.
+            // An optimization's gesture ended: its kept optimizer gives the exact result (or,
+            // when the preview was computed elsewhere, the kept optimizer there).
             Work::Optimize(preview) => {
-                let Some(model) = optimized(preview, base, op)? else {
+                let kept = match self.elsewhere {
+                    None => optimized(preview, base, op)?,
+                    Some(_) => None,
+                };
+                let Some(model) = kept else {
                     self.work = Work::complete(base, op)?;
                     return Ok((Progress::Working, true));
                 };
@@ -498,6 +513,7 @@ impl Edit {
         debug_assert!(self.is_gesture, "revise after the gesture ended");
         if self.is_gesture && op.name() == self.op.name() {
             self.op = op;
+            self.version += 1;
         }
     }
 
@@ -517,6 +533,7 @@ impl Edit {
             .is_none_or(|last| [last[0], last[1]] != [sample[0], sample[1]])
         {
             stroke.push(sample);
+            self.version += 1;
         }
     }
 
@@ -615,34 +632,42 @@ impl Edit {
         self.generation += 1;
     }
 
-    /// A pull's drag or a control curve's new shape being drawn whose preview does not
-    /// follow its latest sample yet: the page computes the preview in its worker
-    /// ([`Edit::preview_elsewhere`] on a copy of these models and this op) and hands it to
-    /// [`Edit::supply_preview`], so that no frame factors: not a pull's region around the
-    /// grab, nor again each time the peel outgrows it (0.2–0.5 s in the page at 40k
-    /// vertices), nor a curve's volumetric graph and energy (about 1 s in the page at 30k
-    /// graph points). Once a preview was supplied, steps here leave it to the worker, and a
-    /// curve's committed result is computed whole (elsewhere too). `None` for any other
-    /// edit, once the gesture ended, and while the preview supplied follows the whole stroke.
-    pub fn preview_to_run(&self) -> Option<(&[Arc<Model>], &Op)> {
-        let samples = self.op.stroke().map_or(0, <[_]>::len);
-        let behind = samples > self.elsewhere.unwrap_or(0);
+    /// A pull's drag, a control curve's new shape being drawn or an optimization's
+    /// settings whose preview does not show the op's latest [`Edit::version`] yet: the page
+    /// computes the preview in its worker ([`Edit::preview_elsewhere`] on a copy of these
+    /// models and this op) and hands it to [`Edit::supply_preview`], so that no frame
+    /// factors: not a pull's region around the grab, nor again each time the peel outgrows
+    /// it (0.2–0.5 s in the page at 40k vertices), nor a curve's volumetric graph and energy
+    /// (about 1 s in the page at 30k graph points), nor an optimizer (0.5 s for the bunny).
+    /// Once a preview was supplied, steps here leave it to the worker, and the committed
+    /// result is computed elsewhere too ([`Edit::model_op_to_run`], from the worker's kept
+    /// edit: [`Edit::finish_elsewhere`]). Returns the models, the op and its version; `None`
+    /// for any other edit, once the gesture ended, and while the preview is up to date.
+    #[allow(clippy::type_complexity)] // The models, the op so far and its version.
+    pub fn preview_to_run(&self) -> Option<(&[Arc<Model>], &Op, usize)> {
+        let behind = self.version > self.elsewhere.unwrap_or(0);
         match &self.work {
-            Work::Pull(_) | Work::Curve(_) if self.is_gesture && behind => {
-                Some((&self.base.models, &self.op))
+            Work::Pull(_) | Work::Curve(_) | Work::Optimize(_) if self.is_gesture && behind => {
+                Some((&self.base.models, &self.op, self.version))
             }
             _ => None,
         }
     }
 
+    /// How far a gesture's op has come: 1 as begun, one more for each sample
+    /// [`Edit::extend`] added and each [`Edit::revise`].
+    pub fn version(&self) -> usize {
+        self.version
+    }
+
     /// Shows a preview of [`Edit::preview_to_run`] computed elsewhere: the same positions a
-    /// step here would show for those samples. A preview for fewer samples than the one
-    /// shown is ignored, as is one for another edit or after the result is computed; once
+    /// step here would show for that version of the op. A preview older than the one shown
+    /// is ignored, as is one for another edit or after the result is computed; once
     /// the gesture ended, the preview shown until the result lands is replaced. A refusal
     /// (no curve under the grab, a failed solve) fails the edit, as a step here would.
     pub fn supply_preview(&mut self, moved: Result<MovedElsewhere, CommandError>) {
         let previews = match &self.work {
-            Work::Pull(_) | Work::Curve(_) => self.is_gesture,
+            Work::Pull(_) | Work::Curve(_) | Work::Optimize(_) => self.is_gesture,
             Work::Whole => self.elsewhere.is_some(),
             _ => false,
         };
@@ -660,12 +685,12 @@ impl Edit {
                     "The preview computed elsewhere does not fit the model.",
                 )));
             }
-            Ok((samples, moved)) if samples > self.elsewhere.unwrap_or(0) => {
+            Ok((version, moved)) if version > self.elsewhere.unwrap_or(0) => {
                 if moved.is_some() {
                     self.held = moved;
                     self.generation += 1;
                 }
-                self.elsewhere = Some(samples);
+                self.elsewhere = Some(version);
             }
             Ok(_) => {}
             Err(error) => self.work = Work::Failed(error),
@@ -698,14 +723,14 @@ impl Edit {
                 Some((index, positions)) => (*index, &positions[..]),
                 None => preview.moved(),
             }),
+            Work::Curve(_) | Work::Optimize(_) if self.elsewhere.is_some() => {
+                (self.held.as_ref()).map(|(index, positions)| (*index, &positions[..]))
+            }
             Work::Optimize(preview) => match &self.op {
                 Op::Optimize(input) => Some(preview.moved(input)),
                 _ => None,
             },
             Work::Feature(preview) => preview.moved(),
-            Work::Curve(_) if self.elsewhere.is_some() => {
-                (self.held.as_ref()).map(|(index, positions)| (*index, &positions[..]))
-            }
             Work::Curve(preview) => match &self.op {
                 Op::CurveDeform(input) => preview.moved(input),
                 _ => None,

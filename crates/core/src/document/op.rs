@@ -143,7 +143,7 @@ impl Op {
 
     /// Whether the op makes one model, new or changed, and reads nothing but the document's
     /// models (a creation, the curve ops, the over-sketch, a curve's volumetric
-    /// deformation): a pure function of the models and the op, which the page may compute
+    /// deformation, an optimization): a pure function of the models and the op, which the page may compute
     /// in its worker ([`model_op`](super::model_op)).
     pub fn makes_one_model(&self) -> bool {
         matches!(
@@ -159,6 +159,7 @@ impl Op {
                 | Op::SetCurveType(_)
                 | Op::Rub(_)
                 | Op::CurveDeform(_)
+                | Op::Optimize(_)
         )
     }
 

@@ -108,12 +108,12 @@ pub fn decode_changed(bytes: &[u8]) -> Result<(usize, Model), TransferError> {
     Ok((index, model.ok_or(TransferError("no model"))?))
 }
 
-/// A gesture's preview computed elsewhere: how many samples of its stroke it follows, and
+/// A gesture's preview computed elsewhere: the version of the gesture's op it shows, and
 /// the moved model's index and where its vertices are drawn (`None` while there is nothing
 /// to show yet), as one buffer for [`decode_moved`].
-pub fn encode_moved(samples: usize, moved: Option<(usize, &[DVec3])>) -> Vec<u8> {
+pub fn encode_moved(version: usize, moved: Option<(usize, &[DVec3])>) -> Vec<u8> {
     let mut out = Writer::default();
-    out.count(samples);
+    out.count(version);
     out.option(moved.as_ref(), |out, &(index, positions)| {
         out.count(index);
         out.pods(positions);
@@ -124,15 +124,15 @@ pub fn encode_moved(samples: usize, moved: Option<(usize, &[DVec3])>) -> Vec<u8>
 /// The model's index and the positions [`encode_moved`] wrote.
 type Moved = Option<(usize, Vec<DVec3>)>;
 
-/// The preview [`encode_moved`] wrote: `(samples, moved)`.
+/// The preview [`encode_moved`] wrote: `(version, moved)`.
 ///
 /// Errors: [`TransferError`] when the buffer is not one it wrote.
 pub fn decode_moved(bytes: &[u8]) -> Result<(usize, Moved), TransferError> {
     let mut input = Reader::new(bytes);
-    let samples = input.count()?;
+    let version = input.count()?;
     let moved = input.option(|input| Ok((input.count()?, input.pods()?)))?;
     input.end()?;
-    Ok((samples, moved))
+    Ok((version, moved))
 }
 
 #[derive(Default)]

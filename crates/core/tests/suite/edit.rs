@@ -731,16 +731,16 @@ fn a_pull_previewed_elsewhere_shows_what_stepping_here_shows() {
         }
         followed = samples;
         while here.step().unwrap() == Progress::Working {}
-        let (models, op) = there
+        let (models, op, version) = there
             .preview_to_run()
             .expect("a preview to compute elsewhere");
-        let (kept, (n, moved)) =
+        let (kept, moved) =
             Edit::preview_elsewhere(worker.take(), models.to_vec(), op.clone()).unwrap();
         worker = Some(kept);
         let moved = moved
             .as_ref()
             .map(|(index, positions)| (*index, &positions[..]));
-        there.supply_preview(Ok(decode_moved(&encode_moved(n, moved)).unwrap()));
+        there.supply_preview(Ok(decode_moved(&encode_moved(version, moved)).unwrap()));
         assert!(there.preview_to_run().is_none(), "up to date");
         let generation = there.generation();
         assert_eq!(there.step().unwrap(), Progress::Waiting);
@@ -762,4 +762,66 @@ fn a_pull_previewed_elsewhere_shows_what_stepping_here_shows() {
     here.finish(&mut editor.clone()).unwrap();
     there.finish(&mut editor).unwrap();
     assert_eq!(editor.document(), applied.document());
+}
+
+/// The page computes an optimization's preview in its worker as its settings change: each
+/// preview the worker's edit computes (its optimizer kept while it serves) is the one
+/// stepping here shows, the commit comes from the worker's kept optimizer, and the document
+/// is the op applied.
+#[test]
+fn an_optimization_previewed_elsewhere_commits_what_apply_makes() {
+    use sketchmesh_core::document::{Document, Edit};
+    let mut editor = Editor::new();
+    editor.apply(session()[1](&editor)).unwrap();
+    let op = |scale: f64, mode: Mode| {
+        Op::Optimize(OptimizeInput {
+            model: 0,
+            settings: OptimizeParams {
+                mode,
+                scale,
+                ..OptimizeParams::default()
+            },
+            ..OptimizeInput::default()
+        })
+    };
+    let settings = [(1.0, Mode::Smooth), (0.2, Mode::Smooth), (0.5, Mode::Shape)];
+    let mut here = editor.begin_gesture(op(1.0, Mode::Smooth)).unwrap();
+    let mut there = editor.begin_gesture(op(1.0, Mode::Smooth)).unwrap();
+    let mut worker: Option<Edit> = None;
+    for (k, &(scale, mode)) in settings.iter().enumerate() {
+        if k > 0 {
+            here.revise(op(scale, mode));
+            there.revise(op(scale, mode));
+        }
+        while here.step().unwrap() == Progress::Working {}
+        let (models, so_far, version) = there.preview_to_run().expect("a preview to compute");
+        assert_eq!(version, k + 1, "begun, then one version per revision");
+        let (kept, moved) =
+            Edit::preview_elsewhere(worker.take(), models.to_vec(), so_far.clone()).unwrap();
+        worker = Some(kept);
+        there.supply_preview(Ok((version, moved)));
+        assert_eq!(
+            there.step().unwrap(),
+            Progress::Waiting,
+            "nothing to step here"
+        );
+        assert_eq!(there.moved_model(), here.moved_model(), "scale {scale}");
+    }
+    there.end_gesture();
+    assert_eq!(there.step().unwrap(), Progress::Working);
+    let (models, commit) = there
+        .model_op_to_run()
+        .expect("the commit computed elsewhere");
+    let kept = Edit::finish_elsewhere(worker, models.to_vec(), commit).unwrap();
+    let doc = Document {
+        models: models.to_vec(),
+        ..Document::default()
+    };
+    assert!(kept == sketchmesh_core::document::model_op(&doc, commit).unwrap());
+    there.supply_model(Ok(kept));
+    there.finish(&mut editor).unwrap();
+    let mut applied = Editor::new();
+    applied.apply(session()[1](&applied)).unwrap();
+    applied.apply(op(0.5, Mode::Shape)).unwrap();
+    assert_eq!(applied.document(), editor.document());
 }

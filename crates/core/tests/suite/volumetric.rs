@@ -606,13 +606,13 @@ fn a_control_curve_redrawn_in_its_plane_bends_the_capsule_and_keeps_its_volume()
     let mut worker = None;
     for &sample in &whole.stroke[1..] {
         gesture.extend(sample);
-        let (models, op) = gesture
+        let (models, op, version) = gesture
             .preview_to_run()
             .expect("a preview to compute elsewhere");
         let (kept, moved) =
             Edit::preview_elsewhere(worker.take(), models.to_vec(), op.clone()).unwrap();
         worker = Some(kept);
-        gesture.supply_preview(Ok(moved));
+        gesture.supply_preview(Ok((version, moved)));
         assert_eq!(
             gesture.step().unwrap(),
             Progress::Waiting,

@@ -397,22 +397,30 @@ fn page_table(page: &Value, wasm_gzip_size: u64) -> String {
     let vertices = text("/optimize/vertices");
     let optimize_rows = [
         (
-            format!(
-                "optimize at {vertices} vertices, tap to first preview (weights, factor, solve)"
-            ),
+            format!("optimize at {vertices} vertices, tap: in the frame"),
             ms("/optimize/first_ms"),
         ),
         (
-            format!("optimize at {vertices} vertices, slider step (one CG iteration), mean"),
-            ms("/optimize/step_ms/mean"),
+            format!(
+                "optimize at {vertices} vertices, tap to first preview in the worker (weights, factor, solve)"
+            ),
+            ms("/optimize/first_preview_ms"),
         ),
         (
-            format!("optimize at {vertices} vertices, slider step, max"),
+            format!("optimize at {vertices} vertices, slider: frame's own work, max"),
             ms("/optimize/step_ms/max"),
         ),
         (
-            format!("optimize at {vertices} vertices, Apply (exact refactor and solve)"),
+            format!("optimize at {vertices} vertices, slider: preview in the worker, median"),
+            ms("/optimize/preview_ms/p50"),
+        ),
+        (
+            format!("optimize at {vertices} vertices, Apply: in the frame"),
             ms("/optimize/apply_ms"),
+        ),
+        (
+            format!("optimize at {vertices} vertices, Apply: in the worker (exact solve)"),
+            ms("/optimize/apply_worker_ms"),
         ),
     ];
     let feature_rows = [

@@ -2046,11 +2046,7 @@ test('a pull dragged while the worker computes the last pull of a 40k shape is r
   try {
     const { page, cdp } = fresh;
     const c = ELLIPSE.c;
-    await page.mouse.click(DETAIL_40K.x, DETAIL_40K.y);
-    await penStroke(cdp, onEllipse());
-    await until(() => api(page, 'opCount'), (n) => n === 1, 60_000);
-    await page.keyboard.press('p');
-    await frames(page, 3);
+    await pull40k(page, cdp);
     const send = penSender(cdp);
     const drag = async (x, dx) => {
       await send('mousePressed', x, c.y, 1);
@@ -2090,11 +2086,7 @@ test('a long pull of a 40k shape is previewed by the worker: the shape follows t
   try {
     const { page, cdp } = fresh;
     const c = ELLIPSE.c;
-    await page.mouse.click(DETAIL_40K.x, DETAIL_40K.y);
-    await penStroke(cdp, onEllipse());
-    await until(() => api(page, 'opCount'), (n) => n === 1, 60_000);
-    await page.keyboard.press('p');
-    await frames(page, 3);
+    await pull40k(page, cdp);
     const record = await recordFrames(page);
     const idleLongest = await idleOrbits(cdp, record);
     await frames(page, 3);
@@ -2158,6 +2150,15 @@ test('a long pull of a 40k shape is previewed by the worker: the shape follows t
     await fresh.context.close();
   }
 });
+
+/** Makes the test ellipse a 40k-vertex shape in a fresh page and picks the Pull tool. */
+async function pull40k(page, cdp) {
+  await page.mouse.click(DETAIL_40K.x, DETAIL_40K.y);
+  await penStroke(cdp, onEllipse());
+  await until(() => api(page, 'opCount'), (n) => n === 1, 60_000);
+  await page.keyboard.press('p');
+  await frames(page, 3);
+}
 
 /** A right-button drag across the view: an orbit, as a mouse user does it. */
 async function orbitDrag(cdp, from = { x: 640, y: 420 }, dx = 240, steps = 12) {

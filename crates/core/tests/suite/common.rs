@@ -13,8 +13,8 @@ use std::sync::Arc;
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    AddCurveInput, CurveTypeInput, Document, FileInput, ImportInput, Model, Op, OversketchFit,
-    OversketchInput, StrokeInput,
+    AddCurveInput, CurveTypeInput, Document, Edit, Editor, FileInput, ImportInput, Model, Op,
+    OversketchFit, OversketchInput, Progress, StrokeInput, model_op,
 };
 use sketchmesh_core::geometry::Bvh;
 use sketchmesh_core::io::write_glb;
@@ -425,4 +425,28 @@ pub fn testdata() -> Option<PathBuf> {
     } else {
         panic!("{message} (set SKETCHMESH_NO_TESTDATA=1 to skip on purpose)");
     }
+}
+
+/// Ends `edit`'s gesture whose previews were computed elsewhere and commits it as the page
+/// does: the committed op computed elsewhere by the worker's kept edit of the gesture
+/// (`worker`), which must be the op computed whole, bit for bit; then finished on `editor`.
+pub fn commit_elsewhere(mut edit: Edit, worker: Option<Edit>, editor: &mut Editor) {
+    edit.end_gesture();
+    let ended = edit.step().expect("the gesture ends");
+    assert_eq!(ended, Progress::Working);
+    let (models, commit) = edit
+        .model_op_to_run()
+        .expect("the commit computed elsewhere");
+    let kept = Edit::finish_elsewhere(worker, models.to_vec(), commit).expect("the kept edit");
+    let doc = Document {
+        models: models.to_vec(),
+        ..Document::default()
+    };
+    let computed = model_op(&doc, commit).expect("the op computed whole");
+    assert!(
+        kept == computed,
+        "the kept edit's commit is the op computed whole"
+    );
+    edit.supply_model(Ok(kept));
+    edit.finish(editor).expect("the commit lands");
 }

@@ -6,6 +6,7 @@
 
 use std::f64::consts::TAU;
 
+use crate::common::commit_elsewhere;
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
@@ -232,23 +233,25 @@ fn gestures_preview_without_changing_the_document() {
     assert_eq!(editor.document(), &before);
 }
 
+/// An optimization of the first model at `scale` in `mode`, other settings as default.
+fn optimize(scale: f64, mode: Mode) -> Op {
+    Op::Optimize(OptimizeInput {
+        model: 0,
+        settings: OptimizeParams {
+            mode,
+            scale,
+            ..OptimizeParams::default()
+        },
+        ..OptimizeInput::default()
+    })
+}
+
 #[test]
 fn an_optimization_previews_each_setting_and_commits_the_last_without_solving_again() {
     let mut editor = Editor::new();
     editor.apply(session()[1](&editor)).unwrap();
     let before = editor.document().clone();
-    let op = |scale: f64, mode: Mode| {
-        Op::Optimize(OptimizeInput {
-            model: 0,
-            settings: OptimizeParams {
-                mode,
-                scale,
-                ..OptimizeParams::default()
-            },
-            ..OptimizeInput::default()
-        })
-    };
-    let mut edit = editor.begin_gesture(op(1.0, Mode::Smooth)).unwrap();
+    let mut edit = editor.begin_gesture(optimize(1.0, Mode::Smooth)).unwrap();
     let rest = before.models[0].mesh.positions();
     assert_eq!(edit.moved_model(), Some((0, rest)), "the model as it is");
     assert_eq!(edit.step().unwrap(), Progress::Waiting);
@@ -258,14 +261,14 @@ fn an_optimization_previews_each_setting_and_commits_the_last_without_solving_ag
     assert_eq!(edit.step().unwrap(), Progress::Waiting);
     assert_eq!(edit.generation(), generation, "nothing new to solve");
     // The slider: conjugate-gradient steps toward the new scale, close to the exact result.
-    edit.revise(op(0.2, Mode::Smooth));
+    edit.revise(optimize(0.2, Mode::Smooth));
     let mut iterations = 0;
     while edit.step().unwrap() == Progress::Working {
         iterations += 1;
     }
     assert!((1..40).contains(&iterations), "{iterations} iterations");
     let mut exact = editor.clone();
-    exact.apply(op(0.2, Mode::Smooth)).unwrap();
+    exact.apply(optimize(0.2, Mode::Smooth)).unwrap();
     let (_, approached) = edit.moved_model().unwrap();
     let error = approached
         .iter()
@@ -274,12 +277,12 @@ fn an_optimization_previews_each_setting_and_commits_the_last_without_solving_ag
         .fold(0.0, f64::max);
     assert!(error < 1e-4, "the preview is {error} from the exact result");
     // The mode: a new system, solved in one step.
-    edit.revise(op(0.5, Mode::Shape));
+    edit.revise(optimize(0.5, Mode::Shape));
     assert_eq!(edit.step().unwrap(), Progress::Waiting);
     edit.revise(Op::Undo);
     assert_eq!(
         edit.op(),
-        &op(0.5, Mode::Shape),
+        &optimize(0.5, Mode::Shape),
         "another kind of op is ignored"
     );
     let previewed = edit.moved_model().unwrap().1.to_vec();
@@ -294,7 +297,7 @@ fn an_optimization_previews_each_setting_and_commits_the_last_without_solving_ag
     assert_eq!(editor.document().models[0].mesh.positions(), previewed);
     let mut applied = Editor::new();
     applied.apply(session()[1](&applied)).unwrap();
-    applied.apply(op(0.5, Mode::Shape)).unwrap();
+    applied.apply(optimize(0.5, Mode::Shape)).unwrap();
     assert_eq!(applied.document(), editor.document());
     assert_eq!(applied.session_json(), editor.session_json());
 }
@@ -770,28 +773,17 @@ fn a_pull_previewed_elsewhere_shows_what_stepping_here_shows() {
 /// is the op applied.
 #[test]
 fn an_optimization_previewed_elsewhere_commits_what_apply_makes() {
-    use sketchmesh_core::document::{Document, Edit};
+    use sketchmesh_core::document::Edit;
     let mut editor = Editor::new();
     editor.apply(session()[1](&editor)).unwrap();
-    let op = |scale: f64, mode: Mode| {
-        Op::Optimize(OptimizeInput {
-            model: 0,
-            settings: OptimizeParams {
-                mode,
-                scale,
-                ..OptimizeParams::default()
-            },
-            ..OptimizeInput::default()
-        })
-    };
     let settings = [(1.0, Mode::Smooth), (0.2, Mode::Smooth), (0.5, Mode::Shape)];
-    let mut here = editor.begin_gesture(op(1.0, Mode::Smooth)).unwrap();
-    let mut there = editor.begin_gesture(op(1.0, Mode::Smooth)).unwrap();
+    let mut here = editor.begin_gesture(optimize(1.0, Mode::Smooth)).unwrap();
+    let mut there = editor.begin_gesture(optimize(1.0, Mode::Smooth)).unwrap();
     let mut worker: Option<Edit> = None;
     for (k, &(scale, mode)) in settings.iter().enumerate() {
         if k > 0 {
-            here.revise(op(scale, mode));
-            there.revise(op(scale, mode));
+            here.revise(optimize(scale, mode));
+            there.revise(optimize(scale, mode));
         }
         while here.step().unwrap() == Progress::Working {}
         let (models, so_far, version) = there.preview_to_run().expect("a preview to compute");
@@ -807,21 +799,9 @@ fn an_optimization_previewed_elsewhere_commits_what_apply_makes() {
         );
         assert_eq!(there.moved_model(), here.moved_model(), "scale {scale}");
     }
-    there.end_gesture();
-    assert_eq!(there.step().unwrap(), Progress::Working);
-    let (models, commit) = there
-        .model_op_to_run()
-        .expect("the commit computed elsewhere");
-    let kept = Edit::finish_elsewhere(worker, models.to_vec(), commit).unwrap();
-    let doc = Document {
-        models: models.to_vec(),
-        ..Document::default()
-    };
-    assert!(kept == sketchmesh_core::document::model_op(&doc, commit).unwrap());
-    there.supply_model(Ok(kept));
-    there.finish(&mut editor).unwrap();
+    commit_elsewhere(there, worker, &mut editor);
     let mut applied = Editor::new();
     applied.apply(session()[1](&applied)).unwrap();
-    applied.apply(op(0.5, Mode::Shape)).unwrap();
+    applied.apply(optimize(0.5, Mode::Shape)).unwrap();
     assert_eq!(applied.document(), editor.document());
 }

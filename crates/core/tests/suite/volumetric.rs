@@ -4,14 +4,14 @@
 use std::collections::HashMap;
 use std::f64::consts::PI;
 
-use crate::common::{digest, import_mesh};
+use crate::common::{commit_elsewhere, digest, import_mesh};
 
 use glam::{DMat4, DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::bspline::uniform_knots;
 use sketchmesh_core::document::{
-    CoarseInput, CurveDeformInput, DeformHandleInput, DeformInput, DeformMethod, Document, Edit,
-    Editor, Op, Progress, model_op,
+    CoarseInput, CurveDeformInput, DeformHandleInput, DeformInput, DeformMethod, Edit, Editor, Op,
+    Progress,
 };
 use sketchmesh_core::feature::Sketch;
 use sketchmesh_core::geometry::{Bvh, enclosed_volume};
@@ -620,25 +620,7 @@ fn a_control_curve_redrawn_in_its_plane_bends_the_capsule_and_keeps_its_volume()
         );
     }
     assert!(gesture.moved_model().is_some(), "no preview from elsewhere");
-    gesture.end_gesture();
-    assert_eq!(gesture.step().unwrap(), Progress::Working);
-    let (models, commit) = gesture
-        .model_op_to_run()
-        .expect("the commit computed elsewhere");
-    // By the worker's kept edit (no second factorization), and whole as a worker that did
-    // not preview the drag would: the same model.
-    let kept = Edit::finish_elsewhere(worker, models.to_vec(), commit).unwrap();
-    let doc = Document {
-        models: models.to_vec(),
-        ..Document::default()
-    };
-    let computed = model_op(&doc, commit).unwrap();
-    assert!(
-        kept == computed,
-        "the kept edit's commit is the op computed whole"
-    );
-    gesture.supply_model(Ok(kept));
-    gesture.finish(&mut offloaded).unwrap();
+    commit_elsewhere(gesture, worker, &mut offloaded);
     // Drawn in the front view the plane is seen edge-on: refused, nothing changes.
     let mut edge_on = whole.clone();
     edge_on.stroke_camera = None;

@@ -5,11 +5,12 @@
 //!
 //! The worker runs the pure part of an edit: an import's [`import_files`] (files in, models
 //! out), a curve op's, over-sketch's or volumetric curve deformation's [`model_op`] (the
-//! document's models and the op in, the changed model out), or the preview of a pull or a
-//! control curve's new shape while it is drawn ([`Edit::preview_elsewhere`]: the stroke so
-//! far in, the moved positions out; the worker keeps its edit of the drag between requests,
-//! so what it factors is factored once per drag, and a pull's region is refactored there when
-//! the peel outgrows it, not in a frame). Both cross as transferable buffers
+//! document's models and the op in, the changed model out), or the preview of a pull, of a
+//! control curve's new shape or of an optimization while it is adjusted
+//! ([`Edit::preview_elsewhere`]: the op so far in, the moved positions out; the worker keeps
+//! its edit of the gesture between requests, so what it factors is factored once per
+//! gesture, and a pull's region is refactored there when the peel outgrows it, not in a
+//! frame). Both cross as transferable buffers
 //! (`sketchmesh_core::io::transfer`); the worker keeps the models of its last op, so an op
 //! sends only the models that changed since (a scan beside the shape being pulled crosses
 //! once, not at every pull). The edit in progress takes the answer
@@ -477,11 +478,8 @@ mod page {
         let (models, op) = received(&models, &kept, &op)?;
         let previous = PREVIEWING.take();
         match Edit::preview_elsewhere(previous, models, op) {
-            Ok((edit, moved)) => {
-                let moved = moved
-                    .as_ref()
-                    .map(|(index, positions)| (*index, &positions[..]));
-                let bytes = encode_moved(version as usize, moved);
+            Ok(edit) => {
+                let bytes = encode_moved(version as usize, edit.moved_model());
                 PREVIEWING.set(Some(edit));
                 Ok(Uint8Array::from(bytes.as_slice()))
             }

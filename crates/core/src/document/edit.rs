@@ -261,15 +261,14 @@ impl Edit {
     /// `op` on `models`, followed up to `op`'s last sample. `kept` is the worker's edit of
     /// the previous request; when `op` continues it ([`Edit::is_continued_by`]), it goes on
     /// from there, so what it factored is factored once per drag, as here. Returns the edit
-    /// to keep and its preview for [`Edit::supply_preview`].
+    /// to keep, whose [`Edit::moved_model`] is the preview for [`Edit::supply_preview`].
     ///
     /// Errors: the gesture's refusal (no curve under the grab, a failed solve).
-    #[allow(clippy::type_complexity)] // The edit to keep, and the model's index and positions.
     pub fn preview_elsewhere(
         kept: Option<Edit>,
         models: Vec<Arc<Model>>,
         op: Op,
-    ) -> Result<(Edit, Option<(usize, Vec<DVec3>)>), CommandError> {
+    ) -> Result<Edit, CommandError> {
         let mut edit = match kept.filter(|edit| edit.is_continued_by(&models, &op)) {
             Some(mut edit) => {
                 edit.revise(op);
@@ -284,8 +283,7 @@ impl Edit {
             }
         };
         while edit.step()? == Progress::Working {}
-        let moved = (edit.moved_model()).map(|(index, positions)| (index, positions.to_vec()));
-        Ok((edit, moved))
+        Ok(edit)
     }
 
     /// What the page's worker runs for [`Edit::model_op_to_run`]: [`model_op`] of `op` on

@@ -17,7 +17,7 @@ use sketchmesh_core::document::{
     OversketchFit, OversketchInput, Progress, StrokeInput, model_op,
 };
 use sketchmesh_core::geometry::Bvh;
-use sketchmesh_core::io::write_glb;
+use sketchmesh_core::io::{decode_moved, encode_moved, write_glb};
 use sketchmesh_core::mesh::Mesh;
 use sketchmesh_core::oversketch::{ManualHandle, OversketchRoi};
 use sketchmesh_core::silhouette::silhouettes;
@@ -449,4 +449,19 @@ pub fn commit_elsewhere(mut edit: Edit, worker: Option<Edit>, editor: &mut Edito
     );
     edit.supply_model(Ok(kept));
     edit.finish(editor).expect("the commit lands");
+}
+
+/// Computes `edit`'s preview as the page's worker does (`worker` holds the worker's kept edit
+/// of the gesture) and hands it over through the transfer buffer, as the page does. Returns
+/// the version of the op the preview shows.
+pub fn preview_elsewhere(edit: &mut Edit, worker: &mut Option<Edit>) -> usize {
+    let (models, op, version) = edit
+        .preview_to_run()
+        .expect("a preview to compute elsewhere");
+    let kept = Edit::preview_elsewhere(worker.take(), models.to_vec(), op.clone())
+        .expect("the worker's preview");
+    let moved = decode_moved(&encode_moved(version, kept.moved_model())).expect("the buffer");
+    *worker = Some(kept);
+    edit.supply_preview(Ok(moved));
+    version
 }

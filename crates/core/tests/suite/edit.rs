@@ -6,7 +6,7 @@
 
 use std::f64::consts::TAU;
 
-use crate::common::commit_elsewhere;
+use crate::common::{commit_elsewhere, preview_elsewhere};
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
@@ -711,7 +711,6 @@ fn curve_ops_computed_elsewhere_land_as_the_applied_ones() {
 #[test]
 fn a_pull_previewed_elsewhere_shows_what_stepping_here_shows() {
     use sketchmesh_core::document::Edit;
-    use sketchmesh_core::io::{decode_moved, encode_moved};
     let mut editor = Editor::new();
     for make in &session()[1..3] {
         editor.apply(make(&editor)).unwrap();
@@ -734,16 +733,7 @@ fn a_pull_previewed_elsewhere_shows_what_stepping_here_shows() {
         }
         followed = samples;
         while here.step().unwrap() == Progress::Working {}
-        let (models, op, version) = there
-            .preview_to_run()
-            .expect("a preview to compute elsewhere");
-        let (kept, moved) =
-            Edit::preview_elsewhere(worker.take(), models.to_vec(), op.clone()).unwrap();
-        worker = Some(kept);
-        let moved = moved
-            .as_ref()
-            .map(|(index, positions)| (*index, &positions[..]));
-        there.supply_preview(Ok(decode_moved(&encode_moved(version, moved)).unwrap()));
+        preview_elsewhere(&mut there, &mut worker);
         assert!(there.preview_to_run().is_none(), "up to date");
         let generation = there.generation();
         assert_eq!(there.step().unwrap(), Progress::Waiting);
@@ -786,12 +776,8 @@ fn an_optimization_previewed_elsewhere_commits_what_apply_makes() {
             there.revise(optimize(scale, mode));
         }
         while here.step().unwrap() == Progress::Working {}
-        let (models, so_far, version) = there.preview_to_run().expect("a preview to compute");
+        let version = preview_elsewhere(&mut there, &mut worker);
         assert_eq!(version, k + 1, "begun, then one version per revision");
-        let (kept, moved) =
-            Edit::preview_elsewhere(worker.take(), models.to_vec(), so_far.clone()).unwrap();
-        worker = Some(kept);
-        there.supply_preview(Ok((version, moved)));
         assert_eq!(
             there.step().unwrap(),
             Progress::Waiting,

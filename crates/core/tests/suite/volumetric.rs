@@ -4,13 +4,13 @@
 use std::collections::HashMap;
 use std::f64::consts::PI;
 
-use crate::common::{commit_elsewhere, digest, import_mesh};
+use crate::common::{commit_elsewhere, digest, import_mesh, preview_elsewhere};
 
 use glam::{DMat4, DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::bspline::uniform_knots;
 use sketchmesh_core::document::{
-    CoarseInput, CurveDeformInput, DeformHandleInput, DeformInput, DeformMethod, Edit, Editor, Op,
+    CoarseInput, CurveDeformInput, DeformHandleInput, DeformInput, DeformMethod, Editor, Op,
     Progress,
 };
 use sketchmesh_core::feature::Sketch;
@@ -606,13 +606,7 @@ fn a_control_curve_redrawn_in_its_plane_bends_the_capsule_and_keeps_its_volume()
     let mut worker = None;
     for &sample in &whole.stroke[1..] {
         gesture.extend(sample);
-        let (models, op, version) = gesture
-            .preview_to_run()
-            .expect("a preview to compute elsewhere");
-        let (kept, moved) =
-            Edit::preview_elsewhere(worker.take(), models.to_vec(), op.clone()).unwrap();
-        worker = Some(kept);
-        gesture.supply_preview(Ok((version, moved)));
+        preview_elsewhere(&mut gesture, &mut worker);
         assert_eq!(
             gesture.step().unwrap(),
             Progress::Waiting,

@@ -1100,6 +1100,10 @@ test('feature (D): a sketch across a shape, then a drag up, raises a ridge under
     assert.equal(op.kind, 'ridge');
     assert.ok(Math.abs(op.amount - 7) < 0.01, `a 90 px drag up is a factor of 7 (${op.amount})`);
     assert.deepEqual(await api(fresh.page, 'stats'), created, 'same vertices, triangles and curves');
+    // The drag's preview (the sketch embedded and the region factored, then re-weighed per
+    // amount) and the commit were computed by the page's worker, not in the frames.
+    const timed = (await api(fresh.page, 'timings')).sketch_feature;
+    assert.ok(timed?.preview_ms.length >= 1 && timed?.elsewhere_ms.length === 1, `the worker previewed the drag and computed the commit: ${JSON.stringify(timed)}`);
     await frames(fresh.page, 3);
     const ridge = await screenshot(fresh.page, out('feature-ridge.png'));
     const inside = insideShape();

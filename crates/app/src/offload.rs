@@ -32,8 +32,8 @@
 
 use std::sync::Arc;
 
-use sketchmesh_core::document::{CommandError, ImportInput, Model, MovedElsewhere, Op};
-use sketchmesh_core::io::Imported;
+use sketchmesh_core::document::{CommandError, ImportInput, Model, Op};
+use sketchmesh_core::io::{Imported, Previewed};
 
 /// The work of an edit the worker can do.
 #[derive(Clone, Copy, Debug)]
@@ -54,7 +54,7 @@ pub enum Answer {
     /// The changed model's index and its next version.
     Model(Result<(usize, Model), CommandError>),
     /// A gesture's preview.
-    Moved(Result<MovedElsewhere, CommandError>),
+    Moved(Result<Previewed, CommandError>),
 }
 
 /// What became of the work the edit in progress needs.
@@ -479,7 +479,8 @@ mod page {
         let previous = PREVIEWING.take();
         match Edit::preview_elsewhere(previous, models, op) {
             Ok(edit) => {
-                let bytes = encode_moved(version as usize, edit.moved_model());
+                let bytes =
+                    encode_moved(version as usize, edit.moved_model(), edit.limited_amount());
                 PREVIEWING.set(Some(edit));
                 Ok(Uint8Array::from(bytes.as_slice()))
             }

@@ -71,6 +71,7 @@
 
 use std::sync::Arc;
 
+use crate::io::Previewed;
 use crate::mesh::VertexId;
 use glam::{DVec2, DVec3};
 
@@ -146,6 +147,8 @@ pub struct Edit {
     /// ([`Edit::supply_preview`]), or a pull's last ones, still shown while its committed
     /// result is computed elsewhere, so the shape does not jump back meanwhile.
     held: Option<(usize, Vec<DVec3>)>,
+    /// The amount a feature's preview computed elsewhere was cut back to, if it was.
+    held_limit: Option<f64>,
     /// How far the gesture's op has come: 1 as begun, one more for each sample added and
     /// each revision.
     version: usize,
@@ -153,11 +156,6 @@ pub struct Edit {
     /// supplied (steps here compute the preview).
     elsewhere: Option<usize>,
 }
-
-/// A gesture's preview computed elsewhere: the [`Edit::version`] of the op it was computed
-/// for, and the moved model's index and where its vertices are drawn (`None` while there is
-/// nothing to show yet: a curve of fewer than two samples).
-pub type MovedElsewhere = (usize, Option<(usize, Vec<DVec3>)>);
 
 /// Where an edit is.
 #[derive(Debug)]
@@ -308,6 +306,9 @@ impl Edit {
                 (Work::Optimize(preview), Op::Optimize(input)) => {
                     return preview.result(&edit.base, input);
                 }
+                (Work::Feature(preview), Op::SketchFeature(input)) => {
+                    return preview.result(&edit.base, input);
+                }
                 _ => {}
             }
         }
@@ -328,7 +329,9 @@ impl Edit {
             stroke.truncate(followed);
         }
         let continues = match (op, &self.op) {
-            (Op::Optimize(_), Op::Optimize(_)) => true,
+            (Op::Optimize(_), Op::Optimize(_)) | (Op::SketchFeature(_), Op::SketchFeature(_)) => {
+                true
+            }
             _ => start == self.op,
         };
         self.is_gesture && continues && same_items(&self.base.models, models)
@@ -351,6 +354,7 @@ impl Edit {
             revision: shown,
             generation: shown,
             held: None,
+            held_limit: None,
             version: 1,
             elsewhere: None,
         })
@@ -400,7 +404,7 @@ impl Edit {
             let stroke = op.stroke().unwrap_or_default();
             let stepped = match (&mut self.work, op) {
                 // Its preview is computed elsewhere ([`Edit::supply_preview`]).
-                (Work::Pull(_) | Work::Curve(_) | Work::Optimize(_), _)
+                (Work::Pull(_) | Work::Curve(_) | Work::Optimize(_) | Work::Feature(_), _)
                     if self.elsewhere.is_some() =>
                 {
                     None
@@ -450,9 +454,10 @@ impl Edit {
                 self.work = Work::Done(with_model(base, model));
                 Ok((Progress::Done, true))
             }
-            // A feature's drag ended: its kept edit gives the exact result.
+            // A feature's drag ended: its kept edit gives the exact result, or, when the
+            // preview was computed elsewhere, the kept edit there.
             Work::Feature(preview) => {
-                let Op::SketchFeature(input) = op else {
+                let (Op::SketchFeature(input), None) = (op, self.elsewhere) else {
                     self.work = Work::complete(base, op)?;
                     return Ok((Progress::Working, true));
                 };
@@ -645,7 +650,9 @@ impl Edit {
     pub fn preview_to_run(&self) -> Option<(&[Arc<Model>], &Op, usize)> {
         let behind = self.version > self.elsewhere.unwrap_or(0);
         match &self.work {
-            Work::Pull(_) | Work::Curve(_) | Work::Optimize(_) if self.is_gesture && behind => {
+            Work::Pull(_) | Work::Curve(_) | Work::Optimize(_) | Work::Feature(_)
+                if self.is_gesture && behind =>
+            {
                 Some((&self.base.models, &self.op, self.version))
             }
             _ => None,
@@ -663,9 +670,11 @@ impl Edit {
     /// is ignored, as is one for another edit or after the result is computed; once
     /// the gesture ended, the preview shown until the result lands is replaced. A refusal
     /// (no curve under the grab, a failed solve) fails the edit, as a step here would.
-    pub fn supply_preview(&mut self, moved: Result<MovedElsewhere, CommandError>) {
+    pub fn supply_preview(&mut self, previewed: Result<Previewed, CommandError>) {
         let previews = match &self.work {
-            Work::Pull(_) | Work::Curve(_) | Work::Optimize(_) => self.is_gesture,
+            Work::Pull(_) | Work::Curve(_) | Work::Optimize(_) | Work::Feature(_) => {
+                self.is_gesture
+            }
             Work::Whole => self.elsewhere.is_some(),
             _ => false,
         };
@@ -677,18 +686,19 @@ impl Edit {
                 .is_some_and(|m| m.mesh.positions().len() == positions.len()),
             None => true,
         };
-        match moved {
-            Ok((_, moved)) if !fits(&moved) => {
+        match previewed {
+            Ok(previewed) if !fits(&previewed.moved) => {
                 self.work = Work::Failed(CommandError::Elsewhere(String::from(
                     "The preview computed elsewhere does not fit the model.",
                 )));
             }
-            Ok((version, moved)) if version > self.elsewhere.unwrap_or(0) => {
-                if moved.is_some() {
-                    self.held = moved;
+            Ok(previewed) if previewed.version > self.elsewhere.unwrap_or(0) => {
+                if previewed.moved.is_some() {
+                    self.held = previewed.moved;
+                    self.held_limit = previewed.limited;
                     self.generation += 1;
                 }
-                self.elsewhere = Some(version);
+                self.elsewhere = Some(previewed.version);
             }
             Ok(_) => {}
             Err(error) => self.work = Work::Failed(error),
@@ -721,7 +731,7 @@ impl Edit {
                 Some((index, positions)) => (*index, &positions[..]),
                 None => preview.moved(),
             }),
-            Work::Curve(_) | Work::Optimize(_) if self.elsewhere.is_some() => {
+            Work::Curve(_) | Work::Optimize(_) | Work::Feature(_) if self.elsewhere.is_some() => {
                 (self.held.as_ref()).map(|(index, positions)| (*index, &positions[..]))
             }
             Work::Optimize(preview) => match &self.op {
@@ -763,6 +773,7 @@ impl Edit {
     /// over (the committed result is held there too).
     pub fn limited_amount(&self) -> Option<f64> {
         match &self.work {
+            Work::Feature(_) | Work::Whole if self.elsewhere.is_some() => self.held_limit,
             Work::Feature(preview) => preview.limited_to(),
             _ => None,
         }

@@ -42,7 +42,7 @@ pub use crate::model::{
 pub use arrange::overlapping_model;
 pub use create::{CREATE_VERTICES, STEPPED_MAX_VERTICES};
 pub use curve_edit::{CURVE_PICK_RADIUS_PX, curve_type_toggle};
-pub use edit::{Edit, MovedElsewhere, Progress};
+pub use edit::{Edit, Progress};
 pub use editor::Editor;
 pub use error::CommandError;
 pub use gizmo::{Gizmo, GizmoHandle, HANDLE_REACH_PX};

@@ -143,7 +143,7 @@ impl Op {
 
     /// Whether the op makes one model, new or changed, and reads nothing but the document's
     /// models (a creation, the curve ops, the over-sketch, a curve's volumetric
-    /// deformation, an optimization): a pure function of the models and the op, which the page may compute
+    /// deformation, an optimization, a feature): a pure function of the models and the op, which the page may compute
     /// in its worker ([`model_op`](super::model_op)).
     pub fn makes_one_model(&self) -> bool {
         matches!(
@@ -160,6 +160,7 @@ impl Op {
                 | Op::Rub(_)
                 | Op::CurveDeform(_)
                 | Op::Optimize(_)
+                | Op::SketchFeature(_)
         )
     }
 

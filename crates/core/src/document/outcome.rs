@@ -61,7 +61,6 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
         Op::Transform(input) => replaced(transform_op(base, input)?),
         Op::Delete(input) => delete_op(base, input)?,
         Op::Duplicate(input) => duplicate_op(base, input)?,
-        Op::SketchFeature(input) => replaced(feature_op(base, input)?),
         Op::RegionEdit(input) => replaced(region_edit_op(base, input)?),
         Op::CurveHandle(input) => Outcome::Document(curve_handle_op(base, input)?),
         Op::HandleEdit(input) => Outcome::Document(handle_edit_op(base, input)?),
@@ -73,8 +72,8 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
         Op::PoseAt(input) => Outcome::Document(pose_at_op(base, input)?),
         Op::Undo => Outcome::Undo,
         Op::Redo => Outcome::Redo,
-        // A creation, the curve ops, the over-sketch, a curve's volumetric deformation and
-        // an optimization: one model, from the models alone.
+        // A creation, the curve ops, the over-sketch, a curve's volumetric deformation, an
+        // optimization and a feature: one model, from the models alone.
         _ => replaced(model_op(base, op)?),
     })
 }
@@ -99,6 +98,7 @@ pub fn model_op(doc: &Document, op: &Op) -> Result<(usize, Model), CommandError>
         Op::Rub(input) => curve_edit::rub_op(doc, input),
         Op::CurveDeform(input) => curve_deform_op(doc, input),
         Op::Optimize(input) => optimize_op(doc, input),
+        Op::SketchFeature(input) => feature_op(doc, input),
         other => Err(CommandError::NotOneModel(other.name())),
     }
 }

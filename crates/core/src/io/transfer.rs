@@ -108,31 +108,48 @@ pub fn decode_changed(bytes: &[u8]) -> Result<(usize, Model), TransferError> {
     Ok((index, model.ok_or(TransferError("no model"))?))
 }
 
-/// A gesture's preview computed elsewhere: the version of the gesture's op it shows, and
-/// the moved model's index and where its vertices are drawn (`None` while there is nothing
-/// to show yet), as one buffer for [`decode_moved`].
-pub fn encode_moved(version: usize, moved: Option<(usize, &[DVec3])>) -> Vec<u8> {
+/// A gesture's preview computed elsewhere (the page's worker), as [`decode_moved`] reads it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Previewed {
+    /// The version of the gesture's op it was computed for.
+    pub version: usize,
+    /// The moved model's index and where its vertices are drawn; `None` while there is
+    /// nothing to show yet (a curve of fewer than two samples).
+    pub moved: Option<(usize, Vec<DVec3>)>,
+    /// The amount shown when the one asked for was cut back (a feature that would fold the
+    /// surface over).
+    pub limited: Option<f64>,
+}
+
+/// A gesture's preview computed elsewhere (see [`Previewed`]) as one buffer for
+/// [`decode_moved`]; the positions are written from where they are, not copied first.
+pub fn encode_moved(
+    version: usize,
+    moved: Option<(usize, &[DVec3])>,
+    limited: Option<f64>,
+) -> Vec<u8> {
     let mut out = Writer::default();
     out.count(version);
     out.option(moved.as_ref(), |out, &(index, positions)| {
         out.count(index);
         out.pods(positions);
     });
+    out.option(limited.as_ref(), |out, &amount| out.pod(amount));
     out.bytes
 }
 
-/// The model's index and the positions [`encode_moved`] wrote.
-type Moved = Option<(usize, Vec<DVec3>)>;
-
-/// The preview [`encode_moved`] wrote: `(version, moved)`.
+/// The preview [`encode_moved`] wrote.
 ///
 /// Errors: [`TransferError`] when the buffer is not one it wrote.
-pub fn decode_moved(bytes: &[u8]) -> Result<(usize, Moved), TransferError> {
+pub fn decode_moved(bytes: &[u8]) -> Result<Previewed, TransferError> {
     let mut input = Reader::new(bytes);
-    let version = input.count()?;
-    let moved = input.option(|input| Ok((input.count()?, input.pods()?)))?;
+    let previewed = Previewed {
+        version: input.count()?,
+        moved: input.option(|input| Ok((input.count()?, input.pods()?)))?,
+        limited: input.option(Reader::pod)?,
+    };
     input.end()?;
-    Ok((version, moved))
+    Ok(previewed)
 }
 
 #[derive(Default)]

@@ -460,8 +460,8 @@ pub fn preview_elsewhere(edit: &mut Edit, worker: &mut Option<Edit>) -> usize {
         .expect("a preview to compute elsewhere");
     let kept = Edit::preview_elsewhere(worker.take(), models.to_vec(), op.clone())
         .expect("the worker's preview");
-    let moved = decode_moved(&encode_moved(version, kept.moved_model())).expect("the buffer");
+    let bytes = encode_moved(version, kept.moved_model(), kept.limited_amount());
     *worker = Some(kept);
-    edit.supply_preview(Ok(moved));
+    edit.supply_preview(Ok(decode_moved(&bytes).expect("the buffer")));
     version
 }

@@ -14,6 +14,7 @@ use sketchmesh_core::document::{
     OversketchInput, Progress, SketchFeatureInput, StrokeInput,
 };
 use sketchmesh_core::feature::{FeatureError, FeatureKind};
+use sketchmesh_core::io::Previewed;
 use sketchmesh_core::optimize::region::brushed_vertices;
 use sketchmesh_core::optimize::{Mode, OptimizeParams, Optimizer, Selection};
 use sketchmesh_core::oversketch::OversketchRoi;
@@ -524,17 +525,7 @@ fn a_dragged_feature_commits_what_apply_makes() {
     let mut editor = Editor::new();
     editor.apply(session()[1](&editor)).unwrap();
     let before = editor.document().clone();
-    let sketch = input(segment(CENTRE - DVec2::X * 80.0, CENTRE + DVec2::X * 80.0));
-    let op = |kind: FeatureKind, amount: f64| {
-        Op::SketchFeature(SketchFeatureInput {
-            viewport: sketch.viewport,
-            camera: sketch.camera,
-            stroke: sketch.stroke.clone(),
-            kind,
-            amount: Some(amount),
-            region: None,
-        })
-    };
+    let op = feature_across_the_middle;
     for (kind, amounts) in [
         (FeatureKind::Ridge, [1.0, 3.0, 8.0, -2.0, 5.0]),
         (FeatureKind::Suggestive, [0.0, 30.0, 90.0, -45.0, 60.0]),
@@ -568,6 +559,66 @@ fn a_dragged_feature_commits_what_apply_makes() {
         CommandError::Feature(FeatureError::AmountNotFinite)
     );
     assert_eq!((editor.document(), editor.ops().len()), (&before, n_ops));
+}
+
+/// A `sketch_feature` op along a segment across the middle of the view.
+fn feature_across_the_middle(kind: FeatureKind, amount: f64) -> Op {
+    let sketch = input(segment(CENTRE - DVec2::X * 80.0, CENTRE + DVec2::X * 80.0));
+    Op::SketchFeature(SketchFeatureInput {
+        viewport: sketch.viewport,
+        camera: sketch.camera,
+        stroke: sketch.stroke,
+        kind,
+        amount: Some(amount),
+        region: None,
+    })
+}
+
+/// The page computes a feature's preview in its worker as its amount is dragged: each
+/// preview the worker's edit computes (its feature edit built once, kept while the sketch
+/// stays) is the one stepping here shows, cut back where stepping here cuts it back, and
+/// the commit, from the worker's kept edit, is the op applied.
+#[test]
+fn a_feature_previewed_elsewhere_commits_what_apply_makes() {
+    use sketchmesh_core::document::Edit;
+    let mut editor = Editor::new();
+    editor.apply(session()[1](&editor)).unwrap();
+    let amounts = [1.0, 3.0, 1.0e4, -2.0, 5.0];
+    let op = |amount| feature_across_the_middle(FeatureKind::Ridge, amount);
+    let mut here = editor.begin_gesture(op(amounts[0])).unwrap();
+    let mut there = editor.begin_gesture(op(amounts[0])).unwrap();
+    let mut worker: Option<Edit> = None;
+    let mut limited = 0;
+    for (k, &amount) in amounts.iter().enumerate() {
+        if k > 0 {
+            here.revise(op(amount));
+            there.revise(op(amount));
+        }
+        while here.step().unwrap() == Progress::Working {}
+        let version = preview_elsewhere(&mut there, &mut worker);
+        assert_eq!(version, k + 1, "begun, then one version per revision");
+        assert_eq!(
+            there.step().unwrap(),
+            Progress::Waiting,
+            "nothing to step here"
+        );
+        assert_eq!(there.moved_model(), here.moved_model(), "amount {amount}");
+        assert_eq!(
+            there.limited_amount(),
+            here.limited_amount(),
+            "amount {amount}"
+        );
+        limited += usize::from(here.limited_amount().is_some());
+    }
+    assert!(
+        limited > 0,
+        "an amount of 10000 would fold the surface: it is cut back"
+    );
+    commit_elsewhere(there, worker, &mut editor);
+    let mut applied = Editor::new();
+    applied.apply(session()[1](&applied)).unwrap();
+    applied.apply(op(5.0)).unwrap();
+    assert_eq!(applied.document(), editor.document());
 }
 
 /// The page reads an import's files in its worker and hands the result, through the transfer
@@ -745,7 +796,11 @@ fn a_pull_previewed_elsewhere_shows_what_stepping_here_shows() {
         assert_eq!(there.moved_model(), here.moved_model(), "{samples} samples");
     }
     let rest = editor.document().models[0].mesh.positions().to_vec();
-    there.supply_preview(Ok((2, Some((0, rest)))));
+    there.supply_preview(Ok(Previewed {
+        version: 2,
+        moved: Some((0, rest)),
+        limited: None,
+    }));
     assert_eq!(there.moved_model(), here.moved_model(), "an older preview");
     for edit in [&mut here, &mut there] {
         edit.end_gesture();

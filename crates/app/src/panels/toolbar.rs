@@ -49,6 +49,11 @@ const NARROW: f32 = 700.0;
 /// wrapped rows fit there, with targets for a finger all the same.
 const TOUCH_WIDE: f32 = 1000.0;
 
+/// From this width (points) the wide toolbar's tools show their icons before their labels:
+/// the row with them (and a finger's 44-point targets) still fits on one line. In the
+/// compact layout, whose row scrolls, they always do.
+const ICONS_FROM: f32 = 1500.0;
+
 /// How the toolbar is laid out for a screen and its pointer.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Layout {
@@ -152,8 +157,14 @@ pub fn toolbar_ui(
         // the finger stays free to scroll the row afterwards.
         let shown = egui::Id::unique("toolbar mode brought into sight");
         let bring = layout.compact && ui.data(|d| d.get_temp::<Mode>(shown)) != Some(mode);
+        let with_icons = layout.compact || ui.available_width() >= ICONS_FROM;
         for m in Mode::ALL {
-            let button = egui::Button::selectable(m == mode, m.label()).min_size(target);
+            let text = if with_icons {
+                format!("{} {}", m.icon(), m.label())
+            } else {
+                m.label().to_owned()
+            };
+            let button = egui::Button::selectable(m == mode, text).min_size(target);
             let hint = format!("{} ({})", m.hint(), m.key().name());
             let response = ui.add(button).on_hover_text(hint);
             if bring && m == mode {

@@ -71,6 +71,25 @@ impl Mode {
         }
     }
 
+    /// The toolbar icon, shown before the label where the row has room: a glyph of the
+    /// tool-icon font (`crate::fonts`; a test checks it is there).
+    pub fn icon(self) -> &'static str {
+        match self {
+            Mode::Sketch => "✏",
+            Mode::Pull => "✋",
+            Mode::Erase => "✖",
+            Mode::CurveType => "♦",
+            Mode::Rub => "〰",
+            Mode::Oversketch => "✒",
+            Mode::Optimize => "✨",
+            Mode::Feature => "🗻",
+            Mode::Region => "⭕",
+            Mode::Handles => "↪",
+            Mode::Pose => "🏃",
+            Mode::Move => "↔",
+        }
+    }
+
     /// The key that selects it (without modifiers).
     pub fn key(self) -> Key {
         match self {

@@ -423,7 +423,7 @@ test('tablet (820x1180, DPR 2, touch): a finger-drawn outline creates a model; a
   }
 });
 
-test('phone (390x844, DPR 2, touch): the toolbar is two rows at the bottom that scroll sideways, the tools nearest the thumb and the file and view buttons behind a menu; a finger outline creates a model', async () => {
+test('phone (390x844, DPR 2, touch): the toolbar is two rows at the bottom, the tools nearest the thumb, the file and view buttons behind ☰ and the tools that do not fit behind ⋯; a finger outline creates a model', async () => {
   const phoneBrowser = await launch(gpu, { deviceScaleFactor: 2 });
   try {
     const phone = await openApp(phoneBrowser, url, gpu, { width: 390, height: 844, deviceScaleFactor: 2 });
@@ -443,6 +443,19 @@ test('phone (390x844, DPR 2, touch): the toolbar is two rows at the bottom that 
     await frames(phone.page, 3);
     const menu = await screenshot(phone.page, out('phone-menu.png'));
     assert.ok(maxDiffNear(shot, menu, 60, 844 - height - 60, 20) > 40, 'the menu opened above its button');
+    await touchTap(phone.cdp, [{ x: 300, y: 300 }]);
+    await frames(phone.page, 3);
+    // The last button of the tools row, ⋯ (the tools that do not fit), found from the right
+    // by its filled background, opens its menu above it too.
+    const row = 844 - 22;
+    let right = 389;
+    while (right > 200 && px(shot, right, row).every((v, i) => Math.abs(v - panel[i]) < 12)) right -= 1;
+    assert.ok(right > 300, `the ⋯ button ends near the right edge: ${right}`);
+    const more = { x: right - 22, y: row };
+    await touchTap(phone.cdp, [more]);
+    await frames(phone.page, 3);
+    const moreMenu = await screenshot(phone.page, out('phone-more.png'));
+    assert.ok(maxDiffNear(shot, moreMenu, more.x - 40, 844 - height - 60, 20) > 40, 'the ⋯ menu opened above its button');
     await touchTap(phone.cdp, [{ x: 300, y: 300 }]);
     await frames(phone.page, 3);
     const c = { x: 195, y: 450 };

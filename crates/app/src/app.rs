@@ -281,6 +281,11 @@ impl SketchApp {
         self.coarse_pointer = coarse;
     }
 
+    /// The tool in use.
+    pub fn mode(&self) -> Mode {
+        self.tools.mode()
+    }
+
     /// The edit in progress, if any, and the 3D view's rectangle last frame in points: what
     /// a headless test reads the shown preview from.
     pub fn edit_in_view(&self) -> (Option<&Edit>, egui::Rect) {

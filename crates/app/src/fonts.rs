@@ -2,8 +2,8 @@
 //!
 //! egui's bundled set adds a monospace face (Hack, 148 kB of the gzipped wasm) and two emoji
 //! faces (about 400 kB) beside Ubuntu Light. The page shows code only as key names in the
-//! help panel, which read as well in Ubuntu Light, and of the emoji it needs only the twelve
-//! tool icons, a 5 kB subset of Noto Emoji (`assets/tool-icons.txt`): the download stays
+//! help panel, which read as well in Ubuntu Light, and of the emoji it needs only the
+//! toolbar's icons, a 5 kB subset of Noto Emoji (`assets/tool-icons.txt`): the download stays
 //! inside its budget, and the icons look the same on every device (the browser's own emoji
 //! would be colour pictures on one tablet and line drawings on the next).
 
@@ -60,10 +60,11 @@ mod tests {
         let mut output = ctx.run_ui(egui::RawInput::default(), |_| {});
         output.textures_delta.clear();
         let font = egui::FontId::proportional(14.0);
-        for mode in Mode::ALL {
-            let icon = mode.icon();
+        let icons = Mode::ALL.map(|mode| (format!("{mode:?}"), mode.icon()));
+        let arrows = [(String::from("undo"), "↩"), (String::from("redo"), "↪")];
+        for (what, icon) in icons.into_iter().chain(arrows) {
             let drawn = ctx.fonts_mut(|fonts| fonts.has_glyphs(&font, icon));
-            assert!(drawn, "the {mode:?} tool's icon {icon} is not in the fonts");
+            assert!(drawn, "the {what} icon {icon} is not in the fonts");
         }
     }
 }

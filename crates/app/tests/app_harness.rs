@@ -708,6 +708,41 @@ fn the_touch_layout_gives_every_toolbar_target_44_points() {
     }
 }
 
+/// Issue 17: on a phone the tools that do not fit beside the ☰ menu, Undo and Redo sit
+/// behind ⋯ (the row no longer scrolls them out of sight); each one picked there becomes the
+/// tool in use, the menu closes, and the tool takes a place in the row, within the screen.
+#[test]
+fn on_a_phone_the_tools_that_do_not_fit_are_behind_more() {
+    use sketchmesh_app::tools::Mode;
+    let mut h = touch_harness(vec2(390.0, 844.0));
+    h.run();
+    // The row shows the tools' icons, the menu their icons and labels.
+    let in_row: Vec<Mode> = (Mode::ALL.into_iter())
+        .filter(|&m| h.query_by_label(m.icon()).is_some())
+        .collect();
+    assert!(
+        in_row.len() >= 3 && in_row.len() < Mode::ALL.len(),
+        "in the row: {in_row:?}"
+    );
+    for mode in Mode::ALL.into_iter().filter(|m| !in_row.contains(m)) {
+        // The tools row's ⋯, the lowest (a tool's options may have one of their own).
+        let more = (h.query_all_by_label("⋯"))
+            .max_by(|a, b| a.rect().min.y.total_cmp(&b.rect().min.y))
+            .expect("a More button");
+        more.click();
+        h.run();
+        h.get_by_label(&format!("{} {}", mode.icon(), mode.label()))
+            .click();
+        h.run();
+        assert_eq!(h.state().mode(), mode, "picked from the menu");
+        let button = h.get_by_label(mode.icon()).rect();
+        assert!(
+            button.min.x >= 0.0 && button.max.x <= 390.5 && button.min.y > 844.0 - 100.0,
+            "{mode:?} in the row at the bottom, within the screen: {button:?}"
+        );
+    }
+}
+
 /// Issue 17: a session replayed through the page API's path runs over frames behind a
 /// progress line; its Cancel (a touch-sized button on a phone's screen) stops it and
 /// leaves the document as it was, telling whoever waits; a shape drawn while it runs is not

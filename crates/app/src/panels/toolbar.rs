@@ -54,6 +54,10 @@ const TOUCH_WIDE: f32 = 1000.0;
 /// compact layout, whose row scrolls, they always do.
 const ICONS_FROM: f32 = 1500.0;
 
+/// Below this width (points) the compact toolbar's tools show their icons only: a phone's
+/// row then holds three tools beside the menus and the arrows, where it held one with labels.
+const ICONS_ONLY_BELOW: f32 = 600.0;
+
 /// How the toolbar is laid out for a screen and its pointer.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Layout {
@@ -116,6 +120,8 @@ pub fn toolbar_ui(
     let mut picked_mode = None;
     let mode = tools.mode();
     let target = egui::vec2(layout.target, layout.target);
+    let full_width = ui.available_width();
+    let shows = ToolText::for_row(layout, full_width);
     row(ui, layout.compact, "tools", |ui| {
         // Narrower padding in this row keeps its twelve tools and the view buttons on one
         // line at 1280 points, with a finger's 44-point File button too.
@@ -134,12 +140,18 @@ pub fn toolbar_ui(
                 .ui(ui, |ui| file_buttons(ui, layout, editor, &mut action));
             ui.separator();
         }
+        // Compact, undo and redo are arrows, which leave the row room for more tools.
+        let (undo, redo) = if layout.compact {
+            ("↩", "↪")
+        } else {
+            ("Undo", "Redo")
+        };
         button(
             ui,
             layout,
             editor.can_undo(),
-            "Undo",
-            "Undo (Ctrl+Z)",
+            undo,
+            "Undo (Ctrl+Z, or tap with two fingers)",
             Action::Undo,
             &mut action,
         );
@@ -147,33 +159,43 @@ pub fn toolbar_ui(
             ui,
             layout,
             editor.can_redo(),
-            "Redo",
-            "Redo (Ctrl+Shift+Z or Ctrl+Y)",
+            redo,
+            "Redo (Ctrl+Shift+Z or Ctrl+Y, or tap with three fingers)",
             Action::Redo,
             &mut action,
         );
-        ui.separator();
-        // In a row that scrolls, a tool picked by key or menu is brought into sight, once:
-        // the finger stays free to scroll the row afterwards.
-        let shown = egui::Id::unique("toolbar mode brought into sight");
-        let bring = layout.compact && ui.data(|d| d.get_temp::<Mode>(shown)) != Some(mode);
-        let with_icons = layout.compact || ui.available_width() >= ICONS_FROM;
-        for m in Mode::ALL {
-            let text = if with_icons {
-                format!("{} {}", m.icon(), m.label())
-            } else {
-                m.label().to_owned()
-            };
-            let button = egui::Button::selectable(m == mode, text).min_size(target);
-            let hint = format!("{} ({})", m.hint(), m.key().name());
-            let response = ui.add(button).on_hover_text(hint);
-            if bring && m == mode {
-                response.scroll_to_me(None);
-                ui.data_mut(|d| d.insert_temp(shown, mode));
-            }
-            if response.clicked() {
+        if !layout.compact {
+            ui.separator();
+        }
+        // Compact, the tools that fit beside a More menu (the one in use among them), the
+        // rest in it; wide, all of them.
+        let (shown, more) = if layout.compact {
+            let room = full_width - ui.min_rect().width() - ui.spacing().item_spacing.x;
+            tools_in_room(ui, mode, shows, room, layout.target)
+        } else {
+            (Mode::ALL.to_vec(), Vec::new())
+        };
+        for m in shown {
+            let button = egui::Button::selectable(m == mode, shows.text(m));
+            let hint = format!("{}: {} ({})", m.label(), m.hint(), m.key().name());
+            if ui
+                .add(button.min_size(target))
+                .on_hover_text(hint)
+                .clicked()
+            {
                 picked_mode = Some(m);
             }
+        }
+        if !more.is_empty() {
+            let button = egui::Button::new("⋯").min_size(target);
+            egui::containers::menu::MenuButton::from_button(button).ui(ui, |ui| {
+                for m in more {
+                    let button = egui::Button::new(ToolText::Both.text(m)).min_size(target);
+                    if ui.add(button).clicked() {
+                        picked_mode = Some(m);
+                    }
+                }
+            });
         }
         if !layout.compact {
             ui.separator();
@@ -184,6 +206,84 @@ pub fn toolbar_ui(
     (action.or(picked_mode.map(Action::Mode)))
         .or(options_first.flatten())
         .or(options_last.flatten())
+}
+
+/// What a tool's button shows.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum ToolText {
+    /// Its icon and label.
+    Both,
+    /// Its icon (a phone's row; the label is in its tooltip and in the More menu).
+    Icon,
+    /// Its label (a desktop row without room for the icons).
+    Label,
+}
+
+impl ToolText {
+    /// What the tools row of `layout`, `width` points wide, shows.
+    fn for_row(layout: Layout, width: f32) -> ToolText {
+        if layout.compact && width < ICONS_ONLY_BELOW {
+            ToolText::Icon
+        } else if layout.compact || width >= ICONS_FROM {
+            ToolText::Both
+        } else {
+            ToolText::Label
+        }
+    }
+
+    fn text(self, mode: Mode) -> String {
+        match self {
+            ToolText::Both => format!("{} {}", mode.icon(), mode.label()),
+            ToolText::Icon => mode.icon().to_owned(),
+            ToolText::Label => mode.label().to_owned(),
+        }
+    }
+}
+
+/// The tools whose buttons (showing `shows`, at least `target` wide) fit in `room` points,
+/// in their order, beside a More button when not all do, with `mode` among them (in the
+/// last place that fits, should it come later); and the rest, for the More menu.
+fn tools_in_room(
+    ui: &egui::Ui,
+    mode: Mode,
+    shows: ToolText,
+    room: f32,
+    target: f32,
+) -> (Vec<Mode>, Vec<Mode>) {
+    let spacing = ui.spacing().item_spacing.x;
+    let font = egui::TextStyle::Button.resolve(ui.style());
+    let width = |m: Mode| {
+        let text = ui
+            .painter()
+            .layout_no_wrap(shows.text(m), font.clone(), egui::Color32::WHITE);
+        (text.size().x + 2.0 * ui.spacing().button_padding.x).max(target) + spacing
+    };
+    let widths: Vec<f32> = Mode::ALL.into_iter().map(width).collect();
+    if widths.iter().sum::<f32>() <= room {
+        return (Mode::ALL.to_vec(), Vec::new());
+    }
+    let mut shown: Vec<Mode> = Vec::new();
+    let mut used = target + spacing; // The More button.
+    for (m, w) in Mode::ALL.into_iter().zip(&widths) {
+        if used + w > room {
+            break;
+        }
+        shown.push(m);
+        used += w;
+    }
+    if !shown.contains(&mode) {
+        // The tool in use takes the place of the last ones that make room for it.
+        let w = |m: Mode| widths[Mode::ALL.iter().position(|&n| n == m).unwrap_or(0)];
+        while !shown.is_empty() && used + w(mode) > room {
+            used -= shown.pop().map_or(0.0, w);
+        }
+        shown.push(mode);
+    }
+    let more = Mode::ALL
+        .into_iter()
+        .filter(|m| !shown.contains(m))
+        .collect();
+    (shown, more)
 }
 
 /// The second row, always there so that the viewport keeps its size whatever the mode: the

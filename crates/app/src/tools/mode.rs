@@ -84,7 +84,7 @@ impl Mode {
             Mode::Optimize => "✨",
             Mode::Feature => "🗻",
             Mode::Region => "⭕",
-            Mode::Handles => "↪",
+            Mode::Handles => "⤴",
             Mode::Pose => "🏃",
             Mode::Move => "↔",
         }

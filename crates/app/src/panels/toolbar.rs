@@ -40,8 +40,9 @@ const POINTER_TARGET: f32 = 36.0;
 /// Minimum target, in points (CSS px), for a finger: what touch guidelines ask for.
 const FINGER_TARGET: f32 = 44.0;
 
-/// Below this width (points) the toolbar is two rows that scroll sideways, with the file and
-/// view buttons in one menu: wrapped, it took four rows, a third of a phone's screen.
+/// Below this width (points) the toolbar is two single-line rows, with the file and view
+/// buttons in one menu and the tools that do not fit in another: wrapped, it took four rows,
+/// a third of a phone's screen.
 const NARROW: f32 = 700.0;
 
 /// Below this width a screen whose main pointer is a finger (phones, tablets upright) gets
@@ -51,7 +52,7 @@ const TOUCH_WIDE: f32 = 1000.0;
 
 /// From this width (points) the wide toolbar's tools show their icons before their labels:
 /// the row with them (and a finger's 44-point targets) still fits on one line. In the
-/// compact layout, whose row scrolls, they always do.
+/// compact layout, whose tools that do not fit go behind ⋯, they always do.
 const ICONS_FROM: f32 = 1500.0;
 
 /// Below this width (points) the compact toolbar's tools show their icons only: a phone's
@@ -61,7 +62,8 @@ const ICONS_ONLY_BELOW: f32 = 600.0;
 /// How the toolbar is laid out for a screen and its pointer.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Layout {
-    /// Rows that scroll sideways, the file and view buttons behind one menu.
+    /// Single-line rows, the file and view buttons behind one menu, the tools that do not fit
+    /// behind another.
     pub compact: bool,
     /// The smallest width and height of a target, in points.
     pub target: f32,
@@ -99,8 +101,8 @@ impl Layout {
 /// Shows the toolbar: two rows, the tools (the menus, undo and redo, the tools and, wide,
 /// the view buttons) and the mode's options (on the bottom the options come first, so that
 /// the tools are nearest the thumb); on a wide screen they wrap and the file buttons sit in a
-/// File menu, in the compact layout they scroll sideways and the file and view buttons sit
-/// in one menu.
+/// File menu, in the compact layout the file and view buttons sit in one menu (☰) and the
+/// tools that do not fit in another (⋯).
 pub fn toolbar_ui(
     ui: &mut egui::Ui,
     layout: Layout,
@@ -411,7 +413,7 @@ pub fn target_size(ui: &egui::Ui) -> egui::Vec2 {
 }
 
 /// One toolbar row: wrapped onto more lines, or in the `compact` layout one line that
-/// scrolls sideways (a finger drags it).
+/// scrolls sideways (a finger drags it) should it not fit: a tool's options on a phone.
 fn row(ui: &mut egui::Ui, compact: bool, id: &str, add: impl FnOnce(&mut egui::Ui)) {
     if compact {
         egui::ScrollArea::horizontal().id_salt(id).show(ui, |ui| {

@@ -168,7 +168,9 @@ export const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
  * A recording also stops at the first frame in which `window.__frames.stopWhen()` holds: the
  * app landed a result in this frame or the last (its frame callback may run before or after
  * this one). The intervals of this frame and the next, one of which holds the landing, stay
- * out of the list; the longer is `window.__frames.landing`.
+ * out of the list; the longer is `window.__frames.landing`, and `window.__frames.stoppedAt`
+ * is when the last of them began (the page's clock): what ended before it came before the
+ * landing.
  */
 export async function recordFrames(page) {
   await page.evaluate(() => {
@@ -181,6 +183,7 @@ export async function recordFrames(page) {
         f.on = false;
         f.stopWhen = null;
         f.landing = 0;
+        f.stoppedAt = last;
         landingTicks = 2;
       }
       if (landingTicks > 0) {

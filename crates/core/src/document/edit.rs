@@ -200,6 +200,15 @@ impl Work {
         })
     }
 
+    /// Whether a gesture with this work may have its preview computed elsewhere
+    /// ([`Edit::preview_to_run`]): the drags whose previews factor.
+    fn previews_elsewhere(&self) -> bool {
+        matches!(
+            self,
+            Work::Pull(_) | Work::Curve(_) | Work::Optimize(_) | Work::Feature(_)
+        )
+    }
+
     /// The work of an op whose stroke is still being drawn: a preview where there is one.
     fn gesture(base: &Document, op: &Op) -> Result<Work, CommandError> {
         Ok(match op {
@@ -404,11 +413,7 @@ impl Edit {
             let stroke = op.stroke().unwrap_or_default();
             let stepped = match (&mut self.work, op) {
                 // Its preview is computed elsewhere ([`Edit::supply_preview`]).
-                (Work::Pull(_) | Work::Curve(_) | Work::Optimize(_) | Work::Feature(_), _)
-                    if self.elsewhere.is_some() =>
-                {
-                    None
-                }
+                (work, _) if work.previews_elsewhere() && self.elsewhere.is_some() => None,
                 (Work::Pull(preview), _) => preview.step(stroke)?,
                 (Work::Outline(preview), _) => preview.step(base, stroke),
                 (Work::Optimize(preview), Op::Optimize(input)) => preview.step(base, input)?,
@@ -649,14 +654,11 @@ impl Edit {
     #[allow(clippy::type_complexity)] // The models, the op so far and its version.
     pub fn preview_to_run(&self) -> Option<(&[Arc<Model>], &Op, usize)> {
         let behind = self.version > self.elsewhere.unwrap_or(0);
-        match &self.work {
-            Work::Pull(_) | Work::Curve(_) | Work::Optimize(_) | Work::Feature(_)
-                if self.is_gesture && behind =>
-            {
-                Some((&self.base.models, &self.op, self.version))
-            }
-            _ => None,
-        }
+        (self.work.previews_elsewhere() && self.is_gesture && behind).then_some((
+            &self.base.models[..],
+            &self.op,
+            self.version,
+        ))
     }
 
     /// How far a gesture's op has come: 1 as begun, one more for each sample
@@ -672,11 +674,8 @@ impl Edit {
     /// (no curve under the grab, a failed solve) fails the edit, as a step here would.
     pub fn supply_preview(&mut self, previewed: Result<Previewed, CommandError>) {
         let previews = match &self.work {
-            Work::Pull(_) | Work::Curve(_) | Work::Optimize(_) | Work::Feature(_) => {
-                self.is_gesture
-            }
             Work::Whole => self.elsewhere.is_some(),
-            _ => false,
+            work => work.previews_elsewhere() && self.is_gesture,
         };
         if !previews {
             return;
@@ -731,7 +730,7 @@ impl Edit {
                 Some((index, positions)) => (*index, &positions[..]),
                 None => preview.moved(),
             }),
-            Work::Curve(_) | Work::Optimize(_) | Work::Feature(_) if self.elsewhere.is_some() => {
+            work if work.previews_elsewhere() && self.elsewhere.is_some() => {
                 (self.held.as_ref()).map(|(index, positions)| (*index, &positions[..]))
             }
             Work::Optimize(preview) => match &self.op {

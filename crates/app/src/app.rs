@@ -1894,6 +1894,8 @@ fn hand_over(
         }
         Poll::NotOffloaded => {
             *job = None;
+            // Should the worker fail in the middle of a drag, the frames preview it again.
+            edit.preview_here();
             HandOver::Here
         }
     }

@@ -667,6 +667,19 @@ impl Edit {
         self.version
     }
 
+    /// Takes the gesture's preview back from elsewhere (the page's worker failed in the middle
+    /// of a drag): the next step here computes it for the op so far, as if it had never
+    /// gone, so the shape keeps following the pen. Nothing changes for an edit whose preview
+    /// was never computed elsewhere, or once its gesture ended.
+    pub fn preview_here(&mut self) {
+        if self.is_gesture && self.work.previews_elsewhere() && self.elsewhere.is_some() {
+            self.elsewhere = None;
+            self.held = None;
+            self.held_limit = None;
+            self.generation += 1;
+        }
+    }
+
     /// Shows a preview of [`Edit::preview_to_run`] computed elsewhere: the same positions a
     /// step here would show for that version of the op. A preview older than the one shown
     /// is ignored, as is one for another edit or after the result is computed; once

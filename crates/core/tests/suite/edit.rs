@@ -795,6 +795,25 @@ fn a_pull_previewed_elsewhere_shows_what_stepping_here_shows() {
         );
         assert_eq!(there.moved_model(), here.moved_model(), "{samples} samples");
     }
+    // Should the worker fail now, the frames take the preview back: the same as stepping here.
+    let mut taken_back = editor.begin_gesture(Op::Pull(drag.clone())).unwrap();
+    let mut gone: Option<Edit> = None;
+    preview_elsewhere(&mut taken_back, &mut gone);
+    taken_back.preview_here();
+    assert!(
+        taken_back.preview_to_run().is_some(),
+        "asked again of a new worker"
+    );
+    let mut stepped = editor.begin_gesture(Op::Pull(drag.clone())).unwrap();
+    for edit in [&mut taken_back, &mut stepped] {
+        while edit.step().unwrap() == Progress::Working {}
+    }
+    assert!(taken_back.moved_model().is_some());
+    assert_eq!(
+        taken_back.moved_model(),
+        stepped.moved_model(),
+        "previewed here again"
+    );
     let rest = editor.document().models[0].mesh.positions().to_vec();
     there.supply_preview(Ok(Previewed {
         version: 2,

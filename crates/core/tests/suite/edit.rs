@@ -561,6 +561,30 @@ fn a_dragged_feature_commits_what_apply_makes() {
     assert_eq!((editor.document(), editor.ops().len()), (&before, n_ops));
 }
 
+/// Brings a gesture stepped here and the same gesture previewed elsewhere (`worker` holds the
+/// worker's kept edit) to `op`, their `k`-th revision (none for the first): the one here
+/// steps, the one there gets the worker's preview of version `k + 1` and has nothing left
+/// to step here.
+fn revise_here_and_there(
+    k: usize,
+    op: Op,
+    [here, there]: [&mut sketchmesh_core::document::Edit; 2],
+    worker: &mut Option<sketchmesh_core::document::Edit>,
+) {
+    if k > 0 {
+        here.revise(op.clone());
+        there.revise(op);
+    }
+    while here.step().unwrap() == Progress::Working {}
+    let version = preview_elsewhere(there, worker);
+    assert_eq!(version, k + 1, "begun, then one version per revision");
+    assert_eq!(
+        there.step().unwrap(),
+        Progress::Waiting,
+        "nothing to step here"
+    );
+}
+
 /// A `sketch_feature` op along a segment across the middle of the view.
 fn feature_across_the_middle(kind: FeatureKind, amount: f64) -> Op {
     let sketch = input(segment(CENTRE - DVec2::X * 80.0, CENTRE + DVec2::X * 80.0));
@@ -590,18 +614,7 @@ fn a_feature_previewed_elsewhere_commits_what_apply_makes() {
     let mut worker: Option<Edit> = None;
     let mut limited = 0;
     for (k, &amount) in amounts.iter().enumerate() {
-        if k > 0 {
-            here.revise(op(amount));
-            there.revise(op(amount));
-        }
-        while here.step().unwrap() == Progress::Working {}
-        let version = preview_elsewhere(&mut there, &mut worker);
-        assert_eq!(version, k + 1, "begun, then one version per revision");
-        assert_eq!(
-            there.step().unwrap(),
-            Progress::Waiting,
-            "nothing to step here"
-        );
+        revise_here_and_there(k, op(amount), [&mut here, &mut there], &mut worker);
         assert_eq!(there.moved_model(), here.moved_model(), "amount {amount}");
         assert_eq!(
             there.limited_amount(),
@@ -845,18 +858,8 @@ fn an_optimization_previewed_elsewhere_commits_what_apply_makes() {
     let mut there = editor.begin_gesture(optimize(1.0, Mode::Smooth)).unwrap();
     let mut worker: Option<Edit> = None;
     for (k, &(scale, mode)) in settings.iter().enumerate() {
-        if k > 0 {
-            here.revise(optimize(scale, mode));
-            there.revise(optimize(scale, mode));
-        }
-        while here.step().unwrap() == Progress::Working {}
-        let version = preview_elsewhere(&mut there, &mut worker);
-        assert_eq!(version, k + 1, "begun, then one version per revision");
-        assert_eq!(
-            there.step().unwrap(),
-            Progress::Waiting,
-            "nothing to step here"
-        );
+        let op = optimize(scale, mode);
+        revise_here_and_there(k, op, [&mut here, &mut there], &mut worker);
         assert_eq!(there.moved_model(), here.moved_model(), "scale {scale}");
     }
     commit_elsewhere(there, worker, &mut editor);

@@ -2,11 +2,11 @@
 //! vertices under the default camera in an 800×600 viewport: an open wavy stroke across
 //! the front, a closed loop on the front and a cross section through the whole sphere. The
 //! target is well under 20 ms at 10k vertices natively. Results go in BENCHMARKS.md.
-//! Run with `cargo bench -p sketchmesh-core --bench add_curve -- --warm-up-time 1 --measurement-time 3`.
+//! Run with `cargo bench -p sketchmesh-core --bench core -- '^add_curve_' --warm-up-time 1 --measurement-time 3`.
 
 use std::hint::black_box;
 
-use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use criterion::{BenchmarkId, Criterion, criterion_group};
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::fibermesh::add_curve::{CurveShape, add_curve};
@@ -62,4 +62,3 @@ fn bench_add_curve(c: &mut Criterion) {
 }
 
 criterion_group!(benches, bench_add_curve);
-criterion_main!(benches);

@@ -19,19 +19,18 @@
 //! remesh and re-optimization of the band), each part of the given size. Target for each:
 //! under 100 ms at 10k natively.
 //! Run with
-//! `cargo bench -p sketchmesh-core --bench curve_edit -- --warm-up-time 1 --measurement-time 3`.
+//! `cargo bench -p sketchmesh-core --bench core -- '^(pull|cut|tunnel|extrude|merge)/' --warm-up-time 1 --measurement-time 3`.
 
 use std::hint::black_box;
 
-use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use criterion::{BenchmarkId, Criterion, criterion_group};
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
     Edit, Editor, MergeInput, ModelInput, Op, StrokeInput, StrokePairInput, TransformInput,
 };
 
-#[path = "common/fibermesh_shape.rs"]
-mod fibermesh_shape;
+use crate::common::fibermesh_shape;
 use fibermesh_shape::{HALF_AXES, VIEWPORT, ellipse_editor};
 
 /// The drag from the outline's rightmost point, `steps` samples, 50 px right in all.
@@ -255,4 +254,3 @@ criterion_group!(
     bench_extrude,
     bench_merge
 );
-criterion_main!(benches);

@@ -5,16 +5,15 @@
 //! drag frame), linear and with rotations, with exact handles and with soft ones (weight
 //! 100). Target (issue 6): a whole over-sketch under 40 ms
 //! natively, so `new` plus one `deform` well under 30 ms. Results go in BENCHMARKS.md. Run
-//! with `cargo bench -p sketchmesh-core --bench deform -- --warm-up-time 1 --measurement-time 3`.
+//! with `cargo bench -p sketchmesh-core --bench core -- '^deform_' --warm-up-time 1 --measurement-time 3`.
 
 use std::hint::black_box;
 
-use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use criterion::{BenchmarkId, Criterion, criterion_group};
 use glam::DVec3;
 use sketchmesh_core::deform::{EditParams, HandleFit, LaplacianEdit, Rotations};
 
-#[path = "common/oversketch.rs"]
-mod oversketch;
+use crate::common::oversketch;
 use oversketch::{oversketch_edit, sphere, targets};
 
 fn bench_deform(c: &mut Criterion) {
@@ -68,4 +67,3 @@ fn bench_deform(c: &mut Criterion) {
 }
 
 criterion_group!(benches, bench_deform);
-criterion_main!(benches);

@@ -4,15 +4,14 @@
 //! 40 px band and for a bump and suggestive contours over a lasso of about 20k vertices.
 //! Targets (issue 19): factor under 50 ms and a drag frame under 5 ms natively at 20k.
 //! Results go in BENCHMARKS.md. Run with
-//! `cargo bench -p sketchmesh-core --bench feature -- --warm-up-time 1 --measurement-time 3`.
+//! `cargo bench -p sketchmesh-core --bench core -- '^feature_' --warm-up-time 1 --measurement-time 3`.
 
 use std::hint::black_box;
 
-use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use criterion::{BenchmarkId, Criterion, criterion_group};
 use sketchmesh_core::feature::{FeatureEdit, FeatureKind};
 
-#[path = "common/feature.rs"]
-mod feature;
+use crate::common::feature;
 
 fn bench_feature(c: &mut Criterion) {
     let mesh = feature::sphere();
@@ -53,4 +52,3 @@ fn bench_feature(c: &mut Criterion) {
 }
 
 criterion_group!(benches, bench_feature);
-criterion_main!(benches);

@@ -4,11 +4,11 @@
 //! iteration), to convergence, and one iteration (targets: under 50 ms to first display and
 //! under 300 ms to convergence at 10k in the browser, which runs about 2-3x slower than
 //! native; one iteration at 10k under 8 ms natively). Results go in BENCHMARKS.md. Run with
-//! `cargo bench -p sketchmesh-core --bench fibermesh -- --warm-up-time 1 --measurement-time 3`.
+//! `cargo bench -p sketchmesh-core --bench core -- '^fibermesh_' --warm-up-time 1 --measurement-time 3`.
 
 use std::hint::black_box;
 
-use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use criterion::{BenchmarkId, Criterion, criterion_group};
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::StrokePoint;
@@ -88,4 +88,3 @@ fn bench_creation(c: &mut Criterion) {
 }
 
 criterion_group!(benches, bench_creation);
-criterion_main!(benches);

@@ -1,13 +1,13 @@
 //! glTF import and export of a 1 M-triangle model (issue target: import < 400 ms, export
 //! < 300 ms natively). The model is a 708 × 708 grid with a wave, written by Sketchmesh's own
 //! exporter, so the import measures the parse, accessor reads, weld and manifold check of a
-//! clean file. Run with `cargo bench -p sketchmesh-core --bench gltf`.
+//! clean file. Run with `cargo bench -p sketchmesh-core --bench core -- '^gltf '`.
 
 use std::alloc::System;
 use std::hint::black_box;
 use std::sync::Arc;
 
-use criterion::{Criterion, criterion_group, criterion_main};
+use criterion::{Criterion, criterion_group};
 use peakmem_alloc::{INSTRUMENTED_SYSTEM, PeakMemAlloc, PeakMemAllocTrait as _};
 use sketchmesh_core::document::{Document, Model};
 use sketchmesh_core::io::{ImportFile, ImportLimits, import_gltf, write_glb};
@@ -78,4 +78,3 @@ fn bench_gltf(c: &mut Criterion) {
 }
 
 criterion_group!(benches, bench_gltf);
-criterion_main!(benches);

@@ -5,17 +5,16 @@
 //! `optimize_rescale` is the exact result at a new scale on a kept [`Optimizer`] (what Apply
 //! costs after the slider moved); `optimize_preview_step` is one step of the slider's preview.
 //!
-//! `cargo bench -p sketchmesh-core --bench optimize`. The scans come from
+//! `cargo bench -p sketchmesh-core --bench core -- '^optimize_'`. The scans come from
 //! `../shared/testdata`; without it the bench says so and runs the generated mesh only.
 
 use std::hint::black_box;
 
-use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use criterion::{BenchmarkId, Criterion, criterion_group};
 use sketchmesh_core::mesh::{Mesh, primitives};
 use sketchmesh_core::optimize::{OptimizeParams, Optimizer, Selection, optimize};
 
-#[path = "common/scan.rs"]
-mod scan;
+use crate::common::scan;
 use scan::scan;
 
 fn bench_optimize(c: &mut Criterion) {
@@ -74,4 +73,3 @@ fn bench_optimize(c: &mut Criterion) {
 }
 
 criterion_group!(benches, bench_optimize);
-criterion_main!(benches);

@@ -9,11 +9,11 @@
 //! pushing a sixth of the outline out by up to 40 px; `oversketch_part` the same on a
 //! 40,962-vertex horned sphere with SEED's part ROI (SDF, mixtures, region growing) against
 //! the default ROI.
-//! Run with `cargo bench -p sketchmesh-core --bench oversketch -- --warm-up-time 1 --measurement-time 3`.
+//! Run with `cargo bench -p sketchmesh-core --bench core -- '^oversketch_' --warm-up-time 1 --measurement-time 3`.
 
 use std::hint::black_box;
 
-use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use criterion::{BenchmarkId, Criterion, criterion_group};
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::deform::HandleFit;
@@ -157,4 +157,3 @@ fn bench_part(c: &mut Criterion) {
 }
 
 criterion_group!(benches, bench_match, bench_whole, bench_part);
-criterion_main!(benches);

@@ -5,21 +5,16 @@
 //! `w ⊙ T`), a handles frame, the region laid flat in the disc, and a re-sketched profile
 //! swept along the curve. Targets (issue 22): setup under 100 ms natively at 50k; a frame well under
 //! 16 ms. Results go in BENCHMARKS.md. Run with
-//! `cargo bench -p sketchmesh-core --bench region_edit -- --warm-up-time 1 --measurement-time 3`.
+//! `cargo bench -p sketchmesh-core --bench core -- '^region_edit/' --warm-up-time 1 --measurement-time 3`.
 
 use std::hint::black_box;
 
-use criterion::{Criterion, criterion_group, criterion_main};
+use criterion::{Criterion, criterion_group};
 use glam::{DMat4, DQuat, DVec2, DVec3};
 use sketchmesh_core::mesh::primitives;
 use sketchmesh_core::region_edit::{Handle, Levels, RegionEdit, RegionSketch, checked_transform};
 
-#[path = "common/feature.rs"]
-#[allow(
-    dead_code,
-    reason = "its 41k sphere: this bench needs four times the vertices"
-)]
-mod feature;
+use crate::common::feature;
 
 /// The boundary's radius as a fraction of the sphere's on screen: the front-facing cap
 /// inside it holds 30% of the sphere, about 50k vertices.
@@ -125,4 +120,3 @@ fn bench_region_edit(c: &mut Criterion) {
 }
 
 criterion_group!(benches, bench_region_edit);
-criterion_main!(benches);

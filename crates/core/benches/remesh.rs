@@ -5,11 +5,11 @@
 //! out by 50%, so long chain edges and stretched triangles need splits, collapses and flips.
 //! Target: the whole remesh at 10k vertices well under 60 ms natively. Results go in
 //! BENCHMARKS.md. Run with
-//! `cargo bench -p sketchmesh-core --bench remesh -- --warm-up-time 1 --measurement-time 3`.
+//! `cargo bench -p sketchmesh-core --bench core -- '^remesh_' --warm-up-time 1 --measurement-time 3`.
 
 use std::hint::black_box;
 
-use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use criterion::{BenchmarkId, Criterion, criterion_group};
 use glam::DVec3;
 use sketchmesh_core::mesh::remesh::{Chain, RemeshParams, remesh};
 use sketchmesh_core::mesh::{HalfedgeId, Mesh, VertexId, primitives};
@@ -85,4 +85,3 @@ fn bench_remesh(c: &mut Criterion) {
 }
 
 criterion_group!(benches, bench_remesh);
-criterion_main!(benches);

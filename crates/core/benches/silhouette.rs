@@ -3,11 +3,11 @@
 //! [`silhouettes`] (normals, contour chaining, one occlusion ray per point, thinning,
 //! smoothing). The whole over-sketch (silhouettes, matching, deformation) should take under
 //! 40 ms natively, so silhouettes under 10 ms. Results go in BENCHMARKS.md. Run with
-//! `cargo bench -p sketchmesh-core --bench silhouette -- --warm-up-time 1 --measurement-time 3`.
+//! `cargo bench -p sketchmesh-core --bench core -- '^(bvh_build|bvh_refit|silhouettes)/' --warm-up-time 1 --measurement-time 3`.
 
 use std::hint::black_box;
 
-use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use criterion::{BenchmarkId, Criterion, criterion_group};
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::geometry::{Bvh, vertex_normals};
@@ -75,4 +75,3 @@ fn bench_silhouettes(c: &mut Criterion) {
 }
 
 criterion_group!(benches, bench_silhouettes);
-criterion_main!(benches);

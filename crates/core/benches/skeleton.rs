@@ -6,11 +6,11 @@
 //! placing a skeleton handle (the centroids of the region's slices too). Targets (issue 21):
 //! a frame under 16 ms at 500k (60 fps, the page), setup per stroke under 100 ms. Results go
 //! in BENCHMARKS.md. Run with
-//! `cargo bench -p sketchmesh-core --bench skeleton -- --warm-up-time 1 --measurement-time 3`.
+//! `cargo bench -p sketchmesh-core --bench core -- '^skeleton 500k/' --warm-up-time 1 --measurement-time 3`.
 
 use std::hint::black_box;
 
-use criterion::{Criterion, criterion_group, criterion_main};
+use criterion::{Criterion, criterion_group};
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::mesh::primitives;
@@ -90,4 +90,3 @@ fn bench_skeleton(c: &mut Criterion) {
 }
 
 criterion_group!(benches, bench_skeleton);
-criterion_main!(benches);

@@ -3,11 +3,11 @@
 //! The system is shaped like FiberMesh's (Nealen et al. 2007): the uniform Laplacian of a
 //! closed torus mesh stacked on soft positional rows `w x_i = w p_i` for every tenth vertex,
 //! with nothing fixed, solved for x, y and z together. Results go in BENCHMARKS.md. Run with
-//! `cargo bench -p sketchmesh-core --bench solve -- --warm-up-time 1 --measurement-time 3`.
+//! `cargo bench -p sketchmesh-core --bench core -- '^(factor|refactor_values|solve)/' --warm-up-time 1 --measurement-time 3`.
 
 use std::hint::black_box;
 
-use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use criterion::{BenchmarkId, Criterion, criterion_group};
 use glam::DVec3;
 use sketchmesh_core::geometry::uniform_laplacian;
 use sketchmesh_core::mesh::{Mesh, primitives};
@@ -90,4 +90,3 @@ fn bench_solve(c: &mut Criterion) {
 }
 
 criterion_group!(benches, bench_solve);
-criterion_main!(benches);

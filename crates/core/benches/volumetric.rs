@@ -5,17 +5,16 @@
 //! right-hand side, one back-substitution), *spread* and *solve* its two parts. Targets
 //! (issue 20): graph under 300 ms, factor under 200 ms, a frame under 16 ms in the page.
 //! Results go in BENCHMARKS.md. Run with
-//! `cargo bench -p sketchmesh-core --bench volumetric -- --warm-up-time 1 --measurement-time 3`.
+//! `cargo bench -p sketchmesh-core --bench core -- '^volumetric/' --warm-up-time 1 --measurement-time 3`.
 
 use std::f64::consts::PI;
 use std::hint::black_box;
 
-use criterion::{Criterion, criterion_group, criterion_main};
+use criterion::{Criterion, criterion_group};
 use glam::DVec3;
 use sketchmesh_core::volumetric::{Similarity, VolumetricEdit, VolumetricGraph};
 
-#[path = "common/volumetric_capsule.rs"]
-mod volumetric_capsule;
+use crate::common::volumetric_capsule;
 use volumetric_capsule::Capsule;
 
 fn bench_volumetric(c: &mut Criterion) {
@@ -60,4 +59,3 @@ fn bench_volumetric(c: &mut Criterion) {
 }
 
 criterion_group!(benches, bench_volumetric);
-criterion_main!(benches);

@@ -1174,6 +1174,10 @@ test('region (L): a curve on a shape, a loop around it, then a drag up moves the
     assert.equal(op.op, 'region_edit', 'the release commits the region edit');
     assert.equal(op.transform.length, 16);
     assert.ok(op.transform[13] > 0, `dragged up, moved up (${op.transform.slice(12, 15)})`);
+    // The commit (the region moved and remeshed) was computed by the page's worker while the
+    // preview stayed shown, not in a frame.
+    const timed = (await api(fresh.page, 'timings')).region_edit;
+    assert.equal(timed?.elsewhere_ms?.length, 1, `the worker computed the committed region edit: ${JSON.stringify(timed)}`);
     await assertEmbedded(fresh.page, created);
     await frames(fresh.page, 3);
     const after = await screenshot(fresh.page, out('region.png'));

@@ -61,7 +61,8 @@ mod tests {
         output.textures_delta.clear();
         let font = egui::FontId::proportional(14.0);
         let icons = Mode::ALL.map(|mode| (format!("{mode:?}"), mode.icon()));
-        let arrows = [(String::from("undo"), "↩"), (String::from("redo"), "↪")];
+        let (undo, redo) = crate::panels::toolbar::UNDO_REDO_ICONS;
+        let arrows = [(String::from("undo"), undo), (String::from("redo"), redo)];
         for (what, icon) in icons.into_iter().chain(arrows) {
             let drawn = ctx.fonts_mut(|fonts| fonts.has_glyphs(&font, icon));
             assert!(drawn, "the {what} icon {icon} is not in the fonts");

@@ -54,6 +54,9 @@ const TOUCH_WIDE: f32 = 1000.0;
 /// the row with them (and a finger's 44-point targets) still fits on one line. In the
 /// compact layout, whose tools that do not fit go behind ⋯, they always do.
 const ICONS_FROM: f32 = 1500.0;
+/// Undo's and redo's buttons in the compact layout: arrows, which leave the row room for
+/// more tools (the app's fonts must have them).
+pub const UNDO_REDO_ICONS: (&str, &str) = ("↩", "↪");
 
 /// Below this width (points) the compact toolbar's tools show their icons only: a phone's
 /// row then holds three tools beside the menus and the arrows, where it held one with labels.
@@ -142,9 +145,8 @@ pub fn toolbar_ui(
                 .ui(ui, |ui| file_buttons(ui, layout, editor, &mut action));
             ui.separator();
         }
-        // Compact, undo and redo are arrows, which leave the row room for more tools.
         let (undo, redo) = if layout.compact {
-            ("↩", "↪")
+            UNDO_REDO_ICONS
         } else {
             ("Undo", "Redo")
         };

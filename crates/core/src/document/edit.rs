@@ -605,15 +605,15 @@ impl Edit {
 
     /// An op that [makes one model](Op::makes_one_model), not computed yet: the page
     /// computes it in its worker with [`model_op`](super::model_op) on a copy of these models
-    /// and hands the result to [`Edit::supply_model`], so a long curve op, over-sketch or
-    /// fine creation never runs in a frame (a creation that steps in the frames is not one). `None` for any other edit, and once the result is computed.
+    /// and hands the result to [`Edit::supply_model`], so a long curve op, over-sketch,
+    /// region edit or fine creation never runs in a frame (a creation that steps in the
+    /// frames is not one). `None` for any other edit, and once the result is computed.
     pub fn model_op_to_run(&self) -> Option<(&[Arc<Model>], &Op)> {
-        match &self.work {
-            Work::Whole if !self.is_gesture && self.op.makes_one_model() => {
-                Some((&self.base.models, &self.op))
-            }
-            _ => None,
-        }
+        // A region edit's drag that ended is computed whole elsewhere too (a remesh, 0.1 s
+        // for the bunny), its preview still shown meanwhile; here, its kept region gives it.
+        let to_compute = matches!(self.work, Work::Whole | Work::Region(_));
+        (to_compute && !self.is_gesture && self.op.makes_one_model())
+            .then_some((&self.base.models[..], &self.op))
     }
 
     /// Completes an op of [`Edit::model_op_to_run`] with what

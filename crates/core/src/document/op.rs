@@ -143,8 +143,9 @@ impl Op {
 
     /// Whether the op makes one model, new or changed, and reads nothing but the document's
     /// models (a creation, the curve ops, the over-sketch, a curve's volumetric
-    /// deformation, an optimization, a feature): a pure function of the models and the op, which the page may compute
-    /// in its worker ([`model_op`](super::model_op)).
+    /// deformation, an optimization, a feature, a region edit, a scripted deformation): a
+    /// pure function of the models and the op, which the page may compute in its worker
+    /// ([`model_op`](super::model_op)).
     pub fn makes_one_model(&self) -> bool {
         matches!(
             self,
@@ -161,6 +162,8 @@ impl Op {
                 | Op::CurveDeform(_)
                 | Op::Optimize(_)
                 | Op::SketchFeature(_)
+                | Op::RegionEdit(_)
+                | Op::Deform(_)
         )
     }
 

@@ -61,19 +61,16 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
         Op::Transform(input) => replaced(transform_op(base, input)?),
         Op::Delete(input) => delete_op(base, input)?,
         Op::Duplicate(input) => duplicate_op(base, input)?,
-        Op::RegionEdit(input) => replaced(region_edit_op(base, input)?),
         Op::CurveHandle(input) => Outcome::Document(curve_handle_op(base, input)?),
         Op::HandleEdit(input) => Outcome::Document(handle_edit_op(base, input)?),
         Op::LinkHandles(input) => Outcome::Document(link_handles_op(base, input)?),
         Op::DeleteHandle(input) => Outcome::Document(delete_handle_op(base, input.handle)?),
-        Op::Deform(input) => replaced(deform_op(base, input)?),
         Op::Keyframe(input) => Outcome::Document(keyframe_op(base, input)?),
         Op::DeleteKeyframe(input) => Outcome::Document(delete_keyframe_op(base, input)?),
         Op::PoseAt(input) => Outcome::Document(pose_at_op(base, input)?),
         Op::Undo => Outcome::Undo,
         Op::Redo => Outcome::Redo,
-        // A creation, the curve ops, the over-sketch, a curve's volumetric deformation, an
-        // optimization and a feature: one model, from the models alone.
+        // The ops that make one model from the models alone (`Op::makes_one_model`).
         _ => replaced(model_op(base, op)?),
     })
 }
@@ -99,6 +96,8 @@ pub fn model_op(doc: &Document, op: &Op) -> Result<(usize, Model), CommandError>
         Op::CurveDeform(input) => curve_deform_op(doc, input),
         Op::Optimize(input) => optimize_op(doc, input),
         Op::SketchFeature(input) => feature_op(doc, input),
+        Op::RegionEdit(input) => region_edit_op(doc, input),
+        Op::Deform(input) => deform_op(doc, input),
         other => Err(CommandError::NotOneModel(other.name())),
     }
 }

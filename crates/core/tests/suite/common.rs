@@ -17,7 +17,7 @@ use sketchmesh_core::document::{
     OversketchFit, OversketchInput, Progress, StrokeInput, model_op,
 };
 use sketchmesh_core::geometry::Bvh;
-use sketchmesh_core::io::{decode_moved, encode_moved, write_glb};
+use sketchmesh_core::io::{decode_changed, decode_moved, encode_changed, encode_moved, write_glb};
 use sketchmesh_core::mesh::Mesh;
 use sketchmesh_core::oversketch::{ManualHandle, OversketchRoi};
 use sketchmesh_core::silhouette::silhouettes;
@@ -425,6 +425,20 @@ pub fn testdata() -> Option<PathBuf> {
     } else {
         panic!("{message} (set SKETCHMESH_NO_TESTDATA=1 to skip on purpose)");
     }
+}
+
+/// Computes `edit`'s op as the page's worker does ([`model_op`] on the models it is handed,
+/// the answer through the transfer buffer) and supplies it.
+pub fn supply_elsewhere(edit: &mut Edit) {
+    let (models, op) = edit.model_op_to_run().expect("an op computed elsewhere");
+    let doc = Document {
+        models: models.to_vec(),
+        ..Document::default()
+    };
+    let changed = model_op(&doc, op)
+        .map(|(index, model)| decode_changed(&encode_changed(index, &model)).expect("decodes"));
+    edit.supply_model(changed);
+    assert!(edit.model_op_to_run().is_none(), "computed once");
 }
 
 /// Ends `edit`'s gesture whose previews were computed elsewhere and commits it as the page

@@ -15,7 +15,9 @@ use sketchmesh_core::region_edit::{
     Handle, Levels, Motion, ProfileChange, RegionEdit, RegionError, RegionSketch, blend_at,
 };
 
-use crate::common::{circle, diagonal, digest, import_mesh, samples, screen, testdata_meshes};
+use crate::common::{
+    circle, diagonal, digest, import_mesh, samples, screen, supply_elsewhere, testdata_meshes,
+};
 
 const VIEWPORT: DVec2 = DVec2::new(800.0, 800.0);
 
@@ -325,6 +327,55 @@ fn the_op_replays_and_its_drag_commits_what_replay_gives() {
     assert_eq!(digest(editor.document()), digest(applied.document()));
     editor.redo().unwrap();
     assert_eq!(digest(editor.document()), after);
+}
+
+/// The page computes a region drag's commit (its remesh, 0.1 s on the bunny) in its worker:
+/// the preview stays shown until the result lands, and the result is the one the kept region
+/// gives here.
+#[test]
+fn a_region_drag_s_commit_computed_elsewhere_is_the_one_made_here() {
+    let mesh = primitives::icosphere(1.0, 4);
+    let sketch = curves(&mesh, 60.0, 140.0);
+    let mut editor = Editor::new();
+    editor.apply(import_mesh("sphere.glb", &mesh)).unwrap();
+    let remeshed = |y: f64| match op(&sketch, DMat4::from_translation(DVec3::Y * y), None) {
+        Op::RegionEdit(input) => Op::RegionEdit(RegionEditInput {
+            remesh: true,
+            ..input
+        }),
+        _ => unreachable!(),
+    };
+    let dragged = |editor: &Editor| {
+        let mut edit = editor.begin_gesture(remeshed(0.0)).unwrap();
+        for y in [0.2, 0.5] {
+            edit.revise(remeshed(y));
+            edit.step().unwrap();
+        }
+        edit.end_gesture();
+        edit
+    };
+    let mut here = editor.clone();
+    let edit = dragged(&here);
+    assert!(edit.model_op_to_run().is_some(), "offered to the worker");
+    edit.finish(&mut here).unwrap();
+
+    let mut edit = dragged(&editor);
+    let shown = edit.moved_model().map(|(index, p)| (index, p.to_vec()));
+    let embedded = edit.document().models[0].mesh.n_vertices();
+    assert!(
+        shown.is_some() && embedded > mesh.n_vertices(),
+        "the preview"
+    );
+    supply_elsewhere(&mut edit);
+    edit.finish(&mut editor).unwrap();
+    assert_eq!(digest(editor.document()), digest(here.document()));
+    assert_eq!(editor.session_json(), here.session_json());
+    let remeshed_model = &editor.document().models[0].mesh;
+    assert_ne!(
+        remeshed_model.n_vertices(),
+        embedded,
+        "the region was remeshed"
+    );
 }
 
 #[test]

@@ -4,7 +4,7 @@
 use std::collections::HashMap;
 use std::f64::consts::PI;
 
-use crate::common::{commit_elsewhere, digest, import_mesh, preview_elsewhere};
+use crate::common::{commit_elsewhere, digest, import_mesh, preview_elsewhere, supply_elsewhere};
 
 use glam::{DMat4, DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
@@ -460,6 +460,17 @@ fn the_deform_op_replays_bit_for_bit_and_a_refusal_changes_nothing() {
     );
     let replayed = Editor::replay_json(&json).unwrap();
     assert_eq!(digest(replayed.document()), digest(editor.document()));
+    // As the page replays it: computed in its worker, the same.
+    let mut elsewhere = Editor::new();
+    let ops = replayed.session().ops;
+    for op in ops {
+        let mut edit = elsewhere.begin(op).unwrap();
+        if edit.op().name() == "deform" {
+            supply_elsewhere(&mut edit);
+        }
+        edit.finish(&mut elsewhere).unwrap();
+    }
+    assert_eq!(digest(elsewhere.document()), digest(editor.document()));
 
     // The surface editor on the same constraints, then undone.
     let before = digest(editor.document());

@@ -1,0 +1,13 @@
+import { launch, openApp, settings, sleep } from './lib.mjs';
+import { execSync } from 'node:child_process';
+const { url, gpu } = settings();
+const browser = await launch(gpu);
+const { page } = await openApp(browser, url, gpu);
+await sleep(3000);
+const cpu = () => execSync("head -1 /proc/stat").toString().trim().split(/\s+/).slice(1).map(Number);
+const a = cpu(); await sleep(10000); const b = cpu();
+const d = b.map((x, i) => x - a[i]); const tot = d.reduce((s, x) => s + x, 0);
+console.log('idle page: busy %', (100 * (tot - d[3] - d[4]) / tot).toFixed(1));
+const n = await page.evaluate(() => new Promise((r) => { let n = 0; const f = () => { n++; }; const t0 = performance.now(); const loop = () => { n++; if (performance.now() - t0 < 3000) requestAnimationFrame(loop); else r(n); }; requestAnimationFrame(loop); }));
+console.log('rAF in 3 s', n);
+await browser.close();

@@ -80,7 +80,7 @@ use super::create::{CreateJob, is_stepped};
 use super::curve_edit::PullPreview;
 use super::feature::FeaturePreview;
 use super::optimize::OptimizePreview;
-use super::outcome::{Outcome, outcome, sharing_looks, with_imported, with_model};
+use super::outcome::{Outcome, made_by, outcome, sharing_looks, with_imported, with_model};
 use super::oversketch::{OutlinePiece, OutlinePreview};
 use super::region_edit::RegionPreview;
 use super::skeleton::HandleDrag;
@@ -630,7 +630,7 @@ impl Edit {
                 None if index == self.base.models.len() => model,
                 None => return Err(CommandError::NoSuchModel(index)),
             };
-            Ok(with_model(&self.base, (index, model)))
+            Ok(made_by(&self.base, &self.op, (index, model)))
         });
         self.work = match landed {
             Ok(outcome) => Work::Done(outcome),

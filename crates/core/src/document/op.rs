@@ -143,8 +143,9 @@ impl Op {
 
     /// Whether the op makes one model, new or changed, and reads nothing but the document's
     /// models (a creation, the curve ops, the over-sketch, a curve's volumetric
-    /// deformation, an optimization, a feature, a region edit, a scripted deformation): a
-    /// pure function of the models and the op, which the page may compute in its worker
+    /// deformation, an optimization, a feature, a region edit, a scripted deformation, a
+    /// merge, whose second model goes when the merged one lands): a pure function of the
+    /// models and the op, which the page may compute in its worker
     /// ([`model_op`](super::model_op)).
     pub fn makes_one_model(&self) -> bool {
         matches!(
@@ -164,6 +165,7 @@ impl Op {
                 | Op::SketchFeature(_)
                 | Op::RegionEdit(_)
                 | Op::Deform(_)
+                | Op::Merge(_)
         )
     }
 
@@ -297,6 +299,14 @@ pub struct TransformInput {
 pub struct MergeInput {
     /// The two models; the merged one takes the lower index, the other goes.
     pub models: [usize; 2],
+}
+
+impl MergeInput {
+    /// The index the merged model takes and the one of the model that goes.
+    pub fn kept_and_gone(&self) -> (usize, usize) {
+        let [i, j] = self.models;
+        (i.min(j), i.max(j))
+    }
 }
 
 /// An op on one whole model (`delete`, `duplicate`): `{"op":"delete","model":0}`.

@@ -51,13 +51,6 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
             Outcome::Document(next)
         }
         Op::Import(input) => with_imported(base, input, import_files(input)?),
-        Op::Merge(input) => {
-            let (kept, gone, merged) = curve_edit::merge_op(base, input)?;
-            let mut next = base.clone();
-            next.models[kept] = Arc::new(merged);
-            remove_model(&mut next, gone);
-            Outcome::Document(next)
-        }
         Op::Transform(input) => replaced(transform_op(base, input)?),
         Op::Delete(input) => delete_op(base, input)?,
         Op::Duplicate(input) => duplicate_op(base, input)?,
@@ -71,7 +64,7 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
         Op::Undo => Outcome::Undo,
         Op::Redo => Outcome::Redo,
         // The ops that make one model from the models alone (`Op::makes_one_model`).
-        _ => replaced(model_op(base, op)?),
+        _ => made_by(base, op, model_op(base, op)?),
     })
 }
 
@@ -98,6 +91,7 @@ pub fn model_op(doc: &Document, op: &Op) -> Result<(usize, Model), CommandError>
         Op::SketchFeature(input) => feature_op(doc, input),
         Op::RegionEdit(input) => region_edit_op(doc, input),
         Op::Deform(input) => deform_op(doc, input),
+        Op::Merge(input) => curve_edit::merge_op(doc, input),
         other => Err(CommandError::NotOneModel(other.name())),
     }
 }
@@ -137,6 +131,16 @@ pub(super) fn sharing_looks(before: &Model, mut model: Model) -> Model {
         model.keyframes.clone_from(&before.keyframes);
     }
     model
+}
+
+/// `base` once `op` made model `index` ([`model_op`]): it replaces the one there, or is
+/// added when `index` is past the models; a merge's second model goes.
+pub(super) fn made_by(base: &Document, op: &Op, made: (usize, Model)) -> Outcome {
+    let mut outcome = with_model(base, made);
+    if let (Op::Merge(input), Outcome::Document(next)) = (op, &mut outcome) {
+        remove_model(next, input.kept_and_gone().1);
+    }
+    outcome
 }
 
 /// `base` with model `index` replaced, or added when `index` is past its models.

@@ -17,7 +17,7 @@ use sketchmesh_core::document::{
 use sketchmesh_core::fibermesh::cut::CutError;
 use sketchmesh_core::geometry::{Bvh, enclosed_volume};
 
-use crate::common::{import_mesh, samples, segment, testdata_meshes};
+use crate::common::{import_mesh, samples, segment, supply_elsewhere, testdata_meshes};
 
 const VIEWPORT: DVec2 = DVec2::new(800.0, 600.0);
 const CENTRE: DVec2 = DVec2::new(400.0, 300.0);
@@ -598,6 +598,15 @@ fn two_overlapping_shapes_merge_into_one_that_keeps_the_union_s_volume() {
         "{volume} against {union}"
     );
     let merged = doc.clone();
+    // As the page computes it: in its worker, the second model going when it lands.
+    let mut elsewhere = two_shapes_overlapping(60.0);
+    let mut edit = elsewhere
+        .begin(Op::Merge(MergeInput { models: [1, 0] }))
+        .unwrap();
+    supply_elsewhere(&mut edit);
+    edit.finish(&mut elsewhere).unwrap();
+    assert_eq!(elsewhere.document(), &merged);
+    assert_eq!(elsewhere.session_json(), editor.session_json());
     editor.apply(Op::Undo).unwrap();
     assert_eq!(editor.document(), &before);
     editor.apply(Op::Redo).unwrap();

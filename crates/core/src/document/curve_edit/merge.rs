@@ -16,19 +16,19 @@ use crate::model::Model;
 /// remeshed and re-optimized.
 const MERGE_REGION: f64 = 0.08;
 
-/// Applies a `merge` op: returns the index the merged model takes (the lower), the index of
-/// the model that goes, and the merged model (the first's name and appearance).
+/// Applies a `merge` op: returns the index the merged model takes (the lower) and the
+/// merged model (the first's name and appearance); the other model goes when it lands
+/// ([`MergeInput::kept_and_gone`]).
 ///
 /// Errors: [`CommandError::NoSuchModel`]; [`CommandError::Merge`] for one model named twice
 /// or models that do not merge; remesher and solver failures.
-pub fn merge_op(doc: &Document, input: &MergeInput) -> Result<(usize, usize, Model), CommandError> {
-    let [i, j] = input.models;
-    target(doc, i)?;
-    target(doc, j)?;
-    if i == j {
+pub fn merge_op(doc: &Document, input: &MergeInput) -> Result<(usize, Model), CommandError> {
+    let (kept, gone) = input.kept_and_gone();
+    target(doc, kept)?;
+    target(doc, gone)?;
+    if kept == gone {
         return Err(MergeError::SameModel.into());
     }
-    let (kept, gone) = (i.min(j), i.max(j));
     let (first, second) = (&doc.models[kept], &doc.models[gone]);
     let merged = merge(&first.mesh, &second.mesh)?;
     let mesh = merged.mesh;
@@ -68,5 +68,5 @@ pub fn merge_op(doc: &Document, input: &MergeInput) -> Result<(usize, usize, Mod
         // The merged surface has new vertices: no old pose fits it.
         keyframes: Vec::new(),
     };
-    Ok((kept, gone, model))
+    Ok((kept, model))
 }

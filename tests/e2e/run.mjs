@@ -1667,6 +1667,7 @@ test('merge by touch: a second shape moved into the first with the handles and p
     assert.equal(op.op, 'merge', 'Merge joins the selected shape with the one it overlaps');
     const timed = (await api(fresh.page, 'timings')).merge;
     assert.equal(timed?.elsewhere_ms?.length, 1, `the page's worker computed the merge, not a frame: ${JSON.stringify(timed)}`);
+    console.log(`    merge: ${Math.round(timed.elsewhere_ms[0])} ms in the worker, ${timed.finish_ms.map(Math.round)} ms of the frame that landed it`);
     const stats = await api(fresh.page, 'stats');
     assert.equal(stats.models, 1, 'one model is left');
     assert.equal(stats.triangles, 2 * stats.vertices - 4, `a closed mesh of genus 0: ${JSON.stringify(stats)}`);

@@ -56,6 +56,16 @@ const PROGRESS_AFTER_S: f64 = 0.25;
 /// runs every frame, whatever it costs (a factorization can take longer).
 pub const FRAME_BUDGET_MS: f64 = 12.0;
 
+/// A frame whose own work has taken this long (ms) leaves the scene's rebuild, then the
+/// autosave, to the next frames, one each: a large result's landing (a million triangles
+/// decoded; their arrays built and uploaded; the session with the file written) is then
+/// three frames of about 100 ms in the page rather than one of 250 ms and one of 100.
+const SPREAD_AFTER_MS: f64 = 50.0;
+
+/// How many busy frames in a row may leave the autosave to the next one.
+#[cfg(target_arch = "wasm32")]
+const AUTOSAVE_WAITS: u8 = 3;
+
 /// State shared with the page API (`window.sketchmesh`), which runs outside frames.
 pub struct Shared {
     /// The document and its history.
@@ -169,6 +179,15 @@ pub struct SketchApp {
     is_edit_new: bool,
     /// Where the time of the edit in progress goes.
     edit_clock: EditClock,
+    /// What this frame's own work (the edit's steps and landing, the scene's rebuild) has
+    /// taken so far, in ms (see [`SPREAD_AFTER_MS`]).
+    frame_work_ms: f64,
+    /// Whether the last frame left the scene's rebuild to this one, which then does it
+    /// whatever its own work took.
+    rebuild_waited: bool,
+    /// How many frames in a row left the autosave to the next (at most [`AUTOSAVE_WAITS`]).
+    #[cfg(target_arch = "wasm32")]
+    autosave_waits: u8,
     options: ViewOptions,
     show_help: bool,
     status: Option<(String, f64)>,
@@ -259,6 +278,10 @@ impl SketchApp {
             falloff_panel: Default::default(),
             is_edit_new: false,
             edit_clock: EditClock::default(),
+            frame_work_ms: 0.0,
+            rebuild_waited: false,
+            #[cfg(target_arch = "wasm32")]
+            autosave_waits: 0,
             options: ViewOptions {
                 wireframe: false,
                 grid: true,
@@ -664,12 +687,19 @@ impl SketchApp {
     }
 
     /// Hands the document to the page's autosave when it is due, and keeps frames coming
-    /// while a change waits for it.
+    /// while a change waits for it; a frame already spent ([`SPREAD_AFTER_MS`]) leaves the
+    /// write to one of the next [`AUTOSAVE_WAITS`].
     #[cfg(target_arch = "wasm32")]
     fn autosave(&mut self, ctx: &egui::Context, now: f64) {
+        let revision = self.shared.borrow().revision();
+        let pending = self.shared.borrow().autosave.is_pending(revision);
+        if pending && self.autosave_waits < AUTOSAVE_WAITS && self.is_frame_spent(ctx) {
+            self.autosave_waits += 1;
+            return;
+        }
+        self.autosave_waits = 0;
         let (record, started) = {
             let mut shared = self.shared.borrow_mut();
-            let revision = shared.revision();
             if !shared.autosave.due(revision, now) {
                 if shared.autosave.is_pending(revision) {
                     ctx.request_repaint_after(std::time::Duration::from_secs_f64(
@@ -1228,13 +1258,15 @@ impl SketchApp {
                 shared.camera.dolly(1.0 / f64::from(zoom));
             }
         }
+        let started = clock::now_ms();
         self.step_edit(ui.ctx());
         self.step_replay(ui.ctx());
+        self.frame_work_ms += clock::now_ms() - started;
         let shared = self.shared.borrow();
         let shown = (self.edit.as_ref()).map_or(shared.editor.document(), Edit::document);
         self.textures.poll(shown, ui.ctx());
         drop(shared);
-        self.update_geometry();
+        self.update_geometry(ui.ctx());
         if self.has_renderer {
             let camera = self.shared.borrow().camera.camera();
             let aspect = f64::from(viewport.width() / viewport.height().max(1.0));
@@ -1306,7 +1338,7 @@ impl SketchApp {
     /// Rebuilds the GPU arrays when the document drawn changed (the editor's, or the one the
     /// edit in progress shows, such as a shape being created), and moves a model's vertices
     /// in place while the edit moves them (a pull's preview).
-    fn update_geometry(&mut self) {
+    fn update_geometry(&mut self, ctx: &egui::Context) {
         let edit = self.edit.as_ref();
         let source = (
             self.shared.borrow().revision(),
@@ -1318,6 +1350,12 @@ impl SketchApp {
         let moved = edit.and_then(Edit::moved_model);
         let motion_ended = self.shown_motion.is_some() && moved.is_none();
         let rebuilt = source != self.geometry_source || motion_ended;
+        if rebuilt && !std::mem::take(&mut self.rebuild_waited) && self.is_frame_spent(ctx) {
+            // The next frame rebuilds; this one draws what it drew (a moved model's
+            // positions belong to the document to be built).
+            self.rebuild_waited = true;
+            return;
+        }
         if rebuilt {
             let shared = self.shared.borrow();
             let document = edit.map_or(shared.editor.document(), Edit::document);
@@ -1330,6 +1368,7 @@ impl SketchApp {
             self.geometry = Arc::new(built);
             // What a new document costs the frame before the GPU sees it (the page bench).
             let ms = clock::now_ms() - started;
+            self.frame_work_ms += ms;
             drop(shared);
             clock::record(
                 &mut self.shared.borrow_mut().timings.of("scene").frame_ms,
@@ -1358,6 +1397,16 @@ impl SketchApp {
                 first => self.frame_models_from(first),
             }
         }
+    }
+
+    /// Whether this frame's own work is past [`SPREAD_AFTER_MS`], so that what is left waits
+    /// for the next frame (which is asked for).
+    fn is_frame_spent(&self, ctx: &egui::Context) -> bool {
+        let spent = self.frame_work_ms > SPREAD_AFTER_MS;
+        if spent {
+            ctx.request_repaint();
+        }
+        spent
     }
 
     /// Shows the animation's pose of each model while it plays; when it has played
@@ -1781,8 +1830,7 @@ impl eframe::App for SketchApp {
         self.run_imports(&ctx);
         let now = ctx.input(|i| i.time);
         self.follow_page(now);
-        #[cfg(target_arch = "wasm32")]
-        self.autosave(&ctx, now);
+        self.frame_work_ms = 0.0;
         if self.status.as_ref().is_some_and(|(_, until)| *until < now) {
             self.status = None;
         }
@@ -1832,6 +1880,10 @@ impl eframe::App for SketchApp {
         if let Some((model, action)) = context_menu_ui(&ctx, &mut self.context_menu) {
             self.context_action(model, action, now);
         }
+        // After the frame's edits land, and left to a later frame if their work filled this
+        // one.
+        #[cfg(target_arch = "wasm32")]
+        self.autosave(&ctx, now);
         let backend = self.shared.borrow().backend.clone();
         panels::help::help_ui(&ctx, &mut self.show_help, &backend, self.router.pen_seen());
         let mut shared = self.shared.borrow_mut();

@@ -256,7 +256,7 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
 /// it is the new document's first work, not something to clear.
 fn restore(shared: &mut Shared, text: Option<&str>, at_start: bool) -> Result<(), String> {
     if let Some(text) = text {
-        let restored = serde_json::from_str::<Record>(text)
+        let restored = Record::from_json(text)
             .map_err(|e| format!("the autosave record is not readable ({e})"))
             .and_then(|record| Ok((record.replay()?, record)));
         match restored {
@@ -290,7 +290,7 @@ fn restore(shared: &mut Shared, text: Option<&str>, at_start: bool) -> Result<()
 /// Errors: a sentence when the page has no store or the call throws at once.
 pub fn keep_and_start(record: Option<&Record>, title: &str) -> Result<(), String> {
     let text = match record {
-        Some(record) => JsValue::from_str(&record_text(record)?),
+        Some(record) => JsValue::from_str(&record.to_json()),
         None => JsValue::NULL,
     };
     call_page(
@@ -305,7 +305,7 @@ pub fn keep_and_start(record: Option<&Record>, title: &str) -> Result<(), String
 ///
 /// Errors: a sentence when the page has no store or the call throws at once.
 pub fn write_autosave(record: &Record) -> Result<(), String> {
-    let text = JsValue::from_str(&record_text(record)?);
+    let text = JsValue::from_str(&record.to_json());
     call_page("sketchmeshAutosave", "save", &[text])
 }
 
@@ -315,10 +315,6 @@ pub fn write_autosave(record: &Record) -> Result<(), String> {
 /// Errors: a sentence when the page has no panel.
 pub fn documents(method: &str) -> Result<(), String> {
     call_page("sketchmeshDocuments", method, &[])
-}
-
-fn record_text(record: &Record) -> Result<String, String> {
-    serde_json::to_string(record).map_err(|e| e.to_string())
 }
 
 /// Calls `window[object][method](...args)`.

@@ -56,15 +56,20 @@ const PROGRESS_AFTER_S: f64 = 0.25;
 /// runs every frame, whatever it costs (a factorization can take longer).
 pub const FRAME_BUDGET_MS: f64 = 12.0;
 
-/// A frame whose own work has taken this long (ms) leaves the scene's rebuild, then the
-/// autosave, to the next frames, one each: a large result's landing (a million triangles
-/// decoded; their arrays built and uploaded; the session with the file written) is then
-/// three frames of about 100 ms in the page rather than one of 250 ms and one of 100.
+/// A frame whose own work has taken this long (ms) leaves the scene's rebuild, then its
+/// upload, then the autosave, to the next frames, one each: a large result's landing (a
+/// million triangles decoded; their arrays built; uploaded; the session with the file
+/// written) is then four frames of at most about 100 ms in the page rather than one of
+/// 250 ms and one of 190.
 const SPREAD_AFTER_MS: f64 = 50.0;
 
 /// How many busy frames in a row may leave the autosave to the next one.
 #[cfg(target_arch = "wasm32")]
 const AUTOSAVE_WAITS: u8 = 3;
+
+/// What the drawn scene was built from: the editor's revision, the edit's number and
+/// revision when it shows another document than the editor's, and the textures' version.
+type GeometrySource = (autosave::Revision, Option<(u64, u64)>, u64);
 
 /// State shared with the page API (`window.sketchmesh`), which runs outside frames.
 pub struct Shared {
@@ -137,7 +142,10 @@ pub struct SketchApp {
     geometry: Arc<SceneGeometry>,
     /// What `geometry` was built from: the editor's revision, and the edit's number and
     /// revision when it shows another document than the editor's.
-    geometry_source: (autosave::Revision, Option<(u64, u64)>, u64),
+    geometry_source: GeometrySource,
+    /// A scene built in a frame its work had filled, with what it was built from: the next
+    /// frame shows (and uploads) it.
+    stashed_geometry: Option<(GeometrySource, Arc<SceneGeometry>)>,
     /// Imported models' textures, decoded for the view.
     textures: Textures,
     /// The edit generation whose moved model `geometry` shows, if it shows one (it is rebuilt
@@ -279,6 +287,7 @@ impl SketchApp {
             is_edit_new: false,
             edit_clock: EditClock::default(),
             frame_work_ms: 0.0,
+            stashed_geometry: None,
             rebuild_waited: false,
             #[cfg(target_arch = "wasm32")]
             autosave_waits: 0,
@@ -1350,13 +1359,22 @@ impl SketchApp {
         let moved = edit.and_then(Edit::moved_model);
         let motion_ended = self.shown_motion.is_some() && moved.is_none();
         let rebuilt = source != self.geometry_source || motion_ended;
-        if rebuilt && !std::mem::take(&mut self.rebuild_waited) && self.is_frame_spent(ctx) {
-            // The next frame rebuilds; this one draws what it drew (a moved model's
-            // positions belong to the document to be built).
-            self.rebuild_waited = true;
-            return;
-        }
-        if rebuilt {
+        let stashed = self.stashed_geometry.take();
+        let had_stash = stashed.is_some();
+        if rebuilt && let Some((built_for, built)) = stashed.filter(|(s, _)| *s == source) {
+            // Built in the last frame, which its work had filled: shown from this one, which
+            // uploads it (that upload is this frame's work).
+            self.geometry = built;
+            self.geometry_source = built_for;
+            self.shown_motion = None;
+            self.frame_work_ms += SPREAD_AFTER_MS;
+        } else if rebuilt {
+            if !std::mem::take(&mut self.rebuild_waited) && self.is_frame_spent(ctx) {
+                // The next frame rebuilds; this one draws what it drew (a moved model's
+                // positions belong to the document to be built).
+                self.rebuild_waited = true;
+                return;
+            }
             let shared = self.shared.borrow();
             let document = edit.map_or(shared.editor.document(), Edit::document);
             let generation = self.geometry.generation + 1;
@@ -1364,8 +1382,12 @@ impl SketchApp {
             // The arrays of unchanged models are copied, unless textures were decoded since.
             let previous =
                 (self.geometry_source.2 == self.textures.version).then_some(&*self.geometry);
-            let built = SceneGeometry::build(document, generation, &self.textures, previous);
-            self.geometry = Arc::new(built);
+            let built = Arc::new(SceneGeometry::build(
+                document,
+                generation,
+                &self.textures,
+                previous,
+            ));
             // What a new document costs the frame before the GPU sees it (the page bench).
             let ms = clock::now_ms() - started;
             self.frame_work_ms += ms;
@@ -1374,6 +1396,13 @@ impl SketchApp {
                 &mut self.shared.borrow_mut().timings.of("scene").frame_ms,
                 ms,
             );
+            if !had_stash && source != self.geometry_source && self.is_frame_spent(ctx) {
+                // Its upload waits for the next frame, which shows it (unless the document
+                // moves on meanwhile: then that frame builds and shows the next one).
+                self.stashed_geometry = Some((source, built));
+                return;
+            }
+            self.geometry = built;
             self.geometry_source = source;
             self.shown_motion = None;
         }
@@ -1399,10 +1428,10 @@ impl SketchApp {
         }
     }
 
-    /// Whether this frame's own work is past [`SPREAD_AFTER_MS`], so that what is left waits
+    /// Whether this frame's own work has reached [`SPREAD_AFTER_MS`], so that what is left waits
     /// for the next frame (which is asked for).
     fn is_frame_spent(&self, ctx: &egui::Context) -> bool {
-        let spent = self.frame_work_ms > SPREAD_AFTER_MS;
+        let spent = self.frame_work_ms >= SPREAD_AFTER_MS;
         if spent {
             ctx.request_repaint();
         }

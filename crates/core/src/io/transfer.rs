@@ -4,7 +4,9 @@
 //! Why not serde: the buffer is decoded on the page's main thread, where every millisecond is
 //! a frame's. A million-triangle import is about 60 MB of arrays; element-wise formats
 //! (postcard, bincode) decode them one number at a time, several times slower than the
-//! bulk copies ([`bytemuck::pod_collect_to_vec`]) used here, which run at memory speed.
+//! bulk copies used here, which run at memory speed: each array is copied once, from wherever
+//! the buffer is ([`TransferSource`]: in the page, still in JavaScript's memory) straight
+//! into its place.
 //!
 //! Not a file format: both ends are the same build of this crate (the page loads one wasm
 //! file into both instances), so the layout is whatever this file writes, in the machine's
@@ -48,7 +50,7 @@ pub fn encode_imported(imported: &Imported) -> Vec<u8> {
 /// The import [`encode_imported`] wrote.
 ///
 /// Errors: [`TransferError`] when the buffer is not one it wrote.
-pub fn decode_imported(bytes: &[u8]) -> Result<Imported, TransferError> {
+pub fn decode_imported(bytes: &(impl TransferSource + ?Sized)) -> Result<Imported, TransferError> {
     let mut input = Reader::new(bytes);
     let imported = Imported {
         models: input.models()?,
@@ -81,7 +83,7 @@ pub fn encode_models(models: &[&Model]) -> Vec<u8> {
 /// The models [`encode_models`] wrote.
 ///
 /// Errors: [`TransferError`] when the buffer is not one it wrote.
-pub fn decode_models(bytes: &[u8]) -> Result<Vec<Model>, TransferError> {
+pub fn decode_models(bytes: &(impl TransferSource + ?Sized)) -> Result<Vec<Model>, TransferError> {
     let mut input = Reader::new(bytes);
     let models = input.models()?;
     input.end()?;
@@ -100,7 +102,9 @@ pub fn encode_changed(index: usize, model: &Model) -> Vec<u8> {
 /// The changed model [`encode_changed`] wrote.
 ///
 /// Errors: [`TransferError`] when the buffer is not one it wrote.
-pub fn decode_changed(bytes: &[u8]) -> Result<(usize, Model), TransferError> {
+pub fn decode_changed(
+    bytes: &(impl TransferSource + ?Sized),
+) -> Result<(usize, Model), TransferError> {
     let mut input = Reader::new(bytes);
     let index = input.count()?;
     let model = input.models()?.pop();
@@ -141,7 +145,7 @@ pub fn encode_moved(
 /// The preview [`encode_moved`] wrote.
 ///
 /// Errors: [`TransferError`] when the buffer is not one it wrote.
-pub fn decode_moved(bytes: &[u8]) -> Result<Previewed, TransferError> {
+pub fn decode_moved(bytes: &(impl TransferSource + ?Sized)) -> Result<Previewed, TransferError> {
     let mut input = Reader::new(bytes);
     let previewed = Previewed {
         version: input.count()?,
@@ -150,6 +154,35 @@ pub fn decode_moved(bytes: &[u8]) -> Result<Previewed, TransferError> {
     };
     input.end()?;
     Ok(previewed)
+}
+
+/// Bytes a buffer is decoded from: a slice, or in the page the buffer the worker sent, which
+/// is never copied whole (each array is copied out of it into its place).
+pub trait TransferSource {
+    /// How many bytes there are.
+    fn size(&self) -> usize;
+    /// Fills `into` with the bytes from `at` on (the range is within [`TransferSource::size`]).
+    fn copy_out(&self, at: usize, into: &mut [u8]);
+}
+
+impl TransferSource for [u8] {
+    fn size(&self) -> usize {
+        self.len()
+    }
+
+    fn copy_out(&self, at: usize, into: &mut [u8]) {
+        into.copy_from_slice(&self[at..at + into.len()]);
+    }
+}
+
+impl TransferSource for Vec<u8> {
+    fn size(&self) -> usize {
+        self.len()
+    }
+
+    fn copy_out(&self, at: usize, into: &mut [u8]) {
+        self.as_slice().copy_out(at, into);
+    }
 }
 
 #[derive(Default)]
@@ -288,18 +321,26 @@ impl Writer {
     }
 }
 
-struct Reader<'a> {
-    bytes: &'a [u8],
+struct Reader<'a, S: TransferSource + ?Sized> {
+    source: &'a S,
+    /// Where the next read starts.
+    at: usize,
     /// The image table, read first.
     images: Vec<Arc<Image>>,
 }
 
-impl<'a> Reader<'a> {
-    fn new(bytes: &'a [u8]) -> Self {
+impl<'a, S: TransferSource + ?Sized> Reader<'a, S> {
+    fn new(source: &'a S) -> Self {
         Reader {
-            bytes,
+            source,
+            at: 0,
             images: Vec::new(),
         }
+    }
+
+    /// The bytes not read yet.
+    fn left(&self) -> usize {
+        self.source.size() - self.at
     }
 
     /// What [`Writer::models`] wrote: the image table, then the models.
@@ -315,20 +356,21 @@ impl<'a> Reader<'a> {
 
     /// Refuses bytes after the end.
     fn end(&self) -> Result<(), TransferError> {
-        if self.bytes.is_empty() {
+        if self.left() == 0 {
             Ok(())
         } else {
             Err(TransferError("bytes left over"))
         }
     }
 
-    fn take(&mut self, n: usize) -> Result<&[u8], TransferError> {
-        if n > self.bytes.len() {
+    /// Fills `into` with the next bytes.
+    fn read_into(&mut self, into: &mut [u8]) -> Result<(), TransferError> {
+        if into.len() > self.left() {
             return Err(TransferError("cut short"));
         }
-        let (taken, rest) = self.bytes.split_at(n);
-        self.bytes = rest;
-        Ok(taken)
+        self.source.copy_out(self.at, into);
+        self.at += into.len();
+        Ok(())
     }
 
     fn count(&mut self) -> Result<usize, TransferError> {
@@ -337,7 +379,9 @@ impl<'a> Reader<'a> {
     }
 
     fn pod<T: Pod>(&mut self) -> Result<T, TransferError> {
-        Ok(bytemuck::pod_read_unaligned(self.take(size_of::<T>())?))
+        let mut value = T::zeroed();
+        self.read_into(bytemuck::bytes_of_mut(&mut value))?;
+        Ok(value)
     }
 
     fn pods<T: Pod>(&mut self) -> Result<Vec<T>, TransferError> {
@@ -345,7 +389,14 @@ impl<'a> Reader<'a> {
         let size = n
             .checked_mul(size_of::<T>())
             .ok_or(TransferError("a length out of range"))?;
-        Ok(bytemuck::pod_collect_to_vec(self.take(size)?))
+        if size > self.left() {
+            return Err(TransferError("cut short"));
+        }
+        // Zeroed memory fresh from the allocator is not written twice: the copy is the one
+        // pass over the array.
+        let mut values = bytemuck::zeroed_vec::<T>(n);
+        self.read_into(bytemuck::cast_slice_mut(&mut values))?;
+        Ok(values)
     }
 
     fn flag(&mut self) -> Result<bool, TransferError> {
@@ -367,7 +418,7 @@ impl<'a> Reader<'a> {
         let n = self.count()?;
         // No more room than the bytes left could fill, so a corrupt count cannot reserve
         // gigabytes.
-        let mut items = Vec::with_capacity(n.min(self.bytes.len() / size_of::<T>().max(1)));
+        let mut items = Vec::with_capacity(n.min(self.left() / size_of::<T>().max(1)));
         for _ in 0..n {
             items.push(each(self)?);
         }

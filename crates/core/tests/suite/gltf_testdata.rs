@@ -11,8 +11,8 @@ use std::time::{Duration, Instant};
 
 use crate::common::testdata;
 use sketchmesh_core::io::{
-    GltfError, ImportFile, ImportLimits, Imported, decode_imported, encode_imported, import_gltf,
-    inspect_gltf,
+    GltfError, ImportFile, ImportLimits, Imported, TransferSource, decode_imported,
+    encode_imported, import_gltf, inspect_gltf,
 };
 
 /// The file and every other file in its directory (a .gltf's .bin and images).
@@ -241,6 +241,38 @@ fn assert_crosses_unchanged(imported: &Imported, file: &str) {
             decode_imported(&bytes[..cut]).is_err(),
             "{file} cut at {cut}"
         );
+    }
+    // As the page decodes it, from the buffer where it arrived: every byte is copied out of
+    // it exactly once.
+    let counted = Counted {
+        bytes: &bytes,
+        copied: std::cell::RefCell::new(vec![0_u8; bytes.len()]),
+    };
+    let arrived = decode_imported(&counted).unwrap_or_else(|e| panic!("{file}: {e}"));
+    assert_eq!(arrived.models, imported.models, "{file}");
+    let copied = counted.copied.into_inner();
+    assert!(
+        copied.iter().all(|&n| n == 1),
+        "{file}: a byte copied twice or never"
+    );
+}
+
+/// A buffer that counts how often each of its bytes is copied out.
+struct Counted<'a> {
+    bytes: &'a [u8],
+    copied: std::cell::RefCell<Vec<u8>>,
+}
+
+impl TransferSource for Counted<'_> {
+    fn size(&self) -> usize {
+        self.bytes.len()
+    }
+
+    fn copy_out(&self, at: usize, into: &mut [u8]) {
+        self.bytes.copy_out(at, into);
+        for n in &mut self.copied.borrow_mut()[at..at + into.len()] {
+            *n += 1;
+        }
     }
 }
 

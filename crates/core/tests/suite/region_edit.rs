@@ -334,16 +334,13 @@ fn the_op_replays_and_its_drag_commits_what_replay_gives() {
 /// gives here.
 #[test]
 fn a_region_drag_s_commit_computed_elsewhere_is_the_one_made_here() {
-    let mesh = primitives::icosphere(1.0, 4);
-    let sketch = curves(&mesh, 60.0, 140.0);
-    let mut editor = Editor::new();
-    editor.apply(import_mesh("sphere.glb", &mesh)).unwrap();
-    let remeshed = |y: f64| match op(&sketch, DMat4::from_translation(DVec3::Y * y), None) {
-        Op::RegionEdit(input) => Op::RegionEdit(RegionEditInput {
+    let (mesh, _, mut editor, still) = sphere_in_editor();
+    let remeshed = |y: f64| {
+        Op::RegionEdit(RegionEditInput {
+            transform: Some(DMat4::from_translation(DVec3::Y * y).to_cols_array()),
             remesh: true,
-            ..input
-        }),
-        _ => unreachable!(),
+            ..still.clone()
+        })
     };
     let dragged = |editor: &Editor| {
         let mut edit = editor.begin_gesture(remeshed(0.0)).unwrap();

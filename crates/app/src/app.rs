@@ -700,8 +700,11 @@ impl SketchApp {
     /// write to one of the next [`AUTOSAVE_WAITS`].
     #[cfg(target_arch = "wasm32")]
     fn autosave(&mut self, ctx: &egui::Context, now: f64) {
-        let revision = self.shared.borrow().revision();
-        let pending = self.shared.borrow().autosave.is_pending(revision);
+        let (revision, pending) = {
+            let shared = self.shared.borrow();
+            let revision = shared.revision();
+            (revision, shared.autosave.is_pending(revision))
+        };
         if pending && self.autosave_waits < AUTOSAVE_WAITS && self.is_frame_spent(ctx) {
             self.autosave_waits += 1;
             return;

@@ -368,6 +368,7 @@ impl SceneGeometry {
         self.triangles.reserve(triangles.len());
         self.edges.reserve(triangles.len());
         let base = self.vertices.len() as u32;
+        let first = self.triangles.len();
         let vertex = |v: u32, normal: [f32; 3], color, uv| MeshVertex {
             pos: positions[v as usize].as_vec3().to_array(),
             normal,
@@ -376,12 +377,16 @@ impl SceneGeometry {
             uv,
         };
         let welded = |v: u32| normals[v as usize].as_vec3().to_array();
-        // Faces in runs by texture (one run, in order, without textures), each run one draw.
+        // Faces in runs by texture, each run one draw; without textures, one run in order
+        // (no list of a million faces to sort).
         let n_faces = triangles.len() / 3;
         let slot = |f: usize| corners.textures.map_or(NO_TEXTURE, |t| t.slots[f]);
-        let mut faces: Vec<usize> = (0..n_faces).collect();
-        faces.sort_by_key(|&f| slot(f));
-        let mut drawn_corners = Vec::with_capacity(triangles.len());
+        let faces: Option<Vec<usize>> = corners.textures.map(|_| {
+            let mut faces: Vec<usize> = (0..n_faces).collect();
+            faces.sort_by_key(|&f| slot(f));
+            faces
+        });
+        let face_at = |i: usize| faces.as_ref().map_or(i, |faces| faces[i]);
         let varied = corners
             .colors
             .filter(|c| c.windows(2).any(|w| w[0] != w[1]));
@@ -392,11 +397,11 @@ impl SceneGeometry {
                 self.vertices.push(vertex(v, welded(v), color, [0.0; 2]));
                 self.welded.push(v);
             }
-            drawn_corners.extend(triangles.iter().map(|i| base + i));
+            self.triangles.extend(triangles.iter().map(|i| base + i));
         } else {
             type Key = (u32, [u32; 4], [u32; 3], [u32; 2]);
             let mut drawn: HashMap<Key, u32> = HashMap::new();
-            for &f in &faces {
+            for f in (0..n_faces).map(face_at) {
                 for c in 3 * f..3 * f + 3 {
                     let v = triangles[c];
                     let color = corners.colors.map_or(CLAY, |colors| colors[c]);
@@ -417,13 +422,14 @@ impl SceneGeometry {
                         self.vertices.push(vertex(v, normal, color, uv));
                         self.welded.push(v);
                     }
-                    drawn_corners.push(index);
+                    self.triangles.push(index);
                 }
             }
         }
         // Each edge once: by its boundary half-edge, or by the lower of its two half-edges
         // (a hash set of vertex pairs cost 0.3 s at a million triangles in the page).
-        for (&f, drawn) in faces.iter().zip(drawn_corners.chunks_exact(3)) {
+        for (i, drawn) in self.triangles[first..].chunks_exact(3).enumerate() {
+            let f = face_at(i);
             for k in 0..3 {
                 let h = HalfedgeId((3 * f + k) as u32);
                 if mesh.twin(h).is_none_or(|twin| h < twin) {
@@ -431,15 +437,21 @@ impl SceneGeometry {
                 }
             }
         }
-        let first = self.triangles.len() as u32;
-        self.triangles.extend(drawn_corners);
+        let first = first as u32;
+        let runs: Vec<(u32, usize)> = match &faces {
+            Some(faces) => (faces.chunk_by(|&a, &b| slot(a) == slot(b)))
+                .map(|run| (slot(run[0]), run.len()))
+                .collect(),
+            None if n_faces > 0 => vec![(NO_TEXTURE, n_faces)],
+            None => Vec::new(),
+        };
         let mut own = Vec::new();
         let mut start = 0;
-        for run in faces.chunk_by(|&a, &b| slot(a) == slot(b)) {
-            let end = start + 3 * run.len() as u32;
+        for (slot, len) in runs {
+            let end = start + 3 * len as u32;
             let texture = corners
                 .textures
-                .and_then(|t| t.list.get(slot(run[0]) as usize).cloned());
+                .and_then(|t| t.list.get(slot as usize).cloned());
             self.add_draw(first + start..first + end, texture.clone());
             own.push(MeshDraw {
                 indices: start..end,

@@ -260,13 +260,19 @@ impl Writer {
             out.pod(u8::from(curve.kind == CurveKind::Sharp));
         });
         self.option(model.name.as_deref(), Self::text);
-        self.option(model.appearance.as_deref(), Self::appearance);
+        let triangles = model.mesh.triangles();
+        self.option(model.appearance.as_deref(), |out, appearance| {
+            out.appearance(appearance, triangles);
+        });
         self.option(model.as_imported.as_deref(), |out, as_imported| {
+            let soup = &as_imported.soup.triangles;
             out.pods(&as_imported.soup.positions);
-            out.pods(&as_imported.soup.triangles);
+            out.pods(soup);
             out.pods(&as_imported.vertex_source);
-            out.pods(&as_imported.mesh_triangles);
-            out.option(as_imported.appearance.as_deref(), Self::appearance);
+            out.triangles_like(&as_imported.mesh_triangles, triangles);
+            out.option(as_imported.appearance.as_deref(), |out, appearance| {
+                out.appearance(appearance, soup);
+            });
         });
         self.seq(&model.keyframes, |out, keyframe| {
             out.pod(keyframe.time);
@@ -284,8 +290,19 @@ impl Writer {
         self.pod(parts.n_dead_faces);
     }
 
-    fn appearance(&mut self, appearance: &Appearance) {
-        self.pods(&appearance.triangles);
+    /// `triangles`, or only a flag when they are `like` (a look's copy of its mesh's
+    /// triangles: 12 MB at a million triangles the page's frame need not copy in).
+    fn triangles_like(&mut self, triangles: &[[u32; 3]], like: &[[u32; 3]]) {
+        let same = triangles == like;
+        self.pod(u8::from(same));
+        if !same {
+            self.pods(triangles);
+        }
+    }
+
+    /// `appearance`, whose triangles are likely `like`.
+    fn appearance(&mut self, appearance: &Appearance, like: &[[u32; 3]]) {
+        self.triangles_like(&appearance.triangles, like);
         self.pod(appearance.positions_hash);
         self.option(appearance.normals.as_deref(), Self::pods);
         self.option(appearance.uvs.as_deref(), Self::pods);
@@ -450,28 +467,38 @@ impl<'a, S: TransferSource + ?Sized> Reader<'a, S> {
         if (curves.iter().flat_map(|c| &c.vertices)).any(|v| v.index() >= n) {
             return Err(TransferError("a curve off its mesh"));
         }
+        let triangles = mesh.triangles();
+        let name = self.option(Self::text)?;
+        let appearance = self.option(|input| input.appearance(triangles))?;
+        let as_imported = self.option(|input| {
+            let positions = input.pods()?;
+            let soup: Vec<[u32; 3]> = input.pods()?;
+            let vertex_source = input.pods()?;
+            let mesh_triangles = input.triangles_like(triangles)?;
+            let appearance = input.option(|input| input.appearance(&soup))?;
+            Ok(AsImported {
+                soup: TriSoup {
+                    positions,
+                    triangles: soup,
+                },
+                vertex_source,
+                mesh_triangles,
+                appearance: appearance.map(Arc::new),
+            })
+        })?;
+        let keyframes = self.seq(|input| {
+            Ok(Keyframe {
+                time: input.pod()?,
+                positions: Arc::new(input.pods()?),
+            })
+        })?;
         Ok(Model {
             mesh,
             curves,
-            name: self.option(Self::text)?,
-            appearance: self.option(Self::appearance)?.map(Arc::new),
-            as_imported: self.option(|input| {
-                Ok(Arc::new(AsImported {
-                    soup: TriSoup {
-                        positions: input.pods()?,
-                        triangles: input.pods()?,
-                    },
-                    vertex_source: input.pods()?,
-                    mesh_triangles: input.pods()?,
-                    appearance: input.option(Self::appearance)?.map(Arc::new),
-                }))
-            })?,
-            keyframes: self.seq(|input| {
-                Ok(Keyframe {
-                    time: input.pod()?,
-                    positions: Arc::new(input.pods()?),
-                })
-            })?,
+            name,
+            appearance: appearance.map(Arc::new),
+            as_imported: as_imported.map(Arc::new),
+            keyframes,
         })
     }
 
@@ -487,9 +514,18 @@ impl<'a, S: TransferSource + ?Sized> Reader<'a, S> {
         Mesh::from_parts(parts).map_err(|_| TransferError("a mesh whose arrays do not fit"))
     }
 
-    fn appearance(&mut self) -> Result<Appearance, TransferError> {
+    /// What [`Writer::triangles_like`] wrote.
+    fn triangles_like(&mut self, like: &[[u32; 3]]) -> Result<Vec<[u32; 3]>, TransferError> {
+        if self.flag()? {
+            Ok(like.to_vec())
+        } else {
+            self.pods()
+        }
+    }
+
+    fn appearance(&mut self, like: &[[u32; 3]]) -> Result<Appearance, TransferError> {
         Ok(Appearance {
-            triangles: self.pods()?,
+            triangles: self.triangles_like(like)?,
             positions_hash: self.pod()?,
             normals: self.option(Self::pods)?,
             uvs: self.option(Self::pods)?,

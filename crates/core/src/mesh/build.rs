@@ -49,31 +49,40 @@ impl Mesh {
         let (n_vertices, n_halfedges) = (parts.positions.len(), 3 * parts.triangles.len());
         let tris = &parts.triangles;
         let is_live = |f: usize| tris[f][0] != INVALID;
-        let tail = |h: usize| tris[h / 3][h % 3];
-        let head = |h: usize| tris[h / 3][(h % 3 + 1) % 3];
         let faces_fit = tris.iter().all(|&[a, b, c]| {
             let live = [a, b, c].iter().all(|&v| (v as usize) < n_vertices);
             (live && a != b && b != c && a != c) || [a, b, c] == [INVALID; 3]
         });
+        // Face by face, each half-edge against its twin's face (read once): a million
+        // triangles' check is a frame's work in the page, where a worker's result lands.
+        let twins_fit = |f: usize, tri: &[u32; 3]| {
+            (0..3).all(|k| {
+                let h = 3 * f + k;
+                let t = parts.twin[h] as usize;
+                if t == INVALID as usize {
+                    return true;
+                }
+                let Some(other) = tris.get(t / 3) else {
+                    return false;
+                };
+                let (tail, head) = (tri[k], tri[(k + 1) % 3]);
+                t != h
+                    && parts.twin[t] as usize == h
+                    && tri[0] != INVALID
+                    && other[0] != INVALID
+                    && tail == other[(t % 3 + 1) % 3]
+                    && head == other[t % 3]
+            })
+        };
         let fits = faces_fit
             && parts.twin.len() == n_halfedges
             && parts.vertex_halfedge.len() == n_vertices
             && tris.iter().filter(|t| t[0] == INVALID).count() == parts.n_dead_faces as usize
-            && (parts.twin.iter().enumerate()).all(|(h, &t)| {
-                let t = t as usize;
-                t == INVALID as usize
-                    || (t < n_halfedges
-                        && t != h
-                        && parts.twin[t] as usize == h
-                        && is_live(h / 3)
-                        && is_live(t / 3)
-                        && tail(h) == head(t)
-                        && head(h) == tail(t))
-            })
+            && tris.iter().enumerate().all(|(f, tri)| twins_fit(f, tri))
             && (parts.vertex_halfedge.iter().enumerate()).all(|(v, &h)| {
                 let h = h as usize;
                 h == INVALID as usize
-                    || (h < n_halfedges && is_live(h / 3) && tail(h) as usize == v)
+                    || (h < n_halfedges && is_live(h / 3) && tris[h / 3][h % 3] as usize == v)
             })
             && (parts.vertex_halfedge.iter())
                 .filter(|&&h| h == INVALID)
@@ -292,9 +301,33 @@ mod tests {
     fn parts_rebuild_the_mesh_and_corrupt_parts_are_refused() {
         let mesh = primitives::grid(3, 3, 1.0);
         assert_eq!(rebuilt(&mesh, |_| {}).unwrap(), mesh);
-        let refused: [&dyn Fn(&mut OwnedParts); 6] = [
+        // Two twin pairs: (h, t) and another (k, u), neither sharing a face with the first.
+        let pairs = |p: &OwnedParts| {
+            let h = p.twin.iter().position(|&t| t != INVALID).unwrap();
+            let t = p.twin[h] as usize;
+            let k = (0..p.twin.len())
+                .find(|&k| ![h / 3, t / 3].contains(&(k / 3)) && p.twin[k] != INVALID)
+                .unwrap();
+            (h, t, k, p.twin[k] as usize)
+        };
+        let refused: [&dyn Fn(&mut OwnedParts); 9] = [
             // Half a dead face: navigation would read its invalid corner.
             &|p| p.triangles[0][1] = INVALID,
+            // A twin past the end, a twin that is itself.
+            &|p| {
+                let (h, ..) = pairs(p);
+                p.twin[h] = p.twin.len() as u32 + 5;
+            },
+            &|p| {
+                let (h, t, ..) = pairs(p);
+                (p.twin[h], p.twin[t]) = (h as u32, INVALID);
+            },
+            // Twins that point back at each other across edges of other vertices.
+            &|p| {
+                let (h, t, k, u) = pairs(p);
+                (p.twin[h], p.twin[u]) = (u as u32, h as u32);
+                (p.twin[k], p.twin[t]) = (t as u32, k as u32);
+            },
             // A twin that does not point back: a one-ring walk could loop for ever.
             &|p| {
                 let h = p.twin.iter().position(|&t| t != INVALID).unwrap();

@@ -68,8 +68,9 @@ const SPREAD_AFTER_MS: f64 = 50.0;
 const AUTOSAVE_WAITS: u8 = 3;
 
 /// What the drawn scene was built from: the editor's revision, the edit's number and
-/// revision when it shows another document than the editor's, and the textures' version.
-type GeometrySource = (autosave::Revision, Option<(u64, u64)>, u64);
+/// revision when it shows another document than the editor's, the textures' version, and
+/// whether the wireframe is shown (its edges are built only then).
+type GeometrySource = (autosave::Revision, Option<(u64, u64)>, u64, bool);
 
 /// State shared with the page API (`window.sketchmesh`), which runs outside frames.
 pub struct Shared {
@@ -122,9 +123,9 @@ impl Shared {
 
     /// The autosave record of what is shown now, or `None` for a document without ops: an
     /// empty page is not a document worth keeping.
-    pub fn autosave_record(&self) -> Option<autosave::Record> {
+    pub fn autosave_record(&self) -> Option<String> {
         let has_work = !self.editor.ops().is_empty();
-        has_work.then(|| autosave::Record::new(&self.editor, self.camera, self.mode))
+        has_work.then(|| autosave::record_json(&self.editor, self.camera, self.mode))
     }
 }
 
@@ -268,6 +269,7 @@ impl SketchApp {
                 },
                 None,
                 0,
+                false,
             ),
             textures: Textures::default(),
             shown_motion: None,
@@ -905,7 +907,7 @@ impl SketchApp {
             let title = name
                 .trim_end_matches(".json")
                 .trim_end_matches(".sketchmesh");
-            if let Err(why) = crate::web::keep_and_start(record.as_ref(), title) {
+            if let Err(why) = crate::web::keep_and_start(record.as_deref(), title) {
                 let sentence =
                     format!("Did not open {name}: the work shown could not be kept ({why}).");
                 return self.set_status(sentence, now);
@@ -1358,6 +1360,7 @@ impl SketchApp {
                 .filter(|&revision| revision != 0)
                 .map(|revision| (self.edits_begun, revision)),
             self.textures.version,
+            self.options.wireframe,
         );
         let moved = edit.and_then(Edit::moved_model);
         let motion_ended = self.shown_motion.is_some() && moved.is_none();
@@ -1382,14 +1385,17 @@ impl SketchApp {
             let document = edit.map_or(shared.editor.document(), Edit::document);
             let generation = self.geometry.generation + 1;
             let started = clock::now_ms();
-            // The arrays of unchanged models are copied, unless textures were decoded since.
+            // The arrays of unchanged models are copied, unless textures were decoded since
+            // or the wireframe was turned on or off.
+            let (built_with, wanted) = (self.geometry_source, source);
             let previous =
-                (self.geometry_source.2 == self.textures.version).then_some(&*self.geometry);
+                (built_with.2 == wanted.2 && built_with.3 == wanted.3).then_some(&*self.geometry);
             let built = Arc::new(SceneGeometry::build(
                 document,
                 generation,
                 &self.textures,
                 previous,
+                self.options.wireframe,
             ));
             // What a new document costs the frame before the GPU sees it (the page bench).
             let ms = clock::now_ms() - started;

@@ -18,12 +18,11 @@ use crate::tools::Mode;
 /// Longest time in seconds from a change to its autosave.
 pub const INTERVAL: f64 = 0.5;
 
-/// One autosave: the document's session, the view and the tool. Stored as the JSON of
-/// [`Record::to_json`].
-#[derive(Clone, Debug, PartialEq, Serialize)]
+/// One autosave: the document's session, the view and the tool, as read back; written by
+/// [`record_json`].
+#[derive(Clone, Debug, PartialEq)]
 pub struct Record {
     /// The session file's text (`docs/session-format.md`).
-    #[serde(skip)]
     pub session: String,
     /// The view.
     pub camera: OrbitCamera,
@@ -31,38 +30,34 @@ pub struct Record {
     pub mode: Mode,
 }
 
+/// The record of `editor` seen through `camera` with `mode`, as the page stores it: JSON
+/// whose `"session"` is the session file itself, not a string holding it, written straight
+/// after the view and the tool, so that a write copies the ops' text once (a session that
+/// imported a scan carries its file: tens of megabytes of base64, whose escaping took 30
+/// ms of the frame for 24 MB, and a second copy 12 ms).
+pub fn record_json(editor: &Editor, camera: OrbitCamera, mode: Mode) -> String {
+    #[derive(Serialize)]
+    struct Fields {
+        camera: OrbitCamera,
+        mode: Mode,
+    }
+    let mut json = serde_json::to_string(&Fields { camera, mode }).unwrap_or_else(|error| {
+        debug_assert!(false, "a camera and a mode always serialize: {error}");
+        String::from("{}")
+    });
+    json.pop();
+    if json.len() > 1 {
+        json.push(',');
+    }
+    json.push_str("\"session\":");
+    editor.write_session_json(&mut json);
+    json.push('}');
+    json
+}
+
 impl Record {
-    /// The record of `editor` seen through `camera` with `mode`.
-    pub fn new(editor: &Editor, camera: OrbitCamera, mode: Mode) -> Record {
-        Record {
-            session: editor.session_json(),
-            camera,
-            mode,
-        }
-    }
-
-    /// The record as the page stores it: JSON whose `"session"` is the session file itself,
-    /// not a string holding it, so a write copies the session's text once instead of
-    /// escaping it again (a session that imported a scan carries its file: tens of megabytes
-    /// of base64, whose escaping took 30 ms of the frame for 24 MB).
-    pub fn to_json(&self) -> String {
-        let mut json = serde_json::to_string(self).unwrap_or_else(|error| {
-            debug_assert!(false, "a camera and a mode always serialize: {error}");
-            String::from("{}")
-        });
-        json.pop();
-        json.reserve(self.session.len() + 16);
-        if json.len() > 1 {
-            json.push(',');
-        }
-        json.push_str("\"session\":");
-        json.push_str(&self.session);
-        json.push('}');
-        json
-    }
-
-    /// Reads what [`Record::to_json`] wrote, or a record from before it, whose `"session"`
-    /// is a string holding the session file.
+    /// Reads what [`record_json`] wrote, or a record from before it, whose `"session"` is a
+    /// string holding the session file.
     ///
     /// Errors: the JSON is not a record.
     pub fn from_json(text: &str) -> Result<Record, serde_json::Error> {
@@ -197,8 +192,12 @@ mod tests {
                 },
             ))
             .unwrap_or_else(|e| panic!("ink: {e}"));
-        let record = Record::new(&editor, OrbitCamera::default(), Mode::Optimize);
-        let json = record.to_json();
+        let record = Record {
+            session: editor.session_json(),
+            camera: OrbitCamera::default(),
+            mode: Mode::Optimize,
+        };
+        let json = record_json(&editor, record.camera, record.mode);
         assert!(
             json.contains(r#""session":{"format":"sketchmesh-session""#),
             "{json}"
@@ -211,8 +210,11 @@ mod tests {
         };
         assert_eq!(back, trimmed);
         // A record written before the session was stored as JSON: a string holding it.
-        let mut old = serde_json::to_value(&record).unwrap_or_else(|e| panic!("{e}"));
-        old["session"] = serde_json::Value::from(record.session.as_str());
+        let old = serde_json::json!({
+            "session": record.session,
+            "camera": record.camera,
+            "mode": record.mode,
+        });
         let back = Record::from_json(&old.to_string()).unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(back, record);
         assert!(Record::from_json("{\"session\": 7}").is_err());

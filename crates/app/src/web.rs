@@ -288,9 +288,9 @@ fn restore(shared: &mut Shared, text: Option<&str>, at_start: bool) -> Result<()
 /// becomes a document of its own.
 ///
 /// Errors: a sentence when the page has no store or the call throws at once.
-pub fn keep_and_start(record: Option<&Record>, title: &str) -> Result<(), String> {
+pub fn keep_and_start(record: Option<&str>, title: &str) -> Result<(), String> {
     let text = match record {
-        Some(record) => JsValue::from_str(&record.to_json()),
+        Some(record) => JsValue::from_str(record),
         None => JsValue::NULL,
     };
     call_page(
@@ -304,8 +304,8 @@ pub fn keep_and_start(record: Option<&Record>, title: &str) -> Result<(), String
 /// `web/autosave.js`), which writes it to IndexedDB without blocking the frame.
 ///
 /// Errors: a sentence when the page has no store or the call throws at once.
-pub fn write_autosave(record: &Record) -> Result<(), String> {
-    let text = JsValue::from_str(&record.to_json());
+pub fn write_autosave(record: &str) -> Result<(), String> {
+    let text = JsValue::from_str(record);
     call_page("sketchmeshAutosave", "save", &[text])
 }
 

@@ -25,9 +25,12 @@ const WASM_TARGET: &str = "wasm32-unknown-unknown";
 /// The `release` profile: the one page that is served, tested and measured (see the profile
 /// in `Cargo.toml` for which crates are optimized for speed and which for size).
 const CARGO_PROFILE: &str = "release";
-/// A speed level: `-O2` also makes the page smaller (3.82 to 3.48 MB gzipped when chosen)
-/// without trading speed for size, as `-Oz` did.
-const WASM_OPT_ARGS: &[&str] = &["-O2"];
+/// A speed level. `-O1` against `-O2` on the same build (2026-12-06, BENCHMARKS.md): the
+/// page bench's frames and solves within noise of each other, the page 104 kB smaller
+/// gzipped (3.33 against 3.43 MB: `-O2` inlines more, in code LLVM has optimized already),
+/// so it starts sooner, and wasm-opt takes 28 s instead of 94 (npm's binaryen runs
+/// single-threaded under Node, beside the native build in CI).
+const WASM_OPT_ARGS: &[&str] = &["-O1"];
 
 /// What a web build produced.
 pub struct WebBuild {

@@ -197,13 +197,16 @@ pub struct SceneGeometry {
 }
 
 impl SceneGeometry {
-    /// Builds the arrays for `doc` as `generation`, with the textures decoded so far,
-    /// copying from `previous` (built with the same textures) the models it already shows.
+    /// Builds the arrays for `doc` as `generation`, with the textures decoded so far and
+    /// the wireframe's edges if `with_edges` (a million triangles' edges are a quarter of the
+    /// arrays' build, for a view that is off by default), copying from `previous` (built
+    /// with the same textures and edges) the models it already shows.
     pub fn build(
         doc: &Document,
         generation: u64,
         textures: &Textures,
         previous: Option<&SceneGeometry>,
+        with_edges: bool,
     ) -> Self {
         let mut scene = Self {
             generation,
@@ -229,6 +232,7 @@ impl SceneGeometry {
             let faces = look.and_then(|a| face_textures(a, textures));
             let draws = scene.add_mesh(
                 &model.mesh,
+                with_edges,
                 &vertex_normals(&model.mesh),
                 Corners {
                     colors: colors.as_deref(),
@@ -360,13 +364,21 @@ impl SceneGeometry {
     /// and normal, so colours meet in crisp lines along material borders and a box keeps its
     /// edges, instead of blending across triangles.
     /// Returns its runs by texture, relative to its first triangle index.
-    fn add_mesh(&mut self, mesh: &Mesh, normals: &[DVec3], corners: Corners<'_>) -> Vec<MeshDraw> {
+    fn add_mesh(
+        &mut self,
+        mesh: &Mesh,
+        edges: bool,
+        normals: &[DVec3],
+        corners: Corners<'_>,
+    ) -> Vec<MeshDraw> {
         let (positions, triangles) = (mesh.positions(), mesh.triangle_indices());
         // Grown once (growing by pushes copied a million-triangle scan's arrays many times).
         self.vertices.reserve(positions.len());
         self.welded.reserve(positions.len());
         self.triangles.reserve(triangles.len());
-        self.edges.reserve(triangles.len());
+        if edges {
+            self.edges.reserve(triangles.len());
+        }
         let base = self.vertices.len() as u32;
         let first = self.triangles.len();
         let vertex = |v: u32, normal: [f32; 3], color, uv| MeshVertex {
@@ -428,7 +440,8 @@ impl SceneGeometry {
         }
         // Each edge once: by its boundary half-edge, or by the lower of its two half-edges
         // (a hash set of vertex pairs cost 0.3 s at a million triangles in the page).
-        for (i, drawn) in self.triangles[first..].chunks_exact(3).enumerate() {
+        let drawn = if edges { &self.triangles[first..] } else { &[] };
+        for (i, drawn) in drawn.chunks_exact(3).enumerate() {
             let f = face_at(i);
             for k in 0..3 {
                 let h = HalfedgeId((3 * f + k) as u32);
@@ -601,7 +614,21 @@ mod tests {
     fn each_edge_is_drawn_once() {
         let (sphere, sheet) = (icosphere(1.0, 2), grid(4, 3, 1.0));
         let doc = document(vec![model(sphere.clone()), model(sheet.clone())]);
-        let scene = SceneGeometry::build(&doc, 1, &Textures::default(), None);
+        let scene = SceneGeometry::build(&doc, 1, &Textures::default(), None, true);
+        // Without the wireframe, the same scene but its edges.
+        let unwired = SceneGeometry::build(&doc, 1, &Textures::default(), None, false);
+        assert!(unwired.edges.is_empty());
+        assert_eq!(
+            SceneGeometry {
+                edges: Vec::new(),
+                model_ranges: Vec::new(),
+                ..scene.clone()
+            },
+            SceneGeometry {
+                model_ranges: Vec::new(),
+                ..unwired
+            }
+        );
         // Every edge of both, closed and open, once.
         assert_eq!(3 * sphere.n_faces() / 2, sphere.n_edges());
         assert_eq!(scene.edges.len() / 2, sphere.n_edges() + sheet.n_edges());
@@ -622,7 +649,7 @@ mod tests {
             model(icosphere(0.5, 1)),
         );
         let before = document(vec![a.clone(), b.clone()]);
-        let mut previous = SceneGeometry::build(&before, 1, &textures, None);
+        let mut previous = SceneGeometry::build(&before, 1, &textures, None, true);
         // A mark on b's first drawn vertex: if the rebuild copies b, the mark comes along.
         let b_first = previous.model_ranges[1].vertices.start;
         previous.vertices[b_first].uv = [7.0, 7.0];
@@ -630,8 +657,8 @@ mod tests {
         // a replaced by a smaller sphere (b's indices move), c appended.
         let a2 = model(icosphere(1.0, 1));
         let after = document(vec![a2, b.clone(), c]);
-        let rebuilt = SceneGeometry::build(&after, 2, &textures, Some(&previous));
-        let fresh = SceneGeometry::build(&after, 2, &textures, None);
+        let rebuilt = SceneGeometry::build(&after, 2, &textures, Some(&previous), true);
+        let fresh = SceneGeometry::build(&after, 2, &textures, None, true);
         let b_now = rebuilt.model_ranges[1].vertices.start;
         assert_eq!(rebuilt.vertices[b_now].uv, [7.0, 7.0], "b was copied");
         let mut unmarked = rebuilt.clone();
@@ -642,7 +669,7 @@ mod tests {
         let mut moved = fresh.clone();
         let positions: Vec<DVec3> = (b.mesh.positions().iter()).map(|p| *p + DVec3::Z).collect();
         moved.move_model(1, &b, &positions, &mut Vec::new());
-        let again = SceneGeometry::build(&after, 3, &textures, Some(&moved));
+        let again = SceneGeometry::build(&after, 3, &textures, Some(&moved), true);
         assert_eq!(again.vertices, fresh.vertices);
     }
 }

@@ -136,28 +136,12 @@ impl SceneRenderer {
         rs.renderer.write().callback_resources.insert(renderer);
     }
 
-    /// Uploads `scene` when its generation is new, its edges only while the wireframe is
-    /// shown (a million triangles' edges are 12 MB the frame that lands them need not copy).
-    fn upload(
-        &mut self,
-        device: &wgpu::Device,
-        queue: &wgpu::Queue,
-        scene: &SceneGeometry,
-        wireframe: bool,
-    ) {
+    fn upload(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, scene: &SceneGeometry) {
         if let Some(g) = self
             .geometry
             .as_mut()
             .filter(|g| g.generation == scene.generation)
         {
-            if wireframe && g.edges.is_none() {
-                g.edges = buffer(
-                    device,
-                    "mesh edges",
-                    &scene.edges,
-                    wgpu::BufferUsages::INDEX,
-                );
-            }
             // Same arrays, moved vertices (a pull in progress): rewrite in place.
             if g.motion != scene.motion {
                 g.motion = scene.motion;
@@ -179,9 +163,7 @@ impl SceneRenderer {
             motion: scene.motion,
             vertices: buffer(device, "mesh vertices", &scene.vertices, vertex).map(|(b, _)| b),
             triangles: buffer(device, "mesh triangles", &scene.triangles, index),
-            edges: wireframe
-                .then(|| buffer(device, "mesh edges", &scene.edges, index))
-                .flatten(),
+            edges: buffer(device, "mesh edges", &scene.edges, index),
             curves: buffer(device, "curves", &scene.curves, vertex),
             draws: (scene.draws.iter())
                 .map(|d| {
@@ -297,7 +279,7 @@ impl CallbackTrait for SceneCallback {
             (self.rect.width() * ppp).round().max(1.0) as u32,
             (self.rect.height() * ppp).round().max(1.0) as u32,
         ];
-        renderer.upload(device, queue, &self.geometry, self.options.wireframe);
+        renderer.upload(device, queue, &self.geometry);
         let mut uniforms = self.uniforms;
         let clay = if self.options.clay { 1.0 } else { 0.0 };
         uniforms.viewport = [size[0] as f32, size[1] as f32, ppp, clay];

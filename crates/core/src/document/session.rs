@@ -25,7 +25,9 @@ impl Session {
     /// The session as JSON: one op per line, so files diff well.
     pub fn to_json(&self) -> String {
         let ops: Vec<String> = self.ops.iter().map(Op::to_json).collect();
-        session_text(ops.iter().map(String::as_str))
+        let mut json = String::new();
+        write_session_text(&mut json, ops.iter().map(String::as_str));
+        json
     }
 
     /// Parses a session file.
@@ -90,7 +92,16 @@ impl Editor {
     /// The ops applied so far as session JSON ([`Session::to_json`]), from the ops' JSON
     /// kept since they were first written.
     pub fn session_json(&self) -> String {
-        session_text(self.ops_json())
+        let mut json = String::new();
+        self.write_session_json(&mut json);
+        json
+    }
+
+    /// Appends [`Editor::session_json`] to `out`: an autosave record writes the session
+    /// after its own fields, copying the ops' text once (a session that imported a scan
+    /// carries its file, tens of megabytes).
+    pub fn write_session_json(&self, out: &mut String) {
+        write_session_text(out, self.ops_json());
     }
 
     /// Applies every op of a session to a new editor; the first refused op is an error. The
@@ -111,9 +122,12 @@ fn format_error(message: &str) -> SessionError {
     SessionError::Format(message.to_owned())
 }
 
-/// A session file around ops already written as JSON, one per line.
-fn session_text<'a>(ops: impl Iterator<Item = &'a str>) -> String {
-    let mut json = format!(r#"{{"format":"{SESSION_FORMAT}","version":{SESSION_VERSION},"ops":["#);
+/// Appends a session file around ops already written as JSON, one per line, to `json`.
+fn write_session_text<'a>(json: &mut String, ops: impl Iterator<Item = &'a str> + Clone) {
+    json.reserve(ops.clone().map(|op| op.len() + 2).sum::<usize>() + 64);
+    json.push_str(&format!(
+        r#"{{"format":"{SESSION_FORMAT}","version":{SESSION_VERSION},"ops":["#
+    ));
     let mut any = false;
     for op in ops {
         json.push_str(if any { ",\n" } else { "\n" });
@@ -124,7 +138,6 @@ fn session_text<'a>(ops: impl Iterator<Item = &'a str>) -> String {
         json.push('\n');
     }
     json.push_str("]}\n");
-    json
 }
 
 /// Parses one op, with an error message fit to follow "op N: ".

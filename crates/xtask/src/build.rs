@@ -277,7 +277,7 @@ mod tests {
             root: root.clone(),
             target_dir: root.join("target"),
         };
-        // A stand-in wasm-opt that logs each call and copies its input (`-O2 IN -o OUT`).
+        // A stand-in wasm-opt that logs each call and copies its input (`-O1 IN -o OUT`).
         let bin = workspace.node_bin("wasm-opt");
         fs::create_dir_all(bin.parent().unwrap()).unwrap();
         let calls = root.join("calls.log");

@@ -27,7 +27,7 @@ Usage: cargo xtask <command>
 
 Commands:
   setup                        Install the wasm target, Chromium and the npm test tools (idempotent)
-  build-web                    Build the page into dist/: release profile, wasm-opt -O2 (cached);
+  build-web                    Build the page into dist/: release profile, wasm-opt -O1 (cached);
                                the one build that is served, tested and benchmarked
   serve [--port N]             Build the page, then serve dist/ on http://127.0.0.1:8080/
                                (or port N)

@@ -225,7 +225,8 @@ impl SceneGeometry {
             let model = shared.as_ref();
             let (vertices, curves) = (scene.vertices.len(), scene.curves.len());
             let (triangles, edges) = (scene.triangles.len(), scene.edges.len());
-            let look = (model.appearance.as_deref()).filter(|a| a.fits(&model.mesh));
+            let look =
+                (model.appearance.as_deref()).filter(|a| a.is_drawn() && a.fits(&model.mesh));
             let colors = look.and_then(|a| a.corner_colors());
             let normals =
                 (look.filter(|a| a.normals_fit(&model.mesh))).and_then(|a| a.normals.as_deref());

@@ -43,8 +43,7 @@ impl Appearance {
     /// material and no vertex colours: such a model is drawn as clay rather than in glTF's
     /// default white.
     pub fn corner_colors(&self) -> Option<Vec<[f32; 4]>> {
-        let coloured = |m: &Material| m.base_color != [1.0; 4] || m.base_color_texture.is_some();
-        if self.colors.is_none() && !self.materials.iter().any(coloured) {
+        if !self.is_coloured() {
             return None;
         }
         let corners = 3 * self.triangles.len();
@@ -63,6 +62,19 @@ impl Appearance {
                 })
                 .collect(),
         )
+    }
+
+    /// Whether the file gave vertex colours or a coloured or textured material.
+    fn is_coloured(&self) -> bool {
+        let coloured = |m: &Material| m.base_color != [1.0; 4] || m.base_color_texture.is_some();
+        self.colors.is_some() || self.materials.iter().any(coloured)
+    }
+
+    /// Whether the look changes how the model is drawn (colours, textures or the file's
+    /// normals): a plain scan's is drawn as clay, so its fit (a comparison of every
+    /// triangle) need not be asked when its arrays are built.
+    pub fn is_drawn(&self) -> bool {
+        self.is_coloured() || self.normals.is_some() || self.uvs.is_some()
     }
 
     /// Whether the imported normals still apply (same triangles and same positions).

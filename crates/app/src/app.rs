@@ -98,6 +98,9 @@ pub struct Shared {
     pub progress: Option<String>,
     /// Editors that replaced the first one (see [`autosave::Revision`]).
     opened: u64,
+    /// The ops' session text as JavaScript strings, for the autosave.
+    #[cfg(target_arch = "wasm32")]
+    pub op_texts: crate::web::OpTexts,
 }
 
 impl Shared {
@@ -119,13 +122,6 @@ impl Shared {
             opened: self.opened,
             edits: self.editor.revision(),
         }
-    }
-
-    /// The autosave record of what is shown now, or `None` for a document without ops: an
-    /// empty page is not a document worth keeping.
-    pub fn autosave_record(&self) -> Option<String> {
-        let has_work = !self.editor.ops().is_empty();
-        has_work.then(|| autosave::record_json(&self.editor, self.camera, self.mode))
     }
 }
 
@@ -253,6 +249,8 @@ impl SketchApp {
                 notes: Default::default(),
                 progress: None,
                 opened: 0,
+                #[cfg(target_arch = "wasm32")]
+                op_texts: Default::default(),
             })),
             router: InputRouter::default(),
             tools: ToolSet::default(),
@@ -723,12 +721,12 @@ impl SketchApp {
                 return;
             }
             let started = clock::now_ms();
-            (shared.autosave_record(), started)
+            (crate::web::autosave_text(&mut shared), started)
         };
         let Some(record) = record else {
             return;
         };
-        let written = crate::web::write_autosave(&record);
+        let written = crate::web::write_autosave(record);
         // The frame's share of the write: the session serialized and handed to the page's
         // queue (the page benchmark reads it as "autosave").
         let ms = clock::now_ms() - started;
@@ -900,14 +898,14 @@ impl SketchApp {
             }
         };
         self.cancel_gesture();
-        let record = self.shared.borrow().autosave_record();
-        let had_work = record.is_some();
+        let had_work = !self.shared.borrow().editor.ops().is_empty();
         #[cfg(target_arch = "wasm32")]
         {
             let title = name
                 .trim_end_matches(".json")
                 .trim_end_matches(".sketchmesh");
-            if let Err(why) = crate::web::keep_and_start(record.as_deref(), title) {
+            let record = crate::web::autosave_text(&mut self.shared.borrow_mut());
+            if let Err(why) = crate::web::keep_and_start(record, title) {
                 let sentence =
                     format!("Did not open {name}: the work shown could not be kept ({why}).");
                 return self.set_status(sentence, now);

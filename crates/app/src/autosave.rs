@@ -18,8 +18,10 @@ use crate::tools::Mode;
 /// Longest time in seconds from a change to its autosave.
 pub const INTERVAL: f64 = 0.5;
 
-/// One autosave: the document's session, the view and the tool, as read back; written by
-/// [`record_json`].
+/// One autosave: the document's session, the view and the tool, as read back. Written
+/// as [`record_head`], the session file itself (not a string holding it, so that nothing
+/// escapes its text again) and [`RECORD_TAIL`]: in the page, the session goes to JavaScript
+/// piece by piece, each op's text converted once (`web::autosave_text`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Record {
     /// The session file's text (`docs/session-format.md`).
@@ -30,12 +32,8 @@ pub struct Record {
     pub mode: Mode,
 }
 
-/// The record of `editor` seen through `camera` with `mode`, as the page stores it: JSON
-/// whose `"session"` is the session file itself, not a string holding it, written straight
-/// after the view and the tool, so that a write copies the ops' text once (a session that
-/// imported a scan carries its file: tens of megabytes of base64, whose escaping took 30
-/// ms of the frame for 24 MB, and a second copy 12 ms).
-pub fn record_json(editor: &Editor, camera: OrbitCamera, mode: Mode) -> String {
+/// What a record holds before its session: the view, the tool and the session's key.
+pub fn record_head(camera: OrbitCamera, mode: Mode) -> String {
     #[derive(Serialize)]
     struct Fields {
         camera: OrbitCamera,
@@ -50,14 +48,15 @@ pub fn record_json(editor: &Editor, camera: OrbitCamera, mode: Mode) -> String {
         json.push(',');
     }
     json.push_str("\"session\":");
-    editor.write_session_json(&mut json);
-    json.push('}');
     json
 }
 
+/// What a record holds after its session.
+pub const RECORD_TAIL: &str = "}";
+
 impl Record {
-    /// Reads what [`record_json`] wrote, or a record from before it, whose `"session"` is a
-    /// string holding the session file.
+    /// Reads a record, or one from before the session was stored as JSON, whose
+    /// `"session"` is a string holding the session file.
     ///
     /// Errors: the JSON is not a record.
     pub fn from_json(text: &str) -> Result<Record, serde_json::Error> {
@@ -197,7 +196,12 @@ mod tests {
             camera: OrbitCamera::default(),
             mode: Mode::Optimize,
         };
-        let json = record_json(&editor, record.camera, record.mode);
+        let json = [
+            &record_head(record.camera, record.mode),
+            &record.session,
+            RECORD_TAIL,
+        ]
+        .concat();
         assert!(
             json.contains(r#""session":{"format":"sketchmesh-session""#),
             "{json}"

@@ -7,12 +7,13 @@
 use std::cell::RefCell;
 use std::rc::Rc;
 
-use js_sys::{Object, Reflect, Uint8Array};
+use js_sys::{JsString, Object, Reflect, Uint8Array};
+use sketchmesh_core::document::SessionPiece;
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
 use crate::app::{Shared, SketchApp};
-use crate::autosave::Record;
+use crate::autosave::{RECORD_TAIL, Record, record_head};
 use crate::input::web_pointer::WebPointer;
 
 /// Starts Sketchmesh on the canvas with id `canvas_id`.
@@ -202,8 +203,8 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
             if !shared.autosave.is_pending(revision) {
                 return Ok(());
             }
-            if let Some(record) = shared.autosave_record() {
-                write_autosave(&record).map_err(|e| js_error(&e))?;
+            if let Some(record) = autosave_text(&mut shared) {
+                write_autosave(record).map_err(|e| js_error(&e))?;
             }
             // The frames' clock, which the schedule compares with (not the wall clock).
             let now = c.input(|i| i.time);
@@ -288,11 +289,8 @@ fn restore(shared: &mut Shared, text: Option<&str>, at_start: bool) -> Result<()
 /// becomes a document of its own.
 ///
 /// Errors: a sentence when the page has no store or the call throws at once.
-pub fn keep_and_start(record: Option<&str>, title: &str) -> Result<(), String> {
-    let text = match record {
-        Some(record) => JsValue::from_str(record),
-        None => JsValue::NULL,
-    };
+pub fn keep_and_start(record: Option<JsString>, title: &str) -> Result<(), String> {
+    let text = record.map_or(JsValue::NULL, JsValue::from);
     call_page(
         "sketchmeshAutosave",
         "keep",
@@ -304,9 +302,50 @@ pub fn keep_and_start(record: Option<&str>, title: &str) -> Result<(), String> {
 /// `web/autosave.js`), which writes it to IndexedDB without blocking the frame.
 ///
 /// Errors: a sentence when the page has no store or the call throws at once.
-pub fn write_autosave(record: &str) -> Result<(), String> {
-    let text = JsValue::from_str(record);
-    call_page("sketchmeshAutosave", "save", &[text])
+pub fn write_autosave(record: JsString) -> Result<(), String> {
+    call_page("sketchmeshAutosave", "save", &[record.into()])
+}
+
+/// Each op's session text as a JavaScript string, made once per op of the document shown
+/// (the editor's log only grows until another editor is opened).
+#[derive(Default)]
+pub struct OpTexts {
+    /// The [`crate::autosave::Revision::opened`] of the editor they are of.
+    opened: u64,
+    texts: Vec<JsString>,
+}
+
+/// The autosave record of what `shared` shows, as the page stores it, or `None` for a
+/// document without ops (an empty page is not a document worth keeping). JavaScript joins
+/// strings without copying them, so the ops' text crosses once: an autosave after a scan's
+/// import no longer converts the session's tens of megabytes at every change (nor copies
+/// them into a record in the wasm first).
+pub fn autosave_text(shared: &mut Shared) -> Option<JsString> {
+    if shared.editor.ops().is_empty() {
+        return None;
+    }
+    let opened = shared.revision().opened;
+    let cache = &mut shared.op_texts;
+    if cache.opened != opened {
+        *cache = OpTexts {
+            opened,
+            texts: Vec::new(),
+        };
+    }
+    let mut record = JsString::from(record_head(shared.camera, shared.mode));
+    shared.editor.session_pieces(|piece| {
+        let text = match piece {
+            SessionPiece::Op(index, json) => {
+                if index == cache.texts.len() {
+                    cache.texts.push(JsString::from(json));
+                }
+                cache.texts[index].clone()
+            }
+            SessionPiece::Text(text) => JsString::from(text),
+        };
+        record = record.concat(&text);
+    });
+    Some(record.concat(&JsString::from(RECORD_TAIL)))
 }
 
 /// The documents panel (`web/documents.js`): `"show"` opens it, `"newDocument"` keeps the

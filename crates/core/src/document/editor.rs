@@ -107,7 +107,7 @@ impl Editor {
     }
 
     /// The ops applied so far as JSON, in order, each written once and kept.
-    pub(super) fn ops_json(&self) -> impl Iterator<Item = &str> + Clone {
+    pub(super) fn ops_json(&self) -> impl Iterator<Item = &str> {
         (self.log.iter().zip(&self.log_json))
             .map(|(op, json)| json.get_or_init(|| op.to_json()).as_str())
     }

@@ -26,7 +26,9 @@ impl Session {
     pub fn to_json(&self) -> String {
         let ops: Vec<String> = self.ops.iter().map(Op::to_json).collect();
         let mut json = String::new();
-        write_session_text(&mut json, ops.iter().map(String::as_str));
+        session_pieces_of(ops.iter().map(String::as_str), |piece| {
+            json.push_str(piece.text());
+        });
         json
     }
 
@@ -101,7 +103,15 @@ impl Editor {
     /// after its own fields, copying the ops' text once (a session that imported a scan
     /// carries its file, tens of megabytes).
     pub fn write_session_json(&self, out: &mut String) {
-        write_session_text(out, self.ops_json());
+        out.reserve(self.ops_json().map(|op| op.len() + 2).sum::<usize>() + 64);
+        self.session_pieces(|piece| out.push_str(piece.text()));
+    }
+
+    /// Calls `put` with each piece of [`Editor::session_json`], in order: the page hands an
+    /// autosave to JavaScript piece by piece and converts each op's text once, not at every
+    /// change (a session that imported a scan carries its file, tens of megabytes).
+    pub fn session_pieces(&self, put: impl FnMut(SessionPiece<'_>)) {
+        session_pieces_of(self.ops_json(), put);
     }
 
     /// Applies every op of a session to a new editor; the first refused op is an error. The
@@ -122,22 +132,42 @@ fn format_error(message: &str) -> SessionError {
     SessionError::Format(message.to_owned())
 }
 
-/// Appends a session file around ops already written as JSON, one per line, to `json`.
-fn write_session_text<'a>(json: &mut String, ops: impl Iterator<Item = &'a str> + Clone) {
-    json.reserve(ops.clone().map(|op| op.len() + 2).sum::<usize>() + 64);
-    json.push_str(&format!(
-        r#"{{"format":"{SESSION_FORMAT}","version":{SESSION_VERSION},"ops":["#
-    ));
+/// A piece of a session file's text.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SessionPiece<'a> {
+    /// The file's text around its ops.
+    Text(&'a str),
+    /// The JSON of the op at this index of the session, on a line of its own.
+    Op(usize, &'a str),
+}
+
+impl<'a> SessionPiece<'a> {
+    /// The piece's text.
+    pub fn text(self) -> &'a str {
+        match self {
+            SessionPiece::Text(text) | SessionPiece::Op(_, text) => text,
+        }
+    }
+}
+
+/// Calls `put` with each piece of a session file around ops already written as JSON, one
+/// per line.
+fn session_pieces_of<'a>(
+    ops: impl Iterator<Item = &'a str>,
+    mut put: impl FnMut(SessionPiece<'_>),
+) {
+    let head = format!(r#"{{"format":"{SESSION_FORMAT}","version":{SESSION_VERSION},"ops":["#);
+    put(SessionPiece::Text(&head));
     let mut any = false;
-    for op in ops {
-        json.push_str(if any { ",\n" } else { "\n" });
-        json.push_str(op);
+    for (index, op) in ops.enumerate() {
+        put(SessionPiece::Text(if any { ",\n" } else { "\n" }));
+        put(SessionPiece::Op(index, op));
         any = true;
     }
     if any {
-        json.push('\n');
+        put(SessionPiece::Text("\n"));
     }
-    json.push_str("]}\n");
+    put(SessionPiece::Text("]}\n"));
 }
 
 /// Parses one op, with an error message fit to follow "op N: ".
@@ -245,6 +275,19 @@ mod tests {
         let editor = Editor::replay(&session).unwrap();
         assert_eq!(editor.document().sketches.len(), 2);
         assert_eq!(editor.session_json(), example);
+        // Its pieces, as the page's autosave joins them: the same text, each op once and in
+        // order.
+        let (mut joined, mut ops) = (String::new(), Vec::new());
+        editor.session_pieces(|piece| {
+            joined.push_str(piece.text());
+            if let SessionPiece::Op(index, json) = piece {
+                ops.push((index, json.to_owned()));
+            }
+        });
+        assert_eq!(joined, example);
+        let written: Vec<(usize, String)> =
+            session.ops.iter().map(Op::to_json).enumerate().collect();
+        assert_eq!(ops, written);
         // The second stroke was drawn looking down −X, so it lies in the plane x = 0.
         for point in &editor.document().sketches[1].points {
             assert!(point.x.abs() < 1e-12);

@@ -368,7 +368,7 @@ impl SceneGeometry {
     fn add_mesh(
         &mut self,
         mesh: &Mesh,
-        edges: bool,
+        with_edges: bool,
         normals: &[DVec3],
         corners: Corners<'_>,
     ) -> Vec<MeshDraw> {
@@ -377,7 +377,7 @@ impl SceneGeometry {
         self.vertices.reserve(positions.len());
         self.welded.reserve(positions.len());
         self.triangles.reserve(triangles.len());
-        if edges {
+        if with_edges {
             self.edges.reserve(triangles.len());
         }
         let base = self.vertices.len() as u32;
@@ -441,7 +441,11 @@ impl SceneGeometry {
         }
         // Each edge once: by its boundary half-edge, or by the lower of its two half-edges
         // (a hash set of vertex pairs cost 0.3 s at a million triangles in the page).
-        let drawn = if edges { &self.triangles[first..] } else { &[] };
+        let drawn = if with_edges {
+            &self.triangles[first..]
+        } else {
+            &[]
+        };
         for (i, drawn) in drawn.chunks_exact(3).enumerate() {
             let f = face_at(i);
             for k in 0..3 {

@@ -160,6 +160,22 @@ async function withShape(body) {
   }
 }
 
+/** The session of the autosave record of the document shown, or `null` before it is written. */
+async function storedSession(page) {
+  const shown = (await api(page, 'documents')).find((d) => d.shown);
+  if (!shown) return null;
+  const text = await page.evaluate((id) => new Promise((resolve, reject) => {
+    const request = indexedDB.open('sketchmesh');
+    request.onsuccess = () => {
+      const read = request.result.transaction('records').objectStore('records').get(id);
+      read.onsuccess = () => resolve(read.result ?? null);
+      read.onerror = () => reject(read.error);
+    };
+    request.onerror = () => reject(request.error);
+  }), shown.id);
+  return text === null ? null : JSON.parse(text).session;
+}
+
 async function until(probe, accept, ms = 3000) {
   const deadline = Date.now() + ms;
   let value = await probe();
@@ -756,6 +772,11 @@ test('a dropped .glb imports and is framed; Export downloads a valid file; bad f
     const session = JSON.parse(await api(fresh.page, 'session'));
     assert.equal(session.ops.at(-1).op, 'import');
     assert.equal(session.ops.at(-1).files[0].name, 'spot.glb');
+    // The autosave, written piece by piece to JavaScript, holds the session shown, the file
+    // in it.
+    await api(fresh.page, 'flushAutosave');
+    const stored = await until(() => storedSession(fresh.page), (s) => s !== null, 5000);
+    assert.deepEqual(stored, session, 'the autosaved session is the one shown');
 
     const [download] = await Promise.all([
       fresh.page.waitForEvent('download', { timeout: 10_000 }),

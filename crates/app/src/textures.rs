@@ -55,7 +55,8 @@ impl Textures {
             };
             let textures = || (look.materials.iter()).filter_map(|m| m.base_color_texture.as_ref());
             // Whether the look still fits compares every triangle (12 MB at a million
-            // triangles, 3 ms a frame in the page): only when a texture is still to ask for.
+            // triangles, about 1 ms a frame in the page): only when a texture is still to
+            // ask for.
             let to_ask = textures().any(|t| !self.asked.contains(&key(&t.image)));
             if !to_ask || !look.fits(&model.mesh) {
                 continue;

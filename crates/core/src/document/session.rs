@@ -95,16 +95,8 @@ impl Editor {
     /// kept since they were first written.
     pub fn session_json(&self) -> String {
         let mut json = String::new();
-        self.write_session_json(&mut json);
+        self.session_pieces(|piece| json.push_str(piece.text()));
         json
-    }
-
-    /// Appends [`Editor::session_json`] to `out`: an autosave record writes the session
-    /// after its own fields, copying the ops' text once (a session that imported a scan
-    /// carries its file, tens of megabytes).
-    pub fn write_session_json(&self, out: &mut String) {
-        out.reserve(self.ops_json().map(|op| op.len() + 2).sum::<usize>() + 64);
-        self.session_pieces(|piece| out.push_str(piece.text()));
     }
 
     /// Calls `put` with each piece of [`Editor::session_json`], in order: the page hands an

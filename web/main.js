@@ -23,8 +23,8 @@ const notify = (sentence) => {
 // The app hands its autosave record here (see crates/app/src/autosave.rs), and the documents
 // panel's buttons (crates/app/src/panels/toolbar.rs) here.
 window.sketchmeshAutosave = {
-  save: (text) => store.save(text).catch((e) => notify(`Could not autosave your work: ${e?.message ?? e}`)),
-  keep: (text, name) => store.keep(text, name).catch((e) => notify(`Could not keep the previous document: ${e?.message ?? e}`)),
+  save: (pieces) => store.save(pieces).catch((e) => notify(`Could not autosave your work: ${e?.message ?? e}`)),
+  keep: (pieces, name) => store.keep(pieces, name).catch((e) => notify(`Could not keep the previous document: ${e?.message ?? e}`)),
 };
 window.sketchmeshDocuments = {
   show: () => documents.show(),
@@ -59,7 +59,9 @@ async function restore() {
   try {
     record = await store.load();
   } catch (e) {
-    console.warn("No document store:", e);
+    // Without IndexedDB (no document is shown then) the page works but keeps nothing.
+    if (store.shownId() == null) console.warn("No document store:", e);
+    else notify(`Could not restore the last document (it stays under Documents): ${e?.message ?? e}`);
   }
   // At start: without a record, work done while the store was read stays.
   try {

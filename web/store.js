@@ -1,8 +1,12 @@
 // The documents kept in this browser (IndexedDB), so that a reload, a closed tab or a
 // discarded background tab loses nothing, and several pieces of work live side by side.
 //
-// - `records`: id → the app's autosave record, a JSON text (session, camera, tool; see
-//   crates/app/src/autosave.rs).
+// - `records`: id → the app's autosave record (session, camera, tool; see
+//   crates/app/src/autosave.rs): a JSON text, or (since version 3) a list of its pieces in
+//   order, each a string or `{ piece: key }`, a long piece kept in `pieces`.
+// - `pieces`: "<id>/<index>" → a piece of document id's record at least `APART` long: an op
+//   carrying an imported file (a scan's is tens of megabytes). The record's other pieces change
+//   at every autosave; a long one is written once, not copied again at each change.
 // - `documents`: id → { id, name, created, updated, thumbnail (a PNG Blob or null) }, small,
 //   so that the documents panel lists them without reading the records.
 // - `autosave`: "open" → the id of the document shown; "set-aside-<time>" → records that did
@@ -12,17 +16,23 @@
 // that a slow one never lands after a newer one.
 
 const DB = "sketchmesh";
-const VERSION = 2;
+const VERSION = 3;
 const RECORDS = "records";
+const PIECES = "pieces";
 const DOCUMENTS = "documents";
 const STATE = "autosave";
 const OPEN = "open";
+// A piece of a record this long or longer is stored apart (64 KiB: an import, not an edit).
+const APART = 1 << 16;
 
 let database = null;
 let openId = null;
 // The name the shown document gets when it is first written.
 let pendingName = null;
 let last = Promise.resolve();
+// Key → the long piece as last written (or read): a piece still equal to it is not written
+// again. The strings are the app's own (it keeps each op's text), so this costs no copy.
+const written = new Map();
 
 function open() {
   database ??= new Promise((resolve, reject) => {
@@ -35,13 +45,16 @@ function open() {
   return database;
 }
 
-// Creates the stores; version 1's single record becomes the open document.
+// Creates the stores a version lacks; version 1's single record becomes the open document.
 function upgrade(request, oldVersion) {
   const db = request.result;
   if (oldVersion < 1) db.createObjectStore(STATE);
-  db.createObjectStore(RECORDS);
-  db.createObjectStore(DOCUMENTS, { keyPath: "id" });
-  if (oldVersion < 1) return;
+  if (oldVersion < 2) {
+    db.createObjectStore(RECORDS);
+    db.createObjectStore(DOCUMENTS, { keyPath: "id" });
+  }
+  if (oldVersion < 3) db.createObjectStore(PIECES);
+  if (oldVersion !== 1) return;
   const state = request.transaction.objectStore(STATE);
   state.get("current").onsuccess = (event) => {
     const text = event.target.result;
@@ -108,23 +121,92 @@ export function shownId() {
 }
 
 // The shown document's record (JSON text), or null for an empty start. Call once, first.
+// A record that cannot be read stays as it is, and a new document is shown.
 export async function load() {
   openId = (await transact([STATE], "readonly", (s) => s[STATE].get(OPEN))) ?? newId();
-  return (await transact([RECORDS], "readonly", (s) => s[RECORDS].get(openId))) ?? null;
+  try {
+    return await read(openId);
+  } catch (error) {
+    openId = newId();
+    throw error;
+  }
 }
 
-// Writes `text` as the shown document's record.
-export function save(text) {
+// Record `id`'s text, or null; its long pieces are remembered as written.
+async function read(id) {
+  const stored = await transact([RECORDS], "readonly", (s) => s[RECORDS].get(id));
+  if (stored == null || typeof stored === "string") return stored ?? null;
+  const keys = stored.filter((part) => typeof part !== "string").map((part) => part.piece);
+  const pieces = await transact([PIECES], "readonly", (s) => Promise.all(keys.map((key) => asked(s[PIECES].get(key)))));
+  if (pieces.some((piece) => typeof piece !== "string")) {
+    throw new Error("a part of the document kept in this browser is missing from its storage");
+  }
+  const texts = new Map(keys.map((key, i) => [key, pieces[i]]));
+  for (const [key, piece] of texts) written.set(key, piece);
+  return stored.map((part) => (typeof part === "string" ? part : texts.get(part.piece))).join("");
+}
+
+// Resolves with a request's result.
+function asked(request) {
+  return new Promise((resolve, reject) => {
+    request.onsuccess = () => resolve(request.result);
+    request.onerror = () => reject(request.error);
+  });
+}
+
+// Writes `pieces` (strings whose concatenation is the record; see `autosave_pieces` in
+// crates/app/src/web.rs) as the shown document's record.
+export function save(pieces) {
   const id = openId;
   const now = Date.now();
-  return write([RECORDS, DOCUMENTS, STATE], (s) => {
-    s[RECORDS].put(text, id);
+  return write([RECORDS, PIECES, DOCUMENTS, STATE], (s) => {
+    s[RECORDS].put(parted(id, pieces, s[PIECES]), id);
     s[DOCUMENTS].get(id).onsuccess = (event) => {
       const known = event.target.result ?? { id, name: pendingName ?? defaultName(now), created: now, thumbnail: null };
       s[DOCUMENTS].put({ ...known, updated: now });
     };
     s[STATE].put(id, OPEN);
   });
+}
+
+// The record of document `id` made of `pieces`: runs of short pieces joined, each long one
+// put into `store` under its own key unless it is there already, the long pieces no longer
+// in the record deleted.
+function parted(id, pieces, store) {
+  const parts = [];
+  const kept = new Set();
+  let run = [];
+  pieces.forEach((piece, index) => {
+    if (piece.length < APART) {
+      run.push(piece);
+      return;
+    }
+    if (run.length > 0) parts.push(run.join(""));
+    run = [];
+    const key = `${id}/${index}`;
+    if (written.get(key) !== piece) {
+      const put = store.put(piece, key);
+      written.set(key, piece);
+      // A failed write is written again next time.
+      put.onerror = () => written.delete(key);
+    }
+    kept.add(key);
+    parts.push({ piece: key });
+  });
+  if (run.length > 0) parts.push(run.join(""));
+  for (const key of [...written.keys()]) {
+    if (key.startsWith(`${id}/`) && !kept.has(key)) {
+      store.delete(key);
+      written.delete(key);
+    }
+  }
+  return parts;
+}
+
+// Deletes document `id`'s long pieces.
+function deletePieces(id, store) {
+  store.delete(IDBKeyRange.bound(`${id}/`, `${id}/\uffff`));
+  for (const key of [...written.keys()]) if (key.startsWith(`${id}/`)) written.delete(key);
 }
 
 // Shows the document `id` from now on (its record is written by later saves); a new id when
@@ -136,10 +218,10 @@ export function show(id = null, name = null) {
   return write([STATE], (s) => s[STATE].put(shown, OPEN));
 }
 
-// Keeps `text` (the document shown, or null when it has nothing worth keeping) and shows a
-// new, empty document named `name`.
-export function keep(text, name = null) {
-  if (text != null) save(text);
+// Keeps `pieces` (the record of the document shown, or null when it has nothing worth
+// keeping) and shows a new, empty document named `name`.
+export function keep(pieces, name = null) {
+  if (pieces != null) save(pieces);
   return show(null, name);
 }
 
@@ -147,9 +229,10 @@ export function keep(text, name = null) {
 // belonged to goes, and a new one is shown.
 export function setAside(text) {
   const id = openId;
-  write([RECORDS, DOCUMENTS, STATE], (s) => {
+  write([RECORDS, PIECES, DOCUMENTS, STATE], (s) => {
     s[STATE].put(text, `set-aside-${new Date().toISOString()}`);
     s[RECORDS].delete(id);
+    deletePieces(id, s[PIECES]);
     s[DOCUMENTS].delete(id);
   });
   return show();
@@ -173,8 +256,9 @@ export function rename(id, name) {
 }
 
 export function remove(id) {
-  return write([RECORDS, DOCUMENTS], (s) => {
+  return write([RECORDS, PIECES, DOCUMENTS], (s) => {
     s[RECORDS].delete(id);
+    deletePieces(id, s[PIECES]);
     s[DOCUMENTS].delete(id);
   });
 }
@@ -182,7 +266,7 @@ export function remove(id) {
 // The record of document `id`, or null.
 export async function record(id) {
   await last.catch(() => {});
-  return (await transact([RECORDS], "readonly", (s) => s[RECORDS].get(id))) ?? null;
+  return read(id);
 }
 
 // The kept documents, the latest changed first, after the writes queued so far.

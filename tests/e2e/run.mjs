@@ -162,18 +162,84 @@ async function withShape(body) {
 
 /** The session of the autosave record of the document shown, or `null` before it is written. */
 async function storedSession(page) {
+  const record = await storedRecord(page);
+  if (record === null) return null;
+  const text = record.parts.map((part) => (typeof part === 'string' ? part : record.pieces[part.piece])).join('');
+  return JSON.parse(text).session;
+}
+
+// The shown document's record as IndexedDB holds it (web/store.js): its parts, and the long
+// pieces kept apart that they name; null when nothing is stored.
+async function storedRecord(page) {
   const shown = (await api(page, 'documents')).find((d) => d.shown);
   if (!shown) return null;
-  const text = await page.evaluate((id) => new Promise((resolve, reject) => {
+  return page.evaluate((id) => new Promise((resolve, reject) => {
     const request = indexedDB.open('sketchmesh');
     request.onsuccess = () => {
-      const read = request.result.transaction('records').objectStore('records').get(id);
-      read.onsuccess = () => resolve(read.result ?? null);
-      read.onerror = () => reject(read.error);
+      const transaction = request.result.transaction(['records', 'pieces']);
+      const read = transaction.objectStore('records').get(id);
+      const keys = transaction.objectStore('pieces').getAllKeys();
+      const values = transaction.objectStore('pieces').getAll();
+      transaction.oncomplete = () => {
+        if (read.result == null) return resolve(null);
+        const parts = typeof read.result === 'string' ? [read.result] : read.result;
+        resolve({ parts, pieces: Object.fromEntries(keys.result.map((key, i) => [key, values.result[i]])) });
+      };
+      transaction.onerror = () => reject(transaction.error);
     };
     request.onerror = () => reject(request.error);
   }), shown.id);
-  return text === null ? null : JSON.parse(text).session;
+}
+
+// Counts, from now on, the strings of at least `length` characters the page writes to
+// IndexedDB (read with `longWrites`).
+// Opens the app in a fresh profile whose store is as version 2 of web/store.js left it, with
+// `record` (a JSON text) the document shown, and checks that it restores `session`.
+async function restoresFromVersion2(record, session) {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 720 } });
+  try {
+    const page = await context.newPage();
+    await page.goto(new URL('favicon.svg', url).href);
+    await page.evaluate((record) => new Promise((resolve, reject) => {
+      const request = indexedDB.open('sketchmesh', 2);
+      request.onupgradeneeded = () => {
+        const db = request.result;
+        db.createObjectStore('autosave');
+        db.createObjectStore('records');
+        db.createObjectStore('documents', { keyPath: 'id' });
+      };
+      request.onsuccess = () => {
+        const db = request.result;
+        const transaction = db.transaction(['autosave', 'records', 'documents'], 'readwrite');
+        transaction.objectStore('records').put(record, 'kept');
+        transaction.objectStore('documents').put({ id: 'kept', name: 'Kept', created: 1, updated: 1, thumbnail: null });
+        transaction.objectStore('autosave').put('kept', 'open');
+        transaction.oncomplete = () => {
+          db.close();
+          resolve();
+        };
+        transaction.onerror = () => reject(transaction.error);
+      };
+      request.onerror = () => reject(request.error);
+    }), record);
+    await page.goto(url, { waitUntil: 'load' });
+    await page.waitForFunction(() => typeof window.sketchmesh?.stats === 'function', null, { timeout: 15_000 });
+    const restored = await until(() => api(page, 'session'), (s) => JSON.parse(s).ops.length > 0, 15_000);
+    assert.equal(restored, session, 'a version 2 store\'s document restores');
+  } finally {
+    await context.close();
+  }
+}
+
+async function countLongWrites(page, length) {
+  await page.evaluate((length) => {
+    window.longWrites = 0;
+    const put = IDBObjectStore.prototype.put;
+    IDBObjectStore.prototype.put = function (value, key) {
+      if (typeof value === 'string' && value.length >= length) window.longWrites += 1;
+      return put.call(this, value, key);
+    };
+  }, length);
 }
 
 async function until(probe, accept, ms = 3000) {
@@ -777,6 +843,22 @@ test('a dropped .glb imports and is framed; Export downloads a valid file; bad f
     await api(fresh.page, 'flushAutosave');
     const stored = await until(() => storedSession(fresh.page), (s) => s !== null, 5000);
     assert.deepEqual(stored, session, 'the autosaved session is the one shown');
+    // The import's op (the file's base64) is stored apart from the record, once: neither a
+    // later change nor the first autosave after a reload writes it again.
+    const record = await storedRecord(fresh.page);
+    assert.equal(record.parts.filter((part) => typeof part !== 'string').length, 1, 'the import is a piece apart');
+    assert.ok(record.parts.every((part) => typeof part !== 'string' || part.length < 65536), 'the rest of the record is short');
+    await fresh.page.reload({ waitUntil: 'load' });
+    await fresh.page.waitForFunction(() => typeof window.sketchmesh?.stats === 'function', null, { timeout: 15_000 });
+    assert.deepEqual(await until(() => api(fresh.page, 'stats'), (s) => s.models === 1, 15_000), stats, 'the reload restores the cow');
+    await countLongWrites(fresh.page, 65536);
+    await api(fresh.page, 'undo');
+    await api(fresh.page, 'flushAutosave');
+    await api(fresh.page, 'redo');
+    await api(fresh.page, 'flushAutosave');
+    const later = JSON.parse(await api(fresh.page, 'session'));
+    assert.deepEqual(await until(() => storedSession(fresh.page), (s) => s?.ops.length === later.ops.length, 5000), later, 'the later autosaves hold the session shown');
+    assert.equal(await fresh.page.evaluate(() => window.longWrites), 0, 'and wrote no long piece');
 
     const [download] = await Promise.all([
       fresh.page.waitForEvent('download', { timeout: 10_000 }),
@@ -1814,6 +1896,14 @@ test('autosave: create and pull, reload: the same document, session, view and hi
   assert.deepEqual(await glb(), beforePull, 'bit for bit');
   await frames(fresh.page, 3);
   await screenshot(fresh.page, out('autosave-restored.png'));
+  // A document kept by the previous version of the store (version 2: the record one JSON
+  // text) opens in this one, in a fresh profile.
+  await api(fresh.page, 'flushAutosave');
+  const undone = JSON.parse(await session());
+  await until(() => storedSession(fresh.page), (s) => s?.ops.length === undone.ops.length, 5000);
+  const { parts } = await storedRecord(fresh.page);
+  assert.ok(parts.every((part) => typeof part === 'string'), 'a record without an import has no piece apart');
+  await restoresFromVersion2(parts.join(''), await session());
   // A corrupt record: the page starts empty, says why, and keeps the record aside.
   await sleep(1200);
   const [kept] = await api(fresh.page, 'documents');

@@ -721,7 +721,7 @@ impl SketchApp {
                 return;
             }
             let started = clock::now_ms();
-            (crate::web::autosave_text(&mut shared), started)
+            (crate::web::autosave_pieces(&mut shared), started)
         };
         let Some(record) = record else {
             return;
@@ -904,7 +904,7 @@ impl SketchApp {
             let title = name
                 .trim_end_matches(".json")
                 .trim_end_matches(".sketchmesh");
-            let record = crate::web::autosave_text(&mut self.shared.borrow_mut());
+            let record = crate::web::autosave_pieces(&mut self.shared.borrow_mut());
             if let Err(why) = crate::web::keep_and_start(record, title) {
                 let sentence =
                     format!("Did not open {name}: the work shown could not be kept ({why}).");

@@ -21,7 +21,7 @@ pub const INTERVAL: f64 = 0.5;
 /// One autosave: the document's session, the view and the tool, as read back. Written
 /// as [`record_head`], the session file itself (not a string holding it, so that nothing
 /// escapes its text again) and [`RECORD_TAIL`]: in the page, the session goes to JavaScript
-/// piece by piece, each op's text converted once (`web::autosave_text`).
+/// piece by piece, each op's text converted once (`web::autosave_pieces`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Record {
     /// The session file's text (`docs/session-format.md`).

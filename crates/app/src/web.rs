@@ -203,7 +203,7 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
             if !shared.autosave.is_pending(revision) {
                 return Ok(());
             }
-            if let Some(record) = autosave_text(&mut shared) {
+            if let Some(record) = autosave_pieces(&mut shared) {
                 write_autosave(record).map_err(|e| js_error(&e))?;
             }
             // The frames' clock, which the schedule compares with (not the wall clock).
@@ -289,7 +289,7 @@ fn restore(shared: &mut Shared, text: Option<&str>, at_start: bool) -> Result<()
 /// becomes a document of its own.
 ///
 /// Errors: a sentence when the page has no store or the call throws at once.
-pub fn keep_and_start(record: Option<JsString>, title: &str) -> Result<(), String> {
+pub fn keep_and_start(record: Option<js_sys::Array>, title: &str) -> Result<(), String> {
     let text = record.map_or(JsValue::NULL, JsValue::from);
     call_page(
         "sketchmeshAutosave",
@@ -298,11 +298,12 @@ pub fn keep_and_start(record: Option<JsString>, title: &str) -> Result<(), Strin
     )
 }
 
-/// Hands `record` to the page's store (`window.sketchmeshAutosave.save`, from
-/// `web/autosave.js`), which writes it to IndexedDB without blocking the frame.
+/// Hands `record` (its pieces, see [`autosave_pieces`]) to the page's store
+/// (`window.sketchmeshAutosave.save`, from `web/main.js`), which writes it to IndexedDB
+/// without blocking the frame.
 ///
 /// Errors: a sentence when the page has no store or the call throws at once.
-pub fn write_autosave(record: JsString) -> Result<(), String> {
+pub fn write_autosave(record: js_sys::Array) -> Result<(), String> {
     call_page("sketchmeshAutosave", "save", &[record.into()])
 }
 
@@ -315,12 +316,13 @@ pub struct OpTexts {
     texts: Vec<JsString>,
 }
 
-/// The autosave record of what `shared` shows, as the page stores it, or `None` for a
-/// document without ops (an empty page is not a document worth keeping). JavaScript joins
-/// strings without copying them, so the ops' text crosses once: an autosave after a scan's
-/// import no longer converts the session's tens of megabytes at every change (nor copies
-/// them into a record in the wasm first).
-pub fn autosave_text(shared: &mut Shared) -> Option<JsString> {
+/// The autosave record of what `shared` shows, as pieces of text whose concatenation is the
+/// record, or `None` for a document without ops (an empty page is not a document worth
+/// keeping). Each op is a piece of its own, its text converted once and kept as a JavaScript
+/// string, so an autosave after a scan's import neither converts nor copies the session's tens
+/// of megabytes again; and the page's store (`web/store.js`) keeps a long piece apart from the
+/// record, written once rather than at every change.
+pub fn autosave_pieces(shared: &mut Shared) -> Option<js_sys::Array> {
     if shared.editor.ops().is_empty() {
         return None;
     }
@@ -332,7 +334,8 @@ pub fn autosave_text(shared: &mut Shared) -> Option<JsString> {
             texts: Vec::new(),
         };
     }
-    let mut record = JsString::from(record_head(shared.camera, shared.mode));
+    let pieces = js_sys::Array::new();
+    pieces.push(&JsString::from(record_head(shared.camera, shared.mode)));
     shared.editor.session_pieces(|piece| {
         let text = match piece {
             SessionPiece::Op(index, json) => {
@@ -343,9 +346,10 @@ pub fn autosave_text(shared: &mut Shared) -> Option<JsString> {
             }
             SessionPiece::Text(text) => JsString::from(text),
         };
-        record = record.concat(&text);
+        pieces.push(&text);
     });
-    Some(record.concat(&JsString::from(RECORD_TAIL)))
+    pieces.push(&JsString::from(RECORD_TAIL));
+    Some(pieces)
 }
 
 /// The documents panel (`web/documents.js`): `"show"` opens it, `"newDocument"` keeps the

@@ -437,6 +437,7 @@ impl SketchApp {
         let ms = clock::now_ms() - started;
         self.edit_clock
             .stepped(ms, was_gesture, &mut self.shared.borrow_mut().timings);
+        self.tools.edit_stepped(edit);
         // With the worker: its answer repaints; one repaint shows the progress line once it
         // is due, and its ring then ticks. Nothing else repaints: every frame draws the whole
         // scene, which costs the worker its core on a machine without a GPU.

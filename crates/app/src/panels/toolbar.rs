@@ -318,7 +318,7 @@ fn options_row(
                 ui.separator();
             }
             Mode::Region => {
-                let output = tools.region_ui(ui, editor.document());
+                let output = tools.region_ui(ui);
                 if output != ToolOutput::None {
                     action = Some(Action::Tool(Box::new(output)));
                 }

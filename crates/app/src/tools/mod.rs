@@ -26,7 +26,7 @@ mod test_support;
 
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::StrokePoint;
-use sketchmesh_core::document::Document;
+use sketchmesh_core::document::{Document, Edit};
 
 pub use crate::input::router::{Hands, ToolEvent};
 pub use context::{ToolOutput, ViewCtx};
@@ -99,8 +99,8 @@ impl ToolSet {
     }
 
     /// The region tool's panel; what the user did there.
-    pub fn region_ui(&mut self, ui: &mut egui::Ui, doc: &Document) -> ToolOutput {
-        self.region.settings_ui(ui, doc)
+    pub fn region_ui(&mut self, ui: &mut egui::Ui) -> ToolOutput {
+        self.region.settings_ui(ui)
     }
 
     /// The region tool's profile panel, to draw, while it shows.
@@ -183,6 +183,12 @@ impl ToolSet {
             Mode::Move => self.arrange.gizmo(doc, camera, viewport),
             _ => None,
         }
+    }
+
+    /// The edit in progress stepped: a tool waiting on what it finds takes it (the region
+    /// tool's handles and profile panel).
+    pub fn edit_stepped(&mut self, edit: &Edit) {
+        self.region.found(edit);
     }
 
     /// The edit a tool's gesture began was refused: the tool starts over.

@@ -73,6 +73,7 @@ use std::sync::Arc;
 
 use crate::io::Previewed;
 use crate::mesh::VertexId;
+use crate::region_edit::RegionEdit;
 use glam::{DVec2, DVec3};
 
 use super::arrange::TransformPreview;
@@ -85,7 +86,7 @@ use super::oversketch::{OutlinePiece, OutlinePreview};
 use super::region_edit::RegionPreview;
 use super::skeleton::HandleDrag;
 use super::volumetric::CurvePreview;
-use super::{CommandError, Document, Editor, ImportInput, Model, Op};
+use super::{CommandError, Document, Editor, ImportInput, Model, Op, RegionEditInput};
 use crate::io::Imported;
 
 /// What [`Edit::step`] left to do.
@@ -768,6 +769,16 @@ impl Edit {
     pub fn region_falloff(&self) -> Option<(usize, &[VertexId], &[f64])> {
         match &self.work {
             Work::Region(preview) => preview.falloff(),
+            _ => None,
+        }
+    }
+
+    /// A region edit's region once it is found, when it was found for the curves of `curves`
+    /// (in the same view; the motion and fall-off aside): what a tool places handles on and
+    /// cuts cross-sections from, without finding it again in a frame.
+    pub fn region_found_for(&self, curves: &RegionEditInput) -> Option<&RegionEdit> {
+        match &self.work {
+            Work::Region(preview) => preview.found_for(curves),
             _ => None,
         }
     }

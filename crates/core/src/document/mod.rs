@@ -59,7 +59,7 @@ pub use op::{
 };
 pub use outcome::{import_files, model_op};
 pub use oversketch::OutlinePiece;
-pub use region_edit::{RegionDrag, dragged_region, region_of};
+pub use region_edit::{RegionDrag, dragged_region};
 pub use replay::Replay;
 pub use session::{SESSION_FORMAT, SESSION_VERSION, Session, SessionPiece};
 pub use session_error::SessionError;

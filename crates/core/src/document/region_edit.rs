@@ -19,7 +19,7 @@ use crate::curve::polyline::thin;
 use crate::curve::process_stroke;
 use crate::mesh::VertexId;
 use crate::region_edit::{
-    Area, Handle, Levels, Motion, RegionEdit, RegionError, RegionSketch, checked_transform,
+    Area, Finding, Handle, Levels, Motion, RegionEdit, RegionError, RegionSketch, checked_transform,
 };
 
 /// Input samples nearer than this (CSS px) to the last kept one are dropped before the
@@ -122,17 +122,39 @@ fn moved(edit: &RegionEdit, input: &RegionEditInput) -> Result<Vec<DVec3>, Regio
 
 /// The model under the reference curve's first point and the region of `input` on it, the
 /// curves embedded in its mesh unless the model's imported look forbids (see
-/// [`RegionEdit::on_edges`]): what a tool keeps to place handles on the curve and cut
-/// profiles across it (a one-off cost per pair of curves, as the op's first step has).
+/// [`RegionEdit::on_edges`]), found at once; the preview finds it in steps
+/// ([`RegionPreview::step`]).
 ///
 /// Errors: as [`region_edit_op`].
-pub fn region_of(
-    doc: &Document,
-    input: &RegionEditInput,
-) -> Result<(usize, RegionEdit), CommandError> {
+fn region_of(doc: &Document, input: &RegionEditInput) -> Result<(usize, RegionEdit), CommandError> {
+    let Start {
+        model,
+        sketch,
+        embeds,
+    } = start_of(doc, input)?;
+    let mesh = &doc.models[model].mesh;
+    let found = RegionEdit::finding(mesh, &sketch, embeds)?;
+    Ok((model, weighed(found, mesh, input)?))
+}
+
+/// What finding the region of an op starts from.
+struct Start {
+    /// The model under the reference curve.
+    model: usize,
+    /// The curves, smoothed.
+    sketch: RegionSketch,
+    /// Whether the curves may be embedded in the model's mesh (see [`is_textured`]).
+    embeds: bool,
+}
+
+/// The model and the curves of `input`, checked.
+///
+/// Errors: [`CommandError::BadView`], a curve too short, a bad transform or levels, or a
+/// reference curve that misses every model.
+fn start_of(doc: &Document, input: &RegionEditInput) -> Result<Start, CommandError> {
     let reference = input.reference_input();
     let viewport = reference.checked_viewport()?;
-    let levels = levels_of(input)?;
+    levels_of(input)?;
     if let Some(transform) = &input.transform {
         checked_transform(transform)?;
     }
@@ -144,23 +166,35 @@ pub fn region_of(
         stroke: input.boundary.clone(),
         ..reference.clone()
     };
-    let index = model_under(doc, &reference).ok_or(RegionError::ReferenceMissesModel)?;
+    let model = model_under(doc, &reference).ok_or(RegionError::ReferenceMissesModel)?;
     let sketch = RegionSketch {
         camera: input.camera,
         viewport,
         reference: smoothed(&reference)?,
         boundary: smoothed(&boundary).map_err(|_| RegionError::BoundaryMissesReference)?,
     };
-    let model = target(doc, index)?;
-    let mut edit = if is_textured(model) {
-        RegionEdit::on_edges(&model.mesh, &sketch, &levels)?
-    } else {
-        RegionEdit::new(&model.mesh, &sketch, &levels)?
-    };
+    let embeds = !is_textured(target(doc, model)?);
+    Ok(Start {
+        model,
+        sketch,
+        embeds,
+    })
+}
+
+/// The region `found` on `mesh` weighed with `input`'s levels and areas: its last step.
+///
+/// Errors: bad levels or areas.
+fn weighed(
+    found: Finding,
+    mesh: &crate::mesh::Mesh,
+    input: &RegionEditInput,
+) -> Result<RegionEdit, CommandError> {
+    let levels = levels_of(input)?;
+    let mut edit = found.weigh(mesh, &levels);
     if !input.areas.is_empty() {
         edit.set_falloff(&levels, &areas_of(input)?);
     }
-    Ok((index, edit))
+    Ok(edit)
 }
 
 /// What a drag does to a region, about the surface point under the reference curve's
@@ -234,6 +268,40 @@ pub fn dragged_region(
     }
 }
 
+/// The op `input` with only what its region depends on: the curves and the view.
+fn curves_key(input: &RegionEditInput) -> RegionEditInput {
+    RegionEditInput {
+        transform: None,
+        handles: None,
+        profile: None,
+        levels: None,
+        areas: Vec::new(),
+        remesh: false,
+        ..input.clone()
+    }
+}
+
+/// The kept region `edit` of model `model`, found for the curves `key` and weighed with
+/// `input`'s levels, with the document it shows.
+fn built(
+    base: &Document,
+    key: RegionEditInput,
+    model: usize,
+    edit: RegionEdit,
+    input: &RegionEditInput,
+) -> Built {
+    let mut document = base.clone();
+    document.models[model] = Arc::new(embedded_model(&base.models[model], &edit));
+    Built {
+        key,
+        model,
+        edit,
+        document,
+        levels: (input.levels.clone(), input.areas.clone()),
+        disc: None,
+    }
+}
+
 fn levels_of(input: &RegionEditInput) -> Result<Levels, RegionError> {
     input
         .levels
@@ -267,6 +335,8 @@ fn areas_of(input: &RegionEditInput) -> Result<Vec<Area>, RegionError> {
 /// A live region edit on one model: the region behind it and what it shows.
 #[derive(Debug)]
 pub(super) struct RegionPreview {
+    /// The region of the curves last asked for while it is found, a step per frame.
+    finding: Option<Searched>,
     built: Option<Built>,
     /// Whether the region was found anew since [`RegionPreview::take_rebuilt`] last asked:
     /// the document shown changed (the curves embedded elsewhere).
@@ -274,6 +344,15 @@ pub(super) struct RegionPreview {
     /// The op the shown positions are for, once shown.
     shown_for: Option<RegionEditInput>,
     shown: Vec<DVec3>,
+}
+
+/// A region being found, and for what.
+#[derive(Debug)]
+struct Searched {
+    /// The op's curves (see [`curves_key`]).
+    key: RegionEditInput,
+    model: usize,
+    finding: Finding,
 }
 
 /// A region edit and what it was found for.
@@ -297,6 +376,7 @@ impl RegionPreview {
     /// Shows the document as it is until the first step.
     pub(super) fn new() -> Self {
         RegionPreview {
+            finding: None,
             built: None,
             rebuilt: false,
             shown_for: None,
@@ -305,9 +385,10 @@ impl RegionPreview {
     }
 
     /// Brings what is shown to `input`'s transform and levels, finding the region first if
-    /// the curves changed, then (in the next step) laying it flat for the fall-off panel:
-    /// `None` when all is there already, `Some(true)` after a step with the disc still to
-    /// come, `Some(false)` after a step that got there.
+    /// the curves changed (in three steps, see [`Finding`]: for the bunny each is a third
+    /// of the 50 ms it takes at once), then (in the next step) laying it flat for the
+    /// fall-off panel: `None` when all is there already, `Some(true)` after a step with more
+    /// to come, `Some(false)` after a step that got there.
     ///
     /// Errors: the region's refusal (the edit then repeats it; the document is untouched).
     pub(super) fn step(
@@ -315,6 +396,9 @@ impl RegionPreview {
         base: &Document,
         input: &RegionEditInput,
     ) -> Result<Option<bool>, CommandError> {
+        if self.find(base, input)? {
+            return Ok(Some(true));
+        }
         let built = edit_for(&mut self.built, &mut self.rebuilt, base, input)?;
         let mesh = built.edit.mesh();
         if self.shown_for.as_ref() == Some(input) {
@@ -341,6 +425,49 @@ impl RegionPreview {
         }
         self.shown_for = Some(input.clone());
         Ok(Some(built.disc.is_none()))
+    }
+
+    /// Takes the next step of finding the region of `input`'s curves unless it is found:
+    /// whether a step was taken.
+    ///
+    /// Errors: the region's refusal.
+    fn find(&mut self, base: &Document, input: &RegionEditInput) -> Result<bool, CommandError> {
+        let key = curves_key(input);
+        if self.built.as_ref().is_some_and(|built| built.key == key) {
+            return Ok(false);
+        }
+        let searched = match self.finding.take() {
+            Some(searched) if searched.key == key => searched,
+            _ => {
+                let start = start_of(base, input)?;
+                let mesh = &base.models[start.model].mesh;
+                self.finding = Some(Searched {
+                    key,
+                    model: start.model,
+                    finding: RegionEdit::finding(mesh, &start.sketch, start.embeds)?,
+                });
+                return Ok(true);
+            }
+        };
+        let Searched {
+            key,
+            model,
+            mut finding,
+        } = searched;
+        let mesh = &base.models[model].mesh;
+        if !finding.is_embedded() {
+            finding.embed(mesh);
+            self.finding = Some(Searched {
+                key,
+                model,
+                finding,
+            });
+            return Ok(true);
+        }
+        let edit = weighed(finding, mesh, input)?;
+        self.built = Some(built(base, key, model, edit, input));
+        self.rebuilt = true;
+        Ok(true)
     }
 
     /// The committed result of `input`, from the kept region when it serves.
@@ -383,6 +510,12 @@ impl RegionPreview {
         Some(disc.as_ref().map(Vec::as_slice))
     }
 
+    /// The region found, when it was found for the curves of `curves`.
+    pub(super) fn found_for(&self, curves: &RegionEditInput) -> Option<&RegionEdit> {
+        let built = self.built.as_ref()?;
+        (built.key == curves_key(curves)).then_some(&built.edit)
+    }
+
     /// The model, the region's vertices and their weights, for the fall-off overlay.
     pub(super) fn falloff(&self) -> Option<(usize, &[VertexId], &[f64])> {
         let built = self.built.as_ref()?;
@@ -398,30 +531,13 @@ fn edit_for<'a>(
     base: &Document,
     input: &RegionEditInput,
 ) -> Result<&'a mut Built, CommandError> {
-    let key = RegionEditInput {
-        transform: None,
-        handles: None,
-        profile: None,
-        levels: None,
-        areas: Vec::new(),
-        remesh: false,
-        ..input.clone()
-    };
+    let key = curves_key(input);
     let mut built = match slot.take() {
         Some(built) if built.key == key => built,
         _ => {
             let (model, edit) = region_of(base, input)?;
-            let mut document = base.clone();
-            document.models[model] = Arc::new(embedded_model(&base.models[model], &edit));
             *rebuilt = true;
-            Built {
-                key,
-                model,
-                edit,
-                document,
-                levels: (input.levels.clone(), input.areas.clone()),
-                disc: None,
-            }
+            built(base, key, model, edit, input)
         }
     };
     // Weighed again only when the levels change, not in every drag frame.

@@ -37,7 +37,7 @@ use crate::camera::Camera;
 pub use edit::{Embedded, FeatureEdit, Shaped, embed_sketch, pick_path};
 pub use error::FeatureError;
 pub use placement::BAND_PX;
-pub(crate) use placement::place;
+pub(crate) use placement::{Placed, place};
 
 /// What a feature sketch does to the surface.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]

@@ -10,7 +10,7 @@ use super::{
     RegionSketch,
 };
 use crate::curve::polyline::contains;
-use crate::feature::{Sketch, place};
+use crate::feature::{Placed, Sketch, place};
 use crate::geometry::{Bvh, Fractions, log_affine, vertex_normals};
 use crate::mesh::{Mesh, VertexId};
 
@@ -66,25 +66,37 @@ impl RegionEdit {
         Self::found(mesh, sketch, levels, false)
     }
 
-    /// The region of `sketch` on `input`, with the curves embedded when `embeds` asks.
-    ///
-    /// The curves are placed on `input` (checked, the region grown, the rail cast) before
-    /// anything is embedded: a refused sketch costs no embedding, and no ray is cast along
-    /// an embedded curve, where it would pass exactly through the new vertices and could
-    /// slip between their triangles. The embedding adds only the curves' own vertices, so
-    /// the region carries over: the input's vertices as placed, the reference chain in, the
-    /// boundary chain out (its vertices stay, and the fall-off reaches 0 on the drawn loop).
+    /// The region of `sketch` on `input`, with the curves embedded when `embeds` asks: the
+    /// steps of a [`Finding`] taken at once.
     fn found(
         input: &Mesh,
         sketch: &RegionSketch,
         levels: &Levels,
         embeds: bool,
     ) -> Result<Self, RegionError> {
+        Ok(RegionEdit::finding(input, sketch, embeds)?.weigh(input, levels))
+    }
+
+    /// The first step of finding the region of `sketch` on `mesh`: the curves placed (checked,
+    /// the region grown, the rail cast). The curves are embedded (when `embeds` asks; see
+    /// [`RegionEdit::on_edges`]) and the region weighed in the next steps, so that a page
+    /// spreads the work over frames.
+    ///
+    /// The curves are placed before anything is embedded: a refused sketch costs no
+    /// embedding, and no ray is cast along an embedded curve, where it would pass exactly
+    /// through the new vertices and could slip between their triangles.
+    ///
+    /// Errors: the curves' refusals (see [`RegionError`]).
+    pub fn finding(
+        mesh: &Mesh,
+        sketch: &RegionSketch,
+        embeds: bool,
+    ) -> Result<Finding, RegionError> {
         let boundary = closed_boundary(sketch)?;
-        let normals = vertex_normals(input);
-        let bvh = Bvh::new(input);
+        let normals = vertex_normals(mesh);
+        let bvh = Bvh::new(mesh);
         let placed = place(
-            input,
+            mesh,
             &bvh,
             &normals,
             &Sketch {
@@ -94,61 +106,18 @@ impl RegionEdit {
                 region: Some(boundary.clone()),
             },
         )?;
-        let rail = cast_rail(input, &bvh, &normals, sketch, &placed.points, &placed.path);
-        let Embedded {
-            mesh,
-            reference,
-            boundary: boundary_pieces,
-            splits,
-        } = if embeds {
-            embed(input, sketch, &boundary)
-        } else {
-            Embedded::unchanged(input)
-        };
-        let mut region = placed.region;
-        region.resize(mesh.n_vertices(), false);
-        for v in boundary_pieces.iter().flatten() {
-            region[v.index()] = false;
-        }
-        let path = match reference {
-            Some(chain) => {
-                for v in &chain {
-                    region[v.index()] = true;
-                }
-                chain
-            }
-            None => placed.path,
-        };
-        let vertices: Vec<VertexId> = mesh.vertices().filter(|v| region[v.index()]).collect();
-        let found = closeness(&mesh, &region, &vertices, &path);
-        let weights = found.closeness.iter().map(|&s| levels.weight(s)).collect();
-        let params = (path.iter())
-            .map(|&v| rail.nearest_param(mesh.position(v)))
-            .collect();
-        let seen = vertices
-            .iter()
-            .map(|&v| {
-                (sketch
-                    .camera
-                    .screen_from_world(mesh.position(v), sketch.viewport))
-                .map_or(DVec2::NAN, |p| p.truncate())
-            })
-            .collect();
-        Ok(RegionEdit {
-            mesh,
-            splits,
-            vertices,
-            closeness: found.closeness,
-            weights,
-            nearest: found.nearest,
-            seen,
-            params,
+        let rail = cast_rail(mesh, &bvh, &normals, sketch, &placed.points, &placed.path);
+        Ok(Finding {
+            sketch: sketch.clone(),
+            boundary,
+            embeds,
+            placed,
             rail,
-            reference: path,
+            embedded: None,
         })
     }
 
-    /// The mesh the region was found on: the input with the curves embedded (new vertices
+    /// The mesh the region was found on: the input with the curves embedded    /// The mesh the region was found on: the input with the curves embedded (new vertices
     /// after the input's, every input vertex where it was). Every motion moves this mesh.
     pub fn mesh(&self) -> &Mesh {
         &self.mesh
@@ -313,6 +282,101 @@ impl RegionEdit {
 /// of it, and those last points go.
 ///
 /// Errors: [`RegionError::BoundaryCrosses`] for a point that is not finite.
+/// A region being found, one step at a time: the curves placed (see
+/// [`RegionEdit::finding`]), then embedded ([`Finding::embed`]), then the region weighed
+/// ([`Finding::weigh`]). Each step takes the mesh the first was given.
+#[derive(Debug)]
+pub struct Finding {
+    sketch: RegionSketch,
+    /// The boundary as a loop, its repeated last points dropped.
+    boundary: Vec<DVec2>,
+    embeds: bool,
+    placed: Placed,
+    rail: HandleRail,
+    embedded: Option<Embedded>,
+}
+
+impl Finding {
+    /// Whether the curves are embedded (the next step weighs the region).
+    pub fn is_embedded(&self) -> bool {
+        self.embedded.is_some()
+    }
+
+    /// The second step: the curves embedded in a copy of `mesh` where each can be (see
+    /// [`super::embed`]), or `mesh` as it is when they are traced over its edges.
+    pub fn embed(&mut self, mesh: &Mesh) {
+        if self.embedded.is_none() {
+            self.embedded = Some(if self.embeds {
+                embed(mesh, &self.sketch, &self.boundary)
+            } else {
+                Embedded::unchanged(mesh)
+            });
+        }
+    }
+
+    /// The last step: the region weighed with `levels` on the embedded mesh (embedding
+    /// first if that step was not taken). The embedding adds only the curves' own vertices,
+    /// so the region carries over: `mesh`'s vertices as placed, the reference chain in, the
+    /// boundary chain out (its vertices stay, and the fall-off reaches 0 on the drawn loop).
+    pub fn weigh(mut self, mesh: &Mesh, levels: &Levels) -> RegionEdit {
+        self.embed(mesh);
+        let Finding {
+            sketch,
+            placed,
+            rail,
+            embedded,
+            ..
+        } = self;
+        let Embedded {
+            mesh,
+            reference,
+            boundary: boundary_pieces,
+            splits,
+        } = embedded.expect("embedded above");
+        let mut region = placed.region;
+        region.resize(mesh.n_vertices(), false);
+        for v in boundary_pieces.iter().flatten() {
+            region[v.index()] = false;
+        }
+        let path = match reference {
+            Some(chain) => {
+                for v in &chain {
+                    region[v.index()] = true;
+                }
+                chain
+            }
+            None => placed.path,
+        };
+        let vertices: Vec<VertexId> = mesh.vertices().filter(|v| region[v.index()]).collect();
+        let found = closeness(&mesh, &region, &vertices, &path);
+        let weights = found.closeness.iter().map(|&s| levels.weight(s)).collect();
+        let params = (path.iter())
+            .map(|&v| rail.nearest_param(mesh.position(v)))
+            .collect();
+        let seen = vertices
+            .iter()
+            .map(|&v| {
+                (sketch
+                    .camera
+                    .screen_from_world(mesh.position(v), sketch.viewport))
+                .map_or(DVec2::NAN, |p| p.truncate())
+            })
+            .collect();
+        RegionEdit {
+            mesh,
+            splits,
+            vertices,
+            closeness: found.closeness,
+            weights,
+            nearest: found.nearest,
+            seen,
+            params,
+            rail,
+            reference: path,
+        }
+    }
+}
+
 fn closed_boundary(sketch: &RegionSketch) -> Result<Vec<DVec2>, RegionError> {
     let mut boundary = sketch.boundary.clone();
     while boundary.len() > 3 && boundary[0].distance(boundary[boundary.len() - 1]) < CLOSED_PX {

@@ -42,7 +42,7 @@ use glam::DVec2;
 
 use crate::camera::Camera;
 
-pub use edit::{RegionEdit, checked_transform};
+pub use edit::{Finding, RegionEdit, checked_transform};
 pub use error::RegionError;
 pub use falloff::{Area, Levels};
 pub use handles::{Handle, HandleFrame, HandleRail, Motion, blend_at};

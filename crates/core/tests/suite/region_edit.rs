@@ -7,7 +7,7 @@ use glam::{DMat4, DQuat, DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::polyline::contains;
 use sketchmesh_core::document::{
-    CommandError, Editor, Op, RegionDrag, RegionEditInput, dragged_region,
+    CommandError, Editor, Op, Progress, RegionDrag, RegionEditInput, dragged_region,
 };
 use sketchmesh_core::geometry::Fractions;
 use sketchmesh_core::mesh::{Mesh, primitives};
@@ -299,11 +299,21 @@ fn the_op_replays_and_its_drag_commits_what_replay_gives() {
     editor.apply(import_mesh("sphere.glb", &mesh)).unwrap();
     let imported = editor.document().models[0].mesh.clone();
     let lift = |y: f64| DMat4::from_translation(DVec3::new(0.0, y, 0.1));
-    // A drag: the transform revised frame by frame, then released.
+    // A drag: the transform revised frame by frame, then released. The region is found in
+    // steps (placed, embedded, weighed), each a frame of its own in the page: until then the
+    // model is shown as it is.
     let mut edit = editor.begin_gesture(op(&sketch, lift(0.0), None)).unwrap();
+    for _ in 0..2 {
+        assert_eq!(edit.step().unwrap(), Progress::Working);
+        assert!(edit.moved_model().is_none() && edit.region_falloff().is_none());
+        assert_eq!(
+            edit.document().models[0].mesh.positions(),
+            imported.positions()
+        );
+    }
     for y in [0.05, 0.1, 0.2, 0.3] {
         edit.revise(op(&sketch, lift(y), None));
-        edit.step().unwrap();
+        while edit.step().unwrap() == Progress::Working {}
         let (model, shown) = edit.moved_model().unwrap();
         assert_eq!(model, 0);
         assert!(shown.iter().zip(imported.positions()).any(|(a, b)| a != b));
@@ -346,7 +356,7 @@ fn a_region_drag_s_commit_computed_elsewhere_is_the_one_made_here() {
         let mut edit = editor.begin_gesture(remeshed(0.0)).unwrap();
         for y in [0.2, 0.5] {
             edit.revise(remeshed(y));
-            edit.step().unwrap();
+            while edit.step().unwrap() == Progress::Working {}
         }
         edit.end_gesture();
         edit

@@ -23,8 +23,8 @@ use sketchmesh_core::curve::polyline::{
 };
 use sketchmesh_core::curve::{StrokePoint, is_closed_loop};
 use sketchmesh_core::document::{
-    AreaInput, CLOSE_TOLERANCE_PX, Document, Op, RegionDrag, RegionEditInput, StrokeInput,
-    dragged_region, model_under, region_of,
+    AreaInput, CLOSE_TOLERANCE_PX, Document, Edit, Op, RegionDrag, RegionEditInput, StrokeInput,
+    dragged_region, model_under,
 };
 use sketchmesh_core::region_edit::Levels;
 
@@ -167,7 +167,7 @@ impl RegionTool {
     pub fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
         match std::mem::take(&mut self.stage) {
             Stage::Reference => self.reference(event, view, doc),
-            Stage::Boundary(reference) => self.boundary(reference, event, view, doc),
+            Stage::Boundary(reference) => self.boundary(reference, event, view),
             Stage::Ready(input) => match (event, self.drag) {
                 (ToolEvent::Begin(_), _) if self.lassoing => {
                     self.draw.capture(event, view);
@@ -206,7 +206,7 @@ impl RegionTool {
                     ToolOutput::None
                 }
             },
-            Stage::Redrawing(input) => self.redraw_boundary(input, event, view, doc),
+            Stage::Redrawing(input) => self.redraw_boundary(input, event, view),
             Stage::Lassoing(input) => self.lasso_area(input, event, view),
             Stage::Profile(session) => self.profile(session, event, view),
             Stage::Handles(session, begun) => match event {
@@ -231,7 +231,6 @@ impl RegionTool {
         input: RegionEditInput,
         event: &ToolEvent,
         view: &ViewCtx,
-        doc: &Document,
     ) -> ToolOutput {
         let Some(stroke) = self.draw.capture(event, view) else {
             self.stage = match event {
@@ -250,14 +249,14 @@ impl RegionTool {
         if is_tap(&stroke) || !points.first().is_some_and(near) || !points.last().is_some_and(near)
         {
             let sentence = "To redraw the boundary, start and end the stroke on it.";
-            return self.after_boundary(input, doc, Some(sentence));
+            return self.after_boundary(input, Some(sentence));
         }
         let merged = oversketch_merge_closed(&boundary, &points, BAUDEL_K);
         let input = RegionEditInput {
             boundary: merged.iter().map(|p| [p.x, p.y, 0.5]).collect(),
             ..input
         };
-        self.after_boundary(input, doc, None)
+        self.after_boundary(input, None)
     }
 
     /// The stroke of an area's lasso: at its end, a new area with the levels the graph
@@ -310,22 +309,12 @@ impl RegionTool {
             .collect()
     }
 
-    /// The curves are set again: the edit shows them (with handles, when they are picked),
+    /// The curves are set again: the edit shows them (and finds their region, which then
+    /// gets handles or the profile panel when they are picked: see [`RegionTool::found`]),
     /// and `refusal` is said if there is one.
-    fn after_boundary(
-        &mut self,
-        input: RegionEditInput,
-        doc: &Document,
-        refusal: Option<&str>,
-    ) -> ToolOutput {
-        let output = match self.drag {
-            DragKind::Handles => self.show_handles(input, doc),
-            DragKind::Profile => self.show_profile(input, doc),
-            DragKind::Region(_) => {
-                self.stage = Stage::Ready(input.clone());
-                ToolOutput::Revise(Op::RegionEdit(input))
-            }
-        };
+    fn after_boundary(&mut self, input: RegionEditInput, refusal: Option<&str>) -> ToolOutput {
+        self.stage = Stage::Ready(input.clone());
+        let output = ToolOutput::Revise(Op::RegionEdit(input));
         match refusal {
             Some(sentence) => ToolOutput::Refused(String::from(sentence)),
             None => output,
@@ -434,38 +423,27 @@ impl RegionTool {
         }
     }
 
-    /// The curves get the profile panel: the region is found (a one-off cost) and its
-    /// cross-section cut at the curve's middle, or the reason it cannot be.
-    fn show_profile(&mut self, input: RegionEditInput, doc: &Document) -> ToolOutput {
-        match region_of(doc, &input) {
-            Ok((_, region)) => {
-                let session = ProfileSession::new(input, region);
-                let op = Op::RegionEdit(session.input());
-                self.stage = Stage::Profile(Box::new(session));
-                ToolOutput::Revise(op)
+    /// The open edit found the region of the curves drawn: with **Handles** or **Profile**
+    /// picked, the handles or the profile panel show. The tool asks for nothing itself, so
+    /// the region is found once, by the edit, in steps spread over frames.
+    pub fn found(&mut self, edit: &Edit) {
+        let Stage::Ready(input) = &self.stage else {
+            return;
+        };
+        let Some(region) = edit.region_found_for(input) else {
+            return;
+        };
+        let input = input.clone();
+        self.stage = match self.drag {
+            DragKind::Handles => {
+                let rail = region.rail().clone();
+                Stage::Handles(Box::new(HandleSession::new(input, rail)), false)
             }
-            Err(error) => {
-                self.stage = Stage::Ready(input);
-                ToolOutput::Refused(error.to_string())
+            DragKind::Profile => {
+                Stage::Profile(Box::new(ProfileSession::new(input, region.clone())))
             }
-        }
-    }
-
-    /// The curves get handles: the curve is placed on the model (a one-off cost) and the
-    /// open edit shows the handles' op, or the reason it cannot be.
-    fn show_handles(&mut self, input: RegionEditInput, doc: &Document) -> ToolOutput {
-        match region_of(doc, &input) {
-            Ok((_, region)) => {
-                let session = HandleSession::new(input, region.rail().clone());
-                let op = Op::RegionEdit(session.input());
-                self.stage = Stage::Handles(Box::new(session), false);
-                ToolOutput::Revise(op)
-            }
-            Err(error) => {
-                self.stage = Stage::Ready(input);
-                ToolOutput::Refused(error.to_string())
-            }
-        }
+            DragKind::Region(_) => Stage::Ready(input),
+        };
     }
 
     /// A finished first stroke: the reference curve, which must start on a model.
@@ -492,7 +470,6 @@ impl RegionTool {
         reference: StrokeInput,
         event: &ToolEvent,
         view: &ViewCtx,
-        doc: &Document,
     ) -> ToolOutput {
         let Some(input) = self.draw.capture(event, view) else {
             self.stage = Stage::Boundary(reference);
@@ -525,7 +502,7 @@ impl RegionTool {
             remesh: true,
         };
         // The edit opens at once, unmoved, so that its fall-off shows before any drag.
-        self.after_boundary(input, doc, None)
+        self.after_boundary(input, None)
     }
 
     /// Forgets the curves, their areas and the drag (the app cancels its edit).
@@ -601,7 +578,7 @@ impl RegionTool {
                 DragKind::Region(RegionDrag::Scale) => {
                     "Drag up or down: the region grows or shrinks, fading out"
                 }
-                DragKind::Handles | DragKind::Profile => "Pick the drag's kind again to go on",
+                DragKind::Handles | DragKind::Profile => "Finding the region on the model…",
             }),
             Stage::Handles(_, false) => Some(
                 "Drag a handle's axis: near the handle moves, its middle scales, its end turns; tap the curve to add a handle",
@@ -620,14 +597,14 @@ impl RegionTool {
     }
 
     /// The panel: what a drag does, the fall-off's shape, Apply for the handles, and Clear.
-    pub fn settings_ui(&mut self, ui: &mut egui::Ui, doc: &Document) -> ToolOutput {
+    pub fn settings_ui(&mut self, ui: &mut egui::Ui) -> ToolOutput {
         let mut output = ToolOutput::None;
         for (drag, label, hint) in DRAGS {
             let button =
                 egui::Button::selectable(self.drag == drag, label).min_size(egui::vec2(36.0, 36.0));
             if ui.add(button).on_hover_text(hint).clicked() && self.drag != drag {
                 self.drag = drag;
-                output = self.change_drag(doc);
+                output = self.change_drag();
             }
         }
         ui.separator();
@@ -742,7 +719,7 @@ impl RegionTool {
     /// The drag's kind changed: drawn curves get what it needs (handles, the profile panel,
     /// nothing), anything moved so far is dropped, and the open edit shows the curves
     /// unmoved.
-    fn change_drag(&mut self, doc: &Document) -> ToolOutput {
+    fn change_drag(&mut self) -> ToolOutput {
         let curves = match std::mem::take(&mut self.stage) {
             Stage::Ready(input) => input,
             Stage::Handles(session, _) => session.curves().clone(),
@@ -752,7 +729,7 @@ impl RegionTool {
                 return ToolOutput::None;
             }
         };
-        self.after_boundary(curves, doc, None)
+        self.after_boundary(curves, None)
     }
 }
 
@@ -903,8 +880,20 @@ mod tests {
     use super::*;
     use crate::input::Phase;
     use crate::tools::test_support::{pen, shape, view};
+    use sketchmesh_core::document::{Editor, Progress};
 
     /// Feeds a pen stroke through screen points; the last output that says something.
+    /// What the app does with `opened`, the tool's op for the curves drawn: the edit begins
+    /// and steps until its region is found, and the tool takes it.
+    fn find_region(tool: &mut RegionTool, editor: &Editor, opened: ToolOutput) {
+        let ToolOutput::Revise(op) = opened else {
+            panic!("the loop opens the edit: {opened:?}")
+        };
+        let mut edit = editor.begin_gesture(op).unwrap();
+        while edit.step().unwrap() == Progress::Working {}
+        tool.found(&edit);
+    }
+
     fn stroke(tool: &mut RegionTool, doc: &Document, points: &[DVec2]) -> ToolOutput {
         let at = |phase, p: DVec2| pen(phase, p.x as f32, p.y as f32);
         let view = view();
@@ -999,16 +988,13 @@ mod tests {
                 centre + 110.0 * DVec2::from_angle(std::f64::consts::TAU * f64::from(i) / 48.0)
             })
             .collect();
+        // The loop opens the edit, unmoved; the handles show once it found the region.
         let opened = stroke(&mut tool, doc, &ring);
-        let ToolOutput::Revise(Op::RegionEdit(begun)) = opened else {
-            panic!("the loop opens the edit with the handles, unmoved: {opened:?}")
-        };
-        assert_eq!(
-            (begun.transform, begun.handles.as_ref().map(Vec::len)),
-            (None, Some(3))
-        );
         let view = view();
         let size = DVec2::new(view.viewport.width().into(), view.viewport.height().into());
+        assert!(tool.handle_axes(&view.camera, size).is_empty());
+        assert!(tool.hint().unwrap().contains("Finding"));
+        find_region(&mut tool, &editor, opened);
         let axes = tool.handle_axes(&view.camera, size);
         assert!(axes.len() >= 6, "three handles with their axes: {axes:?}");
         assert!(tool.hint().unwrap().contains("axis"));
@@ -1151,12 +1137,14 @@ mod tests {
                 centre + 110.0 * DVec2::from_angle(std::f64::consts::TAU * f64::from(i) / 48.0)
             })
             .collect();
-        assert!(matches!(
-            stroke(&mut tool, doc, &ring),
-            ToolOutput::Revise(_)
-        ));
+        let opened = stroke(&mut tool, doc, &ring);
         let view = view();
         let size = DVec2::new(view.viewport.width().into(), view.viewport.height().into());
+        assert!(
+            tool.profile_view(size).is_none(),
+            "not before the region is found"
+        );
+        find_region(&mut tool, &editor, opened);
         let panel = tool.profile_view(size).expect("the panel shows");
         assert!(panel.refusal.is_none(), "{:?}", panel.refusal);
         assert!(panel.section.len() > 5);

@@ -66,6 +66,10 @@ const SPREAD_AFTER_MS: f64 = 50.0;
 /// How many busy frames in a row may leave the autosave to the next one.
 #[cfg(target_arch = "wasm32")]
 const AUTOSAVE_WAITS: u8 = 3;
+/// The autosave readies the session's new text in steps while this lasts in a frame (ms),
+/// and writes in a later frame when a step ran past it.
+#[cfg(target_arch = "wasm32")]
+const AUTOSAVE_STEP_MS: f64 = 8.0;
 
 /// What the drawn scene was built from: the editor's revision, the edit's number and
 /// revision when it shows another document than the editor's, the textures' version, and
@@ -711,31 +715,28 @@ impl SketchApp {
             return;
         }
         self.autosave_waits = 0;
-        let (record, started) = {
-            let mut shared = self.shared.borrow_mut();
-            if !shared.autosave.due(revision, now) {
-                if shared.autosave.is_pending(revision) {
-                    ctx.request_repaint_after(std::time::Duration::from_secs_f64(
-                        autosave::INTERVAL,
-                    ));
-                }
-                return;
+        let mut shared = self.shared.borrow_mut();
+        if !shared.autosave.due(revision, now) {
+            if shared.autosave.is_pending(revision) {
+                ctx.request_repaint_after(std::time::Duration::from_secs_f64(autosave::INTERVAL));
             }
-            let started = clock::now_ms();
-            (crate::web::autosave_pieces(&mut shared), started)
-        };
-        let Some(record) = record else {
             return;
+        }
+        let started = clock::now_ms();
+        let record = if crate::web::ready_op_texts(&mut shared, started, AUTOSAVE_STEP_MS) {
+            crate::web::autosave_pieces(&mut shared)
+        } else {
+            // A long op's text took this frame: the write comes in a later one.
+            ctx.request_repaint();
+            None
         };
-        let written = crate::web::write_autosave(record);
-        // The frame's share of the write: the session serialized and handed to the page's
-        // queue (the page benchmark reads it as "autosave").
+        let written = record.map(crate::web::write_autosave);
+        // The frame's share of the write: the session's new text readied, or the record
+        // handed to the page's queue (the page benchmark reads it as "autosave").
         let ms = clock::now_ms() - started;
-        clock::record(
-            &mut self.shared.borrow_mut().timings.of("autosave").frame_ms,
-            ms,
-        );
-        if let Err(why) = written {
+        clock::record(&mut shared.timings.of("autosave").frame_ms, ms);
+        drop(shared);
+        if let Some(Err(why)) = written {
             self.set_status(format!("Could not autosave: {why}"), now);
         }
     }

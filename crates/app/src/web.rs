@@ -316,6 +316,44 @@ pub struct OpTexts {
     texts: Vec<JsString>,
 }
 
+impl OpTexts {
+    /// Empties `shared`'s texts if they are of another editor than the one it shows.
+    fn renew(shared: &mut Shared) {
+        let opened = shared.revision().opened;
+        if shared.op_texts.opened != opened {
+            shared.op_texts = OpTexts {
+                opened,
+                texts: Vec::new(),
+            };
+        }
+    }
+}
+
+/// Readies the autosave's pieces while `budget_ms` lasts from `started` (at least one step
+/// when it has not passed): each new op's JSON written, then converted to a JavaScript
+/// string, one after the other, so that an import's op (its files in base64, tens of
+/// megabytes for a scan) takes a frame for each and the write a third, not one frame for
+/// all. Whether every op is ready.
+pub fn ready_op_texts(shared: &mut Shared, started: f64, budget_ms: f64) -> bool {
+    OpTexts::renew(shared);
+    let (editor, cache) = (&shared.editor, &mut shared.op_texts);
+    loop {
+        let index = cache.texts.len();
+        if index == editor.ops().len() {
+            return true;
+        }
+        if crate::clock::now_ms() - started > budget_ms {
+            return false;
+        }
+        if editor.is_op_json_written(index) {
+            let json = editor.op_json(index).unwrap_or_default();
+            cache.texts.push(JsString::from(json));
+        } else {
+            editor.op_json(index);
+        }
+    }
+}
+
 /// The autosave record of what `shared` shows, as pieces of text whose concatenation is the
 /// record, or `None` for a document without ops (an empty page is not a document worth
 /// keeping). Each op is a piece of its own, its text converted once and kept as a JavaScript
@@ -326,14 +364,8 @@ pub fn autosave_pieces(shared: &mut Shared) -> Option<js_sys::Array> {
     if shared.editor.ops().is_empty() {
         return None;
     }
-    let opened = shared.revision().opened;
+    OpTexts::renew(shared);
     let cache = &mut shared.op_texts;
-    if cache.opened != opened {
-        *cache = OpTexts {
-            opened,
-            texts: Vec::new(),
-        };
-    }
     let pieces = js_sys::Array::new();
     pieces.push(&JsString::from(record_head(shared.camera, shared.mode)));
     shared.editor.session_pieces(|piece| {

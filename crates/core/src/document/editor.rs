@@ -108,8 +108,22 @@ impl Editor {
 
     /// The ops applied so far as JSON, in order, each written once and kept.
     pub(super) fn ops_json(&self) -> impl Iterator<Item = &str> {
-        (self.log.iter().zip(&self.log_json))
-            .map(|(op, json)| json.get_or_init(|| op.to_json()).as_str())
+        (0..self.log.len()).filter_map(|index| self.op_json(index))
+    }
+
+    /// Op `index`'s JSON, as the session file has it: written once and kept (an import's
+    /// carries its files in base64, tens of megabytes for a scan, so a page writes it in a
+    /// frame of its own; see [`Editor::is_op_json_written`]). `None` past the last op.
+    pub fn op_json(&self, index: usize) -> Option<&str> {
+        let (op, json) = (self.log.get(index)?, &self.log_json[index]);
+        Some(json.get_or_init(|| op.to_json()))
+    }
+
+    /// Whether op `index`'s JSON is written already.
+    pub fn is_op_json_written(&self, index: usize) -> bool {
+        self.log_json
+            .get(index)
+            .is_some_and(|json| json.get().is_some())
     }
 }
 
@@ -236,6 +250,18 @@ mod tests {
             CommandError::StrokeTooShort.to_string(),
             "That stroke is too short to use; draw a longer line."
         );
+    }
+
+    #[test]
+    fn an_op_s_json_is_written_once_when_first_asked_for() {
+        let mut editor = Editor::new();
+        editor.apply(horizontal_stroke()).unwrap();
+        assert!(!editor.is_op_json_written(0));
+        let json = editor.op_json(0).unwrap().to_owned();
+        assert!(editor.is_op_json_written(0));
+        assert_eq!(json, editor.ops()[0].to_json());
+        assert_eq!(editor.ops_json().collect::<Vec<_>>(), [json.as_str()]);
+        assert_eq!((editor.op_json(1), editor.is_op_json_written(1)), (None, false));
     }
 
     #[test]

@@ -261,7 +261,10 @@ mod tests {
         assert!(editor.is_op_json_written(0));
         assert_eq!(json, editor.ops()[0].to_json());
         assert_eq!(editor.ops_json().collect::<Vec<_>>(), [json.as_str()]);
-        assert_eq!((editor.op_json(1), editor.is_op_json_written(1)), (None, false));
+        assert_eq!(
+            (editor.op_json(1), editor.is_op_json_written(1)),
+            (None, false)
+        );
     }
 
     #[test]

@@ -427,22 +427,19 @@ impl RegionTool {
     /// picked, the handles or the profile panel show. The tool asks for nothing itself, so
     /// the region is found once, by the edit, in steps spread over frames.
     pub fn found(&mut self, edit: &Edit) {
-        let Stage::Ready(input) = &self.stage else {
+        let (Stage::Ready(input), DragKind::Handles | DragKind::Profile) = (&self.stage, self.drag)
+        else {
             return;
         };
         let Some(region) = edit.region_found_for(input) else {
             return;
         };
         let input = input.clone();
-        self.stage = match self.drag {
-            DragKind::Handles => {
-                let rail = region.rail().clone();
-                Stage::Handles(Box::new(HandleSession::new(input, rail)), false)
-            }
-            DragKind::Profile => {
-                Stage::Profile(Box::new(ProfileSession::new(input, region.clone())))
-            }
-            DragKind::Region(_) => Stage::Ready(input),
+        self.stage = if self.drag == DragKind::Handles {
+            let rail = region.rail().clone();
+            Stage::Handles(Box::new(HandleSession::new(input, rail)), false)
+        } else {
+            Stage::Profile(Box::new(ProfileSession::new(input, region.clone())))
         };
     }
 

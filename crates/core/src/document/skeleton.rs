@@ -19,7 +19,7 @@ use glam::{DVec2, DVec3};
 use super::{CommandError, CurveHandleInput, Document, HandleEditInput, LinkHandlesInput};
 use crate::model::{CurveHandle, HandleTarget, PointCloud};
 use crate::skeleton::{
-    Deformation, HandleCurve, HandleStroke, Link, Mover, Neighbours, PointEdit, Shape,
+    Deformation, HandleCurve, HandleStroke, Link, Mover, Neighbours, PointEdit, Segmented, Shape,
     SkeletonError, place_handle,
 };
 
@@ -102,6 +102,13 @@ fn points_of(doc: &Document, target: HandleTarget) -> Cow<'_, [DVec3]> {
     }
 }
 
+/// The moving handles' rest curves with their links, as a deformation takes them.
+fn movers_of<'a>(movers: &'a [(usize, HandleCurve)], links: &'a [Vec<Link>]) -> Vec<Mover<'a>> {
+    (movers.iter().zip(links))
+        .map(|((_, curve), links)| Mover { rest: curve, links })
+        .collect()
+}
+
 /// The triangles over [`points_of`] (none for a cloud).
 fn triangles_of(doc: &Document, target: HandleTarget) -> &[[u32; 3]] {
     match target {
@@ -134,10 +141,11 @@ pub(super) struct HandleDrag {
     links: Vec<Vec<Link>>,
     /// The target's points before the edit (empty until the first step).
     rest: Vec<DVec3>,
-    /// Who is next to whom in the target, found at the first step, and the binding, made at
-    /// the second: at half a million points each takes about 50 ms natively, so neither the
-    /// pointer-down that begins the drag nor one frame waits for both.
+    /// Who is next to whom in the target, found at the first step, each handle's parts, at
+    /// the second, and the binding, made at the third: at half a million points each takes
+    /// 25–50 ms natively, so no frame waits for two of them.
     neighbours: Option<Neighbours>,
+    segmented: Option<Segmented>,
     deformation: Option<Deformation>,
     /// The target's points at the last pose shown.
     moved: Vec<DVec3>,
@@ -193,6 +201,7 @@ impl HandleDrag {
             links,
             rest: Vec::new(),
             neighbours: None,
+            segmented: None,
             deformation: None,
             moved: Vec::new(),
             moved_mesh: Vec::new(),
@@ -207,24 +216,41 @@ impl HandleDrag {
     /// Errors: a handle with no region.
     fn bound(&mut self, doc: &Document) -> Result<&Deformation, CommandError> {
         if self.deformation.is_none() {
-            self.find_neighbours(doc);
+            self.segment(doc)?;
             let shape = Shape {
                 positions: &self.rest,
                 triangles: triangles_of(doc, self.target),
             };
-            let movers: Vec<Mover> = (self.movers.iter().zip(&self.links))
-                .map(|((_, curve), links)| Mover { rest: curve, links })
-                .collect();
-            let neighbours = self.neighbours.take().unwrap_or_default();
-            self.deformation = Some(Deformation::with_neighbours(&shape, &neighbours, &movers)?);
+            let segmented = self.segmented.take().expect("segmented above");
+            let movers = movers_of(&self.movers, &self.links);
+            self.deformation = Some(segmented.bound(&shape, &movers));
         }
         Ok(self.deformation.as_ref().expect("bound above"))
+    }
+
+    /// Each moving handle's parts of the target, once, after who is next to whom. Returns
+    /// whether this call found them.
+    ///
+    /// Errors: a handle with no region.
+    fn segment(&mut self, doc: &Document) -> Result<bool, CommandError> {
+        if self.segmented.is_some() || self.deformation.is_some() {
+            return Ok(false);
+        }
+        self.find_neighbours(doc);
+        let shape = Shape {
+            positions: &self.rest,
+            triangles: triangles_of(doc, self.target),
+        };
+        let neighbours = self.neighbours.take().unwrap_or_default();
+        let movers = movers_of(&self.movers, &self.links);
+        self.segmented = Some(Deformation::segmented(&shape, &neighbours, &movers)?);
+        Ok(true)
     }
 
     /// The target's points before the edit and who is next to whom, once. Returns whether
     /// this call found them.
     fn find_neighbours(&mut self, doc: &Document) -> bool {
-        if self.neighbours.is_some() || self.deformation.is_some() {
+        if self.neighbours.is_some() || self.segmented.is_some() || self.deformation.is_some() {
             return false;
         }
         self.rest = points_of(doc, self.target).into_owned();
@@ -280,7 +306,7 @@ impl HandleDrag {
         if self.shown.as_ref() == Some(input) {
             return Ok(None);
         }
-        if self.find_neighbours(doc) {
+        if self.find_neighbours(doc) || self.segment(doc)? {
             return Ok(Some(true));
         }
         self.pose(doc, input)?;

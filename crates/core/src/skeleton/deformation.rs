@@ -112,17 +112,51 @@ impl Deformation {
         neighbours: &Neighbours,
         movers: &[Mover],
     ) -> Result<Deformation, SkeletonError> {
+        Ok(Self::segmented(shape, neighbours, movers)?.bound(shape, movers))
+    }
+
+    /// The first half of [`Deformation::with_neighbours`]: each handle's rest frames and the
+    /// part of the shape each point falls in. At half a million points this and the second
+    /// half ([`Segmented::bound`]) each take about 30 ms natively, so an interactive edit
+    /// takes them in steps of their own.
+    ///
+    /// Errors: as [`Deformation::new`].
+    pub fn segmented(
+        shape: &Shape,
+        neighbours: &Neighbours,
+        movers: &[Mover],
+    ) -> Result<Segmented, SkeletonError> {
         if movers.iter().any(|m| m.rest.points.len() < 2) {
             return Err(SkeletonError::TooFewPoints);
         }
+        let handles = movers.iter().map(|mover| {
+            let rest_frames = rest_frames(&mover.rest.spline(), mover.rest.shaping());
+            let parts = segment(shape, neighbours, &rest_frames)?;
+            Ok((rest_frames, parts))
+        });
+        Ok(Segmented {
+            handles: handles.collect::<Result<_, SkeletonError>>()?,
+        })
+    }
+}
+
+/// Each handle's rest frames and parts, as [`Deformation::segmented`] found them.
+#[derive(Clone, Debug)]
+pub struct Segmented {
+    handles: Vec<(Vec<Frame>, Vec<Part>)>,
+}
+
+impl Segmented {
+    /// The second half of [`Deformation::with_neighbours`]: every point bound to its handle's
+    /// slab (or made rigid, or blended between handles), for the `shape` and `movers` the
+    /// first half had.
+    pub fn bound(self, shape: &Shape, movers: &[Mover]) -> Deformation {
         let n = shape.positions.len();
         let mut owners = vec![Owner::Still; n];
         let mut handles = Vec::with_capacity(movers.len());
         let mut parts_of = Vec::with_capacity(movers.len());
         let mut joints = Vec::new();
-        for (h, mover) in movers.iter().enumerate() {
-            let rest_frames = rest_frames(&mover.rest.spline(), mover.rest.shaping());
-            let parts = segment(shape, neighbours, &rest_frames)?;
+        for (h, (mover, (rest_frames, parts))) in movers.iter().zip(self.handles).enumerate() {
             let bounds = bind(shape.positions, &parts, &rest_frames);
             let radii = slab_radii(&bounds, &rest_frames);
             let last = mover.rest.points.len() - 1;
@@ -163,15 +197,17 @@ impl Deformation {
             }
         }
         let seams = seams(&handles, &joints, shape.positions);
-        Ok(Deformation {
+        Deformation {
             handles,
             owners,
             weights,
             joints,
             seams,
-        })
+        }
     }
+}
 
+impl Deformation {
     /// The frames of each handle at its new pose `curves` (in the order of the movers).
     pub fn frames(&self, curves: &[HandleCurve]) -> Vec<Vec<Frame>> {
         self.handles

@@ -1942,6 +1942,41 @@ test('autosave: create and pull, reload: the same document, session, view and hi
   assert.deepEqual(fresh.errors, [], 'console errors around the reloads');
 }));
 
+test('a file imported while the page still reads its store is autosaved into the new document', async () => {
+  const spotPath = join(dirname(fileURLToPath(import.meta.url)), '..', '..', '..', 'shared', 'testdata', 'meshes', 'spot.glb');
+  assert.ok(existsSync(spotPath), `the shared test data is missing: ${spotPath}`);
+  const fresh = await openApp(browser, url, gpu);
+  try {
+    // The store answers 1.5 s late (a slow disk): the import lands before it does.
+    await fresh.page.addInitScript(() => {
+      const open = IDBFactory.prototype.open;
+      IDBFactory.prototype.open = function (...args) {
+        const slow = {};
+        setTimeout(() => {
+          const request = open.apply(this, args);
+          for (const name of ['onsuccess', 'onerror', 'onupgradeneeded', 'onblocked']) {
+            request[name] = (event) => slow[name]?.(event);
+          }
+          for (const name of ['result', 'error', 'transaction']) {
+            Object.defineProperty(slow, name, { get: () => request[name] });
+          }
+        }, 1500);
+        return slow;
+      };
+    });
+    await fresh.page.reload({ waitUntil: 'load' });
+    await fresh.page.waitForFunction(() => typeof window.sketchmesh?.loadGlb === 'function', null, { timeout: 15_000 });
+    await fresh.page.evaluate((bytes) => window.sketchmesh.loadGlb(new Uint8Array(bytes), 'spot.glb'), Array.from(readFileSync(spotPath)));
+    const session = JSON.parse(await api(fresh.page, 'session'));
+    assert.equal(session.ops.length, 1, 'the import is the document\'s first op');
+    const stored = await until(() => storedSession(fresh.page), (s) => s !== null, 8000);
+    assert.deepEqual(stored, session, 'the import is autosaved once the store answers');
+    assert.deepEqual(fresh.errors, [], 'console errors');
+  } finally {
+    await fresh.context.close();
+  }
+});
+
 test('a panic (forced through the test API) shows a message with a bug report and Reload; the reload restores the work from before it', () => withShape(async ({ fresh, created }) => {
     await fresh.page.evaluate(() => window.sketchmesh.flushAutosave());
     const thrown = await fresh.page.evaluate(() => {

@@ -118,6 +118,13 @@ impl Schedule {
         self.saved = Some(revision);
     }
 
+    /// The page has offered no record while the document shown already has work (a file
+    /// dropped, a stroke drawn while the store was read): from now on, that work is written
+    /// like any change.
+    pub fn start_unwritten(&mut self) {
+        self.saved = Some(Revision::default());
+    }
+
     /// Whether to write now, at time `now` in seconds, the document at `revision`; a write
     /// is then assumed to happen.
     pub fn due(&mut self, revision: Revision, now: f64) -> bool {
@@ -177,6 +184,20 @@ mod tests {
         };
         assert!(schedule.is_pending(opened));
         assert!(schedule.due(opened, 10.0 + 2.0 * INTERVAL));
+    }
+
+    #[test]
+    fn work_done_before_the_page_offered_no_record_is_written_first() {
+        let mut schedule = Schedule::default();
+        let imported = Revision {
+            opened: 0,
+            edits: 1,
+        };
+        assert!(!schedule.is_pending(imported));
+        schedule.start_unwritten();
+        assert!(schedule.is_pending(imported));
+        assert!(schedule.due(imported, INTERVAL));
+        assert!(!schedule.is_pending(imported));
     }
 
     #[test]

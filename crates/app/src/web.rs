@@ -275,8 +275,13 @@ fn restore(shared: &mut Shared, text: Option<&str>, at_start: bool) -> Result<()
                 return Err(sentence);
             }
         }
-    } else if !at_start && !shared.editor.ops().is_empty() {
-        // Empty already, or the page's start: nothing to drop.
+    } else if !shared.editor.ops().is_empty() {
+        if at_start {
+            // Done while the store was read: not written yet (the revision is not one the
+            // store holds), so it goes into the new document at the next autosave.
+            shared.autosave.start_unwritten();
+            return Ok(());
+        }
         shared.open_empty();
     }
     let revision = shared.revision();

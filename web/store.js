@@ -194,8 +194,8 @@ function parted(id, pieces, store) {
     parts.push({ piece: key });
   });
   if (run.length > 0) parts.push(run.join(""));
-  for (const key of [...written.keys()]) {
-    if (key.startsWith(`${id}/`) && !kept.has(key)) {
+  for (const key of writtenKeysOf(id)) {
+    if (!kept.has(key)) {
       store.delete(key);
       written.delete(key);
     }
@@ -206,7 +206,12 @@ function parted(id, pieces, store) {
 // Deletes document `id`'s long pieces.
 function deletePieces(id, store) {
   store.delete(IDBKeyRange.bound(`${id}/`, `${id}/\uffff`));
-  for (const key of [...written.keys()]) if (key.startsWith(`${id}/`)) written.delete(key);
+  for (const key of writtenKeysOf(id)) written.delete(key);
+}
+
+// The keys of document `id`'s long pieces written (or read) so far.
+function writtenKeysOf(id) {
+  return [...written.keys()].filter((key) => key.startsWith(`${id}/`));
 }
 
 // Shows the document `id` from now on (its record is written by later saves); a new id when

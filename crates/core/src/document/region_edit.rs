@@ -436,34 +436,26 @@ impl RegionPreview {
         if self.built.as_ref().is_some_and(|built| built.key == key) {
             return Ok(false);
         }
-        let searched = match self.finding.take() {
-            Some(searched) if searched.key == key => searched,
-            _ => {
-                let start = start_of(base, input)?;
-                let mesh = &base.models[start.model].mesh;
-                self.finding = Some(Searched {
-                    key,
-                    model: start.model,
-                    finding: RegionEdit::finding(mesh, &start.sketch, start.embeds)?,
-                });
-                return Ok(true);
-            }
+        let Some(searched) = self.finding.as_mut().filter(|searched| searched.key == key) else {
+            let start = start_of(base, input)?;
+            let mesh = &base.models[start.model].mesh;
+            self.finding = Some(Searched {
+                key,
+                model: start.model,
+                finding: RegionEdit::finding(mesh, &start.sketch, start.embeds)?,
+            });
+            return Ok(true);
         };
+        let mesh = &base.models[searched.model].mesh;
+        if !searched.finding.is_embedded() {
+            searched.finding.embed(mesh);
+            return Ok(true);
+        }
         let Searched {
             key,
             model,
-            mut finding,
-        } = searched;
-        let mesh = &base.models[model].mesh;
-        if !finding.is_embedded() {
-            finding.embed(mesh);
-            self.finding = Some(Searched {
-                key,
-                model,
-                finding,
-            });
-            return Ok(true);
-        }
+            finding,
+        } = self.finding.take().expect("found above");
         let edit = weighed(finding, mesh, input)?;
         self.built = Some(built(base, key, model, edit, input));
         self.rebuilt = true;

@@ -2,7 +2,8 @@
 //! (orthographic): `RegionEdit::new` for a reference curve across the front and a boundary
 //! around about 50k vertices (the curves placed, the region grown, two Dijkstra passes, the
 //! weights), one drag frame (the transform's fractions, then every region vertex moved by
-//! `w ⊙ T`), a handles frame, the region laid flat in the disc, and a re-sketched profile
+//! `w ⊙ T`), a handles frame, the region laid flat in the disc (whole and in its three
+//! steps), and a re-sketched profile
 //! swept along the curve. Targets (issue 22): setup under 100 ms natively at 50k; a frame well under
 //! 16 ms. Results go in BENCHMARKS.md. Run with
 //! `cargo bench -p sketchmesh-core --bench core -- '^region_edit/' --warm-up-time 1 --measurement-time 3`.
@@ -82,6 +83,32 @@ fn bench_region_edit(c: &mut Criterion) {
     });
     group.bench_function("disc_50k", |b| {
         b.iter(|| black_box(&edit).disc().expect("a disc"));
+    });
+    // The disc's three steps, a frame each in the page: the system analysed, factored,
+    // then solved.
+    group.bench_function("disc_analysed_50k", |b| {
+        b.iter(|| black_box(&edit).flattening().expect("a disc"));
+    });
+    group.bench_function("disc_factored_50k", |b| {
+        b.iter_batched(
+            || edit.flattening().expect("a disc"),
+            |mut flattening| {
+                flattening.factor().expect("factored");
+                flattening
+            },
+            criterion::BatchSize::LargeInput,
+        );
+    });
+    group.bench_function("disc_solved_50k", |b| {
+        b.iter_batched(
+            || {
+                let mut flattening = edit.flattening().expect("a disc");
+                flattening.factor().expect("factored");
+                flattening
+            },
+            |flattening| flattening.finish().expect("solved"),
+            criterion::BatchSize::LargeInput,
+        );
     });
     let base = edit.mesh().positions();
     let mut out = base.to_vec();

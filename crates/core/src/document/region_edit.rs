@@ -19,7 +19,8 @@ use crate::curve::polyline::thin;
 use crate::curve::process_stroke;
 use crate::mesh::VertexId;
 use crate::region_edit::{
-    Area, Finding, Handle, Levels, Motion, RegionEdit, RegionError, RegionSketch, checked_transform,
+    Area, Finding, Flattening, Handle, Levels, Motion, RegionEdit, RegionError, RegionSketch,
+    checked_transform,
 };
 
 /// Input samples nearer than this (CSS px) to the last kept one are dropped before the
@@ -367,9 +368,46 @@ struct Built {
     document: Document,
     /// The levels and areas the edit is weighed with.
     levels: (Option<Vec<f64>>, Vec<AreaInput>),
-    /// The region laid flat in the unit disc, for the fall-off panel, or why it cannot be;
-    /// found in a step of its own after the region is first shown.
-    disc: Option<Result<Vec<DVec2>, RegionError>>,
+    /// The region laid flat in the unit disc, for the fall-off panel; found in three steps
+    /// of their own after the region is first shown.
+    disc: Option<Disc>,
+}
+
+/// The region laid flat, on its way.
+#[derive(Debug)]
+enum Disc {
+    /// Its system analysed, to be factored, then solved, in the next steps.
+    Laying(Box<Flattening>),
+    /// Laid, or why it cannot be.
+    Laid(Result<Vec<DVec2>, RegionError>),
+}
+
+impl Built {
+    /// Whether the region is laid flat (or known not to be a disc).
+    fn is_laid(&self) -> bool {
+        matches!(self.disc, Some(Disc::Laid(_)))
+    }
+}
+
+impl Disc {
+    /// The next step of laying the region of `edit` flat, from `disc`: whether it is laid.
+    fn step(disc: &mut Option<Disc>, edit: &RegionEdit) -> bool {
+        let next = match disc.take() {
+            None => match edit.flattening() {
+                Ok(flattening) => Disc::Laying(Box::new(flattening)),
+                Err(why) => Disc::Laid(Err(why)),
+            },
+            Some(Disc::Laying(mut flattening)) if !flattening.is_factored() => {
+                match flattening.factor() {
+                    Ok(()) => Disc::Laying(flattening),
+                    Err(why) => Disc::Laid(Err(why)),
+                }
+            }
+            Some(Disc::Laying(flattening)) => Disc::Laid(flattening.finish()),
+            Some(laid) => laid,
+        };
+        matches!(disc.insert(next), Disc::Laid(_))
+    }
 }
 
 impl RegionPreview {
@@ -386,7 +424,7 @@ impl RegionPreview {
 
     /// Brings what is shown to `input`'s transform and levels, finding the region first if
     /// the curves changed (in three steps, see [`Finding`]: for the bunny each is a third
-    /// of the 50 ms it takes at once), then (in the next step) laying it flat for the
+    /// of the 50 ms it takes at once), then (in the next three steps) laying it flat for the
     /// fall-off panel: `None` when all is there already, `Some(true)` after a step with more
     /// to come, `Some(false)` after a step that got there.
     ///
@@ -402,12 +440,11 @@ impl RegionPreview {
         let built = edit_for(&mut self.built, &mut self.rebuilt, base, input)?;
         let mesh = built.edit.mesh();
         if self.shown_for.as_ref() == Some(input) {
-            // The region is shown: the disc comes next, in a step of its own.
-            if built.disc.is_none() {
-                built.disc = Some(built.edit.disc());
-                return Ok(Some(false));
+            // The region is shown: the disc comes next, in three steps of its own.
+            if built.is_laid() {
+                return Ok(None);
             }
-            return Ok(None);
+            return Ok(Some(!Disc::step(&mut built.disc, &built.edit)));
         }
         match moves_of(&built.edit, input)? {
             // A drag: the region moved again in place, nothing allocated.
@@ -424,7 +461,7 @@ impl RegionPreview {
             }
         }
         self.shown_for = Some(input.clone());
-        Ok(Some(built.disc.is_none()))
+        Ok(Some(!built.is_laid()))
     }
 
     /// Takes the next step of finding the region of `input`'s curves unless it is found:
@@ -498,8 +535,10 @@ impl RegionPreview {
     /// The region laid flat in the unit disc (in the order of its vertices), or why it
     /// cannot be: what the fall-off panel draws.
     pub(super) fn disc(&self) -> Option<Result<&[DVec2], &RegionError>> {
-        let disc = self.built.as_ref()?.disc.as_ref()?;
-        Some(disc.as_ref().map(Vec::as_slice))
+        match self.built.as_ref()?.disc.as_ref()? {
+            Disc::Laid(disc) => Some(disc.as_ref().map(Vec::as_slice)),
+            Disc::Laying(_) => None,
+        }
     }
 
     /// The region found, when it was found for the curves of `curves`.

@@ -2,6 +2,7 @@
 
 use glam::{DMat4, DVec2, DVec3, DVec4};
 
+use super::disc::Flattening;
 use super::embed::{Embedded, embed};
 use super::falloff::closeness;
 use super::profile::cross_section;
@@ -222,11 +223,19 @@ impl RegionEdit {
     ///
     /// Errors: [`RegionError::NotADisc`].
     pub fn disc(&self) -> Result<Vec<DVec2>, RegionError> {
+        self.flattening()?.finish()
+    }
+
+    /// The first half of [`RegionEdit::disc`]: the region's rim on the circle and the
+    /// system for the rest analysed, to be solved by [`Flattening::finish`].
+    ///
+    /// Errors: [`RegionError::NotADisc`].
+    pub fn flattening(&self) -> Result<Flattening, RegionError> {
         let mut region = vec![false; self.mesh.n_vertices()];
         for v in &self.vertices {
             region[v.index()] = true;
         }
-        super::disc::flatten(&self.mesh, &region, &self.vertices)
+        super::disc::flattening(&self.mesh, &region, &self.vertices)
     }
 
     /// Each region vertex's closeness to the reference curve (1 on it, 0 at the boundary),

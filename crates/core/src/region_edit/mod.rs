@@ -42,6 +42,7 @@ use glam::DVec2;
 
 use crate::camera::Camera;
 
+pub use disc::Flattening;
 pub use edit::{Finding, RegionEdit, checked_transform};
 pub use error::RegionError;
 pub use falloff::{Area, Levels};

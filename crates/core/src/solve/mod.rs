@@ -4,7 +4,10 @@
 //! [`solve_least_squares`] for a single solve and [`Prefactored`] for repeated solves with the
 //! same matrix (a drag re-solves every frame with new right-hand sides). Both minimise
 //! `||A x - b||²` with some unknowns fixed, through the normal equations and faer's sparse
-//! Cholesky; see [`prefactored`](Prefactored) for the method and its limits.
+//! Cholesky; see [`prefactored`](Prefactored) for the method and its limits. A square
+//! symmetric positive definite system (a Laplacian with its boundary fixed) is factored
+//! itself, not its normal equations, by [`SpdSystem`], in two halves a caller may put in
+//! frames of their own.
 
 mod error;
 mod normal;
@@ -12,6 +15,7 @@ mod ordering;
 mod prefactored;
 mod singular;
 mod sparse;
+mod spd;
 #[cfg(test)]
 pub(crate) mod test_support;
 mod triplets;
@@ -22,6 +26,7 @@ pub use error::SolveError;
 pub use prefactored::Prefactored;
 pub(crate) use prefactored::check_len;
 pub use sparse::SparseMatrix;
+pub use spd::SpdSystem;
 pub use triplets::Triplets;
 
 /// One-off: minimises `||A x - b||²` with `x[j] = fixed_values[j]` wherever `fixed[j]`.
@@ -40,40 +45,6 @@ pub fn solve_least_squares(
     let mut x = vec![DVec3::ZERO; a.ncols()];
     solver.solve(b, fixed_values, &mut x)?;
     Ok(x)
-}
-
-/// One-off: solves `A x = b` for a symmetric positive definite `A` (its lower triangle is
-/// read), one right-hand side per column of `columns`, each overwritten by its solution.
-/// Factors `A` itself, not the normal equations, where a square system allows it (a
-/// Laplacian with its boundary fixed).
-///
-/// Errors: [`SolveError::NonFiniteValue`], [`SolveError::NotPositiveDefinite`],
-/// [`SolveError::DimensionMismatch`].
-pub fn solve_spd(a: &SparseMatrix, columns: &mut [Vec<f64>]) -> Result<(), SolveError> {
-    use faer::linalg::solvers::Solve;
-    let n = a.nrows();
-    if let Some(bad) = columns.iter().find(|c| c.len() != n) {
-        return Err(SolveError::DimensionMismatch {
-            what: "right-hand side",
-            expected: n,
-            found: bad.len(),
-        });
-    }
-    if a.values().iter().any(|x| !x.is_finite()) {
-        return Err(SolveError::NonFiniteValue);
-    }
-    let llt = a
-        .as_faer()
-        .sp_cholesky(faer::Side::Lower)
-        .map_err(|_| SolveError::NotPositiveDefinite)?;
-    let mut rhs = faer::Mat::from_fn(n, columns.len(), |i, j| columns[j][i]);
-    llt.solve_in_place(rhs.as_mut());
-    for (j, column) in columns.iter_mut().enumerate() {
-        for (i, x) in column.iter_mut().enumerate() {
-            *x = rhs[(i, j)];
-        }
-    }
-    Ok(())
 }
 
 #[cfg(test)]

@@ -498,7 +498,7 @@ fn check_finite(a: &SparseMatrix) -> Result<(), SolveError> {
     }
 }
 
-fn try_memory(req: StackReq) -> Result<MemBuffer, SolveError> {
+pub(super) fn try_memory(req: StackReq) -> Result<MemBuffer, SolveError> {
     MemBuffer::try_new(req).map_err(|_| SolveError::Factorization("out of memory".to_owned()))
 }
 

@@ -311,6 +311,19 @@ fn the_op_replays_and_its_drag_commits_what_replay_gives() {
             imported.positions()
         );
     }
+    // Then weighed and shown; the fall-off panel's disc follows in three steps of its own
+    // (its system analysed, factored, then solved), none more than 40 of the 80 ms it takes
+    // at once on a 50k-vertex region.
+    while edit.moved_model().is_none() {
+        assert_eq!(edit.step().unwrap(), Progress::Working);
+    }
+    for _ in 0..2 {
+        assert!(edit.region_disc().is_none());
+        assert_eq!(edit.step().unwrap(), Progress::Working);
+    }
+    assert!(edit.region_disc().is_none());
+    assert_ne!(edit.step().unwrap(), Progress::Working);
+    assert!(edit.region_disc().unwrap().is_ok());
     for y in [0.05, 0.1, 0.2, 0.3] {
         edit.revise(op(&sketch, lift(y), None));
         while edit.step().unwrap() == Progress::Working {}

@@ -142,8 +142,9 @@ pub(super) struct HandleDrag {
     /// The target's points before the edit (empty until the first step).
     rest: Vec<DVec3>,
     /// Who is next to whom in the target, found at the first step, each handle's parts, at
-    /// the second, and the binding, made at the third: at half a million points each takes
-    /// 25–50 ms natively, so no frame waits for two of them.
+    /// the second, and the binding, made at the third (the first pose comes at the fourth):
+    /// at half a million points each takes 25–50 ms in the page, so no frame waits for two
+    /// of them.
     neighbours: Option<Neighbours>,
     segmented: Option<Segmented>,
     deformation: Option<Deformation>,
@@ -215,17 +216,26 @@ impl HandleDrag {
     ///
     /// Errors: a handle with no region.
     fn bound(&mut self, doc: &Document) -> Result<&Deformation, CommandError> {
-        if self.deformation.is_none() {
-            self.segment(doc)?;
-            let shape = Shape {
-                positions: &self.rest,
-                triangles: triangles_of(doc, self.target),
-            };
-            let segmented = self.segmented.take().expect("segmented above");
-            let movers = movers_of(&self.movers, &self.links);
-            self.deformation = Some(segmented.bound(&shape, &movers));
-        }
+        self.bind(doc)?;
         Ok(self.deformation.as_ref().expect("bound above"))
+    }
+
+    /// The binding, once, after each handle's parts. Returns whether this call made it.
+    ///
+    /// Errors: a handle with no region.
+    fn bind(&mut self, doc: &Document) -> Result<bool, CommandError> {
+        if self.deformation.is_some() {
+            return Ok(false);
+        }
+        self.segment(doc)?;
+        let shape = Shape {
+            positions: &self.rest,
+            triangles: triangles_of(doc, self.target),
+        };
+        let segmented = self.segmented.take().expect("segmented above");
+        let movers = movers_of(&self.movers, &self.links);
+        self.deformation = Some(segmented.bound(&shape, &movers));
+        Ok(true)
     }
 
     /// Each moving handle's parts of the target, once, after who is next to whom. Returns
@@ -306,7 +316,7 @@ impl HandleDrag {
         if self.shown.as_ref() == Some(input) {
             return Ok(None);
         }
-        if self.find_neighbours(doc) || self.segment(doc)? {
+        if self.find_neighbours(doc) || self.segment(doc)? || self.bind(doc)? {
             return Ok(Some(true));
         }
         self.pose(doc, input)?;

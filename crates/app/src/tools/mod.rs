@@ -191,10 +191,11 @@ impl ToolSet {
         self.region.found(edit);
     }
 
-    /// The edit a tool's gesture began was refused: the tool starts over.
+    /// The edit a tool's gesture began was refused: the tool starts over (the region tool
+    /// keeps its reference curve when the curves were refused).
     pub fn gesture_refused(&mut self) {
         self.feature.cancel();
-        self.region.cancel();
+        self.region.refused();
         self.handles.cancel();
     }
 

@@ -502,6 +502,18 @@ impl RegionTool {
         self.after_boundary(input, None)
     }
 
+    /// The open edit was refused. When it was refused for the curves themselves (the region
+    /// was being found: a boundary that misses the reference curve, or a region that reaches
+    /// the mesh's own edge), the reference curve stays and only the boundary is asked for
+    /// again; otherwise the tool starts over.
+    pub fn refused(&mut self) {
+        let stage = std::mem::take(&mut self.stage);
+        self.cancel();
+        if let Stage::Ready(input) = stage {
+            self.stage = Stage::Boundary(input.reference_input());
+        }
+    }
+
     /// Forgets the curves, their areas and the drag (the app cancels its edit).
     pub fn cancel(&mut self) {
         self.draw = DrawTool::Idle;
@@ -1169,6 +1181,57 @@ mod tests {
         assert!(top > 0.0, "the bump rises out of the surface: {top}");
         assert!(tool.profile_view(size).unwrap().stroke.is_some());
         assert_eq!(tool.confirm(), ToolOutput::Finish);
+    }
+
+    #[test]
+    fn a_refused_region_keeps_the_reference_curve_and_asks_for_the_boundary_again() {
+        let editor = shape();
+        let doc = editor.document();
+        let centre = DVec2::new(400.0, 340.0);
+        let mut tool = RegionTool::default();
+        let line: Vec<DVec2> = (0..=20)
+            .map(|i| centre + DVec2::new(4.0 * f64::from(i) - 40.0, 0.0))
+            .collect();
+        stroke(&mut tool, doc, &line);
+        // A loop beside the curve, not around it: the edit it opens is refused as its region
+        // is found.
+        let beside: Vec<DVec2> = (0..=48)
+            .map(|i| {
+                let turn = std::f64::consts::TAU * f64::from(i) / 48.0;
+                centre + DVec2::new(0.0, 60.0) + 20.0 * DVec2::from_angle(turn)
+            })
+            .collect();
+        let ToolOutput::Revise(op) = stroke(&mut tool, doc, &beside) else {
+            panic!("the loop opens the edit")
+        };
+        let mut edit = editor.begin_gesture(op).unwrap();
+        let refusal = loop {
+            match edit.step() {
+                Ok(Progress::Working) => {}
+                Ok(done) => panic!("a loop beside the curve is refused, not {done:?}"),
+                Err(why) => break why,
+            }
+        };
+        assert!(refusal.to_string().contains("boundary"), "{refusal}");
+        tool.refused();
+        assert!(tool.hint().unwrap().contains("loop"), "{:?}", tool.hint());
+        let marks = tool.marks(&view().camera);
+        assert_eq!(marks.len(), 1, "the reference curve stays");
+        // A loop around it now opens the edit with the same reference curve.
+        let ring: Vec<DVec2> = (0..=48)
+            .map(|i| centre + 90.0 * DVec2::from_angle(std::f64::consts::TAU * f64::from(i) / 48.0))
+            .collect();
+        let opened = stroke(&mut tool, doc, &ring);
+        assert!(
+            matches!(opened, ToolOutput::Revise(Op::RegionEdit(_))),
+            "{opened:?}"
+        );
+        // A refusal once the region is moved starts over.
+        find_region(&mut tool, &editor, opened);
+        let at = |phase, p: DVec2| pen(phase, p.x as f32, p.y as f32);
+        tool.on_event(&ToolEvent::Begin(at(Phase::Down, centre)), &view(), doc);
+        tool.refused();
+        assert!(tool.marks(&view().camera).is_empty());
     }
 
     #[test]

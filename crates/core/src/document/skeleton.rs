@@ -20,7 +20,7 @@ use super::{CommandError, CurveHandleInput, Document, HandleEditInput, LinkHandl
 use crate::model::{CurveHandle, HandleTarget, PointCloud};
 use crate::skeleton::{
     Deformation, HandleCurve, HandleStroke, Link, Mover, Neighbours, PointEdit, Segmented, Shape,
-    SkeletonError, place_handle,
+    SkeletonError, Slabs, place_handle,
 };
 
 /// Applies a `curve_handle` op: a new handle on the nearest model or cloud under the stroke.
@@ -141,13 +141,8 @@ pub(super) struct HandleDrag {
     links: Vec<Vec<Link>>,
     /// The target's points before the edit (empty until the first step).
     rest: Vec<DVec3>,
-    /// Who is next to whom in the target, found at the first step, each handle's parts, at
-    /// the second, and the binding, made at the third (the first pose comes at the fourth):
-    /// at half a million points each takes 25–50 ms in the page, so no frame waits for two
-    /// of them.
-    neighbours: Option<Neighbours>,
-    segmented: Option<Segmented>,
-    deformation: Option<Deformation>,
+    /// How far the binding of the target to the moving handles got, a stage per step.
+    binding: Binding,
     /// The target's points at the last pose shown.
     moved: Vec<DVec3>,
     /// The mesh's vertices at that pose, for a model kept as imported.
@@ -159,6 +154,22 @@ pub(super) struct HandleDrag {
     /// A cloud's preview: the document with the cloud moved (a cloud has no moved-model
     /// path), and whether it changed since the renderer last asked.
     cloud_preview: Option<(Document, bool)>,
+}
+
+/// How far a [`HandleDrag`]'s binding got. Each stage is a step of its own, a frame in the
+/// page: at half a million points each takes 25–50 ms there, so no frame waits for two.
+#[derive(Debug)]
+enum Binding {
+    /// Nothing found yet.
+    Unbound,
+    /// The target's points taken and who is next to whom found.
+    Neighbours(Neighbours),
+    /// Each handle's parts of the target found.
+    Segmented(Segmented),
+    /// Each handle's region points bound to its slabs.
+    Slabs(Slabs),
+    /// Every point bound: the poses follow.
+    Bound(Deformation),
 }
 
 impl HandleDrag {
@@ -201,9 +212,7 @@ impl HandleDrag {
             movers,
             links,
             rest: Vec::new(),
-            neighbours: None,
-            segmented: None,
-            deformation: None,
+            binding: Binding::Unbound,
             moved: Vec::new(),
             moved_mesh: Vec::new(),
             shown: None,
@@ -216,61 +225,39 @@ impl HandleDrag {
     ///
     /// Errors: a handle with no region.
     fn bound(&mut self, doc: &Document) -> Result<&Deformation, CommandError> {
-        self.bind(doc)?;
-        Ok(self.deformation.as_ref().expect("bound above"))
+        while self.bind_step(doc)? {}
+        match &self.binding {
+            Binding::Bound(deformation) => Ok(deformation),
+            _ => unreachable!("bound above"),
+        }
     }
 
-    /// The binding, once, after each handle's parts. Returns whether this call made it.
+    /// The next stage of the binding: whether there was one to take.
     ///
     /// Errors: a handle with no region.
-    fn bind(&mut self, doc: &Document) -> Result<bool, CommandError> {
-        if self.deformation.is_some() {
-            return Ok(false);
+    fn bind_step(&mut self, doc: &Document) -> Result<bool, CommandError> {
+        if let Binding::Unbound = self.binding {
+            self.rest = points_of(doc, self.target).into_owned();
+            self.moved = self.rest.clone();
         }
-        self.segment(doc)?;
         let shape = Shape {
             positions: &self.rest,
             triangles: triangles_of(doc, self.target),
         };
-        let segmented = self.segmented.take().expect("segmented above");
         let movers = movers_of(&self.movers, &self.links);
-        self.deformation = Some(segmented.bound(&shape, &movers));
-        Ok(true)
-    }
-
-    /// Each moving handle's parts of the target, once, after who is next to whom. Returns
-    /// whether this call found them.
-    ///
-    /// Errors: a handle with no region.
-    fn segment(&mut self, doc: &Document) -> Result<bool, CommandError> {
-        if self.segmented.is_some() || self.deformation.is_some() {
-            return Ok(false);
-        }
-        self.find_neighbours(doc);
-        let shape = Shape {
-            positions: &self.rest,
-            triangles: triangles_of(doc, self.target),
+        self.binding = match std::mem::replace(&mut self.binding, Binding::Unbound) {
+            Binding::Unbound => Binding::Neighbours(shape.neighbours()),
+            Binding::Neighbours(neighbours) => {
+                Binding::Segmented(Deformation::segmented(&shape, &neighbours, &movers)?)
+            }
+            Binding::Segmented(segmented) => Binding::Slabs(segmented.slabs(&shape)),
+            Binding::Slabs(slabs) => Binding::Bound(slabs.bound(&shape, &movers)),
+            bound @ Binding::Bound(_) => {
+                self.binding = bound;
+                return Ok(false);
+            }
         };
-        let neighbours = self.neighbours.take().unwrap_or_default();
-        let movers = movers_of(&self.movers, &self.links);
-        self.segmented = Some(Deformation::segmented(&shape, &neighbours, &movers)?);
         Ok(true)
-    }
-
-    /// The target's points before the edit and who is next to whom, once. Returns whether
-    /// this call found them.
-    fn find_neighbours(&mut self, doc: &Document) -> bool {
-        if self.neighbours.is_some() || self.segmented.is_some() || self.deformation.is_some() {
-            return false;
-        }
-        self.rest = points_of(doc, self.target).into_owned();
-        self.moved = self.rest.clone();
-        let shape = Shape {
-            positions: &self.rest,
-            triangles: triangles_of(doc, self.target),
-        };
-        self.neighbours = Some(shape.neighbours());
-        true
     }
 
     /// The moving handles' curves after `input`, its move taken `fraction` of the way.
@@ -316,7 +303,7 @@ impl HandleDrag {
         if self.shown.as_ref() == Some(input) {
             return Ok(None);
         }
-        if self.find_neighbours(doc) || self.segment(doc)? || self.bind(doc)? {
+        if self.bind_step(doc)? {
             return Ok(Some(true));
         }
         self.pose(doc, input)?;
@@ -338,7 +325,7 @@ impl HandleDrag {
     ) -> Result<Vec<HandleCurve>, CommandError> {
         Self::poses(&self.movers, doc, input, 1.0)?;
         self.bound(doc)?;
-        let (Some(deformation), movers) = (&self.deformation, &self.movers) else {
+        let (Binding::Bound(deformation), movers) = (&self.binding, &self.movers) else {
             unreachable!("bound above");
         };
         let fraction = deformation.unfolded(
@@ -390,7 +377,7 @@ impl HandleDrag {
         input: &HandleEditInput,
     ) -> Result<Document, CommandError> {
         let poses = self.pose(doc, input)?;
-        let Some(deformation) = &self.deformation else {
+        let Binding::Bound(deformation) = &self.binding else {
             unreachable!("posing binds");
         };
         let mut next = doc.clone();

@@ -112,13 +112,15 @@ impl Deformation {
         neighbours: &Neighbours,
         movers: &[Mover],
     ) -> Result<Deformation, SkeletonError> {
-        Ok(Self::segmented(shape, neighbours, movers)?.bound(shape, movers))
+        let slabs = Self::segmented(shape, neighbours, movers)?.slabs(shape);
+        Ok(slabs.bound(shape, movers))
     }
 
-    /// The first half of [`Deformation::with_neighbours`]: each handle's rest frames and the
-    /// part of the shape each point falls in. At half a million points this and the second
-    /// half ([`Segmented::bound`]) each take about 30 ms natively, so an interactive edit
-    /// takes them in steps of their own.
+    /// The first of the three parts of [`Deformation::with_neighbours`]: each handle's rest
+    /// frames and the part of the shape each point falls in. At half a million points this
+    /// and the next two ([`Segmented::slabs`], [`Slabs::bound`]) take about 25, 24 and 11
+    /// ms natively (40, 34 and 16 in the page), so an interactive edit takes them in steps
+    /// of their own.
     ///
     /// Errors: as [`Deformation::new`].
     pub fn segmented(
@@ -147,17 +149,39 @@ pub struct Segmented {
 }
 
 impl Segmented {
-    /// The second half of [`Deformation::with_neighbours`]: every point bound to its handle's
-    /// slab (or made rigid, or blended between handles), for the `shape` and `movers` the
-    /// first half had.
+    /// The second part of [`Deformation::with_neighbours`]: each handle's region points bound
+    /// to the slabs between its rest frames, for the `shape` the first part had.
+    pub fn slabs(self, shape: &Shape) -> Slabs {
+        let handles = self.handles.into_iter().map(|(rest_frames, parts)| {
+            let bounds = bind(shape.positions, &parts, &rest_frames);
+            (rest_frames, parts, bounds)
+        });
+        Slabs {
+            handles: handles.collect(),
+        }
+    }
+}
+
+/// Each handle's rest frames, parts and region points bound to its slabs, as
+/// [`Segmented::slabs`] found them.
+#[derive(Clone, Debug)]
+pub struct Slabs {
+    handles: Vec<(Vec<Frame>, Vec<Part>, Vec<Bound>)>,
+}
+
+impl Slabs {
+    /// The last part of [`Deformation::with_neighbours`]: the slabs' radii, and every point
+    /// outside the regions made rigid or blended between handles, for the `shape` and
+    /// `movers` the first part had.
     pub fn bound(self, shape: &Shape, movers: &[Mover]) -> Deformation {
         let n = shape.positions.len();
         let mut owners = vec![Owner::Still; n];
         let mut handles = Vec::with_capacity(movers.len());
         let mut parts_of = Vec::with_capacity(movers.len());
         let mut joints = Vec::new();
-        for (h, (mover, (rest_frames, parts))) in movers.iter().zip(self.handles).enumerate() {
-            let bounds = bind(shape.positions, &parts, &rest_frames);
+        for (h, (mover, (rest_frames, parts, bounds))) in
+            movers.iter().zip(self.handles).enumerate()
+        {
             let radii = slab_radii(&bounds, &rest_frames);
             let last = mover.rest.points.len() - 1;
             for (b, bound) in bounds.iter().enumerate() {

@@ -46,7 +46,7 @@ mod segment;
 mod shape;
 
 pub use curve::Spline;
-pub use deformation::{Deformation, Link, Mover, Segmented};
+pub use deformation::{Deformation, Link, Mover, Segmented, Slabs};
 pub use error::SkeletonError;
 pub use filter::{JITTER_PX, filter_jitter};
 pub use frames::{FRAMES, Frame};

@@ -689,9 +689,9 @@ fn handle_ops_replay_undo_and_drag_exactly() {
     let before = digest(editor.document());
     // A drag: the preview follows each pose; the commit equals the op applied at once.
     let mut drag = editor.begin_gesture(lift(0, 3, 0.05)).unwrap();
-    // The first pose takes four steps, a frame each in the page: who is next to whom, the
-    // handles' parts, the binding, then the pose.
-    for _ in 0..3 {
+    // The first pose takes five steps, a frame each in the page: who is next to whom, the
+    // handles' parts, their points bound to slabs, the rest of the binding, then the pose.
+    for _ in 0..4 {
         assert_eq!(drag.step().unwrap(), Progress::Working);
         assert!(drag.moved_model().is_none());
     }

@@ -903,6 +903,22 @@ mod tests {
         tool.found(&edit);
     }
 
+    /// A horizontal line of `n` gaps of 4 px centred on `centre`: a reference curve.
+    fn line_across(centre: DVec2, n: u32) -> Vec<DVec2> {
+        (0..=n)
+            .map(|i| centre + DVec2::new(4.0 * f64::from(i) - 2.0 * f64::from(n), 0.0))
+            .collect()
+    }
+
+    /// A loop of 48 gaps around `centre`: a boundary.
+    fn loop_around(centre: DVec2, radius: f64) -> Vec<DVec2> {
+        (0..=48)
+            .map(|i| {
+                centre + radius * DVec2::from_angle(std::f64::consts::TAU * f64::from(i) / 48.0)
+            })
+            .collect()
+    }
+
     fn stroke(tool: &mut RegionTool, doc: &Document, points: &[DVec2]) -> ToolOutput {
         let at = |phase, p: DVec2| pen(phase, p.x as f32, p.y as f32);
         let view = view();
@@ -925,9 +941,7 @@ mod tests {
         // The shape's middle, in screen points.
         let centre = DVec2::new(400.0, 340.0);
         let mut tool = RegionTool::default();
-        let line: Vec<DVec2> = (0..=20)
-            .map(|i| centre + DVec2::new(4.0 * f64::from(i) - 40.0, 0.0))
-            .collect();
+        let line = line_across(centre, 20);
         assert_eq!(stroke(&mut tool, doc, &line), ToolOutput::None);
         assert!(tool.hint().unwrap().contains("loop"));
         // An open stroke from near the curve to near it redraws that part (3 px lower, so
@@ -943,9 +957,7 @@ mod tests {
             matches!(stroke(&mut tool, doc, &open), ToolOutput::Refused(_)),
             "an open boundary is refused"
         );
-        let ring: Vec<DVec2> = (0..=48)
-            .map(|i| centre + 90.0 * DVec2::from_angle(std::f64::consts::TAU * f64::from(i) / 48.0))
-            .collect();
+        let ring = loop_around(centre, 90.0);
         // The loop opens the edit, unmoved, so that its fall-off shows before the drag.
         let opened = stroke(&mut tool, doc, &ring);
         let ToolOutput::Revise(Op::RegionEdit(begun)) = opened else {
@@ -988,15 +1000,9 @@ mod tests {
             drag: DragKind::Handles,
             ..RegionTool::default()
         };
-        let line: Vec<DVec2> = (0..=30)
-            .map(|i| centre + DVec2::new(4.0 * f64::from(i) - 60.0, 0.0))
-            .collect();
+        let line = line_across(centre, 30);
         stroke(&mut tool, doc, &line);
-        let ring: Vec<DVec2> = (0..=48)
-            .map(|i| {
-                centre + 110.0 * DVec2::from_angle(std::f64::consts::TAU * f64::from(i) / 48.0)
-            })
-            .collect();
+        let ring = loop_around(centre, 110.0);
         // The loop opens the edit, unmoved; the handles show once it found the region.
         let opened = stroke(&mut tool, doc, &ring);
         let view = view();
@@ -1060,13 +1066,8 @@ mod tests {
         let doc = editor.document();
         let centre = DVec2::new(400.0, 340.0);
         let mut tool = RegionTool::default();
-        let line: Vec<DVec2> = (0..=20)
-            .map(|i| centre + DVec2::new(4.0 * f64::from(i) - 40.0, 0.0))
-            .collect();
-        stroke(&mut tool, doc, &line);
-        let ring: Vec<DVec2> = (0..=48)
-            .map(|i| centre + 90.0 * DVec2::from_angle(std::f64::consts::TAU * f64::from(i) / 48.0))
-            .collect();
+        stroke(&mut tool, doc, &line_across(centre, 20));
+        let ring = loop_around(centre, 90.0);
         let ToolOutput::Revise(Op::RegionEdit(first)) = stroke(&mut tool, doc, &ring) else {
             panic!("the loop opens the edit")
         };
@@ -1137,15 +1138,9 @@ mod tests {
             drag: DragKind::Profile,
             ..RegionTool::default()
         };
-        let line: Vec<DVec2> = (0..=30)
-            .map(|i| centre + DVec2::new(4.0 * f64::from(i) - 60.0, 0.0))
-            .collect();
+        let line = line_across(centre, 30);
         stroke(&mut tool, doc, &line);
-        let ring: Vec<DVec2> = (0..=48)
-            .map(|i| {
-                centre + 110.0 * DVec2::from_angle(std::f64::consts::TAU * f64::from(i) / 48.0)
-            })
-            .collect();
+        let ring = loop_around(centre, 110.0);
         let opened = stroke(&mut tool, doc, &ring);
         let view = view();
         let size = DVec2::new(view.viewport.width().into(), view.viewport.height().into());
@@ -1189,18 +1184,10 @@ mod tests {
         let doc = editor.document();
         let centre = DVec2::new(400.0, 340.0);
         let mut tool = RegionTool::default();
-        let line: Vec<DVec2> = (0..=20)
-            .map(|i| centre + DVec2::new(4.0 * f64::from(i) - 40.0, 0.0))
-            .collect();
-        stroke(&mut tool, doc, &line);
+        stroke(&mut tool, doc, &line_across(centre, 20));
         // A loop beside the curve, not around it: the edit it opens is refused as its region
         // is found.
-        let beside: Vec<DVec2> = (0..=48)
-            .map(|i| {
-                let turn = std::f64::consts::TAU * f64::from(i) / 48.0;
-                centre + DVec2::new(0.0, 60.0) + 20.0 * DVec2::from_angle(turn)
-            })
-            .collect();
+        let beside = loop_around(centre + DVec2::new(0.0, 60.0), 20.0);
         let ToolOutput::Revise(op) = stroke(&mut tool, doc, &beside) else {
             panic!("the loop opens the edit")
         };
@@ -1218,9 +1205,7 @@ mod tests {
         let marks = tool.marks(&view().camera);
         assert_eq!(marks.len(), 1, "the reference curve stays");
         // A loop around it now opens the edit with the same reference curve.
-        let ring: Vec<DVec2> = (0..=48)
-            .map(|i| centre + 90.0 * DVec2::from_angle(std::f64::consts::TAU * f64::from(i) / 48.0))
-            .collect();
+        let ring = loop_around(centre, 90.0);
         let opened = stroke(&mut tool, doc, &ring);
         assert!(
             matches!(opened, ToolOutput::Revise(Op::RegionEdit(_))),

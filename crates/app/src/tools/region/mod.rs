@@ -765,8 +765,11 @@ fn curve_marks(input: &RegionEditInput) -> Vec<Mark> {
         radius: None,
         features,
     };
+    // The boundary is a loop: drawn back to its first point.
     let boundary = StrokeInput {
-        stroke: input.boundary.clone(),
+        stroke: (input.boundary.iter().chain(input.boundary.first()))
+            .copied()
+            .collect(),
         ..input.reference_input()
     };
     vec![
@@ -964,7 +967,13 @@ mod tests {
             panic!("{opened:?}")
         };
         assert_eq!(begun.transform, Some(glam::DMat4::IDENTITY.to_cols_array()));
-        assert_eq!(tool.marks(&view().camera).len(), 2);
+        let marks = tool.marks(&view().camera);
+        assert_eq!(marks.len(), 2);
+        let drawn_loop = &marks[1].points;
+        assert_eq!(
+            drawn_loop.first().map(|p| p.pos),
+            drawn_loop.last().map(|p| p.pos)
+        );
         let drag = [centre, centre - DVec2::Y * 20.0, centre - DVec2::Y * 40.0];
         let at = |phase, p: DVec2| pen(phase, p.x as f32, p.y as f32);
         let pressed = tool.on_event(&ToolEvent::Begin(at(Phase::Down, drag[0])), &view(), doc);

@@ -35,7 +35,7 @@ use crate::offload::{Answer, JobId, Offload, Poll, Work};
 use crate::panels;
 use crate::panels::context_menu::{ContextAction, ContextMenu, context_menu_ui};
 use crate::playback::Playback;
-use crate::render::geometry::pressure_width;
+use crate::render::geometry::{NormalsAhead, pressure_width};
 use crate::render::{SceneCallback, SceneGeometry, SceneRenderer, Uniforms, ViewOptions};
 use crate::textures::Textures;
 use crate::tools::{Mark, Mode, ToolEvent, ToolOutput, ToolSet, ViewCtx};
@@ -194,6 +194,8 @@ pub struct SketchApp {
     /// Whether the last frame left the scene's rebuild to this one, which then does it
     /// whatever its own work took.
     rebuild_waited: bool,
+    /// The normals of large new models, computed a frame before their arrays.
+    normals_ahead: NormalsAhead,
     /// How many frames in a row left the autosave to the next (at most [`AUTOSAVE_WAITS`]).
     #[cfg(target_arch = "wasm32")]
     autosave_waits: u8,
@@ -293,6 +295,7 @@ impl SketchApp {
             frame_work_ms: 0.0,
             stashed_geometry: None,
             rebuild_waited: false,
+            normals_ahead: NormalsAhead::default(),
             #[cfg(target_arch = "wasm32")]
             autosave_waits: 0,
             options: ViewOptions {
@@ -1390,13 +1393,19 @@ impl SketchApp {
             let (built_with, wanted) = (self.geometry_source, source);
             let previous =
                 (built_with.2 == wanted.2 && built_with.3 == wanted.3).then_some(&*self.geometry);
-            let built = Arc::new(SceneGeometry::build(
-                document,
-                generation,
-                &self.textures,
-                previous,
-                self.options.wireframe,
-            ));
+            // A large new model's normals take a frame of their own, its arrays the next.
+            let ahead = self.normals_ahead.compute(document, previous);
+            let large = !self.normals_ahead.is_empty();
+            let built = (!ahead).then(|| {
+                Arc::new(SceneGeometry::build(
+                    document,
+                    generation,
+                    &self.textures,
+                    previous,
+                    self.options.wireframe,
+                    &std::mem::take(&mut self.normals_ahead),
+                ))
+            });
             // What a new document costs the frame before the GPU sees it (the page bench).
             let ms = clock::now_ms() - started;
             self.frame_work_ms += ms;
@@ -1405,10 +1414,17 @@ impl SketchApp {
                 &mut self.shared.borrow_mut().timings.of("scene").frame_ms,
                 ms,
             );
-            if !had_stash && source != self.geometry_source && self.is_frame_spent(ctx) {
+            let Some(built) = built else {
+                self.rebuild_waited = true;
+                ctx.request_repaint();
+                return;
+            };
+            if !had_stash && source != self.geometry_source && (large || self.is_frame_spent(ctx)) {
                 // Its upload waits for the next frame, which shows it (unless the document
-                // moves on meanwhile: then that frame builds and shows the next one).
+                // moves on meanwhile: then that frame builds and shows the next one); so
+                // does a large model's, whatever this frame took.
                 self.stashed_geometry = Some((source, built));
+                ctx.request_repaint();
                 return;
             }
             self.geometry = built;

@@ -63,9 +63,10 @@ pub const FRAME_BUDGET_MS: f64 = 12.0;
 /// 250 ms and one of 190.
 const SPREAD_AFTER_MS: f64 = 50.0;
 
-/// How many busy frames in a row may leave the autosave to the next one.
+/// How many busy frames in a row may leave the autosave to the next one: a large result's
+/// landing is four (decoded; a large model's normals; its arrays; their upload).
 #[cfg(target_arch = "wasm32")]
-const AUTOSAVE_WAITS: u8 = 3;
+const AUTOSAVE_WAITS: u8 = 5;
 /// The autosave readies the session's new text in steps while this lasts in a frame (ms),
 /// and writes in a later frame when a step ran past it.
 #[cfg(target_arch = "wasm32")]
@@ -704,8 +705,8 @@ impl SketchApp {
     }
 
     /// Hands the document to the page's autosave when it is due, and keeps frames coming
-    /// while a change waits for it; a frame already spent ([`SPREAD_AFTER_MS`]) leaves the
-    /// write to one of the next [`AUTOSAVE_WAITS`].
+    /// while a change waits for it; a frame already spent ([`SPREAD_AFTER_MS`]), or one of
+    /// a rebuild spread over frames, leaves the write to one of the next [`AUTOSAVE_WAITS`].
     #[cfg(target_arch = "wasm32")]
     fn autosave(&mut self, ctx: &egui::Context, now: f64) {
         let (revision, pending) = {
@@ -713,7 +714,8 @@ impl SketchApp {
             let revision = shared.revision();
             (revision, shared.autosave.is_pending(revision))
         };
-        if pending && self.autosave_waits < AUTOSAVE_WAITS && self.is_frame_spent(ctx) {
+        let waits = self.is_scene_pending() || self.is_frame_spent(ctx);
+        if pending && self.autosave_waits < AUTOSAVE_WAITS && waits {
             self.autosave_waits += 1;
             return;
         }
@@ -1451,6 +1453,13 @@ impl SketchApp {
                 first => self.frame_models_from(first),
             }
         }
+    }
+
+    /// Whether the scene's rebuild is under way over frames (its normals, its arrays or their
+    /// upload still to come): the autosave waits for it rather than share its frames.
+    #[cfg(target_arch = "wasm32")]
+    fn is_scene_pending(&self) -> bool {
+        self.rebuild_waited || self.stashed_geometry.is_some() || !self.normals_ahead.is_empty()
     }
 
     /// Whether this frame's own work has reached [`SPREAD_AFTER_MS`], so that what is left waits

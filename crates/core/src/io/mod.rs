@@ -45,6 +45,7 @@ pub use info::{Info, inspect_gltf};
 pub use input::{ImportFile, ImportLimits};
 pub use resources::referenced_files;
 pub use transfer::{
-    Previewed, TransferError, TransferSource, decode_changed, decode_imported, decode_models,
-    decode_moved, encode_changed, encode_imported, encode_models, encode_moved,
+    Previewed, TransferError, TransferSource, UncheckedImport, decode_changed, decode_imported,
+    decode_imported_unchecked, decode_models, decode_moved, encode_changed, encode_imported,
+    encode_models, encode_moved,
 };

@@ -51,6 +51,32 @@ pub fn encode_imported(imported: &Imported) -> Vec<u8> {
 ///
 /// Errors: [`TransferError`] when the buffer is not one it wrote.
 pub fn decode_imported(bytes: &(impl TransferSource + ?Sized)) -> Result<Imported, TransferError> {
+    decode_imported_unchecked(bytes)?.checked()
+}
+
+/// An import decoded whose meshes are not checked yet ([`UncheckedImport::checked`]):
+/// [`decode_imported`] in two halves, which the page takes in two frames (for a million
+/// triangles the arrays' copy and their check are each about half of the landing's first
+/// frame).
+#[derive(Debug)]
+pub struct UncheckedImport(Imported);
+
+impl UncheckedImport {
+    /// The import, once its meshes' arrays are checked to fit together.
+    ///
+    /// Errors: [`TransferError`] when they do not.
+    pub fn checked(self) -> Result<Imported, TransferError> {
+        check_meshes(&self.0.models)?;
+        Ok(self.0)
+    }
+}
+
+/// The first half of [`decode_imported`]: every array copied out, the meshes not checked.
+///
+/// Errors: [`TransferError`] when the buffer is not one [`encode_imported`] wrote.
+pub fn decode_imported_unchecked(
+    bytes: &(impl TransferSource + ?Sized),
+) -> Result<UncheckedImport, TransferError> {
     let mut input = Reader::new(bytes);
     let imported = Imported {
         models: input.models()?,
@@ -69,7 +95,17 @@ pub fn decode_imported(bytes: &(impl TransferSource + ?Sized)) -> Result<Importe
         notes: input.seq(Reader::text)?,
     };
     input.end()?;
-    Ok(imported)
+    Ok(UncheckedImport(imported))
+}
+
+/// Whether the meshes of `models`, decoded unchecked, fit together.
+///
+/// Errors: [`TransferError`] for the first that does not.
+fn check_meshes(models: &[Model]) -> Result<(), TransferError> {
+    match models.iter().all(|model| model.mesh.parts_fit()) {
+        true => Ok(()),
+        false => Err(TransferError("a mesh whose arrays do not fit")),
+    }
 }
 
 /// A document's models as one buffer for [`decode_models`]: what the page's worker needs to
@@ -87,6 +123,7 @@ pub fn decode_models(bytes: &(impl TransferSource + ?Sized)) -> Result<Vec<Model
     let mut input = Reader::new(bytes);
     let models = input.models()?;
     input.end()?;
+    check_meshes(&models)?;
     Ok(models)
 }
 
@@ -107,8 +144,10 @@ pub fn decode_changed(
 ) -> Result<(usize, Model), TransferError> {
     let mut input = Reader::new(bytes);
     let index = input.count()?;
-    let model = input.models()?.pop();
+    let models = input.models()?;
     input.end()?;
+    check_meshes(&models)?;
+    let model = models.into_iter().next();
     Ok((index, model.ok_or(TransferError("no model"))?))
 }
 
@@ -511,7 +550,8 @@ impl<'a, S: TransferSource + ?Sized> Reader<'a, S> {
             n_dead_vertices: self.pod()?,
             n_dead_faces: self.pod()?,
         };
-        Mesh::from_parts(parts).map_err(|_| TransferError("a mesh whose arrays do not fit"))
+        // Checked once the whole buffer is read (see `check_meshes`).
+        Ok(Mesh::from_parts_unchecked(parts))
     }
 
     /// What [`Writer::triangles_like`] wrote.
@@ -563,5 +603,53 @@ impl<'a, S: TransferSource + ?Sized> Reader<'a, S> {
                 _ => return Err(TransferError("an unknown alpha mode")),
             },
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::primitives;
+
+    /// An import of one model on `mesh`.
+    fn import_of(mesh: Mesh) -> Imported {
+        Imported {
+            models: vec![Model {
+                mesh,
+                ..Model::default()
+            }],
+            ..Imported::default()
+        }
+    }
+
+    /// `mesh` with its first half-edge its own twin: arrays that do not fit.
+    fn broken(mesh: &Mesh) -> Mesh {
+        let parts = mesh.parts();
+        let mut twin = parts.twin.to_vec();
+        twin[0] = 0;
+        Mesh::from_parts_unchecked(MeshParts {
+            positions: parts.positions.to_vec(),
+            triangles: parts.triangles.to_vec(),
+            twin,
+            vertex_halfedge: parts.vertex_halfedge.to_vec(),
+            n_dead_vertices: parts.n_dead_vertices,
+            n_dead_faces: parts.n_dead_faces,
+        })
+    }
+
+    #[test]
+    fn an_import_decodes_in_two_halves_and_the_second_refuses_arrays_that_do_not_fit() {
+        let good = import_of(primitives::icosphere(1.0, 1));
+        let bytes = encode_imported(&good);
+        let unchecked = decode_imported_unchecked(&bytes[..]).unwrap();
+        assert_eq!(unchecked.checked().unwrap().models, good.models);
+        let bad = import_of(broken(&good.models[0].mesh));
+        let bytes = encode_imported(&bad);
+        let unchecked = decode_imported_unchecked(&bytes[..]).expect("the first half reads it");
+        assert!(unchecked.checked().is_err());
+        assert!(decode_imported(&bytes[..]).is_err());
+        // The other decoders check their meshes too.
+        assert!(decode_models(&encode_models(&[&bad.models[0]])[..]).is_err());
+        assert!(decode_changed(&encode_changed(0, &bad.models[0])[..]).is_err());
     }
 }

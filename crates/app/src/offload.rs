@@ -174,8 +174,8 @@ mod page {
         CommandError, Edit, FileInput, ImportInput, Model, Op, import_files,
     };
     use sketchmesh_core::io::{
-        TransferSource, decode_changed, decode_imported, decode_models, decode_moved,
-        encode_changed, encode_imported, encode_models, encode_moved,
+        TransferError, TransferSource, UncheckedImport, decode_changed, decode_imported_unchecked,
+        decode_models, decode_moved, encode_changed, encode_imported, encode_models, encode_moved,
     };
     use wasm_bindgen::JsCast as _;
     use wasm_bindgen::prelude::*;
@@ -208,6 +208,9 @@ mod page {
         broken: Rc<RefCell<bool>>,
         /// The job sent and not yet answered, and what it computes.
         sent: Option<(u64, Kind)>,
+        /// An import's answer decoded in an earlier frame, its meshes checked in the next: a
+        /// million triangles' landing then takes two frames of about 35 ms, not one of 70.
+        unchecked: Option<(u64, UncheckedImport)>,
         /// The models the worker keeps from its last op, in order: an op sends only the
         /// models not among them (a scan beside the shape being pulled is sent once).
         /// Weak, so that a model the document dropped is not kept alive, and its address is
@@ -255,6 +258,7 @@ mod page {
                 inbox,
                 broken,
                 sent: None,
+                unchecked: None,
                 known: Vec::new(),
                 ctx,
                 _on_message: on_message,
@@ -297,6 +301,10 @@ mod page {
 
         pub(super) fn answer(&mut self, id: u64) -> Option<Answer> {
             let (_, kind) = self.sent.filter(|&(sent, _)| sent == id)?;
+            if let Some((_, unchecked)) = self.unchecked.take_if(|(job, _)| *job == id) {
+                self.sent = None;
+                return Some(Answer::Imported(unchecked.checked().map_err(unreadable)));
+            }
             let (_, answer) = self.inbox.borrow_mut().take_if(|(job, _)| *job == id)?;
             if answer.as_ref().is_err_and(|&(_, broke)| broke) {
                 // A trapped instance is never used again: the next job gets a new one.
@@ -305,15 +313,26 @@ mod page {
                 // Which models the worker kept is not sure: the next op sends them all.
                 self.known.clear();
             }
-            self.sent = None;
             let bytes = answer.map(JsBytes).map_err(|(why, _)| why);
-            let unreadable =
-                |e: sketchmesh_core::io::TransferError| CommandError::Elsewhere(e.to_string());
             let bytes = bytes.map_err(CommandError::Elsewhere);
+            if let (Kind::Import, Ok(bytes)) = (kind, &bytes) {
+                // The arrays copied out now, their check in the next frame.
+                match decode_imported_unchecked(bytes) {
+                    Ok(unchecked) => {
+                        self.unchecked = Some((id, unchecked));
+                        self.ctx.request_repaint();
+                        return None;
+                    }
+                    Err(e) => {
+                        self.sent = None;
+                        return Some(Answer::Imported(Err(unreadable(e))));
+                    }
+                }
+            }
+            self.sent = None;
             Some(match kind {
-                Kind::Import => Answer::Imported(
-                    bytes.and_then(|bytes| decode_imported(&bytes).map_err(unreadable)),
-                ),
+                // Only a refusal gets here: an answer was decoded above.
+                Kind::Import => Answer::Imported(bytes.and_then(|_| unreachable!("decoded above"))),
                 Kind::ModelOp => Answer::Model(
                     bytes.and_then(|bytes| decode_changed(&bytes).map_err(unreadable)),
                 ),
@@ -391,6 +410,11 @@ mod page {
             Reflect::set(&message, &"files".into(), &datas)?;
             self.worker.post_message_with_transfer(&message, &transfer)
         }
+    }
+
+    /// The sentence for an answer that does not decode.
+    fn unreadable(e: TransferError) -> CommandError {
+        CommandError::Elsewhere(e.to_string())
     }
 
     /// A buffer from the other instance, still in JavaScript's memory: decoding copies each

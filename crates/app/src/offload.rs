@@ -315,31 +315,31 @@ mod page {
             }
             let bytes = answer.map(JsBytes).map_err(|(why, _)| why);
             let bytes = bytes.map_err(CommandError::Elsewhere);
-            if let (Kind::Import, Ok(bytes)) = (kind, &bytes) {
-                // The arrays copied out now, their check in the next frame.
-                match decode_imported_unchecked(bytes) {
-                    Ok(unchecked) => {
-                        self.unchecked = Some((id, unchecked));
-                        self.ctx.request_repaint();
-                        return None;
-                    }
-                    Err(e) => {
-                        self.sent = None;
-                        return Some(Answer::Imported(Err(unreadable(e))));
-                    }
-                }
-            }
             self.sent = None;
-            Some(match kind {
-                // Only a refusal gets here: an answer was decoded above.
-                Kind::Import => Answer::Imported(bytes.and_then(|_| unreachable!("decoded above"))),
-                Kind::ModelOp => Answer::Model(
+            Some(match (kind, bytes) {
+                (Kind::Import, Ok(bytes)) => return self.decoded(id, &bytes),
+                (Kind::Import, Err(refused)) => Answer::Imported(Err(refused)),
+                (Kind::ModelOp, bytes) => Answer::Model(
                     bytes.and_then(|bytes| decode_changed(&bytes).map_err(unreadable)),
                 ),
-                Kind::Preview => {
+                (Kind::Preview, bytes) => {
                     Answer::Moved(bytes.and_then(|bytes| decode_moved(&bytes).map_err(unreadable)))
                 }
             })
+        }
+
+        /// An import's answer with its arrays copied out now and its meshes checked in the
+        /// next frame, when the edit polls again (the job stays in hand until then).
+        fn decoded(&mut self, id: u64, bytes: &JsBytes) -> Option<Answer> {
+            match decode_imported_unchecked(bytes) {
+                Ok(unchecked) => {
+                    self.sent = Some((id, Kind::Import));
+                    self.unchecked = Some((id, unchecked));
+                    self.ctx.request_repaint();
+                    None
+                }
+                Err(e) => Some(Answer::Imported(Err(unreadable(e)))),
+            }
         }
 
         pub(super) fn cancel(&mut self, id: u64) {

@@ -1380,7 +1380,8 @@ impl SketchApp {
             self.shown_motion = None;
             self.frame_work_ms += SPREAD_AFTER_MS;
         } else if rebuilt {
-            if !std::mem::take(&mut self.rebuild_waited) && self.is_frame_spent(ctx) {
+            let waited = std::mem::take(&mut self.rebuild_waited);
+            if !waited && self.is_frame_spent(ctx) {
                 // The next frame rebuilds; this one draws what it drew (a moved model's
                 // positions belong to the document to be built).
                 self.rebuild_waited = true;
@@ -1395,8 +1396,17 @@ impl SketchApp {
             let (built_with, wanted) = (self.geometry_source, source);
             let previous =
                 (built_with.2 == wanted.2 && built_with.3 == wanted.3).then_some(&*self.geometry);
-            // A large new model's normals take a frame of their own, its arrays the next.
-            let ahead = self.normals_ahead.compute(document, previous);
+            // A large new model's normals take a frame of their own (one with little else to
+            // do, unless it waited already: not the one that landed it), its arrays the next.
+            let ahead = self.normals_ahead.is_wanted(document, previous);
+            if ahead && !waited && self.frame_work_ms > FRAME_BUDGET_MS {
+                self.rebuild_waited = true;
+                ctx.request_repaint();
+                return;
+            }
+            if ahead {
+                self.normals_ahead.compute(document, previous);
+            }
             let large = !self.normals_ahead.is_empty();
             let built = (!ahead).then(|| {
                 Arc::new(SceneGeometry::build(

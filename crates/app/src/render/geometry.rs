@@ -208,23 +208,32 @@ const AHEAD_MIN_VERTICES: usize = 100_000;
 pub struct NormalsAhead(Vec<(Arc<Model>, Vec<DVec3>)>);
 
 impl NormalsAhead {
-    /// Computes the normals of the large models of `doc` that `previous` does not show and
-    /// that have none here yet: whether there were any (the arrays then wait for the next
-    /// frame).
-    pub fn compute(&mut self, doc: &Document, previous: Option<&SceneGeometry>) -> bool {
-        let mut computed = false;
-        for shared in &doc.models {
-            let is_shown = previous.is_some_and(|previous| previous.range_of(shared).is_some());
-            if is_shown || self.of(shared).is_some() {
-                continue;
-            }
-            if shared.mesh.n_vertices() >= AHEAD_MIN_VERTICES {
-                self.0
-                    .push((Arc::clone(shared), vertex_normals(&shared.mesh)));
-                computed = true;
-            }
+    /// The large models of `doc` that `previous` does not show and that have no normals
+    /// here yet.
+    fn wanted<'d>(
+        &self,
+        doc: &'d Document,
+        previous: Option<&SceneGeometry>,
+    ) -> impl Iterator<Item = &'d Arc<Model>> {
+        let is_shown = move |m: &Arc<Model>| previous.is_some_and(|p| p.range_of(m).is_some());
+        (doc.models.iter()).filter(move |m| {
+            m.mesh.n_vertices() >= AHEAD_MIN_VERTICES && !is_shown(m) && self.of(m).is_none()
+        })
+    }
+
+    /// Whether a rebuild of `doc` after `previous` wants normals computed ahead first (the
+    /// arrays then wait for the frame after them).
+    pub fn is_wanted(&self, doc: &Document, previous: Option<&SceneGeometry>) -> bool {
+        self.wanted(doc, previous).next().is_some()
+    }
+
+    /// Computes the normals [`NormalsAhead::is_wanted`] asks for.
+    pub fn compute(&mut self, doc: &Document, previous: Option<&SceneGeometry>) {
+        let wanted: Vec<Arc<Model>> = self.wanted(doc, previous).cloned().collect();
+        for model in wanted {
+            let normals = vertex_normals(&model.mesh);
+            self.0.push((model, normals));
         }
-        computed
     }
 
     /// Whether no normals wait for their arrays.
@@ -675,17 +684,18 @@ mod tests {
         let doc = document(vec![Arc::clone(&small), Arc::clone(&large)]);
         let mut ahead = NormalsAhead::default();
         assert!(
-            ahead.compute(&doc, None),
-            "the large model's normals are computed"
+            ahead.is_wanted(&doc, None),
+            "the large model's normals are wanted"
         );
-        assert!(!ahead.compute(&doc, None), "once");
+        ahead.compute(&doc, None);
+        assert!(!ahead.is_wanted(&doc, None), "once");
         assert!(ahead.of(&large).is_some() && ahead.of(&small).is_none());
         let built = SceneGeometry::build(&doc, 1, &textures, None, false, &ahead);
         let fresh = SceneGeometry::build(&doc, 1, &textures, None, false, &NormalsAhead::default());
         assert_eq!(built, fresh, "the same arrays, bit for bit");
         // Shown already: nothing to compute ahead when the next document keeps it.
         let next = document(vec![large, model(icosphere(1.0, 1))]);
-        assert!(!NormalsAhead::default().compute(&next, Some(&built)));
+        assert!(!NormalsAhead::default().is_wanted(&next, Some(&built)));
     }
 
     #[test]

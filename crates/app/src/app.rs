@@ -1298,6 +1298,7 @@ impl SketchApp {
                 },
                 geometry: self.geometry.clone(),
                 options: self.options,
+                repaint: ui.ctx().clone(),
             };
             ui.painter()
                 .add(egui_wgpu::Callback::new_paint_callback(viewport, callback));

@@ -70,8 +70,25 @@ pub struct SceneRenderer {
     grid: (wgpu::Buffer, u32),
     textures: MeshTextures,
     geometry: Option<GeometryBuffers>,
+    /// The vertices of a large new [`SceneGeometry`] (its generation and motion), uploaded
+    /// a frame before the rest of it, while the old geometry is still drawn.
+    staged: Option<(u64, u64, wgpu::Buffer)>,
     target: Option<SceneTarget>,
 }
+
+/// How far [`SceneRenderer::upload`] got.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Uploaded {
+    /// The buffers hold the scene.
+    Wholly,
+    /// Its vertices are uploaded, the rest comes next frame.
+    Partly,
+}
+
+/// Arrays whose vertices take more bytes than this are uploaded over two frames (vertices,
+/// then triangles, edges and curves): a million triangles' 28 MB of vertices and 12 MB of
+/// triangles took one frame of 50–63 ms in the page.
+const SPLIT_UPLOAD_BYTES: usize = 8 << 20;
 
 impl SceneRenderer {
     /// Creates the renderer and registers it with egui's wgpu painter.
@@ -126,6 +143,7 @@ impl SceneRenderer {
             sampler,
             grid: (grid, grid_vertices.len() as u32),
             geometry: None,
+            staged: None,
             target: None,
         };
         log::info!(
@@ -136,7 +154,14 @@ impl SceneRenderer {
         rs.renderer.write().callback_resources.insert(renderer);
     }
 
-    fn upload(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, scene: &SceneGeometry) {
+    /// Brings the GPU's buffers to `scene`: whether they hold it, or only its vertices so
+    /// far (a large scene, whose upload is spread over two frames).
+    fn upload(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        scene: &SceneGeometry,
+    ) -> Uploaded {
         if let Some(g) = self
             .geometry
             .as_mut()
@@ -152,16 +177,36 @@ impl SceneRenderer {
                     queue.write_buffer(curves, 0, bytemuck::cast_slice(&scene.curves));
                 }
             }
-            return;
+            return Uploaded::Wholly;
         }
         let vertex = wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST;
         let index = wgpu::BufferUsages::INDEX;
+        let staged =
+            (self.staged.take()).filter(|(generation, ..)| *generation == scene.generation);
+        let vertices = match staged {
+            Some((_, motion, vertices)) => {
+                if motion != scene.motion {
+                    queue.write_buffer(&vertices, 0, bytemuck::cast_slice(&scene.vertices));
+                }
+                Some(vertices)
+            }
+            None => {
+                let vertices = buffer(device, "mesh vertices", &scene.vertices, vertex);
+                let vertices = vertices.map(|(b, _)| b);
+                if size_of_val(&scene.vertices[..]) > SPLIT_UPLOAD_BYTES {
+                    // The rest next frame; the old geometry is drawn meanwhile.
+                    self.staged = vertices.map(|b| (scene.generation, scene.motion, b));
+                    return Uploaded::Partly;
+                }
+                vertices
+            }
+        };
         let layout = &self.pipelines.texture_layout;
         self.textures.keep(device, queue, layout, &scene.draws);
         self.geometry = Some(GeometryBuffers {
             generation: scene.generation,
             motion: scene.motion,
-            vertices: buffer(device, "mesh vertices", &scene.vertices, vertex).map(|(b, _)| b),
+            vertices,
             triangles: buffer(device, "mesh triangles", &scene.triangles, index),
             edges: buffer(device, "mesh edges", &scene.edges, index),
             curves: buffer(device, "curves", &scene.curves, vertex),
@@ -174,6 +219,7 @@ impl SceneRenderer {
                 })
                 .collect(),
         });
+        Uploaded::Wholly
     }
 
     fn draw_scene(&self, pass: &mut wgpu::RenderPass<'_>, options: ViewOptions) {
@@ -260,6 +306,8 @@ pub struct SceneCallback {
     pub geometry: Arc<SceneGeometry>,
     /// Wireframe and grid switches.
     pub options: ViewOptions,
+    /// Asked for another frame when an upload is spread over two.
+    pub repaint: egui::Context,
 }
 
 impl CallbackTrait for SceneCallback {
@@ -279,7 +327,9 @@ impl CallbackTrait for SceneCallback {
             (self.rect.width() * ppp).round().max(1.0) as u32,
             (self.rect.height() * ppp).round().max(1.0) as u32,
         ];
-        renderer.upload(device, queue, &self.geometry);
+        if renderer.upload(device, queue, &self.geometry) == Uploaded::Partly {
+            self.repaint.request_repaint();
+        }
         let mut uniforms = self.uniforms;
         let clay = if self.options.clay { 1.0 } else { 0.0 };
         uniforms.viewport = [size[0] as f32, size[1] as f32, ppp, clay];

@@ -70,9 +70,9 @@ pub struct SceneRenderer {
     grid: (wgpu::Buffer, u32),
     textures: MeshTextures,
     geometry: Option<GeometryBuffers>,
-    /// The vertices of a large new [`SceneGeometry`] (its generation and motion), uploaded
-    /// a frame before the rest of it, while the old geometry is still drawn.
-    staged: Option<(u64, u64, wgpu::Buffer)>,
+    /// The vertices of a large new [`SceneGeometry`], uploaded in pieces over frames before
+    /// the rest of it, while the old geometry is still drawn.
+    staged: Option<Staged>,
     target: Option<SceneTarget>,
 }
 
@@ -85,10 +85,20 @@ enum Uploaded {
     Partly,
 }
 
-/// Arrays whose vertices take more bytes than this are uploaded over two frames (vertices,
-/// then triangles, edges and curves): a million triangles' 28 MB of vertices and 12 MB of
-/// triangles took one frame of 50–63 ms in the page.
-const SPLIT_UPLOAD_BYTES: usize = 8 << 20;
+/// The most bytes of a large scene's arrays uploaded in one frame: its vertices go in pieces
+/// of this size, a frame each, then its triangles, edges and curves (a million triangles'
+/// 28 MB of vertices and 12 MB of triangles took one frame of 61–66 ms in the page).
+const UPLOAD_PIECE_BYTES: usize = 12 << 20;
+
+/// The vertex buffer of a scene being uploaded in pieces.
+struct Staged {
+    generation: u64,
+    /// The [`SceneGeometry::motion`] its first piece was written at.
+    motion: u64,
+    vertices: wgpu::Buffer,
+    /// How many of its bytes are written.
+    written: usize,
+}
 
 impl SceneRenderer {
     /// Creates the renderer and registers it with egui's wgpu painter.
@@ -181,24 +191,41 @@ impl SceneRenderer {
         }
         let vertex = wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST;
         let index = wgpu::BufferUsages::INDEX;
-        let staged =
-            (self.staged.take()).filter(|(generation, ..)| *generation == scene.generation);
+        let bytes: &[u8] = bytemuck::cast_slice(&scene.vertices);
+        let staged = (self.staged.take()).filter(|s| s.generation == scene.generation);
         let vertices = match staged {
-            Some((_, motion, vertices)) => {
-                if motion != scene.motion {
-                    queue.write_buffer(&vertices, 0, bytemuck::cast_slice(&scene.vertices));
-                }
-                Some(vertices)
+            None if bytes.len() <= UPLOAD_PIECE_BYTES => {
+                buffer(device, "mesh vertices", &scene.vertices, vertex).map(|(b, _)| b)
             }
-            None => {
-                let vertices = buffer(device, "mesh vertices", &scene.vertices, vertex);
-                let vertices = vertices.map(|(b, _)| b);
-                if size_of_val(&scene.vertices[..]) > SPLIT_UPLOAD_BYTES {
-                    // The rest next frame; the old geometry is drawn meanwhile.
-                    self.staged = vertices.map(|b| (scene.generation, scene.motion, b));
+            staged => {
+                // A large scene: a piece of its vertices per frame, then the rest; the old
+                // geometry is drawn meanwhile.
+                let mut staged = staged.unwrap_or_else(|| Staged {
+                    generation: scene.generation,
+                    motion: scene.motion,
+                    vertices: device.create_buffer(&wgpu::BufferDescriptor {
+                        label: Some("mesh vertices"),
+                        size: bytes.len() as u64,
+                        usage: vertex,
+                        mapped_at_creation: false,
+                    }),
+                    written: 0,
+                });
+                if staged.written < bytes.len() {
+                    // Whole vertices, so a multiple of 4 bytes as a copy needs.
+                    let stride = size_of::<geometry::MeshVertex>();
+                    let piece =
+                        (UPLOAD_PIECE_BYTES / stride * stride).min(bytes.len() - staged.written);
+                    let at = staged.written;
+                    queue.write_buffer(&staged.vertices, at as u64, &bytes[at..at + piece]);
+                    staged.written += piece;
+                    self.staged = Some(staged);
                     return Uploaded::Partly;
                 }
-                vertices
+                if staged.motion != scene.motion {
+                    queue.write_buffer(&staged.vertices, 0, bytes);
+                }
+                Some(staged.vertices)
             }
         };
         let layout = &self.pipelines.texture_layout;

@@ -233,6 +233,7 @@ mod page {
                 let (inbox, ctx) = (inbox.clone(), ctx.clone());
                 Closure::<dyn FnMut(_)>::new(move |event: web_sys::MessageEvent| {
                     *inbox.borrow_mut() = Some(message(&event.data()));
+                    mark_answer();
                     ctx.request_repaint();
                 })
             };
@@ -411,6 +412,19 @@ mod page {
             self.worker.post_message_with_transfer(&message, &transfer)
         }
     }
+
+    /// Marks the arrival of the worker's last answer in the page's performance timeline
+    /// ([`ANSWER_MARK`], the previous one cleared): the frames after it land the answer, the
+    /// ones before it were the work's (what the browser suite tells apart).
+    fn mark_answer() {
+        if let Some(performance) = web_sys::window().and_then(|w| w.performance()) {
+            performance.clear_marks_with_mark_name(ANSWER_MARK);
+            let _ = performance.mark(ANSWER_MARK);
+        }
+    }
+
+    /// The name of [`mark_answer`]'s mark.
+    const ANSWER_MARK: &str = "sketchmesh:answer";
 
     /// The sentence for an answer that does not decode.
     fn unreadable(e: TransferError) -> CommandError {

@@ -669,6 +669,17 @@ mod tests {
         })
     }
 
+    /// `doc`'s arrays with no texture decoded and no normals computed ahead.
+    fn built(
+        doc: &Document,
+        generation: u64,
+        previous: Option<&SceneGeometry>,
+        with_edges: bool,
+    ) -> SceneGeometry {
+        let (textures, ahead) = (Textures::default(), NormalsAhead::default());
+        SceneGeometry::build(doc, generation, &textures, previous, with_edges, &ahead)
+    }
+
     fn document(models: Vec<Arc<Model>>) -> Document {
         Document {
             models,
@@ -690,35 +701,24 @@ mod tests {
         ahead.compute(&doc, None);
         assert!(!ahead.is_wanted(&doc, None), "once");
         assert!(ahead.of(&large).is_some() && ahead.of(&small).is_none());
-        let built = SceneGeometry::build(&doc, 1, &textures, None, false, &ahead);
-        let fresh = SceneGeometry::build(&doc, 1, &textures, None, false, &NormalsAhead::default());
-        assert_eq!(built, fresh, "the same arrays, bit for bit");
+        let ahead_built = SceneGeometry::build(&doc, 1, &textures, None, false, &ahead);
+        assert_eq!(
+            ahead_built,
+            built(&doc, 1, None, false),
+            "the same arrays, bit for bit"
+        );
         // Shown already: nothing to compute ahead when the next document keeps it.
         let next = document(vec![large, model(icosphere(1.0, 1))]);
-        assert!(!NormalsAhead::default().is_wanted(&next, Some(&built)));
+        assert!(!NormalsAhead::default().is_wanted(&next, Some(&ahead_built)));
     }
 
     #[test]
     fn each_edge_is_drawn_once() {
         let (sphere, sheet) = (icosphere(1.0, 2), grid(4, 3, 1.0));
         let doc = document(vec![model(sphere.clone()), model(sheet.clone())]);
-        let scene = SceneGeometry::build(
-            &doc,
-            1,
-            &Textures::default(),
-            None,
-            true,
-            &NormalsAhead::default(),
-        );
+        let scene = built(&doc, 1, None, true);
         // Without the wireframe, the same scene but its edges.
-        let unwired = SceneGeometry::build(
-            &doc,
-            1,
-            &Textures::default(),
-            None,
-            false,
-            &NormalsAhead::default(),
-        );
+        let unwired = built(&doc, 1, None, false);
         assert!(unwired.edges.is_empty());
         assert_eq!(
             SceneGeometry {
@@ -744,15 +744,13 @@ mod tests {
 
     #[test]
     fn a_rebuild_copies_unchanged_models_and_rebuilds_the_rest() {
-        let textures = Textures::default();
         let (a, b, c) = (
             model(icosphere(1.0, 2)),
             model(grid(5, 5, 2.0)),
             model(icosphere(0.5, 1)),
         );
         let before = document(vec![a.clone(), b.clone()]);
-        let mut previous =
-            SceneGeometry::build(&before, 1, &textures, None, true, &NormalsAhead::default());
+        let mut previous = built(&before, 1, None, true);
         // A mark on b's first drawn vertex: if the rebuild copies b, the mark comes along.
         let b_first = previous.model_ranges[1].vertices.start;
         previous.vertices[b_first].uv = [7.0, 7.0];
@@ -760,16 +758,8 @@ mod tests {
         // a replaced by a smaller sphere (b's indices move), c appended.
         let a2 = model(icosphere(1.0, 1));
         let after = document(vec![a2, b.clone(), c]);
-        let rebuilt = SceneGeometry::build(
-            &after,
-            2,
-            &textures,
-            Some(&previous),
-            true,
-            &NormalsAhead::default(),
-        );
-        let fresh =
-            SceneGeometry::build(&after, 2, &textures, None, true, &NormalsAhead::default());
+        let rebuilt = built(&after, 2, Some(&previous), true);
+        let fresh = built(&after, 2, None, true);
         let b_now = rebuilt.model_ranges[1].vertices.start;
         assert_eq!(rebuilt.vertices[b_now].uv, [7.0, 7.0], "b was copied");
         let mut unmarked = rebuilt.clone();
@@ -780,14 +770,7 @@ mod tests {
         let mut moved = fresh.clone();
         let positions: Vec<DVec3> = (b.mesh.positions().iter()).map(|p| *p + DVec3::Z).collect();
         moved.move_model(1, &b, &positions, &mut Vec::new());
-        let again = SceneGeometry::build(
-            &after,
-            3,
-            &textures,
-            Some(&moved),
-            true,
-            &NormalsAhead::default(),
-        );
+        let again = built(&after, 3, Some(&moved), true);
         assert_eq!(again.vertices, fresh.vertices);
     }
 }

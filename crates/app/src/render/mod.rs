@@ -81,7 +81,7 @@ pub struct SceneRenderer {
 enum Uploaded {
     /// The buffers hold the scene.
     Wholly,
-    /// Its vertices are uploaded, the rest comes next frame.
+    /// Part of its vertices are uploaded; more, then the rest, come in the next frames.
     Partly,
 }
 
@@ -164,8 +164,8 @@ impl SceneRenderer {
         rs.renderer.write().callback_resources.insert(renderer);
     }
 
-    /// Brings the GPU's buffers to `scene`: whether they hold it, or only its vertices so
-    /// far (a large scene, whose upload is spread over two frames).
+    /// Brings the GPU's buffers to `scene`: whether they hold it, or only part of its
+    /// vertices so far (a large scene, whose upload is spread over frames).
     fn upload(
         &mut self,
         device: &wgpu::Device,
@@ -333,7 +333,7 @@ pub struct SceneCallback {
     pub geometry: Arc<SceneGeometry>,
     /// Wireframe and grid switches.
     pub options: ViewOptions,
-    /// Asked for another frame when an upload is spread over two.
+    /// Asked for another frame while an upload is spread over frames.
     pub repaint: egui::Context,
 }
 

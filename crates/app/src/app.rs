@@ -63,8 +63,9 @@ pub const FRAME_BUDGET_MS: f64 = 12.0;
 /// 250 ms and one of 190.
 const SPREAD_AFTER_MS: f64 = 50.0;
 
-/// How many busy frames in a row may leave the autosave to the next one: a large result's
-/// landing is four (decoded; a large model's normals; its arrays; their upload).
+/// How many busy frames in a row may leave the autosave to the next one: more than the app
+/// spreads a large result's landing over (checked and committed; a large model's normals;
+/// its arrays; their upload begun).
 #[cfg(target_arch = "wasm32")]
 const AUTOSAVE_WAITS: u8 = 5;
 /// The autosave readies the session's new text in steps while this lasts in a frame (ms),

@@ -68,7 +68,8 @@ impl Flattening {
 }
 
 /// The flattening of the region of `mesh` flagged in `region` (one flag per vertex), its
-/// vertices in the order of `vertices`: the first half of the work.
+/// vertices in the order of `vertices`: the first of its three steps (the rim placed, the
+/// system built and analysed).
 ///
 /// Errors: [`RegionError::NotADisc`] when the region's faces have no loop around them (it
 /// reaches the mesh's own boundary, or has no face).

@@ -3,14 +3,15 @@
 //!
 //! `setup` installs what the other commands need, `build-web` builds the wasm page into `dist/`,
 //! `serve` ships it on <http://127.0.0.1:8080/>, `test` runs every check CI runs (`.ci/run`), and
-//! `bench` runs the criterion benches plus a page timing in headless Chromium, and `fuzz`
-//! fuzzes the glTF importer.
+//! `bench` runs the criterion benches plus a page timing in headless Chromium, `fuzz`
+//! fuzzes the glTF importer, and `docs` checks the names the docs give in backticks.
 
 // Tests may unwrap: a panic is a test failure with a location.
 #![cfg_attr(test, allow(clippy::unwrap_used))]
 
 mod bench;
 mod build;
+mod doc_check;
 mod fuzz;
 mod serve;
 mod setup;
@@ -33,6 +34,8 @@ Commands:
                                (or port N)
   test                         fmt, clippy, native tests, wasm build, browser suite (WebGL2 and WebGPU),
                                glTF validation: everything CI runs
+  docs                         Check that the paths and items ARCHITECTURE.md and docs/guide.md
+                               name in backticks exist
   e2e                          Only the web build, the browser suite and glTF validation
   bench                        Criterion benches of sketchmesh-core plus page timings in Chromium;
                                summary in target/bench-summary.md
@@ -60,6 +63,7 @@ fn try_main() -> anyhow::Result<()> {
         ["build-web"] => build::build_web(&workspace).map(drop),
         ["serve", options @ ..] => serve::serve_command(&workspace, options),
         ["test"] => test::test_command(&workspace),
+        ["docs"] => doc_check::docs_command(&workspace),
         ["e2e"] => test::e2e_command(&workspace),
         ["bench"] => bench::bench_command(&workspace),
         ["fuzz", options @ ..] => fuzz::fuzz_command(&workspace, options),

@@ -44,6 +44,9 @@ pub fn test_command(workspace: &Workspace) -> anyhow::Result<()> {
             cargo().current_dir(root).args(["fmt", "--all", "--check"]),
         )
     })?;
+    steps.step("doc references", || {
+        crate::doc_check::docs_command(workspace)
+    })?;
     let web_build = steps.step("start build-web", || WebBuildProcess::start(workspace))?;
     steps.step("build tests with clippy", || {
         run(

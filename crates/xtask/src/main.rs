@@ -32,8 +32,8 @@ Commands:
                                the one build that is served, tested and benchmarked
   serve [--port N]             Build the page, then serve dist/ on http://127.0.0.1:8080/
                                (or port N)
-  test                         fmt, clippy, native tests, wasm build, browser suite (WebGL2 and WebGPU),
-                               glTF validation: everything CI runs
+  test                         fmt, doc references, clippy, native tests, wasm build, browser suite
+                               (WebGL2 and WebGPU), glTF validation: everything CI runs
   docs                         Check that the paths and items ARCHITECTURE.md and docs/guide.md
                                name in backticks exist
   e2e                          Only the web build, the browser suite and glTF validation

@@ -2,9 +2,9 @@
 //! `.cargo/config.toml`), after egui's `xtask/src/main.rs`.
 //!
 //! `setup` installs what the other commands need, `build-web` builds the wasm page into `dist/`,
-//! `serve` ships it on <http://127.0.0.1:8080/>, `test` runs every check CI runs (`.ci/run`), and
-//! `bench` runs the criterion benches plus a page timing in headless Chromium, and `fuzz`
-//! fuzzes the glTF importer.
+//! `serve` ships it on <http://127.0.0.1:8080/>, `test` runs every check CI runs (`.ci/run`),
+//! `bench` runs the criterion benches plus a page timing in headless Chromium, `fuzz`
+//! fuzzes the glTF importer, and `layers` checks the imports against ARCHITECTURE.md's layers.
 
 // Tests may unwrap: a panic is a test failure with a location.
 #![cfg_attr(test, allow(clippy::unwrap_used))]
@@ -12,6 +12,7 @@
 mod bench;
 mod build;
 mod fuzz;
+mod layers;
 mod serve;
 mod setup;
 mod test;
@@ -37,6 +38,8 @@ Commands:
   bench                        Criterion benches of sketchmesh-core plus page timings in Chromium;
                                summary in target/bench-summary.md
   fuzz [--seconds N]           Fuzz the glTF importer with cargo-fuzz for N seconds (default 60)
+  layers                       Check the imports of crates/core and crates/app against the layer
+                               tables in ARCHITECTURE.md, and that no files import each other
 ";
 
 fn main() {
@@ -63,6 +66,7 @@ fn try_main() -> anyhow::Result<()> {
         ["e2e"] => test::e2e_command(&workspace),
         ["bench"] => bench::bench_command(&workspace),
         ["fuzz", options @ ..] => fuzz::fuzz_command(&workspace, options),
+        ["layers"] => layers::layers_command(&workspace),
         other => bail!("unknown arguments {other:?}\n\n{HELP}"),
     }
 }

@@ -44,6 +44,7 @@ pub fn test_command(workspace: &Workspace) -> anyhow::Result<()> {
             cargo().current_dir(root).args(["fmt", "--all", "--check"]),
         )
     })?;
+    steps.step("layer rules", || crate::layers::layers_command(workspace))?;
     let web_build = steps.step("start build-web", || WebBuildProcess::start(workspace))?;
     steps.step("build tests with clippy", || {
         run(

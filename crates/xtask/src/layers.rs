@@ -7,7 +7,7 @@
 //! only from rows above it in the table, so the table itself has no circle.
 //!
 //! The check reads the files each crate compiles outside tests (its module tree from `lib.rs`,
-//! `#[cfg(test)]` items and modules left out) with `syn`, resolves every `use` path and every
+//! `#[cfg(test)]` and `#[cfg(doc)]` items and modules left out) with `syn`, resolves every `use` path and every
 //! `crate::`, `super::` and `self::` path in code (and paths through a module a `use` named) to
 //! the file that defines the item, following re-exports, and fails on an import between
 //! top-level modules that the table does not allow and on any circle of files. A `pub use`
@@ -47,14 +47,6 @@ pub fn layers_command(workspace: &Workspace) -> anyhow::Result<()> {
             fs::read_to_string(src.join(file)).ok()
         })?;
         let found = check(table, &code);
-        if std::env::var_os("LAYERS_DUMP").is_some() {
-            for (&(a, b), shown) in &code.edges {
-                eprintln!(
-                    "EDGE {} -> {} : {shown}",
-                    code.files[a].shown, code.files[b].shown
-                );
-            }
-        }
         println!(
             "xtask: {dir}: {} files, {} imports between files: {}",
             code.files.len(),
@@ -266,10 +258,12 @@ pub struct CrateCode {
     edges: BTreeMap<(usize, usize), String>,
 }
 
-/// Whether `attrs` hold `#[cfg(test)]`.
-fn is_test_only(attrs: &[syn::Attribute]) -> bool {
+/// Whether `attrs` hold `#[cfg(test)]` or `#[cfg(doc)]` (an import for a doc link only).
+fn is_left_out(attrs: &[syn::Attribute]) -> bool {
     attrs.iter().any(|attr| match &attr.meta {
-        syn::Meta::List(list) => list.path.is_ident("cfg") && list.tokens.to_string() == "test",
+        syn::Meta::List(list) => {
+            list.path.is_ident("cfg") && ["test", "doc"].contains(&list.tokens.to_string().as_str())
+        }
         _ => false,
     })
 }
@@ -365,7 +359,7 @@ impl<'ast> Visit<'ast> for Reader<'_> {
             Item::Use(i) => (&i.attrs, None),
             _ => return,
         };
-        if is_test_only(attrs) {
+        if is_left_out(attrs) {
             return;
         }
         if let Some(ident) = ident {
@@ -814,7 +808,8 @@ mod tests {
             ),
             (
                 "mesh.rs",
-                "pub struct Mesh; #[cfg(test)] mod tests { use crate::deform::Edit; }",
+                "pub struct Mesh; #[cfg(test)] mod tests { use crate::deform::Edit; } \
+                 #[cfg(doc)] use crate::deform::Edit;",
             ),
             ("solve.rs", "pub fn solve() {}"),
             ("geometry/mod.rs", "mod normals; pub use normals::normals;"),
@@ -848,7 +843,8 @@ mod tests {
         );
         assert!(shown.contains(&expect("geometry/normals.rs", "solve.rs")));
         assert!(shown.contains(&expect("document.rs", "deform.rs")));
-        // The re-export alone is no import of mod.rs; the test module's upward use is left out.
+        // The re-export alone is no import of mod.rs; the upward uses of the test module and
+        // of the doc link are left out.
         assert!(!shown.contains(&expect("geometry/mod.rs", "geometry/normals.rs")));
         assert!(!shown.iter().any(|(a, _)| a == "src/mesh.rs"));
     }

@@ -40,17 +40,17 @@ mod error;
 mod filter;
 mod frames;
 mod handle;
-mod handle_set;
 mod placement;
 mod segment;
 mod shape;
 
+/// A handle's data is plain data of the document; the app and the ops name it from here.
+pub use crate::model::{HandleCurve, HandleKind};
 pub use curve::Spline;
 pub use deformation::{Deformation, Link, Mover, Segmented, Slabs};
 pub use error::SkeletonError;
 pub use filter::{JITTER_PX, filter_jitter};
 pub use frames::{FRAMES, Frame};
-pub use handle::{HandleCurve, HandleKind, PointEdit};
-pub use handle_set::{CurveHandle, HandleTarget};
+pub use handle::PointEdit;
 pub use placement::{HandleStroke, place_handle};
 pub use shape::{Neighbours, Shape};

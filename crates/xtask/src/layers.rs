@@ -772,6 +772,8 @@ fn shortest_loop(out: &[Vec<usize>], members: &BTreeSet<usize>, start: usize) ->
 
 #[cfg(test)]
 mod tests {
+    use std::path::Path;
+
     use super::*;
 
     const TABLE: &str = "
@@ -914,6 +916,38 @@ mod tests {
             "{}",
             problems[0]
         );
+    }
+
+    #[test]
+    fn a_re_export_that_its_own_file_uses_is_an_import() {
+        let mut files = clean();
+        files.push((
+            "deform/shared.rs",
+            "use super::Edit; pub fn shared(_: Edit) {}",
+        ));
+        files[5] = (
+            "deform.rs",
+            "mod shared; pub use shared::shared; pub struct Edit;",
+        );
+        assert_eq!(check(&table(), &crate_of(&files)), Vec::<String>::new());
+        files[5].1 = "mod shared; pub use shared::shared; pub struct Edit; fn f() { shared(Edit) }";
+        let problems = check(&table(), &crate_of(&files));
+        assert_eq!(problems.len(), 1, "{problems:?}");
+        assert!(
+            problems[0]
+                .starts_with("files that import each other: src/deform.rs, src/deform/shared.rs")
+        );
+    }
+
+    #[test]
+    fn the_tables_of_architecture_md_parse_and_cover_both_crates() {
+        let doc =
+            fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("../../ARCHITECTURE.md"))
+                .unwrap();
+        let tables = parse_tables(&doc).unwrap();
+        for dir in CHECKED {
+            assert!(tables.iter().any(|t| t.dir == dir), "no table for {dir}");
+        }
     }
 
     #[test]

@@ -2,14 +2,14 @@
 //!
 //! ARCHITECTURE.md holds, between [`BLOCK_START`] and [`BLOCK_END`], one table per crate (under
 //! a heading naming the crate's folder in backticks): each row a layer, its top-level modules
-//! in backticks and, in backticks, what they may import besides themselves: modules, or a
-//! layer by name (all of its modules). Rows run from the bottom layer up, and a row imports
-//! only from rows above it in the table, so the table itself has no circle.
+//! in backticks and what they may import besides themselves: modules in backticks, and layers
+//! by name in italics (`*ground*`: all of its modules). Rows run from the bottom layer up, and a row imports
+//! only from rows listed before it, so the table itself has no circle.
 //!
-//! The check reads the files each crate compiles outside tests (its module tree from `lib.rs`,
-//! `#[cfg(test)]` and `#[cfg(doc)]` items and modules left out) with `syn`, resolves every `use` path and every
-//! `crate::`, `super::` and `self::` path in code (and paths through a module a `use` named) to
-//! the file that defines the item, following re-exports, and fails on an import between
+//! The check reads the files each crate compiles outside tests (its module tree from
+//! `lib.rs`, `#[cfg(test)]` and `#[cfg(doc)]` items and modules left out) with `syn`, resolves
+//! every `use` path and every `crate::`, `super::` and `self::` path in code (and paths through
+//! a module a `use` named) to the file that defines the item, following re-exports, and fails on an import between
 //! top-level modules that the table does not allow and on any circle of files. A `pub use`
 //! that only re-exports is no import of the file that makes it; one whose name the file's own
 //! code uses is. Paths inside macro calls are not seen (`syn` leaves their tokens unparsed).
@@ -86,7 +86,18 @@ pub struct Table {
 struct Row {
     layer: String,
     modules: Vec<String>,
+    /// Modules it may import, and layers (all of their modules).
     imports: Vec<String>,
+    layers: Vec<String>,
+}
+
+/// The texts in italics (`*ground*`, not in backticks) in `cell`.
+fn italic(cell: &str) -> Vec<String> {
+    (cell.split('`').step_by(2))
+        .flat_map(|text| text.split('*').skip(1).step_by(2))
+        .map(|s| s.trim().to_owned())
+        .filter(|s| !s.is_empty())
+        .collect()
 }
 
 /// The texts in backticks in `cell`.
@@ -139,6 +150,7 @@ pub fn parse_tables(doc: &str) -> anyhow::Result<Vec<Table>> {
             layer: layer.trim_matches('*').to_owned(),
             modules: backticked(modules),
             imports: backticked(imports),
+            layers: italic(imports),
         });
     }
     if written.is_empty() {
@@ -169,31 +181,41 @@ impl Table {
         let mut allowed = BTreeMap::new();
         for (index, row) in rows.iter().enumerate() {
             let mut imports = BTreeSet::new();
+            let mut named: Vec<&String> = Vec::new();
             for name in &row.imports {
-                let named: Vec<&String> = match layer_of.get(name) {
-                    Some(_) => vec![name],
-                    None => (layer_of.iter())
-                        .filter(|(_, (layer, _))| layer == name)
-                        .map(|(module, _)| module)
-                        .collect(),
-                };
-                if named.is_empty() {
+                if !layer_of.contains_key(name) {
                     bail!(
-                        "`{dir}`: the row of {} lets it import `{name}`, which names no module or \
-                         layer of the table (write reasons without backticks)",
+                        "`{dir}`: the row of {} lets it import `{name}`, which is no module of \
+                         the table (write reasons without backticks)",
                         row.modules.join(", ")
                     );
                 }
-                for module in named {
-                    if layer_of[module].1 >= index {
-                        bail!(
-                            "`{dir}`: the row of {} lets it import `{module}`, which is not in a \
-                             row above it: the table must list layers from the bottom up",
-                            row.modules.join(", ")
-                        );
-                    }
-                    imports.insert(module.clone());
+                named.push(name);
+            }
+            for name in &row.layers {
+                let before = named.len();
+                named.extend(
+                    (layer_of.iter())
+                        .filter(|(_, (layer, _))| layer == name)
+                        .map(|(module, _)| module),
+                );
+                if named.len() == before {
+                    bail!(
+                        "`{dir}`: the row of {} lets it import the layer *{name}*, which is no \
+                         layer of the table (write reasons without italics)",
+                        row.modules.join(", ")
+                    );
                 }
+            }
+            for module in named {
+                if layer_of[module].1 >= index {
+                    bail!(
+                        "`{dir}`: the row of {} lets it import `{module}`, which is not in a row \
+                         before it: the table must list layers from the bottom up",
+                        row.modules.join(", ")
+                    );
+                }
+                imports.insert(module.clone());
             }
             for module in &row.modules {
                 allowed.insert(module.clone(), imports.clone());
@@ -784,8 +806,8 @@ mod tests {
 | --- | --- | --- |
 | ground | `mesh`, `solve` | nothing of the crate |
 | ground | `geometry` | `mesh` and `solve` (its Laplacians are solved) |
-| techniques | `deform` | the `ground` layer |
-| editing | `document` | `ground`, `techniques` |
+| techniques | `deform` | the *ground* layer |
+| editing | `document` | *ground*, *techniques* |
 <!-- /layers -->
 ";
 
@@ -953,8 +975,8 @@ mod tests {
     #[test]
     fn a_table_that_drifts_from_the_code_or_points_up_is_refused() {
         let code = crate_of(&clean());
-        let missing = TABLE.replace("| techniques | `deform` | the `ground` layer |\n", "");
-        let missing = missing.replace("`ground`, `techniques`", "`ground`");
+        let missing = TABLE.replace("| techniques | `deform` | the *ground* layer |\n", "");
+        let missing = missing.replace("*ground*, *techniques*", "*ground*");
         let problems = check(&parse_tables(&missing).unwrap().remove(0), &code);
         assert!(
             problems[0].contains("the module `deform` is in no row"),
@@ -962,8 +984,15 @@ mod tests {
         );
         let upward = TABLE.replace("| nothing of the crate |", "| `deform` |");
         let err = parse_tables(&upward).unwrap_err().to_string();
-        assert!(err.contains("not in a row above it"), "{err}");
-        let unknown = TABLE.replace("the `ground` layer", "`grond`");
-        assert!(parse_tables(&unknown).is_err());
+        assert!(err.contains("not in a row before it"), "{err}");
+        let unknown = TABLE.replace("the *ground* layer", "*grond*");
+        let err = parse_tables(&unknown).unwrap_err().to_string();
+        assert!(
+            err.contains("the layer *grond*, which is no layer"),
+            "{err}"
+        );
+        let unknown = TABLE.replace("the *ground* layer", "`grond`");
+        let err = parse_tables(&unknown).unwrap_err().to_string();
+        assert!(err.contains("`grond`, which is no module"), "{err}");
     }
 }

@@ -30,8 +30,8 @@
 //! 6. [`segment`]: the region and the start and end sides (§3.1);
 //! 7. [`binding`]: slab coordinates and the stretch ratio (§5.2);
 //! 8. [`deformation`]: all of it for one or more handles, with links (§5.4);
-//! 9. [`handle`]: the handle's curve, and edits to it; [`handle_set`]: a handle as a
-//!    document keeps it (target, number, links).
+//! 9. [`handle`]: the handle's curve, and edits to it (a handle as a document keeps it,
+//!    target, number, curve and links, is plain data: [`crate::model::CurveHandle`]).
 
 mod binding;
 mod curve;

@@ -5,14 +5,18 @@
 //! [`document::Editor`], which changes the [`document::Document`] only through
 //! serializable, undoable operations.
 //!
-//! The modules form layers; each uses only those below it:
-//! 1. the ground floor: [`camera`], [`curve`] (screen strokes), [`mesh`], [`solve`] and
-//!    [`geometry`] (which builds on `mesh` and `solve`);
-//! 2. the modeling techniques: [`fibermesh`], [`deform`], [`silhouette`], [`oversketch`]
-//!    (which bends with `deform` along `silhouette`s), [`feature`] (which solves with
-//!    `deform`'s system) and [`optimize`];
-//! 3. [`model`]: what a document holds, as plain data;
-//! 4. [`io`]: glTF files in and out of the model;
+//! The modules form layers; each uses only those below it (ARCHITECTURE.md's table, which
+//! `cargo xtask layers` checks):
+//! 1. the ground floor: [`solve`], [`camera`], [`curve`] (screen strokes) and [`mesh`],
+//!    which use nothing of the crate, and [`geometry`] (which builds on `mesh` and `solve`);
+//! 2. [`model`]: what a document holds, as plain data, on the ground floor's `mesh`;
+//! 3. the modeling techniques, on the floors below: [`deform`], [`silhouette`],
+//!    [`fibermesh`], [`optimize`], [`skeleton`], [`feature`] (which solves with `deform`'s
+//!    system), [`oversketch`] (which bends with `deform` along `silhouette`s and embeds a
+//!    sketch as `feature` does), [`region_edit`] (with `feature`'s placement and
+//!    `fibermesh`'s curve embedding), [`volumetric`] (with `deform` and `feature`) and
+//!    [`animation`] (with `volumetric`'s similarities);
+//! 4. [`io`]: glTF files in and out of the model (an export bakes an `animation`);
 //! 5. [`document`]: editing it, with ops, undo history and sessions.
 
 pub mod animation;

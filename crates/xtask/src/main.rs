@@ -2,9 +2,10 @@
 //! `.cargo/config.toml`), after egui's `xtask/src/main.rs`.
 //!
 //! `setup` installs what the other commands need, `build-web` builds the wasm page into `dist/`,
-//! `serve` ships it on <http://127.0.0.1:8080/>, `test` runs every check CI runs (`.ci/run`), and
+//! `serve` ships it on <http://127.0.0.1:8080/>, `test` runs every check CI runs (`.ci/run`),
 //! `bench` runs the criterion benches plus a page timing in headless Chromium, `fuzz`
-//! fuzzes the glTF importer, and `docs` checks the names the docs give in backticks.
+//! fuzzes the glTF importer, `docs` checks the names the docs give in backticks, and `layers`
+//! checks the imports against ARCHITECTURE.md's layers.
 
 // Tests may unwrap: a panic is a test failure with a location.
 #![cfg_attr(test, allow(clippy::unwrap_used))]
@@ -13,6 +14,7 @@ mod bench;
 mod build;
 mod doc_check;
 mod fuzz;
+mod layers;
 mod serve;
 mod setup;
 mod test;
@@ -40,6 +42,8 @@ Commands:
   bench                        Criterion benches of sketchmesh-core plus page timings in Chromium;
                                summary in target/bench-summary.md
   fuzz [--seconds N]           Fuzz the glTF importer with cargo-fuzz for N seconds (default 60)
+  layers                       Check the imports of crates/core and crates/app against the layer
+                               tables in ARCHITECTURE.md, and that no files import each other
 ";
 
 fn main() {
@@ -67,6 +71,7 @@ fn try_main() -> anyhow::Result<()> {
         ["e2e"] => test::e2e_command(&workspace),
         ["bench"] => bench::bench_command(&workspace),
         ["fuzz", options @ ..] => fuzz::fuzz_command(&workspace, options),
+        ["layers"] => layers::layers_command(&workspace),
         other => bail!("unknown arguments {other:?}\n\n{HELP}"),
     }
 }

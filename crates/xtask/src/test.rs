@@ -47,6 +47,7 @@ pub fn test_command(workspace: &Workspace) -> anyhow::Result<()> {
     steps.step("doc references", || {
         crate::doc_check::docs_command(workspace)
     })?;
+    steps.step("layer rules", || crate::layers::layers_command(workspace))?;
     let web_build = steps.step("start build-web", || WebBuildProcess::start(workspace))?;
     steps.step("build tests with clippy", || {
         run(

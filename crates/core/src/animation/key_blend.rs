@@ -15,7 +15,7 @@
 
 use glam::{DMat3, DQuat, DVec3};
 
-use crate::deform::OneRingWeights;
+use crate::geometry::OneRingWeights;
 use crate::geometry::vertex_normals_of;
 use crate::mesh::{Mesh, VertexId};
 use crate::solve::{Prefactored, SolveError, Triplets};

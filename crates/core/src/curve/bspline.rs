@@ -1,19 +1,12 @@
 //! Clamped cubic B-splines in the plane: the coarse shape of a curve that the user edits by
-//! a few control points (Zhou et al. 2005, §4.1), fitted by least squares, with knots the
-//! user can add (Boehm's insertion keeps the shape exactly, so adding a knot never moves the
-//! curve, it only gives another control point).
+//! a few control points (Zhou et al. 2005, §4.1; the volumetric technique fits them by least
+//! squares), with knots the user can add (Boehm's insertion keeps the shape exactly, so
+//! adding a knot never moves the curve, it only gives another control point).
 
-use glam::{DVec2, DVec3};
-
-use crate::solve::{SolveError, Triplets, solve_least_squares};
+use glam::DVec2;
 
 /// The fewest control points a cubic needs.
 pub const MIN_CONTROLS: usize = 4;
-
-/// How strongly the fit keeps each control point near the mean of its neighbours, next to
-/// the data: enough that a knot span no sample falls in still has a defined control point,
-/// too little to bend the fit.
-const REGULARIZATION: f64 = 1e-3;
 
 /// A clamped cubic B-spline over `[0, 1]`: it starts at its first control point and ends at
 /// its last.
@@ -38,6 +31,14 @@ fn full_knots(interior: &[f64]) -> Vec<f64> {
     knots.extend_from_slice(interior);
     knots.extend([1.0; 4]);
     knots
+}
+
+/// The four control points a spline with these interior knots takes its point at `t` from,
+/// by the index of the first, and their weights: what a fit of the control points solves
+/// for.
+pub fn weights_at(knots: &[f64], t: f64) -> (usize, [f64; 4]) {
+    let (span, weights) = basis(&full_knots(knots), t);
+    (span - 3, weights)
 }
 
 /// The index `k` of the knot span `[u_k, u_{k+1})` holding `t` (the last span holds 1), and
@@ -74,42 +75,6 @@ fn basis(knots: &[f64], t: f64) -> (usize, [f64; 4]) {
 }
 
 impl BSpline {
-    /// The least-squares spline through `points` at parameters `params` (increasing, from 0
-    /// to 1) with these interior knots: its ends are the first and last points.
-    ///
-    /// Errors: [`SolveError`] when the fit cannot be solved (non-finite points).
-    pub fn fit(points: &[DVec2], params: &[f64], knots: &[f64]) -> Result<BSpline, SolveError> {
-        let full = full_knots(knots);
-        let n = knots.len() + 4;
-        let rows = points.len() + n - 2;
-        let mut a = Triplets::with_capacity(rows, n, 4 * points.len() + 3 * n);
-        let mut b = Vec::with_capacity(rows);
-        for (i, (&p, &t)) in points.iter().zip(params).enumerate() {
-            let (span, weights) = basis(&full, t);
-            for (r, &w) in weights.iter().enumerate() {
-                a.push(i, span - 3 + r, w);
-            }
-            b.push(p.extend(0.0));
-        }
-        for j in 1..n - 1 {
-            let row = points.len() + j - 1;
-            a.push(row, j - 1, -0.5 * REGULARIZATION);
-            a.push(row, j, REGULARIZATION);
-            a.push(row, j + 1, -0.5 * REGULARIZATION);
-            b.push(DVec3::ZERO);
-        }
-        let mut fixed = vec![false; n];
-        let mut ends = vec![DVec3::ZERO; n];
-        (fixed[0], fixed[n - 1]) = (true, true);
-        ends[0] = points[0].extend(0.0);
-        ends[n - 1] = points[points.len() - 1].extend(0.0);
-        let solved = solve_least_squares(&a.build(), &b, &fixed, &ends)?;
-        Ok(BSpline {
-            knots: knots.to_vec(),
-            controls: solved.iter().map(|c| c.truncate()).collect(),
-        })
-    }
-
     /// The point at parameter `t` in `[0, 1]`.
     pub fn at(&self, t: f64) -> DVec2 {
         let (span, weights) = basis(&full_knots(&self.knots), t);
@@ -175,13 +140,12 @@ pub fn with_widest_span_split(knots: &[f64]) -> Vec<f64> {
 mod tests {
     use super::*;
 
-    fn circle_arc(n: usize) -> (Vec<DVec2>, Vec<f64>) {
-        let params: Vec<f64> = (0..n).map(|i| i as f64 / (n - 1) as f64).collect();
-        let points = params
-            .iter()
-            .map(|&t| DVec2::new((2.0 * t).cos(), (2.0 * t).sin()))
-            .collect();
-        (points, params)
+    #[test]
+    fn the_weights_are_a_partition_of_unity_over_four_control_points() {
+        let knots = [0.2, 0.5, 0.55, 0.9];
+        assert_eq!(weights_at(&knots, 0.0).0, 0);
+        assert_eq!(weights_at(&knots, 1.0).0, knots.len());
+        assert_eq!(weights_at(&knots, 0.52).0, 2);
     }
 
     #[test]
@@ -195,24 +159,12 @@ mod tests {
     }
 
     #[test]
-    fn a_cubic_is_fitted_exactly_and_its_ends_interpolated() {
-        // A cubic polynomial curve lies in the spline space whatever the knots.
-        let cubic = |t: f64| DVec2::new(t, 2.0 * t * t * t - t * t + 0.5 * t);
-        let params: Vec<f64> = (0..50).map(|i| i as f64 / 49.0).collect();
-        let points: Vec<DVec2> = params.iter().map(|&t| cubic(t)).collect();
-        let spline = BSpline::fit(&points, &params, &uniform_knots(6)).unwrap();
-        assert_eq!(spline.controls.len(), 6);
-        assert_eq!(spline.controls[0], points[0]);
-        assert_eq!(spline.controls[5], points[49]);
-        for &t in &[0.0, 0.13, 0.5, 0.77, 1.0] {
-            assert!(spline.at(t).distance(cubic(t)) < 1e-3, "at {t}");
-        }
-    }
-
-    #[test]
     fn a_knot_inserted_keeps_the_shape_and_adds_a_control_point() {
-        let (points, params) = circle_arc(80);
-        let spline = BSpline::fit(&points, &params, &uniform_knots(5)).unwrap();
+        let controls = [(0.0, 0.0), (1.0, 2.0), (2.0, -1.0), (3.0, 0.5), (4.0, 0.0)];
+        let spline = BSpline {
+            knots: uniform_knots(5),
+            controls: controls.iter().map(|&(x, y)| DVec2::new(x, y)).collect(),
+        };
         let split = with_widest_span_split(&spline.knots);
         assert!(valid_knots(&split) && split.len() == spline.knots.len() + 1);
         let middle = split.iter().find(|u| !spline.knots.contains(u)).copied();
@@ -223,10 +175,6 @@ mod tests {
         for k in 0..=200 {
             let t = k as f64 / 200.0;
             assert!(finer.at(t).distance(spline.at(t)) < 1e-12, "at {t}");
-        }
-        // The fit is close to the arc it approximates.
-        for (&p, &t) in points.iter().zip(&params) {
-            assert!(spline.at(t).distance(p) < 5e-3);
         }
         assert_eq!(finer.with_knot(0.1), finer, "a knot already there");
         assert_eq!(finer.with_knot(1.0), finer, "an end");

@@ -6,17 +6,15 @@
 //! and [`smooth`]s it lightly; later techniques (FiberMesh creation, pulling curves) work on
 //! the result. [`polyline`] holds the planar helpers every technique shares: arclength,
 //! resampling, nearest points, simplification, polygon area and containment, crossings.
-//! [`bspline`] and [`CoarseCurve`] edit a curve by a few control points, its detail kept.
+//! [`bspline`] shapes a curve by a few control points.
 
 pub mod bspline;
-mod coarse_edit;
 mod error;
 mod point;
 pub mod polyline;
 mod smooth;
 mod stroke;
 
-pub use coarse_edit::CoarseCurve;
 pub use error::{MIN_STROKE_LENGTH_PX, StrokeError};
 pub use point::StrokePoint;
 pub use smooth::{smooth, smooth_closed};

@@ -10,12 +10,12 @@
 use glam::{DMat3, DQuat, DVec3};
 
 use super::DeformError;
-use super::cotan_weights::OneRingWeights;
 use super::exact_handles::ExactConstraints;
 use super::handle::{HandlePoint, split_handles};
 use super::params::{EditParams, HandleFit, Rotations};
 use super::region::Region;
 use super::rotation::{best_rotation, refine_rotation};
+use crate::geometry::OneRingWeights;
 use crate::mesh::{Mesh, VertexId};
 use crate::solve::{Prefactored, SolveError, Triplets, check_len};
 

@@ -51,7 +51,6 @@
 //! - Exact handles inside edges and faces cost a dense `n × k` block (`exact_handles.rs`),
 //!   fine for a few hundred silhouette points.
 
-mod cotan_weights;
 mod error;
 mod exact_handles;
 mod handle;
@@ -60,7 +59,6 @@ mod params;
 mod region;
 mod rotation;
 
-pub(crate) use cotan_weights::OneRingWeights;
 pub use error::DeformError;
 pub use handle::HandlePoint;
 pub use laplacian_edit::LaplacianEdit;

@@ -9,7 +9,7 @@ use std::sync::Arc;
 
 use glam::{DMat3, DMat4, DVec3};
 
-use super::outcome::{Outcome, target};
+use super::next::{Outcome, target};
 use super::skeleton::remove_model;
 use super::{CommandError, Document, ModelInput, TransformInput};
 use crate::io::Imported;

@@ -14,9 +14,9 @@ use std::sync::Arc;
 
 use super::{CommandError, ControlCurve, CreateInput, Document, Model, StrokeInput};
 use crate::fibermesh::{
-    self, Convergence, CreateError, CreateParams, CurveKind, FairSurface, first_iteration,
-    seed_from_stroke,
+    Convergence, CreateError, CreateParams, FairSurface, first_iteration, seed_from_stroke,
 };
+use crate::model::CurveKind;
 
 /// The finest creation that steps in the frames: natively the factorizations and first
 /// iteration take 12 ms at 2,000 vertices and 105 ms at 10,000 (BENCHMARKS.md), and the
@@ -117,7 +117,7 @@ impl CreateJob {
         let model = Arc::make_mut(&mut self.document.models[self.index]);
         let done = match &mut self.solve {
             None => {
-                let outline = fibermesh::ControlCurve {
+                let outline = ControlCurve {
                     vertices: model.curves[0].vertices.clone(),
                     is_closed: true,
                     kind: CurveKind::Smooth,

@@ -6,7 +6,7 @@ use std::sync::OnceLock;
 #[cfg(doc)]
 use super::Edit;
 use super::history::History;
-use super::outcome::Outcome;
+use super::next::Outcome;
 use super::{CommandError, Document, Op};
 
 /// A document with undo/redo and the log of applied ops (the session).

@@ -8,7 +8,7 @@
 
 use glam::{DVec2, DVec3};
 
-use super::outcome::{target, with_positions};
+use super::next::{target, with_positions};
 use super::{CommandError, Document, Model, SketchFeatureInput, model_under};
 use crate::curve::process_stroke;
 use crate::feature::{FeatureEdit, FeatureError, Sketch};

@@ -23,6 +23,7 @@ mod gizmo;
 mod history;
 mod intent;
 mod keyframes;
+mod next;
 mod op;
 mod optimize;
 mod outcome;

@@ -10,7 +10,7 @@
 
 use glam::DVec3;
 
-use super::outcome::{target, with_positions};
+use super::next::{target, with_positions};
 use super::{BrushInput, CommandError, Document, Model, OptimizeInput, StrokeInput};
 use crate::mesh::Mesh;
 use crate::optimize::region::{brushed_vertices, lasso_vertices};

@@ -7,6 +7,7 @@ use super::arrange::{delete_op, duplicate_op, place_beside, transform_op};
 use super::create::create_op;
 use super::feature::feature_op;
 use super::keyframes::{delete_keyframe_op, keyframe_op, pose_at_op};
+use super::next::Outcome;
 use super::optimize::optimize_op;
 use super::oversketch::oversketch_op;
 use super::region_edit::region_edit_op;
@@ -17,25 +18,6 @@ use super::volumetric::{curve_deform_op, deform_op};
 use super::{CommandError, Document, ImportInput, Model, Op, SketchCurve, StrokeInput, curve_edit};
 use crate::curve::process_stroke;
 use crate::io::{ImportFile, ImportLimits, Imported, import_gltf};
-
-/// What an op does to the editor, ready to commit.
-#[derive(Debug)]
-pub(super) enum Outcome {
-    /// The next document; the current one goes on the undo history.
-    Document(Document),
-    /// An import's next document, with what the user may want to know about it (repairs
-    /// made, textures left behind).
-    Imported {
-        /// The next document, as for [`Outcome::Document`].
-        next: Document,
-        /// Sentences for the user.
-        notes: Vec<String>,
-    },
-    /// Go back to the last undo snapshot.
-    Undo,
-    /// Go forward to the last redo snapshot.
-    Redo,
-}
 
 /// Computes `op` on `base` in one go. A `create` runs its steps to the end here
 /// ([`create_op`]); the edits that spread an op over steps ([`super::Edit`]) end with the
@@ -96,26 +78,6 @@ pub fn model_op(doc: &Document, op: &Op) -> Result<(usize, Model), CommandError>
     }
 }
 
-/// Processes the stroke in screen space and projects each point onto the plane through the
-/// camera target facing the camera.
-/// Model `index` of `doc`.
-///
-/// Errors: [`CommandError::NoSuchModel`].
-pub(super) fn target(doc: &Document, index: usize) -> Result<&Model, CommandError> {
-    doc.models
-        .get(index)
-        .map(|model| &**model)
-        .ok_or(CommandError::NoSuchModel(index))
-}
-
-/// Model `index` of `doc` with its vertices at `positions`; its triangles, curves (chains
-/// of vertices, so they follow) and appearance stay.
-pub(super) fn with_positions(doc: &Document, index: usize, positions: &[glam::DVec3]) -> Model {
-    let mut next = Model::clone(&doc.models[index]);
-    next.mesh.positions_mut().copy_from_slice(positions);
-    next
-}
-
 /// `model`, the next version of `before` computed elsewhere, sharing `before`'s looks, its
 /// soup as imported and its key frames again where they are the same: the copies that went
 /// to the page's worker and back are dropped, and the page's textures, kept per image, are
@@ -153,6 +115,8 @@ pub(super) fn with_model(base: &Document, (index, model): (usize, Model)) -> Out
     Outcome::Document(next)
 }
 
+/// Processes the stroke in screen space and projects each point onto the plane through the
+/// camera target facing the camera.
 fn place_stroke(input: &StrokeInput) -> Result<SketchCurve, CommandError> {
     let viewport = input.checked_viewport()?;
     let processed = process_stroke(&input.points())?;

@@ -11,7 +11,7 @@ use std::sync::Arc;
 use glam::{DMat4, DVec2, DVec3};
 
 use super::curve_edit::{remesh_only, with_splits};
-use super::outcome::target;
+use super::next::target;
 use super::{
     AreaInput, CommandError, Document, Model, RegionEditInput, StrokeInput, model_under, surface_at,
 };

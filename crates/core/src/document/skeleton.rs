@@ -17,10 +17,10 @@ use std::sync::Arc;
 use glam::{DVec2, DVec3};
 
 use super::{CommandError, CurveHandleInput, Document, HandleEditInput, LinkHandlesInput};
-use crate::model::{CurveHandle, HandleTarget, PointCloud};
+use crate::model::{CurveHandle, HandleCurve, HandleTarget, PointCloud};
 use crate::skeleton::{
-    Deformation, HandleCurve, HandleStroke, Link, Mover, Neighbours, PointEdit, Segmented, Shape,
-    SkeletonError, Slabs, place_handle,
+    Deformation, HandleStroke, Link, Mover, Neighbours, PointEdit, Segmented, Shape, SkeletonError,
+    Slabs, place_handle,
 };
 
 /// Applies a `curve_handle` op: a new handle on the nearest model or cloud under the stroke.

@@ -14,7 +14,7 @@ use std::sync::Arc;
 use glam::{DMat4, DVec2, DVec3};
 use serde::{Deserialize, Serialize};
 
-use super::outcome::{target, with_positions};
+use super::next::{target, with_positions};
 use super::{CommandError, Document, Model};
 use crate::camera::Camera;
 use crate::curve::polyline::contains;

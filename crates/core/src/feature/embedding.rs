@@ -13,7 +13,7 @@ use glam::{DVec2, DVec3};
 
 use super::Sketch;
 use crate::curve::polyline::{closest_point, cumulative_lengths};
-use crate::deform::OneRingWeights;
+use crate::geometry::OneRingWeights;
 use crate::mesh::{Mesh, VertexId};
 use crate::solve::{Prefactored, SolveError, Triplets};
 

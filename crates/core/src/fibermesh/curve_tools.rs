@@ -18,11 +18,11 @@
 
 use glam::{DVec2, DVec3};
 
-use super::control_curve::{ControlCurve, CurveKind};
 use crate::camera::Camera;
 use crate::curve::polyline::{distance_to_polyline, distance_to_segment};
 use crate::geometry::{Bvh, vertex_normals};
 use crate::mesh::{Mesh, VertexId};
+use crate::model::{ControlCurve, CurveKind};
 
 /// How far a rubbed vertex moves towards its neighbours' midpoint per pick radius of stroke
 /// passing over it (at the stroke's centre line).

@@ -47,11 +47,11 @@
 
 use glam::DVec3;
 
-use super::control_curve::{ControlCurve, CurveKind};
 use super::fair_systems::{self, DIFFUSION_WEIGHT, EDGE_WEIGHT};
 use super::measure::{Measures, Rings};
 use super::region::region_around;
 use crate::mesh::{Mesh, VertexId};
+use crate::model::{ControlCurve, CurveKind};
 use crate::solve::{Prefactored, SolveError};
 
 /// What [`FairSurface::run`] did.

@@ -50,7 +50,6 @@
 //! vertices) instead of rounding off.
 
 pub mod add_curve;
-mod control_curve;
 pub mod curve_pull;
 pub mod curve_tools;
 pub mod cut;
@@ -71,7 +70,6 @@ pub mod tunnel;
 
 use glam::DVec2;
 
-pub use control_curve::{ControlCurve, CurveKind};
 pub use error::CreateError;
 pub use fair_surface::{Convergence, FairSurface, RunSummary};
 pub use opening::ViewedStroke;
@@ -83,6 +81,7 @@ use crate::camera::Camera;
 use crate::curve::StrokePoint;
 use crate::curve::polyline::{perimeter, signed_area};
 use crate::mesh::{Mesh, VertexId};
+use crate::model::{ControlCurve, CurveKind};
 
 /// Settings of a creation.
 #[derive(Clone, Copy, Debug, PartialEq)]

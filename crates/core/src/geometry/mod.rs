@@ -1,5 +1,5 @@
 //! Discrete differential geometry on a [`Mesh`](crate::mesh::Mesh): normals, areas,
-//! Laplacians and mean curvature; fractions and sums of affine transforms (`transform_blend`).
+//! Laplacians, mean curvature and the guarded cotangent weights of an editing region's one-rings; fractions and sums of affine transforms (`transform_blend`).
 //!
 //! Everything reads positions and connectivity and returns new per-element data in `f64`;
 //! nothing here changes a mesh. Sign conventions follow Nealen et al. 2006 ("Laplacian Mesh
@@ -9,6 +9,7 @@
 mod area;
 mod bvh;
 mod closest;
+mod cotan_weights;
 mod laplacian;
 mod normals;
 mod raycast;
@@ -20,6 +21,7 @@ pub use area::{
 };
 pub use bvh::Bvh;
 pub use closest::closest_point_on_triangle;
+pub(crate) use cotan_weights::OneRingWeights;
 pub use laplacian::{
     cotan_laplacian, cotan_laplacian_coordinates, mean_curvature, mean_curvature_normals,
     uniform_laplacian,

@@ -20,8 +20,8 @@ use glam::DVec3;
 use rustc_hash::FxHashMap;
 
 use super::extras::CurveExtras;
-use crate::fibermesh::{ControlCurve, CurveKind};
 use crate::mesh::{Mesh, VertexId};
+use crate::model::{ControlCurve, CurveKind};
 
 /// The curves found on a model, and how many needed help.
 #[derive(Clone, Debug, Default, PartialEq)]

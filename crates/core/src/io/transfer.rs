@@ -19,12 +19,12 @@ use bytemuck::Pod;
 use glam::DVec3;
 
 use super::import::Imported;
-use crate::fibermesh::{ControlCurve, CurveKind};
 use crate::mesh::{Mesh, MeshParts, TriSoup, VertexId};
 use crate::model::{
     AlphaMode, Appearance, AsImported, Image, Keyframe, Material, Model, PointCloud, SketchCurve,
     Texture,
 };
+use crate::model::{ControlCurve, CurveKind};
 
 /// A buffer that does not decode: cut short, or arrays that do not fit together.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]

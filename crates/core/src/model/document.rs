@@ -4,10 +4,10 @@ use std::sync::Arc;
 
 use serde::Serialize;
 
+use super::curve_handle::CurveHandle;
 use super::point_cloud::PointCloud;
 use super::sketch::SketchCurve;
 use super::surface::Model;
-use crate::skeleton::CurveHandle;
 
 /// Everything the user has made. Cheap to clone: a clone shares every model and sketch.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -62,8 +62,8 @@ impl Document {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::fibermesh::ControlCurve;
     use crate::mesh::primitives;
+    use crate::model::ControlCurve;
 
     #[test]
     fn stats_count_everything() {

@@ -1,15 +1,17 @@
 //! What a document is made of, as plain data: models (a mesh, its control curves and, for
 //! an imported one, how it looked), sketches and point clouds, gathered in a [`Document`].
 //!
-//! These types sit between the modeling techniques and everything that stores or edits
-//! their results: the `io` layer above reads and writes them, and the `document` layer above
-//! that changes a [`Document`] through undoable ops. Nothing here edits anything, so both
-//! can build on it without `io` knowing about editing. A model's curves are the FiberMesh
-//! solver's own [`ControlCurve`]s (chains of mesh vertices), re-exported here as part of the
-//! model; likewise a curve handle is the skeleton technique's own [`CurveHandle`].
+//! These types sit just above the ground floor, under everything that computes, stores or
+//! edits them: the modeling techniques read and make them (the FiberMesh solver takes a
+//! model's [`ControlCurve`]s, chains of mesh vertices; the skeleton technique edits a
+//! [`CurveHandle`]), the `io` layer reads and writes them, and the `document` layer changes a
+//! [`Document`] through undoable ops. Nothing here edits anything, and nothing here depends
+//! on a technique.
 
 mod appearance;
 mod as_imported;
+mod control_curve;
+mod curve_handle;
 mod document;
 mod keyframe;
 mod point_cloud;
@@ -20,11 +22,10 @@ pub use appearance::{
     AlphaMode, Appearance, Image, Material, Texture, positions_hash, positions_hash_of,
 };
 pub use as_imported::AsImported;
+pub use control_curve::{ControlCurve, CurveKind};
+pub use curve_handle::{CurveHandle, HandleCurve, HandleKind, HandleTarget};
 pub use document::{Document, Stats};
 pub use keyframe::Keyframe;
 pub use point_cloud::PointCloud;
 pub use sketch::SketchCurve;
 pub use surface::Model;
-
-pub use crate::fibermesh::{ControlCurve, CurveKind};
-pub use crate::skeleton::{CurveHandle, HandleTarget};

@@ -4,8 +4,8 @@ use std::sync::Arc;
 
 use super::appearance::Appearance;
 use super::as_imported::AsImported;
+use super::control_curve::ControlCurve;
 use super::keyframe::Keyframe;
-use crate::fibermesh::ControlCurve;
 use crate::mesh::Mesh;
 
 /// A surface model: a triangle mesh and the control curves that shape it (FiberMesh).

@@ -30,13 +30,11 @@ mod system;
 pub mod weights;
 
 pub use error::OptimizeError;
-pub use optimizer::Optimizer;
+pub use optimizer::{Optimizer, optimize};
 pub use quality::{QualityReport, quality_report};
 
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
-
-use crate::mesh::Mesh;
 
 /// What the solve aims for.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -146,21 +144,13 @@ pub struct Selection {
     pub sliding: Option<Vec<Option<DVec3>>>,
 }
 
-/// The optimized positions of `mesh` (one per vertex, same order; the triangles stay).
-///
-/// Errors: [`OptimizeError::InvalidScale`] for a scale that is not positive and finite,
-/// [`OptimizeError::Empty`] for a mesh without faces, [`OptimizeError::Solve`] when the
-/// factorization fails.
-pub fn optimize(mesh: &Mesh, params: &OptimizeParams) -> Result<Vec<DVec3>, OptimizeError> {
-    Optimizer::new(mesh, params, &Selection::default())?.solve(params.scale)
-}
-
 #[cfg(test)]
 mod tests {
     use glam::DVec3;
 
     use super::*;
     use crate::geometry::{enclosed_volume, mean_curvature, uniform_laplacian};
+    use crate::mesh::Mesh;
     use crate::mesh::primitives;
     use crate::solve::test_support::dense_solve;
 

@@ -30,6 +30,15 @@ pub struct Optimizer {
 /// far from the factored one).
 const MAX_ITERATIONS: usize = 40;
 
+/// The optimized positions of `mesh` (one per vertex, same order; the triangles stay).
+///
+/// Errors: [`OptimizeError::InvalidScale`] for a scale that is not positive and finite,
+/// [`OptimizeError::Empty`] for a mesh without faces, [`OptimizeError::Solve`] when the
+/// factorization fails.
+pub fn optimize(mesh: &Mesh, params: &OptimizeParams) -> Result<Vec<DVec3>, OptimizeError> {
+    Optimizer::new(mesh, params, &Selection::default())?.solve(params.scale)
+}
+
 impl std::fmt::Debug for Optimizer {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("Optimizer")

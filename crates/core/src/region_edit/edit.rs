@@ -1,6 +1,6 @@
 //! A region found once for a pair of curves, moved by any transform in one pass.
 
-use glam::{DMat4, DVec2, DVec3, DVec4};
+use glam::{DVec2, DVec3};
 
 use super::disc::Flattening;
 use super::embed::{Embedded, embed};
@@ -12,7 +12,7 @@ use super::{
 };
 use crate::curve::polyline::contains;
 use crate::feature::{Placed, Sketch, place};
-use crate::geometry::{Bvh, Fractions, log_affine, vertex_normals};
+use crate::geometry::{Bvh, vertex_normals};
 use crate::mesh::{Mesh, VertexId};
 
 /// A boundary's last points this near (CSS px) its first close it: they are dropped.
@@ -212,7 +212,7 @@ impl RegionEdit {
     /// The motion of `handles` on the reference curve (see [`Motion`]).
     ///
     /// Errors: [`RegionError::BadHandles`], or a handle's transform refused as
-    /// [`checked_transform`] refuses one.
+    /// [`super::checked_transform`] refuses one.
     pub fn motion(&self, handles: &[Handle]) -> Result<Motion, RegionError> {
         Motion::blended(handles, &self.params)
     }
@@ -428,29 +428,4 @@ fn cast_rail(
         up = path.iter().map(|&v| normals[v.index()]).collect();
     }
     HandleRail::new(at, up)
-}
-
-/// The fractions of a transform given column by column, as an op holds it.
-///
-/// Errors: a transform that is not finite, not affine, mirrors or flattens, or turns by half
-/// a turn (no fraction of it is defined).
-pub fn checked_transform(columns: &[f64; 16]) -> Result<Fractions, RegionError> {
-    let matrix = DMat4::from_cols_array(columns);
-    Ok(Fractions::with_log(matrix, checked_log(matrix)?))
-}
-
-/// The logarithm of a transform a region may move by.
-///
-/// Errors: as [`checked_transform`].
-pub(super) fn checked_log(matrix: DMat4) -> Result<DMat4, RegionError> {
-    if !matrix.is_finite() {
-        return Err(RegionError::TransformNotFinite);
-    }
-    if matrix.row(3) != DVec4::W {
-        return Err(RegionError::TransformNotAffine);
-    }
-    if matrix.determinant() <= 0.0 {
-        return Err(RegionError::TransformMirrors);
-    }
-    log_affine(matrix).ok_or(RegionError::TransformTurnsHalfWay)
 }

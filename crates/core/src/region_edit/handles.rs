@@ -11,6 +11,7 @@
 use glam::{DMat4, DVec3};
 
 use super::RegionError;
+use super::transform::checked_log;
 use crate::geometry::{Fractions, exp_affine};
 
 /// A handle on the reference curve.
@@ -52,7 +53,7 @@ impl Motion {
         let handles = sorted(handles)?;
         let logs = handles
             .iter()
-            .map(|h| super::edit::checked_log(h.transform))
+            .map(|h| checked_log(h.transform))
             .collect::<Result<Vec<_>, _>>()?;
         let mut fractions: Vec<Fractions> = handles
             .iter()
@@ -90,7 +91,7 @@ impl Motion {
 /// Errors: as [`Motion::blended`].
 pub fn blend_at(handles: &[Handle], at: f64) -> Result<DMat4, RegionError> {
     let handles = sorted(handles)?;
-    let log = |h: &Handle| super::edit::checked_log(h.transform);
+    let log = |h: &Handle| checked_log(h.transform);
     Ok(match place(&handles, at) {
         Place::On(i) => handles[i].transform,
         Place::Between(i, u) => {

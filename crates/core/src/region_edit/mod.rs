@@ -28,7 +28,8 @@
 //! 5. [`profile`]: the cross-section across the reference curve, and a re-sketched one
 //!    swept along the curve (§6).
 //! 6. [`handles`]: handles along the reference curve with transforms of their own, blended
-//!    along it (§7); a [`Motion`] is one transform or such a blend.
+//!    along it (§7); a [`Motion`] is one transform or such a blend, each checked by
+//!    [`transform`] (finite, affine, short of half a turn).
 
 mod disc;
 mod edit;
@@ -37,17 +38,19 @@ mod error;
 mod falloff;
 mod handles;
 mod profile;
+mod transform;
 
 use glam::DVec2;
 
 use crate::camera::Camera;
 
 pub use disc::Flattening;
-pub use edit::{Finding, RegionEdit, checked_transform};
+pub use edit::{Finding, RegionEdit};
 pub use error::RegionError;
 pub use falloff::{Area, Levels};
 pub use handles::{Handle, HandleFrame, HandleRail, Motion, blend_at};
 pub use profile::{Profile, ProfileChange};
+pub use transform::checked_transform;
 
 /// The two curves of a region edit as drawn, in screen CSS px (y down).
 #[derive(Clone, Debug, PartialEq)]

@@ -21,9 +21,9 @@ use glam::DVec3;
 use super::binding::{Bound, bind, bind_point, moved, slab_radii};
 use super::error::SkeletonError;
 use super::frames::{FRAMES, Frame, deformed_frames, rest_frames};
-use super::handle::HandleCurve;
 use super::segment::{Part, segment};
 use super::shape::{Neighbours, Shape};
+use crate::model::HandleCurve;
 
 /// A handle that moves, as it was, and its links to other handles.
 #[derive(Clone, Copy, Debug)]

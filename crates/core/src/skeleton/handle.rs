@@ -6,30 +6,7 @@ use glam::DVec3;
 use super::curve::Spline;
 use super::error::SkeletonError;
 use super::frames::Shaping;
-
-/// On the surface, or inside along the part's middle (Blanco §4.1–4.2).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum HandleKind {
-    /// Control points on the surface under the stroke: stays visible while it deforms.
-    #[default]
-    Surface,
-    /// Control points at the centroids of the part's slices: its middle line.
-    Skeleton,
-}
-
-/// A handle's curve: control points with a twist (radians) and scales (`v`, `w`) each.
-#[derive(Clone, Debug, PartialEq)]
-pub struct HandleCurve {
-    /// The control points, in world space.
-    pub points: Vec<DVec3>,
-    /// Twist about the tangent at each control point, in radians.
-    pub twist: Vec<f64>,
-    /// Scale across the curve at each control point, along the frame's two axes.
-    pub scale: Vec<[f64; 2]>,
-    /// Rigid limbs (§7): straight spans bent only at the control points.
-    pub is_rigid: bool,
-}
+use crate::model::HandleCurve;
 
 /// A change to one control point: a move, a twist, a scale, each spread over `spread`
 /// control points on each side, fading linearly.
@@ -47,6 +24,8 @@ pub struct PointEdit {
     pub spread: usize,
 }
 
+/// A handle's geometry: its spline, its frames' shaping, its edits. The curve itself is plain
+/// data of the document ([`crate::model`]).
 impl HandleCurve {
     /// A curve through `points`, untwisted and unscaled.
     pub fn new(points: Vec<DVec3>, is_rigid: bool) -> Self {

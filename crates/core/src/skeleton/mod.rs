@@ -30,8 +30,8 @@
 //! 6. [`segment`]: the region and the start and end sides (§3.1);
 //! 7. [`binding`]: slab coordinates and the stretch ratio (§5.2);
 //! 8. [`deformation`]: all of it for one or more handles, with links (§5.4);
-//! 9. [`handle`]: the handle's curve, and edits to it; [`handle_set`]: a handle as a
-//!    document keeps it (target, number, links).
+//! 9. [`handle`]: the handle's curve, and edits to it (a handle as a document keeps it,
+//!    target, number, curve and links, is plain data: [`crate::model::CurveHandle`]).
 
 mod binding;
 mod curve;
@@ -40,17 +40,17 @@ mod error;
 mod filter;
 mod frames;
 mod handle;
-mod handle_set;
 mod placement;
 mod segment;
 mod shape;
 
+/// A handle's data is plain data of the document; the app and the ops name it from here.
+pub use crate::model::{HandleCurve, HandleKind};
 pub use curve::Spline;
 pub use deformation::{Deformation, Link, Mover, Segmented, Slabs};
 pub use error::SkeletonError;
 pub use filter::{JITTER_PX, filter_jitter};
 pub use frames::{FRAMES, Frame};
-pub use handle::{HandleCurve, HandleKind, PointEdit};
-pub use handle_set::{CurveHandle, HandleTarget};
+pub use handle::PointEdit;
 pub use placement::{HandleStroke, place_handle};
 pub use shape::{Neighbours, Shape};

@@ -14,12 +14,12 @@ use glam::{DVec2, DVec3};
 use super::error::SkeletonError;
 use super::filter::{JITTER_PX, filter_jitter};
 use super::frames::rest_frames;
-use super::handle::{HandleCurve, HandleKind};
 use super::segment::{Part, segment};
 use super::shape::Shape;
 use crate::camera::Camera;
 use crate::curve::polyline;
 use crate::geometry::intersect_triangle;
+use crate::model::{HandleCurve, HandleKind};
 
 /// A stroke shorter than this (CSS px, after filtering) makes no handle.
 const SHORTEST_PX: f64 = 12.0;

@@ -29,11 +29,11 @@
 
 use glam::{DQuat, DVec2, DVec3};
 
+use super::coarse_curve::CoarseCurve;
 use super::{
     Constraints, Falloff, Similarity, VolumetricEdit, VolumetricError, VolumetricGraph,
     VolumetricParams,
 };
-use crate::curve::CoarseCurve;
 use crate::curve::bspline::valid_knots;
 use crate::curve::polyline::{cumulative_lengths, point_at};
 use crate::feature::{Sketch, pick_path};

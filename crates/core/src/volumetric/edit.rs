@@ -32,7 +32,7 @@
 use glam::DVec3;
 
 use super::{Similarity, VolumetricError, VolumetricGraph};
-use crate::deform::OneRingWeights;
+use crate::geometry::OneRingWeights;
 use crate::mesh::{Mesh, VertexId};
 use crate::solve::{Prefactored, SparseMatrix, Triplets};
 

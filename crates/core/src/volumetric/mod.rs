@@ -16,9 +16,11 @@
 //!   factored once per handle set, back-substituted per frame;
 //! - `sphere_handles`: scripted deformations (the `deform` op), volumetric or, for
 //!   comparison, with the surface editor;
+//! - `coarse_curve`: a planar curve edited by its coarse B-spline, its detail kept (§4.1);
 //! - `control_curve`: the paper's interaction: a curve picked on the surface, redrawn in
 //!   its editing plane, drives the deformation through WIRE transforms (§3.3, §4.1).
 
+mod coarse_curve;
 mod control_curve;
 mod edit;
 mod error;

@@ -13,11 +13,12 @@ use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::curve::polyline::{distance_to_polyline, signed_area};
 use sketchmesh_core::fibermesh::{
-    ControlCurve, CreateError, CreateParams, Creation, CurveKind, FairSurface,
-    create_converged_from_stroke, create_from_stroke, seed_from_stroke,
+    CreateError, CreateParams, Creation, FairSurface, create_converged_from_stroke,
+    create_from_stroke, seed_from_stroke,
 };
 use sketchmesh_core::geometry::{enclosed_volume, face_normals, uniform_laplacian};
 use sketchmesh_core::mesh::{HalfedgeId, Mesh, VertexId};
+use sketchmesh_core::model::{ControlCurve, CurveKind};
 use sketchmesh_core::solve::solve_least_squares;
 
 const VIEWPORT: DVec2 = DVec2::new(800.0, 600.0);

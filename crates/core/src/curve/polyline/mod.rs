@@ -30,15 +30,17 @@ mod nearest;
 mod polygon;
 mod resample;
 mod segment_grid;
+mod segment_pair;
 mod simplify;
 
 pub use arclength::{
     cumulative_lengths, index_at, length, point_at, point_at_index, relative_arclengths, segment_at,
 };
-pub use crossing::{segment_crossing, self_crossings};
+pub use crossing::self_crossings;
 pub use merge::{BAUDEL_K, oversketch_merge, oversketch_merge_closed};
 pub use nearest::{Closest, closest_point, distance_to_polyline, distance_to_segment};
 pub use polygon::{centroid, contains, perimeter, signed_area};
 pub use resample::{PolylinePoint, resample, resample_closed};
 pub(crate) use segment_grid::SegmentGrid;
+pub use segment_pair::segment_crossing;
 pub use simplify::{douglas_peucker, simplify, thin};

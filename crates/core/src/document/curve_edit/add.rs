@@ -7,8 +7,8 @@ use super::shared::{
 };
 use crate::document::{AddCurveInput, CommandError, Document, StrokeInput};
 use crate::fibermesh::add_curve::{CurveShape, add_curve};
-use crate::fibermesh::{ControlCurve, CurveKind};
 use crate::model::Model;
+use crate::model::{ControlCurve, CurveKind};
 
 /// How far from a new curve (as a fraction of the model's size) the surface settles after
 /// the remesh: the curve lies on the surface, so only the new vertices need to find it.

@@ -7,9 +7,9 @@ use super::settle::{Change, settle};
 use super::shared::{CURVE_PICK_RADIUS_PX, bounding_diagonal, has_curves, replaced, screen_stroke};
 use crate::document::{CommandError, CurveTypeInput, Document, StrokeInput};
 use crate::fibermesh::curve_tools::{StrokeHits, erase, hit_curves, rub, set_kind};
-use crate::fibermesh::{ControlCurve, CurveKind};
 use crate::mesh::{Mesh, VertexId};
 use crate::model::Model;
+use crate::model::{ControlCurve, CurveKind};
 
 /// How far from an erased curve (as a fraction of the model's bounding-box diagonal) the
 /// surface re-optimizes and forgets the curvature the curve forced: as far as a pull by a

@@ -13,8 +13,8 @@ use super::shared::{
 };
 use crate::document::{CommandError, Document, StrokeInput};
 use crate::fibermesh::cut::{CutError, cut};
-use crate::fibermesh::{ControlCurve, CurveKind};
 use crate::model::Model;
+use crate::model::{ControlCurve, CurveKind};
 
 /// How far from the rims (as a fraction of the model's size) the surface is remeshed and
 /// settled: the band of slivers the cut's splits left on both sides of each rim.

@@ -9,8 +9,8 @@ use super::shared::{
 };
 use crate::document::{CommandError, Document, StrokePairInput};
 use crate::fibermesh::extrude::extrude;
-use crate::fibermesh::{ControlCurve, CurveKind};
 use crate::model::Model;
+use crate::model::{ControlCurve, CurveKind};
 
 /// How far from the base loop (as a fraction of the model's size) the shape around the limb
 /// is re-optimized and remeshed with it.

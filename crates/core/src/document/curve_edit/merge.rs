@@ -5,12 +5,12 @@
 
 use super::settle::{Aim, Change, remesh_and_fair_within, remesh_only};
 use super::shared::{bounding_diagonal, carried_over, has_curves};
-use crate::document::outcome::target;
+use crate::document::next::target;
 use crate::document::{CommandError, Document, MergeInput};
 use crate::fibermesh::merge::{MergeError, merge};
-use crate::fibermesh::{ControlCurve, CurveKind};
 use crate::mesh::VertexId;
 use crate::model::Model;
+use crate::model::{ControlCurve, CurveKind};
 
 /// How far from the seams (as a fraction of the merged model's size) the surface is
 /// remeshed and re-optimized.

@@ -23,8 +23,9 @@ use super::shared::{CurvePick, bounding_diagonal, pick_curve_vertex, replaced, s
 use crate::camera::Camera;
 use crate::document::{CommandError, Document, Model, StrokeInput};
 use crate::fibermesh::curve_pull::{CurveNetwork, CurvePull, PullParams};
-use crate::fibermesh::{ControlCurve, FairSurface, nearest_vertices, region_around};
+use crate::fibermesh::{FairSurface, nearest_vertices, region_around};
 use crate::mesh::VertexId;
+use crate::model::ControlCurve;
 
 /// The region solved while dragging reaches this many peel radii from the grabbed point.
 const REGION_PER_PEEL: f64 = 2.5;

@@ -12,9 +12,10 @@ use glam::DVec3;
 
 use super::tidy::tidy_poor_triangles;
 use crate::document::CommandError;
-use crate::fibermesh::{ControlCurve, FairSurface, region_around};
+use crate::fibermesh::{FairSurface, region_around};
 use crate::mesh::remesh::{Chain, RemeshParams, remesh_within};
 use crate::mesh::{Mesh, VertexId};
+use crate::model::ControlCurve;
 
 /// Iteration cap when settling; FiberMesh converges in 5–10 iterations.
 const MAX_ITERATIONS: usize = 15;

@@ -4,10 +4,11 @@
 use glam::DVec2;
 
 use crate::document::{CommandError, Document, StrokeInput};
+use crate::fibermesh::ViewedStroke;
 use crate::fibermesh::curve_tools::VisibleCurves;
-use crate::fibermesh::{ControlCurve, ViewedStroke};
 use crate::geometry::Bvh;
 use crate::mesh::{Mesh, VertexId};
+use crate::model::ControlCurve;
 use crate::model::Model;
 
 /// How close (CSS px) a stroke must pass to a curve to act on it.

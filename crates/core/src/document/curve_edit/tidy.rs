@@ -19,8 +19,8 @@
 
 use glam::DVec3;
 
-use crate::fibermesh::ControlCurve;
 use crate::mesh::{Mesh, VertexId};
+use crate::model::ControlCurve;
 use crate::optimize::quality::radius_ratio;
 use crate::optimize::{Mode, OptimizeParams, Optimizer, Selection, WeightScheme};
 

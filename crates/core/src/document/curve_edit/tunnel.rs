@@ -8,9 +8,9 @@ use super::shared::{
 };
 use crate::document::{CommandError, Document, StrokePairInput};
 use crate::fibermesh::tunnel::{TunnelError, tunnel};
-use crate::fibermesh::{ControlCurve, CurveKind};
 use crate::mesh::VertexId;
 use crate::model::Model;
+use crate::model::{ControlCurve, CurveKind};
 
 /// How far from the tube and the loops (as a fraction of the model's size) the surface is
 /// re-optimized and remeshed.

@@ -1,7 +1,7 @@
 //! Control curves: chains of mesh vertices that define the surface, smooth or sharp.
 //!
-//! This is the one control-curve type: the FiberMesh solver takes it, the curve tools edit
-//! it, and a document's models store it (`model::Model::curves`, a layer above). A curve
+//! This is the one control-curve type: a document's models store it ([`super::Model`]'s
+//! `curves`), the FiberMesh solver takes it and the curve tools edit it. A curve
 //! holds no positions of its own; where it is follows from the mesh it lies on
 //! ([`ControlCurve::points`]), so a deformation or a remesh can never leave it behind.
 

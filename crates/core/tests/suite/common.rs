@@ -13,8 +13,8 @@ use std::sync::Arc;
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    AddCurveInput, CurveTypeInput, Document, Edit, Editor, FileInput, ImportInput, Model, Op,
-    OversketchFit, OversketchInput, Progress, StrokeInput, model_op,
+    AddCurveInput, CurveTypeInput, Document, Edit, Editor, FileInput, HandleTarget, ImportInput,
+    Model, Op, OversketchFit, OversketchInput, Progress, StrokeInput, model_op,
 };
 use sketchmesh_core::geometry::Bvh;
 use sketchmesh_core::io::{decode_changed, decode_moved, encode_changed, encode_moved, write_glb};
@@ -78,7 +78,8 @@ pub struct Digest {
 /// The digest of a document. Covers, per model: every position (f64 bits), every
 /// triangle, the name, and every control curve: its kind (sharp or smooth), its closed flag
 /// and its vertex chain (its points are where its vertices are); per sketch its points and
-/// pressures; per point cloud its positions and colours.
+/// pressures; per point cloud its positions and colours; then, when there are any, the
+/// curve handles and the models' key frames.
 ///
 /// The single function to adapt when the document's layout changes: it must keep feeding
 /// the same bytes in the same order for the same document.
@@ -137,9 +138,68 @@ pub fn digest(document: &Document) -> Digest {
             colour.iter().for_each(|c| full.u64(u64::from(c.to_bits())));
         }
     }
+    digest_handles(document, &mut full, &mut topo);
+    digest_keyframes(document, &mut full, &mut topo);
     Digest {
         full: full.finish(),
         topology: topo.finish(),
+    }
+}
+
+/// Curve handles: each one's number, target, kind, links and (in `full`) its control
+/// points, twists and scales. Fed only once a handle was made, so that documents without
+/// handles digest as they did before handles were digested (their goldens stay valid).
+fn digest_handles(document: &Document, full: &mut Fnv, topo: &mut Fnv) {
+    if document.handles_made == 0 {
+        return;
+    }
+    for h in [&mut *full, &mut *topo] {
+        h.tag("handles");
+        h.u64(u64::from(document.handles_made));
+        h.len(document.handles.len());
+    }
+    for handle in &document.handles {
+        let (target, index) = match handle.target {
+            HandleTarget::Model(index) => ("model", index),
+            HandleTarget::Cloud(index) => ("cloud", index),
+        };
+        for h in [&mut *full, &mut *topo] {
+            h.u64(u64::from(handle.id));
+            h.tag(target);
+            h.len(index);
+            h.tag(&format!("{:?}", handle.kind));
+            h.u64(u64::from(handle.curve.is_rigid));
+            h.len(handle.curve.points.len());
+            h.len(handle.links.len());
+            for &(point, other, their) in &handle.links {
+                h.len(point);
+                h.u64(u64::from(other));
+                h.len(their);
+            }
+        }
+        let curve = &handle.curve;
+        curve.points.iter().for_each(|&p| full.point(p));
+        curve.twist.iter().for_each(|&t| full.f64(t));
+        curve.scale.iter().flatten().for_each(|&s| full.f64(s));
+    }
+}
+
+/// Every model's key frames: their times and (in `full`) poses. Fed only when a model has
+/// one, as [`digest_handles`] for the same reason.
+fn digest_keyframes(document: &Document, full: &mut Fnv, topo: &mut Fnv) {
+    if document.models.iter().all(|m| m.keyframes.is_empty()) {
+        return;
+    }
+    for model in &document.models {
+        for h in [&mut *full, &mut *topo] {
+            h.tag("keyframes");
+            h.len(model.keyframes.len());
+        }
+        for key in &model.keyframes {
+            full.f64(key.time);
+            topo.len(key.positions.len());
+            key.positions.iter().for_each(|&p| full.point(p));
+        }
     }
 }
 

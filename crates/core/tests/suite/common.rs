@@ -13,14 +13,16 @@ use std::sync::Arc;
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    AddCurveInput, CurveTypeInput, Document, Edit, Editor, FileInput, HandleTarget, ImportInput,
-    Model, Op, OversketchFit, OversketchInput, Progress, StrokeInput, model_op,
+    AddCurveInput, CurveDeformInput, CurveTypeInput, Document, Edit, Editor, FileInput,
+    HandleTarget, ImportInput, Model, Op, OversketchFit, OversketchInput, Progress, StrokeInput,
+    model_op,
 };
 use sketchmesh_core::geometry::Bvh;
 use sketchmesh_core::io::{decode_changed, decode_moved, encode_changed, encode_moved, write_glb};
 use sketchmesh_core::mesh::Mesh;
 use sketchmesh_core::oversketch::{ManualHandle, OversketchRoi};
 use sketchmesh_core::silhouette::silhouettes;
+use sketchmesh_core::volumetric::Falloff;
 
 // ---------------------------------------------------------------------------------------
 // Digest
@@ -538,4 +540,91 @@ pub fn preview_elsewhere(edit: &mut Edit, worker: &mut Option<Edit>) -> usize {
     *worker = Some(kept);
     edit.supply_preview(Ok(decode_moved(&bytes).expect("the buffer")));
     version
+}
+
+/// Samples every 4 px along the screen images of the world points `from` to `to`.
+pub fn screen_line(camera: &Camera, viewport: DVec2, from: DVec3, to: DVec3) -> Vec<[f64; 3]> {
+    let n = 60;
+    (0..=n)
+        .filter_map(|k| {
+            let p = from.lerp(to, k as f64 / n as f64);
+            camera
+                .screen_from_world(p, viewport)
+                .map(|s| [s.x, s.y, 0.5])
+        })
+        .collect()
+}
+
+/// A `curve_deform` of a capsule along x (radius 0.5, straight part 6 long, as
+/// `volumetric.rs`'s and the `deform_and_keyframes` golden's): a curve along its front from x = −1.5 to 2.5,
+/// redrawn from above with its right three quarters swung out toward +z round a quarter
+/// circle, the capsule's left end (x < −2.2) lassoed to hold still.
+pub fn quarter_bend() -> CurveDeformInput {
+    let viewport = DVec2::new(1000.0, 800.0);
+    let front = Camera {
+        eye: DVec3::new(0.0, 0.0, 12.0),
+        ..Camera::default()
+    };
+    // The curve runs along the capsule's front; its plane (normal along y) faces the view
+    // from above, where the new curve is drawn: its right half swung out toward +z.
+    let above = Camera {
+        eye: DVec3::new(0.0, 12.0, 0.0),
+        up: DVec3::NEG_Z,
+        ..Camera::default()
+    };
+    let curve = screen_line(
+        &front,
+        viewport,
+        DVec3::new(-1.5, 0.0, 0.5),
+        DVec3::new(2.5, 0.0, 0.5),
+    );
+    let bent: Vec<DVec3> = (0..=40)
+        .map(|k| {
+            let s = k as f64 / 40.0;
+            let angle = (s - 0.25).max(0.0) / 0.75 * 0.5 * PI;
+            // A quarter circle after the first quarter, same length.
+            if angle == 0.0 {
+                DVec3::new(-1.5 + 4.0 * s, 0.0, 0.5)
+            } else {
+                let radius = 3.0 / (0.5 * PI);
+                DVec3::new(
+                    -0.5 + radius * angle.sin(),
+                    0.0,
+                    0.5 + radius * (1.0 - angle.cos()),
+                )
+            }
+        })
+        .collect();
+    let stroke: Vec<[f64; 3]> = bent
+        .iter()
+        .filter_map(|&p| {
+            above
+                .screen_from_world(p, viewport)
+                .map(|s| [s.x, s.y, 0.5])
+        })
+        .collect();
+    let corner = |p: DVec3| {
+        let s = front.screen_from_world(p, viewport).expect("in view");
+        [s.x, s.y, 0.5]
+    };
+    let fixed = vec![
+        corner(DVec3::new(-3.8, -0.8, 0.0)),
+        corner(DVec3::new(-2.2, -0.8, 0.0)),
+        corner(DVec3::new(-2.2, 0.8, 0.0)),
+        corner(DVec3::new(-3.8, 0.8, 0.0)),
+    ];
+    CurveDeformInput {
+        model: 0,
+        viewport: viewport.to_array(),
+        camera: front,
+        curve,
+        path: None,
+        held: Vec::new(),
+        stroke,
+        stroke_camera: Some(above),
+        plane: None,
+        fixed: Some(fixed),
+        falloff: Falloff::Linear,
+        coarse: None,
+    }
 }

@@ -39,23 +39,23 @@ use std::time::Instant;
 
 use crate::common::{
     Digest, ModelSummary, add_curve, circle, digest, import_document, import_mesh, longest_outline,
-    outline, oversketch, pushed_stroke, samples, screen, segment, set_type, stroke_input, summary,
+    outline, oversketch, pushed_stroke, quarter_bend, screen, segment, set_type, stroke_input,
+    summary,
 };
 use glam::{DMat4, DVec2, DVec3};
 use serde_json::{Value, json};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    CurveDeformInput, CurveHandleInput, CurveKind, DeformHandleInput, DeformInput, DeformMethod,
-    DeleteHandleInput, Document, Editor, HandleEditInput, KeyframeInput, LinkHandlesInput,
-    MergeInput, ModelInput, Op, OptimizeInput, OversketchFit, RegionEditInput, Session,
-    SketchFeatureInput, StrokePairInput, TransformInput,
+    CurveHandleInput, CurveKind, DeformHandleInput, DeformInput, DeformMethod, DeleteHandleInput,
+    Document, Editor, HandleEditInput, KeyframeInput, LinkHandlesInput, MergeInput, ModelInput, Op,
+    OptimizeInput, OversketchFit, RegionEditInput, Session, SketchFeatureInput, StrokePairInput,
+    TransformInput,
 };
 use sketchmesh_core::feature::FeatureKind;
 use sketchmesh_core::mesh::{Mesh, VertexId, primitives};
-use sketchmesh_core::optimize::OptimizeParams;
+use sketchmesh_core::optimize::{OptimizeParams, quality_report};
 use sketchmesh_core::oversketch::{ManualHandle, OutlineKind, OversketchRoi, pick_handle};
 use sketchmesh_core::skeleton::HandleKind;
-use sketchmesh_core::volumetric::Falloff;
 
 /// Re-recorded on purpose: `import_created`'s golden, when control curves became chains of
 /// vertices (issue 15). The import now turns the file's curve points into a vertex chain and
@@ -1013,15 +1013,6 @@ fn moved_vertices(before: &Mesh, after: &Mesh) -> (usize, f64) {
     (moves.len(), moves.iter().copied().fold(0.0, f64::max))
 }
 
-/// Mean radius ratio of a mesh's triangles (1 for equilateral ones).
-fn mean_radius_ratio(mesh: &Mesh) -> f64 {
-    use sketchmesh_core::optimize::quality::radius_ratio;
-    let ratios: Vec<f64> = (mesh.faces())
-        .map(|f| radius_ratio(mesh.face_positions(f)))
-        .collect();
-    ratios.iter().sum::<f64>() / ratios.len() as f64
-}
-
 /// A scan-like sphere (its vertices jittered) evened out by mesh optimization, a ridge
 /// sketched across it, then a region around a reference curve lifted and turned.
 fn optimize_feature_region() -> Editor {
@@ -1033,7 +1024,7 @@ fn optimize_feature_region() -> Editor {
         *p += 0.02 * DVec3::new((1.7 * k).sin(), (2.3 * k).cos(), (0.9 * k).sin());
     }
     apply(&mut editor, import_mesh("rough.glb", &sphere));
-    let rough = mean_radius_ratio(&editor.document().models[0].mesh);
+    let rough = editor.document().models[0].mesh.clone();
     apply(
         &mut editor,
         Op::Optimize(OptimizeInput {
@@ -1044,8 +1035,11 @@ fn optimize_feature_region() -> Editor {
             painted_features: Vec::new(),
         }),
     );
-    let even = mean_radius_ratio(&editor.document().models[0].mesh);
-    assert!(even > rough, "the triangles got better: {rough} to {even}");
+    let report = quality_report(&rough, editor.document().models[0].mesh.positions());
+    assert!(
+        report.mean_radius_ratio > report.input_mean_radius_ratio,
+        "the triangles got better: {report:?}"
+    );
 
     let centre = screen(&camera, SQUARE, DVec3::ZERO).unwrap();
     let before = editor.document().models[0].mesh.clone();
@@ -1192,28 +1186,11 @@ fn curve_handles() -> Editor {
     editor
 }
 
-/// Samples along the screen images of the world points `from` to `to`.
-fn screen_line(camera: &Camera, viewport: DVec2, from: DVec3, to: DVec3) -> Vec<DVec2> {
-    (0..=60)
-        .filter_map(|k| screen(camera, viewport, from.lerp(to, f64::from(k) / 60.0)))
-        .collect()
-}
-
 /// A capsule posed at three key frames: at rest, bent by a control curve redrawn from
 /// above (its right three quarters swung round a quarter circle toward +z, its left end
 /// held), then its left end lifted by the scripted volumetric deformation; the middle key
 /// deleted, and the capsule posed half way between the two left.
 fn deform_and_keyframes() -> Editor {
-    let viewport = DVec2::new(1000.0, 800.0);
-    let front = Camera {
-        eye: DVec3::new(0.0, 0.0, 12.0),
-        ..Camera::default()
-    };
-    let above = Camera {
-        eye: DVec3::new(0.0, 12.0, 0.0),
-        up: DVec3::NEG_Z,
-        ..Camera::default()
-    };
     let key = |time: f64| KeyframeInput { time };
     let mut editor = Editor::new();
     apply(
@@ -1223,50 +1200,7 @@ fn deform_and_keyframes() -> Editor {
     let rest = editor.document().models[0].mesh.clone();
     apply(&mut editor, Op::Keyframe(key(0.0)));
 
-    let curve = screen_line(
-        &front,
-        viewport,
-        DVec3::new(-1.5, 0.0, 0.5),
-        DVec3::new(2.5, 0.0, 0.5),
-    );
-    let radius = 3.0 / (0.5 * std::f64::consts::PI);
-    let bent: Vec<DVec2> = (0..=40)
-        .filter_map(|k| {
-            let s = f64::from(k) / 40.0;
-            let angle = (s - 0.25).max(0.0) / 0.75 * 0.5 * std::f64::consts::PI;
-            let p = if angle == 0.0 {
-                DVec3::new(-1.5 + 4.0 * s, 0.0, 0.5)
-            } else {
-                DVec3::new(
-                    -0.5 + radius * angle.sin(),
-                    0.0,
-                    0.5 + radius * (1.0 - angle.cos()),
-                )
-            };
-            screen(&above, viewport, p)
-        })
-        .collect();
-    let lasso: Vec<DVec2> = [(-3.8, -0.8), (-2.2, -0.8), (-2.2, 0.8), (-3.8, 0.8)]
-        .iter()
-        .map(|&(x, y)| screen(&front, viewport, DVec3::new(x, y, 0.0)).unwrap())
-        .collect();
-    apply(
-        &mut editor,
-        Op::CurveDeform(CurveDeformInput {
-            model: 0,
-            viewport: viewport.to_array(),
-            camera: front,
-            curve: samples(curve),
-            path: None,
-            held: Vec::new(),
-            stroke: samples(bent),
-            stroke_camera: Some(above),
-            plane: None,
-            fixed: Some(samples(lasso)),
-            falloff: Falloff::Linear,
-            coarse: None,
-        }),
-    );
+    apply(&mut editor, Op::CurveDeform(quarter_bend()));
     let swung = (editor.document().models[0].mesh.positions().iter())
         .map(|p| p.z)
         .fold(f64::MIN, f64::max);

@@ -1587,11 +1587,12 @@ fn random_op_sequences_keep_the_editor_consistent() {
     if let Err(error) = result {
         panic!("{error}");
     }
-    // The run draws every kind of op, and each is accepted at least once.
+    // The default run draws every kind of op, and each is accepted at least once (another
+    // seed or fewer cases may miss a rare one).
     let never: Vec<&str> = (Op::NAMES.iter().copied())
         .filter(|name| !tally.accepted.contains_key(name))
         .collect();
-    if cases >= DEFAULT_CASES {
+    if cases >= DEFAULT_CASES && std::env::var_os("PROPTEST_RNG_SEED").is_none() {
         assert!(never.is_empty(), "ops never accepted: {never:?}");
     }
     if accepted + refused >= 40 {

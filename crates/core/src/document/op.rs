@@ -16,83 +16,131 @@ use crate::optimize::OptimizeParams;
 use crate::oversketch::{ManualHandle, OversketchRoi, SOFT_FIT_WEIGHT};
 use crate::skeleton::{HandleKind, PointEdit};
 
+/// Declares [`Op`] from one list of variants, each with its `"op"` tag
+/// (`Stroke(StrokeInput) = "stroke"`, `Undo = "undo"`), and derives from it everything that
+/// must name every op: serde's tag for each variant, [`Op::NAMES`], [`Op::name`] and
+/// [`Op::is_bare`]. Adding an op is one line here and its handler: an arm of
+/// `outcome::outcome`, or for an op that [makes one model](Op::makes_one_model) an arm of
+/// [`model_op`](super::model_op) and a name in that list.
+macro_rules! op_list {
+    (
+        $(#[$meta:meta])*
+        pub enum Op {
+            $( $(#[$doc:meta])* $variant:ident $(($input:ty))? = $name:literal, )*
+        }
+    ) => {
+        $(#[$meta])*
+        pub enum Op {
+            $( $(#[$doc])* #[serde(rename = $name)] $variant $(($input))?, )*
+        }
+
+        impl Op {
+            /// The `"op"` tag of every kind of op, as written in session files, in the order
+            /// the variants are declared.
+            pub const NAMES: &'static [&'static str] = &[$($name),*];
+
+            /// The `"op"` tag of this op.
+            pub fn name(&self) -> &'static str {
+                match self {
+                    $( Op::$variant { .. } => $name, )*
+                }
+            }
+
+            /// Whether the op is just its `"op"` tag (undo, redo): serde lets extra fields
+            /// of such variants pass, so the session reader refuses them itself.
+            pub(super) fn is_bare(&self) -> bool {
+                match self {
+                    $( Op::$variant { .. } => op_list!(@bare $($input)?), )*
+                }
+            }
+        }
+    };
+    (@bare) => { true };
+    (@bare $input:ty) => { false };
+}
+
+op_list! {
 /// One session op. JSON is internally tagged: `{"op":"stroke",...}`, `{"op":"undo"}`.
+///
+/// The one list of ops: each variant's `"op"` tag is written beside it, and [`Op::NAMES`],
+/// [`Op::name`] and the session's check of unit ops' fields are generated from it.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "op", rename_all = "snake_case", deny_unknown_fields)]
+#[serde(tag = "op", deny_unknown_fields)]
 pub enum Op {
     /// Draw a sketch stroke on the plane through the camera target facing the camera.
-    Stroke(StrokeInput),
+    Stroke(StrokeInput) = "stroke",
     /// Inflate a closed stroke drawn on empty canvas into a new FiberMesh model.
-    Create(CreateInput),
+    Create(CreateInput) = "create",
     /// Add the models, sketches and points of a glTF file.
-    Import(ImportInput),
+    Import(ImportInput) = "import",
     /// Redraw part of a model's outline: the silhouette piece the stroke matches moves onto
     /// it and the surface around follows (see [`crate::oversketch::oversketch_with`]).
-    Oversketch(OversketchInput),
+    Oversketch(OversketchInput) = "oversketch",
     /// Drag a point of a control curve (FiberMesh deform tool): the first sample is where the
     /// curve was grabbed, the last where it was released; the curve peels and the surface
     /// follows.
-    Pull(StrokeInput),
+    Pull(StrokeInput) = "pull",
     /// Put a new smooth control curve on a model: the stroke drawn on it (open), a closed
     /// stroke on it, or a stroke across it (a cross-section loop).
-    AddCurve(AddCurveInput),
+    AddCurve(AddCurveInput) = "add_curve",
     /// Cut a model with the surface swept by a stroke drawn across it from beside it to beside
     /// it: the part smaller on screen goes, the opening gets a flat cap with a sharp rim.
-    Cut(StrokeInput),
+    Cut(StrokeInput) = "cut",
     /// Remove the parts of control curves the stroke passes over; the surface re-optimizes.
-    Erase(StrokeInput),
+    Erase(StrokeInput) = "erase",
     /// Drill a hole through a model between two closed loops drawn on it (usually on
     /// opposite sides, the second after orbiting).
-    Tunnel(StrokePairInput),
+    Tunnel(StrokePairInput) = "tunnel",
     /// Grow a limb out of a model: a closed base loop drawn on it, then the limb's
     /// silhouette from near one side of the loop out and back to near the other.
-    Extrude(StrokePairInput),
+    Extrude(StrokePairInput) = "extrude",
     /// Join two overlapping models into one along their intersection (the merged model
     /// takes the lower index).
-    Merge(MergeInput),
+    Merge(MergeInput) = "merge",
     /// Move, rotate, scale or mirror a model by an affine matrix.
-    Transform(TransformInput),
+    Transform(TransformInput) = "transform",
     /// Remove a model.
-    Delete(ModelInput),
+    Delete(ModelInput) = "delete",
     /// Add a copy of a model beside it.
-    Duplicate(ModelInput),
+    Duplicate(ModelInput) = "duplicate",
     /// Make the parts of control curves the stroke passes over sharp or smooth.
-    SetCurveType(CurveTypeInput),
+    SetCurveType(CurveTypeInput) = "set_curve_type",
     /// Smooth the control curves near the stroke; each back-and-forth pass smooths more.
-    Rub(StrokeInput),
+    Rub(StrokeInput) = "rub",
     /// Move a model's vertices by Laplacian mesh optimization (better triangles, or
     /// smoothing); its triangles and curves stay.
-    Optimize(OptimizeInput),
+    Optimize(OptimizeInput) = "optimize",
     /// Sketch a feature on a model's surface: a ridge or ravine along the sketch, a bump or
     /// valley, a flattening or suggestive contours over its region.
-    SketchFeature(SketchFeatureInput),
+    SketchFeature(SketchFeatureInput) = "sketch_feature",
     /// Move the region a boundary draws around a reference curve by a transform, with a
     /// fall-off from the curve to the boundary (Bujans' region editor).
-    RegionEdit(RegionEditInput),
+    RegionEdit(RegionEditInput) = "region_edit",
     /// Make a curve handle (Blanco) from a stroke over a model or point cloud.
-    CurveHandle(CurveHandleInput),
+    CurveHandle(CurveHandleInput) = "curve_handle",
     /// Move, twist or scale a curve handle at one control point; the object follows.
-    HandleEdit(HandleEditInput),
+    HandleEdit(HandleEditInput) = "handle_edit",
     /// Link two handles' control points into a skeleton.
-    LinkHandles(LinkHandlesInput),
+    LinkHandles(LinkHandlesInput) = "link_handles",
     /// Remove a curve handle.
-    DeleteHandle(DeleteHandleInput),
+    DeleteHandle(DeleteHandleInput) = "delete_handle",
     /// A scripted large deformation: sphere handles moved by matrices, fixed spheres, the
     /// rest following through the volumetric graph Laplacian (or the surface editor).
-    Deform(DeformInput),
+    Deform(DeformInput) = "deform",
     /// Bend a model by a control curve: picked along its surface, redrawn in its editing
     /// plane; the volume follows (the volumetric graph Laplacian).
-    CurveDeform(CurveDeformInput),
+    CurveDeform(CurveDeformInput) = "curve_deform",
     /// Store every model's current pose as its key frame at a time.
-    Keyframe(KeyframeInput),
+    Keyframe(KeyframeInput) = "keyframe",
     /// Remove the key frames at a time.
-    DeleteKeyframe(KeyframeInput),
+    DeleteKeyframe(KeyframeInput) = "delete_keyframe",
     /// Put every animated model in its pose at a time.
-    PoseAt(KeyframeInput),
+    PoseAt(KeyframeInput) = "pose_at",
     /// Undo the last change.
-    Undo,
+    Undo = "undo",
     /// Redo the last undone change.
-    Redo,
+    Redo = "redo",
+}
 }
 
 impl Op {
@@ -108,41 +156,6 @@ impl Op {
             String::from("null")
         })
     }
-
-    /// The `"op"` tag of every kind of op, as written in session files (in step with
-    /// [`Op::name`]; a test checks both against serde).
-    pub const NAMES: &'static [&'static str] = &[
-        "stroke",
-        "create",
-        "import",
-        "oversketch",
-        "pull",
-        "add_curve",
-        "cut",
-        "erase",
-        "tunnel",
-        "extrude",
-        "merge",
-        "transform",
-        "delete",
-        "duplicate",
-        "set_curve_type",
-        "rub",
-        "optimize",
-        "sketch_feature",
-        "region_edit",
-        "curve_handle",
-        "handle_edit",
-        "link_handles",
-        "delete_handle",
-        "deform",
-        "curve_deform",
-        "keyframe",
-        "delete_keyframe",
-        "pose_at",
-        "undo",
-        "redo",
-    ];
 
     /// Whether the op makes one model, new or changed, and reads nothing but the document's
     /// models (a creation, the curve ops, the over-sketch, a curve's volumetric
@@ -172,42 +185,6 @@ impl Op {
         )
     }
 
-    /// The `"op"` tag of this op.
-    pub fn name(&self) -> &'static str {
-        match self {
-            Op::Stroke(_) => "stroke",
-            Op::Create(_) => "create",
-            Op::Import(_) => "import",
-            Op::Oversketch(_) => "oversketch",
-            Op::Pull(_) => "pull",
-            Op::AddCurve(_) => "add_curve",
-            Op::Cut(_) => "cut",
-            Op::Tunnel(_) => "tunnel",
-            Op::Extrude(_) => "extrude",
-            Op::Merge(_) => "merge",
-            Op::Transform(_) => "transform",
-            Op::Delete(_) => "delete",
-            Op::Duplicate(_) => "duplicate",
-            Op::Erase(_) => "erase",
-            Op::SetCurveType(_) => "set_curve_type",
-            Op::Rub(_) => "rub",
-            Op::Optimize(_) => "optimize",
-            Op::SketchFeature(_) => "sketch_feature",
-            Op::RegionEdit(_) => "region_edit",
-            Op::CurveHandle(_) => "curve_handle",
-            Op::HandleEdit(_) => "handle_edit",
-            Op::LinkHandles(_) => "link_handles",
-            Op::DeleteHandle(_) => "delete_handle",
-            Op::Deform(_) => "deform",
-            Op::CurveDeform(_) => "curve_deform",
-            Op::Keyframe(_) => "keyframe",
-            Op::DeleteKeyframe(_) => "delete_keyframe",
-            Op::PoseAt(_) => "pose_at",
-            Op::Undo => "undo",
-            Op::Redo => "redo",
-        }
-    }
-
     /// What the op makes or does, as a sentence names it ("Computing the new shape…").
     pub fn title(&self) -> String {
         match self {
@@ -217,8 +194,8 @@ impl Op {
         }
     }
 
-    /// The raw samples of the op's stroke; `None` for the ops without one (import, undo,
-    /// redo).
+    /// The raw samples of the op's stroke; `None` for the ops without one (import, the ops
+    /// on numbers and indices, undo, redo).
     pub fn stroke(&self) -> Option<&[[f64; 3]]> {
         match self {
             Op::Stroke(input) | Op::Pull(input) => Some(&input.stroke),
@@ -230,24 +207,7 @@ impl Op {
             Op::SketchFeature(input) => Some(&input.stroke),
             Op::CurveHandle(input) => Some(&input.stroke),
             Op::CurveDeform(input) => Some(&input.stroke),
-            Op::Import(_)
-            | Op::Optimize(_)
-            | Op::Tunnel(_)
-            | Op::Extrude(_)
-            | Op::Merge(_)
-            | Op::Transform(_)
-            | Op::RegionEdit(_)
-            | Op::HandleEdit(_)
-            | Op::LinkHandles(_)
-            | Op::DeleteHandle(_)
-            | Op::Deform(_)
-            | Op::Keyframe(_)
-            | Op::DeleteKeyframe(_)
-            | Op::PoseAt(_)
-            | Op::Delete(_)
-            | Op::Duplicate(_)
-            | Op::Undo
-            | Op::Redo => None,
+            _ => None,
         }
     }
 
@@ -268,7 +228,6 @@ impl Op {
             Op::SketchFeature(input) => Some(&mut input.stroke),
             Op::CurveHandle(input) => Some(&mut input.stroke),
             Op::CurveDeform(input) => Some(&mut input.stroke),
-            // The ops without a stroke, listed one by one in `Op::stroke`.
             _ => None,
         }
     }
@@ -849,7 +808,6 @@ impl StrokeInput {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::oversketch::OutlineKind;
 
     fn stroke() -> StrokeInput {
         StrokeInput {
@@ -859,150 +817,32 @@ mod tests {
         }
     }
 
+    /// Every op's name is its serde tag (the golden sessions check this for every kind of
+    /// op, from the ops they replay); the names are unique.
     #[test]
-    fn names_match_serde_tags() {
+    fn names_are_the_serde_tags() {
         let ops = [
-            Op::Stroke(StrokeInput {
-                viewport: [1.0, 1.0],
-                camera: Camera::default(),
-                stroke: Vec::new(),
-            }),
-            Op::Create(CreateInput {
-                viewport: [1.0, 1.0],
-                camera: Camera::default(),
-                stroke: Vec::new(),
-                vertices: Some(10_000),
-            }),
-            Op::Import(ImportInput {
-                files: vec![FileInput {
-                    name: String::from("a.glb"),
-                    data: Some(Arc::new(vec![1, 2, 3])),
-                }],
-                beside: false,
-            }),
-            Op::Oversketch(OversketchInput {
-                viewport: [1.0, 1.0],
-                camera: Camera::default(),
-                stroke: Vec::new(),
-                fit: OversketchFit::Soft,
-                roi: OversketchRoi::Part,
-                handle: Some(ManualHandle::Silhouette {
-                    from: DVec2::ZERO,
-                    via: DVec2::X,
-                    to: DVec2::ONE,
-                    outline: OutlineKind::Edge,
-                }),
-            }),
             Op::Pull(stroke()),
-            Op::AddCurve(AddCurveInput {
-                viewport: [1.0, 1.0],
-                camera: Camera::default(),
-                stroke: Vec::new(),
-                closed: true,
-                cross_section: false,
-            }),
-            Op::Cut(stroke()),
-            Op::Erase(stroke()),
             Op::Tunnel(StrokePairInput {
                 strokes: [stroke(), stroke()],
-            }),
-            Op::Extrude(StrokePairInput {
-                strokes: [stroke(), stroke()],
-            }),
-            Op::Merge(MergeInput { models: [0, 1] }),
-            Op::Transform(TransformInput {
-                model: 0,
-                matrix: glam::DMat4::IDENTITY.to_cols_array(),
-            }),
-            Op::Delete(ModelInput { model: 0 }),
-            Op::Duplicate(ModelInput { model: 0 }),
-            Op::SetCurveType(CurveTypeInput {
-                viewport: [1.0, 1.0],
-                camera: Camera::default(),
-                stroke: Vec::new(),
-                sharp: true,
-            }),
-            Op::Rub(stroke()),
-            Op::Optimize(OptimizeInput {
-                model: 0,
-                settings: OptimizeParams::default(),
-                region: None,
-                painted: Vec::new(),
-                painted_features: Vec::new(),
-            }),
-            Op::SketchFeature(SketchFeatureInput {
-                viewport: [1.0, 1.0],
-                camera: Camera::default(),
-                stroke: Vec::new(),
-                kind: FeatureKind::Ridge,
-                amount: None,
-                region: None,
-            }),
-            Op::RegionEdit(RegionEditInput {
-                viewport: [1.0, 1.0],
-                camera: Camera::default(),
-                reference: Vec::new(),
-                boundary: Vec::new(),
-                levels: None,
-                areas: Vec::new(),
-                transform: Some(glam::DMat4::IDENTITY.to_cols_array()),
-                handles: None,
-                profile: None,
-                remesh: false,
-            }),
-            Op::CurveHandle(CurveHandleInput {
-                viewport: [1.0, 1.0],
-                camera: Camera::default(),
-                stroke: Vec::new(),
-                kind: HandleKind::Skeleton,
-                control_points: 4,
-                rigid: true,
-            }),
-            Op::HandleEdit(HandleEditInput {
-                handle: 0,
-                point: 1,
-                translate: Some([0.0, 1.0, 0.0]),
-                twist_deg: None,
-                scale: None,
-                spread: 1,
             }),
             Op::LinkHandles(LinkHandlesInput {
                 a: (0, 3),
                 b: (1, 0),
             }),
-            Op::DeleteHandle(DeleteHandleInput { handle: 0 }),
-            Op::Deform(DeformInput {
-                method: super::super::DeformMethod::Volumetric,
-                model: 0,
-                handles: Vec::new(),
-                fixed: Vec::new(),
-            }),
-            Op::CurveDeform(CurveDeformInput {
-                model: 0,
-                viewport: [1.0, 1.0],
-                camera: Camera::default(),
-                curve: Vec::new(),
-                path: None,
-                held: Vec::new(),
-                stroke: Vec::new(),
-                stroke_camera: None,
-                plane: None,
-                fixed: None,
-                falloff: crate::volumetric::Falloff::Linear,
-                coarse: None,
-            }),
-            Op::Keyframe(KeyframeInput { time: 0.0 }),
-            Op::DeleteKeyframe(KeyframeInput { time: 0.0 }),
             Op::PoseAt(KeyframeInput { time: 0.0 }),
-            Op::Undo,
             Op::Redo,
         ];
-        assert_eq!(ops.len(), Op::NAMES.len());
-        for (op, name) in ops.iter().zip(Op::NAMES) {
-            let value = serde_json::to_value(op).unwrap();
-            assert_eq!(value["op"], *name);
-            assert_eq!(op.name(), *name);
+        for op in ops {
+            let value = serde_json::to_value(&op).unwrap();
+            assert_eq!(value["op"], op.name());
+            assert!(Op::NAMES.contains(&op.name()));
+            assert_eq!(op.is_bare(), value.as_object().unwrap().len() == 1);
         }
+        let mut names = Op::NAMES.to_vec();
+        names.sort_unstable();
+        names.dedup();
+        assert_eq!(names.len(), Op::NAMES.len(), "an \"op\" tag given twice");
     }
 
     #[test]

@@ -188,46 +188,11 @@ fn parse_op(value: Value) -> Result<Op, String> {
     let written = serde_json::to_value(&op).unwrap_or_default();
     let is_unknown = |key: &&String| match &op {
         Op::Optimize(_) => written.get(key.as_str()).is_none(),
-        _ => has_no_fields(&op),
+        _ => op.is_bare(),
     };
     match keys.iter().find(is_unknown) {
         Some(key) => Err(format!("unknown field \"{key}\" in a \"{name}\" op")),
         None => Ok(op),
-    }
-}
-
-/// Whether an op is just its `"op"` tag. No wildcard, so a new op must be sorted here.
-fn has_no_fields(op: &Op) -> bool {
-    match op {
-        Op::Stroke(_)
-        | Op::Create(_)
-        | Op::Import(_)
-        | Op::Oversketch(_)
-        | Op::Pull(_)
-        | Op::AddCurve(_)
-        | Op::Cut(_)
-        | Op::Tunnel(_)
-        | Op::Extrude(_)
-        | Op::Merge(_)
-        | Op::Transform(_)
-        | Op::Delete(_)
-        | Op::Duplicate(_)
-        | Op::Erase(_)
-        | Op::SetCurveType(_)
-        | Op::Rub(_)
-        | Op::Optimize(_)
-        | Op::SketchFeature(_)
-        | Op::RegionEdit(_)
-        | Op::CurveHandle(_)
-        | Op::HandleEdit(_)
-        | Op::LinkHandles(_)
-        | Op::DeleteHandle(_)
-        | Op::Deform(_)
-        | Op::CurveDeform(_)
-        | Op::Keyframe(_)
-        | Op::DeleteKeyframe(_)
-        | Op::PoseAt(_) => false,
-        Op::Undo | Op::Redo => true,
     }
 }
 
@@ -284,6 +249,32 @@ mod tests {
         for point in &editor.document().sketches[1].points {
             assert!(point.x.abs() < 1e-12);
         }
+    }
+
+    /// Every op in [`Op::NAMES`] has a section of its own in docs/session-format.md: a
+    /// heading of its "Ops" part that names it in backticks.
+    #[test]
+    fn every_op_is_documented() {
+        let doc = include_str!("../../../../docs/session-format.md");
+        let start = doc.find("\n## Ops\n").expect("the doc has an Ops part") + 1;
+        let end = doc[start..]
+            .find("\n## ")
+            .map_or(doc.len(), |end| start + end);
+        let headings: Vec<&str> = doc[start..end]
+            .lines()
+            .filter(|line| line.starts_with("### "))
+            .collect();
+        let missing: Vec<&str> = (Op::NAMES.iter().copied())
+            .filter(|name| {
+                let named = format!("`{name}`");
+                !headings.iter().any(|heading| heading.contains(&named))
+            })
+            .collect();
+        assert!(
+            missing.is_empty(),
+            "docs/session-format.md documents no op {missing:?}: give each a `### `name`` \
+             section under \"## Ops\" that says its fields and what it does"
+        );
     }
 
     #[test]

@@ -13,14 +13,16 @@ use std::sync::Arc;
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    AddCurveInput, CurveTypeInput, Document, Edit, Editor, FileInput, ImportInput, Model, Op,
-    OversketchFit, OversketchInput, Progress, StrokeInput, model_op,
+    AddCurveInput, CurveDeformInput, CurveTypeInput, Document, Edit, Editor, FileInput,
+    HandleTarget, ImportInput, Model, Op, OversketchFit, OversketchInput, Progress, StrokeInput,
+    model_op,
 };
 use sketchmesh_core::geometry::Bvh;
 use sketchmesh_core::io::{decode_changed, decode_moved, encode_changed, encode_moved, write_glb};
 use sketchmesh_core::mesh::Mesh;
 use sketchmesh_core::oversketch::{ManualHandle, OversketchRoi};
 use sketchmesh_core::silhouette::silhouettes;
+use sketchmesh_core::volumetric::Falloff;
 
 // ---------------------------------------------------------------------------------------
 // Digest
@@ -78,7 +80,8 @@ pub struct Digest {
 /// The digest of a document. Covers, per model: every position (f64 bits), every
 /// triangle, the name, and every control curve: its kind (sharp or smooth), its closed flag
 /// and its vertex chain (its points are where its vertices are); per sketch its points and
-/// pressures; per point cloud its positions and colours.
+/// pressures; per point cloud its positions and colours; then, when there are any, the
+/// curve handles and the models' key frames.
 ///
 /// The single function to adapt when the document's layout changes: it must keep feeding
 /// the same bytes in the same order for the same document.
@@ -137,9 +140,68 @@ pub fn digest(document: &Document) -> Digest {
             colour.iter().for_each(|c| full.u64(u64::from(c.to_bits())));
         }
     }
+    digest_handles(document, &mut full, &mut topo);
+    digest_keyframes(document, &mut full, &mut topo);
     Digest {
         full: full.finish(),
         topology: topo.finish(),
+    }
+}
+
+/// Curve handles: each one's number, target, kind, links and (in `full`) its control
+/// points, twists and scales. Fed only once a handle was made, so that documents without
+/// handles digest as they did before handles were digested (their goldens stay valid).
+fn digest_handles(document: &Document, full: &mut Fnv, topo: &mut Fnv) {
+    if document.handles_made == 0 {
+        return;
+    }
+    for h in [&mut *full, &mut *topo] {
+        h.tag("handles");
+        h.u64(u64::from(document.handles_made));
+        h.len(document.handles.len());
+    }
+    for handle in &document.handles {
+        let (target, index) = match handle.target {
+            HandleTarget::Model(index) => ("model", index),
+            HandleTarget::Cloud(index) => ("cloud", index),
+        };
+        for h in [&mut *full, &mut *topo] {
+            h.u64(u64::from(handle.id));
+            h.tag(target);
+            h.len(index);
+            h.tag(&format!("{:?}", handle.kind));
+            h.u64(u64::from(handle.curve.is_rigid));
+            h.len(handle.curve.points.len());
+            h.len(handle.links.len());
+            for &(point, other, their) in &handle.links {
+                h.len(point);
+                h.u64(u64::from(other));
+                h.len(their);
+            }
+        }
+        let curve = &handle.curve;
+        curve.points.iter().for_each(|&p| full.point(p));
+        curve.twist.iter().for_each(|&t| full.f64(t));
+        curve.scale.iter().flatten().for_each(|&s| full.f64(s));
+    }
+}
+
+/// Every model's key frames: their times and (in `full`) poses. Fed only when a model has
+/// one, as [`digest_handles`] for the same reason.
+fn digest_keyframes(document: &Document, full: &mut Fnv, topo: &mut Fnv) {
+    if document.models.iter().all(|m| m.keyframes.is_empty()) {
+        return;
+    }
+    for model in &document.models {
+        for h in [&mut *full, &mut *topo] {
+            h.tag("keyframes");
+            h.len(model.keyframes.len());
+        }
+        for key in &model.keyframes {
+            full.f64(key.time);
+            topo.len(key.positions.len());
+            key.positions.iter().for_each(|&p| full.point(p));
+        }
     }
 }
 
@@ -478,4 +540,91 @@ pub fn preview_elsewhere(edit: &mut Edit, worker: &mut Option<Edit>) -> usize {
     *worker = Some(kept);
     edit.supply_preview(Ok(decode_moved(&bytes).expect("the buffer")));
     version
+}
+
+/// Samples every 4 px along the screen images of the world points `from` to `to`.
+pub fn screen_line(camera: &Camera, viewport: DVec2, from: DVec3, to: DVec3) -> Vec<[f64; 3]> {
+    let n = 60;
+    (0..=n)
+        .filter_map(|k| {
+            let p = from.lerp(to, k as f64 / n as f64);
+            camera
+                .screen_from_world(p, viewport)
+                .map(|s| [s.x, s.y, 0.5])
+        })
+        .collect()
+}
+
+/// A `curve_deform` of a capsule along x (radius 0.5, straight part 6 long, as
+/// `volumetric.rs`'s and the `deform_and_keyframes` golden's): a curve along its front from x = −1.5 to 2.5,
+/// redrawn from above with its right three quarters swung out toward +z round a quarter
+/// circle, the capsule's left end (x < −2.2) lassoed to hold still.
+pub fn quarter_bend() -> CurveDeformInput {
+    let viewport = DVec2::new(1000.0, 800.0);
+    let front = Camera {
+        eye: DVec3::new(0.0, 0.0, 12.0),
+        ..Camera::default()
+    };
+    // The curve runs along the capsule's front; its plane (normal along y) faces the view
+    // from above, where the new curve is drawn: its right half swung out toward +z.
+    let above = Camera {
+        eye: DVec3::new(0.0, 12.0, 0.0),
+        up: DVec3::NEG_Z,
+        ..Camera::default()
+    };
+    let curve = screen_line(
+        &front,
+        viewport,
+        DVec3::new(-1.5, 0.0, 0.5),
+        DVec3::new(2.5, 0.0, 0.5),
+    );
+    let bent: Vec<DVec3> = (0..=40)
+        .map(|k| {
+            let s = k as f64 / 40.0;
+            let angle = (s - 0.25).max(0.0) / 0.75 * 0.5 * PI;
+            // A quarter circle after the first quarter, same length.
+            if angle == 0.0 {
+                DVec3::new(-1.5 + 4.0 * s, 0.0, 0.5)
+            } else {
+                let radius = 3.0 / (0.5 * PI);
+                DVec3::new(
+                    -0.5 + radius * angle.sin(),
+                    0.0,
+                    0.5 + radius * (1.0 - angle.cos()),
+                )
+            }
+        })
+        .collect();
+    let stroke: Vec<[f64; 3]> = bent
+        .iter()
+        .filter_map(|&p| {
+            above
+                .screen_from_world(p, viewport)
+                .map(|s| [s.x, s.y, 0.5])
+        })
+        .collect();
+    let corner = |p: DVec3| {
+        let s = front.screen_from_world(p, viewport).expect("in view");
+        [s.x, s.y, 0.5]
+    };
+    let fixed = vec![
+        corner(DVec3::new(-3.8, -0.8, 0.0)),
+        corner(DVec3::new(-2.2, -0.8, 0.0)),
+        corner(DVec3::new(-2.2, 0.8, 0.0)),
+        corner(DVec3::new(-3.8, 0.8, 0.0)),
+    ];
+    CurveDeformInput {
+        model: 0,
+        viewport: viewport.to_array(),
+        camera: front,
+        curve,
+        path: None,
+        held: Vec::new(),
+        stroke,
+        stroke_camera: Some(above),
+        plane: None,
+        fixed: Some(fixed),
+        falloff: Falloff::Linear,
+        coarse: None,
+    }
 }

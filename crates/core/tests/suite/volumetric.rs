@@ -4,10 +4,12 @@
 use std::collections::HashMap;
 use std::f64::consts::PI;
 
-use crate::common::{commit_elsewhere, digest, import_mesh, preview_elsewhere, supply_elsewhere};
+use crate::common::{
+    commit_elsewhere, digest, import_mesh, preview_elsewhere, quarter_bend, screen_line,
+    supply_elsewhere,
+};
 
 use glam::{DMat4, DVec2, DVec3};
-use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::bspline::uniform_knots;
 use sketchmesh_core::document::{
     CoarseInput, CurveDeformInput, DeformHandleInput, DeformInput, DeformMethod, Editor, Op,
@@ -17,8 +19,8 @@ use sketchmesh_core::feature::Sketch;
 use sketchmesh_core::geometry::{Bvh, enclosed_volume};
 use sketchmesh_core::mesh::{Mesh, TriSoup, primitives};
 use sketchmesh_core::volumetric::{
-    COARSE_CONTROLS, Falloff, GraphTerm, Method, Sphere, SphereHandle, VolumetricError,
-    VolumetricGraph, VolumetricParams, deform_with_spheres, pick_curve,
+    COARSE_CONTROLS, GraphTerm, Method, Sphere, SphereHandle, VolumetricError, VolumetricGraph,
+    VolumetricParams, deform_with_spheres, pick_curve,
 };
 
 /// Bumps on the capsule: centre (x, angle around) of each.
@@ -496,92 +498,6 @@ fn the_deform_op_replays_bit_for_bit_and_a_refusal_changes_nothing() {
     assert!(err.to_string().contains("overlaps a fixed sphere"), "{err}");
     assert_eq!(digest(editor.document()), before);
     assert_eq!(editor.session_json(), session);
-}
-
-/// Samples every 4 px along the screen images of the world points `from` to `to`.
-fn screen_line(camera: &Camera, viewport: DVec2, from: DVec3, to: DVec3) -> Vec<[f64; 3]> {
-    let n = 60;
-    (0..=n)
-        .filter_map(|k| {
-            let p = from.lerp(to, k as f64 / n as f64);
-            camera
-                .screen_from_world(p, viewport)
-                .map(|s| [s.x, s.y, 0.5])
-        })
-        .collect()
-}
-
-/// A `curve_deform` of the smooth capsule: a curve along its front from x = −1.5 to 2.5,
-/// redrawn from above with its right three quarters swung out toward +z round a quarter
-/// circle, the capsule's left end (x < −2.2) lassoed to hold still.
-fn quarter_bend() -> CurveDeformInput {
-    let viewport = DVec2::new(1000.0, 800.0);
-    let front = Camera {
-        eye: DVec3::new(0.0, 0.0, 12.0),
-        ..Camera::default()
-    };
-    // The curve runs along the capsule's front; its plane (normal along y) faces the view
-    // from above, where the new curve is drawn: its right half swung out toward +z.
-    let above = Camera {
-        eye: DVec3::new(0.0, 12.0, 0.0),
-        up: DVec3::NEG_Z,
-        ..Camera::default()
-    };
-    let curve = screen_line(
-        &front,
-        viewport,
-        DVec3::new(-1.5, 0.0, 0.5),
-        DVec3::new(2.5, 0.0, 0.5),
-    );
-    let bent: Vec<DVec3> = (0..=40)
-        .map(|k| {
-            let s = k as f64 / 40.0;
-            let angle = (s - 0.25).max(0.0) / 0.75 * 0.5 * PI;
-            // A quarter circle after the first quarter, same length.
-            if angle == 0.0 {
-                DVec3::new(-1.5 + 4.0 * s, 0.0, 0.5)
-            } else {
-                let radius = 3.0 / (0.5 * PI);
-                DVec3::new(
-                    -0.5 + radius * angle.sin(),
-                    0.0,
-                    0.5 + radius * (1.0 - angle.cos()),
-                )
-            }
-        })
-        .collect();
-    let stroke: Vec<[f64; 3]> = bent
-        .iter()
-        .filter_map(|&p| {
-            above
-                .screen_from_world(p, viewport)
-                .map(|s| [s.x, s.y, 0.5])
-        })
-        .collect();
-    let corner = |p: DVec3| {
-        let s = front.screen_from_world(p, viewport).expect("in view");
-        [s.x, s.y, 0.5]
-    };
-    let fixed = vec![
-        corner(DVec3::new(-3.8, -0.8, 0.0)),
-        corner(DVec3::new(-2.2, -0.8, 0.0)),
-        corner(DVec3::new(-2.2, 0.8, 0.0)),
-        corner(DVec3::new(-3.8, 0.8, 0.0)),
-    ];
-    CurveDeformInput {
-        model: 0,
-        viewport: viewport.to_array(),
-        camera: front,
-        curve,
-        path: None,
-        held: Vec::new(),
-        stroke,
-        stroke_camera: Some(above),
-        plane: None,
-        fixed: Some(fixed),
-        falloff: Falloff::Linear,
-        coarse: None,
-    }
 }
 
 #[test]

@@ -14,31 +14,30 @@ use std::sync::Arc;
 
 use eframe::egui_wgpu;
 use egui::{Key, KeyboardShortcut, Modifiers};
-use sketchmesh_core::curve::{StrokePoint, process_stroke};
+use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::document::{
-    Document, Edit, Editor, GizmoHandle, ImportInput, ModelInput, Op, Progress, Replay, Session,
-    StrokeInput, model_under,
+    Document, Edit, Editor, ImportInput, ModelInput, Op, Progress, Replay, Session, StrokeInput,
+    model_under,
 };
-use sketchmesh_core::feature::FeatureKind;
-use sketchmesh_core::optimize::quality_report;
-use sketchmesh_core::oversketch::OversketchRoi;
 
 use crate::autosave;
 use crate::backdrop::Backdrop;
 use crate::camera::OrbitCamera;
 use crate::clock;
-use crate::files::{self, ImportQueue};
+use crate::files;
 use crate::input::router::{Hands, InputRouter, Routed};
 use crate::input::taps::TapCommand;
 use crate::input::{PointerSample, sample_clock};
 use crate::offload::{Answer, JobId, Offload, Poll, Work};
+use crate::overlay::{centered_galley, hint_ui, outline_ui, stroke_ui};
 use crate::panels;
 use crate::panels::context_menu::{ContextAction, ContextMenu, context_menu_ui};
 use crate::playback::Playback;
-use crate::render::geometry::{NormalsAhead, pressure_width};
+use crate::render::geometry::NormalsAhead;
 use crate::render::{SceneCallback, SceneGeometry, SceneRenderer, Uniforms, ViewOptions};
+pub use crate::shared::Shared;
 use crate::textures::Textures;
-use crate::tools::{Mark, Mode, ToolEvent, ToolOutput, ToolSet, ViewCtx};
+use crate::tools::{Mark, Mode, Scene, ToolEvent, ToolOutput, ToolSet, ViewCtx};
 
 /// How long a status message stays up, in seconds.
 const STATUS_SECONDS: f64 = 6.0;
@@ -77,59 +76,6 @@ const AUTOSAVE_STEP_MS: f64 = 8.0;
 /// revision when it shows another document than the editor's, the textures' version, and
 /// whether the wireframe is shown (its edges are built only then).
 type GeometrySource = (autosave::Revision, Option<(u64, u64)>, u64, bool);
-
-/// State shared with the page API (`window.sketchmesh`), which runs outside frames.
-pub struct Shared {
-    /// The document and its history.
-    pub editor: Editor,
-    /// The view's camera.
-    pub camera: OrbitCamera,
-    /// The graphics backend in use, for the page API and the help panel.
-    pub backend: String,
-    /// Files waiting to be imported.
-    pub imports: ImportQueue,
-    /// Recent costs of edits, for the page benchmark.
-    pub timings: clock::Timings,
-    /// The tool in use; the page's restore sets it, and the app follows.
-    pub mode: Mode,
-    /// When to autosave.
-    pub autosave: autosave::Schedule,
-    /// A sentence for the user from outside the app (the page's restore), shown next frame.
-    pub notice: Option<String>,
-    /// Thumbnails of the view the page asked for (`window.sketchmesh.thumbnail()`).
-    pub thumbnails: crate::thumbnail::Capture,
-    /// The notes panel (an import's repairs), which the page API reads too.
-    pub notes: panels::notes::Notes,
-    /// What the progress line says while work runs off the frame (an import, a replay).
-    pub progress: Option<String>,
-    /// Editors that replaced the first one (see [`autosave::Revision`]).
-    opened: u64,
-    /// The ops' session text as JavaScript strings, for the autosave.
-    #[cfg(target_arch = "wasm32")]
-    pub op_texts: crate::web::OpTexts,
-}
-
-impl Shared {
-    /// Replaces the document and its history by `editor`'s (a session opened or restored).
-    pub fn open(&mut self, editor: Editor) {
-        self.editor = editor;
-        self.opened += 1;
-    }
-
-    /// Starts an empty document in the default view, keeping the tool.
-    pub fn open_empty(&mut self) {
-        self.open(Editor::new());
-        self.camera = OrbitCamera::default();
-    }
-
-    /// Which document is shown: changes with every op, and when another editor comes in.
-    pub fn revision(&self) -> autosave::Revision {
-        autosave::Revision {
-            opened: self.opened,
-            edits: self.editor.revision(),
-        }
-    }
-}
 
 /// The Sketchmesh app.
 pub struct SketchApp {
@@ -244,22 +190,7 @@ impl SketchApp {
     /// Creates the app without graphics, for tests that drive input and tools.
     pub fn with_backend(backend: String, has_renderer: bool) -> Self {
         Self {
-            shared: Rc::new(RefCell::new(Shared {
-                editor: Editor::new(),
-                camera: OrbitCamera::default(),
-                backend,
-                imports: ImportQueue::default(),
-                timings: clock::Timings::default(),
-                mode: Mode::default(),
-                autosave: autosave::Schedule::default(),
-                notice: None,
-                thumbnails: Default::default(),
-                notes: Default::default(),
-                progress: None,
-                opened: 0,
-                #[cfg(target_arch = "wasm32")]
-                op_texts: Default::default(),
-            })),
+            shared: Rc::new(RefCell::new(Shared::new(backend))),
             router: InputRouter::default(),
             tools: ToolSet::default(),
             samples: Vec::new(),
@@ -499,18 +430,7 @@ impl SketchApp {
             self.offload.cancel(job);
         }
         let models_before = self.shared.borrow().editor.document().models.len();
-        let optimized = match edit.op() {
-            Op::Optimize(input) => self
-                .shared
-                .borrow()
-                .editor
-                .document()
-                .models
-                .get(input.model)
-                .cloned()
-                .map(|m| (input.model, m)),
-            _ => None,
-        };
+        let before = self.shared.borrow().editor.document().clone();
         let started = clock::now_ms();
         let result = edit.finish(&mut self.shared.borrow_mut().editor);
         let ms = clock::now_ms() - started;
@@ -523,14 +443,19 @@ impl SketchApp {
             }
             self.settle_import(settled, now);
         }
-        match (result, optimized) {
-            (Err(e), _) => self.set_status(e.to_string(), now),
-            (Ok(()), Some((index, before))) => {
-                let after = Arc::clone(&self.shared.borrow().editor.document().models[index]);
-                let report = quality_report(&before.mesh, after.mesh.positions());
-                self.set_status(report.summary(), now);
+        match result {
+            Err(e) => self.set_status(e.to_string(), now),
+            Ok(()) => {
+                // The op just logged is the edit's.
+                let shared = self.shared.borrow();
+                let (editor, tools) = (&shared.editor, &self.tools);
+                let report = (editor.ops().last())
+                    .and_then(|op| tools.report(op, &before, editor.document()));
+                drop(shared);
+                if let Some(report) = report {
+                    self.set_status(report, now);
+                }
             }
-            (Ok(()), None) => {}
         }
     }
 
@@ -729,14 +654,14 @@ impl SketchApp {
             return;
         }
         let started = clock::now_ms();
-        let record = if crate::web::ready_op_texts(&mut shared, started, AUTOSAVE_STEP_MS) {
-            crate::web::autosave_pieces(&mut shared)
+        let record = if shared.ready_op_texts(started, AUTOSAVE_STEP_MS) {
+            shared.autosave_pieces()
         } else {
             // A long op's text took this frame: the write comes in a later one.
             ctx.request_repaint();
             None
         };
-        let written = record.map(crate::web::write_autosave);
+        let written = record.map(crate::page_store::write_autosave);
         // The frame's share of the write: the session's new text readied, or the record
         // handed to the page's queue (the page benchmark reads it as "autosave").
         let ms = clock::now_ms() - started;
@@ -912,8 +837,8 @@ impl SketchApp {
             let title = name
                 .trim_end_matches(".json")
                 .trim_end_matches(".sketchmesh");
-            let record = crate::web::autosave_pieces(&mut self.shared.borrow_mut());
-            if let Err(why) = crate::web::keep_and_start(record, title) {
+            let record = self.shared.borrow_mut().autosave_pieces();
+            if let Err(why) = crate::page_store::keep_and_start(record, title) {
                 let sentence =
                     format!("Did not open {name}: the work shown could not be kept ({why}).");
                 return self.set_status(sentence, now);
@@ -933,7 +858,7 @@ impl SketchApp {
     fn page_documents(&mut self, method: &str, now: f64) {
         self.finish_edit(now);
         #[cfg(target_arch = "wasm32")]
-        if let Err(why) = crate::web::documents(method) {
+        if let Err(why) = crate::page_store::documents(method) {
             self.set_status(format!("Could not open the documents: {why}"), now);
         }
         #[cfg(not(target_arch = "wasm32"))]
@@ -1000,30 +925,23 @@ impl SketchApp {
             self.export(now);
         }
         let pressed = |key| ctx.input_mut(|i| i.consume_shortcut(&shortcut(Modifiers::NONE, key)));
-        if pressed(Key::Enter) {
-            let confirmed = self.tools.confirm();
-            self.take_output(confirmed, now);
-        }
         if pressed(Key::Escape) {
             // Stops what runs: an import being read, an op computed, a replay, the gesture.
             self.cancel_offloaded(now);
             self.cancel_replay(now);
             self.drop_gesture(now);
         }
-        for (key, factor) in [(Key::OpenBracket, 1.0 / 1.25), (Key::CloseBracket, 1.25)] {
+        for (mode, key) in self.tools.keys() {
             if pressed(key) {
-                let nudged = self.tools.nudge(factor);
-                self.take_output(nudged, now);
+                let outputs = {
+                    let shared = self.shared.borrow();
+                    self.tools.on_key(mode, key, shared.editor.document())
+                };
+                self.shared.borrow_mut().mode = self.tools.mode();
+                for output in outputs {
+                    self.take_output(output, now);
+                }
             }
-        }
-        if pressed(Key::B) {
-            self.tools.next_stroke_use();
-        }
-        if pressed(Key::Delete) || pressed(Key::Backspace) {
-            let deleted = self
-                .tools
-                .delete_selected(self.shared.borrow().editor.document());
-            self.take_output(deleted, now);
         }
         if pressed(Key::F) {
             self.frame_all();
@@ -1041,19 +959,6 @@ impl SketchApp {
         }
         if pressed(Key::G) {
             self.options.grid = !self.options.grid;
-        }
-        if pressed(Key::K) {
-            let settings = self.tools.oversketch_settings_mut();
-            settings.manual = !settings.manual;
-            self.set_mode(Mode::Oversketch, now);
-        }
-        if pressed(Key::A) {
-            let settings = self.tools.oversketch_settings_mut();
-            settings.roi = match settings.roi {
-                OversketchRoi::NearHandle => OversketchRoi::Part,
-                OversketchRoi::Part => OversketchRoi::NearHandle,
-            };
-            self.set_mode(Mode::Oversketch, now);
         }
         if pressed(Key::H) || pressed(Key::F1) {
             self.show_help = !self.show_help;
@@ -1519,20 +1424,24 @@ impl SketchApp {
         self.tools.preview()
     }
 
-    /// Highlights the silhouette piece an over-sketch stroke would replace (shown by the edit
-    /// in progress), or the picked handle with its ends marked, and says what to do next.
-    fn handle_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
-        let hint = self.tools.hint(self.shared.borrow().editor.document());
-        if let Some(hint) = hint {
+    /// Draws over the view: the tool in use's hint and what it shows, what the edit in
+    /// progress shows (a move held back, the outline piece an over-sketch would replace),
+    /// the marks and the stroke in progress, and the strokes waiting for the worker.
+    fn live_stroke_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
+        let shared = self.shared.borrow();
+        let doc = shared.editor.document();
+        let scene = Scene {
+            shown: (self.edit.as_ref()).map_or(doc, Edit::document),
+            doc,
+            edit: self.edit.as_ref(),
+            computing: self.worker_job.is_some(),
+            camera: shared.camera.camera(),
+            viewport,
+        };
+        if let Some(hint) = self.tools.hint(doc) {
             hint_ui(ui, viewport, hint);
         }
-        self.gizmo_ui(ui, viewport);
-        self.curve_handles_ui(ui, viewport);
-        self.region_handles_ui(ui, viewport);
-        self.region_profile_ui(ui, viewport);
-        if let Some(amount) = self.edit.as_ref().and_then(feature_amount) {
-            hint_ui(ui, viewport, &amount);
-        }
+        self.tools.overlay(ui, &scene);
         if let Some(kept) = self.edit.as_ref().and_then(Edit::limited_move) {
             let said = format!(
                 "Held at {:.0}% of the move: more would fold the part through itself",
@@ -1540,257 +1449,22 @@ impl SketchApp {
             );
             hint_ui(ui, viewport, &said);
         }
-        let picked = self
-            .tools
-            .handle()
-            .map(|h| (h.points.as_slice(), h.confident, h.croppable));
-        let outline = (self.edit.as_ref())
-            .and_then(Edit::outline)
-            .map(|o| (o.points.as_slice(), o.is_confident, false));
-        for (points, confident, croppable) in picked.into_iter().chain(outline) {
-            outline_ui(ui, viewport, points, confident, croppable);
+        if let Some(o) = self.edit.as_ref().and_then(Edit::outline) {
+            outline_ui(ui, viewport, &o.points, o.is_confident, false);
         }
-        let shared = self.shared.borrow();
-        let shown = (self.edit.as_ref()).map_or(shared.editor.document(), Edit::document);
-        let camera = shared.camera.camera();
-        let size = glam::DVec2::new(viewport.width().into(), viewport.height().into());
-        let moved = self.edit.as_ref().and_then(Edit::moved_model);
-        for (curve, active) in self.tools.pose_curves(shown, moved) {
-            let on_screen: Vec<glam::DVec2> = curve
-                .iter()
-                .filter_map(|&p| camera.screen_from_world(p, size).map(|s| s.truncate()))
-                .collect();
-            outline_ui(ui, viewport, &on_screen, active, active);
-        }
-        let controls: Vec<egui::Pos2> = (self.tools.pose_controls(shown, moved).iter())
-            .filter_map(|&p| camera.screen_from_world(p, size))
-            .map(|s| viewport.min + egui::vec2(s.x as f32, s.y as f32))
-            .collect();
-        let colour = egui::Color32::from_rgb(250, 210, 80);
-        ui.painter().add(egui::Shape::line(
-            controls.clone(),
-            egui::Stroke::new(1.5, colour.gamma_multiply(0.7)),
-        ));
-        for c in controls {
-            ui.painter()
-                .circle(c, 9.0, colour, egui::Stroke::new(2.0, egui::Color32::BLACK));
-        }
-    }
-
-    /// The curve handles, in the handles tool, at the pose a drag previews.
-    fn curve_handles_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
-        if self.tools.mode() != Mode::Handles {
-            return;
-        }
-        let shared = self.shared.borrow();
-        let camera = shared.camera.camera();
-        let doc = self
-            .edit
-            .as_ref()
-            .map_or(shared.editor.document(), Edit::document);
-        let dragged = self.edit.as_ref().and_then(|edit| match edit.op() {
-            Op::HandleEdit(input) => Some((input, edit.limited_move().unwrap_or(1.0))),
-            _ => None,
-        });
-        let selected = self.tools.selected_handle_point();
-        panels::curve_handles::curve_handles_ui(ui, viewport, doc, &camera, dragged, selected);
-    }
-
-    /// The region tool's handles: per handle three axes (red along the curve, green along
-    /// the surface normal, blue across), each drawn in its thirds: a bar near the handle
-    /// (move), a square in the middle (scale), a ring at the end (turn); the part being
-    /// dragged brighter.
-    fn region_handles_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
-        let camera = self.shared.borrow().camera.camera();
-        let size = glam::DVec2::new(viewport.width().into(), viewport.height().into());
-        let axes = self.tools.region_handles(&camera, size);
-        let at = |p: glam::DVec2| viewport.min + egui::vec2(p.x as f32, p.y as f32);
-        let painter = ui.painter();
-        for mark in &axes {
-            let [r, g, b] = [[230, 80, 70], [90, 200, 90], [80, 140, 240]][mark.axis];
-            let colour = |part| match mark.dragged == Some(part) {
-                true => egui::Color32::from_rgb(255, 240, 160),
-                false => egui::Color32::from_rgb(r, g, b),
-            };
-            let (from, to) = (at(mark.from), at(mark.to));
-            let third = |k: f32| from + (to - from) * (k / 3.0);
-            let shadow = egui::Stroke::new(6.0, egui::Color32::from_black_alpha(140));
-            painter.line_segment([from, to], shadow);
-            painter.line_segment(
-                [from, third(1.0)],
-                egui::Stroke::new(4.0, colour(crate::tools::region::Part::Translate)),
-            );
-            painter.line_segment(
-                [third(1.0), to],
-                egui::Stroke::new(2.0, egui::Color32::from_rgb(r, g, b)),
-            );
-            let square = egui::Rect::from_center_size(third(1.5), egui::vec2(11.0, 11.0));
-            painter.rect_filled(square, 2.0, colour(crate::tools::region::Part::Scale));
-            painter.circle_stroke(
-                to,
-                7.0,
-                egui::Stroke::new(3.0, colour(crate::tools::region::Part::Rotate)),
-            );
-        }
-        for mark in axes.iter().filter(|m| m.axis == 0) {
-            painter.circle_filled(at(mark.from), 6.0, egui::Color32::WHITE);
-            painter.circle_stroke(
-                at(mark.from),
-                6.0,
-                egui::Stroke::new(1.5, egui::Color32::BLACK),
-            );
-        }
-    }
-
-    /// The region tool's profile panel in the view's lower right corner: the cross-section
-    /// across the curve coloured from blue (one side of the curve) to orange (the other), the
-    /// same colours along it on the model, the arrow out of the surface where the curve
-    /// crosses, and the stroke drawn over it in white.
-    fn region_profile_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
-        let size = glam::DVec2::new(viewport.width().into(), viewport.height().into());
-        let Some(view) = self.tools.region_profile(size) else {
-            return;
-        };
-        let at = |p: glam::DVec2| viewport.min + egui::vec2(p.x as f32, p.y as f32);
-        let painter = ui.painter();
-        let panel = egui::Rect::from_min_size(
-            at(view.corner),
-            egui::vec2(view.side as f32, view.side as f32),
-        );
-        painter.rect_filled(panel, 8.0, egui::Color32::from_black_alpha(200));
-        painter.text(
-            panel.left_top() + egui::vec2(8.0, 6.0),
-            egui::Align2::LEFT_TOP,
-            "Profile: draw over it",
-            egui::FontId::proportional(12.0),
-            egui::Color32::from_gray(210),
-        );
-        if let Some(why) = &view.refusal {
-            let galley = painter.layout(
-                why.clone(),
-                egui::FontId::proportional(12.0),
-                egui::Color32::from_gray(220),
-                panel.width() - 16.0,
-            );
-            painter.galley(
-                panel.left_top() + egui::vec2(8.0, 26.0),
-                galley,
-                egui::Color32::WHITE,
-            );
-            return;
-        }
-        let gradient = |k: usize, n: usize| {
-            let t = k as f32 / (n.max(2) - 1) as f32;
-            let mix = |a: f32, b: f32| (a + (b - a) * t) as u8;
-            egui::Color32::from_rgb(mix(70.0, 250.0), mix(150.0, 150.0), mix(255.0, 40.0))
-        };
-        let camera = self.shared.borrow().camera.camera();
-        let on_screen: Vec<Option<egui::Pos2>> = (view.section_in_world.iter())
-            .map(|&p| camera.screen_from_world(p, size).map(|s| at(s.truncate())))
-            .collect();
-        let n = view.section.len();
-        for k in 1..n {
-            let colour = gradient(k, n);
-            let stroke = egui::Stroke::new(2.5, colour);
-            painter.line_segment([at(view.section[k - 1]), at(view.section[k])], stroke);
-            if let (Some(a), Some(b)) = (on_screen[k - 1], on_screen[k]) {
-                painter.line_segment([a, b], egui::Stroke::new(3.0, colour));
-            }
-        }
-        let (from, to) = view.curve;
-        painter.arrow(
-            at(from),
-            at(to) - at(from),
-            egui::Stroke::new(2.0, egui::Color32::from_rgb(255, 230, 120)),
-        );
-        if let Some(stroke) = &view.stroke {
-            let points: Vec<egui::Pos2> = stroke.iter().map(|&p| at(p)).collect();
-            painter.add(egui::Shape::line(
-                points,
-                egui::Stroke::new(2.0, egui::Color32::WHITE),
-            ));
-        }
-    }
-
-    /// The move tool's handles around the selected model: the ring that turns it, the square
-    /// that scales it, a dot at its middle; the one being dragged is drawn brighter.
-    fn gizmo_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
-        let camera = self.shared.borrow().camera.camera();
-        let size = glam::DVec2::new(viewport.width().into(), viewport.height().into());
-        let gizmo = {
-            let shared = self.shared.borrow();
-            self.tools.gizmo(shared.editor.document(), &camera, size)
-        };
-        let Some((gizmo, dragged)) = gizmo else {
-            return;
-        };
-        let at = |p: glam::DVec2| viewport.min + egui::vec2(p.x as f32, p.y as f32);
-        let colour = |handle| match dragged == Some(handle) {
-            true => egui::Color32::from_rgb(255, 214, 120),
-            false => egui::Color32::from_rgb(240, 160, 60),
-        };
-        let painter = ui.painter();
-        painter.circle_stroke(
-            at(gizmo.centre),
-            gizmo.radius as f32,
-            egui::Stroke::new(5.0, colour(GizmoHandle::Turn)),
-        );
-        painter.circle_filled(at(gizmo.centre), 7.0, colour(GizmoHandle::Move));
-        let square = egui::Rect::from_center_size(at(gizmo.scale_handle()), egui::vec2(22.0, 22.0));
-        painter.rect_filled(square, 3.0, colour(GizmoHandle::Scale));
-    }
-
-    /// Draws the stroke in progress, smoothed as it will be stored, with pressure widths.
-    fn live_stroke_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
-        self.handle_ui(ui, viewport);
-        if let Some((points, what)) = self.tools.waiting() {
-            // A stroke waiting for its confirming tap: shown dimmer, with what a tap does.
-            stroke_ui(ui, viewport, points, egui::Color32::from_rgb(120, 200, 255));
-            hint_ui(ui, viewport, what);
-        }
-        let camera = self.shared.borrow().camera.camera();
-        for mark in self.tools.marks(&camera) {
+        for mark in self.tools.marks(&scene.camera) {
             mark_ui(ui, viewport, &mark);
         }
         if let Some(raw) = self.stroke_preview() {
             stroke_ui(ui, viewport, raw, egui::Color32::from_rgb(242, 199, 82));
         }
-        // The outline of a fine shape the worker computes stays, dimmer, until the shape
-        // lands, and so do the strokes made meanwhile, which wait for it.
-        let computed = (self.edit.as_ref())
-            .filter(|edit| self.worker_job.is_some() && matches!(edit.op(), Op::Create(_)));
-        for op in computed.map(Edit::op).into_iter().chain(&self.waiting) {
+        self.tools.edit_overlay(ui, &scene);
+        // The strokes made while the worker computes an edit wait for it, shown dimmer.
+        for op in &self.waiting {
             let points = op.stroke_points();
             stroke_ui(ui, viewport, &points, egui::Color32::from_rgb(200, 170, 90));
         }
     }
-}
-
-/// A piece of outline on screen: green when confident, orange otherwise; the ends marked
-/// when they can be dragged.
-fn outline_ui(
-    ui: &egui::Ui,
-    viewport: egui::Rect,
-    points: &[glam::DVec2],
-    confident: bool,
-    croppable: bool,
-) {
-    let color = if confident {
-        egui::Color32::from_rgb(90, 220, 120)
-    } else {
-        egui::Color32::from_rgb(240, 150, 60)
-    };
-    let points: Vec<egui::Pos2> = points
-        .iter()
-        .map(|p| viewport.min + egui::vec2(p.x as f32, p.y as f32))
-        .collect();
-    if croppable {
-        for end in [points.first(), points.last()].into_iter().flatten() {
-            ui.painter().circle_filled(*end, 7.0, color);
-        }
-    }
-    ui.painter()
-        .add(egui::Shape::line(points, egui::Stroke::new(4.0, color)));
 }
 
 /// How many gray levels a region edit's fall-off shows: one per level of its op (5 by
@@ -1800,53 +1474,6 @@ fn falloff_levels(edit: &Edit) -> usize {
         Op::RegionEdit(input) => input.levels.as_ref().map_or(5, Vec::len),
         _ => 5,
     }
-}
-
-/// A feature drag's amount as the user reads it, and where folding holds it back.
-fn feature_amount(edit: &Edit) -> Option<String> {
-    let Op::SketchFeature(input) = edit.op() else {
-        return None;
-    };
-    let say = |amount: f64| match input.kind {
-        FeatureKind::Suggestive => format!("{amount:.0}°"),
-        FeatureKind::Flatten => String::from("flat"),
-        _ => format!("× {amount:.1}"),
-    };
-    let asked = say(input.amount());
-    Some(match edit.limited_amount() {
-        Some(held) => format!(
-            "{asked}: held at {}, more would fold the surface over",
-            say(held)
-        ),
-        None => asked,
-    })
-}
-
-/// What to do next, at the top of the view, wrapped to its width (a phone's is narrow).
-fn hint_ui(ui: &egui::Ui, viewport: egui::Rect, text: &str) {
-    let color = egui::Color32::from_white_alpha(200);
-    let galley = centered_galley(ui, viewport, text, color);
-    ui.painter()
-        .galley(viewport.center_top() + egui::vec2(0.0, 18.0), galley, color);
-}
-
-/// `text` laid out centred and wrapped to the view's width, to be drawn at the view's
-/// horizontal middle.
-fn centered_galley(
-    ui: &egui::Ui,
-    viewport: egui::Rect,
-    text: &str,
-    color: egui::Color32,
-) -> std::sync::Arc<egui::Galley> {
-    let width = (viewport.width() - 40.0).max(80.0);
-    let mut job = egui::text::LayoutJob::simple(
-        text.to_owned(),
-        egui::FontId::proportional(16.0),
-        color,
-        width,
-    );
-    job.halign = egui::Align::Center;
-    ui.painter().layout_job(job)
 }
 
 /// The latest message, at the bottom of the view on a dark band, wrapped to its width: the
@@ -1862,19 +1489,6 @@ fn status_ui(ui: &egui::Ui, viewport: egui::Rect, text: &str) {
     ui.painter()
         .rect_filled(band, 6.0, egui::Color32::from_rgb(20, 21, 25));
     ui.painter().galley(pos, galley, color);
-}
-
-/// Draws a stroke, smoothed as it will be stored, with pressure widths.
-fn stroke_ui(ui: &egui::Ui, viewport: egui::Rect, raw: &[StrokePoint], color: egui::Color32) {
-    let points = process_stroke(raw).unwrap_or_else(|_| raw.to_vec());
-    let to_screen = |p: &StrokePoint| viewport.min + egui::vec2(p.pos.x as f32, p.pos.y as f32);
-    for pair in points.windows(2) {
-        let width = pressure_width((pair[0].pressure + pair[1].pressure) * 0.5) as f32;
-        ui.painter()
-            .line_segment([to_screen(&pair[0]), to_screen(&pair[1])], (width, color));
-        ui.painter()
-            .circle_filled(to_screen(&pair[1]), width * 0.5, color);
-    }
 }
 
 /// A lasso (a line) or a brush stroke (a translucent band as wide as the brush) of the

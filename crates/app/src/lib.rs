@@ -15,12 +15,17 @@ pub mod fonts;
 pub mod image_decode;
 pub mod input;
 pub mod offload;
+pub mod overlay;
+#[cfg(target_arch = "wasm32")]
+pub mod page_store;
 pub mod panels;
 pub mod playback;
 pub mod render;
+pub mod shared;
 pub mod textures;
 pub mod thumbnail;
 pub mod tools;
+pub mod ui_size;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
 

@@ -3,11 +3,20 @@
 //! the edit every frame, so the core previews the drag (following the latest sample once
 //! per frame, however many samples came) and then computes the committed op from the path.
 
-use sketchmesh_core::document::{Op, StrokeInput};
+use sketchmesh_core::document::{Document, Op, StrokeInput};
 
 use super::context::{ToolOutput, ViewCtx};
 use super::draw::point;
+use super::tool::{Tool, ToolInfo};
 use crate::input::router::ToolEvent;
+
+/// The pull tool's name, icon, key and description.
+static INFO: ToolInfo = ToolInfo {
+    label: "Pull",
+    icon: "✋",
+    key: egui::Key::P,
+    about: "Grab a control curve and drag it; the shape follows",
+};
 
 /// The pull tool's state: whether a drag is in progress.
 #[derive(Debug, Default)]
@@ -18,7 +27,7 @@ pub struct PullTool {
 impl PullTool {
     /// Feeds one event: down grabs the curve point under the pointer, moves drag it, up
     /// commits.
-    pub fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx) -> ToolOutput {
+    fn drag(&mut self, event: &ToolEvent, view: &ViewCtx) -> ToolOutput {
         let sample = |s| {
             let p = point(s, view);
             [p.pos.x, p.pos.y, p.pressure]
@@ -45,9 +54,20 @@ impl PullTool {
             _ => ToolOutput::None,
         }
     }
+}
+
+impl Tool for PullTool {
+    fn info(&self) -> &'static ToolInfo {
+        &INFO
+    }
+
+    fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, _doc: &Document) -> ToolOutput {
+        self.drag(event, view)
+    }
 
     /// Forgets the drag in progress (the app cancels its edit).
-    pub fn cancel(&mut self) {
+    fn cancel(&mut self) -> ToolOutput {
         self.is_dragging = false;
+        ToolOutput::None
     }
 }

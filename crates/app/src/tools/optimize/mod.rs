@@ -16,11 +16,21 @@ use sketchmesh_core::document::{
 };
 use sketchmesh_core::optimize::{
     FeatureFalloff, LaplacianKind, Mode as OptimizeMode, OptimizeParams, WeightScheme,
+    quality_report,
 };
 
 use super::context::{ToolOutput, ViewCtx};
 use super::draw::{DrawTool, is_tap};
+use super::tool::{Mark, Tool, ToolInfo};
 use crate::input::router::ToolEvent;
+
+/// The optimize tool's name, icon, key and description.
+static INFO: ToolInfo = ToolInfo {
+    label: "Optimize",
+    icon: "✨",
+    key: egui::Key::M,
+    about: "Tap a model: even out its triangles or smooth it, preview the amount, Apply",
+};
 
 /// The slider's range for the scale `s` (the thesis's positional weights lie in `[0, s]`).
 const SCALE_RANGE: std::ops::RangeInclusive<f64> = 0.05..=4.0;
@@ -38,17 +48,6 @@ enum StrokeUse {
     PaintArea,
     /// Paint over features that hold their place.
     PaintFeatures,
-}
-
-/// A lasso or brush stroke of the open preview, as shown on screen.
-#[derive(Debug)]
-pub struct Mark {
-    /// The samples, in the view they were drawn in.
-    pub points: Vec<StrokePoint>,
-    /// The brush's radius in CSS px; `None` for the lasso.
-    pub radius: Option<f64>,
-    /// Whether it marks features that hold (else what moves).
-    pub features: bool,
 }
 
 /// The optimize tool's state: the settings, and the model being previewed.
@@ -441,4 +440,71 @@ fn combo<T: Copy + PartialEq>(
     // Screen readers name it by its setting ("optimize-mode": "optimize mode").
     let name = id.replace('-', " ");
     response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::ComboBox, true, &name));
+}
+
+impl Tool for OptimizeTool {
+    fn info(&self) -> &'static ToolInfo {
+        &INFO
+    }
+
+    fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
+        OptimizeTool::on_event(self, event, view, doc)
+    }
+
+    fn cancel(&mut self) -> ToolOutput {
+        OptimizeTool::cancel(self);
+        ToolOutput::None
+    }
+
+    fn panel(&mut self, ui: &mut egui::Ui, _doc: &Document) -> Option<ToolOutput> {
+        Some(self.settings_ui(ui))
+    }
+
+    /// The optimized model's triangle quality, before and after.
+    fn report(&self, op: &Op, before: &Document, after: &Document) -> Option<String> {
+        let Op::Optimize(input) = op else {
+            return None;
+        };
+        let (before, after) = (
+            before.models.get(input.model)?,
+            after.models.get(input.model)?,
+        );
+        Some(quality_report(&before.mesh, after.mesh.positions()).summary())
+    }
+
+    fn hint(&self, _doc: &Document) -> Option<&'static str> {
+        OptimizeTool::hint(self)
+    }
+
+    fn preview(&self) -> Option<&[StrokePoint]> {
+        OptimizeTool::preview(self)
+    }
+
+    fn marks(&self, camera: &Camera) -> Vec<Mark> {
+        OptimizeTool::marks(self, camera)
+    }
+
+    /// Enter applies the preview; `[` and `]` step the amount; B: strokes lasso, paint the
+    /// area or paint features.
+    fn keys(&self) -> &'static [egui::Key] {
+        &[
+            egui::Key::Enter,
+            egui::Key::OpenBracket,
+            egui::Key::CloseBracket,
+            egui::Key::B,
+        ]
+    }
+
+    fn on_key(&mut self, key: egui::Key, _doc: &Document) -> ToolOutput {
+        match key {
+            egui::Key::Enter => self.confirm(),
+            egui::Key::OpenBracket => self.nudge(1.0 / 1.25),
+            egui::Key::CloseBracket => self.nudge(1.25),
+            egui::Key::B => {
+                self.next_stroke_use();
+                ToolOutput::None
+            }
+            _ => ToolOutput::None,
+        }
+    }
 }

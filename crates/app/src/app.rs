@@ -8,27 +8,23 @@
 //! changes, and moves a model's vertices in place while an edit moves them.
 
 use std::cell::RefCell;
-use std::collections::VecDeque;
 use std::rc::Rc;
 use std::sync::Arc;
 
 use eframe::egui_wgpu;
 use egui::{Key, KeyboardShortcut, Modifiers};
 use sketchmesh_core::curve::StrokePoint;
-use sketchmesh_core::document::{
-    Document, Edit, Editor, ImportInput, ModelInput, Op, Progress, Replay, Session, StrokeInput,
-    model_under,
-};
+use sketchmesh_core::document::{Document, Edit, Editor, ModelInput, Op, StrokeInput, model_under};
 
 use crate::autosave;
 use crate::backdrop::Backdrop;
 use crate::camera::OrbitCamera;
 use crate::clock;
+use crate::edit_runner::{Cx, EditRunner, FRAME_BUDGET_MS};
 use crate::files;
 use crate::input::router::{Hands, InputRouter, Routed};
 use crate::input::taps::TapCommand;
 use crate::input::{PointerSample, sample_clock};
-use crate::offload::{Answer, JobId, Offload, Poll, Work};
 use crate::overlay::{centered_galley, hint_ui, outline_ui, stroke_ui};
 use crate::panels;
 use crate::panels::context_menu::{ContextAction, ContextMenu, context_menu_ui};
@@ -36,24 +32,9 @@ use crate::playback::Playback;
 use crate::render::geometry::NormalsAhead;
 use crate::render::{SceneCallback, SceneGeometry, SceneRenderer, Uniforms, ViewOptions};
 pub use crate::shared::Shared;
+use crate::status::{Status, status_ui};
 use crate::textures::Textures;
 use crate::tools::{Mark, Mode, Scene, ToolEvent, ToolOutput, ToolSet, ViewCtx};
-
-/// How long a status message stays up, in seconds.
-const STATUS_SECONDS: f64 = 6.0;
-
-/// Why an op is refused while an import or a replay runs (see [`SketchApp::is_busy`]).
-const BUSY: &str = "Wait for the import or replay in progress to land, or cancel it (Esc).";
-
-/// The sentence for a drag begun while the worker computes the last change.
-const COMPUTING: &str = "Wait for the change being computed to land, or cancel it (Esc).";
-
-/// How long an op may run in the page's worker before the progress line says so, in seconds.
-const PROGRESS_AFTER_S: f64 = 0.25;
-
-/// How long the steps of the edit in progress may run in one frame, in ms. At least one step
-/// runs every frame, whatever it costs (a factorization can take longer).
-pub const FRAME_BUDGET_MS: f64 = 12.0;
 
 /// A frame whose own work has taken this long (ms) leaves the scene's rebuild, then its
 /// upload, then the autosave, to the next frames, one each: a large result's landing (a
@@ -108,34 +89,11 @@ pub struct SketchApp {
     backdrop: Backdrop,
     /// A model's context actions, open after a long press on it.
     context_menu: Option<ContextMenu>,
-    /// The edit in progress: begun from a tool's op, stepped every frame, finished when done.
-    edit: Option<Edit>,
-    /// The page's worker, which reads imports off the frame.
-    offload: Offload,
-    /// The import the edit in progress is, if it is one.
-    import: Option<ImportInProgress>,
-    /// The worker's job for the long part of the edit in progress (an import's read, a
-    /// curve op's result), and when it was handed over (seconds).
-    worker_job: Option<(JobId, f64)>,
-    /// Ops made while the worker computes the edit in progress (a stroke drawn while a
-    /// fine shape is created), in order: begun one at a time once it lands, so that no
-    /// frame has to finish the worker's op itself.
-    waiting: VecDeque<Op>,
-    /// A session being replayed over frames (the page API's `replay`), to replace the
-    /// document once it is through.
-    replay: Option<ReplayInProgress>,
-    /// How many edits were begun: tells apart the documents of two edits of equal revision.
-    edits_begun: u64,
     /// Whether the stroke in progress began while work ran off the frame: it reaches no
     /// tool, to its end (see [`SketchApp::is_busy`]).
     holding_stroke: bool,
     /// The fall-off panel's painted disc, kept between frames.
     falloff_panel: panels::falloff::FalloffPanel,
-    /// Whether the edit in progress was begun this frame: it is drawn once before its first
-    /// step, so what it shows at once (a creation's seed) is seen at once.
-    is_edit_new: bool,
-    /// Where the time of the edit in progress goes.
-    edit_clock: EditClock,
     /// What this frame's own work (the edit's steps and landing, the scene's rebuild) has
     /// taken so far, in ms (see [`SPREAD_AFTER_MS`]).
     frame_work_ms: f64,
@@ -149,7 +107,10 @@ pub struct SketchApp {
     autosave_waits: u8,
     options: ViewOptions,
     show_help: bool,
-    status: Option<(String, f64)>,
+    /// The status line.
+    status: Status,
+    /// The edit in progress and the work around it.
+    runner: EditRunner,
     has_renderer: bool,
     /// An import announced this frame, parsed in the next one.
     announced_import: Option<files::Incoming>,
@@ -183,7 +144,7 @@ impl SketchApp {
         cc.egui_ctx.set_theme(egui::Theme::Dark);
         cc.egui_ctx.set_fonts(crate::fonts::definitions());
         let mut app = Self::with_backend(backend, cc.wgpu_render_state.is_some());
-        app.offload = Offload::new(&cc.egui_ctx);
+        app.runner = EditRunner::new(&cc.egui_ctx);
         app
     }
 
@@ -214,17 +175,8 @@ impl SketchApp {
             playback: None,
             backdrop: Backdrop::default(),
             context_menu: None,
-            edit: None,
-            offload: Offload::default(),
-            import: None,
-            replay: None,
-            worker_job: None,
-            waiting: VecDeque::new(),
             holding_stroke: false,
-            edits_begun: 0,
             falloff_panel: Default::default(),
-            is_edit_new: false,
-            edit_clock: EditClock::default(),
             frame_work_ms: 0.0,
             stashed_geometry: None,
             rebuild_waited: false,
@@ -237,7 +189,8 @@ impl SketchApp {
                 clay: false,
             },
             show_help: false,
-            status: None,
+            status: Status::default(),
+            runner: EditRunner::default(),
             has_renderer,
             announced_import: None,
             frame_after_rebuild: None,
@@ -261,7 +214,7 @@ impl SketchApp {
     /// The edit in progress, if any, and the 3D view's rectangle last frame in points: what
     /// a headless test reads the shown preview from.
     pub fn edit_in_view(&self) -> (Option<&Edit>, egui::Rect) {
-        (self.edit.as_ref(), self.view_rect)
+        (self.runner.edit(), self.view_rect)
     }
 
     /// The state the page API shares.
@@ -269,334 +222,31 @@ impl SketchApp {
         self.shared.clone()
     }
 
-    /// Begins `op` (as a gesture when its stroke is still being drawn) after finishing the
-    /// edit in progress, so ops are logged in the order they were made; this frame's steps
-    /// run it. While the worker computes the edit in progress, an op that is not a gesture
-    /// waits for it instead ([`SketchApp::begin_waiting`]); a gesture is refused with a
-    /// sentence, as its live preview needs the result: finishing the worker's op here would
-    /// freeze the page for as long as the worker takes, and the gesture would come before
-    /// the ops waiting for it. A refusal becomes a status message; nothing changes then.
-    fn begin(&mut self, op: Op, is_gesture: bool, now: f64) {
-        if self.is_busy() {
-            self.set_status(String::from(BUSY), now);
-            return;
-        }
-        let behind_the_worker = self.worker_job.is_some() || !self.waiting.is_empty();
-        if behind_the_worker && is_gesture {
-            self.tools.gesture_refused();
-            self.set_status(String::from(COMPUTING), now);
-            return;
-        }
-        if behind_the_worker {
-            self.waiting.push_back(op);
-            return;
-        }
-        self.begin_now(op, is_gesture, now);
-    }
-
-    /// Begins the next op that waited for the worker, once the edit it waited for is over.
-    fn begin_waiting(&mut self, now: f64) {
-        if self.edit.is_none()
-            && let Some(op) = self.waiting.pop_front()
-        {
-            self.begin_now(op, false, now);
-        }
-    }
-
-    /// [`SketchApp::begin`], without waiting for the worker.
-    fn begin_now(&mut self, op: Op, is_gesture: bool, now: f64) {
-        self.finish_edit(now);
-        let name = op.name();
-        let started = clock::now_ms();
-        let begun = {
-            let editor = &self.shared.borrow().editor;
-            if is_gesture {
-                editor.begin_gesture(op)
-            } else {
-                editor.begin(op)
-            }
-        };
-        let ms = clock::now_ms() - started;
-        match begun {
-            Ok(edit) => {
-                let timings = &mut self.shared.borrow_mut().timings;
-                self.edit_clock = EditClock::begun(name, ms, is_gesture, timings);
-                self.edit = Some(edit);
-                self.edits_begun += 1;
-                self.is_edit_new = true;
-            }
-            Err(e) => self.set_status(e.to_string(), now),
-        }
-    }
-
-    /// Whether an import or a replay runs off the frame. The next op must apply to its
-    /// result, as it will in the session: begun now, it would finish the import here, in one
-    /// long frame, or be lost under the replayed document. So it is refused (the view still
-    /// orbits, and Cancel, Esc or undo stops the work).
-    fn is_busy(&self) -> bool {
-        self.import.is_some() || self.replay.is_some()
-    }
-
-    /// Runs the steps of the edit in progress while [`FRAME_BUDGET_MS`] lasts (at least
-    /// one; none in the frame it was begun in), and finishes it once done.
-    fn step_edit(&mut self, ctx: &egui::Context) {
-        let now = ctx.input(|i| i.time);
-        self.begin_waiting(now);
-        if !self.waiting.is_empty() && self.worker_job.is_none() {
-            ctx.request_repaint();
-        }
-        let Some(edit) = self.edit.as_mut() else {
-            return;
-        };
-        if std::mem::take(&mut self.is_edit_new) {
-            ctx.request_repaint();
-            return;
-        }
-        let was_gesture = edit.is_gesture();
-        let started = clock::now_ms();
-        let stepped = loop {
-            match hand_over(&mut self.offload, &mut self.worker_job, edit, now) {
-                HandOver::Waiting => break None,
-                HandOver::Landed { seconds } => {
-                    let timings = &mut self.shared.borrow_mut().timings;
-                    self.edit_clock.elsewhere(1000.0 * seconds, timings);
-                }
-                HandOver::Previewed { seconds } => {
-                    let timings = &mut self.shared.borrow_mut().timings;
-                    self.edit_clock.previewed(1000.0 * seconds, timings);
-                    // The next preview, or the committed result, goes to the worker too.
-                    continue;
-                }
-                HandOver::Here => {}
-            }
-            match edit.step() {
-                Ok(Progress::Working) if clock::now_ms() - started < FRAME_BUDGET_MS => {}
-                other => break Some(other),
-            }
-        };
-        let ms = clock::now_ms() - started;
-        self.edit_clock
-            .stepped(ms, was_gesture, &mut self.shared.borrow_mut().timings);
-        self.tools.edit_stepped(edit);
-        // With the worker: its answer repaints; one repaint shows the progress line once it
-        // is due, and its ring then ticks. Nothing else repaints: every frame draws the whole
-        // scene, which costs the worker its core on a machine without a GPU.
-        let Some(stepped) = stepped else {
-            if let Some((_, since)) = self.worker_job
-                && since + PROGRESS_AFTER_S > now
-            {
-                let due = since + PROGRESS_AFTER_S - now;
-                ctx.request_repaint_after(std::time::Duration::from_secs_f64(due));
-            }
-            return;
-        };
-        match stepped {
-            Ok(Progress::Done) => self.finish_edit(now),
-            // More work, or a gesture whose next samples may come from the page's listeners.
-            Ok(Progress::Working | Progress::Waiting) => ctx.request_repaint(),
-            Err(e) => {
-                self.edit = None;
-                if was_gesture {
-                    self.tools.gesture_refused();
-                }
-                self.set_status(e.to_string(), now);
-                self.settle_import(Err(e.to_string()), now);
-            }
-        }
-    }
-
-    /// Before a new gesture: it acts on the document with the edit in progress committed (a
-    /// shape still refining is finished first), unless the worker computes that edit. Then
-    /// the gesture sees the document as shown, and what it makes waits for the worker
-    /// ([`SketchApp::begin`]): a frame that finished the worker's op would stall for as long
-    /// as the worker takes (seconds for a 40k shape), and an orbit or a stroke must not.
-    fn finish_edit_unless_offloaded(&mut self, now: f64) {
-        if self.worker_job.is_none() {
-            self.finish_edit(now);
-        }
-    }
-
-    /// Finishes the edit in progress, if any (closing its gesture and running the steps it
-    /// has left); a refusal becomes a status message.
-    fn finish_edit(&mut self, now: f64) {
-        let Some(mut edit) = self.edit.take() else {
-            return;
-        };
-        // The worker's answer, if it is there, lands now; else the edit is finished here.
-        if let Some((job, _)) = self.worker_job.take() {
-            if let Some(answer) = self.offload.answer(job) {
-                supply(&mut edit, answer);
-            }
-            self.offload.cancel(job);
-        }
-        let models_before = self.shared.borrow().editor.document().models.len();
-        let before = self.shared.borrow().editor.document().clone();
-        let started = clock::now_ms();
-        let result = edit.finish(&mut self.shared.borrow_mut().editor);
-        let ms = clock::now_ms() - started;
-        self.edit_clock
-            .finished(ms, &mut self.shared.borrow_mut().timings);
-        if self.import.is_some() {
-            let settled = result.as_ref().map(|_| ()).map_err(ToString::to_string);
-            if settled.is_ok() {
-                self.frame_after_rebuild = Some(models_before);
-            }
-            self.settle_import(settled, now);
-        }
-        match result {
-            Err(e) => self.set_status(e.to_string(), now),
-            Ok(()) => {
-                // The op just logged is the edit's.
-                let shared = self.shared.borrow();
-                let (editor, tools) = (&shared.editor, &self.tools);
-                let report = (editor.ops().last())
-                    .and_then(|op| tools.report(op, &before, editor.document()));
-                drop(shared);
-                if let Some(report) = report {
-                    self.set_status(report, now);
-                }
-            }
-        }
-    }
-
     /// Undo: drops a gesture in progress (a drag, an open preview) if there is one, else
     /// undoes the last op.
     fn undo(&mut self, now: f64) {
-        if self.edit.as_ref().is_some_and(Edit::is_gesture) {
+        if self.runner.edit().is_some_and(Edit::is_gesture) {
             self.drop_gesture(now);
-        } else if self.is_busy() || self.worker_job.is_some() {
+        } else if self.runner.is_busy() || self.runner.is_computing() {
             // Undoing an import, a replay or an op still running is not making it.
-            self.cancel_offloaded(now);
-            self.cancel_replay(now);
+            self.run(now, |r, cx| r.cancel_offloaded(cx));
+            self.run(now, |r, cx| r.cancel_replay(cx));
         } else {
-            self.begin(Op::Undo, false, now);
+            self.run(now, |r, cx| r.begin(Op::Undo, false, cx));
         }
     }
 
     /// Drops the gesture in progress and the tool's part of it: nothing changes.
     fn drop_gesture(&mut self, now: f64) {
-        self.cancel_gesture();
+        self.runner.cancel_gesture();
         let dropped = self.tools.cancel();
         self.take_output(dropped, now);
-    }
-
-    /// What the progress line says while the worker computes the edit's op, once it has
-    /// taken [`PROGRESS_AFTER_S`] (a quick one shows no line that flickers).
-    fn computing(&self, now: f64) -> Option<String> {
-        let (_, since) = self.worker_job?;
-        let edit = self
-            .edit
-            .as_ref()
-            .filter(|e| e.model_op_to_run().is_some())?;
-        let name = edit.op().title();
-        (now - since >= PROGRESS_AFTER_S).then(|| format!("Computing the {name}…"))
-    }
-
-    /// Drops the edit in progress if it is an import, or if the worker computes its op:
-    /// nothing changes.
-    fn cancel_offloaded(&mut self, now: f64) {
-        let job = self.worker_job.take();
-        if let Some((job, _)) = job {
-            self.offload.cancel(job);
-        }
-        if self.import.is_some() {
-            self.edit = None;
-            self.settle_import(Err(String::from("The import was cancelled.")), now);
-        } else if let Some(edit) = self.edit.take_if(|_| job.is_some()) {
-            self.set_status(format!("The {} was cancelled.", edit.op().title()), now);
-        }
-    }
-
-    /// Ends the import in progress: says how it went, and tells who waits for it.
-    fn settle_import(&mut self, result: Result<(), String>, now: f64) {
-        let Some(import) = self.import.take() else {
-            return;
-        };
-        match &result {
-            Ok(()) => self.set_status(format!("Imported {}.", import.name), now),
-            Err(why) => self.set_status(why.clone(), now),
-        }
-        import.reply.send(result);
-    }
-
-    /// Drops the edit in progress if its gesture is still going on: nothing changes.
-    fn cancel_gesture(&mut self) {
-        if let Some(edit) = self.edit.take_if(|edit| edit.is_gesture()) {
-            edit.cancel();
-            // The worker's job can only be the gesture's preview.
-            if let Some((job, _)) = self.worker_job.take() {
-                self.offload.cancel(job);
-            }
-        }
-    }
-
-    /// Applies what a tool produced.
-    fn take_output(&mut self, output: ToolOutput, now: f64) {
-        let gesture = self.edit.as_mut().filter(|edit| edit.is_gesture());
-        match output {
-            ToolOutput::None => {}
-            ToolOutput::Commit(op) => self.begin(op, false, now),
-            ToolOutput::CommitAll(ops) => {
-                for op in ops {
-                    self.begin(op, false, now);
-                }
-            }
-            ToolOutput::Begin(op) => self.begin(op, true, now),
-            ToolOutput::Extend(sample) => {
-                if let Some(edit) = gesture {
-                    edit.extend(sample);
-                }
-            }
-            ToolOutput::End(sample) => {
-                if let Some(edit) = gesture {
-                    edit.extend(sample);
-                    edit.end_gesture();
-                }
-            }
-            ToolOutput::Revise(op) => match gesture {
-                Some(edit) if edit.op().name() == op.name() => edit.revise(op),
-                // The preview was committed meanwhile (another edit began): open a new one.
-                _ => self.begin(op, true, now),
-            },
-            ToolOutput::Finish => {
-                if let Some(edit) = gesture {
-                    edit.end_gesture();
-                }
-            }
-            ToolOutput::FinishWith(op) => match gesture {
-                Some(edit) if edit.op().name() == op.name() => {
-                    edit.revise(op);
-                    edit.end_gesture();
-                }
-                _ => self.begin(op, false, now),
-            },
-            ToolOutput::Cancel => self.cancel_gesture(),
-            ToolOutput::Refused(message) => self.set_status(message, now),
-            ToolOutput::Face { point, normal } => {
-                self.shared.borrow_mut().camera.face(point, normal);
-            }
-            ToolOutput::Backdrop(load) => {
-                if !load {
-                    self.backdrop.remove();
-                } else if let Err(message) = self.backdrop.pick() {
-                    self.set_status(message, now);
-                }
-            }
-            ToolOutput::Play => {
-                let played =
-                    Playback::start(self.shared.borrow().editor.document(), clock::now_ms());
-                match played {
-                    Ok(playback) => self.playback = Some(playback),
-                    Err(message) => self.set_status(message, now),
-                }
-            }
-        }
     }
 
     /// Switches the tool mode (toolbar, keys); a gesture in progress is dropped.
     fn set_mode(&mut self, mode: Mode, now: f64) {
         if mode != self.tools.mode() {
-            self.cancel_gesture();
+            self.runner.cancel_gesture();
         }
         let dropped = self.tools.set_mode(mode);
         self.shared.borrow_mut().mode = mode;
@@ -613,12 +263,7 @@ impl SketchApp {
         };
         if opened != self.opened {
             self.opened = opened;
-            self.cancel_offloaded(now);
-            // A replay still running would replace the document opened meanwhile.
-            self.cancel_replay(now);
-            self.cancel_gesture();
-            self.edit = None;
-            self.waiting.clear();
+            self.run(now, |r, cx| r.drop_all(cx));
             let dropped = self.tools.cancel();
             self.take_output(dropped, now);
         }
@@ -673,7 +318,44 @@ impl SketchApp {
     }
 
     fn set_status(&mut self, message: String, now: f64) {
-        self.status = Some((message, now + STATUS_SECONDS));
+        self.status.say(message, now);
+    }
+
+    /// Runs `f` on the edit runner, lending it what it works with.
+    fn run<R>(&mut self, now: f64, f: impl FnOnce(&mut EditRunner, &mut Cx<'_>) -> R) -> R {
+        let mut cx = Cx {
+            shared: &self.shared,
+            tools: &mut self.tools,
+            status: &mut self.status,
+            frame_from: &mut self.frame_after_rebuild,
+            now,
+        };
+        f(&mut self.runner, &mut cx)
+    }
+
+    /// Applies what a tool produced: to the edit, or to the view, the backdrop, playing.
+    fn take_output(&mut self, output: ToolOutput, now: f64) {
+        match self.run(now, |r, cx| r.take_output(output, cx)) {
+            Some(ToolOutput::Face { point, normal }) => {
+                self.shared.borrow_mut().camera.face(point, normal);
+            }
+            Some(ToolOutput::Backdrop(load)) => {
+                if !load {
+                    self.backdrop.remove();
+                } else if let Err(message) = self.backdrop.pick() {
+                    self.set_status(message, now);
+                }
+            }
+            Some(ToolOutput::Play) => {
+                let played =
+                    Playback::start(self.shared.borrow().editor.document(), clock::now_ms());
+                match played {
+                    Ok(playback) => self.playback = Some(playback),
+                    Err(message) => self.set_status(message, now),
+                }
+            }
+            _ => {}
+        }
     }
 
     /// Imports files in two frames: this frame says what is being imported, the next one
@@ -686,20 +368,24 @@ impl SketchApp {
         if let Some(message) = self.backdrop.poll(ctx) {
             self.set_status(message, now);
         }
-        if self.is_busy() {
+        if self.runner.is_busy() {
             // What comes next applies to the imported or replayed document: it waits.
             return;
         }
         if let Some(incoming) = self.announced_import.take() {
             match incoming {
-                files::Incoming::Import(input, reply) => self.begin_import(input, reply, now),
+                files::Incoming::Import(input, reply) => {
+                    self.run(now, |r, cx| r.begin_import(input, reply, cx))
+                }
                 files::Incoming::Session { name, bytes } => self.open_session(&name, bytes, now),
-                files::Incoming::Replay(json, reply) => self.begin_replay(&json, reply, now),
+                files::Incoming::Replay(json, reply) => {
+                    self.run(now, |r, cx| r.begin_replay(&json, reply, cx))
+                }
             }
         }
         let incoming = imports.borrow_mut().pop_front();
         if let Some(files::Incoming::Replay(json, reply)) = incoming {
-            self.begin_replay(&json, reply, now);
+            self.run(now, |r, cx| r.begin_replay(&json, reply, cx));
         } else if let Some(incoming) = incoming {
             let (name, bytes): (&str, usize) = match &incoming {
                 files::Incoming::Import(input, _) => {
@@ -713,107 +399,6 @@ impl SketchApp {
             self.announced_import = Some(incoming);
             ctx.request_repaint();
         }
-    }
-
-    /// Begins replaying a session (the page API's `replay`): parsed now, its ops applied over
-    /// the next frames (an import's files read by the worker), the document replaced once
-    /// it is through. Bad JSON or a refused op changes nothing.
-    fn begin_replay(&mut self, json: &str, reply: files::Reply, now: f64) {
-        match Session::from_json(json) {
-            Ok(session) => {
-                self.replay = Some(ReplayInProgress {
-                    replay: Replay::new(session.ops),
-                    job: None,
-                    reply,
-                });
-            }
-            Err(e) => {
-                self.set_status(e.to_string(), now);
-                reply.send(Err(e.to_string()));
-            }
-        }
-    }
-
-    /// Runs the replay's steps while [`FRAME_BUDGET_MS`] lasts, and opens its document once
-    /// it is through.
-    fn step_replay(&mut self, ctx: &egui::Context) {
-        let now = ctx.input(|i| i.time);
-        let Some(replaying) = self.replay.as_mut() else {
-            return;
-        };
-        let started = clock::now_ms();
-        let stepped = loop {
-            // An import's read and a curve op's or fine creation's result: in the worker,
-            // as when the user makes them.
-            if let Some(edit) = replaying.replay.edit_mut()
-                && let HandOver::Waiting =
-                    hand_over(&mut self.offload, &mut replaying.job, edit, now)
-            {
-                break Ok(false);
-            }
-            match replaying.replay.step() {
-                Ok(Progress::Done) => break Ok(true),
-                Ok(_) if clock::now_ms() - started < FRAME_BUDGET_MS => {}
-                Ok(_) => {
-                    ctx.request_repaint();
-                    break Ok(false);
-                }
-                Err(e) => break Err(e),
-            }
-        };
-        match stepped {
-            Ok(false) => {}
-            Ok(true) => {
-                if let Some(replaying) = self.replay.take() {
-                    self.shared
-                        .borrow_mut()
-                        .open(replaying.replay.into_editor());
-                    replaying.reply.send(Ok(()));
-                }
-                // Followed now, not in the next frame: a replay the page starts as soon as
-                // this one's Promise resolves would be taken for the old document's, and
-                // cancelled.
-                self.follow_page(now);
-                ctx.request_repaint();
-            }
-            Err(e) => {
-                if let Some(replaying) = self.replay.take() {
-                    replaying.reply.send(Err(e.to_string()));
-                }
-                self.set_status(format!("Could not replay the session: {e}"), now);
-            }
-        }
-    }
-
-    /// Drops the replay in progress: the document stays as it was.
-    fn cancel_replay(&mut self, now: f64) {
-        let Some(replaying) = self.replay.take() else {
-            return;
-        };
-        if let Some((job, _)) = replaying.job {
-            self.offload.cancel(job);
-        }
-        let why = String::from("The replay was cancelled.");
-        self.set_status(why.clone(), now);
-        replaying.reply.send(Err(why));
-    }
-
-    /// Begins importing: in the page the worker reads the files while the view keeps
-    /// drawing, with a progress line and Cancel; the import lands as one undoable step.
-    fn begin_import(&mut self, input: ImportInput, reply: files::Reply, now: f64) {
-        let name = input.files[0].name.clone();
-        let bytes = files::import_bytes(&input);
-        self.status = None;
-        self.begin(Op::Import(input), false, now);
-        if self.edit.is_none() {
-            let why = self.status.as_ref().map(|(why, _)| why.clone());
-            return reply.send(Err(why.unwrap_or_default()));
-        }
-        self.import = Some(ImportInProgress {
-            name,
-            megabytes: bytes as f64 / 1e6,
-            reply,
-        });
     }
 
     /// Opens a session file as a document of its own (its history comes with it). A file
@@ -830,7 +415,7 @@ impl SketchApp {
                 return self.set_status(sentence, now);
             }
         };
-        self.cancel_gesture();
+        self.runner.cancel_gesture();
         let had_work = !self.shared.borrow().editor.ops().is_empty();
         #[cfg(target_arch = "wasm32")]
         {
@@ -856,7 +441,7 @@ impl SketchApp {
     /// The page's documents panel: `"show"` it, or `"newDocument"` (which keeps the document
     /// shown). The desktop build has no store, and its toolbar disables both.
     fn page_documents(&mut self, method: &str, now: f64) {
-        self.finish_edit(now);
+        self.run(now, |r, cx| r.finish_edit(cx));
         #[cfg(target_arch = "wasm32")]
         if let Err(why) = crate::page_store::documents(method) {
             self.set_status(format!("Could not open the documents: {why}"), now);
@@ -866,7 +451,7 @@ impl SketchApp {
     }
 
     fn save_session(&mut self, now: f64) {
-        self.finish_edit(now);
+        self.run(now, |r, cx| r.finish_edit(cx));
         let text = self.shared.borrow().editor.session_json();
         let message = match files::download(text.as_bytes(), files::Download::Session) {
             Ok(name) => format!("Saved the session as {name}."),
@@ -883,7 +468,7 @@ impl SketchApp {
     }
 
     fn export(&mut self, now: f64) {
-        self.finish_edit(now);
+        self.run(now, |r, cx| r.finish_edit(cx));
         let bytes = sketchmesh_core::io::write_glb(self.shared.borrow().editor.document());
         let message = match files::download(&bytes, files::Download::Glb) {
             Ok(name) => format!("Exported {name} ({:.1} MB).", bytes.len() as f64 / 1e6),
@@ -903,7 +488,7 @@ impl SketchApp {
                 || i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::Y))
         });
         if redo {
-            self.begin(Op::Redo, false, now);
+            self.run(now, |r, cx| r.begin(Op::Redo, false, cx));
         }
         if ctx.input_mut(|i| i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::Z))) {
             self.undo(now);
@@ -927,8 +512,8 @@ impl SketchApp {
         let pressed = |key| ctx.input_mut(|i| i.consume_shortcut(&shortcut(Modifiers::NONE, key)));
         if pressed(Key::Escape) {
             // Stops what runs: an import being read, an op computed, a replay, the gesture.
-            self.cancel_offloaded(now);
-            self.cancel_replay(now);
+            self.run(now, |r, cx| r.cancel_offloaded(cx));
+            self.run(now, |r, cx| r.cancel_replay(cx));
             self.drop_gesture(now);
         }
         for (mode, key) in self.tools.keys() {
@@ -1014,8 +599,8 @@ impl SketchApp {
     /// beginning a gesture, and the router then sends their moves to it), then followed.
     fn handle_hands(&mut self, hands: &Hands, viewport: egui::Rect, now: f64) {
         if matches!(hands, Hands::Down(_)) {
-            self.cancel_gesture();
-            self.finish_edit_unless_offloaded(now);
+            self.runner.cancel_gesture();
+            self.run(now, |r, cx| r.finish_edit_unless_offloaded(cx));
         }
         let output = self.feed_tool(viewport, |tools, view, doc| {
             tools.on_hands(hands, view, doc)
@@ -1057,7 +642,9 @@ impl SketchApp {
                         .camera
                         .apply(*action, viewport.height().into()),
                     Routed::Tap(TapCommand::Undo) => self.undo(now),
-                    Routed::Tap(TapCommand::Redo) => self.begin(Op::Redo, false, now),
+                    Routed::Tap(TapCommand::Redo) => {
+                        self.run(now, |r, cx| r.begin(Op::Redo, false, cx))
+                    }
                     Routed::Tap(TapCommand::DoubleTap(at)) => self.double_tap(*at, viewport),
                     Routed::Tap(TapCommand::LongPress(at)) => self.long_press(*at, viewport, now),
                     Routed::Tool(event) if self.holds_stroke(event) => {}
@@ -1071,8 +658,8 @@ impl SketchApp {
                             self.set_mode(Mode::Erase, now);
                         }
                         if matches!(event, ToolEvent::Begin(_)) {
-                            self.cancel_gesture();
-                            self.finish_edit_unless_offloaded(now);
+                            self.runner.cancel_gesture();
+                            self.run(now, |r, cx| r.finish_edit_unless_offloaded(cx));
                         }
                         let output = self.feed_tool(viewport, |tools, view, doc| {
                             tools.on_event(event, view, doc)
@@ -1103,7 +690,7 @@ impl SketchApp {
     /// [`SketchApp::is_busy`]): such a stroke draws nothing, from its beginning to its end.
     fn holds_stroke(&mut self, event: &ToolEvent) -> bool {
         if matches!(event, ToolEvent::Begin(_)) {
-            self.holding_stroke = self.is_busy();
+            self.holding_stroke = self.runner.is_busy();
         }
         let held = self.holding_stroke;
         if matches!(event, ToolEvent::End(_) | ToolEvent::Cancel) {
@@ -1162,8 +749,12 @@ impl SketchApp {
                     shared.camera.frame(min, max);
                 }
             }
-            ContextAction::Duplicate => self.begin(Op::Duplicate(ModelInput { model }), false, now),
-            ContextAction::Delete => self.begin(Op::Delete(ModelInput { model }), false, now),
+            ContextAction::Duplicate => self.run(now, |r, cx| {
+                r.begin(Op::Duplicate(ModelInput { model }), false, cx)
+            }),
+            ContextAction::Delete => self.run(now, |r, cx| {
+                r.begin(Op::Delete(ModelInput { model }), false, cx)
+            }),
             ContextAction::Oversketch => self.set_mode(Mode::Oversketch, now),
         }
     }
@@ -1184,11 +775,14 @@ impl SketchApp {
             }
         }
         let started = clock::now_ms();
-        self.step_edit(ui.ctx());
-        self.step_replay(ui.ctx());
+        let (ctx, now) = (ui.ctx().clone(), ui.input(|i| i.time));
+        self.run(now, |r, cx| r.step_edit(&ctx, cx));
+        if self.run(now, |r, cx| r.step_replay(&ctx, cx)) {
+            self.follow_page(now);
+        }
         self.frame_work_ms += clock::now_ms() - started;
         let shared = self.shared.borrow();
-        let shown = (self.edit.as_ref()).map_or(shared.editor.document(), Edit::document);
+        let shown = (self.runner.edit()).map_or(shared.editor.document(), Edit::document);
         self.textures.poll(shown, ui.ctx());
         drop(shared);
         self.update_geometry(ui.ctx());
@@ -1211,10 +805,17 @@ impl SketchApp {
         }
         self.backdrop.paint(ui, viewport);
         self.live_stroke_ui(ui, viewport);
-        if let Some(edit) = &self.edit {
+        if let Some(edit) = self.runner.edit() {
             let levels = falloff_levels(edit);
             let camera = self.shared.borrow().camera.camera();
-            (self.falloff_panel).ui(ui, viewport, &camera, edit, self.edits_begun, levels);
+            (self.falloff_panel).ui(
+                ui,
+                viewport,
+                &camera,
+                edit,
+                self.runner.edits_begun(),
+                levels,
+            );
         }
         if let Some(at) = self.router.pen_hover().filter(|at| viewport.contains(*at)) {
             // Where the pen would touch: a ring that shows on light and dark alike.
@@ -1227,31 +828,18 @@ impl SketchApp {
             painter.circle_stroke(at, 5.0, egui::Stroke::new(1.5, egui::Color32::WHITE));
         }
         self.view_rect = viewport;
-        let idle = self.stroke_preview().is_none() && self.edit.is_none();
-        let progress = match (&self.import, &self.replay) {
-            (Some(import), _) => Some(format!(
-                "Importing {} ({:.1} MB)…",
-                import.name, import.megabytes
-            )),
-            (None, Some(replaying)) => {
-                let (done, of) = replaying.replay.done_of();
-                Some(format!(
-                    "Replaying the session: op {} of {of}…",
-                    (done + 1).min(of)
-                ))
-            }
-            (None, None) => self.computing(ui.input(|i| i.time)),
-        };
+        let idle = self.stroke_preview().is_none() && self.runner.edit().is_none();
+        let progress = self.runner.progress(ui.input(|i| i.time));
         self.shared.borrow_mut().progress.clone_from(&progress);
         if self.shared.borrow().thumbnails.is_capturing() {
             // A thumbnail is being taken: the shapes only.
         } else if let Some(what) = progress {
             if panels::progress::progress_ui(ui.ctx(), viewport, &what) {
                 let now = ui.input(|i| i.time);
-                self.cancel_offloaded(now);
-                self.cancel_replay(now);
+                self.run(now, |r, cx| r.cancel_offloaded(cx));
+                self.run(now, |r, cx| r.cancel_replay(cx));
             }
-        } else if let Some((status, _)) = &self.status {
+        } else if let Some(status) = self.status.message() {
             status_ui(ui, viewport, status);
         } else if self.shared.borrow().editor.document().is_empty() && idle {
             let text = "Draw a closed outline to make a shape. Two fingers or right-drag orbit.";
@@ -1265,12 +853,12 @@ impl SketchApp {
     /// edit in progress shows, such as a shape being created), and moves a model's vertices
     /// in place while the edit moves them (a pull's preview).
     fn update_geometry(&mut self, ctx: &egui::Context) {
-        let edit = self.edit.as_ref();
+        let edit = self.runner.edit();
         let source = (
             self.shared.borrow().revision(),
             edit.map(Edit::revision)
                 .filter(|&revision| revision != 0)
-                .map(|revision| (self.edits_begun, revision)),
+                .map(|revision| (self.runner.edits_begun(), revision)),
             self.textures.version,
             self.options.wireframe,
         );
@@ -1397,7 +985,7 @@ impl SketchApp {
         };
         let time = playback
             .advance(clock::now_ms())
-            .filter(|_| self.edit.is_none());
+            .filter(|_| self.runner.edit().is_none());
         let Some(time) = time else {
             self.playback = None;
             // Rebuilt from the document at the next frame.
@@ -1431,10 +1019,10 @@ impl SketchApp {
         let shared = self.shared.borrow();
         let doc = shared.editor.document();
         let scene = Scene {
-            shown: (self.edit.as_ref()).map_or(doc, Edit::document),
+            shown: (self.runner.edit()).map_or(doc, Edit::document),
             doc,
-            edit: self.edit.as_ref(),
-            computing: self.worker_job.is_some(),
+            edit: self.runner.edit(),
+            computing: self.runner.is_computing(),
             camera: shared.camera.camera(),
             viewport,
         };
@@ -1442,14 +1030,14 @@ impl SketchApp {
             hint_ui(ui, viewport, hint);
         }
         self.tools.overlay(ui, &scene);
-        if let Some(kept) = self.edit.as_ref().and_then(Edit::limited_move) {
+        if let Some(kept) = self.runner.edit().and_then(Edit::limited_move) {
             let said = format!(
                 "Held at {:.0}% of the move: more would fold the part through itself",
                 100.0 * kept
             );
             hint_ui(ui, viewport, &said);
         }
-        if let Some(o) = self.edit.as_ref().and_then(Edit::outline) {
+        if let Some(o) = self.runner.edit().and_then(Edit::outline) {
             outline_ui(ui, viewport, &o.points, o.is_confident, false);
         }
         for mark in self.tools.marks(&scene.camera) {
@@ -1460,7 +1048,7 @@ impl SketchApp {
         }
         self.tools.edit_overlay(ui, &scene);
         // The strokes made while the worker computes an edit wait for it, shown dimmer.
-        for op in &self.waiting {
+        for op in self.runner.waiting() {
             let points = op.stroke_points();
             stroke_ui(ui, viewport, &points, egui::Color32::from_rgb(200, 170, 90));
         }
@@ -1474,21 +1062,6 @@ fn falloff_levels(edit: &Edit) -> usize {
         Op::RegionEdit(input) => input.levels.as_ref().map_or(5, Vec::len),
         _ => 5,
     }
-}
-
-/// The latest message, at the bottom of the view on a dark band, wrapped to its width: the
-/// view never moves or shrinks for a message, however long.
-fn status_ui(ui: &egui::Ui, viewport: egui::Rect, text: &str) {
-    let color = ui.visuals().warn_fg_color;
-    let font = egui::FontId::proportional(15.0);
-    let width = (viewport.width() - 40.0).max(80.0);
-    let galley = ui.painter().layout(text.to_owned(), font, color, width);
-    let size = galley.size();
-    let pos = viewport.center_bottom() - egui::vec2(0.5 * size.x, size.y + 18.0);
-    let band = egui::Rect::from_min_size(pos, size).expand(8.0);
-    ui.painter()
-        .rect_filled(band, 6.0, egui::Color32::from_rgb(20, 21, 25));
-    ui.painter().galley(pos, galley, color);
 }
 
 /// A lasso (a line) or a brush stroke (a translucent band as wide as the brush) of the
@@ -1520,9 +1093,7 @@ impl eframe::App for SketchApp {
         let now = ctx.input(|i| i.time);
         self.follow_page(now);
         self.frame_work_ms = 0.0;
-        if self.status.as_ref().is_some_and(|(_, until)| *until < now) {
-            self.status = None;
-        }
+        self.status.expire(now);
         if self.is_playing() {
             ctx.request_repaint();
         }
@@ -1547,7 +1118,9 @@ impl eframe::App for SketchApp {
             .inner;
         match action {
             Some(panels::toolbar::Action::Undo) => self.undo(now),
-            Some(panels::toolbar::Action::Redo) => self.begin(Op::Redo, false, now),
+            Some(panels::toolbar::Action::Redo) => {
+                self.run(now, |r, cx| r.begin(Op::Redo, false, cx))
+            }
             Some(panels::toolbar::Action::FrameAll) => self.frame_all(),
             Some(panels::toolbar::Action::ResetView) => {
                 self.shared.borrow_mut().camera = OrbitCamera::default()
@@ -1580,154 +1153,6 @@ impl eframe::App for SketchApp {
         let Shared { editor, notes, .. } = &mut *shared;
         notes.follow((revision.opened, revision.edits), editor.notes());
         panels::notes::notes_ui(&ctx, notes);
-    }
-}
-
-/// What became of the long part of an edit, see [`hand_over`].
-enum HandOver {
-    /// Nothing for the worker: step the edit here.
-    Here,
-    /// The worker is on it: nothing to step here meanwhile.
-    Waiting,
-    /// The worker's answer landed in the edit, this long after it was handed over.
-    Landed { seconds: f64 },
-    /// The worker's preview of a gesture landed in the edit, this long after it was asked.
-    Previewed { seconds: f64 },
-}
-
-/// Hands the long, pure part of `edit` (an import's read, a curve op's result, a drag's
-/// preview) to the page's worker as `job`, or lands the worker's answer in it. A job in
-/// hand is polled whatever the edit needs now: a preview asked for while the pointer was
-/// down lands (and shows) before the committed result is asked for.
-fn hand_over(
-    offload: &mut Offload,
-    job: &mut Option<(JobId, f64)>,
-    edit: &mut Edit,
-    now: f64,
-) -> HandOver {
-    let work = match (edit.import_to_read(), edit.model_op_to_run()) {
-        (Some(input), _) => Work::Import(input),
-        (None, Some((models, op))) => Work::ModelOp(models, op),
-        (None, None) => match edit.preview_to_run() {
-            Some((models, op, version)) => Work::Preview(models, op, version),
-            // A preview asked for while the pointer was down, polled (what a job computes
-            // is sent once, the first time it is polled).
-            None if job.is_some() => Work::Preview(&[], edit.op(), edit.version()),
-            None => return HandOver::Here,
-        },
-    };
-    let (id, since) = *job.get_or_insert_with(|| (offload.job(), now));
-    match offload.poll(id, work) {
-        Poll::Pending => HandOver::Waiting,
-        Poll::Arrived(Answer::Moved(moved)) => {
-            *job = None;
-            edit.supply_preview(moved);
-            HandOver::Previewed {
-                seconds: now - since,
-            }
-        }
-        Poll::Arrived(answer) => {
-            *job = None;
-            supply(edit, answer);
-            HandOver::Landed {
-                seconds: now - since,
-            }
-        }
-        Poll::NotOffloaded => {
-            *job = None;
-            // Should the worker fail in the middle of a drag, the frames preview it again.
-            edit.preview_here();
-            HandOver::Here
-        }
-    }
-}
-
-/// Lands the worker's answer in the edit it was computed for.
-fn supply(edit: &mut Edit, answer: Answer) {
-    match answer {
-        Answer::Imported(imported) => edit.supply_import(imported),
-        Answer::Model(changed) => edit.supply_model(changed),
-        Answer::Moved(moved) => edit.supply_preview(moved),
-    }
-}
-
-/// An import being read (in the page, by the worker): what the progress line says, and who
-/// waits for it to land.
-struct ImportInProgress {
-    name: String,
-    megabytes: f64,
-    reply: files::Reply,
-}
-
-/// A session being replayed over frames: its steps, the worker's job for the op in progress
-/// (as [`hand_over`] keeps it), and who waits for the result.
-struct ReplayInProgress {
-    replay: Replay,
-    job: Option<(JobId, f64)>,
-    reply: files::Reply,
-}
-
-/// The costs of the edit in progress, recorded in [`clock::Timings`] under its op's name as
-/// they become known (see [`clock::EditTimings`]).
-#[derive(Debug, Default)]
-struct EditClock {
-    name: &'static str,
-    /// The begin and the steps of its first frame, while the gesture goes on; `None` once
-    /// recorded.
-    begin_ms: Option<f64>,
-    /// The work since the input was complete, so far.
-    finish_ms: f64,
-}
-
-impl EditClock {
-    /// The clock of an edit of `name` whose begin took `ms`.
-    fn begun(name: &'static str, ms: f64, is_gesture: bool, timings: &mut clock::Timings) -> Self {
-        let mut edit_clock = EditClock {
-            name,
-            begin_ms: Some(ms),
-            finish_ms: 0.0,
-        };
-        if !is_gesture {
-            edit_clock.record_begin(timings);
-        }
-        edit_clock
-    }
-
-    fn record_begin(&mut self, timings: &mut clock::Timings) {
-        if let Some(ms) = self.begin_ms.take() {
-            clock::record(&mut timings.of(self.name).begin_ms, ms);
-        }
-    }
-
-    /// One frame's steps, taken while the gesture went on or after.
-    fn stepped(&mut self, ms: f64, was_gesture: bool, timings: &mut clock::Timings) {
-        match (&mut self.begin_ms, was_gesture) {
-            (Some(begin_ms), true) => {
-                *begin_ms += ms;
-                self.record_begin(timings);
-            }
-            (None, true) => clock::record(&mut timings.of(self.name).frame_ms, ms),
-            (_, false) => {
-                self.record_begin(timings);
-                self.finish_ms += ms;
-            }
-        }
-    }
-
-    /// The worker's part, which took `ms` while the page drew.
-    fn elsewhere(&self, ms: f64, timings: &mut clock::Timings) {
-        clock::record(&mut timings.of(self.name).elsewhere_ms, ms);
-    }
-
-    /// A preview the worker computed, which took `ms` (asked to shown) while the page drew.
-    fn previewed(&self, ms: f64, timings: &mut clock::Timings) {
-        clock::record(&mut timings.of(self.name).preview_ms, ms);
-    }
-
-    /// The finish, which took `ms`.
-    fn finished(&mut self, ms: f64, timings: &mut clock::Timings) {
-        self.record_begin(timings);
-        clock::record(&mut timings.of(self.name).finish_ms, self.finish_ms + ms);
     }
 }
 

@@ -9,6 +9,7 @@ pub mod autosave;
 pub mod backdrop;
 pub mod camera;
 pub mod clock;
+pub mod edit_runner;
 pub mod files;
 pub mod fonts;
 #[cfg(target_arch = "wasm32")]
@@ -22,6 +23,7 @@ pub mod panels;
 pub mod playback;
 pub mod render;
 pub mod shared;
+pub mod status;
 pub mod textures;
 pub mod thumbnail;
 pub mod tools;

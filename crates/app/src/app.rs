@@ -9,18 +9,18 @@
 
 use std::cell::RefCell;
 use std::rc::Rc;
-use std::sync::Arc;
 
 use eframe::egui_wgpu;
 use egui::{Key, KeyboardShortcut, Modifiers};
 use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::document::{Document, Edit, Editor, ModelInput, Op, StrokeInput, model_under};
 
+#[cfg(target_arch = "wasm32")]
 use crate::autosave;
 use crate::backdrop::Backdrop;
 use crate::camera::OrbitCamera;
 use crate::clock;
-use crate::edit_runner::{Cx, EditRunner, FRAME_BUDGET_MS};
+use crate::edit_runner::{Cx, EditRunner};
 use crate::files;
 use crate::input::router::{Hands, InputRouter, Routed};
 use crate::input::taps::TapCommand;
@@ -29,19 +29,11 @@ use crate::overlay::{centered_galley, hint_ui, outline_ui, stroke_ui};
 use crate::panels;
 use crate::panels::context_menu::{ContextAction, ContextMenu, context_menu_ui};
 use crate::playback::Playback;
-use crate::render::geometry::NormalsAhead;
-use crate::render::{SceneCallback, SceneGeometry, SceneRenderer, Uniforms, ViewOptions};
+use crate::render::SceneRenderer;
+use crate::scene_view::{SceneView, falloff_levels};
 pub use crate::shared::Shared;
 use crate::status::{Status, status_ui};
-use crate::textures::Textures;
 use crate::tools::{Mark, Mode, Scene, ToolEvent, ToolOutput, ToolSet, ViewCtx};
-
-/// A frame whose own work has taken this long (ms) leaves the scene's rebuild, then its
-/// upload, then the autosave, to the next frames, one each: a large result's landing (a
-/// million triangles decoded; their arrays built; uploaded; the session with the file
-/// written) is then four frames of at most about 100 ms in the page rather than one of
-/// 250 ms and one of 190.
-const SPREAD_AFTER_MS: f64 = 50.0;
 
 /// How many busy frames in a row may leave the autosave to the next one: more than the app
 /// spreads a large result's landing over (checked and committed; a large model's normals;
@@ -52,11 +44,6 @@ const AUTOSAVE_WAITS: u8 = 5;
 /// and writes in a later frame when a step ran past it.
 #[cfg(target_arch = "wasm32")]
 const AUTOSAVE_STEP_MS: f64 = 8.0;
-
-/// What the drawn scene was built from: the editor's revision, the edit's number and
-/// revision when it shows another document than the editor's, the textures' version, and
-/// whether the wireframe is shown (its edges are built only then).
-type GeometrySource = (autosave::Revision, Option<(u64, u64)>, u64, bool);
 
 /// The Sketchmesh app.
 pub struct SketchApp {
@@ -69,22 +56,6 @@ pub struct SketchApp {
     egui_pointer: crate::input::egui_pointer::EguiPointer,
     /// Samples queued by the browser's pointer listeners.
     pub web_samples: Rc<RefCell<std::collections::VecDeque<PointerSample>>>,
-    geometry: Arc<SceneGeometry>,
-    /// What `geometry` was built from: the editor's revision, and the edit's number and
-    /// revision when it shows another document than the editor's.
-    geometry_source: GeometrySource,
-    /// A scene built in a frame its work had filled, with what it was built from: the next
-    /// frame shows (and uploads) it.
-    stashed_geometry: Option<(GeometrySource, Arc<SceneGeometry>)>,
-    /// Imported models' textures, decoded for the view.
-    textures: Textures,
-    /// The edit generation whose moved model `geometry` shows, if it shows one (it is rebuilt
-    /// when the edit stops moving it).
-    shown_motion: Option<u64>,
-    /// Normals of a moved model, reused between frames.
-    moved_normals: Vec<glam::DVec3>,
-    /// The key-framed animation being played, if any.
-    playback: Option<Playback>,
     /// The reference image over the view, to trace a motion's frames.
     backdrop: Backdrop,
     /// A model's context actions, open after a long press on it.
@@ -94,19 +65,12 @@ pub struct SketchApp {
     holding_stroke: bool,
     /// The fall-off panel's painted disc, kept between frames.
     falloff_panel: panels::falloff::FalloffPanel,
-    /// What this frame's own work (the edit's steps and landing, the scene's rebuild) has
-    /// taken so far, in ms (see [`SPREAD_AFTER_MS`]).
-    frame_work_ms: f64,
-    /// Whether the last frame left the scene's rebuild to this one, which then does it
-    /// whatever its own work took.
-    rebuild_waited: bool,
-    /// The normals of large new models, computed a frame before their arrays.
-    normals_ahead: NormalsAhead,
     /// How many frames in a row left the autosave to the next (at most [`AUTOSAVE_WAITS`]).
     #[cfg(target_arch = "wasm32")]
     autosave_waits: u8,
-    options: ViewOptions,
     show_help: bool,
+    /// The 3D scene as drawn.
+    scene: SceneView,
     /// The status line.
     status: Status,
     /// The edit in progress and the work around it.
@@ -114,10 +78,7 @@ pub struct SketchApp {
     has_renderer: bool,
     /// An import announced this frame, parsed in the next one.
     announced_import: Option<files::Incoming>,
-    /// Frame the view once the geometry has been rebuilt: the models from this index on
-    /// (an import's; 0 after opening a session: all of them).
-    frame_after_rebuild: Option<usize>,
-    /// The document the tools work on (see [`autosave::Revision::opened`]): when the page
+    /// The document the tools work on (see [`crate::autosave::Revision::opened`]): when the page
     /// replaces it, the edit in progress belongs to the old one and is dropped.
     opened: u64,
     /// The 3D view's rectangle last frame, in points (thumbnails are cut to it).
@@ -158,42 +119,19 @@ impl SketchApp {
             #[cfg(not(target_arch = "wasm32"))]
             egui_pointer: Default::default(),
             web_samples: Default::default(),
-            geometry: Arc::new(SceneGeometry::default()),
             // Nothing built yet: no document has this revision.
-            geometry_source: (
-                autosave::Revision {
-                    opened: u64::MAX,
-                    edits: u64::MAX,
-                },
-                None,
-                0,
-                false,
-            ),
-            textures: Textures::default(),
-            shown_motion: None,
-            moved_normals: Vec::new(),
-            playback: None,
             backdrop: Backdrop::default(),
             context_menu: None,
             holding_stroke: false,
             falloff_panel: Default::default(),
-            frame_work_ms: 0.0,
-            stashed_geometry: None,
-            rebuild_waited: false,
-            normals_ahead: NormalsAhead::default(),
             #[cfg(target_arch = "wasm32")]
             autosave_waits: 0,
-            options: ViewOptions {
-                wireframe: false,
-                grid: true,
-                clay: false,
-            },
             show_help: false,
+            scene: SceneView::default(),
             status: Status::default(),
             runner: EditRunner::default(),
             has_renderer,
             announced_import: None,
-            frame_after_rebuild: None,
             opened: 0,
             view_rect: egui::Rect::NOTHING,
             erasing_from: None,
@@ -285,7 +223,7 @@ impl SketchApp {
             let revision = shared.revision();
             (revision, shared.autosave.is_pending(revision))
         };
-        let waits = self.is_scene_pending() || self.is_frame_spent(ctx);
+        let waits = self.scene.is_pending() || self.scene.is_frame_spent(ctx);
         if pending && self.autosave_waits < AUTOSAVE_WAITS && waits {
             self.autosave_waits += 1;
             return;
@@ -327,7 +265,7 @@ impl SketchApp {
             shared: &self.shared,
             tools: &mut self.tools,
             status: &mut self.status,
-            frame_from: &mut self.frame_after_rebuild,
+            frame_from: &mut self.scene.frame_after_rebuild,
             now,
         };
         f(&mut self.runner, &mut cx)
@@ -350,7 +288,7 @@ impl SketchApp {
                 let played =
                     Playback::start(self.shared.borrow().editor.document(), clock::now_ms());
                 match played {
-                    Ok(playback) => self.playback = Some(playback),
+                    Ok(playback) => self.scene.playback = Some(playback),
                     Err(message) => self.set_status(message, now),
                 }
             }
@@ -430,7 +368,7 @@ impl SketchApp {
             }
         }
         self.shared.borrow_mut().open(editor);
-        self.frame_after_rebuild = Some(0);
+        self.scene.frame_after_rebuild = Some(0);
         let kept = match had_work {
             true => " The previous document is kept under Documents.",
             false => "",
@@ -529,7 +467,7 @@ impl SketchApp {
             }
         }
         if pressed(Key::F) {
-            self.frame_all();
+            self.scene.frame_all(&self.shared);
         }
         if pressed(Key::R) || pressed(Key::Home) {
             self.shared.borrow_mut().camera = OrbitCamera::default();
@@ -540,44 +478,13 @@ impl SketchApp {
             }
         }
         if pressed(Key::W) {
-            self.options.wireframe = !self.options.wireframe;
+            self.scene.options.wireframe = !self.scene.options.wireframe;
         }
         if pressed(Key::G) {
-            self.options.grid = !self.options.grid;
+            self.scene.options.grid = !self.scene.options.grid;
         }
         if pressed(Key::H) || pressed(Key::F1) {
             self.show_help = !self.show_help;
-        }
-    }
-
-    /// Frames everything in the document, or resets the view when it is empty.
-    pub fn frame_all(&mut self) {
-        let mut shared = self.shared.borrow_mut();
-        match self.geometry.bounds {
-            Some((min, max)) => shared.camera.frame(min, max),
-            None => shared.camera = OrbitCamera::default(),
-        }
-    }
-
-    /// Frames the models from index `first` on (what an import brought, beside the others),
-    /// or everything when there are none (an import of points or lines only); the sketches
-    /// and point clouds around them are left out of view if they must.
-    fn frame_models_from(&mut self, first: usize) {
-        let bounds = {
-            let shared = self.shared.borrow();
-            let models = shared
-                .editor
-                .document()
-                .models
-                .get(first..)
-                .unwrap_or_default();
-            (models.iter())
-                .filter_map(|m| m.mesh.bounding_box())
-                .reduce(|(lo, hi), (a, b)| (lo.min(a), hi.max(b)))
-        };
-        match bounds {
-            Some((lo, hi)) => self.shared.borrow_mut().camera.frame(lo, hi),
-            None => self.frame_all(),
         }
     }
 
@@ -703,7 +610,7 @@ impl SketchApp {
     /// on tablets; on a model it does nothing more than its taps did.
     fn double_tap(&mut self, at: egui::Pos2, viewport: egui::Rect) {
         if self.model_at(at, viewport).is_none() {
-            self.frame_all();
+            self.scene.frame_all(&self.shared);
         }
     }
 
@@ -780,28 +687,16 @@ impl SketchApp {
         if self.run(now, |r, cx| r.step_replay(&ctx, cx)) {
             self.follow_page(now);
         }
-        self.frame_work_ms += clock::now_ms() - started;
+        self.scene.frame_work_ms += clock::now_ms() - started;
         let shared = self.shared.borrow();
         let shown = (self.runner.edit()).map_or(shared.editor.document(), Edit::document);
-        self.textures.poll(shown, ui.ctx());
+        self.scene.textures.poll(shown, ui.ctx());
         drop(shared);
-        self.update_geometry(ui.ctx());
+        let (edit, begun) = (self.runner.edit(), self.runner.edits_begun());
+        self.scene.update(ui.ctx(), &self.shared, edit, begun);
         if self.has_renderer {
             let camera = self.shared.borrow().camera.camera();
-            let aspect = f64::from(viewport.width() / viewport.height().max(1.0));
-            let callback = SceneCallback {
-                rect: viewport,
-                uniforms: Uniforms {
-                    clip_from_world: camera.clip_from_world(aspect).as_mat4().to_cols_array_2d(),
-                    eye: camera.eye.as_vec3().extend(1.0).to_array(),
-                    viewport: [0.0; 4],
-                },
-                geometry: self.geometry.clone(),
-                options: self.options,
-                repaint: ui.ctx().clone(),
-            };
-            ui.painter()
-                .add(egui_wgpu::Callback::new_paint_callback(viewport, callback));
+            self.scene.paint(ui, viewport, &camera);
         }
         self.backdrop.paint(ui, viewport);
         self.live_stroke_ui(ui, viewport);
@@ -847,164 +742,6 @@ impl SketchApp {
             let pos = viewport.center_bottom() - egui::vec2(0.0, 40.0 + galley.size().y);
             ui.painter().galley(pos, galley, egui::Color32::WHITE);
         }
-    }
-
-    /// Rebuilds the GPU arrays when the document drawn changed (the editor's, or the one the
-    /// edit in progress shows, such as a shape being created), and moves a model's vertices
-    /// in place while the edit moves them (a pull's preview).
-    fn update_geometry(&mut self, ctx: &egui::Context) {
-        let edit = self.runner.edit();
-        let source = (
-            self.shared.borrow().revision(),
-            edit.map(Edit::revision)
-                .filter(|&revision| revision != 0)
-                .map(|revision| (self.runner.edits_begun(), revision)),
-            self.textures.version,
-            self.options.wireframe,
-        );
-        let moved = edit.and_then(Edit::moved_model);
-        let motion_ended = self.shown_motion.is_some() && moved.is_none();
-        let rebuilt = source != self.geometry_source || motion_ended;
-        let stashed = self.stashed_geometry.take();
-        let had_stash = stashed.is_some();
-        if rebuilt && let Some((built_for, built)) = stashed.filter(|(s, _)| *s == source) {
-            // Built in the last frame, which its work had filled: shown from this one, which
-            // uploads it (that upload is this frame's work).
-            self.geometry = built;
-            self.geometry_source = built_for;
-            self.shown_motion = None;
-            self.frame_work_ms += SPREAD_AFTER_MS;
-        } else if rebuilt {
-            let waited = std::mem::take(&mut self.rebuild_waited);
-            if !waited && self.is_frame_spent(ctx) {
-                // The next frame rebuilds; this one draws what it drew (a moved model's
-                // positions belong to the document to be built).
-                self.rebuild_waited = true;
-                return;
-            }
-            let shared = self.shared.borrow();
-            let document = edit.map_or(shared.editor.document(), Edit::document);
-            let generation = self.geometry.generation + 1;
-            let started = clock::now_ms();
-            // The arrays of unchanged models are copied, unless textures were decoded since
-            // or the wireframe was turned on or off.
-            let (built_with, wanted) = (self.geometry_source, source);
-            let previous =
-                (built_with.2 == wanted.2 && built_with.3 == wanted.3).then_some(&*self.geometry);
-            // A large new model's normals take a frame of their own (one with little else to
-            // do, unless it waited already: not the one that landed it), its arrays the next.
-            let ahead = self.normals_ahead.is_wanted(document, previous);
-            if ahead && !waited && self.frame_work_ms > FRAME_BUDGET_MS {
-                self.rebuild_waited = true;
-                ctx.request_repaint();
-                return;
-            }
-            if ahead {
-                self.normals_ahead.compute(document, previous);
-            }
-            let large = !self.normals_ahead.is_empty();
-            let built = (!ahead).then(|| {
-                Arc::new(SceneGeometry::build(
-                    document,
-                    generation,
-                    &self.textures,
-                    previous,
-                    self.options.wireframe,
-                    &std::mem::take(&mut self.normals_ahead),
-                ))
-            });
-            // What a new document costs the frame before the GPU sees it (the page bench).
-            let ms = clock::now_ms() - started;
-            self.frame_work_ms += ms;
-            drop(shared);
-            clock::record(
-                &mut self.shared.borrow_mut().timings.of("scene").frame_ms,
-                ms,
-            );
-            let Some(built) = built else {
-                self.rebuild_waited = true;
-                ctx.request_repaint();
-                return;
-            };
-            if !had_stash && source != self.geometry_source && (large || self.is_frame_spent(ctx)) {
-                // Its upload waits for the next frame, which shows it (unless the document
-                // moves on meanwhile: then that frame builds and shows the next one); so
-                // does a large model's, whatever this frame took.
-                self.stashed_geometry = Some((source, built));
-                ctx.request_repaint();
-                return;
-            }
-            self.geometry = built;
-            self.geometry_source = source;
-            self.shown_motion = None;
-        }
-        if let (Some(edit), Some((index, positions))) = (edit, moved)
-            && self.shown_motion != Some(edit.generation())
-            && let Some(model) = edit.document().models.get(index)
-        {
-            let geometry = Arc::make_mut(&mut self.geometry);
-            geometry.move_model(index, model, positions, &mut self.moved_normals);
-            if let Some((shaded, vertices, weights)) = edit.region_falloff()
-                && shaded == index
-            {
-                geometry.shade_model(index, vertices, weights, falloff_levels(edit));
-            }
-            self.shown_motion = Some(edit.generation());
-        }
-        self.play_frame();
-        if rebuilt && let Some(first) = self.frame_after_rebuild.take() {
-            match first {
-                0 => self.frame_all(),
-                first => self.frame_models_from(first),
-            }
-        }
-    }
-
-    /// Whether the scene's rebuild is under way over frames (its normals, its arrays or their
-    /// upload still to come): the autosave waits for it rather than share its frames.
-    #[cfg(target_arch = "wasm32")]
-    fn is_scene_pending(&self) -> bool {
-        self.rebuild_waited || self.stashed_geometry.is_some() || !self.normals_ahead.is_empty()
-    }
-
-    /// Whether this frame's own work has reached [`SPREAD_AFTER_MS`], so that what is left waits
-    /// for the next frame (which is asked for).
-    fn is_frame_spent(&self, ctx: &egui::Context) -> bool {
-        let spent = self.frame_work_ms >= SPREAD_AFTER_MS;
-        if spent {
-            ctx.request_repaint();
-        }
-        spent
-    }
-
-    /// Shows the animation's pose of each model while it plays; when it has played
-    /// through (or an edit began), the document's pose again.
-    fn play_frame(&mut self) {
-        let Some(playback) = &mut self.playback else {
-            return;
-        };
-        let time = playback
-            .advance(clock::now_ms())
-            .filter(|_| self.runner.edit().is_none());
-        let Some(time) = time else {
-            self.playback = None;
-            // Rebuilt from the document at the next frame.
-            self.geometry_source.1 = Some((u64::MAX, u64::MAX));
-            return;
-        };
-        let shared = self.shared.borrow();
-        let models = &shared.editor.document().models;
-        let geometry = Arc::make_mut(&mut self.geometry);
-        for (index, positions) in playback.poses(time) {
-            if let Some(model) = models.get(index) {
-                geometry.move_model(index, model, positions, &mut self.moved_normals);
-            }
-        }
-    }
-
-    /// Whether an animation is playing (the page then draws every frame).
-    fn is_playing(&self) -> bool {
-        self.playback.is_some()
     }
 
     /// The stroke in progress of the active tool.
@@ -1055,15 +792,6 @@ impl SketchApp {
     }
 }
 
-/// How many gray levels a region edit's fall-off shows: one per level of its op (5 by
-/// default).
-fn falloff_levels(edit: &Edit) -> usize {
-    match edit.op() {
-        Op::RegionEdit(input) => input.levels.as_ref().map_or(5, Vec::len),
-        _ => 5,
-    }
-}
-
 /// A lasso (a line) or a brush stroke (a translucent band as wide as the brush) of the
 /// optimize tool: green for what moves, orange for features that hold.
 fn mark_ui(ui: &egui::Ui, viewport: egui::Rect, mark: &Mark) {
@@ -1092,9 +820,9 @@ impl eframe::App for SketchApp {
         self.run_imports(&ctx);
         let now = ctx.input(|i| i.time);
         self.follow_page(now);
-        self.frame_work_ms = 0.0;
+        self.scene.frame_work_ms = 0.0;
         self.status.expire(now);
-        if self.is_playing() {
+        if self.scene.is_playing() {
             ctx.request_repaint();
         }
         let layout =
@@ -1110,7 +838,7 @@ impl eframe::App for SketchApp {
                     ui,
                     layout,
                     &shared.editor,
-                    &mut self.options,
+                    &mut self.scene.options,
                     &mut self.tools,
                     &mut self.show_help,
                 )
@@ -1121,7 +849,7 @@ impl eframe::App for SketchApp {
             Some(panels::toolbar::Action::Redo) => {
                 self.run(now, |r, cx| r.begin(Op::Redo, false, cx))
             }
-            Some(panels::toolbar::Action::FrameAll) => self.frame_all(),
+            Some(panels::toolbar::Action::FrameAll) => self.scene.frame_all(&self.shared),
             Some(panels::toolbar::Action::ResetView) => {
                 self.shared.borrow_mut().camera = OrbitCamera::default()
             }

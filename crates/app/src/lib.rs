@@ -22,6 +22,7 @@ pub mod page_store;
 pub mod panels;
 pub mod playback;
 pub mod render;
+pub mod scene_view;
 pub mod shared;
 pub mod status;
 pub mod textures;

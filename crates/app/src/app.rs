@@ -11,8 +11,6 @@ use std::cell::RefCell;
 use std::rc::Rc;
 
 use eframe::egui_wgpu;
-use egui::{Key, KeyboardShortcut, Modifiers};
-use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::document::{Document, Edit, Editor, ModelInput, Op, StrokeInput, model_under};
 
 #[cfg(target_arch = "wasm32")]
@@ -20,20 +18,23 @@ use crate::autosave;
 use crate::backdrop::Backdrop;
 use crate::camera::OrbitCamera;
 use crate::clock;
+use crate::command::Command;
 use crate::edit_runner::{Cx, EditRunner};
 use crate::files;
 use crate::input::router::{Hands, InputRouter, Routed};
 use crate::input::taps::TapCommand;
 use crate::input::{PointerSample, sample_clock};
-use crate::overlay::{centered_galley, hint_ui, outline_ui, stroke_ui};
+use crate::overlay::centered_galley;
 use crate::panels;
 use crate::panels::context_menu::{ContextAction, ContextMenu, context_menu_ui};
 use crate::playback::Playback;
 use crate::render::SceneRenderer;
 use crate::scene_view::{SceneView, falloff_levels};
 pub use crate::shared::Shared;
+use crate::shortcuts;
 use crate::status::{Status, status_ui};
-use crate::tools::{Mark, Mode, Scene, ToolEvent, ToolOutput, ToolSet, ViewCtx};
+use crate::tools::{Mode, Scene, ToolEvent, ToolOutput, ToolSet, ViewCtx};
+use crate::view_overlay;
 
 /// How many busy frames in a row may leave the autosave to the next one: more than the app
 /// spreads a large result's landing over (checked and committed; a large model's normals;
@@ -415,76 +416,35 @@ impl SketchApp {
         self.set_status(message, now);
     }
 
-    fn shortcuts(&mut self, ctx: &egui::Context) {
-        if ctx.egui_wants_keyboard_input() {
-            return;
-        }
-        let now = ctx.input(|i| i.time);
-        let shortcut = |modifiers, key| KeyboardShortcut::new(modifiers, key);
-        let redo = ctx.input_mut(|i| {
-            i.consume_shortcut(&shortcut(Modifiers::COMMAND | Modifiers::SHIFT, Key::Z))
-                || i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::Y))
-        });
-        if redo {
-            self.run(now, |r, cx| r.begin(Op::Redo, false, cx));
-        }
-        if ctx.input_mut(|i| i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::Z))) {
-            self.undo(now);
-        }
-        if ctx.input_mut(|i| i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::O))) {
-            self.import_files(ctx);
-        }
-        let save_session = ctx.input_mut(|i| {
-            i.consume_shortcut(&shortcut(Modifiers::COMMAND | Modifiers::SHIFT, Key::S))
-        });
-        if save_session {
-            self.save_session(now);
-        }
-        let export = ctx.input_mut(|i| {
-            i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::S))
-                || i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::E))
-        });
-        if export {
-            self.export(now);
-        }
-        let pressed = |key| ctx.input_mut(|i| i.consume_shortcut(&shortcut(Modifiers::NONE, key)));
-        if pressed(Key::Escape) {
-            // Stops what runs: an import being read, an op computed, a replay, the gesture.
-            self.run(now, |r, cx| r.cancel_offloaded(cx));
-            self.run(now, |r, cx| r.cancel_replay(cx));
-            self.drop_gesture(now);
-        }
-        for (mode, key) in self.tools.keys() {
-            if pressed(key) {
-                let outputs = {
-                    let shared = self.shared.borrow();
-                    self.tools.on_key(mode, key, shared.editor.document())
-                };
-                self.shared.borrow_mut().mode = self.tools.mode();
-                for output in outputs {
-                    self.take_output(output, now);
-                }
+    /// Does what the user asked for from the toolbar or the keyboard.
+    fn command(&mut self, command: Command, ctx: &egui::Context, now: f64) {
+        match command {
+            Command::Undo => self.undo(now),
+            Command::Redo => self.run(now, |r, cx| r.begin(Op::Redo, false, cx)),
+            Command::FrameAll => self.scene.frame_all(&self.shared),
+            Command::ResetView => self.shared.borrow_mut().camera = OrbitCamera::default(),
+            Command::NewDocument => self.page_documents("newDocument", now),
+            Command::Documents => self.page_documents("show", now),
+            Command::Import => self.import_files(ctx),
+            Command::Export => self.export(now),
+            Command::SaveSession => self.save_session(now),
+            Command::Mode(mode) => self.set_mode(mode, now),
+            Command::Tool(output) => self.take_output(*output, now),
+            Command::Stop => {
+                self.run(now, |r, cx| r.cancel_offloaded(cx));
+                self.run(now, |r, cx| r.cancel_replay(cx));
+                self.drop_gesture(now);
             }
-        }
-        if pressed(Key::F) {
-            self.scene.frame_all(&self.shared);
-        }
-        if pressed(Key::R) || pressed(Key::Home) {
-            self.shared.borrow_mut().camera = OrbitCamera::default();
-        }
-        for mode in Mode::ALL {
-            if pressed(mode.key()) {
+            Command::ToolKey(mode, key) => {
                 self.set_mode(mode, now);
+                let output = self
+                    .tools
+                    .on_key(key, self.shared.borrow().editor.document());
+                self.take_output(output, now);
             }
-        }
-        if pressed(Key::W) {
-            self.scene.options.wireframe = !self.scene.options.wireframe;
-        }
-        if pressed(Key::G) {
-            self.scene.options.grid = !self.scene.options.grid;
-        }
-        if pressed(Key::H) || pressed(Key::F1) {
-            self.show_help = !self.show_help;
+            Command::ToggleWireframe => self.scene.options.wireframe ^= true,
+            Command::ToggleGrid => self.scene.options.grid ^= true,
+            Command::ToggleHelp => self.show_help ^= true,
         }
     }
 
@@ -699,7 +659,19 @@ impl SketchApp {
             self.scene.paint(ui, viewport, &camera);
         }
         self.backdrop.paint(ui, viewport);
-        self.live_stroke_ui(ui, viewport);
+        let shared = self.shared.borrow();
+        let doc = shared.editor.document();
+        let edit = self.runner.edit();
+        let scene = Scene {
+            shown: edit.map_or(doc, Edit::document),
+            doc,
+            edit,
+            computing: self.runner.is_computing(),
+            camera: shared.camera.camera(),
+            viewport,
+        };
+        view_overlay::draw(ui, &scene, &self.tools, self.runner.waiting());
+        drop(shared);
         if let Some(edit) = self.runner.edit() {
             let levels = falloff_levels(edit);
             let camera = self.shared.borrow().camera.camera();
@@ -723,7 +695,7 @@ impl SketchApp {
             painter.circle_stroke(at, 5.0, egui::Stroke::new(1.5, egui::Color32::WHITE));
         }
         self.view_rect = viewport;
-        let idle = self.stroke_preview().is_none() && self.runner.edit().is_none();
+        let idle = self.tools.preview().is_none() && self.runner.edit().is_none();
         let progress = self.runner.progress(ui.input(|i| i.time));
         self.shared.borrow_mut().progress.clone_from(&progress);
         if self.shared.borrow().thumbnails.is_capturing() {
@@ -743,80 +715,16 @@ impl SketchApp {
             ui.painter().galley(pos, galley, egui::Color32::WHITE);
         }
     }
-
-    /// The stroke in progress of the active tool.
-    fn stroke_preview(&self) -> Option<&[StrokePoint]> {
-        self.tools.preview()
-    }
-
-    /// Draws over the view: the tool in use's hint and what it shows, what the edit in
-    /// progress shows (a move held back, the outline piece an over-sketch would replace),
-    /// the marks and the stroke in progress, and the strokes waiting for the worker.
-    fn live_stroke_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
-        let shared = self.shared.borrow();
-        let doc = shared.editor.document();
-        let scene = Scene {
-            shown: (self.runner.edit()).map_or(doc, Edit::document),
-            doc,
-            edit: self.runner.edit(),
-            computing: self.runner.is_computing(),
-            camera: shared.camera.camera(),
-            viewport,
-        };
-        if let Some(hint) = self.tools.hint(doc) {
-            hint_ui(ui, viewport, hint);
-        }
-        self.tools.overlay(ui, &scene);
-        if let Some(kept) = self.runner.edit().and_then(Edit::limited_move) {
-            let said = format!(
-                "Held at {:.0}% of the move: more would fold the part through itself",
-                100.0 * kept
-            );
-            hint_ui(ui, viewport, &said);
-        }
-        if let Some(o) = self.runner.edit().and_then(Edit::outline) {
-            outline_ui(ui, viewport, &o.points, o.is_confident, false);
-        }
-        for mark in self.tools.marks(&scene.camera) {
-            mark_ui(ui, viewport, &mark);
-        }
-        if let Some(raw) = self.stroke_preview() {
-            stroke_ui(ui, viewport, raw, egui::Color32::from_rgb(242, 199, 82));
-        }
-        self.tools.edit_overlay(ui, &scene);
-        // The strokes made while the worker computes an edit wait for it, shown dimmer.
-        for op in self.runner.waiting() {
-            let points = op.stroke_points();
-            stroke_ui(ui, viewport, &points, egui::Color32::from_rgb(200, 170, 90));
-        }
-    }
-}
-
-/// A lasso (a line) or a brush stroke (a translucent band as wide as the brush) of the
-/// optimize tool: green for what moves, orange for features that hold.
-fn mark_ui(ui: &egui::Ui, viewport: egui::Rect, mark: &Mark) {
-    let color = match mark.features {
-        false => egui::Color32::from_rgb(110, 220, 150),
-        true => egui::Color32::from_rgb(240, 150, 60),
-    };
-    let Some(radius) = mark.radius else {
-        return stroke_ui(ui, viewport, &mark.points, color);
-    };
-    let points: Vec<egui::Pos2> = (mark.points.iter())
-        .map(|p| viewport.min + egui::vec2(p.pos.x as f32, p.pos.y as f32))
-        .collect();
-    let band = egui::Stroke::new(2.0 * radius as f32, color.gamma_multiply(0.35));
-    match points.as_slice() {
-        [only] => ui.painter().circle_filled(*only, radius as f32, band.color),
-        _ => ui.painter().add(egui::Shape::line(points, band)),
-    };
 }
 
 impl eframe::App for SketchApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         let ctx = ui.ctx().clone();
         self.shared.borrow_mut().notes.take_escape(&ctx);
-        self.shortcuts(&ctx);
+        for command in shortcuts::read(&ctx, &self.tools) {
+            let now = ctx.input(|i| i.time);
+            self.command(command, &ctx, now);
+        }
         self.run_imports(&ctx);
         let now = ctx.input(|i| i.time);
         self.follow_page(now);
@@ -844,23 +752,8 @@ impl eframe::App for SketchApp {
                 )
             })
             .inner;
-        match action {
-            Some(panels::toolbar::Action::Undo) => self.undo(now),
-            Some(panels::toolbar::Action::Redo) => {
-                self.run(now, |r, cx| r.begin(Op::Redo, false, cx))
-            }
-            Some(panels::toolbar::Action::FrameAll) => self.scene.frame_all(&self.shared),
-            Some(panels::toolbar::Action::ResetView) => {
-                self.shared.borrow_mut().camera = OrbitCamera::default()
-            }
-            Some(panels::toolbar::Action::NewDocument) => self.page_documents("newDocument", now),
-            Some(panels::toolbar::Action::Documents) => self.page_documents("show", now),
-            Some(panels::toolbar::Action::Import) => self.import_files(&ctx),
-            Some(panels::toolbar::Action::Export) => self.export(now),
-            Some(panels::toolbar::Action::SaveSession) => self.save_session(now),
-            Some(panels::toolbar::Action::Mode(mode)) => self.set_mode(mode, now),
-            Some(panels::toolbar::Action::Tool(output)) => self.take_output(*output, now),
-            None => {}
+        if let Some(action) = action {
+            self.command(action, &ctx, now);
         }
         egui::CentralPanel::no_frame().show(ui, |ui| self.viewport_ui(ui));
         self.shared

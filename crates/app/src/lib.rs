@@ -9,6 +9,7 @@ pub mod autosave;
 pub mod backdrop;
 pub mod camera;
 pub mod clock;
+pub mod command;
 pub mod edit_runner;
 pub mod files;
 pub mod fonts;
@@ -24,11 +25,13 @@ pub mod playback;
 pub mod render;
 pub mod scene_view;
 pub mod shared;
+pub mod shortcuts;
 pub mod status;
 pub mod textures;
 pub mod thumbnail;
 pub mod tools;
 pub mod ui_size;
+pub mod view_overlay;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
 

@@ -6,32 +6,7 @@ use sketchmesh_core::document::Editor;
 use crate::render::ViewOptions;
 use crate::tools::{Mode, ToolOutput, ToolSet};
 
-/// A toolbar button the user pressed.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Action {
-    /// Undo the last operation.
-    Undo,
-    /// Redo the last undone operation.
-    Redo,
-    /// Frame everything.
-    FrameAll,
-    /// Back to the default view.
-    ResetView,
-    /// Keep the document and start an empty one.
-    NewDocument,
-    /// Show the documents kept in this browser.
-    Documents,
-    /// Pick glTF files to import.
-    Import,
-    /// Download the document as .glb.
-    Export,
-    /// Download the session as .sketchmesh.json.
-    SaveSession,
-    /// Switch to a tool.
-    Mode(Mode),
-    /// The active tool's panel asked for this.
-    Tool(Box<ToolOutput>),
-}
+pub use crate::command::Command as Action;
 
 /// Minimum target, in points, with a mouse or pen.
 const POINTER_TARGET: f32 = 36.0;

@@ -4,22 +4,13 @@
 //! editor, so one gesture is one undo step and every edit replays from the session. A tool
 //! whose op previews while it is drawn (pull, over-sketch) begins it as a gesture
 //! ([`ToolOutput::Begin`]) and feeds it samples; the app runs it as it runs every edit.
-//! Every tool implements [`Tool`]; [`registry`] lists them, one line each, and [`ToolSet`]
-//! holds one of each and routes events to the one in use.
+//! Every tool implements [`Tool`] in a folder of its own; [`registry`] declares them and
+//! lists them, one line each, and [`ToolSet`] holds one of each and routes events to the one
+//! in use.
 
-pub mod arrange;
 mod context;
-pub mod curve_stroke;
 pub mod draw;
-pub mod feature;
-pub mod handles;
-pub mod optimize;
-pub mod oversketch;
-pub mod pose;
-pub mod pull;
-pub mod region;
 pub mod registry;
-pub mod sketch;
 #[cfg(test)]
 mod test_support;
 pub mod tool;
@@ -130,11 +121,10 @@ impl ToolSet {
         own.chain(anywhere).collect()
     }
 
-    /// `key` was pressed for `mode`'s tool (see [`ToolSet::keys`]): it is made the tool in
-    /// use first if it is not; what it made of the switch and the key.
-    pub fn on_key(&mut self, mode: Mode, key: Key, doc: &Document) -> [ToolOutput; 2] {
-        let switched = self.set_mode(mode);
-        [switched, self.active_mut().on_key(key, doc)]
+    /// One of the tool in use's keys was pressed (see [`ToolSet::keys`]; a key taken from
+    /// anywhere makes its tool the one in use first).
+    pub fn on_key(&mut self, key: Key, doc: &Document) -> ToolOutput {
+        self.active_mut().on_key(key, doc)
     }
 
     /// What the active tool asks the user to do next, if anything.

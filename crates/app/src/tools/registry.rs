@@ -1,13 +1,32 @@
-//! Every tool, one registration line each, in toolbar order: the mode that selects it (its
+//! Every tool: its folder's module, and one registration line each, in toolbar order: the mode that selects it (its
 //! name in sessions and the autosave, in snake case) and how to make it. The toolbar, the
 //! help, the shortcuts and [`super::ToolSet`] read the tools from here.
 
 use std::sync::OnceLock;
 
 use super::tool::{Tool, ToolInfo};
-use super::{
-    arrange, curve_stroke, feature, handles, optimize, oversketch, pose, pull, region, sketch,
-};
+
+// The tools' folders, `tools/<name>/mod.rs`.
+#[path = "arrange/mod.rs"]
+pub mod arrange;
+#[path = "curve_stroke/mod.rs"]
+pub mod curve_stroke;
+#[path = "feature/mod.rs"]
+pub mod feature;
+#[path = "handles/mod.rs"]
+pub mod handles;
+#[path = "optimize/mod.rs"]
+pub mod optimize;
+#[path = "oversketch/mod.rs"]
+pub mod oversketch;
+#[path = "pose/mod.rs"]
+pub mod pose;
+#[path = "pull/mod.rs"]
+pub mod pull;
+#[path = "region/mod.rs"]
+pub mod region;
+#[path = "sketch/mod.rs"]
+pub mod sketch;
 
 /// Declares [`Mode`] (one variant a line, with its doc) and how each mode's tool is made.
 macro_rules! register_tools {

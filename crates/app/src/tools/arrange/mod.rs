@@ -14,10 +14,10 @@ use sketchmesh_core::document::{
     model_under, overlapping_model,
 };
 
-use super::context::{ToolOutput, ViewCtx};
-use super::draw::point;
-use super::tool::{Scene, Tool, ToolInfo};
 use crate::input::router::{Hands, ToolEvent};
+use crate::tools::context::{ToolOutput, ViewCtx};
+use crate::tools::draw::point;
+use crate::tools::tool::{Scene, Tool, ToolInfo};
 
 /// The move tool's name, icon, key and description.
 static INFO: ToolInfo = ToolInfo {

@@ -4,10 +4,10 @@
 use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::document::{CurveTypeInput, Document, Op, curve_type_toggle};
 
-use super::context::{ToolOutput, ViewCtx};
-use super::draw::DrawTool;
-use super::tool::{Tool, ToolInfo};
 use crate::input::router::ToolEvent;
+use crate::tools::context::{ToolOutput, ViewCtx};
+use crate::tools::draw::DrawTool;
+use crate::tools::tool::{Tool, ToolInfo};
 
 /// Which of the three tools a stroke along curves is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

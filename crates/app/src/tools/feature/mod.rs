@@ -18,11 +18,11 @@ use sketchmesh_core::document::{
 };
 use sketchmesh_core::feature::FeatureKind;
 
-use super::context::{ToolOutput, ViewCtx};
-use super::draw::{DrawTool, is_tap, point};
-use super::tool::{Mark, Scene, Tool, ToolInfo};
 use crate::input::router::ToolEvent;
 use crate::overlay::hint_ui;
+use crate::tools::context::{ToolOutput, ViewCtx};
+use crate::tools::draw::{DrawTool, is_tap, point};
+use crate::tools::tool::{Mark, Scene, Tool, ToolInfo};
 
 /// The feature tool's name, icon, key and description.
 static INFO: ToolInfo = ToolInfo {

@@ -18,10 +18,10 @@ use sketchmesh_core::document::{
 };
 use sketchmesh_core::skeleton::HandleKind;
 
-use super::context::{ToolOutput, ViewCtx};
-use super::draw::{DrawTool, is_tap, point};
-use super::tool::{Scene, Tool, ToolInfo};
 use crate::input::router::ToolEvent;
+use crate::tools::context::{ToolOutput, ViewCtx};
+use crate::tools::draw::{DrawTool, is_tap, point};
+use crate::tools::tool::{Scene, Tool, ToolInfo};
 
 /// The bend tool's name, icon, key and description.
 static INFO: ToolInfo = ToolInfo {

@@ -19,10 +19,10 @@ use sketchmesh_core::optimize::{
     quality_report,
 };
 
-use super::context::{ToolOutput, ViewCtx};
-use super::draw::{DrawTool, is_tap};
-use super::tool::{Mark, Tool, ToolInfo};
 use crate::input::router::ToolEvent;
+use crate::tools::context::{ToolOutput, ViewCtx};
+use crate::tools::draw::{DrawTool, is_tap};
+use crate::tools::tool::{Mark, Tool, ToolInfo};
 
 /// The optimize tool's name, icon, key and description.
 static INFO: ToolInfo = ToolInfo {

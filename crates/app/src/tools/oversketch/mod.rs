@@ -23,11 +23,11 @@ use sketchmesh_core::oversketch::{
     ManualHandle, OutlineKind, OversketchRoi, manual_handle_preview, pick_handle,
 };
 
-use super::context::{ToolOutput, ViewCtx};
-use super::draw::{DrawTool, point};
-use super::tool::{Scene, Tool, ToolInfo};
 use crate::input::router::ToolEvent;
 use crate::overlay::outline_ui;
+use crate::tools::context::{ToolOutput, ViewCtx};
+use crate::tools::draw::{DrawTool, point};
+use crate::tools::tool::{Scene, Tool, ToolInfo};
 
 /// The over-sketch tool's name, icon, key and description.
 static INFO: ToolInfo = ToolInfo {

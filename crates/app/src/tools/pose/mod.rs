@@ -25,11 +25,11 @@ use sketchmesh_core::volumetric::{
     COARSE_CONTROLS, CoarsePlaneCurve, Falloff, Plane, editing_plane, pick_curve,
 };
 
-use super::context::{ToolOutput, ViewCtx};
-use super::draw::{DrawTool, is_tap, point};
-use super::tool::{Mark, Scene, Tool, ToolInfo};
 use crate::input::router::ToolEvent;
 use crate::overlay::outline_ui;
+use crate::tools::context::{ToolOutput, ViewCtx};
+use crate::tools::draw::{DrawTool, is_tap, point};
+use crate::tools::tool::{Mark, Scene, Tool, ToolInfo};
 
 /// The pose tool's name, icon, key and description.
 static INFO: ToolInfo = ToolInfo {

@@ -5,10 +5,10 @@
 
 use sketchmesh_core::document::{Document, Op, StrokeInput};
 
-use super::context::{ToolOutput, ViewCtx};
-use super::draw::point;
-use super::tool::{Tool, ToolInfo};
 use crate::input::router::ToolEvent;
+use crate::tools::context::{ToolOutput, ViewCtx};
+use crate::tools::draw::point;
+use crate::tools::tool::{Tool, ToolInfo};
 
 /// The pull tool's name, icon, key and description.
 static INFO: ToolInfo = ToolInfo {

@@ -35,10 +35,10 @@ use handles::{HandleSession, Pressed};
 use profile::ProfileSession;
 pub use profile::ProfileView;
 
-use super::context::{ToolOutput, ViewCtx};
-use super::draw::{DrawTool, is_tap, point};
-use super::tool::{Mark, Scene, Tool, ToolInfo};
 use crate::input::router::ToolEvent;
+use crate::tools::context::{ToolOutput, ViewCtx};
+use crate::tools::draw::{DrawTool, is_tap, point};
+use crate::tools::tool::{Mark, Scene, Tool, ToolInfo};
 
 /// The region tool's name, icon, key and description.
 static INFO: ToolInfo = ToolInfo {

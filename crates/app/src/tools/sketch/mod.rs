@@ -12,11 +12,11 @@ use sketchmesh_core::document::{
     op_for_stroke, tunnel_from,
 };
 
-use super::context::{ToolOutput, ViewCtx};
-use super::draw::{DrawTool, is_tap};
-use super::tool::{Scene, Tool, ToolInfo};
 use crate::input::router::ToolEvent;
 use crate::overlay::{hint_ui, stroke_ui};
+use crate::tools::context::{ToolOutput, ViewCtx};
+use crate::tools::draw::{DrawTool, is_tap};
+use crate::tools::tool::{Scene, Tool, ToolInfo};
 use crate::ui_size::target_size;
 
 /// The sketch tool's name, icon, key and description.

@@ -11,7 +11,7 @@ use std::cell::RefCell;
 use std::rc::Rc;
 
 use eframe::egui_wgpu;
-use sketchmesh_core::document::{Document, Edit, Editor, ModelInput, Op, StrokeInput, model_under};
+use sketchmesh_core::document::{Document, Edit, ModelInput, Op, StrokeInput, model_under};
 
 #[cfg(target_arch = "wasm32")]
 use crate::autosave;
@@ -20,7 +20,7 @@ use crate::camera::OrbitCamera;
 use crate::clock;
 use crate::command::Command;
 use crate::edit_runner::{Cx, EditRunner};
-use crate::files;
+use crate::file_actions::FileActions;
 use crate::input::router::{Hands, InputRouter, Routed};
 use crate::input::taps::TapCommand;
 use crate::input::{PointerSample, sample_clock};
@@ -77,8 +77,8 @@ pub struct SketchApp {
     /// The edit in progress and the work around it.
     runner: EditRunner,
     has_renderer: bool,
-    /// An import announced this frame, parsed in the next one.
-    announced_import: Option<files::Incoming>,
+    /// The files the user opens and saves.
+    files: FileActions,
     /// The document the tools work on (see [`crate::autosave::Revision::opened`]): when the page
     /// replaces it, the edit in progress belongs to the old one and is dropped.
     opened: u64,
@@ -132,7 +132,7 @@ impl SketchApp {
             status: Status::default(),
             runner: EditRunner::default(),
             has_renderer,
-            announced_import: None,
+            files: FileActions::default(),
             opened: 0,
             view_rect: egui::Rect::NOTHING,
             erasing_from: None,
@@ -260,6 +260,18 @@ impl SketchApp {
         self.status.say(message, now);
     }
 
+    /// The file actions and the edit runner, and what they work with.
+    fn parts(&mut self, now: f64) -> (&mut FileActions, &mut EditRunner, Cx<'_>) {
+        let cx = Cx {
+            shared: &self.shared,
+            tools: &mut self.tools,
+            status: &mut self.status,
+            frame_from: &mut self.scene.frame_after_rebuild,
+            now,
+        };
+        (&mut self.files, &mut self.runner, cx)
+    }
+
     /// Runs `f` on the edit runner, lending it what it works with.
     fn run<R>(&mut self, now: f64, f: impl FnOnce(&mut EditRunner, &mut Cx<'_>) -> R) -> R {
         let mut cx = Cx {
@@ -297,125 +309,6 @@ impl SketchApp {
         }
     }
 
-    /// Imports files in two frames: this frame says what is being imported, the next one
-    /// parses (the page cannot repaint while the parser runs).
-    fn run_imports(&mut self, ctx: &egui::Context) {
-        let now = ctx.input(|i| i.time);
-        let dropped = ctx.input(|i| i.raw.dropped_files.clone());
-        let imports = self.shared.borrow().imports.clone();
-        files::accept_dropped(dropped, &imports, ctx);
-        if let Some(message) = self.backdrop.poll(ctx) {
-            self.set_status(message, now);
-        }
-        if self.runner.is_busy() {
-            // What comes next applies to the imported or replayed document: it waits.
-            return;
-        }
-        if let Some(incoming) = self.announced_import.take() {
-            match incoming {
-                files::Incoming::Import(input, reply) => {
-                    self.run(now, |r, cx| r.begin_import(input, reply, cx))
-                }
-                files::Incoming::Session { name, bytes } => self.open_session(&name, bytes, now),
-                files::Incoming::Replay(json, reply) => {
-                    self.run(now, |r, cx| r.begin_replay(&json, reply, cx))
-                }
-            }
-        }
-        let incoming = imports.borrow_mut().pop_front();
-        if let Some(files::Incoming::Replay(json, reply)) = incoming {
-            self.run(now, |r, cx| r.begin_replay(&json, reply, cx));
-        } else if let Some(incoming) = incoming {
-            let (name, bytes): (&str, usize) = match &incoming {
-                files::Incoming::Import(input, _) => {
-                    (&input.files[0].name, files::import_bytes(input))
-                }
-                files::Incoming::Session { name, bytes } => (name, bytes.len()),
-                files::Incoming::Replay(json, _) => ("the session", json.len()),
-            };
-            let what = format!("Opening {name} ({:.1} MB)…", bytes as f64 / 1e6);
-            self.set_status(what, now);
-            self.announced_import = Some(incoming);
-            ctx.request_repaint();
-        }
-    }
-
-    /// Opens a session file as a document of its own (its history comes with it). A file
-    /// that does not replay changes nothing. In the page, the document shown is kept first
-    /// (the documents panel lists it) and the autosave then follows the opened one.
-    fn open_session(&mut self, name: &str, bytes: Vec<u8>, now: f64) {
-        let replayed = String::from_utf8(bytes)
-            .map_err(|_| String::from("it is not text"))
-            .and_then(|text| Editor::replay_json(&text).map_err(|e| e.to_string()));
-        let editor = match replayed {
-            Ok(editor) => editor,
-            Err(why) => {
-                let sentence = format!("Could not open {name}: {why}. Nothing changed.");
-                return self.set_status(sentence, now);
-            }
-        };
-        self.runner.cancel_gesture();
-        let had_work = !self.shared.borrow().editor.ops().is_empty();
-        #[cfg(target_arch = "wasm32")]
-        {
-            let title = name
-                .trim_end_matches(".json")
-                .trim_end_matches(".sketchmesh");
-            let record = self.shared.borrow_mut().autosave_pieces();
-            if let Err(why) = crate::page_store::keep_and_start(record, title) {
-                let sentence =
-                    format!("Did not open {name}: the work shown could not be kept ({why}).");
-                return self.set_status(sentence, now);
-            }
-        }
-        self.shared.borrow_mut().open(editor);
-        self.scene.frame_after_rebuild = Some(0);
-        let kept = match had_work {
-            true => " The previous document is kept under Documents.",
-            false => "",
-        };
-        self.set_status(format!("Opened {name}.{kept}"), now);
-    }
-
-    /// The page's documents panel: `"show"` it, or `"newDocument"` (which keeps the document
-    /// shown). The desktop build has no store, and its toolbar disables both.
-    fn page_documents(&mut self, method: &str, now: f64) {
-        self.run(now, |r, cx| r.finish_edit(cx));
-        #[cfg(target_arch = "wasm32")]
-        if let Err(why) = crate::page_store::documents(method) {
-            self.set_status(format!("Could not open the documents: {why}"), now);
-        }
-        #[cfg(not(target_arch = "wasm32"))]
-        let _ = method;
-    }
-
-    fn save_session(&mut self, now: f64) {
-        self.run(now, |r, cx| r.finish_edit(cx));
-        let text = self.shared.borrow().editor.session_json();
-        let message = match files::download(text.as_bytes(), files::Download::Session) {
-            Ok(name) => format!("Saved the session as {name}."),
-            Err(error) => format!("Could not save the session: {error}"),
-        };
-        self.set_status(message, now);
-    }
-
-    fn import_files(&mut self, ctx: &egui::Context) {
-        let imports = self.shared.borrow().imports.clone();
-        if let Err(message) = files::pick_files(&imports, ctx) {
-            self.set_status(message, ctx.input(|i| i.time));
-        }
-    }
-
-    fn export(&mut self, now: f64) {
-        self.run(now, |r, cx| r.finish_edit(cx));
-        let bytes = sketchmesh_core::io::write_glb(self.shared.borrow().editor.document());
-        let message = match files::download(&bytes, files::Download::Glb) {
-            Ok(name) => format!("Exported {name} ({:.1} MB).", bytes.len() as f64 / 1e6),
-            Err(error) => format!("Could not export: {error}"),
-        };
-        self.set_status(message, now);
-    }
-
     /// Does what the user asked for from the toolbar or the keyboard.
     fn command(&mut self, command: Command, ctx: &egui::Context, now: f64) {
         match command {
@@ -423,11 +316,26 @@ impl SketchApp {
             Command::Redo => self.run(now, |r, cx| r.begin(Op::Redo, false, cx)),
             Command::FrameAll => self.scene.frame_all(&self.shared),
             Command::ResetView => self.shared.borrow_mut().camera = OrbitCamera::default(),
-            Command::NewDocument => self.page_documents("newDocument", now),
-            Command::Documents => self.page_documents("show", now),
-            Command::Import => self.import_files(ctx),
-            Command::Export => self.export(now),
-            Command::SaveSession => self.save_session(now),
+            Command::NewDocument | Command::Documents => {
+                let method = match command {
+                    Command::NewDocument => "newDocument",
+                    _ => "show",
+                };
+                let (files, runner, mut cx) = self.parts(now);
+                files.page_documents(method, runner, &mut cx);
+            }
+            Command::Import => {
+                let (files, _, mut cx) = self.parts(now);
+                files.import_files(ctx, &mut cx);
+            }
+            Command::Export => {
+                let (files, runner, mut cx) = self.parts(now);
+                files.export(runner, &mut cx);
+            }
+            Command::SaveSession => {
+                let (files, runner, mut cx) = self.parts(now);
+                files.save_session(runner, &mut cx);
+            }
             Command::Mode(mode) => self.set_mode(mode, now),
             Command::Tool(output) => self.take_output(*output, now),
             Command::Stop => {
@@ -725,7 +633,12 @@ impl eframe::App for SketchApp {
             let now = ctx.input(|i| i.time);
             self.command(command, &ctx, now);
         }
-        self.run_imports(&ctx);
+        let now = ctx.input(|i| i.time);
+        if let Some(message) = self.backdrop.poll(&ctx) {
+            self.set_status(message, now);
+        }
+        let (files, runner, mut cx) = self.parts(now);
+        files.run_imports(&ctx, runner, &mut cx);
         let now = ctx.input(|i| i.time);
         self.follow_page(now);
         self.scene.frame_work_ms = 0.0;

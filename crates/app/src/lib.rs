@@ -11,6 +11,7 @@ pub mod camera;
 pub mod clock;
 pub mod command;
 pub mod edit_runner;
+pub mod file_actions;
 pub mod files;
 pub mod fonts;
 #[cfg(target_arch = "wasm32")]

@@ -113,3 +113,39 @@ impl Mode {
         self.info().about
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use egui::Key;
+
+    use super::*;
+
+    /// Every key that selects a tool selects only it: no two tools share one, and none is a
+    /// key a tool or the app takes for something else (see `crate::shortcuts`).
+    #[test]
+    fn each_tool_has_a_key_of_its_own() {
+        let tools: Vec<Box<dyn Tool>> = Mode::ALL.into_iter().map(Mode::tool).collect();
+        let app = [
+            Key::F,
+            Key::R,
+            Key::Home,
+            Key::W,
+            Key::G,
+            Key::H,
+            Key::F1,
+            Key::Escape,
+        ];
+        let taken: Vec<Key> = (tools.iter())
+            .flat_map(|tool| tool.keys().iter().chain(tool.keys_anywhere()))
+            .chain(&app)
+            .copied()
+            .collect();
+        for (k, mode) in Mode::ALL.into_iter().enumerate() {
+            let key = mode.key();
+            assert!(!taken.contains(&key), "{mode:?}'s key {key:?} is taken");
+            let others = Mode::ALL[k + 1..].iter().filter(|m| m.key() == key);
+            assert_eq!(others.count(), 0, "{mode:?} shares {key:?}");
+            assert!(std::ptr::eq(tools[k].info(), mode.info()), "{mode:?}");
+        }
+    }
+}

@@ -1,5 +1,5 @@
 //! Drawing over the 3D view, shared by the app and the tools: a hint line, a stroke as it
-//! will be stored, a piece of outline.
+//! will be stored, a piece of outline, a fall-off level's gray.
 
 use sketchmesh_core::curve::{StrokePoint, process_stroke};
 
@@ -70,4 +70,11 @@ pub fn stroke_ui(ui: &egui::Ui, viewport: egui::Rect, raw: &[StrokePoint], color
         ui.painter()
             .circle_filled(to_screen(&pair[1]), width * 0.5, color);
     }
+}
+
+/// The gray a fall-off level is drawn in on the model (`scene.wgsl`'s `falloff_gray`,
+/// gamma-encoded), so the panel and the model agree.
+pub fn falloff_gray(level: f64) -> u8 {
+    let linear = 0.04 + (1.0 - 0.04) * level.clamp(0.0, 1.0);
+    (linear.powf(1.0 / 2.2) * 255.0).round() as u8
 }

@@ -885,7 +885,7 @@ impl LevelsGraph {
             egui::Stroke::new(2.0, visuals.widgets.active.fg_stroke.color),
         ));
         for ((point, &w), &pinned) in points.iter().zip(&self.levels).zip(&self.pinned) {
-            let gray = crate::panels::falloff::falloff_gray(w);
+            let gray = crate::overlay::falloff_gray(w);
             painter.circle_filled(*point, 6.0, egui::Color32::from_gray(gray));
             painter.circle_stroke(*point, 6.0, egui::Stroke::new(1.0, egui::Color32::GRAY));
             if pinned {

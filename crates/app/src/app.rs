@@ -1,17 +1,17 @@
-//! The eframe app: wires input, the active tool, the editor and the 3D view together.
+//! The eframe app: wires input, the tools, the edit runner and the 3D view together.
 //!
-//! Data flows one way: pointer samples go through the [`InputRouter`] to the tool or the
-//! camera; a tool's gesture becomes one [`Op`], which the app begins as an [`Edit`] of the
-//! [`Editor`] (at pointer-down when the op previews while drawn), steps every frame within
-//! [`FRAME_BUDGET_MS`], draws, and finishes once done: the same edit `Editor::apply` runs,
-//! with no special case for any op. The view rebuilds its GPU arrays when the document drawn
-//! changes, and moves a model's vertices in place while an edit moves them.
+//! Data flows one way: pointer samples go through the [`InputRouter`] to the tool in use
+//! ([`ToolSet`]) or the camera; what a tool makes goes to the [`EditRunner`], which runs it
+//! as an edit of the document; the [`SceneView`] draws the document shown, and
+//! [`view_overlay`] what the tool and the edit show over it. The toolbar and the keys ask
+//! for [`Command`]s; [`FileActions`] opens and saves files. Nothing here names an op; the
+//! only tools named are Erase (the pen's eraser end) and Over-sketch (the context menu).
 
 use std::cell::RefCell;
 use std::rc::Rc;
 
 use eframe::egui_wgpu;
-use sketchmesh_core::document::{Document, Edit, ModelInput, Op, StrokeInput, model_under};
+use sketchmesh_core::document::{Document, Edit, StrokeInput, model_under};
 
 #[cfg(target_arch = "wasm32")]
 use crate::autosave;
@@ -171,7 +171,7 @@ impl SketchApp {
             self.run(now, |r, cx| r.cancel_offloaded(cx));
             self.run(now, |r, cx| r.cancel_replay(cx));
         } else {
-            self.run(now, |r, cx| r.begin(Op::Undo, false, cx));
+            self.run(now, |r, cx| r.undo(cx));
         }
     }
 
@@ -313,7 +313,7 @@ impl SketchApp {
     fn command(&mut self, command: Command, ctx: &egui::Context, now: f64) {
         match command {
             Command::Undo => self.undo(now),
-            Command::Redo => self.run(now, |r, cx| r.begin(Op::Redo, false, cx)),
+            Command::Redo => self.run(now, |r, cx| r.redo(cx)),
             Command::FrameAll => self.scene.frame_all(&self.shared),
             Command::ResetView => self.shared.borrow_mut().camera = OrbitCamera::default(),
             Command::NewDocument | Command::Documents => {
@@ -417,9 +417,7 @@ impl SketchApp {
                         .camera
                         .apply(*action, viewport.height().into()),
                     Routed::Tap(TapCommand::Undo) => self.undo(now),
-                    Routed::Tap(TapCommand::Redo) => {
-                        self.run(now, |r, cx| r.begin(Op::Redo, false, cx))
-                    }
+                    Routed::Tap(TapCommand::Redo) => self.run(now, |r, cx| r.redo(cx)),
                     Routed::Tap(TapCommand::DoubleTap(at)) => self.double_tap(*at, viewport),
                     Routed::Tap(TapCommand::LongPress(at)) => self.long_press(*at, viewport, now),
                     Routed::Tool(event) if self.holds_stroke(event) => {}
@@ -524,12 +522,11 @@ impl SketchApp {
                     shared.camera.frame(min, max);
                 }
             }
-            ContextAction::Duplicate => self.run(now, |r, cx| {
-                r.begin(Op::Duplicate(ModelInput { model }), false, cx)
-            }),
-            ContextAction::Delete => self.run(now, |r, cx| {
-                r.begin(Op::Delete(ModelInput { model }), false, cx)
-            }),
+            ContextAction::Duplicate | ContextAction::Delete => {
+                if let Some(op) = action.op(model) {
+                    self.run(now, |r, cx| r.begin(op, false, cx));
+                }
+            }
             ContextAction::Oversketch => self.set_mode(Mode::Oversketch, now),
         }
     }

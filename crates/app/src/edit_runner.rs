@@ -493,6 +493,16 @@ impl EditRunner {
         });
     }
 
+    /// Undoes the last op, once the edit in progress is finished (see [`EditRunner::begin`]).
+    pub fn undo(&mut self, cx: &mut Cx<'_>) {
+        self.begin(Op::Undo, false, cx);
+    }
+
+    /// Redoes the last op undone (see [`EditRunner::begin`]).
+    pub fn redo(&mut self, cx: &mut Cx<'_>) {
+        self.begin(Op::Redo, false, cx);
+    }
+
     /// What the progress line says while work runs off the frame: an import, a replay, the
     /// worker's op.
     pub fn progress(&self, now: f64) -> Option<String> {

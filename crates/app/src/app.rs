@@ -14,7 +14,7 @@ use eframe::egui_wgpu;
 use sketchmesh_core::document::{Document, Edit, StrokeInput, model_under};
 
 #[cfg(target_arch = "wasm32")]
-use crate::autosave;
+use crate::autosave_writer::AutosaveWriter;
 use crate::backdrop::Backdrop;
 use crate::camera::OrbitCamera;
 use crate::clock;
@@ -36,16 +36,6 @@ use crate::status::{Status, status_ui};
 use crate::tools::{Mode, Scene, ToolEvent, ToolOutput, ToolSet, ViewCtx};
 use crate::view_overlay;
 
-/// How many busy frames in a row may leave the autosave to the next one: more than the app
-/// spreads a large result's landing over (checked and committed; a large model's normals;
-/// its arrays; their upload begun).
-#[cfg(target_arch = "wasm32")]
-const AUTOSAVE_WAITS: u8 = 5;
-/// The autosave readies the session's new text in steps while this lasts in a frame (ms),
-/// and writes in a later frame when a step ran past it.
-#[cfg(target_arch = "wasm32")]
-const AUTOSAVE_STEP_MS: f64 = 8.0;
-
 /// The Sketchmesh app.
 pub struct SketchApp {
     shared: Rc<RefCell<Shared>>,
@@ -66,9 +56,9 @@ pub struct SketchApp {
     holding_stroke: bool,
     /// The fall-off panel's painted disc, kept between frames.
     falloff_panel: panels::falloff::FalloffPanel,
-    /// How many frames in a row left the autosave to the next (at most [`AUTOSAVE_WAITS`]).
+    /// Writes the autosave in the page.
     #[cfg(target_arch = "wasm32")]
-    autosave_waits: u8,
+    autosave: AutosaveWriter,
     show_help: bool,
     /// The 3D scene as drawn.
     scene: SceneView,
@@ -126,7 +116,7 @@ impl SketchApp {
             holding_stroke: false,
             falloff_panel: Default::default(),
             #[cfg(target_arch = "wasm32")]
-            autosave_waits: 0,
+            autosave: AutosaveWriter::default(),
             show_help: false,
             scene: SceneView::default(),
             status: Status::default(),
@@ -211,48 +201,6 @@ impl SketchApp {
         }
         if let Some(notice) = notice {
             self.set_status(notice, now);
-        }
-    }
-
-    /// Hands the document to the page's autosave when it is due, and keeps frames coming
-    /// while a change waits for it; a frame already spent ([`SPREAD_AFTER_MS`]), or one of
-    /// a rebuild spread over frames, leaves the write to one of the next [`AUTOSAVE_WAITS`].
-    #[cfg(target_arch = "wasm32")]
-    fn autosave(&mut self, ctx: &egui::Context, now: f64) {
-        let (revision, pending) = {
-            let shared = self.shared.borrow();
-            let revision = shared.revision();
-            (revision, shared.autosave.is_pending(revision))
-        };
-        let waits = self.scene.is_pending() || self.scene.is_frame_spent(ctx);
-        if pending && self.autosave_waits < AUTOSAVE_WAITS && waits {
-            self.autosave_waits += 1;
-            return;
-        }
-        self.autosave_waits = 0;
-        let mut shared = self.shared.borrow_mut();
-        if !shared.autosave.due(revision, now) {
-            if shared.autosave.is_pending(revision) {
-                ctx.request_repaint_after(std::time::Duration::from_secs_f64(autosave::INTERVAL));
-            }
-            return;
-        }
-        let started = clock::now_ms();
-        let record = if shared.ready_op_texts(started, AUTOSAVE_STEP_MS) {
-            shared.autosave_pieces()
-        } else {
-            // A long op's text took this frame: the write comes in a later one.
-            ctx.request_repaint();
-            None
-        };
-        let written = record.map(crate::page_store::write_autosave);
-        // The frame's share of the write: the session's new text readied, or the record
-        // handed to the page's queue (the page benchmark reads it as "autosave").
-        let ms = clock::now_ms() - started;
-        clock::record(&mut shared.timings.of("autosave").frame_ms, ms);
-        drop(shared);
-        if let Some(Err(why)) = written {
-            self.set_status(format!("Could not autosave: {why}"), now);
         }
     }
 
@@ -676,7 +624,8 @@ impl eframe::App for SketchApp {
         // After the frame's edits land, and left to a later frame if their work filled this
         // one.
         #[cfg(target_arch = "wasm32")]
-        self.autosave(&ctx, now);
+        self.autosave
+            .run(&ctx, &self.shared, &self.scene, &mut self.status, now);
         let backend = self.shared.borrow().backend.clone();
         panels::help::help_ui(&ctx, &mut self.show_help, &backend, self.router.pen_seen());
         let mut shared = self.shared.borrow_mut();

@@ -6,6 +6,8 @@
 
 pub mod app;
 pub mod autosave;
+#[cfg(target_arch = "wasm32")]
+pub mod autosave_writer;
 pub mod backdrop;
 pub mod camera;
 pub mod clock;

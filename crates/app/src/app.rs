@@ -11,7 +11,7 @@ use std::cell::RefCell;
 use std::rc::Rc;
 
 use eframe::egui_wgpu;
-use sketchmesh_core::document::{Document, Edit, StrokeInput, model_under};
+use sketchmesh_core::document::{Document, Edit};
 
 #[cfg(target_arch = "wasm32")]
 use crate::autosave_writer::AutosaveWriter;
@@ -24,16 +24,15 @@ use crate::file_actions::FileActions;
 use crate::input::router::{Hands, InputRouter, Routed};
 use crate::input::taps::TapCommand;
 use crate::input::{PointerSample, sample_clock};
-use crate::overlay::centered_galley;
 use crate::panels;
 use crate::panels::context_menu::{ContextAction, ContextMenu, context_menu_ui};
 use crate::playback::Playback;
 use crate::render::SceneRenderer;
-use crate::scene_view::{SceneView, falloff_levels};
+use crate::scene_view::{SceneView, falloff_levels, model_at};
 pub use crate::shared::Shared;
 use crate::shortcuts;
 use crate::status::{Status, status_ui};
-use crate::tools::{Mode, Scene, ToolEvent, ToolOutput, ToolSet, ViewCtx};
+use crate::tools::{Mode, ToolEvent, ToolOutput, ToolSet, ViewCtx};
 use crate::view_overlay;
 
 /// The Sketchmesh app.
@@ -366,7 +365,9 @@ impl SketchApp {
                         .apply(*action, viewport.height().into()),
                     Routed::Tap(TapCommand::Undo) => self.undo(now),
                     Routed::Tap(TapCommand::Redo) => self.run(now, |r, cx| r.redo(cx)),
-                    Routed::Tap(TapCommand::DoubleTap(at)) => self.double_tap(*at, viewport),
+                    Routed::Tap(TapCommand::DoubleTap(at)) => {
+                        self.scene.double_tap(&self.shared, *at, viewport)
+                    }
                     Routed::Tap(TapCommand::LongPress(at)) => self.long_press(*at, viewport, now),
                     Routed::Tool(event) if self.holds_stroke(event) => {}
                     Routed::Tool(event) => {
@@ -420,18 +421,10 @@ impl SketchApp {
         held
     }
 
-    /// A one-finger double tap at `at`: on empty canvas it frames everything, as in 3D apps
-    /// on tablets; on a model it does nothing more than its taps did.
-    fn double_tap(&mut self, at: egui::Pos2, viewport: egui::Rect) {
-        if self.model_at(at, viewport).is_none() {
-            self.scene.frame_all(&self.shared);
-        }
-    }
-
     /// A long press at `at`: on a model, its context actions (the finger's stroke is
     /// cancelled); elsewhere nothing, and the stroke goes on.
     fn long_press(&mut self, at: egui::Pos2, viewport: egui::Rect, now: f64) {
-        let Some(model) = self.model_at(at, viewport) else {
+        let Some(model) = model_at(&self.shared.borrow(), at, viewport) else {
             return;
         };
         let mut cancelled = Vec::new();
@@ -447,29 +440,10 @@ impl SketchApp {
         self.context_menu = Some(ContextMenu { at, model });
     }
 
-    /// The index of the model seen at screen point `at`.
-    fn model_at(&self, at: egui::Pos2, viewport: egui::Rect) -> Option<usize> {
-        let relative = at - viewport.min;
-        let size = viewport.size();
-        let tap = StrokeInput {
-            viewport: [size.x.into(), size.y.into()],
-            camera: self.shared.borrow().camera.camera(),
-            stroke: vec![[relative.x.into(), relative.y.into(), 0.5]],
-        };
-        model_under(self.shared.borrow().editor.document(), &tap)
-    }
-
     /// Carries out a context menu's choice for model `model`.
     fn context_action(&mut self, model: usize, action: ContextAction, now: f64) {
         match action {
-            ContextAction::Frame => {
-                let mut shared = self.shared.borrow_mut();
-                let bounds = (shared.editor.document().models.get(model))
-                    .and_then(|m| m.mesh.bounding_box());
-                if let Some((min, max)) = bounds {
-                    shared.camera.frame(min, max);
-                }
-            }
+            ContextAction::Frame => self.scene.frame_model(&self.shared, model),
             ContextAction::Duplicate | ContextAction::Delete => {
                 if let Some(op) = action.op(model) {
                     self.run(now, |r, cx| r.begin(op, false, cx));
@@ -513,16 +487,7 @@ impl SketchApp {
         }
         self.backdrop.paint(ui, viewport);
         let shared = self.shared.borrow();
-        let doc = shared.editor.document();
-        let edit = self.runner.edit();
-        let scene = Scene {
-            shown: edit.map_or(doc, Edit::document),
-            doc,
-            edit,
-            computing: self.runner.is_computing(),
-            camera: shared.camera.camera(),
-            viewport,
-        };
+        let scene = self.runner.scene(&shared, viewport);
         view_overlay::draw(ui, &scene, &self.tools, self.runner.waiting());
         drop(shared);
         if let Some(edit) = self.runner.edit() {
@@ -538,14 +503,7 @@ impl SketchApp {
             );
         }
         if let Some(at) = self.router.pen_hover().filter(|at| viewport.contains(*at)) {
-            // Where the pen would touch: a ring that shows on light and dark alike.
-            let painter = ui.painter();
-            painter.circle_stroke(
-                at,
-                5.0,
-                egui::Stroke::new(3.0, egui::Color32::from_black_alpha(140)),
-            );
-            painter.circle_stroke(at, 5.0, egui::Stroke::new(1.5, egui::Color32::WHITE));
+            view_overlay::pen_ring(ui, at);
         }
         self.view_rect = viewport;
         let idle = self.tools.preview().is_none() && self.runner.edit().is_none();
@@ -562,10 +520,7 @@ impl SketchApp {
         } else if let Some(status) = self.status.message() {
             status_ui(ui, viewport, status);
         } else if self.shared.borrow().editor.document().is_empty() && idle {
-            let text = "Draw a closed outline to make a shape. Two fingers or right-drag orbit.";
-            let galley = centered_galley(ui, viewport, text, egui::Color32::from_white_alpha(110));
-            let pos = viewport.center_bottom() - egui::vec2(0.0, 40.0 + galley.size().y);
-            ui.painter().galley(pos, galley, egui::Color32::WHITE);
+            view_overlay::first_hint(ui, viewport);
         }
     }
 }

@@ -14,7 +14,7 @@ use crate::files;
 use crate::offload::{Answer, JobId, Offload, Poll, Work};
 use crate::shared::Shared;
 use crate::status::Status;
-use crate::tools::{ToolOutput, ToolSet};
+use crate::tools::{Scene, ToolOutput, ToolSet};
 
 /// Why an op is refused while an import or a replay runs (see [`EditRunner::is_busy`]).
 const BUSY: &str = "Wait for the import or replay in progress to land, or cancel it (Esc).";
@@ -501,6 +501,20 @@ impl EditRunner {
     /// Redoes the last op undone (see [`EditRunner::begin`]).
     pub fn redo(&mut self, cx: &mut Cx<'_>) {
         self.begin(Op::Redo, false, cx);
+    }
+
+    /// What the tools draw over from: `shared`'s document as the edit in progress shows it,
+    /// in `viewport`.
+    pub fn scene<'a>(&'a self, shared: &'a Shared, viewport: egui::Rect) -> Scene<'a> {
+        let doc = shared.editor.document();
+        Scene {
+            shown: self.edit().map_or(doc, Edit::document),
+            doc,
+            edit: self.edit(),
+            computing: self.is_computing(),
+            camera: shared.camera.camera(),
+            viewport,
+        }
     }
 
     /// What the progress line says while work runs off the frame: an import, a replay, the

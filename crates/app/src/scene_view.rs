@@ -6,7 +6,7 @@ use std::cell::RefCell;
 use std::sync::Arc;
 
 use eframe::egui_wgpu;
-use sketchmesh_core::document::{Edit, Op};
+use sketchmesh_core::document::{Edit, Op, StrokeInput, model_under};
 
 use crate::autosave;
 use crate::camera::OrbitCamera;
@@ -125,6 +125,24 @@ impl SceneView {
         match self.geometry.bounds {
             Some((min, max)) => shared.camera.frame(min, max),
             None => shared.camera = OrbitCamera::default(),
+        }
+    }
+
+    /// A one-finger double tap at `at`: on empty canvas it frames everything, as in 3D apps
+    /// on tablets; on a model it does nothing more than its taps did.
+    pub fn double_tap(&self, shared: &RefCell<Shared>, at: egui::Pos2, viewport: egui::Rect) {
+        if model_at(&shared.borrow(), at, viewport).is_none() {
+            self.frame_all(shared);
+        }
+    }
+
+    /// Frames model `model` (a context menu's choice).
+    pub fn frame_model(&self, shared: &RefCell<Shared>, model: usize) {
+        let mut shared = shared.borrow_mut();
+        let bounds =
+            (shared.editor.document().models.get(model)).and_then(|m| m.mesh.bounding_box());
+        if let Some((min, max)) = bounds {
+            shared.camera.frame(min, max);
         }
     }
 
@@ -316,4 +334,16 @@ pub fn falloff_levels(edit: &Edit) -> usize {
         Op::RegionEdit(input) => input.levels.as_ref().map_or(5, Vec::len),
         _ => 5,
     }
+}
+
+/// The index of the model seen at screen point `at` of `viewport`.
+pub fn model_at(shared: &Shared, at: egui::Pos2, viewport: egui::Rect) -> Option<usize> {
+    let relative = at - viewport.min;
+    let size = viewport.size();
+    let tap = StrokeInput {
+        viewport: [size.x.into(), size.y.into()],
+        camera: shared.camera.camera(),
+        stroke: vec![[relative.x.into(), relative.y.into(), 0.5]],
+    };
+    model_under(shared.editor.document(), &tap)
 }

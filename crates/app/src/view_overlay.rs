@@ -4,7 +4,7 @@
 
 use sketchmesh_core::document::{Edit, Op};
 
-use crate::overlay::{hint_ui, outline_ui, stroke_ui};
+use crate::overlay::{centered_galley, hint_ui, outline_ui, stroke_ui};
 use crate::tools::{Mark, Scene, ToolSet};
 
 /// Draws over the view: the tool in use's hint and what it shows, what the edit in
@@ -63,4 +63,23 @@ fn mark_ui(ui: &egui::Ui, viewport: egui::Rect, mark: &Mark) {
         [only] => ui.painter().circle_filled(*only, radius as f32, band.color),
         _ => ui.painter().add(egui::Shape::line(points, band)),
     };
+}
+
+/// Where the pen would touch: a ring that shows on light and dark alike.
+pub fn pen_ring(ui: &egui::Ui, at: egui::Pos2) {
+    let painter = ui.painter();
+    painter.circle_stroke(
+        at,
+        5.0,
+        egui::Stroke::new(3.0, egui::Color32::from_black_alpha(140)),
+    );
+    painter.circle_stroke(at, 5.0, egui::Stroke::new(1.5, egui::Color32::WHITE));
+}
+
+/// What to do first, at the bottom of an empty view.
+pub fn first_hint(ui: &egui::Ui, viewport: egui::Rect) {
+    let text = "Draw a closed outline to make a shape. Two fingers or right-drag orbit.";
+    let galley = centered_galley(ui, viewport, text, egui::Color32::from_white_alpha(110));
+    let pos = viewport.center_bottom() - egui::vec2(0.0, 40.0 + galley.size().y);
+    ui.painter().galley(pos, galley, egui::Color32::WHITE);
 }

@@ -221,14 +221,8 @@ impl SketchApp {
 
     /// Runs `f` on the edit runner, lending it what it works with.
     fn run<R>(&mut self, now: f64, f: impl FnOnce(&mut EditRunner, &mut Cx<'_>) -> R) -> R {
-        let mut cx = Cx {
-            shared: &self.shared,
-            tools: &mut self.tools,
-            status: &mut self.status,
-            frame_from: &mut self.scene.frame_after_rebuild,
-            now,
-        };
-        f(&mut self.runner, &mut cx)
+        let (_, runner, mut cx) = self.parts(now);
+        f(runner, &mut cx)
     }
 
     /// Applies what a tool produced: to the edit, or to the view, the backdrop, playing.

@@ -21,12 +21,14 @@ use crate::clock;
 use crate::command::Command;
 use crate::edit_runner::{Cx, EditRunner};
 use crate::file_actions::FileActions;
-use crate::input::router::{Hands, InputRouter, Routed};
+use crate::input::router::{Hands, Routed};
+use crate::input::sample_clock;
 use crate::input::taps::TapCommand;
-use crate::input::{PointerSample, sample_clock};
 use crate::panels;
+use crate::panels::PanelState;
 use crate::panels::context_menu::{ContextAction, ContextMenu, context_menu_ui};
 use crate::playback::Playback;
+use crate::pointer::Pointer;
 use crate::render::SceneRenderer;
 use crate::scene_view::{SceneView, falloff_levels, model_at};
 pub use crate::shared::Shared;
@@ -38,27 +40,17 @@ use crate::view_overlay;
 /// The Sketchmesh app.
 pub struct SketchApp {
     shared: Rc<RefCell<Shared>>,
-    router: InputRouter,
+    /// The pointer samples and where they go.
+    pub(crate) pointer: Pointer,
+    /// The panels' state between frames.
+    panels: PanelState,
     /// The tools and the active mode.
     tools: ToolSet,
-    samples: Vec<PointerSample>,
-    #[cfg(not(target_arch = "wasm32"))]
-    egui_pointer: crate::input::egui_pointer::EguiPointer,
-    /// Samples queued by the browser's pointer listeners.
-    pub web_samples: Rc<RefCell<std::collections::VecDeque<PointerSample>>>,
     /// The reference image over the view, to trace a motion's frames.
     backdrop: Backdrop,
-    /// A model's context actions, open after a long press on it.
-    context_menu: Option<ContextMenu>,
-    /// Whether the stroke in progress began while work ran off the frame: it reaches no
-    /// tool, to its end (see [`SketchApp::is_busy`]).
-    holding_stroke: bool,
-    /// The fall-off panel's painted disc, kept between frames.
-    falloff_panel: panels::falloff::FalloffPanel,
     /// Writes the autosave in the page.
     #[cfg(target_arch = "wasm32")]
     autosave: AutosaveWriter,
-    show_help: bool,
     /// The 3D scene as drawn.
     scene: SceneView,
     /// The status line.
@@ -73,9 +65,6 @@ pub struct SketchApp {
     opened: u64,
     /// The 3D view's rectangle last frame, in points (thumbnails are cut to it).
     view_rect: egui::Rect,
-    /// The tool to go back to when the pen's eraser stroke (eraser end or barrel button)
-    /// in progress ends.
-    erasing_from: Option<Mode>,
     /// Whether the screen's main pointer is a finger (the page's `(pointer: coarse)`): the
     /// toolbar then takes the touch layout where it is narrow enough.
     coarse_pointer: bool,
@@ -103,20 +92,13 @@ impl SketchApp {
     pub fn with_backend(backend: String, has_renderer: bool) -> Self {
         Self {
             shared: Rc::new(RefCell::new(Shared::new(backend))),
-            router: InputRouter::default(),
+            pointer: Pointer::default(),
+            panels: PanelState::default(),
             tools: ToolSet::default(),
-            samples: Vec::new(),
-            #[cfg(not(target_arch = "wasm32"))]
-            egui_pointer: Default::default(),
-            web_samples: Default::default(),
             // Nothing built yet: no document has this revision.
             backdrop: Backdrop::default(),
-            context_menu: None,
-            holding_stroke: false,
-            falloff_panel: Default::default(),
             #[cfg(target_arch = "wasm32")]
             autosave: AutosaveWriter::default(),
-            show_help: false,
             scene: SceneView::default(),
             status: Status::default(),
             runner: EditRunner::default(),
@@ -124,7 +106,6 @@ impl SketchApp {
             files: FileActions::default(),
             opened: 0,
             view_rect: egui::Rect::NOTHING,
-            erasing_from: None,
             coarse_pointer: false,
         }
     }
@@ -293,7 +274,7 @@ impl SketchApp {
             }
             Command::ToggleWireframe => self.scene.options.wireframe ^= true,
             Command::ToggleGrid => self.scene.options.grid ^= true,
-            Command::ToggleHelp => self.show_help ^= true,
+            Command::ToggleHelp => self.panels.show_help ^= true,
         }
     }
 
@@ -322,19 +303,16 @@ impl SketchApp {
             tools.on_hands(hands, view, doc)
         });
         if matches!(hands, Hands::Down(_)) && matches!(output, ToolOutput::Begin(_)) {
-            self.router.give_hands_to_tool();
+            self.pointer.router.give_hands_to_tool();
         }
         self.take_output(output, now);
     }
 
     /// Routes this frame's pointer samples to the tool and the camera.
     fn handle_pointer(&mut self, ctx: &egui::Context, viewport: egui::Rect) {
-        #[cfg(not(target_arch = "wasm32"))]
-        ctx.input(|i| self.egui_pointer.collect(i, &mut self.samples));
-        self.samples.extend(self.web_samples.borrow_mut().drain(..));
         let now = ctx.input(|i| i.time);
         let mut routed = Vec::new();
-        let samples = std::mem::take(&mut self.samples);
+        let samples = self.pointer.take_samples(ctx);
         let polled = samples.len();
         for k in 0..=polled {
             routed.clear();
@@ -344,10 +322,10 @@ impl SketchApp {
                         && ctx
                             .layer_id_at(sample.pos_in_screen)
                             .is_none_or(|l| l.order == egui::Order::Background);
-                    self.router.route(sample, on_view, &mut routed);
+                    self.pointer.router.route(sample, on_view, &mut routed);
                 }
                 // Between samples: a finger held still becomes a long press.
-                None => self.router.poll(sample_clock(ctx), &mut routed),
+                None => self.pointer.router.poll(sample_clock(ctx), &mut routed),
             }
             for r in &routed {
                 match r {
@@ -363,14 +341,15 @@ impl SketchApp {
                         self.scene.double_tap(&self.shared, *at, viewport)
                     }
                     Routed::Tap(TapCommand::LongPress(at)) => self.long_press(*at, viewport, now),
-                    Routed::Tool(event) if self.holds_stroke(event) => {}
+                    Routed::Tool(event)
+                        if self.pointer.holds_stroke(event, self.runner.is_busy()) => {}
                     Routed::Tool(event) => {
                         // The pen's eraser erases whatever the tool, for one stroke.
                         if let ToolEvent::Begin(sample) = event
                             && sample.is_eraser()
                             && self.tools.mode() != Mode::Erase
                         {
-                            self.erasing_from = Some(self.tools.mode());
+                            self.pointer.erasing_from = Some(self.tools.mode());
                             self.set_mode(Mode::Erase, now);
                         }
                         if matches!(event, ToolEvent::Begin(_)) {
@@ -382,7 +361,7 @@ impl SketchApp {
                         });
                         self.take_output(output, now);
                         if matches!(event, ToolEvent::End(_) | ToolEvent::Cancel)
-                            && let Some(mode) = self.erasing_from.take()
+                            && let Some(mode) = self.pointer.erasing_from.take()
                         {
                             self.set_mode(mode, now);
                         }
@@ -391,7 +370,7 @@ impl SketchApp {
             }
         }
         // A finger down may become a long press without another sample.
-        if self.router.is_touching() {
+        if self.pointer.router.is_touching() {
             ctx.request_repaint_after(std::time::Duration::from_millis(50));
         }
         // A stroke across a shape cuts it when no tap follows in time.
@@ -402,19 +381,6 @@ impl SketchApp {
         }
     }
 
-    /// Whether `event` belongs to a stroke begun while the app was busy (see
-    /// [`SketchApp::is_busy`]): such a stroke draws nothing, from its beginning to its end.
-    fn holds_stroke(&mut self, event: &ToolEvent) -> bool {
-        if matches!(event, ToolEvent::Begin(_)) {
-            self.holding_stroke = self.runner.is_busy();
-        }
-        let held = self.holding_stroke;
-        if matches!(event, ToolEvent::End(_) | ToolEvent::Cancel) {
-            self.holding_stroke = false;
-        }
-        held
-    }
-
     /// A long press at `at`: on a model, its context actions (the finger's stroke is
     /// cancelled); elsewhere nothing, and the stroke goes on.
     fn long_press(&mut self, at: egui::Pos2, viewport: egui::Rect, now: f64) {
@@ -422,7 +388,7 @@ impl SketchApp {
             return;
         };
         let mut cancelled = Vec::new();
-        self.router.take_touch(&mut cancelled);
+        self.pointer.router.take_touch(&mut cancelled);
         for routed in &cancelled {
             if let Routed::Tool(event) = routed {
                 let output = self.feed_tool(viewport, |tools, view, doc| {
@@ -431,7 +397,7 @@ impl SketchApp {
                 self.take_output(output, now);
             }
         }
-        self.context_menu = Some(ContextMenu { at, model });
+        self.panels.context_menu = Some(ContextMenu { at, model });
     }
 
     /// Carries out a context menu's choice for model `model`.
@@ -458,7 +424,7 @@ impl SketchApp {
                 shared.camera.wheel(scroll.into());
             }
             // egui also derives a zoom from touch pinches, which the router already handles.
-            if zoom != 1.0 && !self.router.is_touching() {
+            if zoom != 1.0 && !self.pointer.router.is_touching() {
                 shared.camera.dolly(1.0 / f64::from(zoom));
             }
         }
@@ -487,7 +453,7 @@ impl SketchApp {
         if let Some(edit) = self.runner.edit() {
             let levels = falloff_levels(edit);
             let camera = self.shared.borrow().camera.camera();
-            (self.falloff_panel).ui(
+            (self.panels.falloff).ui(
                 ui,
                 viewport,
                 &camera,
@@ -496,7 +462,12 @@ impl SketchApp {
                 levels,
             );
         }
-        if let Some(at) = self.router.pen_hover().filter(|at| viewport.contains(*at)) {
+        if let Some(at) = self
+            .pointer
+            .router
+            .pen_hover()
+            .filter(|at| viewport.contains(*at))
+        {
             view_overlay::pen_ring(ui, at);
         }
         self.view_rect = viewport;
@@ -555,7 +526,7 @@ impl eframe::App for SketchApp {
                     &shared.editor,
                     &mut self.scene.options,
                     &mut self.tools,
-                    &mut self.show_help,
+                    &mut self.panels.show_help,
                 )
             })
             .inner;
@@ -567,7 +538,7 @@ impl eframe::App for SketchApp {
             .borrow_mut()
             .thumbnails
             .run(&ctx, self.view_rect);
-        if let Some((model, action)) = context_menu_ui(&ctx, &mut self.context_menu) {
+        if let Some((model, action)) = context_menu_ui(&ctx, &mut self.panels.context_menu) {
             self.context_action(model, action, now);
         }
         // After the frame's edits land, and left to a later frame if their work filled this
@@ -576,7 +547,12 @@ impl eframe::App for SketchApp {
         self.autosave
             .run(&ctx, &self.shared, &self.scene, &mut self.status, now);
         let backend = self.shared.borrow().backend.clone();
-        panels::help::help_ui(&ctx, &mut self.show_help, &backend, self.router.pen_seen());
+        panels::help::help_ui(
+            &ctx,
+            &mut self.panels.show_help,
+            &backend,
+            self.pointer.router.pen_seen(),
+        );
         let mut shared = self.shared.borrow_mut();
         let revision = shared.revision();
         let Shared { editor, notes, .. } = &mut *shared;

@@ -25,6 +25,7 @@ pub mod overlay;
 pub mod page_store;
 pub mod panels;
 pub mod playback;
+pub mod pointer;
 pub mod render;
 pub mod scene_view;
 pub mod shared;

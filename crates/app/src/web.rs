@@ -40,10 +40,11 @@ pub async fn start(canvas_id: String) -> Result<(), JsValue> {
                 let mut app = SketchApp::new(cc);
                 app.set_coarse_pointer(is_pointer_coarse());
                 let ctx = cc.egui_ctx.clone();
-                let pointer = WebPointer::listen(&listen_on, app.web_samples.clone(), move || {
-                    ctx.request_repaint()
-                })
-                .map_err(|e| format!("Could not listen to pointer events: {e:?}"))?;
+                let pointer =
+                    WebPointer::listen(&listen_on, app.pointer.web_samples.clone(), move || {
+                        ctx.request_repaint()
+                    })
+                    .map_err(|e| format!("Could not listen to pointer events: {e:?}"))?;
                 // The listeners live as long as the page.
                 std::mem::forget(pointer);
                 install_page_api(app.shared(), cc.egui_ctx.clone())

@@ -7,3 +7,14 @@ pub mod help;
 pub mod notes;
 pub mod progress;
 pub mod toolbar;
+
+/// The panels' state kept between frames.
+#[derive(Default)]
+pub struct PanelState {
+    /// A model's context actions, open after a long press on it.
+    pub context_menu: Option<context_menu::ContextMenu>,
+    /// The fall-off panel's painted disc.
+    pub falloff: falloff::FalloffPanel,
+    /// Whether the help window is open.
+    pub show_help: bool,
+}

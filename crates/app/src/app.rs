@@ -1,223 +1,70 @@
-//! The eframe app: wires input, the active tool, the editor and the 3D view together.
+//! The eframe app: wires input, the tools, the edit runner and the 3D view together.
 //!
-//! Data flows one way: pointer samples go through the [`InputRouter`] to the tool or the
-//! camera; a tool's gesture becomes one [`Op`], which the app begins as an [`Edit`] of the
-//! [`Editor`] (at pointer-down when the op previews while drawn), steps every frame within
-//! [`FRAME_BUDGET_MS`], draws, and finishes once done: the same edit `Editor::apply` runs,
-//! with no special case for any op. The view rebuilds its GPU arrays when the document drawn
-//! changes, and moves a model's vertices in place while an edit moves them.
+//! Data flows one way: pointer samples go through the [`InputRouter`] to the tool in use
+//! ([`ToolSet`]) or the camera; what a tool makes goes to the [`EditRunner`], which runs it
+//! as an edit of the document; the [`SceneView`] draws the document shown, and
+//! [`view_overlay`] what the tool and the edit show over it. The toolbar and the keys ask
+//! for [`Command`]s; [`FileActions`] opens and saves files. Nothing here names an op; the
+//! only tools named are Erase (the pen's eraser end) and Over-sketch (the context menu).
 
 use std::cell::RefCell;
-use std::collections::VecDeque;
 use std::rc::Rc;
-use std::sync::Arc;
 
 use eframe::egui_wgpu;
-use egui::{Key, KeyboardShortcut, Modifiers};
-use sketchmesh_core::curve::{StrokePoint, process_stroke};
-use sketchmesh_core::document::{
-    Document, Edit, Editor, GizmoHandle, ImportInput, ModelInput, Op, Progress, Replay, Session,
-    StrokeInput, model_under,
-};
-use sketchmesh_core::feature::FeatureKind;
-use sketchmesh_core::optimize::quality_report;
-use sketchmesh_core::oversketch::OversketchRoi;
+use sketchmesh_core::document::{Document, Edit};
 
-use crate::autosave;
+#[cfg(target_arch = "wasm32")]
+use crate::autosave_writer::AutosaveWriter;
 use crate::backdrop::Backdrop;
 use crate::camera::OrbitCamera;
 use crate::clock;
-use crate::files::{self, ImportQueue};
-use crate::input::router::{Hands, InputRouter, Routed};
+use crate::command::Command;
+use crate::edit_runner::{Cx, EditRunner};
+use crate::file_actions::FileActions;
+use crate::input::router::{Hands, Routed};
+use crate::input::sample_clock;
 use crate::input::taps::TapCommand;
-use crate::input::{PointerSample, sample_clock};
-use crate::offload::{Answer, JobId, Offload, Poll, Work};
 use crate::panels;
+use crate::panels::PanelState;
 use crate::panels::context_menu::{ContextAction, ContextMenu, context_menu_ui};
 use crate::playback::Playback;
-use crate::render::geometry::{NormalsAhead, pressure_width};
-use crate::render::{SceneCallback, SceneGeometry, SceneRenderer, Uniforms, ViewOptions};
-use crate::textures::Textures;
-use crate::tools::{Mark, Mode, ToolEvent, ToolOutput, ToolSet, ViewCtx};
-
-/// How long a status message stays up, in seconds.
-const STATUS_SECONDS: f64 = 6.0;
-
-/// Why an op is refused while an import or a replay runs (see [`SketchApp::is_busy`]).
-const BUSY: &str = "Wait for the import or replay in progress to land, or cancel it (Esc).";
-
-/// The sentence for a drag begun while the worker computes the last change.
-const COMPUTING: &str = "Wait for the change being computed to land, or cancel it (Esc).";
-
-/// How long an op may run in the page's worker before the progress line says so, in seconds.
-const PROGRESS_AFTER_S: f64 = 0.25;
-
-/// How long the steps of the edit in progress may run in one frame, in ms. At least one step
-/// runs every frame, whatever it costs (a factorization can take longer).
-pub const FRAME_BUDGET_MS: f64 = 12.0;
-
-/// A frame whose own work has taken this long (ms) leaves the scene's rebuild, then its
-/// upload, then the autosave, to the next frames, one each: a large result's landing (a
-/// million triangles decoded; their arrays built; uploaded; the session with the file
-/// written) is then four frames of at most about 100 ms in the page rather than one of
-/// 250 ms and one of 190.
-const SPREAD_AFTER_MS: f64 = 50.0;
-
-/// How many busy frames in a row may leave the autosave to the next one: more than the app
-/// spreads a large result's landing over (checked and committed; a large model's normals;
-/// its arrays; their upload begun).
-#[cfg(target_arch = "wasm32")]
-const AUTOSAVE_WAITS: u8 = 5;
-/// The autosave readies the session's new text in steps while this lasts in a frame (ms),
-/// and writes in a later frame when a step ran past it.
-#[cfg(target_arch = "wasm32")]
-const AUTOSAVE_STEP_MS: f64 = 8.0;
-
-/// What the drawn scene was built from: the editor's revision, the edit's number and
-/// revision when it shows another document than the editor's, the textures' version, and
-/// whether the wireframe is shown (its edges are built only then).
-type GeometrySource = (autosave::Revision, Option<(u64, u64)>, u64, bool);
-
-/// State shared with the page API (`window.sketchmesh`), which runs outside frames.
-pub struct Shared {
-    /// The document and its history.
-    pub editor: Editor,
-    /// The view's camera.
-    pub camera: OrbitCamera,
-    /// The graphics backend in use, for the page API and the help panel.
-    pub backend: String,
-    /// Files waiting to be imported.
-    pub imports: ImportQueue,
-    /// Recent costs of edits, for the page benchmark.
-    pub timings: clock::Timings,
-    /// The tool in use; the page's restore sets it, and the app follows.
-    pub mode: Mode,
-    /// When to autosave.
-    pub autosave: autosave::Schedule,
-    /// A sentence for the user from outside the app (the page's restore), shown next frame.
-    pub notice: Option<String>,
-    /// Thumbnails of the view the page asked for (`window.sketchmesh.thumbnail()`).
-    pub thumbnails: crate::thumbnail::Capture,
-    /// The notes panel (an import's repairs), which the page API reads too.
-    pub notes: panels::notes::Notes,
-    /// What the progress line says while work runs off the frame (an import, a replay).
-    pub progress: Option<String>,
-    /// Editors that replaced the first one (see [`autosave::Revision`]).
-    opened: u64,
-    /// The ops' session text as JavaScript strings, for the autosave.
-    #[cfg(target_arch = "wasm32")]
-    pub op_texts: crate::web::OpTexts,
-}
-
-impl Shared {
-    /// Replaces the document and its history by `editor`'s (a session opened or restored).
-    pub fn open(&mut self, editor: Editor) {
-        self.editor = editor;
-        self.opened += 1;
-    }
-
-    /// Starts an empty document in the default view, keeping the tool.
-    pub fn open_empty(&mut self) {
-        self.open(Editor::new());
-        self.camera = OrbitCamera::default();
-    }
-
-    /// Which document is shown: changes with every op, and when another editor comes in.
-    pub fn revision(&self) -> autosave::Revision {
-        autosave::Revision {
-            opened: self.opened,
-            edits: self.editor.revision(),
-        }
-    }
-}
+use crate::pointer::Pointer;
+use crate::render::SceneRenderer;
+use crate::scene_view::{SceneView, falloff_levels, model_at};
+pub use crate::shared::Shared;
+use crate::shortcuts;
+use crate::status::{Status, status_ui};
+use crate::tools::{Mode, ToolEvent, ToolOutput, ToolSet, ViewCtx};
+use crate::view_overlay;
 
 /// The Sketchmesh app.
 pub struct SketchApp {
     shared: Rc<RefCell<Shared>>,
-    router: InputRouter,
+    /// The pointer samples and where they go.
+    pub(crate) pointer: Pointer,
+    /// The panels' state between frames.
+    panels: PanelState,
     /// The tools and the active mode.
     tools: ToolSet,
-    samples: Vec<PointerSample>,
-    #[cfg(not(target_arch = "wasm32"))]
-    egui_pointer: crate::input::egui_pointer::EguiPointer,
-    /// Samples queued by the browser's pointer listeners.
-    pub web_samples: Rc<RefCell<std::collections::VecDeque<PointerSample>>>,
-    geometry: Arc<SceneGeometry>,
-    /// What `geometry` was built from: the editor's revision, and the edit's number and
-    /// revision when it shows another document than the editor's.
-    geometry_source: GeometrySource,
-    /// A scene built in a frame its work had filled, with what it was built from: the next
-    /// frame shows (and uploads) it.
-    stashed_geometry: Option<(GeometrySource, Arc<SceneGeometry>)>,
-    /// Imported models' textures, decoded for the view.
-    textures: Textures,
-    /// The edit generation whose moved model `geometry` shows, if it shows one (it is rebuilt
-    /// when the edit stops moving it).
-    shown_motion: Option<u64>,
-    /// Normals of a moved model, reused between frames.
-    moved_normals: Vec<glam::DVec3>,
-    /// The key-framed animation being played, if any.
-    playback: Option<Playback>,
     /// The reference image over the view, to trace a motion's frames.
     backdrop: Backdrop,
-    /// A model's context actions, open after a long press on it.
-    context_menu: Option<ContextMenu>,
-    /// The edit in progress: begun from a tool's op, stepped every frame, finished when done.
-    edit: Option<Edit>,
-    /// The page's worker, which reads imports off the frame.
-    offload: Offload,
-    /// The import the edit in progress is, if it is one.
-    import: Option<ImportInProgress>,
-    /// The worker's job for the long part of the edit in progress (an import's read, a
-    /// curve op's result), and when it was handed over (seconds).
-    worker_job: Option<(JobId, f64)>,
-    /// Ops made while the worker computes the edit in progress (a stroke drawn while a
-    /// fine shape is created), in order: begun one at a time once it lands, so that no
-    /// frame has to finish the worker's op itself.
-    waiting: VecDeque<Op>,
-    /// A session being replayed over frames (the page API's `replay`), to replace the
-    /// document once it is through.
-    replay: Option<ReplayInProgress>,
-    /// How many edits were begun: tells apart the documents of two edits of equal revision.
-    edits_begun: u64,
-    /// Whether the stroke in progress began while work ran off the frame: it reaches no
-    /// tool, to its end (see [`SketchApp::is_busy`]).
-    holding_stroke: bool,
-    /// The fall-off panel's painted disc, kept between frames.
-    falloff_panel: panels::falloff::FalloffPanel,
-    /// Whether the edit in progress was begun this frame: it is drawn once before its first
-    /// step, so what it shows at once (a creation's seed) is seen at once.
-    is_edit_new: bool,
-    /// Where the time of the edit in progress goes.
-    edit_clock: EditClock,
-    /// What this frame's own work (the edit's steps and landing, the scene's rebuild) has
-    /// taken so far, in ms (see [`SPREAD_AFTER_MS`]).
-    frame_work_ms: f64,
-    /// Whether the last frame left the scene's rebuild to this one, which then does it
-    /// whatever its own work took.
-    rebuild_waited: bool,
-    /// The normals of large new models, computed a frame before their arrays.
-    normals_ahead: NormalsAhead,
-    /// How many frames in a row left the autosave to the next (at most [`AUTOSAVE_WAITS`]).
+    /// Writes the autosave in the page.
     #[cfg(target_arch = "wasm32")]
-    autosave_waits: u8,
-    options: ViewOptions,
-    show_help: bool,
-    status: Option<(String, f64)>,
+    autosave: AutosaveWriter,
+    /// The 3D scene as drawn.
+    scene: SceneView,
+    /// The status line.
+    status: Status,
+    /// The edit in progress and the work around it.
+    runner: EditRunner,
     has_renderer: bool,
-    /// An import announced this frame, parsed in the next one.
-    announced_import: Option<files::Incoming>,
-    /// Frame the view once the geometry has been rebuilt: the models from this index on
-    /// (an import's; 0 after opening a session: all of them).
-    frame_after_rebuild: Option<usize>,
-    /// The document the tools work on (see [`autosave::Revision::opened`]): when the page
+    /// The files the user opens and saves.
+    files: FileActions,
+    /// The document the tools work on (see [`crate::autosave::Revision::opened`]): when the page
     /// replaces it, the edit in progress belongs to the old one and is dropped.
     opened: u64,
     /// The 3D view's rectangle last frame, in points (thumbnails are cut to it).
     view_rect: egui::Rect,
-    /// The tool to go back to when the pen's eraser stroke (eraser end or barrel button)
-    /// in progress ends.
-    erasing_from: Option<Mode>,
     /// Whether the screen's main pointer is a finger (the page's `(pointer: coarse)`): the
     /// toolbar then takes the touch layout where it is narrow enough.
     coarse_pointer: bool,
@@ -237,82 +84,28 @@ impl SketchApp {
         cc.egui_ctx.set_theme(egui::Theme::Dark);
         cc.egui_ctx.set_fonts(crate::fonts::definitions());
         let mut app = Self::with_backend(backend, cc.wgpu_render_state.is_some());
-        app.offload = Offload::new(&cc.egui_ctx);
+        app.runner = EditRunner::new(&cc.egui_ctx);
         app
     }
 
     /// Creates the app without graphics, for tests that drive input and tools.
     pub fn with_backend(backend: String, has_renderer: bool) -> Self {
         Self {
-            shared: Rc::new(RefCell::new(Shared {
-                editor: Editor::new(),
-                camera: OrbitCamera::default(),
-                backend,
-                imports: ImportQueue::default(),
-                timings: clock::Timings::default(),
-                mode: Mode::default(),
-                autosave: autosave::Schedule::default(),
-                notice: None,
-                thumbnails: Default::default(),
-                notes: Default::default(),
-                progress: None,
-                opened: 0,
-                #[cfg(target_arch = "wasm32")]
-                op_texts: Default::default(),
-            })),
-            router: InputRouter::default(),
+            shared: Rc::new(RefCell::new(Shared::new(backend))),
+            pointer: Pointer::default(),
+            panels: PanelState::default(),
             tools: ToolSet::default(),
-            samples: Vec::new(),
-            #[cfg(not(target_arch = "wasm32"))]
-            egui_pointer: Default::default(),
-            web_samples: Default::default(),
-            geometry: Arc::new(SceneGeometry::default()),
             // Nothing built yet: no document has this revision.
-            geometry_source: (
-                autosave::Revision {
-                    opened: u64::MAX,
-                    edits: u64::MAX,
-                },
-                None,
-                0,
-                false,
-            ),
-            textures: Textures::default(),
-            shown_motion: None,
-            moved_normals: Vec::new(),
-            playback: None,
             backdrop: Backdrop::default(),
-            context_menu: None,
-            edit: None,
-            offload: Offload::default(),
-            import: None,
-            replay: None,
-            worker_job: None,
-            waiting: VecDeque::new(),
-            holding_stroke: false,
-            edits_begun: 0,
-            falloff_panel: Default::default(),
-            is_edit_new: false,
-            edit_clock: EditClock::default(),
-            frame_work_ms: 0.0,
-            stashed_geometry: None,
-            rebuild_waited: false,
-            normals_ahead: NormalsAhead::default(),
             #[cfg(target_arch = "wasm32")]
-            autosave_waits: 0,
-            options: ViewOptions {
-                wireframe: false,
-                grid: true,
-                clay: false,
-            },
-            show_help: false,
-            status: None,
+            autosave: AutosaveWriter::default(),
+            scene: SceneView::default(),
+            status: Status::default(),
+            runner: EditRunner::default(),
             has_renderer,
-            announced_import: None,
-            frame_after_rebuild: None,
+            files: FileActions::default(),
             opened: 0,
             view_rect: egui::Rect::NOTHING,
-            erasing_from: None,
             coarse_pointer: false,
         }
     }
@@ -330,7 +123,7 @@ impl SketchApp {
     /// The edit in progress, if any, and the 3D view's rectangle last frame in points: what
     /// a headless test reads the shown preview from.
     pub fn edit_in_view(&self) -> (Option<&Edit>, egui::Rect) {
-        (self.edit.as_ref(), self.view_rect)
+        (self.runner.edit(), self.view_rect)
     }
 
     /// The state the page API shares.
@@ -338,340 +131,31 @@ impl SketchApp {
         self.shared.clone()
     }
 
-    /// Begins `op` (as a gesture when its stroke is still being drawn) after finishing the
-    /// edit in progress, so ops are logged in the order they were made; this frame's steps
-    /// run it. While the worker computes the edit in progress, an op that is not a gesture
-    /// waits for it instead ([`SketchApp::begin_waiting`]); a gesture is refused with a
-    /// sentence, as its live preview needs the result: finishing the worker's op here would
-    /// freeze the page for as long as the worker takes, and the gesture would come before
-    /// the ops waiting for it. A refusal becomes a status message; nothing changes then.
-    fn begin(&mut self, op: Op, is_gesture: bool, now: f64) {
-        if self.is_busy() {
-            self.set_status(String::from(BUSY), now);
-            return;
-        }
-        let behind_the_worker = self.worker_job.is_some() || !self.waiting.is_empty();
-        if behind_the_worker && is_gesture {
-            self.tools.gesture_refused();
-            self.set_status(String::from(COMPUTING), now);
-            return;
-        }
-        if behind_the_worker {
-            self.waiting.push_back(op);
-            return;
-        }
-        self.begin_now(op, is_gesture, now);
-    }
-
-    /// Begins the next op that waited for the worker, once the edit it waited for is over.
-    fn begin_waiting(&mut self, now: f64) {
-        if self.edit.is_none()
-            && let Some(op) = self.waiting.pop_front()
-        {
-            self.begin_now(op, false, now);
-        }
-    }
-
-    /// [`SketchApp::begin`], without waiting for the worker.
-    fn begin_now(&mut self, op: Op, is_gesture: bool, now: f64) {
-        self.finish_edit(now);
-        let name = op.name();
-        let started = clock::now_ms();
-        let begun = {
-            let editor = &self.shared.borrow().editor;
-            if is_gesture {
-                editor.begin_gesture(op)
-            } else {
-                editor.begin(op)
-            }
-        };
-        let ms = clock::now_ms() - started;
-        match begun {
-            Ok(edit) => {
-                let timings = &mut self.shared.borrow_mut().timings;
-                self.edit_clock = EditClock::begun(name, ms, is_gesture, timings);
-                self.edit = Some(edit);
-                self.edits_begun += 1;
-                self.is_edit_new = true;
-            }
-            Err(e) => self.set_status(e.to_string(), now),
-        }
-    }
-
-    /// Whether an import or a replay runs off the frame. The next op must apply to its
-    /// result, as it will in the session: begun now, it would finish the import here, in one
-    /// long frame, or be lost under the replayed document. So it is refused (the view still
-    /// orbits, and Cancel, Esc or undo stops the work).
-    fn is_busy(&self) -> bool {
-        self.import.is_some() || self.replay.is_some()
-    }
-
-    /// Runs the steps of the edit in progress while [`FRAME_BUDGET_MS`] lasts (at least
-    /// one; none in the frame it was begun in), and finishes it once done.
-    fn step_edit(&mut self, ctx: &egui::Context) {
-        let now = ctx.input(|i| i.time);
-        self.begin_waiting(now);
-        if !self.waiting.is_empty() && self.worker_job.is_none() {
-            ctx.request_repaint();
-        }
-        let Some(edit) = self.edit.as_mut() else {
-            return;
-        };
-        if std::mem::take(&mut self.is_edit_new) {
-            ctx.request_repaint();
-            return;
-        }
-        let was_gesture = edit.is_gesture();
-        let started = clock::now_ms();
-        let stepped = loop {
-            match hand_over(&mut self.offload, &mut self.worker_job, edit, now) {
-                HandOver::Waiting => break None,
-                HandOver::Landed { seconds } => {
-                    let timings = &mut self.shared.borrow_mut().timings;
-                    self.edit_clock.elsewhere(1000.0 * seconds, timings);
-                }
-                HandOver::Previewed { seconds } => {
-                    let timings = &mut self.shared.borrow_mut().timings;
-                    self.edit_clock.previewed(1000.0 * seconds, timings);
-                    // The next preview, or the committed result, goes to the worker too.
-                    continue;
-                }
-                HandOver::Here => {}
-            }
-            match edit.step() {
-                Ok(Progress::Working) if clock::now_ms() - started < FRAME_BUDGET_MS => {}
-                other => break Some(other),
-            }
-        };
-        let ms = clock::now_ms() - started;
-        self.edit_clock
-            .stepped(ms, was_gesture, &mut self.shared.borrow_mut().timings);
-        self.tools.edit_stepped(edit);
-        // With the worker: its answer repaints; one repaint shows the progress line once it
-        // is due, and its ring then ticks. Nothing else repaints: every frame draws the whole
-        // scene, which costs the worker its core on a machine without a GPU.
-        let Some(stepped) = stepped else {
-            if let Some((_, since)) = self.worker_job
-                && since + PROGRESS_AFTER_S > now
-            {
-                let due = since + PROGRESS_AFTER_S - now;
-                ctx.request_repaint_after(std::time::Duration::from_secs_f64(due));
-            }
-            return;
-        };
-        match stepped {
-            Ok(Progress::Done) => self.finish_edit(now),
-            // More work, or a gesture whose next samples may come from the page's listeners.
-            Ok(Progress::Working | Progress::Waiting) => ctx.request_repaint(),
-            Err(e) => {
-                self.edit = None;
-                if was_gesture {
-                    self.tools.gesture_refused();
-                }
-                self.set_status(e.to_string(), now);
-                self.settle_import(Err(e.to_string()), now);
-            }
-        }
-    }
-
-    /// Before a new gesture: it acts on the document with the edit in progress committed (a
-    /// shape still refining is finished first), unless the worker computes that edit. Then
-    /// the gesture sees the document as shown, and what it makes waits for the worker
-    /// ([`SketchApp::begin`]): a frame that finished the worker's op would stall for as long
-    /// as the worker takes (seconds for a 40k shape), and an orbit or a stroke must not.
-    fn finish_edit_unless_offloaded(&mut self, now: f64) {
-        if self.worker_job.is_none() {
-            self.finish_edit(now);
-        }
-    }
-
-    /// Finishes the edit in progress, if any (closing its gesture and running the steps it
-    /// has left); a refusal becomes a status message.
-    fn finish_edit(&mut self, now: f64) {
-        let Some(mut edit) = self.edit.take() else {
-            return;
-        };
-        // The worker's answer, if it is there, lands now; else the edit is finished here.
-        if let Some((job, _)) = self.worker_job.take() {
-            if let Some(answer) = self.offload.answer(job) {
-                supply(&mut edit, answer);
-            }
-            self.offload.cancel(job);
-        }
-        let models_before = self.shared.borrow().editor.document().models.len();
-        let optimized = match edit.op() {
-            Op::Optimize(input) => self
-                .shared
-                .borrow()
-                .editor
-                .document()
-                .models
-                .get(input.model)
-                .cloned()
-                .map(|m| (input.model, m)),
-            _ => None,
-        };
-        let started = clock::now_ms();
-        let result = edit.finish(&mut self.shared.borrow_mut().editor);
-        let ms = clock::now_ms() - started;
-        self.edit_clock
-            .finished(ms, &mut self.shared.borrow_mut().timings);
-        if self.import.is_some() {
-            let settled = result.as_ref().map(|_| ()).map_err(ToString::to_string);
-            if settled.is_ok() {
-                self.frame_after_rebuild = Some(models_before);
-            }
-            self.settle_import(settled, now);
-        }
-        match (result, optimized) {
-            (Err(e), _) => self.set_status(e.to_string(), now),
-            (Ok(()), Some((index, before))) => {
-                let after = Arc::clone(&self.shared.borrow().editor.document().models[index]);
-                let report = quality_report(&before.mesh, after.mesh.positions());
-                self.set_status(report.summary(), now);
-            }
-            (Ok(()), None) => {}
-        }
-    }
-
     /// Undo: drops a gesture in progress (a drag, an open preview) if there is one, else
     /// undoes the last op.
     fn undo(&mut self, now: f64) {
-        if self.edit.as_ref().is_some_and(Edit::is_gesture) {
+        if self.runner.edit().is_some_and(Edit::is_gesture) {
             self.drop_gesture(now);
-        } else if self.is_busy() || self.worker_job.is_some() {
+        } else if self.runner.is_busy() || self.runner.is_computing() {
             // Undoing an import, a replay or an op still running is not making it.
-            self.cancel_offloaded(now);
-            self.cancel_replay(now);
+            self.run(now, |r, cx| r.cancel_offloaded(cx));
+            self.run(now, |r, cx| r.cancel_replay(cx));
         } else {
-            self.begin(Op::Undo, false, now);
+            self.run(now, |r, cx| r.undo(cx));
         }
     }
 
     /// Drops the gesture in progress and the tool's part of it: nothing changes.
     fn drop_gesture(&mut self, now: f64) {
-        self.cancel_gesture();
+        self.runner.cancel_gesture();
         let dropped = self.tools.cancel();
         self.take_output(dropped, now);
-    }
-
-    /// What the progress line says while the worker computes the edit's op, once it has
-    /// taken [`PROGRESS_AFTER_S`] (a quick one shows no line that flickers).
-    fn computing(&self, now: f64) -> Option<String> {
-        let (_, since) = self.worker_job?;
-        let edit = self
-            .edit
-            .as_ref()
-            .filter(|e| e.model_op_to_run().is_some())?;
-        let name = edit.op().title();
-        (now - since >= PROGRESS_AFTER_S).then(|| format!("Computing the {name}…"))
-    }
-
-    /// Drops the edit in progress if it is an import, or if the worker computes its op:
-    /// nothing changes.
-    fn cancel_offloaded(&mut self, now: f64) {
-        let job = self.worker_job.take();
-        if let Some((job, _)) = job {
-            self.offload.cancel(job);
-        }
-        if self.import.is_some() {
-            self.edit = None;
-            self.settle_import(Err(String::from("The import was cancelled.")), now);
-        } else if let Some(edit) = self.edit.take_if(|_| job.is_some()) {
-            self.set_status(format!("The {} was cancelled.", edit.op().title()), now);
-        }
-    }
-
-    /// Ends the import in progress: says how it went, and tells who waits for it.
-    fn settle_import(&mut self, result: Result<(), String>, now: f64) {
-        let Some(import) = self.import.take() else {
-            return;
-        };
-        match &result {
-            Ok(()) => self.set_status(format!("Imported {}.", import.name), now),
-            Err(why) => self.set_status(why.clone(), now),
-        }
-        import.reply.send(result);
-    }
-
-    /// Drops the edit in progress if its gesture is still going on: nothing changes.
-    fn cancel_gesture(&mut self) {
-        if let Some(edit) = self.edit.take_if(|edit| edit.is_gesture()) {
-            edit.cancel();
-            // The worker's job can only be the gesture's preview.
-            if let Some((job, _)) = self.worker_job.take() {
-                self.offload.cancel(job);
-            }
-        }
-    }
-
-    /// Applies what a tool produced.
-    fn take_output(&mut self, output: ToolOutput, now: f64) {
-        let gesture = self.edit.as_mut().filter(|edit| edit.is_gesture());
-        match output {
-            ToolOutput::None => {}
-            ToolOutput::Commit(op) => self.begin(op, false, now),
-            ToolOutput::CommitAll(ops) => {
-                for op in ops {
-                    self.begin(op, false, now);
-                }
-            }
-            ToolOutput::Begin(op) => self.begin(op, true, now),
-            ToolOutput::Extend(sample) => {
-                if let Some(edit) = gesture {
-                    edit.extend(sample);
-                }
-            }
-            ToolOutput::End(sample) => {
-                if let Some(edit) = gesture {
-                    edit.extend(sample);
-                    edit.end_gesture();
-                }
-            }
-            ToolOutput::Revise(op) => match gesture {
-                Some(edit) if edit.op().name() == op.name() => edit.revise(op),
-                // The preview was committed meanwhile (another edit began): open a new one.
-                _ => self.begin(op, true, now),
-            },
-            ToolOutput::Finish => {
-                if let Some(edit) = gesture {
-                    edit.end_gesture();
-                }
-            }
-            ToolOutput::FinishWith(op) => match gesture {
-                Some(edit) if edit.op().name() == op.name() => {
-                    edit.revise(op);
-                    edit.end_gesture();
-                }
-                _ => self.begin(op, false, now),
-            },
-            ToolOutput::Cancel => self.cancel_gesture(),
-            ToolOutput::Refused(message) => self.set_status(message, now),
-            ToolOutput::Face { point, normal } => {
-                self.shared.borrow_mut().camera.face(point, normal);
-            }
-            ToolOutput::Backdrop(load) => {
-                if !load {
-                    self.backdrop.remove();
-                } else if let Err(message) = self.backdrop.pick() {
-                    self.set_status(message, now);
-                }
-            }
-            ToolOutput::Play => {
-                let played =
-                    Playback::start(self.shared.borrow().editor.document(), clock::now_ms());
-                match played {
-                    Ok(playback) => self.playback = Some(playback),
-                    Err(message) => self.set_status(message, now),
-                }
-            }
-        }
     }
 
     /// Switches the tool mode (toolbar, keys); a gesture in progress is dropped.
     fn set_mode(&mut self, mode: Mode, now: f64) {
         if mode != self.tools.mode() {
-            self.cancel_gesture();
+            self.runner.cancel_gesture();
         }
         let dropped = self.tools.set_mode(mode);
         self.shared.borrow_mut().mode = mode;
@@ -688,12 +172,7 @@ impl SketchApp {
         };
         if opened != self.opened {
             self.opened = opened;
-            self.cancel_offloaded(now);
-            // A replay still running would replace the document opened meanwhile.
-            self.cancel_replay(now);
-            self.cancel_gesture();
-            self.edit = None;
-            self.waiting.clear();
+            self.run(now, |r, cx| r.drop_all(cx));
             let dropped = self.tools.cancel();
             self.take_output(dropped, now);
         }
@@ -705,389 +184,97 @@ impl SketchApp {
         }
     }
 
-    /// Hands the document to the page's autosave when it is due, and keeps frames coming
-    /// while a change waits for it; a frame already spent ([`SPREAD_AFTER_MS`]), or one of
-    /// a rebuild spread over frames, leaves the write to one of the next [`AUTOSAVE_WAITS`].
-    #[cfg(target_arch = "wasm32")]
-    fn autosave(&mut self, ctx: &egui::Context, now: f64) {
-        let (revision, pending) = {
-            let shared = self.shared.borrow();
-            let revision = shared.revision();
-            (revision, shared.autosave.is_pending(revision))
-        };
-        let waits = self.is_scene_pending() || self.is_frame_spent(ctx);
-        if pending && self.autosave_waits < AUTOSAVE_WAITS && waits {
-            self.autosave_waits += 1;
-            return;
-        }
-        self.autosave_waits = 0;
-        let mut shared = self.shared.borrow_mut();
-        if !shared.autosave.due(revision, now) {
-            if shared.autosave.is_pending(revision) {
-                ctx.request_repaint_after(std::time::Duration::from_secs_f64(autosave::INTERVAL));
-            }
-            return;
-        }
-        let started = clock::now_ms();
-        let record = if crate::web::ready_op_texts(&mut shared, started, AUTOSAVE_STEP_MS) {
-            crate::web::autosave_pieces(&mut shared)
-        } else {
-            // A long op's text took this frame: the write comes in a later one.
-            ctx.request_repaint();
-            None
-        };
-        let written = record.map(crate::web::write_autosave);
-        // The frame's share of the write: the session's new text readied, or the record
-        // handed to the page's queue (the page benchmark reads it as "autosave").
-        let ms = clock::now_ms() - started;
-        clock::record(&mut shared.timings.of("autosave").frame_ms, ms);
-        drop(shared);
-        if let Some(Err(why)) = written {
-            self.set_status(format!("Could not autosave: {why}"), now);
-        }
-    }
-
     fn set_status(&mut self, message: String, now: f64) {
-        self.status = Some((message, now + STATUS_SECONDS));
+        self.status.say(message, now);
     }
 
-    /// Imports files in two frames: this frame says what is being imported, the next one
-    /// parses (the page cannot repaint while the parser runs).
-    fn run_imports(&mut self, ctx: &egui::Context) {
-        let now = ctx.input(|i| i.time);
-        let dropped = ctx.input(|i| i.raw.dropped_files.clone());
-        let imports = self.shared.borrow().imports.clone();
-        files::accept_dropped(dropped, &imports, ctx);
-        if let Some(message) = self.backdrop.poll(ctx) {
-            self.set_status(message, now);
-        }
-        if self.is_busy() {
-            // What comes next applies to the imported or replayed document: it waits.
-            return;
-        }
-        if let Some(incoming) = self.announced_import.take() {
-            match incoming {
-                files::Incoming::Import(input, reply) => self.begin_import(input, reply, now),
-                files::Incoming::Session { name, bytes } => self.open_session(&name, bytes, now),
-                files::Incoming::Replay(json, reply) => self.begin_replay(&json, reply, now),
+    /// The file actions and the edit runner, and what they work with.
+    fn parts(&mut self, now: f64) -> (&mut FileActions, &mut EditRunner, Cx<'_>) {
+        let cx = Cx {
+            shared: &self.shared,
+            tools: &mut self.tools,
+            status: &mut self.status,
+            frame_from: &mut self.scene.frame_after_rebuild,
+            now,
+        };
+        (&mut self.files, &mut self.runner, cx)
+    }
+
+    /// Runs `f` on the edit runner, lending it what it works with.
+    fn run<R>(&mut self, now: f64, f: impl FnOnce(&mut EditRunner, &mut Cx<'_>) -> R) -> R {
+        let (_, runner, mut cx) = self.parts(now);
+        f(runner, &mut cx)
+    }
+
+    /// Applies what a tool produced: to the edit, or to the view, the backdrop, playing.
+    fn take_output(&mut self, output: ToolOutput, now: f64) {
+        match self.run(now, |r, cx| r.take_output(output, cx)) {
+            Some(ToolOutput::Face { point, normal }) => {
+                self.shared.borrow_mut().camera.face(point, normal);
             }
-        }
-        let incoming = imports.borrow_mut().pop_front();
-        if let Some(files::Incoming::Replay(json, reply)) = incoming {
-            self.begin_replay(&json, reply, now);
-        } else if let Some(incoming) = incoming {
-            let (name, bytes): (&str, usize) = match &incoming {
-                files::Incoming::Import(input, _) => {
-                    (&input.files[0].name, files::import_bytes(input))
+            Some(ToolOutput::Backdrop(load)) => {
+                if !load {
+                    self.backdrop.remove();
+                } else if let Err(message) = self.backdrop.pick() {
+                    self.set_status(message, now);
                 }
-                files::Incoming::Session { name, bytes } => (name, bytes.len()),
-                files::Incoming::Replay(json, _) => ("the session", json.len()),
-            };
-            let what = format!("Opening {name} ({:.1} MB)…", bytes as f64 / 1e6);
-            self.set_status(what, now);
-            self.announced_import = Some(incoming);
-            ctx.request_repaint();
-        }
-    }
-
-    /// Begins replaying a session (the page API's `replay`): parsed now, its ops applied over
-    /// the next frames (an import's files read by the worker), the document replaced once
-    /// it is through. Bad JSON or a refused op changes nothing.
-    fn begin_replay(&mut self, json: &str, reply: files::Reply, now: f64) {
-        match Session::from_json(json) {
-            Ok(session) => {
-                self.replay = Some(ReplayInProgress {
-                    replay: Replay::new(session.ops),
-                    job: None,
-                    reply,
-                });
             }
-            Err(e) => {
-                self.set_status(e.to_string(), now);
-                reply.send(Err(e.to_string()));
-            }
-        }
-    }
-
-    /// Runs the replay's steps while [`FRAME_BUDGET_MS`] lasts, and opens its document once
-    /// it is through.
-    fn step_replay(&mut self, ctx: &egui::Context) {
-        let now = ctx.input(|i| i.time);
-        let Some(replaying) = self.replay.as_mut() else {
-            return;
-        };
-        let started = clock::now_ms();
-        let stepped = loop {
-            // An import's read and a curve op's or fine creation's result: in the worker,
-            // as when the user makes them.
-            if let Some(edit) = replaying.replay.edit_mut()
-                && let HandOver::Waiting =
-                    hand_over(&mut self.offload, &mut replaying.job, edit, now)
-            {
-                break Ok(false);
-            }
-            match replaying.replay.step() {
-                Ok(Progress::Done) => break Ok(true),
-                Ok(_) if clock::now_ms() - started < FRAME_BUDGET_MS => {}
-                Ok(_) => {
-                    ctx.request_repaint();
-                    break Ok(false);
+            Some(ToolOutput::Play) => {
+                let played =
+                    Playback::start(self.shared.borrow().editor.document(), clock::now_ms());
+                match played {
+                    Ok(playback) => self.scene.playback = Some(playback),
+                    Err(message) => self.set_status(message, now),
                 }
-                Err(e) => break Err(e),
             }
-        };
-        match stepped {
-            Ok(false) => {}
-            Ok(true) => {
-                if let Some(replaying) = self.replay.take() {
-                    self.shared
-                        .borrow_mut()
-                        .open(replaying.replay.into_editor());
-                    replaying.reply.send(Ok(()));
-                }
-                // Followed now, not in the next frame: a replay the page starts as soon as
-                // this one's Promise resolves would be taken for the old document's, and
-                // cancelled.
-                self.follow_page(now);
-                ctx.request_repaint();
+            _ => {}
+        }
+    }
+
+    /// Does what the user asked for from the toolbar or the keyboard.
+    fn command(&mut self, command: Command, ctx: &egui::Context, now: f64) {
+        match command {
+            Command::Undo => self.undo(now),
+            Command::Redo => self.run(now, |r, cx| r.redo(cx)),
+            Command::FrameAll => self.scene.frame_all(&self.shared),
+            Command::ResetView => self.shared.borrow_mut().camera = OrbitCamera::default(),
+            Command::NewDocument | Command::Documents => {
+                let method = match command {
+                    Command::NewDocument => "newDocument",
+                    _ => "show",
+                };
+                let (files, runner, mut cx) = self.parts(now);
+                files.page_documents(method, runner, &mut cx);
             }
-            Err(e) => {
-                if let Some(replaying) = self.replay.take() {
-                    replaying.reply.send(Err(e.to_string()));
-                }
-                self.set_status(format!("Could not replay the session: {e}"), now);
+            Command::Import => {
+                let (files, _, mut cx) = self.parts(now);
+                files.import_files(ctx, &mut cx);
             }
-        }
-    }
-
-    /// Drops the replay in progress: the document stays as it was.
-    fn cancel_replay(&mut self, now: f64) {
-        let Some(replaying) = self.replay.take() else {
-            return;
-        };
-        if let Some((job, _)) = replaying.job {
-            self.offload.cancel(job);
-        }
-        let why = String::from("The replay was cancelled.");
-        self.set_status(why.clone(), now);
-        replaying.reply.send(Err(why));
-    }
-
-    /// Begins importing: in the page the worker reads the files while the view keeps
-    /// drawing, with a progress line and Cancel; the import lands as one undoable step.
-    fn begin_import(&mut self, input: ImportInput, reply: files::Reply, now: f64) {
-        let name = input.files[0].name.clone();
-        let bytes = files::import_bytes(&input);
-        self.status = None;
-        self.begin(Op::Import(input), false, now);
-        if self.edit.is_none() {
-            let why = self.status.as_ref().map(|(why, _)| why.clone());
-            return reply.send(Err(why.unwrap_or_default()));
-        }
-        self.import = Some(ImportInProgress {
-            name,
-            megabytes: bytes as f64 / 1e6,
-            reply,
-        });
-    }
-
-    /// Opens a session file as a document of its own (its history comes with it). A file
-    /// that does not replay changes nothing. In the page, the document shown is kept first
-    /// (the documents panel lists it) and the autosave then follows the opened one.
-    fn open_session(&mut self, name: &str, bytes: Vec<u8>, now: f64) {
-        let replayed = String::from_utf8(bytes)
-            .map_err(|_| String::from("it is not text"))
-            .and_then(|text| Editor::replay_json(&text).map_err(|e| e.to_string()));
-        let editor = match replayed {
-            Ok(editor) => editor,
-            Err(why) => {
-                let sentence = format!("Could not open {name}: {why}. Nothing changed.");
-                return self.set_status(sentence, now);
+            Command::Export => {
+                let (files, runner, mut cx) = self.parts(now);
+                files.export(runner, &mut cx);
             }
-        };
-        self.cancel_gesture();
-        let had_work = !self.shared.borrow().editor.ops().is_empty();
-        #[cfg(target_arch = "wasm32")]
-        {
-            let title = name
-                .trim_end_matches(".json")
-                .trim_end_matches(".sketchmesh");
-            let record = crate::web::autosave_pieces(&mut self.shared.borrow_mut());
-            if let Err(why) = crate::web::keep_and_start(record, title) {
-                let sentence =
-                    format!("Did not open {name}: the work shown could not be kept ({why}).");
-                return self.set_status(sentence, now);
+            Command::SaveSession => {
+                let (files, runner, mut cx) = self.parts(now);
+                files.save_session(runner, &mut cx);
             }
-        }
-        self.shared.borrow_mut().open(editor);
-        self.frame_after_rebuild = Some(0);
-        let kept = match had_work {
-            true => " The previous document is kept under Documents.",
-            false => "",
-        };
-        self.set_status(format!("Opened {name}.{kept}"), now);
-    }
-
-    /// The page's documents panel: `"show"` it, or `"newDocument"` (which keeps the document
-    /// shown). The desktop build has no store, and its toolbar disables both.
-    fn page_documents(&mut self, method: &str, now: f64) {
-        self.finish_edit(now);
-        #[cfg(target_arch = "wasm32")]
-        if let Err(why) = crate::web::documents(method) {
-            self.set_status(format!("Could not open the documents: {why}"), now);
-        }
-        #[cfg(not(target_arch = "wasm32"))]
-        let _ = method;
-    }
-
-    fn save_session(&mut self, now: f64) {
-        self.finish_edit(now);
-        let text = self.shared.borrow().editor.session_json();
-        let message = match files::download(text.as_bytes(), files::Download::Session) {
-            Ok(name) => format!("Saved the session as {name}."),
-            Err(error) => format!("Could not save the session: {error}"),
-        };
-        self.set_status(message, now);
-    }
-
-    fn import_files(&mut self, ctx: &egui::Context) {
-        let imports = self.shared.borrow().imports.clone();
-        if let Err(message) = files::pick_files(&imports, ctx) {
-            self.set_status(message, ctx.input(|i| i.time));
-        }
-    }
-
-    fn export(&mut self, now: f64) {
-        self.finish_edit(now);
-        let bytes = sketchmesh_core::io::write_glb(self.shared.borrow().editor.document());
-        let message = match files::download(&bytes, files::Download::Glb) {
-            Ok(name) => format!("Exported {name} ({:.1} MB).", bytes.len() as f64 / 1e6),
-            Err(error) => format!("Could not export: {error}"),
-        };
-        self.set_status(message, now);
-    }
-
-    fn shortcuts(&mut self, ctx: &egui::Context) {
-        if ctx.egui_wants_keyboard_input() {
-            return;
-        }
-        let now = ctx.input(|i| i.time);
-        let shortcut = |modifiers, key| KeyboardShortcut::new(modifiers, key);
-        let redo = ctx.input_mut(|i| {
-            i.consume_shortcut(&shortcut(Modifiers::COMMAND | Modifiers::SHIFT, Key::Z))
-                || i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::Y))
-        });
-        if redo {
-            self.begin(Op::Redo, false, now);
-        }
-        if ctx.input_mut(|i| i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::Z))) {
-            self.undo(now);
-        }
-        if ctx.input_mut(|i| i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::O))) {
-            self.import_files(ctx);
-        }
-        let save_session = ctx.input_mut(|i| {
-            i.consume_shortcut(&shortcut(Modifiers::COMMAND | Modifiers::SHIFT, Key::S))
-        });
-        if save_session {
-            self.save_session(now);
-        }
-        let export = ctx.input_mut(|i| {
-            i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::S))
-                || i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::E))
-        });
-        if export {
-            self.export(now);
-        }
-        let pressed = |key| ctx.input_mut(|i| i.consume_shortcut(&shortcut(Modifiers::NONE, key)));
-        if pressed(Key::Enter) {
-            let confirmed = self.tools.confirm();
-            self.take_output(confirmed, now);
-        }
-        if pressed(Key::Escape) {
-            // Stops what runs: an import being read, an op computed, a replay, the gesture.
-            self.cancel_offloaded(now);
-            self.cancel_replay(now);
-            self.drop_gesture(now);
-        }
-        for (key, factor) in [(Key::OpenBracket, 1.0 / 1.25), (Key::CloseBracket, 1.25)] {
-            if pressed(key) {
-                let nudged = self.tools.nudge(factor);
-                self.take_output(nudged, now);
+            Command::Mode(mode) => self.set_mode(mode, now),
+            Command::Tool(output) => self.take_output(*output, now),
+            Command::Stop => {
+                self.run(now, |r, cx| r.cancel_offloaded(cx));
+                self.run(now, |r, cx| r.cancel_replay(cx));
+                self.drop_gesture(now);
             }
-        }
-        if pressed(Key::B) {
-            self.tools.next_stroke_use();
-        }
-        if pressed(Key::Delete) || pressed(Key::Backspace) {
-            let deleted = self
-                .tools
-                .delete_selected(self.shared.borrow().editor.document());
-            self.take_output(deleted, now);
-        }
-        if pressed(Key::F) {
-            self.frame_all();
-        }
-        if pressed(Key::R) || pressed(Key::Home) {
-            self.shared.borrow_mut().camera = OrbitCamera::default();
-        }
-        for mode in Mode::ALL {
-            if pressed(mode.key()) {
+            Command::ToolKey(mode, key) => {
                 self.set_mode(mode, now);
+                let output = self
+                    .tools
+                    .on_key(key, self.shared.borrow().editor.document());
+                self.take_output(output, now);
             }
-        }
-        if pressed(Key::W) {
-            self.options.wireframe = !self.options.wireframe;
-        }
-        if pressed(Key::G) {
-            self.options.grid = !self.options.grid;
-        }
-        if pressed(Key::K) {
-            let settings = self.tools.oversketch_settings_mut();
-            settings.manual = !settings.manual;
-            self.set_mode(Mode::Oversketch, now);
-        }
-        if pressed(Key::A) {
-            let settings = self.tools.oversketch_settings_mut();
-            settings.roi = match settings.roi {
-                OversketchRoi::NearHandle => OversketchRoi::Part,
-                OversketchRoi::Part => OversketchRoi::NearHandle,
-            };
-            self.set_mode(Mode::Oversketch, now);
-        }
-        if pressed(Key::H) || pressed(Key::F1) {
-            self.show_help = !self.show_help;
-        }
-    }
-
-    /// Frames everything in the document, or resets the view when it is empty.
-    pub fn frame_all(&mut self) {
-        let mut shared = self.shared.borrow_mut();
-        match self.geometry.bounds {
-            Some((min, max)) => shared.camera.frame(min, max),
-            None => shared.camera = OrbitCamera::default(),
-        }
-    }
-
-    /// Frames the models from index `first` on (what an import brought, beside the others),
-    /// or everything when there are none (an import of points or lines only); the sketches
-    /// and point clouds around them are left out of view if they must.
-    fn frame_models_from(&mut self, first: usize) {
-        let bounds = {
-            let shared = self.shared.borrow();
-            let models = shared
-                .editor
-                .document()
-                .models
-                .get(first..)
-                .unwrap_or_default();
-            (models.iter())
-                .filter_map(|m| m.mesh.bounding_box())
-                .reduce(|(lo, hi), (a, b)| (lo.min(a), hi.max(b)))
-        };
-        match bounds {
-            Some((lo, hi)) => self.shared.borrow_mut().camera.frame(lo, hi),
-            None => self.frame_all(),
+            Command::ToggleWireframe => self.scene.options.wireframe ^= true,
+            Command::ToggleGrid => self.scene.options.grid ^= true,
+            Command::ToggleHelp => self.panels.show_help ^= true,
         }
     }
 
@@ -1109,26 +296,23 @@ impl SketchApp {
     /// beginning a gesture, and the router then sends their moves to it), then followed.
     fn handle_hands(&mut self, hands: &Hands, viewport: egui::Rect, now: f64) {
         if matches!(hands, Hands::Down(_)) {
-            self.cancel_gesture();
-            self.finish_edit_unless_offloaded(now);
+            self.runner.cancel_gesture();
+            self.run(now, |r, cx| r.finish_edit_unless_offloaded(cx));
         }
         let output = self.feed_tool(viewport, |tools, view, doc| {
             tools.on_hands(hands, view, doc)
         });
         if matches!(hands, Hands::Down(_)) && matches!(output, ToolOutput::Begin(_)) {
-            self.router.give_hands_to_tool();
+            self.pointer.router.give_hands_to_tool();
         }
         self.take_output(output, now);
     }
 
     /// Routes this frame's pointer samples to the tool and the camera.
     fn handle_pointer(&mut self, ctx: &egui::Context, viewport: egui::Rect) {
-        #[cfg(not(target_arch = "wasm32"))]
-        ctx.input(|i| self.egui_pointer.collect(i, &mut self.samples));
-        self.samples.extend(self.web_samples.borrow_mut().drain(..));
         let now = ctx.input(|i| i.time);
         let mut routed = Vec::new();
-        let samples = std::mem::take(&mut self.samples);
+        let samples = self.pointer.take_samples(ctx);
         let polled = samples.len();
         for k in 0..=polled {
             routed.clear();
@@ -1138,10 +322,10 @@ impl SketchApp {
                         && ctx
                             .layer_id_at(sample.pos_in_screen)
                             .is_none_or(|l| l.order == egui::Order::Background);
-                    self.router.route(sample, on_view, &mut routed);
+                    self.pointer.router.route(sample, on_view, &mut routed);
                 }
                 // Between samples: a finger held still becomes a long press.
-                None => self.router.poll(sample_clock(ctx), &mut routed),
+                None => self.pointer.router.poll(sample_clock(ctx), &mut routed),
             }
             for r in &routed {
                 match r {
@@ -1152,29 +336,32 @@ impl SketchApp {
                         .camera
                         .apply(*action, viewport.height().into()),
                     Routed::Tap(TapCommand::Undo) => self.undo(now),
-                    Routed::Tap(TapCommand::Redo) => self.begin(Op::Redo, false, now),
-                    Routed::Tap(TapCommand::DoubleTap(at)) => self.double_tap(*at, viewport),
+                    Routed::Tap(TapCommand::Redo) => self.run(now, |r, cx| r.redo(cx)),
+                    Routed::Tap(TapCommand::DoubleTap(at)) => {
+                        self.scene.double_tap(&self.shared, *at, viewport)
+                    }
                     Routed::Tap(TapCommand::LongPress(at)) => self.long_press(*at, viewport, now),
-                    Routed::Tool(event) if self.holds_stroke(event) => {}
+                    Routed::Tool(event)
+                        if self.pointer.holds_stroke(event, self.runner.is_busy()) => {}
                     Routed::Tool(event) => {
                         // The pen's eraser erases whatever the tool, for one stroke.
                         if let ToolEvent::Begin(sample) = event
                             && sample.is_eraser()
                             && self.tools.mode() != Mode::Erase
                         {
-                            self.erasing_from = Some(self.tools.mode());
+                            self.pointer.erasing_from = Some(self.tools.mode());
                             self.set_mode(Mode::Erase, now);
                         }
                         if matches!(event, ToolEvent::Begin(_)) {
-                            self.cancel_gesture();
-                            self.finish_edit_unless_offloaded(now);
+                            self.runner.cancel_gesture();
+                            self.run(now, |r, cx| r.finish_edit_unless_offloaded(cx));
                         }
                         let output = self.feed_tool(viewport, |tools, view, doc| {
                             tools.on_event(event, view, doc)
                         });
                         self.take_output(output, now);
                         if matches!(event, ToolEvent::End(_) | ToolEvent::Cancel)
-                            && let Some(mode) = self.erasing_from.take()
+                            && let Some(mode) = self.pointer.erasing_from.take()
                         {
                             self.set_mode(mode, now);
                         }
@@ -1183,7 +370,7 @@ impl SketchApp {
             }
         }
         // A finger down may become a long press without another sample.
-        if self.router.is_touching() {
+        if self.pointer.router.is_touching() {
             ctx.request_repaint_after(std::time::Duration::from_millis(50));
         }
         // A stroke across a shape cuts it when no tap follows in time.
@@ -1194,35 +381,14 @@ impl SketchApp {
         }
     }
 
-    /// Whether `event` belongs to a stroke begun while the app was busy (see
-    /// [`SketchApp::is_busy`]): such a stroke draws nothing, from its beginning to its end.
-    fn holds_stroke(&mut self, event: &ToolEvent) -> bool {
-        if matches!(event, ToolEvent::Begin(_)) {
-            self.holding_stroke = self.is_busy();
-        }
-        let held = self.holding_stroke;
-        if matches!(event, ToolEvent::End(_) | ToolEvent::Cancel) {
-            self.holding_stroke = false;
-        }
-        held
-    }
-
-    /// A one-finger double tap at `at`: on empty canvas it frames everything, as in 3D apps
-    /// on tablets; on a model it does nothing more than its taps did.
-    fn double_tap(&mut self, at: egui::Pos2, viewport: egui::Rect) {
-        if self.model_at(at, viewport).is_none() {
-            self.frame_all();
-        }
-    }
-
     /// A long press at `at`: on a model, its context actions (the finger's stroke is
     /// cancelled); elsewhere nothing, and the stroke goes on.
     fn long_press(&mut self, at: egui::Pos2, viewport: egui::Rect, now: f64) {
-        let Some(model) = self.model_at(at, viewport) else {
+        let Some(model) = model_at(&self.shared.borrow(), at, viewport) else {
             return;
         };
         let mut cancelled = Vec::new();
-        self.router.take_touch(&mut cancelled);
+        self.pointer.router.take_touch(&mut cancelled);
         for routed in &cancelled {
             if let Routed::Tool(event) = routed {
                 let output = self.feed_tool(viewport, |tools, view, doc| {
@@ -1231,34 +397,18 @@ impl SketchApp {
                 self.take_output(output, now);
             }
         }
-        self.context_menu = Some(ContextMenu { at, model });
-    }
-
-    /// The index of the model seen at screen point `at`.
-    fn model_at(&self, at: egui::Pos2, viewport: egui::Rect) -> Option<usize> {
-        let relative = at - viewport.min;
-        let size = viewport.size();
-        let tap = StrokeInput {
-            viewport: [size.x.into(), size.y.into()],
-            camera: self.shared.borrow().camera.camera(),
-            stroke: vec![[relative.x.into(), relative.y.into(), 0.5]],
-        };
-        model_under(self.shared.borrow().editor.document(), &tap)
+        self.panels.context_menu = Some(ContextMenu { at, model });
     }
 
     /// Carries out a context menu's choice for model `model`.
     fn context_action(&mut self, model: usize, action: ContextAction, now: f64) {
         match action {
-            ContextAction::Frame => {
-                let mut shared = self.shared.borrow_mut();
-                let bounds = (shared.editor.document().models.get(model))
-                    .and_then(|m| m.mesh.bounding_box());
-                if let Some((min, max)) = bounds {
-                    shared.camera.frame(min, max);
+            ContextAction::Frame => self.scene.frame_model(&self.shared, model),
+            ContextAction::Duplicate | ContextAction::Delete => {
+                if let Some(op) = action.op(model) {
+                    self.run(now, |r, cx| r.begin(op, false, cx));
                 }
             }
-            ContextAction::Duplicate => self.begin(Op::Duplicate(ModelInput { model }), false, now),
-            ContextAction::Delete => self.begin(Op::Delete(ModelInput { model }), false, now),
             ContextAction::Oversketch => self.set_mode(Mode::Oversketch, now),
         }
     }
@@ -1274,642 +424,91 @@ impl SketchApp {
                 shared.camera.wheel(scroll.into());
             }
             // egui also derives a zoom from touch pinches, which the router already handles.
-            if zoom != 1.0 && !self.router.is_touching() {
+            if zoom != 1.0 && !self.pointer.router.is_touching() {
                 shared.camera.dolly(1.0 / f64::from(zoom));
             }
         }
         let started = clock::now_ms();
-        self.step_edit(ui.ctx());
-        self.step_replay(ui.ctx());
-        self.frame_work_ms += clock::now_ms() - started;
+        let (ctx, now) = (ui.ctx().clone(), ui.input(|i| i.time));
+        self.run(now, |r, cx| r.step_edit(&ctx, cx));
+        if self.run(now, |r, cx| r.step_replay(&ctx, cx)) {
+            self.follow_page(now);
+        }
+        self.scene.frame_work_ms += clock::now_ms() - started;
         let shared = self.shared.borrow();
-        let shown = (self.edit.as_ref()).map_or(shared.editor.document(), Edit::document);
-        self.textures.poll(shown, ui.ctx());
+        let shown = (self.runner.edit()).map_or(shared.editor.document(), Edit::document);
+        self.scene.textures.poll(shown, ui.ctx());
         drop(shared);
-        self.update_geometry(ui.ctx());
+        let (edit, begun) = (self.runner.edit(), self.runner.edits_begun());
+        self.scene.update(ui.ctx(), &self.shared, edit, begun);
         if self.has_renderer {
             let camera = self.shared.borrow().camera.camera();
-            let aspect = f64::from(viewport.width() / viewport.height().max(1.0));
-            let callback = SceneCallback {
-                rect: viewport,
-                uniforms: Uniforms {
-                    clip_from_world: camera.clip_from_world(aspect).as_mat4().to_cols_array_2d(),
-                    eye: camera.eye.as_vec3().extend(1.0).to_array(),
-                    viewport: [0.0; 4],
-                },
-                geometry: self.geometry.clone(),
-                options: self.options,
-                repaint: ui.ctx().clone(),
-            };
-            ui.painter()
-                .add(egui_wgpu::Callback::new_paint_callback(viewport, callback));
+            self.scene.paint(ui, viewport, &camera);
         }
         self.backdrop.paint(ui, viewport);
-        self.live_stroke_ui(ui, viewport);
-        if let Some(edit) = &self.edit {
+        let shared = self.shared.borrow();
+        let scene = self.runner.scene(&shared, viewport);
+        view_overlay::draw(ui, &scene, &self.tools, self.runner.waiting());
+        drop(shared);
+        if let Some(edit) = self.runner.edit() {
             let levels = falloff_levels(edit);
             let camera = self.shared.borrow().camera.camera();
-            (self.falloff_panel).ui(ui, viewport, &camera, edit, self.edits_begun, levels);
-        }
-        if let Some(at) = self.router.pen_hover().filter(|at| viewport.contains(*at)) {
-            // Where the pen would touch: a ring that shows on light and dark alike.
-            let painter = ui.painter();
-            painter.circle_stroke(
-                at,
-                5.0,
-                egui::Stroke::new(3.0, egui::Color32::from_black_alpha(140)),
+            (self.panels.falloff).ui(
+                ui,
+                viewport,
+                &camera,
+                edit,
+                self.runner.edits_begun(),
+                levels,
             );
-            painter.circle_stroke(at, 5.0, egui::Stroke::new(1.5, egui::Color32::WHITE));
+        }
+        if let Some(at) = self
+            .pointer
+            .router
+            .pen_hover()
+            .filter(|at| viewport.contains(*at))
+        {
+            view_overlay::pen_ring(ui, at);
         }
         self.view_rect = viewport;
-        let idle = self.stroke_preview().is_none() && self.edit.is_none();
-        let progress = match (&self.import, &self.replay) {
-            (Some(import), _) => Some(format!(
-                "Importing {} ({:.1} MB)…",
-                import.name, import.megabytes
-            )),
-            (None, Some(replaying)) => {
-                let (done, of) = replaying.replay.done_of();
-                Some(format!(
-                    "Replaying the session: op {} of {of}…",
-                    (done + 1).min(of)
-                ))
-            }
-            (None, None) => self.computing(ui.input(|i| i.time)),
-        };
+        let idle = self.tools.preview().is_none() && self.runner.edit().is_none();
+        let progress = self.runner.progress(ui.input(|i| i.time));
         self.shared.borrow_mut().progress.clone_from(&progress);
         if self.shared.borrow().thumbnails.is_capturing() {
             // A thumbnail is being taken: the shapes only.
         } else if let Some(what) = progress {
             if panels::progress::progress_ui(ui.ctx(), viewport, &what) {
                 let now = ui.input(|i| i.time);
-                self.cancel_offloaded(now);
-                self.cancel_replay(now);
+                self.run(now, |r, cx| r.cancel_offloaded(cx));
+                self.run(now, |r, cx| r.cancel_replay(cx));
             }
-        } else if let Some((status, _)) = &self.status {
+        } else if let Some(status) = self.status.message() {
             status_ui(ui, viewport, status);
         } else if self.shared.borrow().editor.document().is_empty() && idle {
-            let text = "Draw a closed outline to make a shape. Two fingers or right-drag orbit.";
-            let galley = centered_galley(ui, viewport, text, egui::Color32::from_white_alpha(110));
-            let pos = viewport.center_bottom() - egui::vec2(0.0, 40.0 + galley.size().y);
-            ui.painter().galley(pos, galley, egui::Color32::WHITE);
+            view_overlay::first_hint(ui, viewport);
         }
     }
-
-    /// Rebuilds the GPU arrays when the document drawn changed (the editor's, or the one the
-    /// edit in progress shows, such as a shape being created), and moves a model's vertices
-    /// in place while the edit moves them (a pull's preview).
-    fn update_geometry(&mut self, ctx: &egui::Context) {
-        let edit = self.edit.as_ref();
-        let source = (
-            self.shared.borrow().revision(),
-            edit.map(Edit::revision)
-                .filter(|&revision| revision != 0)
-                .map(|revision| (self.edits_begun, revision)),
-            self.textures.version,
-            self.options.wireframe,
-        );
-        let moved = edit.and_then(Edit::moved_model);
-        let motion_ended = self.shown_motion.is_some() && moved.is_none();
-        let rebuilt = source != self.geometry_source || motion_ended;
-        let stashed = self.stashed_geometry.take();
-        let had_stash = stashed.is_some();
-        if rebuilt && let Some((built_for, built)) = stashed.filter(|(s, _)| *s == source) {
-            // Built in the last frame, which its work had filled: shown from this one, which
-            // uploads it (that upload is this frame's work).
-            self.geometry = built;
-            self.geometry_source = built_for;
-            self.shown_motion = None;
-            self.frame_work_ms += SPREAD_AFTER_MS;
-        } else if rebuilt {
-            let waited = std::mem::take(&mut self.rebuild_waited);
-            if !waited && self.is_frame_spent(ctx) {
-                // The next frame rebuilds; this one draws what it drew (a moved model's
-                // positions belong to the document to be built).
-                self.rebuild_waited = true;
-                return;
-            }
-            let shared = self.shared.borrow();
-            let document = edit.map_or(shared.editor.document(), Edit::document);
-            let generation = self.geometry.generation + 1;
-            let started = clock::now_ms();
-            // The arrays of unchanged models are copied, unless textures were decoded since
-            // or the wireframe was turned on or off.
-            let (built_with, wanted) = (self.geometry_source, source);
-            let previous =
-                (built_with.2 == wanted.2 && built_with.3 == wanted.3).then_some(&*self.geometry);
-            // A large new model's normals take a frame of their own (one with little else to
-            // do, unless it waited already: not the one that landed it), its arrays the next.
-            let ahead = self.normals_ahead.is_wanted(document, previous);
-            if ahead && !waited && self.frame_work_ms > FRAME_BUDGET_MS {
-                self.rebuild_waited = true;
-                ctx.request_repaint();
-                return;
-            }
-            if ahead {
-                self.normals_ahead.compute(document, previous);
-            }
-            let large = !self.normals_ahead.is_empty();
-            let built = (!ahead).then(|| {
-                Arc::new(SceneGeometry::build(
-                    document,
-                    generation,
-                    &self.textures,
-                    previous,
-                    self.options.wireframe,
-                    &std::mem::take(&mut self.normals_ahead),
-                ))
-            });
-            // What a new document costs the frame before the GPU sees it (the page bench).
-            let ms = clock::now_ms() - started;
-            self.frame_work_ms += ms;
-            drop(shared);
-            clock::record(
-                &mut self.shared.borrow_mut().timings.of("scene").frame_ms,
-                ms,
-            );
-            let Some(built) = built else {
-                self.rebuild_waited = true;
-                ctx.request_repaint();
-                return;
-            };
-            if !had_stash && source != self.geometry_source && (large || self.is_frame_spent(ctx)) {
-                // Its upload waits for the next frame, which shows it (unless the document
-                // moves on meanwhile: then that frame builds and shows the next one); so
-                // does a large model's, whatever this frame took.
-                self.stashed_geometry = Some((source, built));
-                ctx.request_repaint();
-                return;
-            }
-            self.geometry = built;
-            self.geometry_source = source;
-            self.shown_motion = None;
-        }
-        if let (Some(edit), Some((index, positions))) = (edit, moved)
-            && self.shown_motion != Some(edit.generation())
-            && let Some(model) = edit.document().models.get(index)
-        {
-            let geometry = Arc::make_mut(&mut self.geometry);
-            geometry.move_model(index, model, positions, &mut self.moved_normals);
-            if let Some((shaded, vertices, weights)) = edit.region_falloff()
-                && shaded == index
-            {
-                geometry.shade_model(index, vertices, weights, falloff_levels(edit));
-            }
-            self.shown_motion = Some(edit.generation());
-        }
-        self.play_frame();
-        if rebuilt && let Some(first) = self.frame_after_rebuild.take() {
-            match first {
-                0 => self.frame_all(),
-                first => self.frame_models_from(first),
-            }
-        }
-    }
-
-    /// Whether the scene's rebuild is under way over frames (its normals, its arrays or their
-    /// upload still to come): the autosave waits for it rather than share its frames.
-    #[cfg(target_arch = "wasm32")]
-    fn is_scene_pending(&self) -> bool {
-        self.rebuild_waited || self.stashed_geometry.is_some() || !self.normals_ahead.is_empty()
-    }
-
-    /// Whether this frame's own work has reached [`SPREAD_AFTER_MS`], so that what is left waits
-    /// for the next frame (which is asked for).
-    fn is_frame_spent(&self, ctx: &egui::Context) -> bool {
-        let spent = self.frame_work_ms >= SPREAD_AFTER_MS;
-        if spent {
-            ctx.request_repaint();
-        }
-        spent
-    }
-
-    /// Shows the animation's pose of each model while it plays; when it has played
-    /// through (or an edit began), the document's pose again.
-    fn play_frame(&mut self) {
-        let Some(playback) = &mut self.playback else {
-            return;
-        };
-        let time = playback
-            .advance(clock::now_ms())
-            .filter(|_| self.edit.is_none());
-        let Some(time) = time else {
-            self.playback = None;
-            // Rebuilt from the document at the next frame.
-            self.geometry_source.1 = Some((u64::MAX, u64::MAX));
-            return;
-        };
-        let shared = self.shared.borrow();
-        let models = &shared.editor.document().models;
-        let geometry = Arc::make_mut(&mut self.geometry);
-        for (index, positions) in playback.poses(time) {
-            if let Some(model) = models.get(index) {
-                geometry.move_model(index, model, positions, &mut self.moved_normals);
-            }
-        }
-    }
-
-    /// Whether an animation is playing (the page then draws every frame).
-    fn is_playing(&self) -> bool {
-        self.playback.is_some()
-    }
-
-    /// The stroke in progress of the active tool.
-    fn stroke_preview(&self) -> Option<&[StrokePoint]> {
-        self.tools.preview()
-    }
-
-    /// Highlights the silhouette piece an over-sketch stroke would replace (shown by the edit
-    /// in progress), or the picked handle with its ends marked, and says what to do next.
-    fn handle_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
-        let hint = self.tools.hint(self.shared.borrow().editor.document());
-        if let Some(hint) = hint {
-            hint_ui(ui, viewport, hint);
-        }
-        self.gizmo_ui(ui, viewport);
-        self.curve_handles_ui(ui, viewport);
-        self.region_handles_ui(ui, viewport);
-        self.region_profile_ui(ui, viewport);
-        if let Some(amount) = self.edit.as_ref().and_then(feature_amount) {
-            hint_ui(ui, viewport, &amount);
-        }
-        if let Some(kept) = self.edit.as_ref().and_then(Edit::limited_move) {
-            let said = format!(
-                "Held at {:.0}% of the move: more would fold the part through itself",
-                100.0 * kept
-            );
-            hint_ui(ui, viewport, &said);
-        }
-        let picked = self
-            .tools
-            .handle()
-            .map(|h| (h.points.as_slice(), h.confident, h.croppable));
-        let outline = (self.edit.as_ref())
-            .and_then(Edit::outline)
-            .map(|o| (o.points.as_slice(), o.is_confident, false));
-        for (points, confident, croppable) in picked.into_iter().chain(outline) {
-            outline_ui(ui, viewport, points, confident, croppable);
-        }
-        let shared = self.shared.borrow();
-        let shown = (self.edit.as_ref()).map_or(shared.editor.document(), Edit::document);
-        let camera = shared.camera.camera();
-        let size = glam::DVec2::new(viewport.width().into(), viewport.height().into());
-        let moved = self.edit.as_ref().and_then(Edit::moved_model);
-        for (curve, active) in self.tools.pose_curves(shown, moved) {
-            let on_screen: Vec<glam::DVec2> = curve
-                .iter()
-                .filter_map(|&p| camera.screen_from_world(p, size).map(|s| s.truncate()))
-                .collect();
-            outline_ui(ui, viewport, &on_screen, active, active);
-        }
-        let controls: Vec<egui::Pos2> = (self.tools.pose_controls(shown, moved).iter())
-            .filter_map(|&p| camera.screen_from_world(p, size))
-            .map(|s| viewport.min + egui::vec2(s.x as f32, s.y as f32))
-            .collect();
-        let colour = egui::Color32::from_rgb(250, 210, 80);
-        ui.painter().add(egui::Shape::line(
-            controls.clone(),
-            egui::Stroke::new(1.5, colour.gamma_multiply(0.7)),
-        ));
-        for c in controls {
-            ui.painter()
-                .circle(c, 9.0, colour, egui::Stroke::new(2.0, egui::Color32::BLACK));
-        }
-    }
-
-    /// The curve handles, in the handles tool, at the pose a drag previews.
-    fn curve_handles_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
-        if self.tools.mode() != Mode::Handles {
-            return;
-        }
-        let shared = self.shared.borrow();
-        let camera = shared.camera.camera();
-        let doc = self
-            .edit
-            .as_ref()
-            .map_or(shared.editor.document(), Edit::document);
-        let dragged = self.edit.as_ref().and_then(|edit| match edit.op() {
-            Op::HandleEdit(input) => Some((input, edit.limited_move().unwrap_or(1.0))),
-            _ => None,
-        });
-        let selected = self.tools.selected_handle_point();
-        panels::curve_handles::curve_handles_ui(ui, viewport, doc, &camera, dragged, selected);
-    }
-
-    /// The region tool's handles: per handle three axes (red along the curve, green along
-    /// the surface normal, blue across), each drawn in its thirds: a bar near the handle
-    /// (move), a square in the middle (scale), a ring at the end (turn); the part being
-    /// dragged brighter.
-    fn region_handles_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
-        let camera = self.shared.borrow().camera.camera();
-        let size = glam::DVec2::new(viewport.width().into(), viewport.height().into());
-        let axes = self.tools.region_handles(&camera, size);
-        let at = |p: glam::DVec2| viewport.min + egui::vec2(p.x as f32, p.y as f32);
-        let painter = ui.painter();
-        for mark in &axes {
-            let [r, g, b] = [[230, 80, 70], [90, 200, 90], [80, 140, 240]][mark.axis];
-            let colour = |part| match mark.dragged == Some(part) {
-                true => egui::Color32::from_rgb(255, 240, 160),
-                false => egui::Color32::from_rgb(r, g, b),
-            };
-            let (from, to) = (at(mark.from), at(mark.to));
-            let third = |k: f32| from + (to - from) * (k / 3.0);
-            let shadow = egui::Stroke::new(6.0, egui::Color32::from_black_alpha(140));
-            painter.line_segment([from, to], shadow);
-            painter.line_segment(
-                [from, third(1.0)],
-                egui::Stroke::new(4.0, colour(crate::tools::region::Part::Translate)),
-            );
-            painter.line_segment(
-                [third(1.0), to],
-                egui::Stroke::new(2.0, egui::Color32::from_rgb(r, g, b)),
-            );
-            let square = egui::Rect::from_center_size(third(1.5), egui::vec2(11.0, 11.0));
-            painter.rect_filled(square, 2.0, colour(crate::tools::region::Part::Scale));
-            painter.circle_stroke(
-                to,
-                7.0,
-                egui::Stroke::new(3.0, colour(crate::tools::region::Part::Rotate)),
-            );
-        }
-        for mark in axes.iter().filter(|m| m.axis == 0) {
-            painter.circle_filled(at(mark.from), 6.0, egui::Color32::WHITE);
-            painter.circle_stroke(
-                at(mark.from),
-                6.0,
-                egui::Stroke::new(1.5, egui::Color32::BLACK),
-            );
-        }
-    }
-
-    /// The region tool's profile panel in the view's lower right corner: the cross-section
-    /// across the curve coloured from blue (one side of the curve) to orange (the other), the
-    /// same colours along it on the model, the arrow out of the surface where the curve
-    /// crosses, and the stroke drawn over it in white.
-    fn region_profile_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
-        let size = glam::DVec2::new(viewport.width().into(), viewport.height().into());
-        let Some(view) = self.tools.region_profile(size) else {
-            return;
-        };
-        let at = |p: glam::DVec2| viewport.min + egui::vec2(p.x as f32, p.y as f32);
-        let painter = ui.painter();
-        let panel = egui::Rect::from_min_size(
-            at(view.corner),
-            egui::vec2(view.side as f32, view.side as f32),
-        );
-        painter.rect_filled(panel, 8.0, egui::Color32::from_black_alpha(200));
-        painter.text(
-            panel.left_top() + egui::vec2(8.0, 6.0),
-            egui::Align2::LEFT_TOP,
-            "Profile: draw over it",
-            egui::FontId::proportional(12.0),
-            egui::Color32::from_gray(210),
-        );
-        if let Some(why) = &view.refusal {
-            let galley = painter.layout(
-                why.clone(),
-                egui::FontId::proportional(12.0),
-                egui::Color32::from_gray(220),
-                panel.width() - 16.0,
-            );
-            painter.galley(
-                panel.left_top() + egui::vec2(8.0, 26.0),
-                galley,
-                egui::Color32::WHITE,
-            );
-            return;
-        }
-        let gradient = |k: usize, n: usize| {
-            let t = k as f32 / (n.max(2) - 1) as f32;
-            let mix = |a: f32, b: f32| (a + (b - a) * t) as u8;
-            egui::Color32::from_rgb(mix(70.0, 250.0), mix(150.0, 150.0), mix(255.0, 40.0))
-        };
-        let camera = self.shared.borrow().camera.camera();
-        let on_screen: Vec<Option<egui::Pos2>> = (view.section_in_world.iter())
-            .map(|&p| camera.screen_from_world(p, size).map(|s| at(s.truncate())))
-            .collect();
-        let n = view.section.len();
-        for k in 1..n {
-            let colour = gradient(k, n);
-            let stroke = egui::Stroke::new(2.5, colour);
-            painter.line_segment([at(view.section[k - 1]), at(view.section[k])], stroke);
-            if let (Some(a), Some(b)) = (on_screen[k - 1], on_screen[k]) {
-                painter.line_segment([a, b], egui::Stroke::new(3.0, colour));
-            }
-        }
-        let (from, to) = view.curve;
-        painter.arrow(
-            at(from),
-            at(to) - at(from),
-            egui::Stroke::new(2.0, egui::Color32::from_rgb(255, 230, 120)),
-        );
-        if let Some(stroke) = &view.stroke {
-            let points: Vec<egui::Pos2> = stroke.iter().map(|&p| at(p)).collect();
-            painter.add(egui::Shape::line(
-                points,
-                egui::Stroke::new(2.0, egui::Color32::WHITE),
-            ));
-        }
-    }
-
-    /// The move tool's handles around the selected model: the ring that turns it, the square
-    /// that scales it, a dot at its middle; the one being dragged is drawn brighter.
-    fn gizmo_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
-        let camera = self.shared.borrow().camera.camera();
-        let size = glam::DVec2::new(viewport.width().into(), viewport.height().into());
-        let gizmo = {
-            let shared = self.shared.borrow();
-            self.tools.gizmo(shared.editor.document(), &camera, size)
-        };
-        let Some((gizmo, dragged)) = gizmo else {
-            return;
-        };
-        let at = |p: glam::DVec2| viewport.min + egui::vec2(p.x as f32, p.y as f32);
-        let colour = |handle| match dragged == Some(handle) {
-            true => egui::Color32::from_rgb(255, 214, 120),
-            false => egui::Color32::from_rgb(240, 160, 60),
-        };
-        let painter = ui.painter();
-        painter.circle_stroke(
-            at(gizmo.centre),
-            gizmo.radius as f32,
-            egui::Stroke::new(5.0, colour(GizmoHandle::Turn)),
-        );
-        painter.circle_filled(at(gizmo.centre), 7.0, colour(GizmoHandle::Move));
-        let square = egui::Rect::from_center_size(at(gizmo.scale_handle()), egui::vec2(22.0, 22.0));
-        painter.rect_filled(square, 3.0, colour(GizmoHandle::Scale));
-    }
-
-    /// Draws the stroke in progress, smoothed as it will be stored, with pressure widths.
-    fn live_stroke_ui(&self, ui: &egui::Ui, viewport: egui::Rect) {
-        self.handle_ui(ui, viewport);
-        if let Some((points, what)) = self.tools.waiting() {
-            // A stroke waiting for its confirming tap: shown dimmer, with what a tap does.
-            stroke_ui(ui, viewport, points, egui::Color32::from_rgb(120, 200, 255));
-            hint_ui(ui, viewport, what);
-        }
-        let camera = self.shared.borrow().camera.camera();
-        for mark in self.tools.marks(&camera) {
-            mark_ui(ui, viewport, &mark);
-        }
-        if let Some(raw) = self.stroke_preview() {
-            stroke_ui(ui, viewport, raw, egui::Color32::from_rgb(242, 199, 82));
-        }
-        // The outline of a fine shape the worker computes stays, dimmer, until the shape
-        // lands, and so do the strokes made meanwhile, which wait for it.
-        let computed = (self.edit.as_ref())
-            .filter(|edit| self.worker_job.is_some() && matches!(edit.op(), Op::Create(_)));
-        for op in computed.map(Edit::op).into_iter().chain(&self.waiting) {
-            let points = op.stroke_points();
-            stroke_ui(ui, viewport, &points, egui::Color32::from_rgb(200, 170, 90));
-        }
-    }
-}
-
-/// A piece of outline on screen: green when confident, orange otherwise; the ends marked
-/// when they can be dragged.
-fn outline_ui(
-    ui: &egui::Ui,
-    viewport: egui::Rect,
-    points: &[glam::DVec2],
-    confident: bool,
-    croppable: bool,
-) {
-    let color = if confident {
-        egui::Color32::from_rgb(90, 220, 120)
-    } else {
-        egui::Color32::from_rgb(240, 150, 60)
-    };
-    let points: Vec<egui::Pos2> = points
-        .iter()
-        .map(|p| viewport.min + egui::vec2(p.x as f32, p.y as f32))
-        .collect();
-    if croppable {
-        for end in [points.first(), points.last()].into_iter().flatten() {
-            ui.painter().circle_filled(*end, 7.0, color);
-        }
-    }
-    ui.painter()
-        .add(egui::Shape::line(points, egui::Stroke::new(4.0, color)));
-}
-
-/// How many gray levels a region edit's fall-off shows: one per level of its op (5 by
-/// default).
-fn falloff_levels(edit: &Edit) -> usize {
-    match edit.op() {
-        Op::RegionEdit(input) => input.levels.as_ref().map_or(5, Vec::len),
-        _ => 5,
-    }
-}
-
-/// A feature drag's amount as the user reads it, and where folding holds it back.
-fn feature_amount(edit: &Edit) -> Option<String> {
-    let Op::SketchFeature(input) = edit.op() else {
-        return None;
-    };
-    let say = |amount: f64| match input.kind {
-        FeatureKind::Suggestive => format!("{amount:.0}°"),
-        FeatureKind::Flatten => String::from("flat"),
-        _ => format!("× {amount:.1}"),
-    };
-    let asked = say(input.amount());
-    Some(match edit.limited_amount() {
-        Some(held) => format!(
-            "{asked}: held at {}, more would fold the surface over",
-            say(held)
-        ),
-        None => asked,
-    })
-}
-
-/// What to do next, at the top of the view, wrapped to its width (a phone's is narrow).
-fn hint_ui(ui: &egui::Ui, viewport: egui::Rect, text: &str) {
-    let color = egui::Color32::from_white_alpha(200);
-    let galley = centered_galley(ui, viewport, text, color);
-    ui.painter()
-        .galley(viewport.center_top() + egui::vec2(0.0, 18.0), galley, color);
-}
-
-/// `text` laid out centred and wrapped to the view's width, to be drawn at the view's
-/// horizontal middle.
-fn centered_galley(
-    ui: &egui::Ui,
-    viewport: egui::Rect,
-    text: &str,
-    color: egui::Color32,
-) -> std::sync::Arc<egui::Galley> {
-    let width = (viewport.width() - 40.0).max(80.0);
-    let mut job = egui::text::LayoutJob::simple(
-        text.to_owned(),
-        egui::FontId::proportional(16.0),
-        color,
-        width,
-    );
-    job.halign = egui::Align::Center;
-    ui.painter().layout_job(job)
-}
-
-/// The latest message, at the bottom of the view on a dark band, wrapped to its width: the
-/// view never moves or shrinks for a message, however long.
-fn status_ui(ui: &egui::Ui, viewport: egui::Rect, text: &str) {
-    let color = ui.visuals().warn_fg_color;
-    let font = egui::FontId::proportional(15.0);
-    let width = (viewport.width() - 40.0).max(80.0);
-    let galley = ui.painter().layout(text.to_owned(), font, color, width);
-    let size = galley.size();
-    let pos = viewport.center_bottom() - egui::vec2(0.5 * size.x, size.y + 18.0);
-    let band = egui::Rect::from_min_size(pos, size).expand(8.0);
-    ui.painter()
-        .rect_filled(band, 6.0, egui::Color32::from_rgb(20, 21, 25));
-    ui.painter().galley(pos, galley, color);
-}
-
-/// Draws a stroke, smoothed as it will be stored, with pressure widths.
-fn stroke_ui(ui: &egui::Ui, viewport: egui::Rect, raw: &[StrokePoint], color: egui::Color32) {
-    let points = process_stroke(raw).unwrap_or_else(|_| raw.to_vec());
-    let to_screen = |p: &StrokePoint| viewport.min + egui::vec2(p.pos.x as f32, p.pos.y as f32);
-    for pair in points.windows(2) {
-        let width = pressure_width((pair[0].pressure + pair[1].pressure) * 0.5) as f32;
-        ui.painter()
-            .line_segment([to_screen(&pair[0]), to_screen(&pair[1])], (width, color));
-        ui.painter()
-            .circle_filled(to_screen(&pair[1]), width * 0.5, color);
-    }
-}
-
-/// A lasso (a line) or a brush stroke (a translucent band as wide as the brush) of the
-/// optimize tool: green for what moves, orange for features that hold.
-fn mark_ui(ui: &egui::Ui, viewport: egui::Rect, mark: &Mark) {
-    let color = match mark.features {
-        false => egui::Color32::from_rgb(110, 220, 150),
-        true => egui::Color32::from_rgb(240, 150, 60),
-    };
-    let Some(radius) = mark.radius else {
-        return stroke_ui(ui, viewport, &mark.points, color);
-    };
-    let points: Vec<egui::Pos2> = (mark.points.iter())
-        .map(|p| viewport.min + egui::vec2(p.pos.x as f32, p.pos.y as f32))
-        .collect();
-    let band = egui::Stroke::new(2.0 * radius as f32, color.gamma_multiply(0.35));
-    match points.as_slice() {
-        [only] => ui.painter().circle_filled(*only, radius as f32, band.color),
-        _ => ui.painter().add(egui::Shape::line(points, band)),
-    };
 }
 
 impl eframe::App for SketchApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         let ctx = ui.ctx().clone();
         self.shared.borrow_mut().notes.take_escape(&ctx);
-        self.shortcuts(&ctx);
-        self.run_imports(&ctx);
+        for command in shortcuts::read(&ctx, &self.tools) {
+            let now = ctx.input(|i| i.time);
+            self.command(command, &ctx, now);
+        }
+        let now = ctx.input(|i| i.time);
+        if let Some(message) = self.backdrop.poll(&ctx) {
+            self.set_status(message, now);
+        }
+        let (files, runner, mut cx) = self.parts(now);
+        files.run_imports(&ctx, runner, &mut cx);
         let now = ctx.input(|i| i.time);
         self.follow_page(now);
-        self.frame_work_ms = 0.0;
-        if self.status.as_ref().is_some_and(|(_, until)| *until < now) {
-            self.status = None;
-        }
-        if self.is_playing() {
+        self.scene.frame_work_ms = 0.0;
+        self.status.expire(now);
+        if self.scene.is_playing() {
             ctx.request_repaint();
         }
         let layout =
@@ -1925,195 +524,40 @@ impl eframe::App for SketchApp {
                     ui,
                     layout,
                     &shared.editor,
-                    &mut self.options,
+                    &mut self.scene.options,
                     &mut self.tools,
-                    &mut self.show_help,
+                    &mut self.panels.show_help,
                 )
             })
             .inner;
-        match action {
-            Some(panels::toolbar::Action::Undo) => self.undo(now),
-            Some(panels::toolbar::Action::Redo) => self.begin(Op::Redo, false, now),
-            Some(panels::toolbar::Action::FrameAll) => self.frame_all(),
-            Some(panels::toolbar::Action::ResetView) => {
-                self.shared.borrow_mut().camera = OrbitCamera::default()
-            }
-            Some(panels::toolbar::Action::NewDocument) => self.page_documents("newDocument", now),
-            Some(panels::toolbar::Action::Documents) => self.page_documents("show", now),
-            Some(panels::toolbar::Action::Import) => self.import_files(&ctx),
-            Some(panels::toolbar::Action::Export) => self.export(now),
-            Some(panels::toolbar::Action::SaveSession) => self.save_session(now),
-            Some(panels::toolbar::Action::Mode(mode)) => self.set_mode(mode, now),
-            Some(panels::toolbar::Action::Tool(output)) => self.take_output(*output, now),
-            None => {}
+        if let Some(action) = action {
+            self.command(action, &ctx, now);
         }
         egui::CentralPanel::no_frame().show(ui, |ui| self.viewport_ui(ui));
         self.shared
             .borrow_mut()
             .thumbnails
             .run(&ctx, self.view_rect);
-        if let Some((model, action)) = context_menu_ui(&ctx, &mut self.context_menu) {
+        if let Some((model, action)) = context_menu_ui(&ctx, &mut self.panels.context_menu) {
             self.context_action(model, action, now);
         }
         // After the frame's edits land, and left to a later frame if their work filled this
         // one.
         #[cfg(target_arch = "wasm32")]
-        self.autosave(&ctx, now);
+        self.autosave
+            .run(&ctx, &self.shared, &self.scene, &mut self.status, now);
         let backend = self.shared.borrow().backend.clone();
-        panels::help::help_ui(&ctx, &mut self.show_help, &backend, self.router.pen_seen());
+        panels::help::help_ui(
+            &ctx,
+            &mut self.panels.show_help,
+            &backend,
+            self.pointer.router.pen_seen(),
+        );
         let mut shared = self.shared.borrow_mut();
         let revision = shared.revision();
         let Shared { editor, notes, .. } = &mut *shared;
         notes.follow((revision.opened, revision.edits), editor.notes());
         panels::notes::notes_ui(&ctx, notes);
-    }
-}
-
-/// What became of the long part of an edit, see [`hand_over`].
-enum HandOver {
-    /// Nothing for the worker: step the edit here.
-    Here,
-    /// The worker is on it: nothing to step here meanwhile.
-    Waiting,
-    /// The worker's answer landed in the edit, this long after it was handed over.
-    Landed { seconds: f64 },
-    /// The worker's preview of a gesture landed in the edit, this long after it was asked.
-    Previewed { seconds: f64 },
-}
-
-/// Hands the long, pure part of `edit` (an import's read, a curve op's result, a drag's
-/// preview) to the page's worker as `job`, or lands the worker's answer in it. A job in
-/// hand is polled whatever the edit needs now: a preview asked for while the pointer was
-/// down lands (and shows) before the committed result is asked for.
-fn hand_over(
-    offload: &mut Offload,
-    job: &mut Option<(JobId, f64)>,
-    edit: &mut Edit,
-    now: f64,
-) -> HandOver {
-    let work = match (edit.import_to_read(), edit.model_op_to_run()) {
-        (Some(input), _) => Work::Import(input),
-        (None, Some((models, op))) => Work::ModelOp(models, op),
-        (None, None) => match edit.preview_to_run() {
-            Some((models, op, version)) => Work::Preview(models, op, version),
-            // A preview asked for while the pointer was down, polled (what a job computes
-            // is sent once, the first time it is polled).
-            None if job.is_some() => Work::Preview(&[], edit.op(), edit.version()),
-            None => return HandOver::Here,
-        },
-    };
-    let (id, since) = *job.get_or_insert_with(|| (offload.job(), now));
-    match offload.poll(id, work) {
-        Poll::Pending => HandOver::Waiting,
-        Poll::Arrived(Answer::Moved(moved)) => {
-            *job = None;
-            edit.supply_preview(moved);
-            HandOver::Previewed {
-                seconds: now - since,
-            }
-        }
-        Poll::Arrived(answer) => {
-            *job = None;
-            supply(edit, answer);
-            HandOver::Landed {
-                seconds: now - since,
-            }
-        }
-        Poll::NotOffloaded => {
-            *job = None;
-            // Should the worker fail in the middle of a drag, the frames preview it again.
-            edit.preview_here();
-            HandOver::Here
-        }
-    }
-}
-
-/// Lands the worker's answer in the edit it was computed for.
-fn supply(edit: &mut Edit, answer: Answer) {
-    match answer {
-        Answer::Imported(imported) => edit.supply_import(imported),
-        Answer::Model(changed) => edit.supply_model(changed),
-        Answer::Moved(moved) => edit.supply_preview(moved),
-    }
-}
-
-/// An import being read (in the page, by the worker): what the progress line says, and who
-/// waits for it to land.
-struct ImportInProgress {
-    name: String,
-    megabytes: f64,
-    reply: files::Reply,
-}
-
-/// A session being replayed over frames: its steps, the worker's job for the op in progress
-/// (as [`hand_over`] keeps it), and who waits for the result.
-struct ReplayInProgress {
-    replay: Replay,
-    job: Option<(JobId, f64)>,
-    reply: files::Reply,
-}
-
-/// The costs of the edit in progress, recorded in [`clock::Timings`] under its op's name as
-/// they become known (see [`clock::EditTimings`]).
-#[derive(Debug, Default)]
-struct EditClock {
-    name: &'static str,
-    /// The begin and the steps of its first frame, while the gesture goes on; `None` once
-    /// recorded.
-    begin_ms: Option<f64>,
-    /// The work since the input was complete, so far.
-    finish_ms: f64,
-}
-
-impl EditClock {
-    /// The clock of an edit of `name` whose begin took `ms`.
-    fn begun(name: &'static str, ms: f64, is_gesture: bool, timings: &mut clock::Timings) -> Self {
-        let mut edit_clock = EditClock {
-            name,
-            begin_ms: Some(ms),
-            finish_ms: 0.0,
-        };
-        if !is_gesture {
-            edit_clock.record_begin(timings);
-        }
-        edit_clock
-    }
-
-    fn record_begin(&mut self, timings: &mut clock::Timings) {
-        if let Some(ms) = self.begin_ms.take() {
-            clock::record(&mut timings.of(self.name).begin_ms, ms);
-        }
-    }
-
-    /// One frame's steps, taken while the gesture went on or after.
-    fn stepped(&mut self, ms: f64, was_gesture: bool, timings: &mut clock::Timings) {
-        match (&mut self.begin_ms, was_gesture) {
-            (Some(begin_ms), true) => {
-                *begin_ms += ms;
-                self.record_begin(timings);
-            }
-            (None, true) => clock::record(&mut timings.of(self.name).frame_ms, ms),
-            (_, false) => {
-                self.record_begin(timings);
-                self.finish_ms += ms;
-            }
-        }
-    }
-
-    /// The worker's part, which took `ms` while the page drew.
-    fn elsewhere(&self, ms: f64, timings: &mut clock::Timings) {
-        clock::record(&mut timings.of(self.name).elsewhere_ms, ms);
-    }
-
-    /// A preview the worker computed, which took `ms` (asked to shown) while the page drew.
-    fn previewed(&self, ms: f64, timings: &mut clock::Timings) {
-        clock::record(&mut timings.of(self.name).preview_ms, ms);
-    }
-
-    /// The finish, which took `ms`.
-    fn finished(&mut self, ms: f64, timings: &mut clock::Timings) {
-        self.record_begin(timings);
-        clock::record(&mut timings.of(self.name).finish_ms, self.finish_ms + ms);
     }
 }
 

@@ -7,14 +7,15 @@
 use std::cell::RefCell;
 use std::rc::Rc;
 
-use js_sys::{JsString, Object, Reflect, Uint8Array};
-use sketchmesh_core::document::SessionPiece;
+use js_sys::{Object, Reflect, Uint8Array};
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
-use crate::app::{Shared, SketchApp};
-use crate::autosave::{RECORD_TAIL, Record, record_head};
+use crate::app::SketchApp;
+use crate::autosave::Record;
 use crate::input::web_pointer::WebPointer;
+use crate::page_store::write_autosave;
+use crate::shared::Shared;
 
 /// Starts Sketchmesh on the canvas with id `canvas_id`.
 #[wasm_bindgen]
@@ -39,10 +40,11 @@ pub async fn start(canvas_id: String) -> Result<(), JsValue> {
                 let mut app = SketchApp::new(cc);
                 app.set_coarse_pointer(is_pointer_coarse());
                 let ctx = cc.egui_ctx.clone();
-                let pointer = WebPointer::listen(&listen_on, app.web_samples.clone(), move || {
-                    ctx.request_repaint()
-                })
-                .map_err(|e| format!("Could not listen to pointer events: {e:?}"))?;
+                let pointer =
+                    WebPointer::listen(&listen_on, app.pointer.web_samples.clone(), move || {
+                        ctx.request_repaint()
+                    })
+                    .map_err(|e| format!("Could not listen to pointer events: {e:?}"))?;
                 // The listeners live as long as the page.
                 std::mem::forget(pointer);
                 install_page_api(app.shared(), cc.egui_ctx.clone())
@@ -203,7 +205,7 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
             if !shared.autosave.is_pending(revision) {
                 return Ok(());
             }
-            if let Some(record) = autosave_pieces(&mut shared) {
+            if let Some(record) = shared.autosave_pieces() {
                 write_autosave(record).map_err(|e| js_error(&e))?;
             }
             // The frames' clock, which the schedule compares with (not the wall clock).
@@ -287,130 +289,6 @@ fn restore(shared: &mut Shared, text: Option<&str>, at_start: bool) -> Result<()
     let revision = shared.revision();
     shared.autosave.start(revision);
     Ok(())
-}
-
-/// Keeps the document shown (`record`, or nothing when it has no ops) in the page's store and
-/// makes a new document, named `title`, the one the autosave writes to: a session file opened
-/// becomes a document of its own.
-///
-/// Errors: a sentence when the page has no store or the call throws at once.
-pub fn keep_and_start(record: Option<js_sys::Array>, title: &str) -> Result<(), String> {
-    let text = record.map_or(JsValue::NULL, JsValue::from);
-    call_page(
-        "sketchmeshAutosave",
-        "keep",
-        &[text, JsValue::from_str(title)],
-    )
-}
-
-/// Hands `record` (its pieces, see [`autosave_pieces`]) to the page's store
-/// (`window.sketchmeshAutosave.save`, from `web/main.js`), which writes it to IndexedDB
-/// without blocking the frame.
-///
-/// Errors: a sentence when the page has no store or the call throws at once.
-pub fn write_autosave(record: js_sys::Array) -> Result<(), String> {
-    call_page("sketchmeshAutosave", "save", &[record.into()])
-}
-
-/// Each op's session text as a JavaScript string, made once per op of the document shown
-/// (the editor's log only grows until another editor is opened).
-#[derive(Default)]
-pub struct OpTexts {
-    /// The [`crate::autosave::Revision::opened`] of the editor they are of.
-    opened: u64,
-    texts: Vec<JsString>,
-}
-
-impl OpTexts {
-    /// Empties `shared`'s texts if they are of another editor than the one it shows.
-    fn renew(shared: &mut Shared) {
-        let opened = shared.revision().opened;
-        if shared.op_texts.opened != opened {
-            shared.op_texts = OpTexts {
-                opened,
-                texts: Vec::new(),
-            };
-        }
-    }
-}
-
-/// Readies the autosave's pieces while `budget_ms` lasts from `started` (at least one step
-/// when it has not passed): each new op's JSON written, then converted to a JavaScript
-/// string, one after the other, so that an import's op (its files in base64, tens of
-/// megabytes for a scan) takes a frame for each and the write a third, not one frame for
-/// all. Whether every op is ready.
-pub fn ready_op_texts(shared: &mut Shared, started: f64, budget_ms: f64) -> bool {
-    OpTexts::renew(shared);
-    let (editor, cache) = (&shared.editor, &mut shared.op_texts);
-    loop {
-        let index = cache.texts.len();
-        if index == editor.ops().len() {
-            return true;
-        }
-        if crate::clock::now_ms() - started > budget_ms {
-            return false;
-        }
-        if editor.is_op_json_written(index) {
-            let json = editor.op_json(index).unwrap_or_default();
-            cache.texts.push(JsString::from(json));
-        } else {
-            editor.op_json(index);
-        }
-    }
-}
-
-/// The autosave record of what `shared` shows, as pieces of text whose concatenation is the
-/// record, or `None` for a document without ops (an empty page is not a document worth
-/// keeping). Each op is a piece of its own, its text converted once and kept as a JavaScript
-/// string, so an autosave after a scan's import neither converts nor copies the session's tens
-/// of megabytes again; and the page's store (`web/store.js`) keeps a long piece apart from the
-/// record, written once rather than at every change.
-pub fn autosave_pieces(shared: &mut Shared) -> Option<js_sys::Array> {
-    if shared.editor.ops().is_empty() {
-        return None;
-    }
-    OpTexts::renew(shared);
-    let cache = &mut shared.op_texts;
-    let pieces = js_sys::Array::new();
-    pieces.push(&JsString::from(record_head(shared.camera, shared.mode)));
-    shared.editor.session_pieces(|piece| {
-        let text = match piece {
-            SessionPiece::Op(index, json) => {
-                if index == cache.texts.len() {
-                    cache.texts.push(JsString::from(json));
-                }
-                cache.texts[index].clone()
-            }
-            SessionPiece::Text(text) => JsString::from(text),
-        };
-        pieces.push(&text);
-    });
-    pieces.push(&JsString::from(RECORD_TAIL));
-    Some(pieces)
-}
-
-/// The documents panel (`web/documents.js`): `"show"` opens it, `"newDocument"` keeps the
-/// document shown and starts an empty one.
-///
-/// Errors: a sentence when the page has no panel.
-pub fn documents(method: &str) -> Result<(), String> {
-    call_page("sketchmeshDocuments", method, &[])
-}
-
-/// Calls `window[object][method](...args)`.
-fn call_page(object: &str, method: &str, args: &[JsValue]) -> Result<(), String> {
-    let missing = || format!("the page has no {object}.{method}");
-    let window = web_sys::window().ok_or("there is no window")?;
-    let target = Reflect::get(&window, &JsValue::from_str(object)).map_err(|_| missing())?;
-    let function: js_sys::Function = Reflect::get(&target, &JsValue::from_str(method))
-        .ok()
-        .and_then(|f| f.dyn_into().ok())
-        .ok_or_else(missing)?;
-    let args: js_sys::Array = args.iter().collect();
-    function
-        .apply(&target, &args)
-        .map(|_| ())
-        .map_err(|e| format!("{e:?}"))
 }
 
 /// `{width, height, pixels}`, the pixels an `Uint8ClampedArray` ready for `ImageData`.

@@ -2,6 +2,7 @@
 //! frame it, duplicate it, delete it, or over-sketch it.
 
 use egui::Pos2;
+use sketchmesh_core::document::{ModelInput, Op};
 
 /// Touch-sized rows.
 const ROW: egui::Vec2 = egui::vec2(160.0, 44.0);
@@ -26,6 +27,17 @@ pub enum ContextAction {
     Delete,
     /// Switch to the over-sketch tool to redraw its outline.
     Oversketch,
+}
+
+impl ContextAction {
+    /// The op it makes for model `model`, if it makes one.
+    pub fn op(self, model: usize) -> Option<Op> {
+        match self {
+            ContextAction::Duplicate => Some(Op::Duplicate(ModelInput { model })),
+            ContextAction::Delete => Some(Op::Delete(ModelInput { model })),
+            ContextAction::Frame | ContextAction::Oversketch => None,
+        }
+    }
 }
 
 /// Draws the open menu; a choice, a press outside or Escape closes it.

@@ -11,6 +11,8 @@ use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::Edit;
 use sketchmesh_core::mesh::Mesh;
 
+pub use crate::overlay::falloff_gray;
+
 /// The panel's side as a share of the view's shorter side, and its bounds in points.
 const SIDE_SHARE: f32 = 0.3;
 const SIDE_RANGE: (f32, f32) = (120.0, 220.0);
@@ -165,11 +167,4 @@ fn disc_mesh(
         }
     }
     painted
-}
-
-/// The gray a fall-off level is drawn in on the model (`scene.wgsl`'s `falloff_gray`,
-/// gamma-encoded), so the panel and the model agree.
-pub fn falloff_gray(level: f64) -> u8 {
-    let linear = 0.04 + (1.0 - 0.04) * level.clamp(0.0, 1.0);
-    (linear.powf(1.0 / 2.2) * 255.0).round() as u8
 }

@@ -1,10 +1,20 @@
 //! Panels around the 3D view: the toolbar, the help window, the notes, the fall-off, a
-//! model's context menu and the progress line; the curve handles drawn over it.
+//! model's context menu and the progress line.
 
 pub mod context_menu;
-pub mod curve_handles;
 pub mod falloff;
 pub mod help;
 pub mod notes;
 pub mod progress;
 pub mod toolbar;
+
+/// The panels' state kept between frames.
+#[derive(Default)]
+pub struct PanelState {
+    /// A model's context actions, open after a long press on it.
+    pub context_menu: Option<context_menu::ContextMenu>,
+    /// The fall-off panel's painted disc.
+    pub falloff: falloff::FalloffPanel,
+    /// Whether the help window is open.
+    pub show_help: bool,
+}

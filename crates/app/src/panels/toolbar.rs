@@ -1,38 +1,12 @@
 //! The toolbar: import and export, undo and redo for tablets (no keyboard there), view
 //! switches, status.
 
-use sketchmesh_core::document::{Editor, OversketchFit};
-use sketchmesh_core::oversketch::{OutlineKind, OversketchRoi};
+use sketchmesh_core::document::Editor;
 
 use crate::render::ViewOptions;
-use crate::tools::{Mode, OversketchSettings, ToolOutput, ToolSet};
+use crate::tools::{Mode, ToolOutput, ToolSet};
 
-/// A toolbar button the user pressed.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Action {
-    /// Undo the last operation.
-    Undo,
-    /// Redo the last undone operation.
-    Redo,
-    /// Frame everything.
-    FrameAll,
-    /// Back to the default view.
-    ResetView,
-    /// Keep the document and start an empty one.
-    NewDocument,
-    /// Show the documents kept in this browser.
-    Documents,
-    /// Pick glTF files to import.
-    Import,
-    /// Download the document as .glb.
-    Export,
-    /// Download the session as .sketchmesh.json.
-    SaveSession,
-    /// Switch to a tool.
-    Mode(Mode),
-    /// The active tool's panel asked for this.
-    Tool(Box<ToolOutput>),
-}
+pub use crate::command::Command as Action;
 
 /// Minimum target, in points, with a mouse or pen.
 const POINTER_TARGET: f32 = 36.0;
@@ -299,60 +273,12 @@ fn options_row(
     tools: &mut ToolSet,
 ) -> Option<Action> {
     let mut action = None;
-    let mode = tools.mode();
     row(ui, layout.compact, "options", |ui| {
-        match mode {
-            Mode::Sketch => {
-                tools.sketch_ui(ui);
-                ui.separator();
+        if let Some(output) = tools.panel(ui, editor.document()) {
+            if output != ToolOutput::None {
+                action = Some(Action::Tool(Box::new(output)));
             }
-            Mode::Oversketch => {
-                oversketch_options_ui(ui, tools.oversketch_settings_mut());
-                ui.separator();
-            }
-            Mode::Feature => {
-                let output = tools.feature_ui(ui);
-                if output != ToolOutput::None {
-                    action = Some(Action::Tool(Box::new(output)));
-                }
-                ui.separator();
-            }
-            Mode::Region => {
-                let output = tools.region_ui(ui);
-                if output != ToolOutput::None {
-                    action = Some(Action::Tool(Box::new(output)));
-                }
-                ui.separator();
-            }
-            Mode::Handles => {
-                let output = tools.handles_ui(ui);
-                if output != ToolOutput::None {
-                    action = Some(Action::Tool(Box::new(output)));
-                }
-                ui.separator();
-            }
-            Mode::Pose => {
-                let output = tools.pose_ui(ui, editor.document());
-                if output != ToolOutput::None {
-                    action = Some(Action::Tool(Box::new(output)));
-                }
-                ui.separator();
-            }
-            Mode::Move => {
-                let output = tools.arrange_ui(ui, editor.document());
-                if output != ToolOutput::None {
-                    action = Some(Action::Tool(Box::new(output)));
-                }
-                ui.separator();
-            }
-            Mode::Optimize => {
-                let output = tools.optimize_ui(ui);
-                if output != ToolOutput::None {
-                    action = Some(Action::Tool(Box::new(output)));
-                }
-                ui.separator();
-            }
-            _ => {}
+            ui.separator();
         }
         let stats = editor.document().stats();
         let size = [
@@ -406,12 +332,6 @@ fn counted(n: usize, noun: &str) -> String {
         (_, "vertex") => format!("{number} vertices"),
         _ => format!("{number} {noun}s"),
     }
-}
-
-/// The smallest size of a target in the toolbar's `ui`: square, the layout's target, which
-/// [`toolbar_ui`] puts in `interact_size.y`, so that every tool's options follow the layout.
-pub fn target_size(ui: &egui::Ui) -> egui::Vec2 {
-    egui::Vec2::splat(ui.spacing().interact_size.y)
 }
 
 /// One toolbar row: wrapped onto more lines, or in the `compact` layout one line that
@@ -555,47 +475,6 @@ fn toggle(ui: &mut egui::Ui, layout: Layout, value: &mut bool, label: &str, hint
         egui::Button::selectable(*value, label).min_size(egui::vec2(layout.target, layout.target));
     if ui.add(button).on_hover_text(hint).clicked() {
         *value = !*value;
-    }
-}
-
-/// The over-sketch mode's switches: manual handle picking, the fit and the region.
-fn oversketch_options_ui(ui: &mut egui::Ui, settings: &mut OversketchSettings) {
-    let hint = "On: pick what moves first (draw along an outline, or across the model), then \
-                draw its new shape. Off: the stroke finds the outline (K)";
-    ui.toggle_value(&mut settings.manual, "Pick handle")
-        .on_hover_text(hint);
-    let hint = "On: the outline lands on the stroke. Off: it follows the stroke as far as the \
-                surface detail allows, so a rough stroke bends the shape less";
-    let fit = [OversketchFit::Exact, OversketchFit::Soft];
-    toggle_between(ui, &mut settings.fit, fit, "Exact fit", hint);
-    let hint = "On: the part the outline belongs to bends as a whole (an ear, a finger, told \
-                apart by thickness) and the rest stays. Off: only the surface near the outline \
-                moves, farther for a longer pull (A)";
-    let roi = [OversketchRoi::Part, OversketchRoi::NearHandle];
-    toggle_between(ui, &mut settings.roi, roi, "Whole part", hint);
-    if settings.manual {
-        let hint = "On: pick the outline as drawn, along mesh edges: a sharp crest seen \
-                    edge-on, such as a ridge. Off: the smooth silhouette between them";
-        let outline = [OutlineKind::Edge, OutlineKind::Smooth];
-        toggle_between(ui, &mut settings.outline, outline, "Edge outline", hint);
-    }
-}
-
-/// A toggle button for a setting with two values, `[on, off]`.
-fn toggle_between<T: Copy + PartialEq>(
-    ui: &mut egui::Ui,
-    value: &mut T,
-    [on, off]: [T; 2],
-    label: &str,
-    hint: &str,
-) {
-    let mut is_on = *value == on;
-    if ui
-        .toggle_value(&mut is_on, label)
-        .on_hover_text(hint)
-        .changed()
-    {
-        *value = if is_on { on } else { off };
     }
 }
 

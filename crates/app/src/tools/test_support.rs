@@ -1,10 +1,11 @@
-//! What the tools' tests share: a pen sample, the view they act in, a document with a shape.
+//! What the tools' tests share: a pen sample, the view they act in, a document with a shape,
+//! a pen stroke fed to a tool.
 
 use egui::{Rect, pos2};
 use sketchmesh_core::camera::Camera;
-use sketchmesh_core::document::{Editor, Op, StrokeInput};
+use sketchmesh_core::document::{Document, Editor, Op, StrokeInput};
 
-use super::ViewCtx;
+use super::{Tool, ToolEvent, ToolOutput, ViewCtx};
 use crate::input::{Phase, PointerKind, PointerSample};
 
 /// A pen sample at `(x, y)` screen points, half pressure.
@@ -46,4 +47,35 @@ pub fn shape() -> Editor {
     };
     editor.apply(Op::Create(input.into())).unwrap();
     editor
+}
+
+/// Feeds `tool` a pen stroke through `points` (screen points; one point is a tap) in
+/// [`view`]: what it answered to the pointer going down, to each move, and to the release.
+pub fn stroke(tool: &mut dyn Tool, doc: &Document, points: &[(f32, f32)]) -> Vec<ToolOutput> {
+    let v = view();
+    let last = points.len() - 1;
+    let mut events: Vec<ToolEvent> = (points.iter().enumerate())
+        .map(|(k, &(x, y))| match k {
+            0 => ToolEvent::Begin(pen(Phase::Down, x, y)),
+            k if k == last => ToolEvent::End(pen(Phase::Up, x, y)),
+            _ => ToolEvent::Move(pen(Phase::Move, x, y)),
+        })
+        .collect();
+    if last == 0 {
+        let (x, y) = points[0];
+        events.push(ToolEvent::End(pen(Phase::Up, x, y)));
+    }
+    (events.iter())
+        .map(|event| tool.on_event(event, &v, doc))
+        .collect()
+}
+
+/// `n + 1` points from `from` to `to`, evenly spaced.
+pub fn line(from: (f32, f32), to: (f32, f32), n: usize) -> Vec<(f32, f32)> {
+    (0..=n)
+        .map(|k| {
+            let t = k as f32 / n as f32;
+            (from.0 + t * (to.0 - from.0), from.1 + t * (to.1 - from.1))
+        })
+        .collect()
 }

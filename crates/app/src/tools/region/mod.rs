@@ -16,6 +16,8 @@
 mod handles;
 mod profile;
 
+mod overlay;
+
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::polyline::{
@@ -33,10 +35,18 @@ use handles::{HandleSession, Pressed};
 use profile::ProfileSession;
 pub use profile::ProfileView;
 
-use super::context::{ToolOutput, ViewCtx};
-use super::draw::{DrawTool, is_tap, point};
-use super::optimize::Mark;
 use crate::input::router::ToolEvent;
+use crate::tools::context::{ToolOutput, ViewCtx};
+use crate::tools::draw::{DrawTool, is_tap, point};
+use crate::tools::tool::{Mark, Scene, Tool, ToolInfo};
+
+/// The region tool's name, icon, key and description.
+static INFO: ToolInfo = ToolInfo {
+    label: "Region",
+    icon: "⭕",
+    key: egui::Key::L,
+    about: "Draw a curve on a model and a loop around it, then drag: the region follows, fading out",
+};
 
 /// The fall-off shapes offered: a label, a tooltip and the levels (weights from the boundary
 /// to the reference curve).
@@ -875,7 +885,7 @@ impl LevelsGraph {
             egui::Stroke::new(2.0, visuals.widgets.active.fg_stroke.color),
         ));
         for ((point, &w), &pinned) in points.iter().zip(&self.levels).zip(&self.pinned) {
-            let gray = crate::panels::falloff::falloff_gray(w);
+            let gray = crate::overlay::falloff_gray(w);
             painter.circle_filled(*point, 6.0, egui::Color32::from_gray(gray));
             painter.circle_stroke(*point, 6.0, egui::Stroke::new(1.0, egui::Color32::GRAY));
             if pinned {
@@ -884,6 +894,62 @@ impl LevelsGraph {
             }
         }
         changed
+    }
+}
+
+impl Tool for RegionTool {
+    fn info(&self) -> &'static ToolInfo {
+        &INFO
+    }
+
+    fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
+        RegionTool::on_event(self, event, view, doc)
+    }
+
+    fn cancel(&mut self) -> ToolOutput {
+        RegionTool::cancel(self);
+        ToolOutput::None
+    }
+
+    fn panel(&mut self, ui: &mut egui::Ui, _doc: &Document) -> Option<ToolOutput> {
+        Some(self.settings_ui(ui))
+    }
+
+    /// The handles' axes, and the profile panel in the view's lower right corner.
+    fn overlay(&self, ui: &egui::Ui, scene: &Scene<'_>) {
+        overlay::handles_ui(ui, scene, &self.handle_axes(&scene.camera, scene.size()));
+        if let Some(view) = self.profile_view(scene.size()) {
+            overlay::profile_ui(ui, scene, &view);
+        }
+    }
+
+    fn hint(&self, _doc: &Document) -> Option<&'static str> {
+        RegionTool::hint(self)
+    }
+
+    fn preview(&self) -> Option<&[StrokePoint]> {
+        RegionTool::preview(self)
+    }
+
+    fn marks(&self, camera: &Camera) -> Vec<Mark> {
+        RegionTool::marks(self, camera)
+    }
+
+    /// Enter applies the handles or the profile as they stand.
+    fn keys(&self) -> &'static [egui::Key] {
+        &[egui::Key::Enter]
+    }
+
+    fn on_key(&mut self, _key: egui::Key, _doc: &Document) -> ToolOutput {
+        self.confirm()
+    }
+
+    fn edit_stepped(&mut self, edit: &Edit) {
+        self.found(edit);
+    }
+
+    fn gesture_refused(&mut self) {
+        self.refused();
     }
 }
 

@@ -14,6 +14,8 @@
 //! end (a crop); any other stroke is the handle's new shape. The crop is decided when the
 //! stroke ends, since a new shape also starts at an end but leaves the outline. Orbiting or zooming drops the pick, since it is kept in screen points.
 
+mod panel;
+
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{Document, Op, OversketchFit, OversketchInput, StrokeInput};
@@ -21,9 +23,19 @@ use sketchmesh_core::oversketch::{
     ManualHandle, OutlineKind, OversketchRoi, manual_handle_preview, pick_handle,
 };
 
-use super::context::{ToolOutput, ViewCtx};
-use super::draw::{DrawTool, point};
 use crate::input::router::ToolEvent;
+use crate::overlay::outline_ui;
+use crate::tools::context::{ToolOutput, ViewCtx};
+use crate::tools::draw::{DrawTool, point};
+use crate::tools::tool::{Scene, Tool, ToolInfo};
+
+/// The over-sketch tool's name, icon, key and description.
+static INFO: ToolInfo = ToolInfo {
+    label: "Over-sketch",
+    icon: "✒",
+    key: egui::Key::O,
+    about: "Draw near an outline where you want it to be",
+};
 
 /// A stroke starting this close (points) to an end of a picked outline piece and running
 /// along the outline moves that end (a crop).
@@ -230,12 +242,6 @@ impl OversketchTool {
         };
     }
 
-    /// The user's settings, for the toolbar to change. Leaving manual mode drops a pick at
-    /// the next event.
-    pub fn settings_mut(&mut self) -> &mut OversketchSettings {
-        &mut self.settings
-    }
-
     /// The stroke in progress, as the draw tool shows it.
     pub fn preview(&self) -> Option<&[sketchmesh_core::curve::StrokePoint]> {
         self.stroke.preview()
@@ -274,6 +280,61 @@ impl OversketchTool {
                 },
             )
         })
+    }
+}
+
+impl Tool for OversketchTool {
+    fn info(&self) -> &'static ToolInfo {
+        &INFO
+    }
+
+    fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
+        OversketchTool::on_event(self, event, view, doc)
+    }
+
+    fn cancel(&mut self) -> ToolOutput {
+        OversketchTool::cancel(self);
+        ToolOutput::None
+    }
+
+    fn panel(&mut self, ui: &mut egui::Ui, _doc: &Document) -> Option<ToolOutput> {
+        panel::options_ui(ui, &mut self.settings);
+        Some(ToolOutput::None)
+    }
+
+    /// The picked handle, its ends marked when they can be dragged.
+    fn overlay(&self, ui: &egui::Ui, scene: &Scene<'_>) {
+        if let Some(h) = self.handle() {
+            outline_ui(ui, scene.viewport, &h.points, h.confident, h.croppable);
+        }
+    }
+
+    fn hint(&self, _doc: &Document) -> Option<&'static str> {
+        OversketchTool::hint(self)
+    }
+
+    fn preview(&self) -> Option<&[sketchmesh_core::curve::StrokePoint]> {
+        OversketchTool::preview(self)
+    }
+
+    /// K: manual handle picking on or off; A: the whole part or the surface near the
+    /// outline.
+    fn keys_anywhere(&self) -> &'static [egui::Key] {
+        &[egui::Key::K, egui::Key::A]
+    }
+
+    fn on_key(&mut self, key: egui::Key, _doc: &Document) -> ToolOutput {
+        match key {
+            egui::Key::K => self.settings.manual = !self.settings.manual,
+            egui::Key::A => {
+                self.settings.roi = match self.settings.roi {
+                    OversketchRoi::NearHandle => OversketchRoi::Part,
+                    OversketchRoi::Part => OversketchRoi::NearHandle,
+                }
+            }
+            _ => {}
+        }
+        ToolOutput::None
     }
 }
 
@@ -354,7 +415,7 @@ mod tests {
         };
         assert_eq!(exact.fit, OversketchFit::Exact);
         assert_eq!(exact.stroke.len(), 3);
-        tool.settings_mut().fit = OversketchFit::Soft;
+        tool.settings.fit = OversketchFit::Soft;
         tool.cancel();
         let ToolOutput::Commit(Op::Oversketch(soft)) = draw(&mut tool) else {
             panic!("no oversketch op");
@@ -422,7 +483,7 @@ mod tests {
     fn manual_mode_picks_a_surface_curve_then_commits_its_new_position() {
         let (view, doc, _) = sphere_view();
         let mut tool = OversketchTool::default();
-        tool.settings_mut().manual = true;
+        tool.settings.manual = true;
         assert!(tool.hint().unwrap().contains("pick"));
         let across: Vec<DVec2> = (0..=20)
             .map(|k| DVec2::new(400.0 + 10.0 * k as f64, 500.0))
@@ -457,7 +518,7 @@ mod tests {
         let (view, doc, radius) = sphere_view();
         let mut tool = OversketchTool::default();
         for roi in [OversketchRoi::Part, OversketchRoi::NearHandle] {
-            tool.settings_mut().roi = roi;
+            tool.settings.roi = roi;
             let beyond = arc(radius + 15.0, -30.0, 30.0);
             let ToolOutput::Commit(Op::Oversketch(input)) =
                 stroke_through(&mut tool, &view, &doc, &beyond)
@@ -472,7 +533,7 @@ mod tests {
     fn a_picked_outline_piece_is_cropped_from_its_end_and_dropped_by_orbiting() {
         let (view, doc, radius) = sphere_view();
         let mut tool = OversketchTool::default();
-        tool.settings_mut().manual = true;
+        tool.settings.manual = true;
         let along = arc(radius, -30.0, 30.0);
         assert_eq!(
             stroke_through(&mut tool, &view, &doc, &along),

@@ -16,11 +16,21 @@ use sketchmesh_core::document::{
 };
 use sketchmesh_core::optimize::{
     FeatureFalloff, LaplacianKind, Mode as OptimizeMode, OptimizeParams, WeightScheme,
+    quality_report,
 };
 
-use super::context::{ToolOutput, ViewCtx};
-use super::draw::{DrawTool, is_tap};
 use crate::input::router::ToolEvent;
+use crate::tools::context::{ToolOutput, ViewCtx};
+use crate::tools::draw::{DrawTool, is_tap};
+use crate::tools::tool::{Mark, Tool, ToolInfo};
+
+/// The optimize tool's name, icon, key and description.
+static INFO: ToolInfo = ToolInfo {
+    label: "Optimize",
+    icon: "✨",
+    key: egui::Key::M,
+    about: "Tap a model: even out its triangles or smooth it, preview the amount, Apply",
+};
 
 /// The slider's range for the scale `s` (the thesis's positional weights lie in `[0, s]`).
 const SCALE_RANGE: std::ops::RangeInclusive<f64> = 0.05..=4.0;
@@ -38,17 +48,6 @@ enum StrokeUse {
     PaintArea,
     /// Paint over features that hold their place.
     PaintFeatures,
-}
-
-/// A lasso or brush stroke of the open preview, as shown on screen.
-#[derive(Debug)]
-pub struct Mark {
-    /// The samples, in the view they were drawn in.
-    pub points: Vec<StrokePoint>,
-    /// The brush's radius in CSS px; `None` for the lasso.
-    pub radius: Option<f64>,
-    /// Whether it marks features that hold (else what moves).
-    pub features: bool,
 }
 
 /// The optimize tool's state: the settings, and the model being previewed.
@@ -441,4 +440,196 @@ fn combo<T: Copy + PartialEq>(
     // Screen readers name it by its setting ("optimize-mode": "optimize mode").
     let name = id.replace('-', " ");
     response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::ComboBox, true, &name));
+}
+
+impl Tool for OptimizeTool {
+    fn info(&self) -> &'static ToolInfo {
+        &INFO
+    }
+
+    fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
+        OptimizeTool::on_event(self, event, view, doc)
+    }
+
+    fn cancel(&mut self) -> ToolOutput {
+        OptimizeTool::cancel(self);
+        ToolOutput::None
+    }
+
+    fn panel(&mut self, ui: &mut egui::Ui, _doc: &Document) -> Option<ToolOutput> {
+        Some(self.settings_ui(ui))
+    }
+
+    /// The optimized model's triangle quality, before and after.
+    fn report(&self, op: &Op, before: &Document, after: &Document) -> Option<String> {
+        let Op::Optimize(input) = op else {
+            return None;
+        };
+        let (before, after) = (
+            before.models.get(input.model)?,
+            after.models.get(input.model)?,
+        );
+        Some(quality_report(&before.mesh, after.mesh.positions()).summary())
+    }
+
+    fn hint(&self, _doc: &Document) -> Option<&'static str> {
+        OptimizeTool::hint(self)
+    }
+
+    fn preview(&self) -> Option<&[StrokePoint]> {
+        OptimizeTool::preview(self)
+    }
+
+    fn marks(&self, camera: &Camera) -> Vec<Mark> {
+        OptimizeTool::marks(self, camera)
+    }
+
+    /// Enter applies the preview; `[` and `]` step the amount; B: strokes lasso, paint the
+    /// area or paint features.
+    fn keys(&self) -> &'static [egui::Key] {
+        &[
+            egui::Key::Enter,
+            egui::Key::OpenBracket,
+            egui::Key::CloseBracket,
+            egui::Key::B,
+        ]
+    }
+
+    fn on_key(&mut self, key: egui::Key, _doc: &Document) -> ToolOutput {
+        match key {
+            egui::Key::Enter => self.confirm(),
+            egui::Key::OpenBracket => self.nudge(1.0 / 1.25),
+            egui::Key::CloseBracket => self.nudge(1.25),
+            egui::Key::B => {
+                self.next_stroke_use();
+                ToolOutput::None
+            }
+            _ => ToolOutput::None,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use egui::Key;
+    use sketchmesh_core::document::Editor;
+
+    use super::*;
+    use crate::tools::test_support::{shape, stroke};
+
+    /// The op of an output that opens or revises the preview.
+    fn optimize_op(output: &ToolOutput) -> &OptimizeInput {
+        match output {
+            ToolOutput::Begin(Op::Optimize(input)) | ToolOutput::Revise(Op::Optimize(input)) => {
+                input
+            }
+            other => panic!("not an optimize preview: {other:?}"),
+        }
+    }
+
+    /// A loop of 200 px around the shape's middle, (400, 340) on screen.
+    fn lasso() -> Vec<(f32, f32)> {
+        (0..=40)
+            .map(|k| {
+                let a = std::f32::consts::TAU * k as f32 / 40.0;
+                (400.0 + 200.0 * a.cos(), 340.0 + 200.0 * a.sin())
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_tap_on_a_model_opens_its_preview_and_enter_applies_it() {
+        let editor = shape();
+        let doc = editor.document();
+        let mut tool = OptimizeTool::default();
+        assert!(Tool::hint(&tool, doc).is_some(), "it asks for a model");
+        let tapped = stroke(&mut tool, doc, &[(400.0, 340.0)]).pop().unwrap();
+        let input = optimize_op(&tapped);
+        assert!(
+            matches!(tapped, ToolOutput::Begin(_)),
+            "the tap begins the preview"
+        );
+        assert_eq!(input.model, 0);
+        assert!(input.region.is_none(), "a tap optimizes all of the model");
+        assert_eq!(input.settings, OptimizeParams::default());
+        assert!(Tool::hint(&tool, doc).is_none(), "a preview is open");
+        assert_eq!(tool.on_key(Key::Enter, doc), ToolOutput::Finish);
+        assert_eq!(
+            tool.on_key(Key::Enter, doc),
+            ToolOutput::None,
+            "nothing left to apply"
+        );
+    }
+
+    #[test]
+    fn a_tap_off_every_model_is_refused() {
+        let editor = shape();
+        let mut tool = OptimizeTool::default();
+        let tapped = stroke(&mut tool, editor.document(), &[(30.0, 80.0)]).pop();
+        assert!(matches!(tapped, Some(ToolOutput::Refused(_))), "{tapped:?}");
+        let empty = Editor::new();
+        let tapped = stroke(&mut tool, empty.document(), &[(400.0, 340.0)]).pop();
+        assert!(matches!(tapped, Some(ToolOutput::Refused(_))), "{tapped:?}");
+    }
+
+    #[test]
+    fn a_lasso_and_the_brackets_revise_the_open_preview() {
+        let editor = shape();
+        let doc = editor.document();
+        let mut tool = OptimizeTool::default();
+        stroke(&mut tool, doc, &[(400.0, 340.0)]);
+        let lassoed = stroke(&mut tool, doc, &lasso()).pop().unwrap();
+        assert!(matches!(lassoed, ToolOutput::Revise(_)), "{lassoed:?}");
+        let region = optimize_op(&lassoed)
+            .region
+            .as_ref()
+            .expect("the lasso bounds it");
+        assert_eq!(region.stroke.len(), lasso().len());
+        assert_eq!(tool.marks(&Camera::default()).len(), 1, "the lasso shows");
+        let scale = OptimizeParams::default().scale;
+        let more = tool.on_key(Key::CloseBracket, doc);
+        assert!((optimize_op(&more).settings.scale - 1.25 * scale).abs() < 1e-12);
+        let less = tool.on_key(Key::OpenBracket, doc);
+        assert!((optimize_op(&less).settings.scale - scale).abs() < 1e-12);
+    }
+
+    #[test]
+    fn cancel_forgets_the_preview_and_its_marks() {
+        let editor = shape();
+        let doc = editor.document();
+        let mut tool = OptimizeTool::default();
+        stroke(&mut tool, doc, &[(400.0, 340.0)]);
+        stroke(&mut tool, doc, &lasso());
+        assert_eq!(Tool::cancel(&mut tool), ToolOutput::None);
+        assert!(tool.marks(&Camera::default()).is_empty());
+        assert_eq!(
+            tool.on_key(Key::Enter, doc),
+            ToolOutput::None,
+            "no preview to apply"
+        );
+        let tapped = stroke(&mut tool, doc, &[(400.0, 340.0)]).pop().unwrap();
+        assert!(
+            matches!(tapped, ToolOutput::Begin(_)),
+            "a new tap opens a new preview"
+        );
+    }
+
+    #[test]
+    fn the_report_compares_the_optimized_model_with_the_one_before() {
+        let mut editor = shape();
+        let before = editor.document().clone();
+        let mut tool = OptimizeTool::default();
+        let tapped = stroke(&mut tool, &before, &[(400.0, 340.0)]).pop().unwrap();
+        let ToolOutput::Begin(op) = tapped else {
+            panic!("{tapped:?}");
+        };
+        editor.apply(op.clone()).unwrap();
+        let report = tool.report(&op, &before, editor.document());
+        let expected = quality_report(
+            &before.models[0].mesh,
+            editor.document().models[0].mesh.positions(),
+        );
+        assert_eq!(report, Some(expected.summary()));
+        assert_eq!(tool.report(&Op::Undo, &before, editor.document()), None);
+    }
 }

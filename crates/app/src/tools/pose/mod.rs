@@ -10,14 +10,14 @@
 //! at**: to edit a pose between keys, or to start each frame of a retargeted motion from the
 //! rest pose), and plays the animation.
 
-use crate::panels::toolbar::target_size;
+use crate::ui_size::target_size;
 use glam::DVec3;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::bspline::{uniform_knots, with_widest_span_split};
 use sketchmesh_core::curve::{StrokePoint, is_closed_loop};
 use sketchmesh_core::document::{
-    CLOSE_TOLERANCE_PX, CoarseInput, CurveDeformInput, Document, KeyframeInput, Op, StrokeInput,
-    model_under,
+    CLOSE_TOLERANCE_PX, CoarseInput, CurveDeformInput, Document, Edit, KeyframeInput, Op,
+    StrokeInput, model_under,
 };
 use sketchmesh_core::feature::Sketch;
 use sketchmesh_core::mesh::VertexId;
@@ -25,10 +25,19 @@ use sketchmesh_core::volumetric::{
     COARSE_CONTROLS, CoarsePlaneCurve, Falloff, Plane, editing_plane, pick_curve,
 };
 
-use super::context::{ToolOutput, ViewCtx};
-use super::draw::{DrawTool, is_tap, point};
-use super::optimize::Mark;
 use crate::input::router::ToolEvent;
+use crate::overlay::outline_ui;
+use crate::tools::context::{ToolOutput, ViewCtx};
+use crate::tools::draw::{DrawTool, is_tap, point};
+use crate::tools::tool::{Mark, Scene, Tool, ToolInfo};
+
+/// The pose tool's name, icon, key and description.
+static INFO: ToolInfo = ToolInfo {
+    label: "Pose",
+    icon: "🏃",
+    key: egui::Key::Q,
+    about: "Draw a curve along a model, then its new shape: it bends keeping its volume; key poses, play",
+};
 
 /// Seconds the time moves on after a key, so the next pose goes after it.
 const KEY_STEP_S: f64 = 1.0;
@@ -540,6 +549,64 @@ impl PoseTool {
 /// read as buttons at that width.
 fn wide_target(ui: &egui::Ui) -> egui::Vec2 {
     target_size(ui).max(egui::vec2(44.0, 0.0))
+}
+
+impl Tool for PoseTool {
+    fn info(&self) -> &'static ToolInfo {
+        &INFO
+    }
+
+    fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
+        PoseTool::on_event(self, event, view, doc)
+    }
+
+    fn cancel(&mut self) -> ToolOutput {
+        PoseTool::cancel(self);
+        ToolOutput::None
+    }
+
+    fn panel(&mut self, ui: &mut egui::Ui, doc: &Document) -> Option<ToolOutput> {
+        Some(self.settings_ui(ui, doc))
+    }
+
+    /// The picked control curves (as the edit in progress moves them), the one redrawn
+    /// marked, and the spline's control points while it reshapes by them.
+    fn overlay(&self, ui: &egui::Ui, scene: &Scene<'_>) {
+        let (camera, size) = (scene.camera, scene.size());
+        let moved = scene.edit.and_then(Edit::moved_model);
+        for (curve, active) in self.curves(scene.shown, moved) {
+            let on_screen: Vec<glam::DVec2> = curve
+                .iter()
+                .filter_map(|&p| camera.screen_from_world(p, size).map(|s| s.truncate()))
+                .collect();
+            outline_ui(ui, scene.viewport, &on_screen, active, active);
+        }
+        let controls: Vec<egui::Pos2> = (self.controls(scene.shown, moved).iter())
+            .filter_map(|&p| camera.screen_from_world(p, size))
+            .map(|s| scene.at(s.truncate()))
+            .collect();
+        let colour = egui::Color32::from_rgb(250, 210, 80);
+        ui.painter().add(egui::Shape::line(
+            controls.clone(),
+            egui::Stroke::new(1.5, colour.gamma_multiply(0.7)),
+        ));
+        for c in controls {
+            ui.painter()
+                .circle(c, 9.0, colour, egui::Stroke::new(2.0, egui::Color32::BLACK));
+        }
+    }
+
+    fn hint(&self, _doc: &Document) -> Option<&'static str> {
+        PoseTool::hint(self)
+    }
+
+    fn preview(&self) -> Option<&[StrokePoint]> {
+        PoseTool::preview(self)
+    }
+
+    fn marks(&self, camera: &Camera) -> Vec<Mark> {
+        PoseTool::marks(self, camera)
+    }
 }
 
 #[cfg(test)]

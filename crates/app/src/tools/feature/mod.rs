@@ -9,19 +9,28 @@
 //! last amount. Dragging up (or right, for suggestive contours) raises: 15 px per unit of the
 //! factor, so a drag of 100–150 px raises a ridge about as tall as its band is wide.
 
-use crate::panels::toolbar::target_size;
+use crate::ui_size::target_size;
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::{StrokePoint, is_closed_loop};
 use sketchmesh_core::document::{
-    CLOSE_TOLERANCE_PX, Document, Op, SketchFeatureInput, model_under,
+    CLOSE_TOLERANCE_PX, Document, Edit, Op, SketchFeatureInput, model_under,
 };
 use sketchmesh_core::feature::FeatureKind;
 
-use super::context::{ToolOutput, ViewCtx};
-use super::draw::{DrawTool, is_tap, point};
-use super::optimize::Mark;
 use crate::input::router::ToolEvent;
+use crate::overlay::hint_ui;
+use crate::tools::context::{ToolOutput, ViewCtx};
+use crate::tools::draw::{DrawTool, is_tap, point};
+use crate::tools::tool::{Mark, Scene, Tool, ToolInfo};
+
+/// The feature tool's name, icon, key and description.
+static INFO: ToolInfo = ToolInfo {
+    label: "Feature",
+    icon: "🗻",
+    key: egui::Key::D,
+    about: "Sketch on a model, then drag: a ridge or ravine, a bump or valley, flattening, suggestive contours",
+};
 
 /// Drag distance (CSS px) that changes a ridge's or bump's factor by one.
 const PX_PER_FACTOR: f64 = 15.0;
@@ -231,6 +240,68 @@ fn loop_points(points: &[StrokePoint]) -> Vec<[f64; 2]> {
         lasso.pop();
     }
     lasso
+}
+
+impl Tool for FeatureTool {
+    fn info(&self) -> &'static ToolInfo {
+        &INFO
+    }
+
+    fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
+        FeatureTool::on_event(self, event, view, doc)
+    }
+
+    fn cancel(&mut self) -> ToolOutput {
+        FeatureTool::cancel(self);
+        ToolOutput::None
+    }
+
+    fn panel(&mut self, ui: &mut egui::Ui, _doc: &Document) -> Option<ToolOutput> {
+        Some(self.settings_ui(ui))
+    }
+
+    /// A feature drag's amount as the user reads it, and where folding holds it back.
+    fn edit_overlay(&self, ui: &egui::Ui, scene: &Scene<'_>) {
+        if let Some(amount) = scene.edit.and_then(feature_amount) {
+            hint_ui(ui, scene.viewport, &amount);
+        }
+    }
+
+    fn hint(&self, _doc: &Document) -> Option<&'static str> {
+        FeatureTool::hint(self)
+    }
+
+    fn preview(&self) -> Option<&[StrokePoint]> {
+        FeatureTool::preview(self)
+    }
+
+    fn marks(&self, camera: &Camera) -> Vec<Mark> {
+        FeatureTool::marks(self, camera)
+    }
+
+    fn gesture_refused(&mut self) {
+        FeatureTool::cancel(self);
+    }
+}
+
+/// A feature drag's amount as the user reads it, and where folding holds it back.
+fn feature_amount(edit: &Edit) -> Option<String> {
+    let Op::SketchFeature(input) = edit.op() else {
+        return None;
+    };
+    let say = |amount: f64| match input.kind {
+        FeatureKind::Suggestive => format!("{amount:.0}°"),
+        FeatureKind::Flatten => String::from("flat"),
+        _ => format!("× {amount:.1}"),
+    };
+    let asked = say(input.amount());
+    Some(match edit.limited_amount() {
+        Some(held) => format!(
+            "{asked}: held at {}, more would fold the surface over",
+            say(held)
+        ),
+        None => asked,
+    })
 }
 
 #[cfg(test)]

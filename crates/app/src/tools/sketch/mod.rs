@@ -12,10 +12,20 @@ use sketchmesh_core::document::{
     op_for_stroke, tunnel_from,
 };
 
-use super::context::{ToolOutput, ViewCtx};
-use super::draw::{DrawTool, is_tap};
 use crate::input::router::ToolEvent;
-use crate::panels::toolbar::target_size;
+use crate::overlay::{hint_ui, stroke_ui};
+use crate::tools::context::{ToolOutput, ViewCtx};
+use crate::tools::draw::{DrawTool, is_tap};
+use crate::tools::tool::{Scene, Tool, ToolInfo};
+use crate::ui_size::target_size;
+
+/// The sketch tool's name, icon, key and description.
+static INFO: ToolInfo = ToolInfo {
+    label: "Sketch",
+    icon: "✏",
+    key: egui::Key::S,
+    about: "Closed outline on empty canvas: a shape. On a shape: a curve (closed ones and strokes across a shape: tap to confirm).",
+};
 
 /// How finely a new shape is meshed: about how many vertices it gets. Coarse shapes edit
 /// fastest; fine ones hold small detail (and a fine creation is computed off the frame,
@@ -181,6 +191,61 @@ impl SketchTool {
             }
         };
         Some((&waiting.points, what))
+    }
+}
+
+impl Tool for SketchTool {
+    fn info(&self) -> &'static ToolInfo {
+        &INFO
+    }
+
+    fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
+        SketchTool::on_event(self, event, view, doc)
+    }
+
+    fn cancel(&mut self) -> ToolOutput {
+        SketchTool::cancel(self)
+    }
+
+    fn panel(&mut self, ui: &mut egui::Ui, _doc: &Document) -> Option<ToolOutput> {
+        self.settings_ui(ui);
+        Some(ToolOutput::None)
+    }
+
+    /// A stroke waiting for its confirming tap: shown dimmer, with what a tap does.
+    fn overlay(&self, ui: &egui::Ui, scene: &Scene<'_>) {
+        if let Some((points, what)) = self.waiting() {
+            stroke_ui(
+                ui,
+                scene.viewport,
+                points,
+                egui::Color32::from_rgb(120, 200, 255),
+            );
+            hint_ui(ui, scene.viewport, what);
+        }
+    }
+
+    /// The outline of a fine shape the worker computes stays, dimmer, until the shape lands.
+    fn edit_overlay(&self, ui: &egui::Ui, scene: &Scene<'_>) {
+        let computed =
+            (scene.edit).filter(|edit| scene.computing && matches!(edit.op(), Op::Create(_)));
+        if let Some(edit) = computed {
+            let points = edit.op().stroke_points();
+            stroke_ui(
+                ui,
+                scene.viewport,
+                &points,
+                egui::Color32::from_rgb(200, 170, 90),
+            );
+        }
+    }
+
+    fn preview(&self) -> Option<&[StrokePoint]> {
+        SketchTool::preview(self)
+    }
+
+    fn poll(&mut self, now: f64) -> (ToolOutput, Option<f64>) {
+        SketchTool::poll(self, now)
     }
 }
 

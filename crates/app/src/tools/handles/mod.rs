@@ -7,7 +7,9 @@
 //! that does begins a `handle_edit` gesture at pointer-down, each move revises it (the core
 //! only rebuilds points from new frames) and release commits it: one undo step per drag.
 
-use crate::panels::toolbar::target_size;
+mod draw;
+
+use crate::ui_size::target_size;
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::StrokePoint;
@@ -16,9 +18,18 @@ use sketchmesh_core::document::{
 };
 use sketchmesh_core::skeleton::HandleKind;
 
-use super::context::{ToolOutput, ViewCtx};
-use super::draw::{DrawTool, is_tap, point};
 use crate::input::router::ToolEvent;
+use crate::tools::context::{ToolOutput, ViewCtx};
+use crate::tools::draw::{DrawTool, is_tap, point};
+use crate::tools::tool::{Scene, Tool, ToolInfo};
+
+/// The bend tool's name, icon, key and description.
+static INFO: ToolInfo = ToolInfo {
+    label: "Bend",
+    icon: "⤴",
+    key: egui::Key::J,
+    about: "Draw along a part of any model or point cloud, then drag, twist or scale its dots",
+};
 
 /// How near (CSS px) a pointer must go down to a control point to grab it: a fingertip.
 pub const GRAB_PX: f64 = 22.0;
@@ -366,6 +377,56 @@ fn choice_ui<T: Copy + PartialEq, const N: usize>(
         if ui.add(button).on_hover_text(hint).clicked() {
             *current = choice;
         }
+    }
+}
+
+impl Tool for HandlesTool {
+    fn info(&self) -> &'static ToolInfo {
+        &INFO
+    }
+
+    fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
+        HandlesTool::on_event(self, event, view, doc)
+    }
+
+    fn cancel(&mut self) -> ToolOutput {
+        HandlesTool::cancel(self);
+        ToolOutput::None
+    }
+
+    fn panel(&mut self, ui: &mut egui::Ui, _doc: &Document) -> Option<ToolOutput> {
+        Some(self.settings_ui(ui))
+    }
+
+    /// The curve handles, at the pose a drag previews.
+    fn overlay(&self, ui: &egui::Ui, scene: &Scene<'_>) {
+        let dragged = scene.edit.and_then(|edit| match edit.op() {
+            Op::HandleEdit(input) => Some((input, edit.limited_move().unwrap_or(1.0))),
+            _ => None,
+        });
+        let (viewport, camera) = (scene.viewport, &scene.camera);
+        draw::curve_handles_ui(ui, viewport, scene.shown, camera, dragged, self.selected());
+    }
+
+    fn hint(&self, doc: &Document) -> Option<&'static str> {
+        HandlesTool::hint(self, doc)
+    }
+
+    fn preview(&self) -> Option<&[StrokePoint]> {
+        HandlesTool::preview(self)
+    }
+
+    /// Delete and Backspace delete the selected handle.
+    fn keys(&self) -> &'static [egui::Key] {
+        &[egui::Key::Delete, egui::Key::Backspace]
+    }
+
+    fn on_key(&mut self, _key: egui::Key, _doc: &Document) -> ToolOutput {
+        self.delete_selected()
+    }
+
+    fn gesture_refused(&mut self) {
+        HandlesTool::cancel(self);
     }
 }
 

@@ -14,9 +14,18 @@ use sketchmesh_core::document::{
     model_under, overlapping_model,
 };
 
-use super::context::{ToolOutput, ViewCtx};
-use super::draw::point;
 use crate::input::router::{Hands, ToolEvent};
+use crate::tools::context::{ToolOutput, ViewCtx};
+use crate::tools::draw::point;
+use crate::tools::tool::{Scene, Tool, ToolInfo};
+
+/// The move tool's name, icon, key and description.
+static INFO: ToolInfo = ToolInfo {
+    label: "Move",
+    icon: "↔",
+    key: egui::Key::V,
+    about: "Tap a model, then drag it, its ring or its square: move, turn, scale",
+};
 
 /// A press that moves less than this (px) before it lifts is a tap: it selects.
 const TAP_RADIUS_PX: f64 = 10.0;
@@ -316,6 +325,63 @@ fn model_at(doc: &Document, camera: &Camera, viewport: DVec2, at: DVec2) -> Opti
         stroke: vec![[at.x, at.y, 0.5]],
     };
     model_under(doc, &tap)
+}
+
+impl Tool for ArrangeTool {
+    fn info(&self) -> &'static ToolInfo {
+        &INFO
+    }
+
+    fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
+        ArrangeTool::on_event(self, event, view, doc)
+    }
+
+    fn on_hands(&mut self, hands: &Hands, view: &ViewCtx, doc: &Document) -> ToolOutput {
+        ArrangeTool::on_hands(self, hands, view, doc)
+    }
+
+    fn cancel(&mut self) -> ToolOutput {
+        ArrangeTool::cancel(self)
+    }
+
+    fn panel(&mut self, ui: &mut egui::Ui, doc: &Document) -> Option<ToolOutput> {
+        Some(self.settings_ui(ui, doc))
+    }
+
+    /// The handles around the selected model: the ring that turns it, the square that
+    /// scales it, a dot at its middle; the one being dragged is drawn brighter.
+    fn overlay(&self, ui: &egui::Ui, scene: &Scene<'_>) {
+        let Some((gizmo, dragged)) = self.gizmo(scene.doc, &scene.camera, scene.size()) else {
+            return;
+        };
+        let colour = |handle| match dragged == Some(handle) {
+            true => egui::Color32::from_rgb(255, 214, 120),
+            false => egui::Color32::from_rgb(240, 160, 60),
+        };
+        let painter = ui.painter();
+        painter.circle_stroke(
+            scene.at(gizmo.centre),
+            gizmo.radius as f32,
+            egui::Stroke::new(5.0, colour(GizmoHandle::Turn)),
+        );
+        painter.circle_filled(scene.at(gizmo.centre), 7.0, colour(GizmoHandle::Move));
+        let square =
+            egui::Rect::from_center_size(scene.at(gizmo.scale_handle()), egui::vec2(22.0, 22.0));
+        painter.rect_filled(square, 3.0, colour(GizmoHandle::Scale));
+    }
+
+    fn hint(&self, doc: &Document) -> Option<&'static str> {
+        ArrangeTool::hint(self, doc)
+    }
+
+    /// Delete and Backspace delete the selected model.
+    fn keys(&self) -> &'static [egui::Key] {
+        &[egui::Key::Delete, egui::Key::Backspace]
+    }
+
+    fn on_key(&mut self, _key: egui::Key, doc: &Document) -> ToolOutput {
+        self.delete(doc)
+    }
 }
 
 #[cfg(test)]

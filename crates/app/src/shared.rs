@@ -1,0 +1,110 @@
+//! The state the app shares with the page API (`window.sketchmesh`), which runs outside
+//! frames: the document, the view, the tool, and what the page reads or asks for.
+
+use sketchmesh_core::document::Editor;
+
+use crate::camera::OrbitCamera;
+use crate::files::ImportQueue;
+use crate::tools::Mode;
+use crate::{autosave, clock, panels};
+
+/// State shared with the page API (`window.sketchmesh`), which runs outside frames.
+pub struct Shared {
+    /// The document and its history.
+    pub editor: Editor,
+    /// The view's camera.
+    pub camera: OrbitCamera,
+    /// The graphics backend in use, for the page API and the help panel.
+    pub backend: String,
+    /// Files waiting to be imported.
+    pub imports: ImportQueue,
+    /// Recent costs of edits, for the page benchmark.
+    pub timings: clock::Timings,
+    /// The tool in use; the page's restore sets it, and the app follows.
+    pub mode: Mode,
+    /// When to autosave.
+    pub autosave: autosave::Schedule,
+    /// A sentence for the user from outside the app (the page's restore), shown next frame.
+    pub notice: Option<String>,
+    /// Thumbnails of the view the page asked for (`window.sketchmesh.thumbnail()`).
+    pub thumbnails: crate::thumbnail::Capture,
+    /// The notes panel (an import's repairs), which the page API reads too.
+    pub notes: panels::notes::Notes,
+    /// What the progress line says while work runs off the frame (an import, a replay).
+    pub progress: Option<String>,
+    /// Editors that replaced the first one (see [`autosave::Revision`]).
+    opened: u64,
+    /// The ops' session text as JavaScript strings, for the autosave.
+    #[cfg(target_arch = "wasm32")]
+    pub op_texts: crate::page_store::OpTexts,
+}
+
+impl Shared {
+    /// An empty document in the default view, drawn by `backend`.
+    pub fn new(backend: String) -> Self {
+        Shared {
+            editor: Editor::new(),
+            camera: OrbitCamera::default(),
+            backend,
+            imports: ImportQueue::default(),
+            timings: clock::Timings::default(),
+            mode: Mode::default(),
+            autosave: autosave::Schedule::default(),
+            notice: None,
+            thumbnails: Default::default(),
+            notes: Default::default(),
+            progress: None,
+            opened: 0,
+            #[cfg(target_arch = "wasm32")]
+            op_texts: Default::default(),
+        }
+    }
+
+    /// Replaces the document and its history by `editor`'s (a session opened or restored).
+    pub fn open(&mut self, editor: Editor) {
+        self.editor = editor;
+        self.opened += 1;
+    }
+
+    /// Starts an empty document in the default view, keeping the tool.
+    pub fn open_empty(&mut self) {
+        self.open(Editor::new());
+        self.camera = OrbitCamera::default();
+    }
+
+    /// Which document is shown: changes with every op, and when another editor comes in.
+    pub fn revision(&self) -> autosave::Revision {
+        autosave::Revision {
+            opened: self.opened,
+            edits: self.editor.revision(),
+        }
+    }
+
+    /// Readies the autosave's op texts while `budget_ms` lasts from `started`; whether every
+    /// op is ready (see [`crate::page_store::ready_op_texts`]).
+    #[cfg(target_arch = "wasm32")]
+    pub fn ready_op_texts(&mut self, started: f64, budget_ms: f64) -> bool {
+        let opened = self.opened;
+        crate::page_store::ready_op_texts(
+            &self.editor,
+            &mut self.op_texts,
+            opened,
+            started,
+            budget_ms,
+        )
+    }
+
+    /// The autosave record of what is shown, in pieces (see
+    /// [`crate::page_store::autosave_pieces`]); `None` without ops.
+    #[cfg(target_arch = "wasm32")]
+    pub fn autosave_pieces(&mut self) -> Option<js_sys::Array> {
+        let opened = self.opened;
+        crate::page_store::autosave_pieces(
+            &self.editor,
+            &mut self.op_texts,
+            opened,
+            self.camera,
+            self.mode,
+        )
+    }
+}

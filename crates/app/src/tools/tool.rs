@@ -1,0 +1,151 @@
+//! The tool protocol: what every tool is given and what it gives back. The app, the toolbar,
+//! the help and the shortcuts know a tool only through [`Tool`]; [`super::registry`] lists
+//! them, one line each.
+
+use egui::Key;
+use sketchmesh_core::camera::Camera;
+use sketchmesh_core::curve::StrokePoint;
+use sketchmesh_core::document::{Document, Edit, Op};
+
+use super::context::{ToolOutput, ViewCtx};
+use crate::input::router::{Hands, ToolEvent};
+
+/// What the toolbar, the help and the shortcuts show of a tool.
+#[derive(Clone, Copy, Debug)]
+pub struct ToolInfo {
+    /// The toolbar label.
+    pub label: &'static str,
+    /// The toolbar icon, shown before the label where the row has room: a glyph of the
+    /// tool-icon font (`crate::fonts`; a test checks it is there).
+    pub icon: &'static str,
+    /// The key that selects it (without modifiers).
+    pub key: Key,
+    /// What it does, for tooltips and the help window.
+    pub about: &'static str,
+}
+
+/// What a tool draws over from: the document shown (the edit's while one runs), the edit in
+/// progress, and the view.
+#[derive(Clone, Copy)]
+pub struct Scene<'a> {
+    /// The document as shown: the edit in progress's, else the editor's.
+    pub shown: &'a Document,
+    /// The editor's document (what the edit in progress began from).
+    pub doc: &'a Document,
+    /// The edit in progress, if any.
+    pub edit: Option<&'a Edit>,
+    /// Whether the page's worker computes the edit in progress's op.
+    pub computing: bool,
+    /// The camera the user sees through.
+    pub camera: Camera,
+    /// The 3D viewport's rectangle in screen points.
+    pub viewport: egui::Rect,
+}
+
+impl Scene<'_> {
+    /// The viewport's size, as strokes and cameras measure it.
+    pub fn size(&self) -> glam::DVec2 {
+        glam::DVec2::new(self.viewport.width().into(), self.viewport.height().into())
+    }
+
+    /// A point relative to the viewport, in screen points.
+    pub fn at(&self, p: glam::DVec2) -> egui::Pos2 {
+        self.viewport.min + egui::vec2(p.x as f32, p.y as f32)
+    }
+}
+
+/// A lasso or brush stroke of a tool's open preview, as shown on screen.
+#[derive(Debug)]
+pub struct Mark {
+    /// The samples, in the view they were drawn in.
+    pub points: Vec<StrokePoint>,
+    /// The brush's radius in CSS px; `None` for the lasso.
+    pub radius: Option<f64>,
+    /// Whether it marks features that hold (else what moves).
+    pub features: bool,
+}
+
+/// A tool: a state machine (an enum of its stages) that turns pointer events into
+/// [`ToolOutput`]s, with its options panel and what it draws over the view. Everything but
+/// [`Tool::info`], [`Tool::on_event`] and [`Tool::cancel`] has a default that does nothing.
+pub trait Tool: std::fmt::Debug {
+    /// Its name, icon, key and one-line description.
+    fn info(&self) -> &'static ToolInfo;
+
+    /// One pointer event, in `view` of `doc`.
+    fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput;
+
+    /// Two fingers; a tool takes them by answering [`Hands::Down`] with
+    /// [`ToolOutput::Begin`] (the router then sends their moves to it).
+    fn on_hands(&mut self, _hands: &Hands, _view: &ViewCtx, _doc: &Document) -> ToolOutput {
+        ToolOutput::None
+    }
+
+    /// Drops any gesture in progress; what is left of it (a stroke kept as ink, the edit to
+    /// drop).
+    fn cancel(&mut self) -> ToolOutput;
+
+    /// Its options in the toolbar's second row; what the user did there (`None`: it has
+    /// no options).
+    fn panel(&mut self, _ui: &mut egui::Ui, _doc: &Document) -> Option<ToolOutput> {
+        None
+    }
+
+    /// Draws what it shows over the view (handles, picked curves, its panels in the view).
+    fn overlay(&self, _ui: &egui::Ui, _scene: &Scene<'_>) {}
+
+    /// Draws what an edit of an op it makes shows over the view, whichever tool is in use
+    /// (a feature's amount, a fine shape's outline while the worker computes it).
+    fn edit_overlay(&self, _ui: &egui::Ui, _scene: &Scene<'_>) {}
+
+    /// What to tell the user once an edit of an op it makes has landed (`before` is the
+    /// document it began from).
+    fn report(&self, _op: &Op, _before: &Document, _after: &Document) -> Option<String> {
+        None
+    }
+
+    /// What it asks the user to do next, if anything.
+    fn hint(&self, _doc: &Document) -> Option<&'static str> {
+        None
+    }
+
+    /// The stroke in progress, for live display.
+    fn preview(&self) -> Option<&[StrokePoint]> {
+        None
+    }
+
+    /// Its lasso and brush strokes, while the view is the one each was drawn in.
+    fn marks(&self, _camera: &Camera) -> Vec<Mark> {
+        Vec::new()
+    }
+
+    /// The keys it takes while it is the tool in use (see [`Tool::on_key`]).
+    fn keys(&self) -> &'static [Key] {
+        &[]
+    }
+
+    /// The keys it takes whatever the tool in use: pressing one makes it the tool in use,
+    /// then [`Tool::on_key`] runs.
+    fn keys_anywhere(&self) -> &'static [Key] {
+        &[]
+    }
+
+    /// One of its [`Tool::keys`] or [`Tool::keys_anywhere`] was pressed.
+    fn on_key(&mut self, _key: Key, _doc: &Document) -> ToolOutput {
+        ToolOutput::None
+    }
+
+    /// Called every frame while it is in use, with the frame's clock (s): what a waiting
+    /// stroke becomes when its tap is late, and how long until the next such moment.
+    fn poll(&mut self, _now: f64) -> (ToolOutput, Option<f64>) {
+        (ToolOutput::None, None)
+    }
+
+    /// The edit in progress stepped (whichever tool is in use): a tool waiting on what its
+    /// edit finds takes it.
+    fn edit_stepped(&mut self, _edit: &Edit) {}
+
+    /// The edit a gesture began was refused (whichever tool is in use): the tool starts
+    /// over.
+    fn gesture_refused(&mut self) {}
+}

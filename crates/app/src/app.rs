@@ -30,7 +30,7 @@ use crate::panels::context_menu::{ContextAction, ContextMenu, context_menu_ui};
 use crate::playback::Playback;
 use crate::pointer::Pointer;
 use crate::render::SceneRenderer;
-use crate::scene_view::{SceneView, falloff_levels, model_at};
+use crate::scene_view::{SceneView, model_at};
 pub use crate::shared::Shared;
 use crate::shortcuts;
 use crate::status::{Status, status_ui};
@@ -451,16 +451,8 @@ impl SketchApp {
         view_overlay::draw(ui, &scene, &self.tools, self.runner.waiting());
         drop(shared);
         if let Some(edit) = self.runner.edit() {
-            let levels = falloff_levels(edit);
             let camera = self.shared.borrow().camera.camera();
-            (self.panels.falloff).ui(
-                ui,
-                viewport,
-                &camera,
-                edit,
-                self.runner.edits_begun(),
-                levels,
-            );
+            (self.panels.falloff).ui(ui, viewport, &camera, edit, self.runner.edits_begun());
         }
         if let Some(at) = self
             .pointer

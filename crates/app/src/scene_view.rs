@@ -6,7 +6,7 @@ use std::cell::RefCell;
 use std::sync::Arc;
 
 use eframe::egui_wgpu;
-use sketchmesh_core::document::{Edit, Op, StrokeInput, model_under};
+use sketchmesh_core::document::{Edit, StrokeInput, model_under};
 
 use crate::autosave;
 use crate::camera::OrbitCamera;
@@ -266,9 +266,10 @@ impl SceneView {
             let geometry = Arc::make_mut(&mut self.geometry);
             geometry.move_model(index, model, positions, &mut self.moved_normals);
             if let Some((shaded, vertices, weights)) = edit.region_falloff()
+                && let Some(levels) = edit.region_levels()
                 && shaded == index
             {
-                geometry.shade_model(index, vertices, weights, falloff_levels(edit));
+                geometry.shade_model(index, vertices, weights, levels);
             }
             self.shown_motion = Some(edit.generation());
         }
@@ -324,15 +325,6 @@ impl SceneView {
     /// Whether an animation is playing (the page then draws every frame).
     pub fn is_playing(&self) -> bool {
         self.playback.is_some()
-    }
-}
-
-/// How many gray levels a region edit's fall-off shows: one per level of its op (5 by
-/// default).
-pub fn falloff_levels(edit: &Edit) -> usize {
-    match edit.op() {
-        Op::RegionEdit(input) => input.levels.as_ref().map_or(5, Vec::len),
-        _ => 5,
     }
 }
 

@@ -333,6 +333,20 @@ fn flatten_use(
     }
 }
 
+/// The file a `#[path = "…"]` attribute names, if there is one.
+fn path_attribute(attrs: &[syn::Attribute]) -> Option<String> {
+    attrs.iter().find_map(|attr| match &attr.meta {
+        syn::Meta::NameValue(pair) if pair.path.is_ident("path") => match &pair.value {
+            syn::Expr::Lit(syn::ExprLit {
+                lit: syn::Lit::Str(file),
+                ..
+            }) => Some(file.value()),
+            _ => None,
+        },
+        _ => None,
+    })
+}
+
 /// Walks one file's syntax tree, filling the crate's modules and the file's paths.
 struct Reader<'a> {
     modules: &'a mut BTreeMap<ModPath, Module>,
@@ -341,8 +355,8 @@ struct Reader<'a> {
     module: ModPath,
     paths: Vec<CodePath>,
     names_used: BTreeSet<String>,
-    /// Modules declared here whose body is another file.
-    file_modules: Vec<ModPath>,
+    /// Modules declared here whose body is another file, with the file a `#[path]` names.
+    file_modules: Vec<(ModPath, Option<String>)>,
 }
 
 impl Reader<'_> {
@@ -397,7 +411,9 @@ impl<'ast> Visit<'ast> for Reader<'_> {
                             self.visit_item(item);
                         }
                     }
-                    None => self.file_modules.push(self.module.clone()),
+                    None => self
+                        .file_modules
+                        .push((self.module.clone(), path_attribute(&module.attrs))),
                 }
                 self.module.pop();
             }
@@ -470,12 +486,19 @@ impl CrateCode {
                 "lib.rs" | "mod.rs" => relative[..relative.len() - name.len()].to_owned(),
                 _ => format!("{}/", relative.trim_end_matches(".rs")),
             };
-            for child in &reader.file_modules {
+            for (child, named) in &reader.file_modules {
+                // A `#[path]` is relative to the declaring file's own folder (as rustc reads a
+                // declaration outside inline modules, the only place this tree uses one).
+                let beside = &relative[..relative.len() - name.len()];
                 // Inline modules between the file and the declaration are folders too.
                 let inner = child[module.len()..].join("/");
                 let flat = format!("{folder}{inner}.rs");
                 let nested = format!("{folder}{inner}/mod.rs");
-                let path = if read(&flat).is_some() { flat } else { nested };
+                let path = match named {
+                    Some(named) => format!("{beside}{named}"),
+                    None if read(&flat).is_some() => flat,
+                    None => nested,
+                };
                 queue.push_back((path, child.clone()));
             }
             code.files.push(SourceFile {
@@ -912,6 +935,23 @@ mod tests {
                 "src/deform.rs imports src/deform/shared.rs (`use shared::shared`); \
                  src/deform/shared.rs imports src/deform.rs (`use super::Edit`)"
             ),
+            "{}",
+            problems[0]
+        );
+    }
+
+    #[test]
+    fn a_module_declared_with_a_path_attribute_is_read_from_that_file() {
+        let mut files = clean();
+        files[3].1 = "mod normals; pub use normals::normals; #[path = \"extra/lift.rs\"] mod lift;";
+        files.push((
+            "geometry/extra/lift.rs",
+            "fn f() { let _ = crate::deform::Edit; }",
+        ));
+        let problems = check(&table(), &crate_of(&files));
+        assert_eq!(problems.len(), 1, "{problems:?}");
+        assert!(
+            problems[0].starts_with("src/geometry/extra/lift.rs"),
             "{}",
             problems[0]
         );

@@ -36,11 +36,12 @@ impl FalloffPanel {
         camera: &Camera,
         edit: &Edit,
         edit_key: u64,
-        levels: usize,
     ) {
-        let (Some((model, vertices, weights)), Some(disc)) =
-            (edit.region_falloff(), edit.region_disc())
-        else {
+        let (Some((model, vertices, weights)), Some(disc), Some(levels)) = (
+            edit.region_falloff(),
+            edit.region_disc(),
+            edit.region_levels(),
+        ) else {
             return;
         };
         let rect = panel_rect(viewport);

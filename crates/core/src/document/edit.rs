@@ -73,7 +73,7 @@ use std::sync::Arc;
 
 use crate::io::Previewed;
 use crate::mesh::VertexId;
-use crate::region_edit::RegionEdit;
+use crate::region_edit::{Levels, RegionEdit};
 use glam::{DVec2, DVec3};
 
 use super::arrange::TransformPreview;
@@ -770,6 +770,20 @@ impl Edit {
     pub fn region_falloff(&self) -> Option<(usize, &[VertexId], &[f64])> {
         match &self.work {
             Work::Region(preview) => preview.falloff(),
+            _ => None,
+        }
+    }
+
+    /// How many levels a region edit's fall-off has (the op's, else the default's), which
+    /// the view shades its weights in as many grays; `None` for any other edit.
+    pub fn region_levels(&self) -> Option<usize> {
+        match self.op() {
+            Op::RegionEdit(input) => Some(
+                input
+                    .levels
+                    .as_ref()
+                    .map_or_else(|| Levels::default().weights().len(), Vec::len),
+            ),
             _ => None,
         }
     }

@@ -14,13 +14,13 @@
 //! end (a crop); any other stroke is the handle's new shape. The crop is decided when the
 //! stroke ends, since a new shape also starts at an end but leaves the outline. Orbiting or zooming drops the pick, since it is kept in screen points.
 
-mod panel;
+mod settings;
 
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
-use sketchmesh_core::document::{Document, Op, OversketchFit, OversketchInput, StrokeInput};
+use sketchmesh_core::document::{Document, Op, OversketchInput, StrokeInput};
 use sketchmesh_core::oversketch::{
-    ManualHandle, OutlineKind, OversketchRoi, manual_handle_preview, pick_handle,
+    ManualHandle, OversketchRoi, manual_handle_preview, pick_handle,
 };
 
 use crate::input::router::ToolEvent;
@@ -28,6 +28,8 @@ use crate::overlay::outline_ui;
 use crate::tools::context::{ToolOutput, ViewCtx};
 use crate::tools::draw::{DrawTool, point};
 use crate::tools::tool::{Scene, Tool, ToolInfo};
+
+use settings::OversketchSettings;
 
 /// The over-sketch tool's name, icon, key and description.
 static INFO: ToolInfo = ToolInfo {
@@ -50,20 +52,6 @@ pub struct HandlePreview {
     pub confident: bool,
     /// Whether the ends can be dragged to crop it (a picked outline piece).
     pub croppable: bool,
-}
-
-/// The user's over-sketch settings, kept across strokes and cancels.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct OversketchSettings {
-    /// How closely the outline follows the stroke.
-    pub fit: OversketchFit,
-    /// Pick the handle first instead of letting the stroke find it.
-    pub manual: bool,
-    /// Which region may move.
-    pub roi: OversketchRoi,
-    /// Which outline a manual pick takes: the smooth silhouette, or the mesh edges as
-    /// rendered (a sharp crest seen edge-on).
-    pub outline: OutlineKind,
 }
 
 /// A handle picked in manual mode, with the view it was picked in.
@@ -298,7 +286,7 @@ impl Tool for OversketchTool {
     }
 
     fn panel(&mut self, ui: &mut egui::Ui, _doc: &Document) -> Option<ToolOutput> {
-        panel::options_ui(ui, &mut self.settings);
+        settings::options_ui(ui, &mut self.settings);
         Some(ToolOutput::None)
     }
 
@@ -342,6 +330,7 @@ impl Tool for OversketchTool {
 mod tests {
     use egui::{Rect, pos2};
     use sketchmesh_core::camera::Camera;
+    use sketchmesh_core::document::OversketchFit;
 
     use super::*;
     use crate::input::{Phase, PointerKind, PointerSample};

@@ -1,9 +1,21 @@
-//! The over-sketch tool's options in the toolbar.
+//! The over-sketch tool's settings, kept across strokes, and the toolbar panel that sets them.
 
 use sketchmesh_core::document::OversketchFit;
 use sketchmesh_core::oversketch::{OutlineKind, OversketchRoi};
 
-use super::OversketchSettings;
+/// The user's over-sketch settings, kept across strokes and cancels.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct OversketchSettings {
+    /// How closely the outline follows the stroke.
+    pub fit: OversketchFit,
+    /// Pick the handle first instead of letting the stroke find it.
+    pub manual: bool,
+    /// Which region may move.
+    pub roi: OversketchRoi,
+    /// Which outline a manual pick takes: the smooth silhouette, or the mesh edges as
+    /// rendered (a sharp crest seen edge-on).
+    pub outline: OutlineKind,
+}
 
 /// The over-sketch mode's switches: manual handle picking, the fit and the region.
 pub fn options_ui(ui: &mut egui::Ui, settings: &mut OversketchSettings) {

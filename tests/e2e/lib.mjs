@@ -74,7 +74,8 @@ function isHarmless(gpu, text, url) {
 /**
  * Opens the app in a new context and waits until `window.sketchmesh` exists and a frame has been
  * drawn. Returns `{ context, page, cdp, errors }`; `errors` collects console errors and uncaught
- * exceptions (harmless ones filtered out) for the whole life of the page.
+ * exceptions (harmless ones filtered out) for the whole life of the page. A page that does not
+ * start has its context closed.
  */
 export async function openApp(browser, url, gpu, { width = 1280, height = 720, deviceScaleFactor = 1 } = {}) {
   const context = await browser.newContext({
@@ -91,20 +92,25 @@ export async function openApp(browser, url, gpu, { width = 1280, height = 720, d
   });
   page.on('pageerror', (err) => errors.push(`uncaught: ${err.message}`));
   page.on('crash', () => errors.push('the page crashed'));
-  const cdp = await context.newCDPSession(page);
-  const started = Date.now();
-  await page.goto(url, { waitUntil: 'load' });
   try {
-    await page.waitForFunction(() => typeof window.sketchmesh?.stats === 'function', null, { timeout: 15_000 });
-  } catch {
-    const loading = await page.locator('#loading').textContent().catch(() => null);
-    throw new Error(
-      `window.sketchmesh did not appear within 15 s; page says ${JSON.stringify(loading)}; ` +
-        `errors: ${JSON.stringify(errors)}`,
-    );
+    const cdp = await context.newCDPSession(page);
+    const started = Date.now();
+    await page.goto(url, { waitUntil: 'load' });
+    try {
+      await page.waitForFunction(() => typeof window.sketchmesh?.stats === 'function', null, { timeout: 15_000 });
+    } catch {
+      const loading = await page.locator('#loading').textContent().catch(() => null);
+      throw new Error(
+        `window.sketchmesh did not appear within 15 s; page says ${JSON.stringify(loading)}; ` +
+          `errors: ${JSON.stringify(errors)}`,
+      );
+    }
+    await frames(page, 2);
+    return { context, page, cdp, errors, startupMs: Date.now() - started };
+  } catch (err) {
+    await context.close();
+    throw err;
   }
-  await frames(page, 2);
-  return { context, page, cdp, errors, startupMs: Date.now() - started };
 }
 
 /** Content types of the page's files, for `serveDirectory`. */

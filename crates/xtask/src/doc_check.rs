@@ -1,5 +1,6 @@
 //! `cargo xtask docs`: every path and item that `ARCHITECTURE.md` and `docs/guide.md` name in
-//! backticks exists, so the docs cannot drift from the code unnoticed.
+//! backticks exists, so the docs cannot drift from the code unnoticed; and the landing page and
+//! the architecture stay short enough to be read to the end ([`LENGTH_LIMITS`]).
 //!
 //! The rule, code span by code span (text between matching runs of backticks; fenced code blocks
 //! and HTML comments are not read, so an `<!-- INTEGRATOR: ... -->` note may name what is still
@@ -34,6 +35,10 @@ use crate::Workspace;
 
 /// The documents whose backticks are checked, relative to the repository root.
 pub const CHECKED_DOCS: [&str; 2] = ["ARCHITECTURE.md", "docs/guide.md"];
+
+/// Documents with a length a reader finishes, in characters (issue 48): the README is a landing
+/// page, ARCHITECTURE.md what changes rarely.
+pub const LENGTH_LIMITS: [(&str, usize); 2] = [("README.md", 8_000), ("ARCHITECTURE.md", 15_000)];
 
 /// Endings that make a span without `/` a file name.
 pub const PATH_EXTENSIONS: [&str; 12] = [
@@ -84,9 +89,19 @@ pub fn docs_command(workspace: &Workspace) -> anyhow::Result<()> {
             }
         }
     }
+    for (doc, limit) in LENGTH_LIMITS {
+        let text = fs::read_to_string(root.join(doc)).with_context(|| format!("reading {doc}"))?;
+        let length = text.chars().count();
+        if length > limit {
+            problems.push(format!(
+                "{doc} is {length} characters, over its {limit}: move what changes often or \
+                 serves one reader elsewhere (the guide, BENCHMARKS.md)"
+            ));
+        }
+    }
     if !problems.is_empty() {
         bail!(
-            "{} name(s) in backticks do not exist (rule: crates/xtask/src/doc_check.rs):\n{}",
+            "{} name(s) in backticks do not exist, or documents are too long (rule: crates/xtask/src/doc_check.rs):\n{}",
             problems.len(),
             problems.join("\n")
         );

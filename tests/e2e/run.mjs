@@ -383,6 +383,19 @@ test('canvas is not blank: the view and the UI render', { gpu: true }, async () 
   assert.deepEqual(box, { x: 0, y: 0, width: 1280, height: 720 }, 'the canvas fills the window');
 });
 
+// WebGL2 only: a file the page serves, the same on both paths.
+test('the user guide the help opens is served beside the page, with every tool', { gpu: false }, async () => {
+  const guide = await app.page.evaluate(async () => {
+    const response = await fetch('guide.html');
+    return { status: response.status, text: await response.text() };
+  });
+  assert.equal(guide.status, 200, 'guide.html is served');
+  assert.match(guide.text, /<title>Sketchmesh user guide<\/title>/);
+  for (const tool of ['Sketch', 'Pull', 'Erase', 'Over-sketch', 'Feature', 'Region', 'Bend', 'Pose', 'Optimize', 'Move']) {
+    assert.ok(guide.text.includes(tool), `the guide names the ${tool} tool`);
+  }
+});
+
 // WebGL2 only: the camera and the document, whatever draws them.
 test('touch pinch (two fingers moving apart) zooms in and draws nothing', { gpu: false }, async () => {
   const before = await camera(app.page);

@@ -15,6 +15,7 @@ use anyhow::{Context as _, bail};
 use flate2::Compression;
 use flate2::write::GzEncoder;
 
+use crate::guide_page;
 use crate::setup::{self, Needs};
 use crate::{Workspace, cargo, format_size, run};
 
@@ -109,6 +110,7 @@ pub fn build_web(workspace: &Workspace) -> anyhow::Result<WebBuild> {
     if static_dir.is_dir() {
         copy_dir(&static_dir, &dist)?;
     }
+    guide_page::write_guide(&workspace.root, &dist)?;
 
     write_service_worker(&dist)?;
 

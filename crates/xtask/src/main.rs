@@ -14,6 +14,7 @@ mod bench;
 mod build;
 mod doc_check;
 mod fuzz;
+mod guide_page;
 mod layers;
 mod serve;
 mod setup;

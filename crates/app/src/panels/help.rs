@@ -1,6 +1,16 @@
-//! The help window: every shortcut and gesture in one place.
+//! The help window: every tool with its key (read from the tool registry), the other
+//! shortcuts and gestures, and a link to the user guide (`docs/guide.md`, which the web build
+//! turns into `guide.html` beside the page).
 
-/// Keyboard shortcuts, as shown.
+use crate::tools::Mode;
+
+/// Where the web build puts the user guide, beside the page.
+const GUIDE_URL: &str = "guide.html";
+
+/// The help window's height at most, as a share of the screen's: the rest scrolls.
+const MAX_HEIGHT_SHARE: f32 = 0.8;
+
+/// Keyboard shortcuts other than the tools' own keys, as shown.
 const SHORTCUTS: &[(&str, &str)] = &[
     (
         "Ctrl+O",
@@ -12,12 +22,6 @@ const SHORTCUTS: &[(&str, &str)] = &[
     ("Ctrl+Shift+Z, Ctrl+Y", "Redo"),
     ("F", "Frame everything"),
     ("R, Home", "Reset the view"),
-    ("S", "Sketch: shapes, curves on shapes, ink"),
-    ("P", "Pull: drag a control curve"),
-    ("E", "Erase control curves"),
-    ("T", "Switch control curves sharp/smooth"),
-    ("U", "Rub: smooth a control curve"),
-    ("O", "Over-sketch: a stroke near an outline redraws it"),
     (
         "K",
         "Over-sketch: pick the handle first (outline piece or surface curve)",
@@ -26,28 +30,12 @@ const SHORTCUTS: &[(&str, &str)] = &[
         "A",
         "Over-sketch: bend the whole part (an ear, a finger) or only near the outline",
     ),
-    (
-        "M",
-        "Optimize: tap a model (or lasso part of one) to preview better triangles or smoothing",
-    ),
     ("[ and ]", "Optimize: less or more hold (the amount s)"),
     (
         "B",
         "Optimize: strokes lasso a part, paint what moves, or paint edges that hold",
     ),
     ("Enter", "Optimize: apply the preview"),
-    (
-        "D",
-        "Feature: sketch on a model, then drag for a ridge, bump or suggestive contours",
-    ),
-    (
-        "L",
-        "Region: a curve on a model, a loop around it, then drag: the region follows, fading out",
-    ),
-    (
-        "V",
-        "Move: tap a model, drag it to move, its ring to turn, its square to scale",
-    ),
     ("Delete, Backspace", "Move: delete the selected model"),
     ("Esc", "Drop what is in progress (a preview, a drag)"),
     ("W", "Wireframe on/off"),
@@ -103,18 +91,46 @@ pub fn help_ui(ctx: &egui::Context, open: &mut bool, backend: &str, pen_seen: bo
         .collapsible(false)
         .resizable(false)
         .default_width(420.0)
+        .max_height(ctx.content_rect().height() * MAX_HEIGHT_SHARE)
         .show(ctx, |ui| {
-            table_ui(ui, "shortcuts", "Keyboard", SHORTCUTS);
+            if ui
+                .button("Open the user guide")
+                .on_hover_text("Every tool with a pen, a finger and a mouse, in a new tab")
+                .clicked()
+            {
+                ui.ctx().open_url(egui::OpenUrl::new_tab(GUIDE_URL));
+            }
             ui.add_space(8.0);
-            table_ui(ui, "gestures", "Mouse, pen and touch", GESTURES);
-            ui.add_space(8.0);
-            let palm = if pen_seen {
-                "on (a pen was seen)"
-            } else {
-                "off until a pen is seen"
-            };
-            ui.label(format!("Palm rejection: {palm}. Graphics: {backend}."));
+            egui::ScrollArea::vertical().show(ui, |ui| contents_ui(ui, backend, pen_seen));
         });
+}
+
+/// The tables and the state of the pen and graphics.
+fn contents_ui(ui: &mut egui::Ui, backend: &str, pen_seen: bool) {
+    let tools: Vec<(&str, String)> = Mode::ALL
+        .into_iter()
+        .map(|mode| {
+            (
+                mode.key().name(),
+                format!("{}: {}", mode.label(), mode.hint()),
+            )
+        })
+        .collect();
+    let rows: Vec<(&str, &str)> = (tools.iter())
+        .map(|(key, what)| (*key, what.as_str()))
+        .collect();
+    table_ui(ui, "tools", "Tools", &rows);
+    ui.add_space(8.0);
+    table_ui(ui, "shortcuts", "Keyboard", SHORTCUTS);
+    ui.add_space(8.0);
+    table_ui(ui, "gestures", "Mouse, pen and touch", GESTURES);
+    ui.add_space(8.0);
+    let palm = if pen_seen {
+        "on (a pen was seen)"
+    } else {
+        "off until a pen is seen"
+    };
+    ui.label(format!("Palm rejection: {palm}. Graphics: {backend}."));
 }
 
 fn table_ui(ui: &mut egui::Ui, id: &str, title: &str, rows: &[(&str, &str)]) {

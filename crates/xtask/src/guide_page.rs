@@ -61,7 +61,10 @@ mod tests {
         let page = guide_html(&markdown);
         for (heading, tag) in [("## ", "<h2>"), ("### ", "<h3>")] {
             let sections = markdown.lines().filter(|l| l.starts_with(heading)).count();
-            assert!(sections >= 4, "the guide has {sections} `{heading}` sections");
+            assert!(
+                sections >= 4,
+                "the guide has {sections} `{heading}` sections"
+            );
             assert_eq!(page.matches(tag).count(), sections, "{tag}");
         }
     }

@@ -10,6 +10,9 @@ const GUIDE_URL: &str = "guide.html";
 /// The help window's height at most, as a share of the screen's: the rest scrolls.
 const MAX_HEIGHT_SHARE: f32 = 0.8;
 
+/// The space kept between the window and the screen's edges, so a phone shows it whole.
+const SCREEN_MARGIN: f32 = 8.0;
+
 /// Keyboard shortcuts other than the tools' own keys, as shown.
 const SHORTCUTS: &[(&str, &str)] = &[
     (
@@ -91,6 +94,7 @@ pub fn help_ui(ctx: &egui::Context, open: &mut bool, backend: &str, pen_seen: bo
         .collapsible(false)
         .resizable(false)
         .default_width(420.0)
+        .max_width(ctx.content_rect().width() - 2.0 * SCREEN_MARGIN)
         .max_height(ctx.content_rect().height() * MAX_HEIGHT_SHARE)
         .show(ctx, |ui| {
             if ui
@@ -141,7 +145,8 @@ fn table_ui(ui: &mut egui::Ui, id: &str, title: &str, rows: &[(&str, &str)]) {
         .show(ui, |ui| {
             for (keys, what) in rows {
                 ui.monospace(*keys);
-                ui.label(*what);
+                // Wrapped to the window, which a phone's screen holds.
+                ui.add(egui::Label::new(*what).wrap());
                 ui.end_row();
             }
         });

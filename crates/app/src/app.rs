@@ -463,6 +463,7 @@ impl SketchApp {
             view_overlay::pen_ring(ui, at);
         }
         self.view_rect = viewport;
+        panels::readout::update(ui.ctx(), |r| r.view = panels::readout::corners(viewport));
         let idle = self.tools.preview().is_none() && self.runner.edit().is_none();
         let progress = self.runner.progress(ui.input(|i| i.time));
         self.shared.borrow_mut().progress.clone_from(&progress);
@@ -544,6 +545,7 @@ impl eframe::App for SketchApp {
             &mut self.panels.show_help,
             &backend,
             self.pointer.router.pen_seen(),
+            self.coarse_pointer,
         );
         let mut shared = self.shared.borrow_mut();
         let revision = shared.revision();

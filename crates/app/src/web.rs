@@ -120,6 +120,11 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
     set("notes", getter(move || json(&s.borrow().notes.shown)))?;
     let s = shared.clone();
     set("progress", getter(move || json(&s.borrow().progress)))?;
+    let c = ctx.clone();
+    set(
+        "layout",
+        getter(move || json(&crate::panels::readout::read(&c))),
+    )?;
     let s = shared.clone();
     set(
         "opCount",

@@ -1,14 +1,21 @@
-//! The help window: every tool with its key (read from the tool registry), the other
-//! shortcuts and gestures, and a link to the user guide (`docs/guide.md`, which the web build
+//! The help window: every tool in its group with its icon, key and gestures (read from the
+//! tool registry), the gestures of the pointer in use first, the other shortcuts, and a link
+//! to the user guide (`docs/guide.md`, which the web build
 //! turns into `guide.html` beside the page).
 
-use crate::tools::Mode;
+use crate::panels::readout::{self, HelpScroll, corners};
+use crate::panels::tool_button::icon_ui;
+use crate::tools::{Group, Mode};
 
 /// Where the web build puts the user guide, beside the page.
 const GUIDE_URL: &str = "guide.html";
 
 /// The help window's height at most, as a share of the screen's: the rest scrolls.
 const MAX_HEIGHT_SHARE: f32 = 0.8;
+
+/// The height of the window's title and the buttons above the scrolled list, in points
+/// (with a finger's targets).
+const HEADER: f32 = 110.0;
 
 /// The space kept between the window and the screen's edges, so a phone shows it whole.
 const SCREEN_MARGIN: f32 = 8.0;
@@ -39,46 +46,26 @@ const SHORTCUTS: &[(&str, &str)] = &[
         "Optimize: strokes lasso a part, paint what moves, or paint edges that hold",
     ),
     ("Enter", "Optimize: apply the preview"),
-    ("Delete, Backspace", "Move: delete the selected model"),
+    ("Delete, Backspace", "Arrange: delete the selected model"),
     ("Esc", "Drop what is in progress (a preview, a drag)"),
     ("W", "Wireframe on/off"),
     ("G", "Grid on/off"),
     ("H, F1", "This help"),
 ];
 
-/// Mouse and touch gestures, as shown.
-const GESTURES: &[(&str, &str)] = &[
-    ("Left drag, pen", "Draw"),
+/// What a mouse does in the view, as shown.
+const MOUSE: &[(&str, &str)] = &[
+    ("Left drag", "Use the tool"),
     ("Right drag", "Orbit"),
     ("Middle drag", "Pan"),
     ("Wheel, trackpad pinch", "Zoom"),
-    ("One finger (no pen yet)", "Draw"),
+];
+
+/// What a pen does, as shown.
+const PEN: &[(&str, &str)] = &[
+    ("The pen", "Use the tool; fingers then only move the view"),
     (
-        "Two fingers (no pen yet)",
-        "Drag to orbit, pinch to zoom and pan",
-    ),
-    (
-        "One finger (after a pen)",
-        "Orbit; fingers never draw once a pen is seen",
-    ),
-    ("Two fingers (after a pen)", "Drag to pan, pinch to zoom"),
-    ("Two-finger tap", "Undo"),
-    ("Three-finger tap", "Redo"),
-    ("Double tap on empty canvas", "Frame everything"),
-    (
-        "Sketch: a stroke across a shape",
-        "Cut off the part past it; a tap right after makes a cross-section curve instead",
-    ),
-    (
-        "Sketch: a loop on a shape, then",
-        "a tap: a closed curve; a stroke out from the loop and back: a limb with that outline; a loop on the far side: a tunnel",
-    ),
-    (
-        "Move: two fingers on the selected model",
-        "Move, twist and pinch it; Merge joins it with the model it overlaps",
-    ),
-    (
-        "Pen eraser end or barrel button",
+        "Eraser end or barrel button",
         "Erase curves, whatever the tool",
     ),
     (
@@ -87,13 +74,101 @@ const GESTURES: &[(&str, &str)] = &[
     ),
 ];
 
-/// Shows the help window while `open` is set.
-pub fn help_ui(ctx: &egui::Context, open: &mut bool, backend: &str, pen_seen: bool) {
-    egui::Window::new("Help")
+/// What fingers do, as shown.
+const FINGER: &[(&str, &str)] = &[
+    ("One finger (no pen yet)", "Use the tool"),
+    (
+        "Two fingers (no pen yet)",
+        "Drag to orbit, pinch to zoom and pan",
+    ),
+    ("One finger (after a pen)", "Orbit"),
+    ("Two fingers (after a pen)", "Drag to pan, pinch to zoom"),
+    ("Two-finger tap", "Undo"),
+    ("Three-finger tap", "Redo"),
+    ("Double tap on empty canvas", "Frame everything"),
+    (
+        "Hold on a model",
+        "Its menu: frame, duplicate, delete, over-sketch",
+    ),
+    ("Hold on a tool", "Its name and what it is for"),
+    (
+        "Arrange: two fingers on the selected model",
+        "Move, twist and pinch it",
+    ),
+];
+
+/// What the Sketch tool makes of strokes on a shape, with any pointer.
+const SKETCH: &[(&str, &str)] = &[
+    (
+        "A stroke across a shape",
+        "Cut off the part past it; a tap right after makes a cross-section curve instead",
+    ),
+    (
+        "A loop on a shape, then",
+        "a tap: a closed curve; a stroke out from the loop and back: a limb with that \
+         outline; a loop on the far side: a tunnel",
+    ),
+];
+
+/// A kind of pointer, as the help orders the gestures: the one in use first.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Pointer {
+    Finger,
+    Pen,
+    Mouse,
+}
+
+impl Pointer {
+    /// The pointers, the one the screen is used with first: a pen once one is seen, a
+    /// finger on a touch screen, else a mouse.
+    fn in_order(pen_seen: bool, coarse: bool) -> [Pointer; 3] {
+        use Pointer::{Finger, Mouse, Pen};
+        match (pen_seen, coarse) {
+            (true, _) => [Pen, Finger, Mouse],
+            (false, true) => [Finger, Pen, Mouse],
+            (false, false) => [Mouse, Pen, Finger],
+        }
+    }
+
+    fn name(self) -> &'static str {
+        match self {
+            Pointer::Finger => "Finger",
+            Pointer::Pen => "Pen",
+            Pointer::Mouse => "Mouse",
+        }
+    }
+
+    /// What this pointer does with `mode`'s tool.
+    fn with(self, mode: Mode) -> &'static str {
+        let gestures = &mode.info().gestures;
+        match self {
+            Pointer::Finger => gestures.finger,
+            Pointer::Pen => gestures.pen,
+            Pointer::Mouse => gestures.mouse,
+        }
+    }
+
+    /// What this pointer does anywhere.
+    fn rows(self) -> &'static [(&'static str, &'static str)] {
+        match self {
+            Pointer::Finger => FINGER,
+            Pointer::Pen => PEN,
+            Pointer::Mouse => MOUSE,
+        }
+    }
+}
+
+/// The size of a tool's icon in the help, in points.
+const ICON: f32 = 24.0;
+
+/// Shows the help window while `open` is set: the pointer in use first, a pen once one is
+/// seen (`pen_seen`), else a finger where the screen's main pointer is `coarse`.
+pub fn help_ui(ctx: &egui::Context, open: &mut bool, backend: &str, pen_seen: bool, coarse: bool) {
+    let shown = egui::Window::new("Help")
         .open(open)
         .collapsible(false)
         .resizable(false)
-        .default_width(420.0)
+        .default_width(440.0)
         .max_width(ctx.content_rect().width() - 2.0 * SCREEN_MARGIN)
         .max_height(ctx.content_rect().height() * MAX_HEIGHT_SHARE)
         .show(ctx, |ui| {
@@ -105,29 +180,41 @@ pub fn help_ui(ctx: &egui::Context, open: &mut bool, backend: &str, pen_seen: bo
                 ui.ctx().open_url(egui::OpenUrl::new_tab(GUIDE_URL));
             }
             ui.add_space(8.0);
-            egui::ScrollArea::vertical().show(ui, |ui| contents_ui(ui, backend, pen_seen));
+            let order = Pointer::in_order(pen_seen, coarse);
+            // As tall as the window may be: egui would keep a scrolled list short.
+            let list = ctx.content_rect().height() * MAX_HEIGHT_SHARE - HEADER;
+            egui::ScrollArea::vertical()
+                .max_height(list)
+                .min_scrolled_height(list)
+                .show(ui, |ui| contents_ui(ui, backend, pen_seen, order))
         });
+    let scroll = shown
+        .and_then(|window| window.inner)
+        .map(|scrolled| HelpScroll {
+            rect: corners(scrolled.inner_rect),
+            offset: scrolled.state.clamped_offset().y,
+            max_offset: (scrolled.content_size.y - scrolled.inner_rect.height()).max(0.0),
+        });
+    readout::update(ctx, |r| r.help = scroll);
 }
 
-/// The tables and the state of the pen and graphics.
-fn contents_ui(ui: &mut egui::Ui, backend: &str, pen_seen: bool) {
-    let tools: Vec<(&str, String)> = Mode::ALL
-        .into_iter()
-        .map(|mode| {
-            (
-                mode.key().name(),
-                format!("{}: {}", mode.label(), mode.hint()),
-            )
-        })
-        .collect();
-    let rows: Vec<(&str, &str)> = (tools.iter())
-        .map(|(key, what)| (*key, what.as_str()))
-        .collect();
-    table_ui(ui, "tools", "Tools", &rows);
+/// The tools in their groups, the gestures of each pointer, the keys, and the state of the
+/// pen and graphics.
+fn contents_ui(ui: &mut egui::Ui, backend: &str, pen_seen: bool, order: [Pointer; 3]) {
+    for group in Group::ALL {
+        ui.strong(group.label());
+        for mode in Mode::ALL.into_iter().filter(|m| m.group() == group) {
+            tool_ui(ui, mode, order);
+        }
+        ui.add_space(6.0);
+    }
+    for pointer in order {
+        table_ui(ui, pointer.name(), pointer.name(), pointer.rows());
+        ui.add_space(8.0);
+    }
+    table_ui(ui, "sketch", "Sketch on a shape", SKETCH);
     ui.add_space(8.0);
     table_ui(ui, "shortcuts", "Keyboard", SHORTCUTS);
-    ui.add_space(8.0);
-    table_ui(ui, "gestures", "Mouse, pen and touch", GESTURES);
     ui.add_space(8.0);
     let palm = if pen_seen {
         "on (a pen was seen)"
@@ -137,6 +224,25 @@ fn contents_ui(ui: &mut egui::Ui, backend: &str, pen_seen: bool) {
     ui.label(format!("Palm rejection: {palm}. Graphics: {backend}."));
 }
 
+/// One tool: its icon, name and key, what it does, when to choose it (a tool that deforms),
+/// and how each pointer uses it.
+fn tool_ui(ui: &mut egui::Ui, mode: Mode, order: [Pointer; 3]) {
+    ui.horizontal(|ui| {
+        icon_ui(ui, mode, ICON);
+        ui.strong(mode.label());
+        ui.weak(format!("key {}", mode.key().name()));
+    });
+    ui.indent(mode.label(), |ui| {
+        ui.add(egui::Label::new(mode.hint()).wrap());
+        if let Some(when) = mode.info().when {
+            ui.add(egui::Label::new(egui::RichText::new(when).italics()).wrap());
+        }
+        for pointer in order {
+            let line = format!("{}: {}", pointer.name(), pointer.with(mode));
+            ui.add(egui::Label::new(egui::RichText::new(line).weak()).wrap());
+        }
+    });
+}
 fn table_ui(ui: &mut egui::Ui, id: &str, title: &str, rows: &[(&str, &str)]) {
     ui.strong(title);
     egui::Grid::new(id)

@@ -1,4 +1,4 @@
-//! Panels around the 3D view: the toolbar, the help window, the notes, the fall-off, a
+//! Panels around the 3D view: the toolbar and its tools' buttons, the help window, the notes, the fall-off, a
 //! model's context menu and the progress line.
 
 pub mod context_menu;
@@ -6,6 +6,8 @@ pub mod falloff;
 pub mod help;
 pub mod notes;
 pub mod progress;
+pub mod readout;
+pub mod tool_button;
 pub mod toolbar;
 
 /// The panels' state kept between frames.

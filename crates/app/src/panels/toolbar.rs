@@ -3,8 +3,10 @@
 
 use sketchmesh_core::document::Editor;
 
+use crate::panels::tool_button::{self, NAMED_HEIGHT, Shows, icon_button, tool_button};
 use crate::render::ViewOptions;
-use crate::tools::{Mode, ToolOutput, ToolSet};
+use crate::tools::icon::Pen;
+use crate::tools::{Icon, Mode, ToolOutput, ToolSet};
 
 pub use crate::command::Command as Action;
 
@@ -24,17 +26,15 @@ const NARROW: f32 = 700.0;
 /// wrapped rows fit there, with targets for a finger all the same.
 const TOUCH_WIDE: f32 = 1000.0;
 
-/// From this width (points) the wide toolbar's tools show their icons before their labels:
-/// the row with them (and a finger's 44-point targets) still fits on one line. In the
-/// compact layout, whose tools that do not fit go behind ⋯, they always do.
-const ICONS_FROM: f32 = 1500.0;
-/// Undo's and redo's buttons in the compact layout: arrows, which leave the row room for
-/// more tools (the app's fonts must have them).
-pub const UNDO_REDO_ICONS: (&str, &str) = ("↩", "↪");
+/// The signs the compact layout's menus show as text (the fonts must have them).
+pub const SIGNS: [&str; 2] = ["☰", "⋯"];
 
 /// Below this width (points) the compact toolbar's tools show their icons only: a phone's
-/// row then holds three tools beside the menus and the arrows, where it held one with labels.
+/// row then holds four tools beside the menus and the arrows.
 const ICONS_ONLY_BELOW: f32 = 600.0;
+
+/// The gap between two groups of tools, in points, with a faint line in it.
+const GROUP_GAP: f32 = 9.0;
 
 /// How the toolbar is laid out for a screen and its pointer.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -75,11 +75,12 @@ impl Layout {
     }
 }
 
-/// Shows the toolbar: two rows, the tools (the menus, undo and redo, the tools and, wide,
-/// the view buttons) and the mode's options (on the bottom the options come first, so that
-/// the tools are nearest the thumb); on a wide screen they wrap and the file buttons sit in a
-/// File menu, in the compact layout the file and view buttons sit in one menu (☰) and the
-/// tools that do not fit in another (⋯).
+/// Shows the toolbar: two rows, the tools (the menus, undo and redo, the tools in their
+/// groups and, wide, Help) and the mode's options (on the bottom the options come
+/// first, so that the tools are nearest the thumb). Each row has one height whatever the
+/// tool: the options row is one line that scrolls sideways should it not fit. Wide, the file
+/// and view buttons sit in a File and a View menu; in the compact layout the file and view buttons sit in one
+/// menu (☰) and the tools that do not fit in another (⋯).
 pub fn toolbar_ui(
     ui: &mut egui::Ui,
     layout: Layout,
@@ -98,52 +99,53 @@ pub fn toolbar_ui(
     let mut action = None;
     let mut picked_mode = None;
     let mode = tools.mode();
-    let target = egui::vec2(layout.target, layout.target);
     let full_width = ui.available_width();
-    let shows = ToolText::for_row(layout, full_width);
-    row(ui, layout.compact, "tools", |ui| {
-        // Narrower padding in this row keeps its twelve tools and the view buttons on one
-        // line at 1280 points, with a finger's 44-point File button too.
+    let shows = tool_shows(layout, full_width);
+    let height = match shows {
+        Shows::Icon => layout.target,
+        _ => NAMED_HEIGHT.max(layout.target),
+    };
+    let target = egui::vec2(layout.target, height);
+    tools_row(ui, layout.compact, height, |ui| {
+        // Every button of the row as tall as the tools'.
+        ui.spacing_mut().interact_size.y = height;
         ui.spacing_mut().button_padding.x = 7.0;
         if layout.compact {
-            let menu = egui::Button::new("☰").min_size(target);
+            let menu = egui::Button::new(SIGNS[0]).min_size(target);
             egui::containers::menu::MenuButton::from_button(menu).ui(ui, |ui| {
                 file_buttons(ui, layout, editor, &mut action);
                 ui.separator();
-                view_buttons(ui, layout, options, show_help, &mut action);
+                view_buttons(ui, layout, options, &mut action);
+                help_toggle(ui, layout, show_help);
             });
         } else {
-            // No title: the page's is enough, and the row needs the room for the buttons.
+            // No title: the page's is enough, and the row needs the room for the tools.
             let menu = egui::Button::new("File").min_size(target);
             egui::containers::menu::MenuButton::from_button(menu)
                 .ui(ui, |ui| file_buttons(ui, layout, editor, &mut action));
-            ui.separator();
+            let menu = egui::Button::new("View").min_size(target);
+            egui::containers::menu::MenuButton::from_button(menu)
+                .ui(ui, |ui| view_buttons(ui, layout, options, &mut action));
         }
-        let (undo, redo) = if layout.compact {
-            UNDO_REDO_ICONS
-        } else {
-            ("Undo", "Redo")
-        };
-        button(
-            ui,
-            layout,
-            editor.can_undo(),
-            undo,
-            "Undo (Ctrl+Z, or tap with two fingers)",
-            Action::Undo,
-            &mut action,
-        );
-        button(
-            ui,
-            layout,
-            editor.can_redo(),
-            redo,
-            "Redo (Ctrl+Shift+Z or Ctrl+Y, or tap with three fingers)",
-            Action::Redo,
-            &mut action,
-        );
-        if !layout.compact {
-            ui.separator();
+        let undo = (editor.can_undo(), undo_icon as Icon, "Undo");
+        let redo = (editor.can_redo(), redo_icon as Icon, "Redo");
+        for ((enabled, icon, label), hint, a) in [
+            (undo, "Undo (Ctrl+Z, or tap with two fingers)", Action::Undo),
+            (
+                redo,
+                "Redo (Ctrl+Shift+Z or Ctrl+Y, or tap with three fingers)",
+                Action::Redo,
+            ),
+        ] {
+            let size = egui::vec2(layout.target, height);
+            let response = ui
+                .add_enabled_ui(enabled, |ui| {
+                    icon_button(ui, icon, label, false, Shows::Icon, size)
+                })
+                .inner;
+            if response.on_hover_text(hint).clicked() {
+                action = Some(a);
+            }
         }
         // Compact, the tools that fit beside a More menu (the one in use among them), the
         // rest in it; wide, all of them.
@@ -153,31 +155,26 @@ pub fn toolbar_ui(
         } else {
             (Mode::ALL.to_vec(), Vec::new())
         };
+        let mut group = None;
         for m in shown {
-            let button = egui::Button::selectable(m == mode, shows.text(m));
-            let hint = format!("{}: {} ({})", m.label(), m.hint(), m.key().name());
-            if ui
-                .add(button.min_size(target))
-                .on_hover_text(hint)
-                .clicked()
-            {
+            if group.is_some_and(|g| g != m.group()) {
+                group_gap(ui, height);
+            }
+            group = Some(m.group());
+            let size = egui::vec2(tool_button::width(ui, m, shows, layout.target), height);
+            if tool_button(ui, m, m == mode, shows, size).clicked() {
                 picked_mode = Some(m);
             }
         }
         if !more.is_empty() {
-            let button = egui::Button::new("⋯").min_size(target);
+            let button = egui::Button::new(SIGNS[1]).min_size(target);
             egui::containers::menu::MenuButton::from_button(button).ui(ui, |ui| {
-                for m in more {
-                    let button = egui::Button::new(ToolText::Both.text(m)).min_size(target);
-                    if ui.add(button).clicked() {
-                        picked_mode = Some(m);
-                    }
-                }
+                more_menu_ui(ui, &more, mode, layout.target, &mut picked_mode);
             });
         }
         if !layout.compact {
-            ui.separator();
-            view_buttons(ui, layout, options, show_help, &mut action);
+            group_gap(ui, height);
+            help_toggle(ui, layout, show_help);
         }
     });
     let options_last = (!layout.bottom).then(|| options_row(ui, layout, editor, tools));
@@ -186,57 +183,78 @@ pub fn toolbar_ui(
         .or(options_last.flatten())
 }
 
-/// What a tool's button shows.
-#[derive(Clone, Copy, Debug, PartialEq)]
-enum ToolText {
-    /// Its icon and label.
-    Both,
-    /// Its icon (a phone's row; the label is in its tooltip and in the More menu).
-    Icon,
-    /// Its label (a desktop row without room for the icons).
-    Label,
-}
-
-impl ToolText {
-    /// What the tools row of `layout`, `width` points wide, shows.
-    fn for_row(layout: Layout, width: f32) -> ToolText {
-        if layout.compact && width < ICONS_ONLY_BELOW {
-            ToolText::Icon
-        } else if layout.compact || width >= ICONS_FROM {
-            ToolText::Both
-        } else {
-            ToolText::Label
-        }
-    }
-
-    fn text(self, mode: Mode) -> String {
-        match self {
-            ToolText::Both => format!("{} {}", mode.icon(), mode.label()),
-            ToolText::Icon => mode.icon().to_owned(),
-            ToolText::Label => mode.label().to_owned(),
-        }
+/// What the tools' buttons show in the tools row of `layout`, `width` points wide: names
+/// under the icons, but a phone's row has room for icons only.
+fn tool_shows(layout: Layout, width: f32) -> Shows {
+    if layout.compact && width < ICONS_ONLY_BELOW {
+        Shows::Icon
+    } else {
+        Shows::Below
     }
 }
 
-/// The tools whose buttons (showing `shows`, at least `target` wide) fit in `room` points,
-/// in their order, beside a More button when not all do, with `mode` among them (in the
-/// last place that fits, should it come later); and the rest, for the More menu.
+/// The More menu's tools, each with its icon and name, a line between groups.
+fn more_menu_ui(
+    ui: &mut egui::Ui,
+    more: &[Mode],
+    mode: Mode,
+    target: f32,
+    picked: &mut Option<Mode>,
+) {
+    let width = (more.iter())
+        .map(|&m| tool_button::width(ui, m, Shows::Beside, target))
+        .fold(target, f32::max);
+    for (k, &m) in more.iter().enumerate() {
+        if k > 0 && more[k - 1].group() != m.group() {
+            ui.separator();
+        }
+        let size = egui::vec2(width, target);
+        if tool_button(ui, m, m == mode, Shows::Beside, size).clicked() {
+            *picked = Some(m);
+        }
+    }
+}
+
+/// The space between two groups of tools, a faint line in its middle.
+fn group_gap(ui: &mut egui::Ui, height: f32) {
+    let (rect, _) = ui.allocate_exact_size(egui::vec2(GROUP_GAP, height), egui::Sense::hover());
+    let stroke = ui.visuals().widgets.noninteractive.bg_stroke;
+    let x = rect.center().x;
+    let (top, bottom) = (rect.top() + height * 0.2, rect.bottom() - height * 0.2);
+    ui.painter().vline(x, top..=bottom, stroke);
+}
+
+/// Undo's icon: an arrow turning back to the left.
+fn undo_icon(pen: &Pen<'_>) {
+    pen.arc((12.5, 15.0), (7.5, 7.0), 0.0, -3.0, false);
+    pen.arrow_head((5.2, 11.0), (5.0, 18.5));
+}
+
+/// Redo's icon: undo's, mirrored.
+fn redo_icon(pen: &Pen<'_>) {
+    let half_turn = std::f32::consts::PI;
+    pen.arc((11.5, 15.0), (7.5, 7.0), half_turn, half_turn + 3.0, false);
+    pen.arrow_head((18.8, 11.0), (19.0, 18.5));
+}
+
+/// The tools whose buttons (showing `shows`, at least `target` wide, a gap between groups)
+/// fit in `room` points, in their order, beside a More button when not all do, with `mode`
+/// among them (in the last place that fits, should it come later); and the rest, for the
+/// More menu.
 fn tools_in_room(
     ui: &egui::Ui,
     mode: Mode,
-    shows: ToolText,
+    shows: Shows,
     room: f32,
     target: f32,
 ) -> (Vec<Mode>, Vec<Mode>) {
     let spacing = ui.spacing().item_spacing.x;
-    let font = egui::TextStyle::Button.resolve(ui.style());
-    let width = |m: Mode| {
-        let text = ui
-            .painter()
-            .layout_no_wrap(shows.text(m), font.clone(), egui::Color32::WHITE);
-        (text.size().x + 2.0 * ui.spacing().button_padding.x).max(target) + spacing
+    let width = |k: usize| {
+        let m = Mode::ALL[k];
+        let gap = k > 0 && Mode::ALL[k - 1].group() != m.group();
+        tool_button::width(ui, m, shows, target) + spacing + f32::from(gap) * (GROUP_GAP + spacing)
     };
-    let widths: Vec<f32> = Mode::ALL.into_iter().map(width).collect();
+    let widths: Vec<f32> = (0..Mode::ALL.len()).map(width).collect();
     if widths.iter().sum::<f32>() <= room {
         return (Mode::ALL.to_vec(), Vec::new());
     }
@@ -251,7 +269,7 @@ fn tools_in_room(
     }
     if !shown.contains(&mode) {
         // The tool in use takes the place of the last ones that make room for it.
-        let w = |m: Mode| widths[Mode::ALL.iter().position(|&n| n == m).unwrap_or(0)];
+        let w = |m: Mode| widths[m as usize];
         while !shown.is_empty() && used + w(mode) > room {
             used -= shown.pop().map_or(0.0, w);
         }
@@ -273,7 +291,7 @@ fn options_row(
     tools: &mut ToolSet,
 ) -> Option<Action> {
     let mut action = None;
-    row(ui, layout.compact, "options", |ui| {
+    options_line(ui, layout.target, |ui| {
         if let Some(output) = tools.panel(ui, editor.document()) {
             if output != ToolOutput::None {
                 action = Some(Action::Tool(Box::new(output)));
@@ -334,16 +352,34 @@ fn counted(n: usize, noun: &str) -> String {
     }
 }
 
-/// One toolbar row: wrapped onto more lines, or in the `compact` layout one line that
-/// scrolls sideways (a finger drags it) should it not fit: a tool's options on a phone.
-fn row(ui: &mut egui::Ui, compact: bool, id: &str, add: impl FnOnce(&mut egui::Ui)) {
+/// The tools row: wide, wrapped onto more lines where the screen is narrow (the same for
+/// every tool); in the `compact` layout one line that scrolls sideways should it not fit.
+fn tools_row(ui: &mut egui::Ui, compact: bool, height: f32, add: impl FnOnce(&mut egui::Ui)) {
     if compact {
-        egui::ScrollArea::horizontal().id_salt(id).show(ui, |ui| {
-            ui.horizontal(add);
-        });
+        egui::ScrollArea::horizontal()
+            .id_salt("tools")
+            .max_height(height)
+            .show(ui, |ui| {
+                ui.horizontal(add);
+            });
     } else {
         ui.horizontal_wrapped(add);
     }
+}
+
+/// The options row: one line `height` points tall whatever the tool, which scrolls sideways
+/// (a finger or a mouse drags it, a wheel turns it) should the tool's options not fit, so
+/// that the view below never moves as the tools change.
+fn options_line(ui: &mut egui::Ui, height: f32, add: impl FnOnce(&mut egui::Ui)) {
+    egui::ScrollArea::horizontal()
+        .id_salt("options")
+        .max_height(height)
+        .show(ui, |ui| {
+            ui.horizontal(|ui| {
+                ui.set_height(height);
+                add(ui);
+            });
+        });
 }
 
 /// A button at least a target square that sets `action` to `a` when pressed.
@@ -424,7 +460,6 @@ fn view_buttons(
     ui: &mut egui::Ui,
     layout: Layout,
     options: &mut ViewOptions,
-    show_help: &mut bool,
     action: &mut Option<Action>,
 ) {
     button(
@@ -466,7 +501,17 @@ fn view_buttons(
         "Clay",
         "Draw imported models as clay, without their colours",
     );
-    toggle(ui, layout, show_help, "Help", "Shortcuts and gestures (H)");
+}
+
+/// Help's button, which opens and closes it.
+fn help_toggle(ui: &mut egui::Ui, layout: Layout, show_help: &mut bool) {
+    toggle(
+        ui,
+        layout,
+        show_help,
+        "Help",
+        "Every tool, gesture and shortcut (H)",
+    );
 }
 
 /// A toggle button at least a target square (in the compact layout's menu too).

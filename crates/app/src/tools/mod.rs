@@ -10,6 +10,7 @@
 
 mod context;
 pub mod draw;
+pub mod icon;
 pub mod registry;
 #[cfg(test)]
 mod test_support;
@@ -23,7 +24,7 @@ use sketchmesh_core::document::{Document, Edit, Op};
 pub use crate::input::router::{Hands, ToolEvent};
 pub use context::{ToolOutput, ViewCtx};
 pub use registry::Mode;
-pub use tool::{Mark, Scene, Tool, ToolInfo};
+pub use tool::{Gestures, Group, Icon, Mark, Scene, Tool, ToolInfo};
 
 /// Every tool, one per [`Mode`], and which one gets the events.
 #[derive(Debug)]

@@ -1,10 +1,11 @@
-//! Every tool: its folder's module, and one registration line each, in toolbar order: the mode that selects it (its
-//! name in sessions and the autosave, in snake case) and how to make it. The toolbar, the
-//! help, the shortcuts and [`super::ToolSet`] read the tools from here.
+//! Every tool: its folder's module, and one registration line each, in toolbar order (by
+//! [`Group`], which a test checks): the mode that selects it (its name in sessions and the
+//! autosave, in snake case) and how to make it. The toolbar, the help, the shortcuts and
+//! [`super::ToolSet`] read the tools from here.
 
 use std::sync::OnceLock;
 
-use super::tool::{Tool, ToolInfo};
+use super::tool::{Group, Icon, Tool, ToolInfo};
 
 // The tools' folders, `tools/<name>/mod.rs`.
 #[path = "arrange/mod.rs"]
@@ -55,14 +56,14 @@ macro_rules! register_tools {
 register_tools! {
     /// Draw shapes (closed strokes on empty canvas), curves on shapes, and ink.
     Sketch => sketch::SketchTool::default(),
-    /// Grab a control curve and drag it; the shape follows.
-    Pull => pull::PullTool::default(),
     /// Drag along control curves to remove them.
     Erase => curve_stroke::CurveStrokeTool::new(curve_stroke::Kind::Erase),
     /// Drag along control curves to switch them between smooth and sharp.
     CurveType => curve_stroke::CurveStrokeTool::new(curve_stroke::Kind::CurveType),
     /// Rub back and forth near a control curve to smooth it.
     Rub => curve_stroke::CurveStrokeTool::new(curve_stroke::Kind::Rub),
+    /// Grab a control curve and drag it; the shape follows.
+    Pull => pull::PullTool::default(),
     /// Redraw part of a model's outline.
     Oversketch => oversketch::OversketchTool::default(),
     /// Sketch a ridge, bump, flattening or suggestive contours onto a model.
@@ -75,7 +76,8 @@ register_tools! {
     Pose => pose::PoseTool::default(),
     /// Better triangles or less noise on a model (Laplacian mesh optimization).
     Optimize => optimize::OptimizeTool::default(),
-    /// Select a model and move, turn or scale it; delete or duplicate it.
+    /// Arrange models: select one and move, turn or scale it; delete or duplicate it. (Named
+    /// `move` in sessions and autosaves from before the tool was called Arrange.)
     Move => arrange::ArrangeTool::default(),
 }
 
@@ -98,9 +100,14 @@ impl Mode {
         self.info().label
     }
 
-    /// The toolbar icon (see [`ToolInfo::icon`]).
-    pub fn icon(self) -> &'static str {
+    /// Draws its icon (see [`ToolInfo::icon`]).
+    pub fn icon(self) -> Icon {
         self.info().icon
+    }
+
+    /// What it is for.
+    pub fn group(self) -> Group {
+        self.info().group
     }
 
     /// The key that selects it (without modifiers).
@@ -119,6 +126,47 @@ mod tests {
     use egui::Key;
 
     use super::*;
+
+    /// The toolbar shows the groups in their order, each tool once in its group's run, every
+    /// group with a tool; and exactly the tools that deform say when to choose them.
+    #[test]
+    fn tools_come_in_their_groups_in_order() {
+        let groups: Vec<Group> = Mode::ALL.into_iter().map(Mode::group).collect();
+        let mut runs = groups.clone();
+        runs.dedup();
+        assert_eq!(
+            runs,
+            Group::ALL,
+            "the groups' runs in toolbar order: {groups:?}"
+        );
+        for mode in Mode::ALL {
+            let info = mode.info();
+            assert_eq!(
+                info.when.is_some(),
+                info.group.deforms(),
+                "{mode:?}'s when line"
+            );
+            let words = [info.gestures.pen, info.gestures.finger, info.gestures.mouse];
+            assert!(words.iter().all(|w| !w.is_empty()), "{mode:?}'s gestures");
+        }
+        let deforming = Mode::ALL.into_iter().filter(|m| m.group().deforms());
+        assert_eq!(
+            deforming.count(),
+            6,
+            "Pull, Over-sketch, Feature, Region, Bend, Pose"
+        );
+    }
+
+    /// Sessions and autosaves name the arrange tool `move`, as they did before it was
+    /// called Arrange.
+    #[test]
+    fn the_arrange_tool_keeps_its_stored_name() {
+        assert_eq!(Mode::Move.label(), "Arrange");
+        assert_eq!(
+            serde_json::to_string(&Mode::Move).ok().as_deref(),
+            Some("\"move\"")
+        );
+    }
 
     /// Every key that selects a tool selects only it: no two tools share one, and none is a
     /// key a tool or the app takes for something else (see `crate::shortcuts`).

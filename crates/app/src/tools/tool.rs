@@ -15,13 +15,79 @@ use crate::input::router::{Hands, ToolEvent};
 pub struct ToolInfo {
     /// The toolbar label.
     pub label: &'static str,
-    /// The toolbar icon, shown before the label where the row has room: a glyph of the
-    /// tool-icon font (`crate::fonts`; a test checks it is there).
-    pub icon: &'static str,
+    /// Draws the tool's icon (see [`crate::tools::icon`]), drawn for this app in its folder.
+    pub icon: Icon,
     /// The key that selects it (without modifiers).
     pub key: Key,
+    /// What it is for: the toolbar groups the tools by it, in [`Group::ALL`]'s order.
+    pub group: Group,
     /// What it does, for tooltips and the help window.
     pub about: &'static str,
+    /// How to use it with each pointer, for the help window.
+    pub gestures: Gestures,
+    /// For a tool that deforms a model: when to choose it rather than another that does.
+    pub when: Option<&'static str>,
+}
+
+/// Draws a tool's icon with the pen it is given.
+pub type Icon = fn(&super::icon::Pen<'_>);
+
+/// How to use a tool with a pen, a finger and a mouse: a few words each.
+#[derive(Clone, Copy, Debug)]
+pub struct Gestures {
+    /// With a pen.
+    pub pen: &'static str,
+    /// With a finger (fingers draw until a pen is seen).
+    pub finger: &'static str,
+    /// With a mouse.
+    pub mouse: &'static str,
+}
+
+/// What a tool is for; the toolbar and the help show the tools in these groups, in this
+/// order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Group {
+    /// Make shapes and curves.
+    Make,
+    /// Change the control curves.
+    Curves,
+    /// Change a model's shape.
+    Reshape,
+    /// Bend a model into poses and animate them.
+    Animate,
+    /// Clean up a model's triangles.
+    Tidy,
+    /// Place, copy and delete models.
+    Arrange,
+}
+
+impl Group {
+    /// Every group, in toolbar order.
+    pub const ALL: [Group; 6] = [
+        Group::Make,
+        Group::Curves,
+        Group::Reshape,
+        Group::Animate,
+        Group::Tidy,
+        Group::Arrange,
+    ];
+
+    /// Its name, as the help and the toolbar's menus show it.
+    pub fn label(self) -> &'static str {
+        match self {
+            Group::Make => "Make",
+            Group::Curves => "Curves",
+            Group::Reshape => "Reshape",
+            Group::Animate => "Pose and animate",
+            Group::Tidy => "Tidy",
+            Group::Arrange => "Arrange",
+        }
+    }
+
+    /// Whether its tools deform a model (each then says when to choose it).
+    pub fn deforms(self) -> bool {
+        matches!(self, Group::Reshape | Group::Animate)
+    }
 }
 
 /// What a tool draws over from: the document shown (the edit's while one runs), the edit in

@@ -7,6 +7,8 @@
 //! with the model it overlaps. The handles' geometry, and the matrix a
 //! drag makes, are core's ([`Gizmo`]).
 
+mod icon;
+
 use glam::{DMat4, DVec2};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
@@ -17,14 +19,21 @@ use sketchmesh_core::document::{
 use crate::input::router::{Hands, ToolEvent};
 use crate::tools::context::{ToolOutput, ViewCtx};
 use crate::tools::draw::point;
-use crate::tools::tool::{Scene, Tool, ToolInfo};
+use crate::tools::tool::{Gestures, Group, Scene, Tool, ToolInfo};
 
 /// The move tool's name, icon, key and description.
 static INFO: ToolInfo = ToolInfo {
-    label: "Move",
-    icon: "↔",
+    label: "Arrange",
+    icon: icon::draw,
     key: egui::Key::V,
+    group: Group::Arrange,
     about: "Tap a model, then drag it, its ring or its square: move, turn, scale",
+    gestures: Gestures {
+        pen: "Tap a model, then drag it, its ring or its square",
+        finger: "Tap a model; two fingers on it move, twist and pinch it",
+        mouse: "Click a model, then drag it, its ring or its square",
+    },
+    when: None,
 };
 
 /// A press that moves less than this (px) before it lifts is a tap: it selects.

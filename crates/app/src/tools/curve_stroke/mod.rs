@@ -1,13 +1,15 @@
 //! The erase, type-change and rub tools (FiberMesh §3.2.3–3.2.4): a stroke along control
 //! curves, committed on release as one op; the surface re-optimizes then, as in the thesis.
 
+mod icon;
+
 use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::document::{CurveTypeInput, Document, Op, curve_type_toggle};
 
 use crate::input::router::ToolEvent;
 use crate::tools::context::{ToolOutput, ViewCtx};
 use crate::tools::draw::DrawTool;
-use crate::tools::tool::{Tool, ToolInfo};
+use crate::tools::tool::{Gestures, Group, Tool, ToolInfo};
 
 /// Which of the three tools a stroke along curves is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -22,23 +24,44 @@ pub enum Kind {
 
 static ERASE: ToolInfo = ToolInfo {
     label: "Erase",
-    icon: "✖",
+    icon: icon::erase,
     key: egui::Key::E,
+    group: Group::Curves,
     about: "Drag along control curves to remove them",
+    gestures: Gestures {
+        pen: "Stroke along a curve (the pen's eraser end erases in any tool)",
+        finger: "Drag along a curve",
+        mouse: "Left-drag along a curve",
+    },
+    when: None,
 };
 
 static CURVE_TYPE: ToolInfo = ToolInfo {
     label: "Sharp",
-    icon: "♦",
+    icon: icon::sharp,
     key: egui::Key::T,
+    group: Group::Curves,
     about: "Drag along control curves to switch smooth (blue) and sharp (red)",
+    gestures: Gestures {
+        pen: "Stroke along a curve",
+        finger: "Drag along a curve",
+        mouse: "Left-drag along a curve",
+    },
+    when: None,
 };
 
 static RUB: ToolInfo = ToolInfo {
     label: "Rub",
-    icon: "〰",
+    icon: icon::rub,
     key: egui::Key::U,
+    group: Group::Curves,
     about: "Rub back and forth near a control curve to smooth it",
+    gestures: Gestures {
+        pen: "Scribble back and forth over a curve",
+        finger: "Rub back and forth over a curve",
+        mouse: "Left-drag back and forth over a curve",
+    },
+    when: None,
 };
 
 /// The state of one of the three stroke-along-curves tools: the stroke being drawn.

@@ -9,6 +9,8 @@
 //! last amount. Dragging up (or right, for suggestive contours) raises: 15 px per unit of the
 //! factor, so a drag of 100–150 px raises a ridge about as tall as its band is wide.
 
+mod icon;
+
 use crate::ui_size::target_size;
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
@@ -22,14 +24,21 @@ use crate::input::router::ToolEvent;
 use crate::overlay::hint_ui;
 use crate::tools::context::{ToolOutput, ViewCtx};
 use crate::tools::draw::{DrawTool, is_tap, point};
-use crate::tools::tool::{Mark, Scene, Tool, ToolInfo};
+use crate::tools::tool::{Gestures, Group, Mark, Scene, Tool, ToolInfo};
 
 /// The feature tool's name, icon, key and description.
 static INFO: ToolInfo = ToolInfo {
     label: "Feature",
-    icon: "🗻",
+    icon: icon::draw,
     key: egui::Key::D,
+    group: Group::Reshape,
     about: "Sketch on a model, then drag: a ridge or ravine, a bump or valley, flattening, suggestive contours",
+    gestures: Gestures {
+        pen: "Draw on a model, then drag up or down",
+        finger: "Draw on a model, then drag up or down",
+        mouse: "Left-drag on a model, then drag up or down",
+    },
+    when: Some("For detail along a line: a ridge, a crease, a bump or a flat patch"),
 };
 
 /// Drag distance (CSS px) that changes a ridge's or bump's factor by one.

@@ -8,6 +8,7 @@
 //! only rebuilds points from new frames) and release commits it: one undo step per drag.
 
 mod draw;
+mod icon;
 
 use crate::ui_size::target_size;
 use glam::{DVec2, DVec3};
@@ -21,14 +22,21 @@ use sketchmesh_core::skeleton::HandleKind;
 use crate::input::router::ToolEvent;
 use crate::tools::context::{ToolOutput, ViewCtx};
 use crate::tools::draw::{DrawTool, is_tap, point};
-use crate::tools::tool::{Scene, Tool, ToolInfo};
+use crate::tools::tool::{Gestures, Group, Scene, Tool, ToolInfo};
 
 /// The bend tool's name, icon, key and description.
 static INFO: ToolInfo = ToolInfo {
     label: "Bend",
-    icon: "⤴",
+    icon: icon::draw,
     key: egui::Key::J,
+    group: Group::Reshape,
     about: "Draw along a part of any model or point cloud, then drag, twist or scale its dots",
+    gestures: Gestures {
+        pen: "Draw along a part, then drag its dots",
+        finger: "Draw along a part, then drag its dots",
+        mouse: "Left-drag along a part, then drag its dots",
+    },
+    when: Some("For scans and imported models, or to bend, twist or thicken a limb at joints"),
 };
 
 /// How near (CSS px) a pointer must go down to a control point to grab it: a fingertip.

@@ -9,6 +9,8 @@
 //! builds the system again (see `core::optimize::Optimizer`). Apply ends the gesture; the
 //! preview of the final settings is the committed result.
 
+mod icon;
+
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::document::{
@@ -22,14 +24,22 @@ use sketchmesh_core::optimize::{
 use crate::input::router::ToolEvent;
 use crate::tools::context::{ToolOutput, ViewCtx};
 use crate::tools::draw::{DrawTool, is_tap};
-use crate::tools::tool::{Mark, Tool, ToolInfo};
+use crate::tools::tool::{Gestures, Group, Mark, Tool, ToolInfo};
+use crate::ui_size::target_size;
 
 /// The optimize tool's name, icon, key and description.
 static INFO: ToolInfo = ToolInfo {
     label: "Optimize",
-    icon: "✨",
+    icon: icon::draw,
     key: egui::Key::M,
+    group: Group::Tidy,
     about: "Tap a model: even out its triangles or smooth it, preview the amount, Apply",
+    gestures: Gestures {
+        pen: "Tap a model, then Apply",
+        finger: "Tap a model, then Apply",
+        mouse: "Click a model, then Apply (Enter)",
+    },
+    when: None,
 };
 
 /// The slider's range for the scale `s` (the thesis's positional weights lie in `[0, s]`).
@@ -242,7 +252,9 @@ impl OptimizeTool {
         )
     }
 
-    /// The panel: the settings, and Apply and Cancel while a preview is open.
+    /// The panel: the kind and the amount, Apply and Cancel, the strokes' use and brush,
+    /// and the finer settings behind ⋯, so that the row fits a desktop's width and a
+    /// tablet's shows Apply.
     pub fn settings_ui(&mut self, ui: &mut egui::Ui) -> ToolOutput {
         let before = self.settings;
         let s = &mut self.settings;
@@ -263,88 +275,18 @@ impl OptimizeTool {
                 ),
             ],
         );
-        combo(
-            ui,
-            "optimize-weights",
-            &mut s.weights,
-            &[
-                (
-                    WeightScheme::Cdf,
-                    "Curvature rank",
-                    "Weights from the rank of the curvature: curved places hold most",
-                ),
-                (
-                    WeightScheme::Linear,
-                    "Curvature",
-                    "Weights linear in the curvature, outliers cut off",
-                ),
-                (WeightScheme::Const, "Uniform", "The same weight everywhere"),
-            ],
-        );
-        if s.mode == OptimizeMode::Smooth {
-            combo(
-                ui,
-                "optimize-laplacian",
-                &mut s.laplacian,
-                &[
-                    (
-                        LaplacianKind::Uniform,
-                        "Uniform",
-                        "Also evens out the vertex spacing",
-                    ),
-                    (
-                        LaplacianKind::Cotan,
-                        "Cotangent",
-                        "Follows the geometry, keeps the spacing",
-                    ),
-                    (
-                        LaplacianKind::CotanCurvature,
-                        "Curvature flow",
-                        "Moves by the mean curvature",
-                    ),
-                ],
-            );
-        }
         ui.add(
             egui::Slider::new(&mut s.scale, SCALE_RANGE)
                 .logarithmic(true)
                 .text("Hold"),
         )
         .on_hover_text("How strongly vertices hold their place (the scale s; [ and ] step it)");
-        ui.toggle_value(&mut s.features, "Keep edges")
-            .on_hover_text("Sharp features keep their place (§6.5.3)");
-        if s.features {
-            combo(
-                ui,
-                "optimize-falloff",
-                &mut s.feature_falloff,
-                &[
-                    (
-                        FeatureFalloff::Linear,
-                        "Edges: linear",
-                        "Hold grows with the curvature (§6.5.3)",
-                    ),
-                    (
-                        FeatureFalloff::Cdf,
-                        "Edges: rank",
-                        "Hold grows with the curvature's rank",
-                    ),
-                    (
-                        FeatureFalloff::Gaussian,
-                        "Edges: soft",
-                        "Only the most curved places hold",
-                    ),
-                ],
-            );
-        }
-        if s.mode == OptimizeMode::Shape {
-            ui.toggle_value(&mut s.tangent_plane, "On surface")
-                .on_hover_text(
-                    "Vertices slide on their tangent planes: closer to the input, slower",
-                );
-            ui.toggle_value(&mut s.quality, "Fix slivers")
-                .on_hover_text("Vertices of poor triangles move more freely (§6.5.2)");
-        }
+        let more = egui::Button::new("⋯").min_size(target_size(ui));
+        egui::containers::menu::MenuButton::from_button(more)
+            .ui(ui, |ui| finer_settings_ui(ui, s))
+            .0
+            .on_hover_text("Weights, the Laplacian, edges that hold, sliding on the surface");
+        let painting = self.stroke_use != StrokeUse::Lasso;
         combo(
             ui,
             "optimize-strokes",
@@ -367,7 +309,6 @@ impl OptimizeTool {
                 ),
             ],
         );
-        let painting = self.stroke_use != StrokeUse::Lasso;
         let brush = egui::Slider::new(&mut self.brush_radius, BRUSH_RANGE).text("Brush");
         ui.add_enabled(painting, brush)
             .on_hover_text("The brush's radius in points; a pen's pressure widens it");
@@ -410,6 +351,100 @@ impl OptimizeTool {
         } else {
             ToolOutput::None
         }
+    }
+}
+
+/// The settings behind the panel's ⋯: the weights, the Laplacian (smoothing), the edges that
+/// hold, and for better triangles sliding on the surface and freeing slivers.
+fn finer_settings_ui(ui: &mut egui::Ui, s: &mut OptimizeParams) {
+    choices_ui(
+        ui,
+        "Weights",
+        &mut s.weights,
+        &[
+            (
+                WeightScheme::Cdf,
+                "Curvature rank",
+                "Weights from the rank of the curvature: curved places hold most",
+            ),
+            (
+                WeightScheme::Linear,
+                "Curvature",
+                "Weights linear in the curvature, outliers cut off",
+            ),
+            (WeightScheme::Const, "Uniform", "The same weight everywhere"),
+        ],
+    );
+    if s.mode == OptimizeMode::Smooth {
+        choices_ui(
+            ui,
+            "Laplacian",
+            &mut s.laplacian,
+            &[
+                (
+                    LaplacianKind::Uniform,
+                    "Uniform",
+                    "Also evens out the vertex spacing",
+                ),
+                (
+                    LaplacianKind::Cotan,
+                    "Cotangent",
+                    "Follows the geometry, keeps the spacing",
+                ),
+                (
+                    LaplacianKind::CotanCurvature,
+                    "Curvature flow",
+                    "Moves by the mean curvature",
+                ),
+            ],
+        );
+    }
+    ui.separator();
+    ui.toggle_value(&mut s.features, "Keep edges")
+        .on_hover_text("Sharp features keep their place (§6.5.3)");
+    if s.features {
+        choices_ui(
+            ui,
+            "Edges",
+            &mut s.feature_falloff,
+            &[
+                (
+                    FeatureFalloff::Linear,
+                    "Linear",
+                    "Hold grows with the curvature (§6.5.3)",
+                ),
+                (
+                    FeatureFalloff::Cdf,
+                    "Rank",
+                    "Hold grows with the curvature's rank",
+                ),
+                (
+                    FeatureFalloff::Gaussian,
+                    "Soft",
+                    "Only the most curved places hold",
+                ),
+            ],
+        );
+    }
+    if s.mode == OptimizeMode::Shape {
+        ui.toggle_value(&mut s.tangent_plane, "On surface")
+            .on_hover_text("Vertices slide on their tangent planes: closer to the input, slower");
+        ui.toggle_value(&mut s.quality, "Fix slivers")
+            .on_hover_text("Vertices of poor triangles move more freely (§6.5.2)");
+    }
+}
+
+/// One setting as a title and a radio button per choice: `(value, label, hint)`, for a
+/// menu (where a drop-down's own pop-up would close it).
+fn choices_ui<T: Copy + PartialEq>(
+    ui: &mut egui::Ui,
+    title: &str,
+    value: &mut T,
+    choices: &[(T, &str, &str)],
+) {
+    ui.strong(title);
+    for &(choice, label, hint) in choices {
+        ui.radio_value(value, choice, label).on_hover_text(hint);
     }
 }
 

@@ -14,6 +14,7 @@
 //! end (a crop); any other stroke is the handle's new shape. The crop is decided when the
 //! stroke ends, since a new shape also starts at an end but leaves the outline. Orbiting or zooming drops the pick, since it is kept in screen points.
 
+mod icon;
 mod settings;
 
 use glam::DVec2;
@@ -27,16 +28,23 @@ use crate::input::router::ToolEvent;
 use crate::overlay::outline_ui;
 use crate::tools::context::{ToolOutput, ViewCtx};
 use crate::tools::draw::{DrawTool, point};
-use crate::tools::tool::{Scene, Tool, ToolInfo};
+use crate::tools::tool::{Gestures, Group, Scene, Tool, ToolInfo};
 
 use settings::OversketchSettings;
 
 /// The over-sketch tool's name, icon, key and description.
 static INFO: ToolInfo = ToolInfo {
     label: "Over-sketch",
-    icon: "✒",
+    icon: icon::draw,
     key: egui::Key::O,
+    group: Group::Reshape,
     about: "Draw near an outline where you want it to be",
+    gestures: Gestures {
+        pen: "Draw the outline where it should be",
+        finger: "Draw the outline where it should be",
+        mouse: "Left-drag the outline where it should be",
+    },
+    when: Some("To change a silhouette: redraw the outline you see, on any model"),
 };
 
 /// A stroke starting this close (points) to an end of a picked outline piece and running

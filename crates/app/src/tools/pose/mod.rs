@@ -10,6 +10,8 @@
 //! at**: to edit a pose between keys, or to start each frame of a retargeted motion from the
 //! rest pose), and plays the animation.
 
+mod icon;
+
 use crate::ui_size::target_size;
 use glam::DVec3;
 use sketchmesh_core::camera::Camera;
@@ -29,14 +31,21 @@ use crate::input::router::ToolEvent;
 use crate::overlay::outline_ui;
 use crate::tools::context::{ToolOutput, ViewCtx};
 use crate::tools::draw::{DrawTool, is_tap, point};
-use crate::tools::tool::{Mark, Scene, Tool, ToolInfo};
+use crate::tools::tool::{Gestures, Group, Mark, Scene, Tool, ToolInfo};
 
 /// The pose tool's name, icon, key and description.
 static INFO: ToolInfo = ToolInfo {
     label: "Pose",
-    icon: "🏃",
+    icon: icon::draw,
     key: egui::Key::Q,
+    group: Group::Animate,
     about: "Draw a curve along a model, then its new shape: it bends keeping its volume; key poses, play",
+    gestures: Gestures {
+        pen: "Draw along a limb, then draw its new shape",
+        finger: "Draw along a limb, then draw its new shape",
+        mouse: "Left-drag along a limb, then its new shape",
+    },
+    when: Some("To bend a limb keeping its volume, and to key poses for an animation"),
 };
 
 /// Seconds the time moves on after a key, so the next pose goes after it.

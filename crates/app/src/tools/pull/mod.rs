@@ -3,19 +3,28 @@
 //! the edit every frame, so the core previews the drag (following the latest sample once
 //! per frame, however many samples came) and then computes the committed op from the path.
 
+mod icon;
+
 use sketchmesh_core::document::{Document, Op, StrokeInput};
 
 use crate::input::router::ToolEvent;
 use crate::tools::context::{ToolOutput, ViewCtx};
 use crate::tools::draw::point;
-use crate::tools::tool::{Tool, ToolInfo};
+use crate::tools::tool::{Gestures, Group, Tool, ToolInfo};
 
 /// The pull tool's name, icon, key and description.
 static INFO: ToolInfo = ToolInfo {
     label: "Pull",
-    icon: "✋",
+    icon: icon::draw,
     key: egui::Key::P,
+    group: Group::Reshape,
     about: "Grab a control curve and drag it; the shape follows",
+    gestures: Gestures {
+        pen: "Press on a curve and drag it",
+        finger: "Press on a curve and drag it",
+        mouse: "Left-drag a curve",
+    },
+    when: Some("For a shape made here: drag one of its curves and the surface follows"),
 };
 
 /// The pull tool's state: whether a drag is in progress.

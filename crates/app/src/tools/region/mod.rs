@@ -14,6 +14,7 @@
 //! Apply (or Enter) commits them as one undo step.
 
 mod handles;
+mod icon;
 mod profile;
 
 mod overlay;
@@ -38,14 +39,21 @@ pub use profile::ProfileView;
 use crate::input::router::ToolEvent;
 use crate::tools::context::{ToolOutput, ViewCtx};
 use crate::tools::draw::{DrawTool, is_tap, point};
-use crate::tools::tool::{Mark, Scene, Tool, ToolInfo};
+use crate::tools::tool::{Gestures, Group, Mark, Scene, Tool, ToolInfo};
 
 /// The region tool's name, icon, key and description.
 static INFO: ToolInfo = ToolInfo {
     label: "Region",
-    icon: "⭕",
+    icon: icon::draw,
     key: egui::Key::L,
+    group: Group::Reshape,
     about: "Draw a curve on a model and a loop around it, then drag: the region follows, fading out",
+    gestures: Gestures {
+        pen: "Draw a curve, a loop around it, then drag",
+        finger: "Draw a curve, a loop around it, then drag",
+        mouse: "Left-drag a curve, a loop around it, then drag",
+    },
+    when: Some("To move, turn or scale an area with a soft edge you shape"),
 };
 
 /// The fall-off shapes offered: a label, a tooltip and the levels (weights from the boundary

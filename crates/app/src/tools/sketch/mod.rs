@@ -6,6 +6,8 @@
 //! them; followed by anything else it stays ink. A cross-section is a cut unless the tap comes within [`CUT_WAIT_SECONDS`]
 //! (the thesis' "a cutting stroke followed by a click" adds the curve).
 
+mod icon;
+
 use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::document::{
     Document, Op, cut_instead, extrude_from, ink_instead, is_cross_section, needs_tap,
@@ -16,15 +18,22 @@ use crate::input::router::ToolEvent;
 use crate::overlay::{hint_ui, stroke_ui};
 use crate::tools::context::{ToolOutput, ViewCtx};
 use crate::tools::draw::{DrawTool, is_tap};
-use crate::tools::tool::{Scene, Tool, ToolInfo};
+use crate::tools::tool::{Gestures, Group, Scene, Tool, ToolInfo};
 use crate::ui_size::target_size;
 
 /// The sketch tool's name, icon, key and description.
 static INFO: ToolInfo = ToolInfo {
     label: "Sketch",
-    icon: "✏",
+    icon: icon::draw,
     key: egui::Key::S,
+    group: Group::Make,
     about: "Closed outline on empty canvas: a shape. On a shape: a curve (closed ones and strokes across a shape: tap to confirm).",
+    gestures: Gestures {
+        pen: "Draw a closed outline on empty canvas for a shape; draw on a shape for a curve",
+        finger: "One finger draws as a pen does; tap to keep a closed curve",
+        mouse: "Left-drag to draw; click to keep a closed curve",
+    },
+    when: None,
 };
 
 /// How finely a new shape is meshed: about how many vertices it gets. Coarse shapes edit

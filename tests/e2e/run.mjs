@@ -391,7 +391,7 @@ test('the user guide the help opens is served beside the page, with every tool',
   });
   assert.equal(guide.status, 200, 'guide.html is served');
   assert.match(guide.text, /<title>Sketchmesh user guide<\/title>/);
-  for (const tool of ['Sketch', 'Pull', 'Erase', 'Over-sketch', 'Feature', 'Region', 'Bend', 'Pose', 'Optimize', 'Move']) {
+  for (const tool of ['Sketch', 'Pull', 'Erase', 'Over-sketch', 'Feature', 'Region', 'Bend', 'Pose', 'Optimize', 'Arrange']) {
     assert.ok(guide.text.includes(tool), `the guide names the ${tool} tool`);
   }
 });
@@ -659,6 +659,93 @@ test('phone (390x844, DPR 2, touch): the toolbar is two rows at the bottom, the 
     const created = await until(() => api(phone.page, 'stats'), (s) => s.models === 1, 15_000);
     assert.equal(created.models, 1, 'the finger-drawn outline made a shape');
     await screenshot(phone.page, out('phone-created.png'));
+    assert.deepEqual(phone.errors, [], 'console errors on the phone page');
+  } finally {
+    await phone.context.close();
+  }
+});
+
+/** Every tool's key, in toolbar order (the registry's). */
+const TOOL_KEYS = ['s', 'e', 't', 'u', 'p', 'o', 'd', 'l', 'j', 'q', 'm', 'v'];
+
+// WebGL2 only: the layout and the toolbar's pixels, whatever draws the view.
+test('the toolbar keeps its height for every tool on desktop, tablet and phone, and each tool draws its own icon', { gpu: false, limitMs: 120_000 }, async () => {
+  const screens = [
+    { name: 'desktop', width: 1280, height: 800, bottom: false },
+    { name: 'tablet', width: 820, height: 1180, bottom: true },
+    { name: 'phone', width: 390, height: 844, bottom: true },
+  ];
+  for (const screen of screens) {
+    const fresh = await openApp(browser, url, gpu, screen);
+    try {
+      const views = [];
+      const icons = new Set();
+      for (const key of TOOL_KEYS) {
+        await fresh.page.keyboard.press(key);
+        await frames(fresh.page, 3);
+        views.push((await api(fresh.page, 'layout')).view.map(Math.round));
+        if (screen.name !== 'desktop') continue;
+        // The selected tool's button, found by its fill in the tools row, holds its icon's
+        // light ink above its name: a drawing of its own, unlike every other tool's.
+        const shot = await screenshot(fresh.page, out(`toolbar-${key}.png`));
+        const at = (x, y) => shot.data.slice((y * shot.width + x) * 4, (y * shot.width + x) * 4 + 3);
+        const fill = (x) => { const [r, g, b] = at(x, 6); return b > 100 && b > r + 60; };
+        const xs = Array.from({ length: shot.width }, (_, x) => x).filter(fill);
+        assert.ok(xs.length > 20, `the ${key} tool's button is shown selected`);
+        const [x0, x1] = [xs[0], xs.at(-1)];
+        let mask = '';
+        let ink = 0;
+        for (let y = 6; y < 30; y += 1) {
+          for (let x = Math.round((x0 + x1) / 2) - 12; x < Math.round((x0 + x1) / 2) + 12; x += 1) {
+            const light = at(x, y).every((v) => v > 170);
+            ink += light;
+            mask += light ? '1' : '0';
+          }
+        }
+        assert.ok(ink >= 15, `the ${key} tool's icon draws (${ink} light pixels)`);
+        icons.add(mask);
+      }
+      const tops = views.map((v) => v[1]);
+      const bottoms = views.map((v) => v[3]);
+      console.log(`    ${screen.name}: view ${views[0].join(',')} for all ${views.length} tools`);
+      for (const [k, view] of views.entries()) {
+        assert.deepEqual(view, views[0], `${screen.name}: the view's rectangle with tool ${TOOL_KEYS[k]}`);
+      }
+      const toolbar = screen.bottom ? screen.height - bottoms[0] : tops[0];
+      // Two rows of a finger's targets (the suite's pages have touch), and no third.
+      assert.ok(toolbar >= 2 * 44 && toolbar <= 110, `${screen.name}: the toolbar is ${toolbar} px tall`);
+      if (screen.name === 'desktop') assert.equal(icons.size, TOOL_KEYS.length, 'every tool has an icon of its own');
+      await screenshot(fresh.page, out(`toolbar-${screen.name}.png`));
+      assert.deepEqual(fresh.errors, [], `console errors on the ${screen.name} page`);
+    } finally {
+      await fresh.context.close();
+    }
+  }
+});
+
+// WebGL2 only: the help's layout, whatever draws the view.
+test('help on a phone (390x844) fits the screen and scrolls with a finger to its last entry', { gpu: false, limitMs: 150_000 }, async () => {
+  const phone = await openApp(browser, url, gpu, { width: 390, height: 844 });
+  try {
+    await phone.page.keyboard.press('h');
+    let help = await until(() => api(phone.page, 'layout'), (l) => l.help).then((l) => l.help);
+    assert.ok(help, 'the help is open');
+    const [left, top, right, bottom] = help.rect;
+    console.log(`    help list ${help.rect.map(Math.round).join(',')}, scrolls ${Math.round(help.max_offset)} px`);
+    assert.ok(left >= 0 && right <= 390 && top >= 0 && bottom <= 844, 'the help list lies on the screen');
+    assert.ok(bottom - top >= 0.5 * 844, `the help list takes most of the screen: ${bottom - top} px`);
+    assert.ok(help.max_offset > 0, 'the help is longer than the screen, so it scrolls');
+    await screenshot(phone.page, out('help-phone.png'));
+    const x = (left + right) / 2;
+    for (let k = 0; k < 12 && help.offset < help.max_offset - 1; k += 1) {
+      await touchGesture(phone.cdp, [line({ x, y: bottom - 20 }, { x, y: top + 20 }, 6)]);
+      await frames(phone.page, 4);
+      help = (await api(phone.page, 'layout')).help;
+    }
+    assert.ok(help.offset >= help.max_offset - 1, `the finger scrolled to the end: ${help.offset} of ${help.max_offset}`);
+    await screenshot(phone.page, out('help-phone-end.png'));
+    const stats = await api(phone.page, 'stats');
+    assert.ok(stats.models === 0 && stats.curves === 0, 'the drags over the help drew nothing');
     assert.deepEqual(phone.errors, [], 'console errors on the phone page');
   } finally {
     await phone.context.close();

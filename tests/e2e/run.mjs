@@ -648,7 +648,8 @@ test('phone (390x844, DPR 2, touch): the toolbar is two rows at the bottom, the 
     await frames(phone.page, 3);
     const moreMenu = await screenshot(phone.page, out('phone-more.png'));
     assert.ok(maxDiffNear(shot, moreMenu, more.x - 40, 844 - height - 60, 20) > 40, 'the ⋯ menu opened above its button');
-    await touchTap(phone.cdp, [{ x: 300, y: 300 }]);
+    // A tap off the menu (it lists the tools with their names, on the right) closes it.
+    await touchTap(phone.cdp, [{ x: 60, y: 300 }]);
     await frames(phone.page, 3);
     const c = { x: 195, y: 450 };
     const outline = Array.from({ length: 13 }, (_, i) => {
@@ -669,7 +670,7 @@ test('phone (390x844, DPR 2, touch): the toolbar is two rows at the bottom, the 
 const TOOL_KEYS = ['s', 'e', 't', 'u', 'p', 'o', 'd', 'l', 'j', 'q', 'm', 'v'];
 
 // WebGL2 only: the layout and the toolbar's pixels, whatever draws the view.
-test('the toolbar keeps its height for every tool on desktop, tablet and phone, and each tool draws its own icon', { gpu: false, limitMs: 120_000 }, async () => {
+test('the toolbar keeps its height for every tool on desktop, tablet and phone; each tool draws its own icon; a finger held on a tool shows its tooltip', { gpu: false, limitMs: 120_000 }, async () => {
   const screens = [
     { name: 'desktop', width: 1280, height: 800, bottom: false },
     { name: 'tablet', width: 820, height: 1180, bottom: true },
@@ -680,6 +681,22 @@ test('the toolbar keeps its height for every tool on desktop, tablet and phone, 
     try {
       const views = [];
       const icons = new Set();
+      if (screen.name === 'tablet') {
+        // A finger held on a tool (Feature's button, in Sketch's row) shows its name and when
+        // to choose it above the row, and letting go after it picks nothing.
+        const before = await screenshot(fresh.page, out('toolbar-hold-before.png'));
+        const feature = { x: 571, y: 1155 };
+        await fresh.cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ ...feature, id: 1 }] });
+        await sleep(900);
+        await frames(fresh.page, 3);
+        const held = await screenshot(fresh.page, out('toolbar-hold.png'));
+        await fresh.cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+        await frames(fresh.page, 3);
+        const after = await screenshot(fresh.page, out('toolbar-hold-after.png'));
+        assert.ok(maxDiffNear(before, held, feature.x - 60, 1080, 20) > 40, 'a tooltip shows above the held tool');
+        assert.ok(maxDiffNear(before, after, feature.x - 60, 1080, 20) < 20, 'and goes when the finger lifts');
+        assert.ok(maxDiffNear(before, after, feature.x, feature.y, 20) < 40, 'the held tool was not picked');
+      }
       for (const key of TOOL_KEYS) {
         await fresh.page.keyboard.press(key);
         await frames(fresh.page, 3);

@@ -43,9 +43,10 @@ pub fn width(ui: &egui::Ui, mode: Mode, shows: Shows, target: f32) -> f32 {
     wide.max(target)
 }
 
-fn name_font(shows: Shows) -> egui::FontId {
+/// The name's font: a menu's text beside the icon, smaller under it.
+fn name_font(ui: &egui::Ui, shows: Shows) -> egui::FontId {
     match shows {
-        Shows::Beside => egui::TextStyle::Button.resolve(&egui::Style::default()),
+        Shows::Beside => egui::TextStyle::Button.resolve(ui.style()),
         _ => egui::FontId::proportional(NAME_SIZE),
     }
 }
@@ -53,7 +54,7 @@ fn name_font(shows: Shows) -> egui::FontId {
 fn name_width(ui: &egui::Ui, mode: Mode, shows: Shows) -> f32 {
     let name = (ui.painter()).layout_no_wrap(
         mode.label().to_owned(),
-        name_font(shows),
+        name_font(ui, shows),
         egui::Color32::WHITE,
     );
     name.size().x
@@ -107,7 +108,7 @@ pub fn icon_button(
         );
     }
     let ink = visuals.text_color();
-    let name = (ui.painter()).layout_no_wrap(label.to_owned(), name_font(shows), ink);
+    let name = (ui.painter()).layout_no_wrap(label.to_owned(), name_font(ui, shows), ink);
     let icon_at = match shows {
         Shows::Below => egui::pos2(rect.center().x, rect.top() + PADDING + ICON / 2.0),
         Shows::Icon => rect.center(),

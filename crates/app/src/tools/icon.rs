@@ -144,7 +144,10 @@ impl<'a> Pen<'a> {
     }
 }
 
+/// Draws a tool's icon with the pen it is given.
+pub type Icon = fn(&Pen<'_>);
+
 /// Draws `icon` in `rect` with `ink`.
-pub fn paint(painter: &Painter, rect: Rect, ink: Color32, icon: super::tool::Icon) {
+pub fn paint(painter: &Painter, rect: Rect, ink: Color32, icon: Icon) {
     icon(&Pen::new(painter, rect, ink));
 }

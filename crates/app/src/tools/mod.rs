@@ -23,8 +23,9 @@ use sketchmesh_core::document::{Document, Edit, Op};
 
 pub use crate::input::router::{Hands, ToolEvent};
 pub use context::{ToolOutput, ViewCtx};
+pub use icon::Icon;
 pub use registry::Mode;
-pub use tool::{Gestures, Group, Icon, Mark, Scene, Tool, ToolInfo};
+pub use tool::{Gestures, Group, Mark, Scene, Tool, ToolInfo};
 
 /// Every tool, one per [`Mode`], and which one gets the events.
 #[derive(Debug)]

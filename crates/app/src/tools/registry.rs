@@ -5,7 +5,8 @@
 
 use std::sync::OnceLock;
 
-use super::tool::{Group, Icon, Tool, ToolInfo};
+use super::icon::Icon;
+use super::tool::{Group, Tool, ToolInfo};
 
 // The tools' folders, `tools/<name>/mod.rs`.
 #[path = "arrange/mod.rs"]

@@ -8,6 +8,7 @@ use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::document::{Document, Edit, Op};
 
 use super::context::{ToolOutput, ViewCtx};
+use super::icon::Icon;
 use crate::input::router::{Hands, ToolEvent};
 
 /// What the toolbar, the help and the shortcuts show of a tool.
@@ -28,9 +29,6 @@ pub struct ToolInfo {
     /// For a tool that deforms a model: when to choose it rather than another that does.
     pub when: Option<&'static str>,
 }
-
-/// Draws a tool's icon with the pen it is given.
-pub type Icon = fn(&super::icon::Pen<'_>);
 
 /// How to use a tool with a pen, a finger and a mouse: a few words each.
 #[derive(Clone, Copy, Debug)]

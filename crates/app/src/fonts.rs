@@ -36,21 +36,3 @@ pub fn definitions() -> FontDefinitions {
     }
     fonts
 }
-
-#[cfg(test)]
-mod tests {
-    /// The signs the toolbar writes as text (its menus') are in the fonts.
-    #[test]
-    fn the_toolbar_signs_are_in_the_fonts() {
-        let ctx = egui::Context::default();
-        ctx.set_fonts(super::definitions());
-        // A pass loads the fonts; its texture deltas are for a renderer, and there is none.
-        let mut output = ctx.run_ui(egui::RawInput::default(), |_| {});
-        output.textures_delta.clear();
-        let font = egui::FontId::proportional(14.0);
-        for sign in crate::panels::toolbar::SIGNS {
-            let drawn = ctx.fonts_mut(|fonts| fonts.has_glyphs(&font, sign));
-            assert!(drawn, "the sign {sign} is not in the fonts");
-        }
-    }
-}

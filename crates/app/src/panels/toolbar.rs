@@ -26,8 +26,8 @@ const NARROW: f32 = 700.0;
 /// wrapped rows fit there, with targets for a finger all the same.
 const TOUCH_WIDE: f32 = 1000.0;
 
-/// The signs the compact layout's menus show as text (the fonts must have them).
-pub const SIGNS: [&str; 2] = ["☰", "⋯"];
+/// The signs the compact layout's menus show as text: ☰ (files and view), ⋯ (more tools).
+const SIGNS: [&str; 2] = ["☰", "⋯"];
 
 /// Below this width (points) the compact toolbar's tools show their icons only: a phone's
 /// row then holds four tools beside the menus and the arrows.

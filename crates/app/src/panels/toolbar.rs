@@ -155,9 +155,11 @@ pub fn toolbar_ui(
         } else {
             (Mode::ALL.to_vec(), Vec::new())
         };
+        // A phone's row of icons has no room for the gaps between groups (the More menu
+        // shows them).
         let mut group = None;
         for m in shown {
-            if group.is_some_and(|g| g != m.group()) {
+            if shows != Shows::Icon && group.is_some_and(|g| g != m.group()) {
                 group_gap(ui, height);
             }
             group = Some(m.group());
@@ -251,7 +253,7 @@ fn tools_in_room(
     let spacing = ui.spacing().item_spacing.x;
     let width = |k: usize| {
         let m = Mode::ALL[k];
-        let gap = k > 0 && Mode::ALL[k - 1].group() != m.group();
+        let gap = shows != Shows::Icon && k > 0 && Mode::ALL[k - 1].group() != m.group();
         tool_button::width(ui, m, shows, target) + spacing + f32::from(gap) * (GROUP_GAP + spacing)
     };
     let widths: Vec<f32> = (0..Mode::ALL.len()).map(width).collect();

@@ -269,6 +269,11 @@ impl SceneView {
                 && let Some(levels) = edit.region_levels()
                 && shaded == index
             {
+                // The gray levels until the region moves; then the lit surface, as committed.
+                let (vertices, weights) = match edit.region_shade_levels() {
+                    Some(_) => (vertices, weights),
+                    None => (&[][..], &[][..]),
+                };
                 geometry.shade_model(index, vertices, weights, levels);
             }
             self.shown_motion = Some(edit.generation());

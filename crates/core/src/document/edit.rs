@@ -774,6 +774,17 @@ impl Edit {
         }
     }
 
+    /// [`Edit::region_levels`] while the region has not moved: the view shades the fall-off
+    /// in gray levels until a drag, a handle or a profile moves the region, and from then on
+    /// draws the surface lit, as its release commits it (issue 49: the flat gray bands of a
+    /// dragged region looked stair-stepped until the release).
+    pub fn region_shade_levels(&self) -> Option<usize> {
+        match self.op() {
+            Op::RegionEdit(input) if input.moves_region() => None,
+            _ => self.region_levels(),
+        }
+    }
+
     /// How many levels a region edit's fall-off has (the op's, else the default's), which
     /// the view shades its weights in as many grays; `None` for any other edit.
     pub fn region_levels(&self) -> Option<usize> {

@@ -508,6 +508,15 @@ impl RegionEditInput {
     pub fn reference_input(&self) -> StrokeInput {
         StrokeInput::in_view(self.viewport, self.camera, &self.reference)
     }
+
+    /// Whether the op moves its region: a transform or a handle's other than the identity,
+    /// or a profile.
+    pub fn moves_region(&self) -> bool {
+        let still = glam::DMat4::IDENTITY.to_cols_array();
+        self.profile.is_some()
+            || self.transform.is_some_and(|t| t != still)
+            || (self.handles.iter().flatten()).any(|h| h.transform != still)
+    }
 }
 
 /// A brush stroke painted on screen: the stroke in its view, and the brush's radius in CSS px

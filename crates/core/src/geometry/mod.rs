@@ -27,7 +27,8 @@ pub use laplacian::{
     uniform_laplacian,
 };
 pub use normals::{
-    face_normal, face_normals, vertex_normals, vertex_normals_into, vertex_normals_of,
+    face_normal, face_normals, flipped_faces, vertex_normals, vertex_normals_into,
+    vertex_normals_of,
 };
 pub use raycast::{RayHit, raycast};
 pub(crate) use raycast::{intersect_triangle, segment_crosses_triangle};

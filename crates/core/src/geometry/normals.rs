@@ -56,6 +56,20 @@ pub fn vertex_normals_of(triangles: &[[u32; 3]], positions: &[DVec3], out: &mut 
     }
 }
 
+/// How many of `triangles` face away from where they faced at `rest` once at `moved` (their
+/// normals more than a right angle apart): the triangles a deformation folded over, which
+/// a preview must not show (issue 49). Both slices index the same vertices.
+pub fn flipped_faces(triangles: &[[u32; 3]], rest: &[DVec3], moved: &[DVec3]) -> usize {
+    let normal = |p: &[DVec3], [a, b, c]: [u32; 3]| {
+        let [pa, pb, pc] = [a, b, c].map(|v| p[v as usize]);
+        (pb - pa).cross(pc - pa)
+    };
+    triangles
+        .iter()
+        .filter(|&&t| normal(rest, t).dot(normal(moved, t)) < 0.0)
+        .count()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

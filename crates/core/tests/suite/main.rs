@@ -16,6 +16,7 @@ mod golden_sessions;
 mod optimize;
 mod oversketch;
 mod oversketch_pipeline;
+mod previews;
 mod region_edit;
 mod silhouette;
 mod skeleton;

@@ -1146,3 +1146,82 @@ fn a_ridge_seen_edge_on_is_an_outline_the_oversketch_edits() {
     );
     assert!(worst < 2.0, "the outline is {worst} px off the stroke");
 }
+
+/// At each end of `stroke`: the largest turning of the outlines `after` near it, of the
+/// outlines `before` there, and the stroke's own over its first (last) 20 px (degrees).
+fn join_turnings(
+    before: &[Vec<DVec2>],
+    after: &[Vec<DVec2>],
+    stroke: &[DVec2],
+) -> [(f64, f64, f64); 2] {
+    let cumulative = cumulative_lengths(stroke);
+    let total = length(stroke);
+    [(stroke[0], 10.0), (stroke[stroke.len() - 1], total - 10.0)].map(|(end, s)| {
+        (
+            largest_turning_near(after, end, 5.0, 15.0),
+            largest_turning_near(before, end, 5.0, 15.0),
+            turning_at(stroke, &cumulative, s, 10.0),
+        )
+    })
+}
+
+/// Issue 49: a created dome over-sketched across part of its silhouette, the stroke starting
+/// and ending on the outline (as the page's case draws it) and bulging out or in: at each
+/// join the new outline turns within 10° of the larger of the old outline's turning and the
+/// stroke's own there, so no notch.
+#[test]
+fn an_oversketched_dome_joins_its_outline_without_a_notch() {
+    let cases = [
+        (170.0, 120.0, 40.0, PI / 3.0),
+        (170.0, 170.0, 40.0, PI / 3.0),
+        (170.0, 120.0, 20.0, PI / 4.0),
+        (170.0, 120.0, -20.0, PI / 3.0),
+    ];
+    for (rx, ry, bulge, span) in cases {
+        let mut editor = created(rx, ry, 60);
+        let camera = Camera::default();
+        let before = outlines(&editor.document().models[0].mesh, &camera);
+        let c = DVec2::new(500.0, 500.0);
+        let stroke: Vec<DVec2> = (0..=40)
+            .map(|i| {
+                let a = -span + 2.0 * span * i as f64 / 40.0;
+                let push = bulge * (1.5 * a * (PI / 3.0) / span).cos().powi(2);
+                c + DVec2::new((rx + push) * a.cos(), (ry + push) * a.sin())
+            })
+            .collect();
+        editor.apply(oversketch_op(&stroke)).unwrap();
+        let after = outlines(&editor.document().models[0].mesh, &camera);
+        for (new, old, own) in join_turnings(&before, &after, &stroke) {
+            eprintln!(
+                "dome {rx}×{ry}, bulge {bulge} px: the join turns {new:.1}° (outline {old:.1}°, stroke {own:.1}°)"
+            );
+            assert!(new <= old.max(own) + 10.0, "a notch of {new}°");
+        }
+    }
+}
+
+/// Issue 49, on scans: an outline piece redrawn with a stroke that starts and ends on it
+/// joins the rest with no notch (as on the dome above).
+#[test]
+fn a_scan_s_redrawn_outline_joins_without_a_notch() {
+    let cases = [
+        ("spot.glb", DVec3::X, (0.25, 0.45), 25, 12.0),
+        ("stanford_bunny.glb", DVec3::Z, (0.0, 1.0), 30, 10.0),
+    ];
+    for (name, direction, (from, to), half_span, push) in cases {
+        let Some(mesh) = scan(name) else { return };
+        let camera = camera_from(&mesh, direction);
+        let before = outlines(&mesh, &camera);
+        let (which, anchor) = top_between(&before, from, to);
+        let stroke = pushed_piece(&before[which], anchor, half_span, push, DVec2::NEG_Y);
+        let result =
+            oversketch(&mesh, &camera, VIEWPORT, &stroke).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let mut moved = mesh.clone();
+        moved.positions_mut().copy_from_slice(&result.positions);
+        let after = outlines(&moved, &camera);
+        for (new, old, own) in join_turnings(&before, &after, &stroke) {
+            eprintln!("{name}: the join turns {new:.1}° (outline {old:.1}°, stroke {own:.1}°)");
+            assert!(new <= old.max(own) + 10.0, "{name}: a notch of {new}°");
+        }
+    }
+}

@@ -331,7 +331,7 @@ fn duplicates_along_a_direction_land_beside_overlapping_no_model_and_replay_exac
             }))
             .unwrap();
     }
-    let boxes: Vec<_> = editor.document().models.iter().map(bounds).collect();
+    let boxes: Vec<_> = editor.document().models.iter().map(|m| bounds(m)).collect();
     assert_eq!(boxes.len(), 6);
     for (i, &a) in boxes.iter().enumerate() {
         for &b in &boxes[i + 1..] {

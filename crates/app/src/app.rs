@@ -460,8 +460,9 @@ impl SketchApp {
         }
         self.backdrop.paint(ui, viewport);
         let shared = self.shared.borrow();
+        let played = self.scene.played();
         let mut scene = self.runner.scene(&shared, viewport);
-        scene.played = self.scene.played();
+        scene.played = &played;
         view_overlay::draw(ui, &scene, &self.tools, self.runner.waiting());
         drop(shared);
         if let Some(edit) = self.runner.edit() {

@@ -514,7 +514,7 @@ impl EditRunner {
             computing: self.is_computing(),
             camera: shared.camera.camera(),
             viewport,
-            played: Vec::new(),
+            played: &[],
         }
     }
 

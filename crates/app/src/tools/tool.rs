@@ -42,7 +42,7 @@ pub struct Scene<'a> {
     pub viewport: egui::Rect,
     /// The models the animation being played shows posed, and their vertices' positions in
     /// that pose (empty when nothing plays).
-    pub played: Vec<(usize, &'a [glam::DVec3])>,
+    pub played: &'a [(usize, &'a [glam::DVec3])],
 }
 
 impl Scene<'_> {

@@ -300,7 +300,7 @@ impl PoseTool {
         let Some(curve) = self.active.map(|k| &mut self.curves[k]) else {
             return ToolOutput::None;
         };
-        let points = curve.points(doc, None);
+        let points = curve.points(doc, &[]);
         let (first, last) = (points[0], points[points.len() - 1]);
         let Some(axis) = (last - first).try_normalize() else {
             return ToolOutput::None;

@@ -2205,6 +2205,7 @@ test('the view comes back after a reload with no edit after it (an orbit, a whee
     return api(p, 'camera');
   };
   await page.keyboard.press('p');
+  await frames(page, 2);
   assert.equal(await api(page, 'tool'), 'pull', 'P picks Pull');
   const front = await settled(page);
   await orbitDrag(cdp);
@@ -2220,8 +2221,12 @@ test('the view comes back after a reload with no edit after it (an orbit, a whee
   // New, from Pull: an empty document in Sketch; two more made within the minute.
   for (let k = 2; k <= 3; k++) {
     await page.keyboard.press('p');
+    await frames(page, 2);
+    assert.equal(await api(page, 'tool'), 'pull', 'P picks Pull');
     await api(page, 'newDocument');
     assert.equal(await api(page, 'tool'), 'sketch', 'New starts in Sketch');
+    // The app takes the new document in its next frame; a replay begun before is the old one's.
+    await frames(page, 2);
     await page.evaluate((s) => window.sketchmesh.replay(s), drawnShape.session);
     await until(() => api(page, 'documents'), (d) => d.length === k, 5000);
   }

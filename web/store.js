@@ -1,7 +1,7 @@
 // The documents kept in this browser (IndexedDB), so that a reload, a closed tab or a
 // discarded background tab loses nothing, and several pieces of work live side by side.
 //
-// - `records`: id → the app's autosave record (session, camera, tool; see
+// - `records`: id → the app's autosave record (session and camera; see
 //   crates/app/src/autosave.rs): a JSON text, or (since version 3) a list of its pieces in
 //   order, each a string or `{ piece: key }`, a long piece kept in `pieces`.
 // - `pieces`: "<id>/<index>" → a piece of document id's record at least `APART` long: an op
@@ -115,6 +115,14 @@ function defaultName(time) {
   return `Sketch ${day} ${clock}`;
 }
 
+// `name`, or with the lowest number after it that makes it none of `taken`: two documents
+// made in the same minute get different names.
+function distinctName(name, taken) {
+  let distinct = name;
+  for (let n = 2; taken.has(distinct); n++) distinct = `${name} (${n})`;
+  return distinct;
+}
+
 // The id of the document shown.
 export function shownId() {
   return openId;
@@ -162,8 +170,16 @@ export function save(pieces) {
   return write([RECORDS, PIECES, DOCUMENTS, STATE], (s) => {
     s[RECORDS].put(parted(id, pieces, s[PIECES]), id);
     s[DOCUMENTS].get(id).onsuccess = (event) => {
-      const known = event.target.result ?? { id, name: pendingName ?? defaultName(now), created: now, thumbnail: null };
-      s[DOCUMENTS].put({ ...known, updated: now });
+      if (event.target.result) {
+        s[DOCUMENTS].put({ ...event.target.result, updated: now });
+        return;
+      }
+      // A new document: its name, unless another has it already ("Sketch 7 Dec 06:12 (2)").
+      s[DOCUMENTS].getAll().onsuccess = (all) => {
+        const taken = new Set(all.target.result.map((doc) => doc.name));
+        const name = distinctName(pendingName ?? defaultName(now), taken);
+        s[DOCUMENTS].put({ id, name, created: now, updated: now, thumbnail: null });
+      };
     };
     s[STATE].put(id, OPEN);
   });

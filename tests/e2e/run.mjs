@@ -331,6 +331,31 @@ async function until(probe, accept, ms = 3000) {
   return value;
 }
 
+/**
+ * How far the box `[lo, hi]` reaches across the view of `cam` (`{eye, target, up, fov_y_deg}`)
+ * with the width/height `aspect`: the largest |x| or |y| of its corners in normalized device
+ * coordinates, at most 1 when all of it is in view (Infinity when a corner is behind the eye).
+ */
+function viewExtent(cam, [lo, hi], aspect) {
+  const sub = (a, b) => a.map((v, k) => v - b[k]);
+  const dot = (a, b) => a.reduce((s, v, k) => s + v * b[k], 0);
+  const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+  const unit = (a) => a.map((v) => v / Math.hypot(...a));
+  const forward = unit(sub(cam.target, cam.eye));
+  const right = unit(cross(forward, cam.up));
+  const up = cross(right, forward);
+  const tan = Math.tan((cam.fov_y_deg * Math.PI) / 360);
+  let worst = 0;
+  for (let corner = 0; corner < 8; corner++) {
+    const p = [0, 1, 2].map((k) => ((corner >> k) & 1 ? hi[k] : lo[k]));
+    const d = sub(p, cam.eye);
+    const depth = dot(d, forward);
+    if (depth <= 0) return Infinity;
+    worst = Math.max(worst, Math.abs(dot(d, right)) / (depth * tan * aspect), Math.abs(dot(d, up)) / (depth * tan));
+  }
+  return worst;
+}
+
 // ---------------------------------------------------------------------------------------------
 
 const browser = await launch(gpu);
@@ -1567,7 +1592,7 @@ test('bend (J): a pen stroke across a shape makes a curve handle with dots; drag
 }));
 
 // Both paths: the live bend and the animation on screen.
-test('pose (Q): keyed at rest, a pen stroke along a shape picks a control curve and turns the view face on to its plane; the new shape drawn there bends the shape live and commits one curve_deform; keyed again, Play animates between the keys; undo restores', { gpu: true, limitMs: LONG_CASE_LIMIT_MS }, () => withShape(async ({ fresh, created }) => {
+test('pose (Q): keyed at rest, a pen stroke along a shape picks a control curve and turns the view face on to its plane; the new shape drawn there bends the shape live and commits one curve_deform; keyed again, Play animates between the keys with the curve following, and Stop ends it at once; undo restores', { gpu: true, limitMs: LONG_CASE_LIMIT_MS }, () => withShape(async ({ fresh, created }) => {
     const c = ELLIPSE.c;
     const lastOp = () => lastOpOf(fresh.page);
     await until(lastOp, (o) => o.op === 'create', 15_000);
@@ -1645,6 +1670,42 @@ test('pose (Q): keyed at rest, a pen stroke along a shape picks a control curve 
     console.log(`    pose: playing, ${(100 * between).toFixed(1)}% of the view differs from the last key half way, ${(100 * back).toFixed(2)}% at the end`);
     assert.ok(between > 0.01, `the animation plays (${between})`);
     assert.ok(back < 0.005, `it ends on the last key (${back})`);
+    // The picked curve (drawn green) follows the animation: while it plays, its pixels lie
+    // elsewhere than in the last key's pose, and back on them at the end.
+    const curve = (image) => {
+      const on = new Set();
+      for (let y = 110; y < image.height; y++) {
+        for (let x = 0; x < image.width; x++) {
+          const i = (y * image.width + x) * 4;
+          const [r, g, b] = [image.data[i], image.data[i + 1], image.data[i + 2]];
+          if (g > 180 && r < 140 && b > 70 && b < 170) on.add(y * image.width + x);
+        }
+      }
+      return on;
+    };
+    const kept = (from, to) => {
+      const [a, b] = [curve(from), curve(to)];
+      return [...a].filter((p) => b.has(p)).length / Math.max(1, a.size);
+    };
+    const curveAt = { playing: kept(after, playing), played: kept(after, played) };
+    console.log(`    pose: ${curve(after).size} px of curve; ${(100 * curveAt.playing).toFixed(0)}% of them still drawn while playing, ${(100 * curveAt.played).toFixed(0)}% at the end`);
+    assert.ok(curve(after).size > 200, 'the picked curve is drawn');
+    assert.ok(curveAt.playing < 0.5, `the curve is drawn in the played pose (${curveAt.playing} of it where the last key has it)`);
+    assert.ok(curveAt.played > 0.8, `and in the last key's pose at the end (${curveAt.played})`);
+    // Play again, then Stop (the same button): the last key's pose shows at once, and stays.
+    await fresh.page.mouse.click(POSE_PLAY.x, POSE_PLAY.y);
+    await sleep(300);
+    const replaying = await screenshot(fresh.page, out('pose-replaying.png'));
+    assert.ok(imageChangedFraction(played, replaying) > 0.01, 'Play plays again');
+    await fresh.page.mouse.click(POSE_PLAY.x, POSE_PLAY.y);
+    await frames(fresh.page, 3);
+    const stopped = await screenshot(fresh.page, out('pose-stopped.png'));
+    await sleep(500);
+    await frames(fresh.page, 3);
+    const still = await screenshot(fresh.page, out('pose-stopped-still.png'));
+    const [atStop, later] = [imageChangedFraction(played, stopped), imageChangedFraction(played, still)];
+    console.log(`    pose: stopped, ${(100 * atStop).toFixed(2)}% of the view differs from the last key, ${(100 * later).toFixed(2)}% half a second later`);
+    assert.ok(atStop < 0.005 && later < 0.005, `Stop shows the last key's pose (${atStop}, ${later})`);
     // Three steps back (key, bend, key), each in a frame of its own.
     for (let k = 0; k < 3; k++) {
       await fresh.page.keyboard.press('Control+z');
@@ -1730,7 +1791,7 @@ test('pose (Q) spline and backdrop: Spline shows the picked curve\'s control poi
 }));
 
 // WebGL2 only: the ops and the camera.
-test('long press: a finger held still on a model opens its context menu; Duplicate adds a copy, Delete removes it, each one undoable op', { gpu: false }, () => withShape(async ({ fresh }) => {
+test('long press: a finger held still on a model opens its context menu; Duplicate adds a copy beside it toward the screen\'s right, three in a row overlapping no model, Delete removes it, each one undoable op', { gpu: false }, () => withShape(async ({ fresh }) => {
     const c = ELLIPSE.c;
     const lastOp = () => lastOpOf(fresh.page);
     await until(lastOp, (o) => o.op === 'create', 15_000);
@@ -1744,14 +1805,39 @@ test('long press: a finger held still on a model opens its context menu; Duplica
     await hold();
     await screenshot(fresh.page, out('long-press-menu.png'));
     assert.deepEqual(await camera(fresh.page), before, 'a finger held still does not move the view');
-    await touchTap(fresh.cdp, [row(1)]);
-    const two = await until(() => api(fresh.page, 'stats'), (st) => st.models === 2, 5_000);
-    assert.equal(two.models, 2, 'Duplicate adds a copy');
-    assert.equal((await lastOp()).op, 'duplicate');
+    // Three copies of the model held, one after the other: each beside the last, along the
+    // screen's right, and no two models' bounds overlap.
+    const overlap = ([lo, hi], [lo2, hi2]) => Math.min(...[0, 1, 2].map((k) => Math.min(hi[k], hi2[k]) - Math.max(lo[k], lo2[k])));
+    const right = (cam) => {
+      const f = cam.target.map((v, k) => v - cam.eye[k]);
+      return [f[1] * cam.up[2] - f[2] * cam.up[1], f[2] * cam.up[0] - f[0] * cam.up[2], f[0] * cam.up[1] - f[1] * cam.up[0]];
+    };
+    for (let n = 2; n <= 4; n++) {
+      if (n > 2) await hold();
+      await touchTap(fresh.cdp, [row(1)]);
+      const more = await until(() => api(fresh.page, 'stats'), (st) => st.models === n, 5_000);
+      assert.equal(more.models, n, 'Duplicate adds a copy');
+      const op = await lastOp();
+      assert.equal(op.op, 'duplicate');
+      assert.equal(op.model, 0, 'of the model held');
+      const along = right(before);
+      const cos = op.beside.reduce((s, v, k) => s + v * along[k], 0) / (Math.hypot(...op.beside) * Math.hypot(...along));
+      assert.ok(cos > 0.999, `placed toward the screen's right: ${op.beside}`);
+      const boxes = await api(fresh.page, 'bounds');
+      for (let i = 0; i < n; i++) {
+        for (let j = i + 1; j < n; j++) {
+          assert.ok(overlap(boxes[i], boxes[j]) < 0, `models ${i} and ${j} overlap: ${JSON.stringify([boxes[i], boxes[j]])}`);
+        }
+      }
+      const shift = boxes[n - 1][0].map((v, k) => v - boxes[0][0][k]);
+      assert.ok(shift.reduce((s, v, k) => s + v * along[k], 0) > 0, 'the copy lies to the right');
+    }
+    await frames(fresh.page, 3);
+    await screenshot(fresh.page, out('long-press-duplicates.png'));
     await hold();
     await touchTap(fresh.cdp, [row(2)]);
-    const one = await until(() => api(fresh.page, 'stats'), (st) => st.models === 1, 5_000);
-    assert.equal(one.models, 1, 'Delete removes the model held');
+    const left = await until(() => api(fresh.page, 'stats'), (st) => st.models === 3, 5_000);
+    assert.equal(left.models, 3, 'Delete removes the model held');
     assert.equal((await lastOp()).op, 'delete');
     assert.deepEqual(fresh.errors, [], 'console errors');
 }, { pen: true }));
@@ -2163,6 +2249,135 @@ test('autosave: create and pull, reload: the same document, session, view and hi
   await frames(fresh.page, 3);
   await screenshot(fresh.page, out('autosave-set-aside.png'));
   assert.deepEqual(fresh.errors, [], 'console errors around the reloads');
+}));
+
+// WebGL2 only: the menu is looked for where it opens, drawn the same on both paths.
+test('the File menu closes with Esc, and with a pen stroke on the view (which draws)', { gpu: false }, async () => {
+  const fresh = await openApp(browser, url, gpu);
+  try {
+    const { page, cdp } = fresh;
+    const menuArea = [];
+    for (let x = 12; x <= 180; x += 6) for (let y = 60; y <= 240; y += 6) menuArea.push({ x, y });
+    const closed = await screenshot(page, out('file-menu-closed.png'));
+    const differs = (shot) => changedFraction(closed, shot, menuArea, { radius: 0, threshold: 40 });
+    const open = async (name) => {
+      await page.mouse.click(FILE_MENU.x, FILE_MENU.y);
+      await frames(page, 3);
+      const shot = await screenshot(page, out(`file-menu-${name}.png`));
+      assert.ok(differs(shot) > 0.2, `the File menu opened (${differs(shot)})`);
+    };
+    await open('open');
+    await page.keyboard.press('Escape');
+    await frames(page, 3);
+    const escaped = await screenshot(page, out('file-menu-escaped.png'));
+    assert.ok(differs(escaped) < 0.01, `Esc closes the File menu (${differs(escaped)})`);
+    await open('open-again');
+    await penStroke(cdp, line({ x: 520, y: 420 }, { x: 820, y: 440 }, 14).map((p) => ({ ...p, force: 0.5 })));
+    await frames(page, 3);
+    const stroked = await screenshot(page, out('file-menu-stroked.png'));
+    assert.ok(differs(stroked) < 0.01, `a pen stroke on the view closes the File menu (${differs(stroked)})`);
+    assert.equal((await lastOpOf(page)).op, 'stroke', 'and the stroke is drawn');
+    assert.deepEqual(fresh.errors, [], 'console errors');
+  } finally {
+    await fresh.context.close();
+  }
+});
+
+// WebGL2 only: the camera, the tool and the store.
+test('the view comes back after a reload with no edit after it (an orbit, a wheel zoom, a two-finger pinch on a phone); New and a reload start in Sketch; documents made in the same minute get distinct names', { gpu: false }, () => withShape(async ({ fresh }) => {
+  const { page, cdp } = fresh;
+  await until(() => lastOpOf(page), (o) => o.op === 'create', 15_000);
+  await sleep(1200);
+  // The view's camera once it holds still (egui spreads a wheel's scroll over frames).
+  const settled = async (p) => {
+    let last = null;
+    for (let i = 0; i < 40; i++) {
+      await frames(p, 3);
+      const now = await api(p, 'camera');
+      if (JSON.stringify(now) === JSON.stringify(last)) return now;
+      last = now;
+    }
+    return last;
+  };
+  // Reloads once the view has been written (it is, shortly after it holds still), and reads
+  // the view restored.
+  const reloaded = async (p) => {
+    await sleep(1500);
+    await p.reload({ waitUntil: 'load' });
+    await p.waitForFunction(() => window.sketchmesh?.stats?.().models === 1, null, { timeout: 15_000, polling: 100 });
+    await frames(p, 2);
+    return api(p, 'camera');
+  };
+  await page.keyboard.press('p');
+  await frames(page, 2);
+  assert.equal(await api(page, 'tool'), 'pull', 'P picks Pull');
+  const front = await settled(page);
+  await orbitDrag(cdp);
+  const orbited = await settled(page);
+  assert.notDeepEqual(orbited, front, 'the right drag orbited');
+  assert.deepEqual(await reloaded(page), orbited, 'the orbit comes back after a reload');
+  assert.equal(await api(page, 'tool'), 'sketch', 'the reloaded document starts in Sketch, not Pull');
+  await page.mouse.move(ELLIPSE.c.x, ELLIPSE.c.y);
+  await page.mouse.wheel(0, 500);
+  const zoomed = await settled(page);
+  assert.ok(cameraDistance(zoomed) > 1.05 * cameraDistance(orbited), 'the wheel zoomed out');
+  assert.deepEqual(await reloaded(page), zoomed, 'the wheel zoom comes back after a reload');
+  // New, from Pull: an empty document in Sketch; two more made within the minute.
+  for (let k = 2; k <= 3; k++) {
+    await page.keyboard.press('p');
+    await frames(page, 2);
+    assert.equal(await api(page, 'tool'), 'pull', 'P picks Pull');
+    await api(page, 'newDocument');
+    assert.equal(await api(page, 'tool'), 'sketch', 'New starts in Sketch');
+    // The app takes the new document in its next frame; a replay begun before is the old one's.
+    await frames(page, 2);
+    await page.evaluate((s) => window.sketchmesh.replay(s), drawnShape.session);
+    await until(() => api(page, 'documents'), (d) => d.length === k, 5000);
+  }
+  const names = (await api(page, 'documents')).map((d) => d.name);
+  console.log(`    names: ${names.join('; ')}`);
+  assert.equal(names.length, 3, 'three documents kept');
+  assert.equal(new Set(names).size, 3, `distinct names: ${names}`);
+  assert.deepEqual(fresh.errors, [], 'console errors around the reloads');
+  // A phone: a two-finger pinch, then a reload.
+  const phone = await openApp(browser, url, gpu, { width: 390, height: 844 });
+  try {
+    await phone.page.evaluate((s) => window.sketchmesh.replay(s), drawnShape.session);
+    await until(() => api(phone.page, 'stats'), (s) => s.models === 1, 15_000);
+    await sleep(1200);
+    const before = await settled(phone.page);
+    const c = { x: 195, y: 420 };
+    await touchGesture(phone.cdp, [
+      line({ x: c.x - 40, y: c.y }, { x: c.x - 150, y: c.y }, 10),
+      line({ x: c.x + 40, y: c.y }, { x: c.x + 150, y: c.y }, 10),
+    ]);
+    const pinched = await settled(phone.page);
+    assert.ok(cameraDistance(pinched) < 0.95 * cameraDistance(before), 'the pinch zoomed in');
+    assert.deepEqual(await reloaded(phone.page), pinched, 'the pinch zoom comes back after a reload on a phone');
+    assert.deepEqual(phone.errors, [], 'console errors on the phone');
+  } finally {
+    await phone.context.close();
+  }
+}));
+
+// WebGL2 only: the camera and the document.
+test('an import into a document with a model frames both: every corner of both models\' bounds is inside the view', { gpu: false }, () => withShape(async ({ fresh }) => {
+  const { page } = fresh;
+  await until(() => lastOpOf(page), (o) => o.op === 'create', 15_000);
+  const spotPath = join(dirname(fileURLToPath(import.meta.url)), '..', '..', '..', 'shared', 'testdata', 'meshes', 'spot.glb');
+  const spot = Array.from(readFileSync(spotPath));
+  await page.evaluate((bytes) => window.sketchmesh.loadGlb(new Uint8Array(bytes), 'spot.glb'), spot);
+  await until(() => api(page, 'stats'), (s) => s.models === 2, 15_000);
+  await frames(page, 4);
+  const cam = await api(page, 'camera');
+  const boxes = await api(page, 'bounds');
+  // The 3D view is the window below the toolbar: its aspect is wider than the window's, so
+  // the window's is the stricter test across.
+  const worst = boxes.map((box) => viewExtent(cam, box, 1280 / 720));
+  console.log(`    import framing: the models reach ${worst.map((w) => w.toFixed(2)).join(' and ')} of the view's half-size`);
+  await screenshot(page, out('import-framed.png'));
+  assert.ok(worst.every((w) => w <= 1), `both models in view: ${worst}`);
+  assert.deepEqual(fresh.errors, [], 'console errors');
 }));
 
 // WebGL2 only: the store and the session.

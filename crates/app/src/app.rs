@@ -194,7 +194,7 @@ impl SketchApp {
             shared: &self.shared,
             tools: &mut self.tools,
             status: &mut self.status,
-            frame_from: &mut self.scene.frame_after_rebuild,
+            frame_all: &mut self.scene.frame_after_rebuild,
             now,
         };
         (&mut self.files, &mut self.runner, cx)
@@ -219,7 +219,7 @@ impl SketchApp {
                     self.set_status(message, now);
                 }
             }
-            Some(ToolOutput::Play) => {
+            Some(ToolOutput::Play(true)) => {
                 let played =
                     Playback::start(self.shared.borrow().editor.document(), clock::now_ms());
                 match played {
@@ -227,6 +227,7 @@ impl SketchApp {
                     Err(message) => self.set_status(message, now),
                 }
             }
+            Some(ToolOutput::Play(false)) => self.scene.stop_playing(),
             _ => {}
         }
     }
@@ -260,7 +261,10 @@ impl SketchApp {
             }
             Command::Mode(mode) => self.set_mode(mode, now),
             Command::Tool(output) => self.take_output(*output, now),
+            // Esc closes an open menu first, and only that.
+            Command::Stop if egui::Popup::is_any_open(ctx) => egui::Popup::close_all(ctx),
             Command::Stop => {
+                self.scene.stop_playing();
                 self.run(now, |r, cx| r.cancel_offloaded(cx));
                 self.run(now, |r, cx| r.cancel_replay(cx));
                 self.drop_gesture(now);
@@ -328,6 +332,14 @@ impl SketchApp {
                 None => self.pointer.router.poll(sample_clock(ctx), &mut routed),
             }
             for r in &routed {
+                if matches!(
+                    r,
+                    Routed::Tool(ToolEvent::Begin(_)) | Routed::Hands(Hands::Down(_))
+                ) {
+                    // A stroke or two fingers on the view close an open menu, as a mouse
+                    // click outside it does.
+                    egui::Popup::close_all(ctx);
+                }
                 match r {
                     Routed::Hands(hands) => self.handle_hands(hands, viewport, now),
                     Routed::Nav(action) => self
@@ -405,7 +417,8 @@ impl SketchApp {
         match action {
             ContextAction::Frame => self.scene.frame_model(&self.shared, model),
             ContextAction::Duplicate | ContextAction::Delete => {
-                if let Some(op) = action.op(model) {
+                let camera = self.shared.borrow().camera.camera();
+                if let Some(op) = action.op(model, &camera) {
                     self.run(now, |r, cx| r.begin(op, false, cx));
                 }
             }
@@ -447,7 +460,9 @@ impl SketchApp {
         }
         self.backdrop.paint(ui, viewport);
         let shared = self.shared.borrow();
-        let scene = self.runner.scene(&shared, viewport);
+        let played = self.scene.played();
+        let mut scene = self.runner.scene(&shared, viewport);
+        scene.played = &played;
         view_overlay::draw(ui, &scene, &self.tools, self.runner.waiting());
         drop(shared);
         if let Some(edit) = self.runner.edit() {
@@ -464,6 +479,7 @@ impl SketchApp {
         }
         self.view_rect = viewport;
         panels::readout::update(ui.ctx(), |r| r.view = panels::readout::corners(viewport));
+        self.scene.view_aspect = f64::from(viewport.aspect_ratio());
         let idle = self.tools.preview().is_none() && self.runner.edit().is_none();
         let progress = self.runner.progress(ui.input(|i| i.time));
         self.shared.borrow_mut().progress.clone_from(&progress);
@@ -504,6 +520,7 @@ impl eframe::App for SketchApp {
         if self.scene.is_playing() {
             ctx.request_repaint();
         }
+        self.tools.playing(self.scene.is_playing());
         let layout =
             panels::toolbar::Layout::for_screen(ctx.content_rect().size(), self.coarse_pointer);
         let panel = match layout.bottom {

@@ -1,11 +1,13 @@
 //! Autosave: what is written so that a reload, a closed tab or a discarded background tab
 //! loses nothing, and when it is written.
 //!
-//! The record is the session (which replays exactly, with its undo and redo history), the
-//! camera and the tool. The page writes it to IndexedDB (`web/autosave.js`, asynchronous, so
-//! the write itself never holds a frame) at most [`INTERVAL`] after a change, and when the
-//! page is hidden; on start the page hands it back (`window.sketchmesh.restore`), and a
-//! record that does not replay is set aside with a sentence. Only committed ops are saved:
+//! The record is the session (which replays exactly, with its undo and redo history) and the
+//! view; a document opened starts in Sketch, whatever tool was in use. The page writes it to
+//! IndexedDB (`web/store.js`, asynchronous, so the write itself never holds a frame) at most
+//! [`INTERVAL`] after an edit, [`VIEW_SETTLE`] after the view stops moving (an orbit, a wheel
+//! or a pinch writes once, not at each of its frames), and when the page is hidden; on start
+//! the page hands it back (`window.sketchmesh.restore`), and a record that does not replay is
+//! set aside with a sentence. Only committed ops are saved:
 //! an edit in progress (a drag, a preview) is not part of the document until it ends, so a
 //! page left in the middle of one comes back in the last complete state.
 
@@ -13,12 +15,15 @@ use serde::{Deserialize, Serialize};
 use sketchmesh_core::document::Editor;
 
 use crate::camera::OrbitCamera;
-use crate::tools::Mode;
 
-/// Longest time in seconds from a change to its autosave.
+/// Longest time in seconds from an edit to its autosave.
 pub const INTERVAL: f64 = 0.5;
 
-/// One autosave: the document's session, the view and the tool, as read back. Written
+/// How long in seconds the view must hold still before a view changed without an edit is
+/// written: a gesture's last frame, not each of its frames.
+pub const VIEW_SETTLE: f64 = 0.4;
+
+/// One autosave: the document's session and the view, as read back. Written
 /// as [`record_head`], the session file itself (not a string holding it, so that nothing
 /// escapes its text again) and [`RECORD_TAIL`]: in the page, the session goes to JavaScript
 /// piece by piece, each op's text converted once (`web::autosave_pieces`).
@@ -28,19 +33,16 @@ pub struct Record {
     pub session: String,
     /// The view.
     pub camera: OrbitCamera,
-    /// The tool in use.
-    pub mode: Mode,
 }
 
-/// What a record holds before its session: the view, the tool and the session's key.
-pub fn record_head(camera: OrbitCamera, mode: Mode) -> String {
+/// What a record holds before its session: the view and the session's key.
+pub fn record_head(camera: OrbitCamera) -> String {
     #[derive(Serialize)]
     struct Fields {
         camera: OrbitCamera,
-        mode: Mode,
     }
-    let mut json = serde_json::to_string(&Fields { camera, mode }).unwrap_or_else(|error| {
-        debug_assert!(false, "a camera and a mode always serialize: {error}");
+    let mut json = serde_json::to_string(&Fields { camera }).unwrap_or_else(|error| {
+        debug_assert!(false, "a camera always serializes: {error}");
         String::from("{}")
     });
     json.pop();
@@ -56,7 +58,8 @@ pub const RECORD_TAIL: &str = "}";
 
 impl Record {
     /// Reads a record, or one from before the session was stored as JSON, whose
-    /// `"session"` is a string holding the session file.
+    /// `"session"` is a string holding the session file (the tool older records name is
+    /// not read).
     ///
     /// Errors: the JSON is not a record.
     pub fn from_json(text: &str) -> Result<Record, serde_json::Error> {
@@ -64,7 +67,6 @@ impl Record {
         struct Stored {
             session: Box<serde_json::value::RawValue>,
             camera: OrbitCamera,
-            mode: Mode,
         }
         let stored: Stored = serde_json::from_str(text)?;
         let raw = stored.session.get();
@@ -76,7 +78,6 @@ impl Record {
         Ok(Record {
             session,
             camera: stored.camera,
-            mode: stored.mode,
         })
     }
 
@@ -102,50 +103,63 @@ pub struct Revision {
 
 /// When to autosave: not before the page has offered its last record (so that an empty
 /// start does not overwrite it), then whenever the document's revision moved and the last
-/// write is [`INTERVAL`] old.
+/// write is [`INTERVAL`] old, or the view alone moved and has held still for [`VIEW_SETTLE`].
 #[derive(Debug, Default)]
 pub struct Schedule {
-    /// The revision last written (or restored); `None` until the page offered its record.
-    saved: Option<Revision>,
+    /// The revision and view last written (or restored); `None` until the page offered its
+    /// record.
+    saved: Option<(Revision, OrbitCamera)>,
     /// When the last write happened.
     saved_at: f64,
+    /// The view last seen, and since when it has not moved.
+    seen: Option<(OrbitCamera, f64)>,
 }
 
 impl Schedule {
-    /// The page has offered its record (restored or not): from now on `revision` is what
-    /// is saved.
-    pub fn start(&mut self, revision: Revision) {
-        self.saved = Some(revision);
+    /// The page has offered its record (restored or not): from now on `revision` in the view
+    /// `view` is what is saved.
+    pub fn start(&mut self, revision: Revision, view: OrbitCamera) {
+        self.saved = Some((revision, view));
     }
 
     /// The page has offered no record while the document shown already has work (a file
     /// dropped, a stroke drawn while the store was read): from now on, that work is written
     /// like any change.
     pub fn start_unwritten(&mut self) {
-        self.saved = Some(Revision::default());
+        self.saved = Some((Revision::default(), OrbitCamera::default()));
     }
 
-    /// Whether to write now, at time `now` in seconds, the document at `revision`; a write
-    /// is then assumed to happen.
-    pub fn due(&mut self, revision: Revision, now: f64) -> bool {
-        let changed = self.saved.is_some_and(|saved| saved != revision);
-        let due = changed && now - self.saved_at >= INTERVAL;
+    /// Whether to write now, at time `now` in seconds, the document at `revision` in the view
+    /// `view`; a write is then assumed to happen.
+    pub fn due(&mut self, revision: Revision, view: OrbitCamera, now: f64) -> bool {
+        if self.seen.is_none_or(|(seen, _)| seen != view) {
+            self.seen = Some((view, now));
+        }
+        let Some((saved, saved_view)) = self.saved else {
+            return false;
+        };
+        let due = if saved != revision {
+            now - self.saved_at >= INTERVAL
+        } else {
+            let still_since = self.seen.map_or(now, |(_, since)| since);
+            saved_view != view && now - still_since >= VIEW_SETTLE
+        };
         if due {
-            self.mark_saved(revision, now);
+            self.mark_saved(revision, view, now);
         }
         due
     }
 
     /// Whether a change waits for its write (the app keeps frames coming until it is due).
-    pub fn is_pending(&self, revision: Revision) -> bool {
-        self.saved.is_some_and(|saved| saved != revision)
+    pub fn is_pending(&self, revision: Revision, view: OrbitCamera) -> bool {
+        self.saved.is_some_and(|saved| saved != (revision, view))
     }
 
-    /// The document at `revision` was written at `now`, in the seconds of the frames' clock that
-    /// [`Schedule::due`] is given (also by a flush when the page hides).
-    pub fn mark_saved(&mut self, revision: Revision, now: f64) {
+    /// The document at `revision` in the view `view` was written at `now`, in the seconds of
+    /// the frames' clock that [`Schedule::due`] is given (also by a flush when the page hides).
+    pub fn mark_saved(&mut self, revision: Revision, view: OrbitCamera, now: f64) {
         if self.saved.is_some() {
-            self.saved = Some(revision);
+            self.saved = Some((revision, view));
             self.saved_at = now;
         }
     }
@@ -163,27 +177,56 @@ mod tests {
     #[test]
     fn nothing_is_written_before_the_page_offered_its_record_then_changes_are() {
         let at = |edits| Revision { opened: 0, edits };
+        let view = OrbitCamera::default();
         let mut schedule = Schedule::default();
         assert!(
-            !schedule.due(at(3), 10.0),
+            !schedule.due(at(3), view, 10.0),
             "an empty start must not overwrite the record"
         );
-        schedule.start(at(3));
-        assert!(!schedule.due(at(3), 10.0), "unchanged");
-        assert!(schedule.is_pending(at(4)));
-        assert!(schedule.due(at(4), 10.0));
-        assert!(!schedule.is_pending(at(4)));
+        schedule.start(at(3), view);
+        assert!(!schedule.due(at(3), view, 10.0), "unchanged");
+        assert!(schedule.is_pending(at(4), view));
+        assert!(schedule.due(at(4), view, 10.0));
+        assert!(!schedule.is_pending(at(4), view));
         // A change right after a write waits for the interval, then is written.
-        assert!(!schedule.due(at(5), 10.0 + INTERVAL / 2.0));
-        assert!(schedule.is_pending(at(5)));
-        assert!(schedule.due(at(5), 10.0 + INTERVAL));
+        assert!(!schedule.due(at(5), view, 10.0 + INTERVAL / 2.0));
+        assert!(schedule.is_pending(at(5), view));
+        assert!(schedule.due(at(5), view, 10.0 + INTERVAL));
         // Another editor at the same revision is another document.
         let opened = Revision {
             opened: 1,
             edits: 5,
         };
-        assert!(schedule.is_pending(opened));
-        assert!(schedule.due(opened, 10.0 + 2.0 * INTERVAL));
+        assert!(schedule.is_pending(opened, view));
+        assert!(schedule.due(opened, view, 10.0 + 2.0 * INTERVAL));
+    }
+
+    #[test]
+    fn a_view_moved_without_an_edit_is_written_once_it_holds_still() {
+        let revision = Revision::default();
+        let mut schedule = Schedule::default();
+        schedule.start(revision, OrbitCamera::default());
+        // An orbit: a new view at every frame, none written while it moves.
+        let mut view = OrbitCamera::default();
+        let mut now = 1.0;
+        for _ in 0..60 {
+            view.orbit(glam::DVec2::new(3.0, 1.0));
+            now += 1.0 / 60.0;
+            assert!(!schedule.due(revision, view, now), "written mid-orbit");
+            assert!(schedule.is_pending(revision, view));
+        }
+        // Held still: not yet, then once.
+        assert!(!schedule.due(revision, view, now + VIEW_SETTLE / 2.0));
+        // (A little past it: the frames' clock adds up in floating point.)
+        assert!(schedule.due(revision, view, now + 1.01 * VIEW_SETTLE));
+        assert!(!schedule.is_pending(revision, view));
+        assert!(!schedule.due(revision, view, now + 2.0 * VIEW_SETTLE));
+        // A pinch's zoom alone is a change of view too.
+        view.dolly(0.5);
+        assert!(schedule.is_pending(revision, view));
+        let later = now + 3.0 * VIEW_SETTLE;
+        assert!(!schedule.due(revision, view, later));
+        assert!(schedule.due(revision, view, later + 1.01 * VIEW_SETTLE));
     }
 
     #[test]
@@ -193,11 +236,12 @@ mod tests {
             opened: 0,
             edits: 1,
         };
-        assert!(!schedule.is_pending(imported));
+        let view = OrbitCamera::default();
+        assert!(!schedule.is_pending(imported, view));
         schedule.start_unwritten();
-        assert!(schedule.is_pending(imported));
-        assert!(schedule.due(imported, INTERVAL));
-        assert!(!schedule.is_pending(imported));
+        assert!(schedule.is_pending(imported, view));
+        assert!(schedule.due(imported, view, INTERVAL));
+        assert!(!schedule.is_pending(imported, view));
     }
 
     #[test]
@@ -215,14 +259,8 @@ mod tests {
         let record = Record {
             session: editor.session_json(),
             camera: OrbitCamera::default(),
-            mode: Mode::Optimize,
         };
-        let json = [
-            &record_head(record.camera, record.mode),
-            &record.session,
-            RECORD_TAIL,
-        ]
-        .concat();
+        let json = [&record_head(record.camera), &record.session, RECORD_TAIL].concat();
         assert!(
             json.contains(r#""session":{"format":"sketchmesh-session""#),
             "{json}"
@@ -234,11 +272,12 @@ mod tests {
             ..record.clone()
         };
         assert_eq!(back, trimmed);
-        // A record written before the session was stored as JSON: a string holding it.
+        // A record written before the session was stored as JSON: a string holding it, and
+        // the tool in use then.
         let old = serde_json::json!({
             "session": record.session,
             "camera": record.camera,
-            "mode": record.mode,
+            "mode": "optimize",
         });
         let back = Record::from_json(&old.to_string()).unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(back, record);

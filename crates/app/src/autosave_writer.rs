@@ -37,10 +37,10 @@ impl AutosaveWriter {
         status: &mut Status,
         now: f64,
     ) {
-        let (revision, pending) = {
+        let (revision, view, pending) = {
             let shared = shared.borrow();
-            let revision = shared.revision();
-            (revision, shared.autosave.is_pending(revision))
+            let (revision, view) = (shared.revision(), shared.camera);
+            (revision, view, shared.autosave.is_pending(revision, view))
         };
         let waits = scene.is_pending() || scene.is_frame_spent(ctx);
         if pending && self.waits < AUTOSAVE_WAITS && waits {
@@ -49,9 +49,10 @@ impl AutosaveWriter {
         }
         self.waits = 0;
         let mut shared = shared.borrow_mut();
-        if !shared.autosave.due(revision, now) {
-            if shared.autosave.is_pending(revision) {
-                ctx.request_repaint_after(std::time::Duration::from_secs_f64(autosave::INTERVAL));
+        if !shared.autosave.due(revision, view, now) {
+            if shared.autosave.is_pending(revision, view) {
+                let wait = autosave::INTERVAL.min(autosave::VIEW_SETTLE);
+                ctx.request_repaint_after(std::time::Duration::from_secs_f64(wait));
             }
             return;
         }

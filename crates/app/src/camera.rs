@@ -98,12 +98,15 @@ impl OrbitCamera {
         self.dolly((-points / WHEEL_POINTS_PER_DOUBLING).exp2());
     }
 
-    /// Frames the box `min..max` so it fills most of the view.
-    pub fn frame(&mut self, min: DVec3, max: DVec3) {
+    /// Frames the box `min..max` so it fills most of a view `aspect` times as wide as it is
+    /// tall: its bounding sphere fits the narrower of the two fields of view (a phone's
+    /// upright view is narrower across than up).
+    pub fn frame(&mut self, min: DVec3, max: DVec3, aspect: f64) {
         let radius = ((max - min).length() * 0.5).max(1e-3);
         self.target = (min + max) * 0.5;
-        let half_fov = self.fov_y_deg.to_radians() * 0.5;
-        self.distance = radius / half_fov.sin() * 1.1;
+        let half_fov_y = self.fov_y_deg.to_radians() * 0.5;
+        let half_fov_x = (half_fov_y.tan() * aspect.max(1e-3)).atan();
+        self.distance = radius / half_fov_y.min(half_fov_x).sin() * 1.1;
     }
 
     /// Looks at `point` along `normal` (from the side of it the eye is on now), keeping the
@@ -176,16 +179,28 @@ mod tests {
         let mut cam = OrbitCamera::default();
         cam.wheel(400.0);
         assert!((cam.distance - 3.0).abs() < 1e-9);
-        cam.frame(DVec3::splat(-1.0), DVec3::splat(1.0));
-        let c = cam.camera();
-        let viewport = DVec2::new(600.0, 600.0);
-        for corner in [
-            DVec3::splat(-1.0),
-            DVec3::splat(1.0),
-            DVec3::new(1.0, -1.0, 1.0),
+        // A square view, a wide one and a phone's upright one.
+        for viewport in [
+            DVec2::new(600.0, 600.0),
+            DVec2::new(1280.0, 620.0),
+            DVec2::new(390.0, 700.0),
         ] {
-            let p = c.screen_from_world(corner, viewport).expect("in front");
-            assert!(p.x > 0.0 && p.x < 600.0 && p.y > 0.0 && p.y < 600.0, "{p}");
+            cam.frame(
+                DVec3::splat(-1.0),
+                DVec3::splat(1.0),
+                viewport.x / viewport.y,
+            );
+            let c = cam.camera();
+            for corner in [
+                DVec3::splat(-1.0),
+                DVec3::splat(1.0),
+                DVec3::new(1.0, -1.0, 1.0),
+                DVec3::new(-1.0, 1.0, -1.0),
+            ] {
+                let p = c.screen_from_world(corner, viewport).expect("in front");
+                let inside = p.x > 0.0 && p.x < viewport.x && p.y > 0.0 && p.y < viewport.y;
+                assert!(inside, "{p} outside {viewport}");
+            }
         }
     }
 }

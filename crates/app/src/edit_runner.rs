@@ -38,8 +38,9 @@ pub struct Cx<'a> {
     pub tools: &'a mut ToolSet,
     /// The status line.
     pub status: &'a mut Status,
-    /// Frame the view after its next rebuild, from this model on (set when an import lands).
-    pub frame_from: &'a mut Option<usize>,
+    /// Frame everything after the view's next rebuild (set when an import lands or a
+    /// session opens).
+    pub frame_all: &'a mut bool,
     /// The frame's clock, in seconds.
     pub now: f64,
 }
@@ -145,7 +146,7 @@ impl EditRunner {
             },
             ToolOutput::Cancel => self.cancel_gesture(),
             ToolOutput::Refused(message) => cx.status.say(message, cx.now),
-            other @ (ToolOutput::Face { .. } | ToolOutput::Backdrop(_) | ToolOutput::Play) => {
+            other @ (ToolOutput::Face { .. } | ToolOutput::Backdrop(_) | ToolOutput::Play(_)) => {
                 return Some(other);
             }
         }
@@ -312,7 +313,6 @@ impl EditRunner {
             }
             self.offload.cancel(job);
         }
-        let models_before = cx.shared.borrow().editor.document().models.len();
         let before = cx.shared.borrow().editor.document().clone();
         let started = clock::now_ms();
         let result = edit.finish(&mut cx.shared.borrow_mut().editor);
@@ -321,9 +321,9 @@ impl EditRunner {
             .finished(ms, &mut cx.shared.borrow_mut().timings);
         if self.import.is_some() {
             let settled = result.as_ref().map(|_| ()).map_err(ToString::to_string);
-            if settled.is_ok() {
-                *cx.frame_from = Some(models_before);
-            }
+            // Everything, the models there before included: framing only the new one would
+            // leave the others as a clipped close-up.
+            *cx.frame_all |= settled.is_ok();
             self.settle_import(settled, cx);
         }
         match result {
@@ -514,6 +514,7 @@ impl EditRunner {
             computing: self.is_computing(),
             camera: shared.camera.camera(),
             viewport,
+            played: &[],
         }
     }
 

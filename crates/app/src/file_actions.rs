@@ -87,7 +87,7 @@ impl FileActions {
             }
         }
         cx.shared.borrow_mut().open(editor);
-        *cx.frame_from = Some(0);
+        *cx.frame_all = true;
         let kept = match had_work {
             true => " The previous document is kept under Documents.",
             false => "",

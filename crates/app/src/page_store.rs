@@ -8,7 +8,6 @@ use wasm_bindgen::prelude::*;
 
 use crate::autosave::{RECORD_TAIL, record_head};
 use crate::camera::OrbitCamera;
-use crate::tools::Mode;
 
 /// Keeps the document shown (`record`, or nothing when it has no ops) in the page's store and
 /// makes a new document, named `title`, the one the autosave writes to: a session file opened
@@ -84,7 +83,7 @@ pub fn ready_op_texts(
     }
 }
 
-/// The autosave record of what `editor` shows (in the view `camera`, with the tool `mode`), as pieces of text whose concatenation is the
+/// The autosave record of what `editor` shows (in the view `camera`), as pieces of text whose concatenation is the
 /// record, or `None` for a document without ops (an empty page is not a document worth
 /// keeping). Each op is a piece of its own, its text converted once and kept as a JavaScript
 /// string, so an autosave after a scan's import neither converts nor copies the session's tens
@@ -95,14 +94,13 @@ pub fn autosave_pieces(
     cache: &mut OpTexts,
     opened: u64,
     camera: OrbitCamera,
-    mode: Mode,
 ) -> Option<js_sys::Array> {
     if editor.ops().is_empty() {
         return None;
     }
     cache.renew(opened);
     let pieces = js_sys::Array::new();
-    pieces.push(&JsString::from(record_head(camera, mode)));
+    pieces.push(&JsString::from(record_head(camera)));
     editor.session_pieces(|piece| {
         let text = match piece {
             SessionPiece::Op(index, json) => {

@@ -11,11 +11,23 @@ use sketchmesh_core::document::Document;
 /// The most animation time one frame advances (ms).
 const MAX_STEP_MS: f64 = 1000.0 / 15.0;
 
+/// A model the animation moves.
+#[derive(Debug)]
+struct Animated {
+    /// Its index in the document.
+    index: usize,
+    timeline: Timeline,
+    /// Its vertices at the time last asked for.
+    pose: Vec<DVec3>,
+    /// Whether `pose` holds that time's pose (its solve may fail).
+    is_posed: bool,
+}
+
 /// An animation being played.
 #[derive(Debug)]
 pub struct Playback {
-    /// Each animated model's index, timeline and current pose.
-    models: Vec<(usize, Timeline, Vec<DVec3>)>,
+    /// Each animated model.
+    models: Vec<Animated>,
     /// The clock (ms) at the last frame.
     last_ms: f64,
     /// The animation's time now (s).
@@ -30,21 +42,23 @@ impl Playback {
         let mut models = Vec::new();
         for (index, model) in doc.models.iter().enumerate() {
             match Timeline::new(model) {
-                Ok(Some(timeline)) => {
-                    let pose = vec![DVec3::ZERO; model.mesh.n_vertices()];
-                    models.push((index, timeline, pose));
-                }
+                Ok(Some(timeline)) => models.push(Animated {
+                    index,
+                    timeline,
+                    pose: vec![DVec3::ZERO; model.mesh.n_vertices()],
+                    is_posed: false,
+                }),
                 Ok(None) => {}
                 Err(err) => return Err(format!("The animation cannot be played: {err}")),
             }
         }
         let start = models
             .iter()
-            .map(|(_, t, _)| t.start())
+            .map(|m| m.timeline.start())
             .fold(f64::INFINITY, f64::min);
         let end = models
             .iter()
-            .map(|(_, t, _)| t.end())
+            .map(|m| m.timeline.end())
             .fold(f64::NEG_INFINITY, f64::max);
         if models.is_empty() {
             return Err(String::from(
@@ -70,11 +84,16 @@ impl Playback {
 
     /// Each animated model's index and pose at time `t`.
     pub fn poses(&mut self, t: f64) -> impl Iterator<Item = (usize, &[DVec3])> {
-        self.models
-            .iter_mut()
-            .filter_map(move |(index, timeline, pose)| {
-                timeline.pose(t, pose).ok()?;
-                Some((*index, pose.as_slice()))
-            })
+        for model in &mut self.models {
+            model.is_posed = model.timeline.pose(t, &mut model.pose).is_ok();
+        }
+        self.shown()
+    }
+
+    /// Each animated model's index and pose at the time last asked for ([`Playback::poses`]).
+    pub fn shown(&self) -> impl Iterator<Item = (usize, &[DVec3])> {
+        (self.models.iter())
+            .filter(|model| model.is_posed)
+            .map(|model| (model.index, model.pose.as_slice()))
     }
 }

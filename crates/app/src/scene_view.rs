@@ -6,6 +6,7 @@ use std::cell::RefCell;
 use std::sync::Arc;
 
 use eframe::egui_wgpu;
+use glam::DVec3;
 use sketchmesh_core::document::{Edit, StrokeInput, model_under};
 
 use crate::autosave;
@@ -56,11 +57,13 @@ pub struct SceneView {
     rebuild_waited: bool,
     /// The normals of large new models, computed a frame before their arrays.
     normals_ahead: NormalsAhead,
-    /// Frame the view once the geometry has been rebuilt: the models from this index on
-    /// (an import's; 0 after opening a session: all of them).
-    pub frame_after_rebuild: Option<usize>,
+    /// Frame everything once the geometry has been rebuilt (after an import, or opening a
+    /// session).
+    pub frame_after_rebuild: bool,
     /// The wireframe, grid and clay switches.
     pub options: ViewOptions,
+    /// The 3D view's width over its height, last frame: framing fits both.
+    pub view_aspect: f64,
 }
 
 impl Default for SceneView {
@@ -85,7 +88,8 @@ impl Default for SceneView {
             frame_work_ms: 0.0,
             rebuild_waited: false,
             normals_ahead: NormalsAhead::default(),
-            frame_after_rebuild: None,
+            frame_after_rebuild: false,
+            view_aspect: 1.0,
             options: ViewOptions {
                 wireframe: false,
                 grid: true,
@@ -123,7 +127,7 @@ impl SceneView {
     pub fn frame_all(&self, shared: &RefCell<Shared>) {
         let mut shared = shared.borrow_mut();
         match self.geometry.bounds {
-            Some((min, max)) => shared.camera.frame(min, max),
+            Some((min, max)) => shared.camera.frame(min, max, self.view_aspect),
             None => shared.camera = OrbitCamera::default(),
         }
     }
@@ -142,29 +146,7 @@ impl SceneView {
         let bounds =
             (shared.editor.document().models.get(model)).and_then(|m| m.mesh.bounding_box());
         if let Some((min, max)) = bounds {
-            shared.camera.frame(min, max);
-        }
-    }
-
-    /// Frames the models from index `first` on (what an import brought, beside the others),
-    /// or everything when there are none (an import of points or lines only); the sketches
-    /// and point clouds around them are left out of view if they must.
-    fn frame_models_from(&self, shared: &RefCell<Shared>, first: usize) {
-        let bounds = {
-            let shared = shared.borrow();
-            let models = shared
-                .editor
-                .document()
-                .models
-                .get(first..)
-                .unwrap_or_default();
-            (models.iter())
-                .filter_map(|m| m.mesh.bounding_box())
-                .reduce(|(lo, hi), (a, b)| (lo.min(a), hi.max(b)))
-        };
-        match bounds {
-            Some((lo, hi)) => shared.borrow_mut().camera.frame(lo, hi),
-            None => self.frame_all(shared),
+            shared.camera.frame(min, max, self.view_aspect);
         }
     }
 
@@ -279,11 +261,8 @@ impl SceneView {
             self.shown_motion = Some(edit.generation());
         }
         self.play_frame(shared, edit.is_none());
-        if rebuilt && let Some(first) = self.frame_after_rebuild.take() {
-            match first {
-                0 => self.frame_all(shared),
-                first => self.frame_models_from(shared, first),
-            }
+        if rebuilt && std::mem::take(&mut self.frame_after_rebuild) {
+            self.frame_all(shared);
         }
     }
 
@@ -312,10 +291,7 @@ impl SceneView {
         };
         let time = playback.advance(clock::now_ms()).filter(|_| no_edit);
         let Some(time) = time else {
-            self.playback = None;
-            // Rebuilt from the document at the next frame.
-            self.geometry_source.1 = Some((u64::MAX, u64::MAX));
-            return;
+            return self.stop_playing();
         };
         let shared = shared.borrow();
         let models = &shared.editor.document().models;
@@ -325,6 +301,19 @@ impl SceneView {
                 geometry.move_model(index, model, positions, &mut self.moved_normals);
             }
         }
+    }
+
+    /// Stops the animation, if one plays: the document's pose is shown again.
+    pub fn stop_playing(&mut self) {
+        if self.playback.take().is_some() {
+            // Rebuilt from the document at the next frame.
+            self.geometry_source.1 = Some((u64::MAX, u64::MAX));
+        }
+    }
+
+    /// The models the animation playing shows posed, and their vertices in that pose.
+    pub fn played(&self) -> Vec<(usize, &[DVec3])> {
+        (self.playback.iter()).flat_map(Playback::shown).collect()
     }
 
     /// Whether an animation is playing (the page then draws every frame).

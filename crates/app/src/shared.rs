@@ -20,7 +20,7 @@ pub struct Shared {
     pub imports: ImportQueue,
     /// Recent costs of edits, for the page benchmark.
     pub timings: clock::Timings,
-    /// The tool in use; the page's restore sets it, and the app follows.
+    /// The tool in use; a document opened sets it back to Sketch, and the app follows.
     pub mode: Mode,
     /// When to autosave.
     pub autosave: autosave::Schedule,
@@ -60,13 +60,16 @@ impl Shared {
         }
     }
 
-    /// Replaces the document and its history by `editor`'s (a session opened or restored).
+    /// Replaces the document and its history by `editor`'s (a session opened or restored, a
+    /// new document), in Sketch: the tool that makes shapes, whatever the last document was
+    /// left in, so that a first outline does what the empty view's hint says.
     pub fn open(&mut self, editor: Editor) {
         self.editor = editor;
         self.opened += 1;
+        self.mode = Mode::Sketch;
     }
 
-    /// Starts an empty document in the default view, keeping the tool.
+    /// Starts an empty document in the default view.
     pub fn open_empty(&mut self) {
         self.open(Editor::new());
         self.camera = OrbitCamera::default();
@@ -99,12 +102,6 @@ impl Shared {
     #[cfg(target_arch = "wasm32")]
     pub fn autosave_pieces(&mut self) -> Option<js_sys::Array> {
         let opened = self.opened;
-        crate::page_store::autosave_pieces(
-            &self.editor,
-            &mut self.op_texts,
-            opened,
-            self.camera,
-            self.mode,
-        )
+        crate::page_store::autosave_pieces(&self.editor, &mut self.op_texts, opened, self.camera)
     }
 }

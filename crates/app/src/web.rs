@@ -102,6 +102,23 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
     let s = shared.clone();
     set("camera", getter(move || json(&s.borrow().camera.camera())))?;
     let s = shared.clone();
+    set("tool", getter(move || json(&s.borrow().mode)))?;
+    let s = shared.clone();
+    set(
+        "bounds",
+        getter(move || {
+            let shared = s.borrow();
+            let boxes: Vec<_> = (shared.editor.document().models.iter())
+                .map(|m| {
+                    m.mesh
+                        .bounding_box()
+                        .map(|(lo, hi)| [lo.to_array(), hi.to_array()])
+                })
+                .collect();
+            json(&boxes)
+        }),
+    )?;
+    let s = shared.clone();
     set(
         "backend",
         getter(move || Ok(JsValue::from_str(&s.borrow().backend))),
@@ -206,8 +223,8 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
         "flushAutosave",
         Closure::<dyn Fn() -> Result<(), JsValue>>::new(move || {
             let mut shared = s.borrow_mut();
-            let revision = shared.revision();
-            if !shared.autosave.is_pending(revision) {
+            let (revision, view) = (shared.revision(), shared.camera);
+            if !shared.autosave.is_pending(revision, view) {
                 return Ok(());
             }
             if let Some(record) = shared.autosave_pieces() {
@@ -215,7 +232,7 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
             }
             // The frames' clock, which the schedule compares with (not the wall clock).
             let now = c.input(|i| i.time);
-            shared.autosave.mark_saved(revision, now);
+            shared.autosave.mark_saved(revision, view, now);
             Ok(())
         })
         .into_js_value(),
@@ -254,10 +271,11 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
     Ok(())
 }
 
-/// Opens a document from the page's store: the document, view and tool of the record, or
-/// with none an empty document, replace what is shown, and autosaving (to the document the
-/// page now has open) begins. A record that does not replay changes nothing and is refused
-/// with a sentence (the page sets it aside, then calls again without).
+/// Opens a document from the page's store: the document and view of the record, or with
+/// none an empty document, replace what is shown (in Sketch, see [`Shared::open`]), and
+/// autosaving (to the document the page now has open) begins. A record that does not replay
+/// changes nothing and is refused with a sentence (the page sets it aside, then calls again
+/// without).
 ///
 /// `at_start`: the page's first call, once its store has answered. Without a record, what
 /// was done meanwhile (a stroke drawn, a session replayed while the store was read) stays:
@@ -271,7 +289,6 @@ fn restore(shared: &mut Shared, text: Option<&str>, at_start: bool) -> Result<()
             Ok((editor, record)) => {
                 shared.open(editor);
                 shared.camera = record.camera;
-                shared.mode = record.mode;
             }
             Err(why) => {
                 let sentence = format!(
@@ -282,17 +299,18 @@ fn restore(shared: &mut Shared, text: Option<&str>, at_start: bool) -> Result<()
                 return Err(sentence);
             }
         }
-    } else if !shared.editor.ops().is_empty() {
-        if at_start {
-            // Done while the store was read: not written yet (the revision is not one the
-            // store holds), so it goes into the new document at the next autosave.
-            shared.autosave.start_unwritten();
-            return Ok(());
-        }
+    } else if at_start && !shared.editor.ops().is_empty() {
+        // Done while the store was read: not written yet (the revision is not one the store
+        // holds), so it goes into the new document at the next autosave.
+        shared.autosave.start_unwritten();
+        return Ok(());
+    } else if !at_start {
+        // New (or the document shown deleted): empty, in the default view and in Sketch,
+        // even when the one shown was empty already.
         shared.open_empty();
     }
-    let revision = shared.revision();
-    shared.autosave.start(revision);
+    let (revision, view) = (shared.revision(), shared.camera);
+    shared.autosave.start(revision, view);
     Ok(())
 }
 

@@ -27,7 +27,8 @@ use criterion::{BenchmarkId, Criterion, criterion_group};
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    Edit, Editor, MergeInput, ModelInput, Op, StrokeInput, StrokePairInput, TransformInput,
+    DuplicateInput, Edit, Editor, MergeInput, ModelInput, Op, StrokeInput, StrokePairInput,
+    TransformInput,
 };
 
 use crate::common::fibermesh_shape;
@@ -224,7 +225,10 @@ fn bench_merge(c: &mut Criterion) {
         let width = hi.x - lo.x;
         // A duplicate lands 1.2 widths to the right; bring it back to overlap by half a width.
         editor
-            .apply(Op::Duplicate(ModelInput { model: 0 }))
+            .apply(Op::Duplicate(DuplicateInput {
+                model: 0,
+                beside: None,
+            }))
             .expect("duplicate");
         let back = glam::DMat4::from_translation(glam::DVec3::new(-0.7 * width, 0.0, 0.0));
         editor

@@ -2,7 +2,8 @@
 //! frame it, duplicate it, delete it, or over-sketch it.
 
 use egui::Pos2;
-use sketchmesh_core::document::{ModelInput, Op};
+use sketchmesh_core::camera::Camera;
+use sketchmesh_core::document::{DuplicateInput, ModelInput, Op};
 
 /// Touch-sized rows.
 const ROW: egui::Vec2 = egui::vec2(160.0, 44.0);
@@ -21,7 +22,7 @@ pub struct ContextMenu {
 pub enum ContextAction {
     /// Frame the model.
     Frame,
-    /// Duplicate it (the `duplicate` op).
+    /// Duplicate it (the `duplicate` op), beside it toward the screen's right.
     Duplicate,
     /// Delete it (the `delete` op).
     Delete,
@@ -30,10 +31,13 @@ pub enum ContextAction {
 }
 
 impl ContextAction {
-    /// The op it makes for model `model`, if it makes one.
-    pub fn op(self, model: usize) -> Option<Op> {
+    /// The op it makes for model `model` seen through `camera`, if it makes one.
+    pub fn op(self, model: usize, camera: &Camera) -> Option<Op> {
         match self {
-            ContextAction::Duplicate => Some(Op::Duplicate(ModelInput { model })),
+            ContextAction::Duplicate => Some(Op::Duplicate(DuplicateInput {
+                model,
+                beside: Some(camera.frame().right.to_array()),
+            })),
             ContextAction::Delete => Some(Op::Delete(ModelInput { model })),
             ContextAction::Frame | ContextAction::Oversketch => None,
         }

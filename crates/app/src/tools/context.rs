@@ -48,8 +48,8 @@ pub enum ToolOutput {
         /// The direction to look along (either way round).
         normal: glam::DVec3,
     },
-    /// Play the key-framed animation.
-    Play,
+    /// Play the key-framed animation (`true`), or stop it (`false`).
+    Play(bool),
     /// Load a backdrop image to trace over (`true`), or remove it (`false`).
     Backdrop(bool),
 }

@@ -114,6 +114,13 @@ impl ToolSet {
         }
     }
 
+    /// Tells the tools whether the animation is playing (see [`Tool::playing`]).
+    pub fn playing(&mut self, is_playing: bool) {
+        for tool in &mut self.tools {
+            tool.playing(is_playing);
+        }
+    }
+
     /// Every key a tool takes: the tool in use's own, and those any tool takes from
     /// anywhere, with the mode of the tool that takes each.
     pub fn keys(&self) -> Vec<(Mode, Key)> {

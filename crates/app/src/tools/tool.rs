@@ -104,12 +104,23 @@ pub struct Scene<'a> {
     pub camera: Camera,
     /// The 3D viewport's rectangle in screen points.
     pub viewport: egui::Rect,
+    /// The models the animation being played shows posed, and their vertices' positions in
+    /// that pose (empty when nothing plays).
+    pub played: &'a [(usize, &'a [glam::DVec3])],
 }
 
 impl Scene<'_> {
     /// The viewport's size, as strokes and cameras measure it.
     pub fn size(&self) -> glam::DVec2 {
         glam::DVec2::new(self.viewport.width().into(), self.viewport.height().into())
+    }
+
+    /// The models drawn elsewhere than the document has them, and where their vertices are
+    /// drawn: the one the edit in progress moves, then those the animation playing poses.
+    pub fn moved_models(&self) -> Vec<(usize, &[glam::DVec3])> {
+        (self.edit.and_then(Edit::moved_model).into_iter())
+            .chain(self.played.iter().copied())
+            .collect()
     }
 
     /// A point relative to the viewport, in screen points.
@@ -212,4 +223,8 @@ pub trait Tool: std::fmt::Debug {
     /// The edit a gesture began was refused (whichever tool is in use): the tool starts
     /// over.
     fn gesture_refused(&mut self) {}
+
+    /// Whether the key-framed animation is playing, told every frame (whichever tool is in
+    /// use): a tool that plays it offers to stop it meanwhile.
+    fn playing(&mut self, _is_playing: bool) {}
 }

@@ -11,7 +11,7 @@ use glam::{DMat3, DMat4, DVec3};
 
 use super::next::{Outcome, target};
 use super::skeleton::remove_model;
-use super::{CommandError, Document, ModelInput, TransformInput};
+use super::{CommandError, Document, DuplicateInput, ModelInput, TransformInput};
 use crate::io::Imported;
 use crate::mesh::Mesh;
 use crate::model::Model;
@@ -24,8 +24,13 @@ const MIN_RELATIVE_DETERMINANT: f64 = 1e-9;
 /// of the two.
 const IMPORT_GAP: f64 = 0.1;
 
-/// A duplicate lands this many of the model's widths along +x from it.
+/// A duplicate without a direction (sessions from before it had one) lands this many of the
+/// model's widths along +x from it.
 const DUPLICATE_SHIFT: f64 = 1.2;
+
+/// The gap between a duplicate and the models beside it, as a fraction of its largest
+/// extent.
+const DUPLICATE_GAP: f64 = 0.1;
 
 /// Applies a `transform` op: model `input.model` with `input.matrix` applied.
 ///
@@ -102,24 +107,80 @@ pub(super) fn delete_op(doc: &Document, input: &ModelInput) -> Result<Outcome, C
     Ok(Outcome::Document(next))
 }
 
-/// Applies a `duplicate` op: a copy of the model, [`DUPLICATE_SHIFT`] of its widths along
-/// +x, added after the others.
+/// Applies a `duplicate` op: a copy of the model, added after the others, placed beside it
+/// along `input.beside` ([`free_shift`]) or, in sessions from before that field,
+/// [`DUPLICATE_SHIFT`] of its widths along +x.
 ///
 /// Errors: [`CommandError::NoSuchModel`].
-pub(super) fn duplicate_op(doc: &Document, input: &ModelInput) -> Result<Outcome, CommandError> {
+pub(super) fn duplicate_op(
+    doc: &Document,
+    input: &DuplicateInput,
+) -> Result<Outcome, CommandError> {
     let model = target(doc, input.model)?;
-    let width = model
-        .mesh
-        .bounding_box()
-        .map_or(1.0, |(lo, hi)| (hi.x - lo.x).max(f64::EPSILON));
+    let bounds = model.mesh.bounding_box();
+    let shift = match (input.beside, bounds) {
+        (Some(beside), Some(own)) => {
+            let toward = DVec3::from(beside).try_normalize().unwrap_or(DVec3::X);
+            let boxes: Vec<_> = doc
+                .models
+                .iter()
+                .filter_map(|m| m.mesh.bounding_box())
+                .collect();
+            let gap = DUPLICATE_GAP * (own.1 - own.0).max_element();
+            toward * free_shift(own, toward, &boxes, gap)
+        }
+        _ => {
+            let width = bounds.map_or(1.0, |(lo, hi)| (hi.x - lo.x).max(f64::EPSILON));
+            DVec3::X * DUPLICATE_SHIFT * width
+        }
+    };
     let mut copy = model.clone();
-    let shift = DVec3::X * DUPLICATE_SHIFT * width;
     for p in copy.mesh.positions_mut() {
         *p += shift;
     }
     let mut next = doc.clone();
     next.models.push(Arc::new(copy));
     Ok(Outcome::Document(next))
+}
+
+/// How far the box `own` must move along the unit vector `toward` to overlap none of
+/// `boxes` (each grown by `gap` on every side, `own` itself among them): the least distance
+/// `t ≥ 0` outside every distance at which it overlaps one. Along a line, each box is
+/// overlapped over one open interval of `t` (the intersection of one interval per axis), so
+/// the answer is found by stepping past the intervals that hold `t`, each at most once.
+fn free_shift(own: (DVec3, DVec3), toward: DVec3, boxes: &[(DVec3, DVec3)], gap: f64) -> f64 {
+    let overlaps: Vec<(f64, f64)> = (boxes.iter())
+        .filter_map(|&(lo, hi)| overlap_interval(own, toward, (lo - gap, hi + gap)))
+        .collect();
+    let mut t = 0.0;
+    while let Some(&(_, end)) = overlaps.iter().find(|&&(start, end)| start < t && t < end) {
+        t = end;
+    }
+    t
+}
+
+/// The open interval of distances `t` along `toward` at which the box `own` moved by
+/// `t * toward` overlaps `other` (their interiors share a point), if any.
+fn overlap_interval(
+    own: (DVec3, DVec3),
+    toward: DVec3,
+    other: (DVec3, DVec3),
+) -> Option<(f64, f64)> {
+    let (mut start, mut end) = (f64::NEG_INFINITY, f64::INFINITY);
+    for axis in 0..3 {
+        let (lo, hi, step) = (own.0[axis], own.1[axis], toward[axis]);
+        let (other_lo, other_hi) = (other.0[axis], other.1[axis]);
+        if step.abs() < 1e-12 {
+            if lo >= other_hi || hi <= other_lo {
+                return None;
+            }
+            continue;
+        }
+        let (a, b) = ((other_lo - hi) / step, (other_hi - lo) / step);
+        start = start.max(a.min(b));
+        end = end.min(a.max(b));
+    }
+    (start < end).then_some((start, end))
 }
 
 /// The other model that `index`'s overlaps most (by the volume their bounding boxes share),
@@ -236,4 +297,33 @@ fn reversed(mesh: &Mesh) -> Result<Mesh, CommandError> {
         t.swap(1, 2);
     }
     Mesh::from_soup(&soup).map_err(|_| CommandError::BadTransform)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn cube(lo: [f64; 3], hi: [f64; 3]) -> (DVec3, DVec3) {
+        (DVec3::from(lo), DVec3::from(hi))
+    }
+
+    #[test]
+    fn a_free_shift_steps_past_the_boxes_in_the_way_and_only_those() {
+        let own = cube([0.0; 3], [1.0; 3]);
+        // Alone, it moves its width and the gap.
+        assert!((free_shift(own, DVec3::X, &[own], 0.1) - 1.1).abs() < 1e-12);
+        // A box right beside it is stepped past: its far side plus the gap.
+        let next = cube([1.5, 0.0, 0.0], [2.5, 1.0, 1.0]);
+        assert!((free_shift(own, DVec3::X, &[own, next], 0.1) - 2.6).abs() < 1e-12);
+        // One listed first but farther, then the near one that pushes into it: both.
+        let far = cube([2.8, 0.0, 0.0], [4.0, 1.0, 1.0]);
+        assert!((free_shift(own, DVec3::X, &[far, own, next], 0.1) - 4.1).abs() < 1e-12);
+        // A box above the path is not in the way.
+        let above = cube([1.5, 3.0, 0.0], [2.5, 4.0, 1.0]);
+        assert!((free_shift(own, DVec3::X, &[own, above], 0.1) - 1.1).abs() < 1e-12);
+        // Diagonally: the box clears the original's on the first axis it leaves.
+        let toward = DVec3::new(1.0, 0.0, 1.0).normalize();
+        let t = free_shift(own, toward, &[own], 0.0);
+        assert!((t - 2f64.sqrt()).abs() < 1e-12, "{t}");
+    }
 }

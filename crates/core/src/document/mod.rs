@@ -54,9 +54,10 @@ pub use intent::{
 pub use keyframes::KeyframeInput;
 pub use op::{
     AddCurveInput, AreaInput, BrushInput, CreateInput, CurveHandleInput, CurveTypeInput,
-    DeleteHandleInput, FileInput, HandleEditInput, HandleInput, ImportInput, LinkHandlesInput,
-    MergeInput, ModelInput, Op, OptimizeInput, OversketchFit, OversketchInput, ProfileInput,
-    RegionEditInput, SketchFeatureInput, StrokeInput, StrokePairInput, TransformInput,
+    DeleteHandleInput, DuplicateInput, FileInput, HandleEditInput, HandleInput, ImportInput,
+    LinkHandlesInput, MergeInput, ModelInput, Op, OptimizeInput, OversketchFit, OversketchInput,
+    ProfileInput, RegionEditInput, SketchFeatureInput, StrokeInput, StrokePairInput,
+    TransformInput,
 };
 pub use outcome::{import_files, model_op};
 pub use oversketch::OutlinePiece;

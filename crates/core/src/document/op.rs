@@ -102,7 +102,7 @@ pub enum Op {
     /// Remove a model.
     Delete(ModelInput) = "delete",
     /// Add a copy of a model beside it.
-    Duplicate(ModelInput) = "duplicate",
+    Duplicate(DuplicateInput) = "duplicate",
     /// Make the parts of control curves the stroke passes over sharp or smooth.
     SetCurveType(CurveTypeInput) = "set_curve_type",
     /// Smooth the control curves near the stroke; each back-and-forth pass smooths more.
@@ -277,6 +277,20 @@ impl MergeInput {
 pub struct ModelInput {
     /// Index of the model in the document.
     pub model: usize,
+}
+
+/// A `duplicate` op: which model, and the direction to place the copy along
+/// (`{"op":"duplicate","model":0,"beside":[1.0,0.0,0.0]}`, the screen's right in the app).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DuplicateInput {
+    /// Index of the model in the document.
+    pub model: usize,
+    /// The copy lands along this world direction, at the nearest spot where its bounding
+    /// box overlaps no model's; without it (sessions from before), 1.2 of the model's widths
+    /// along +x.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub beside: Option<[f64; 3]>,
 }
 
 /// An `optimize` op: which model, and the settings at the top level beside it

@@ -62,9 +62,10 @@ use proptest::test_runner::{Config, FileFailurePersistence, RngSeed, TestRunner}
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
     CommandError, ControlCurve, CurveDeformInput, CurveHandle, CurveHandleInput, DeformHandleInput,
-    DeformInput, DeformMethod, DeleteHandleInput, Document, Editor, HandleEditInput, KeyframeInput,
-    LinkHandlesInput, MergeInput, Model, ModelInput, Op, OptimizeInput, OversketchFit,
-    RegionEditInput, SketchFeatureInput, StrokeInput, StrokePairInput, TransformInput,
+    DeformInput, DeformMethod, DeleteHandleInput, Document, DuplicateInput, Editor,
+    HandleEditInput, KeyframeInput, LinkHandlesInput, MergeInput, Model, ModelInput, Op,
+    OptimizeInput, OversketchFit, RegionEditInput, SketchFeatureInput, StrokeInput,
+    StrokePairInput, TransformInput,
 };
 use sketchmesh_core::feature::FeatureKind;
 use sketchmesh_core::geometry::{Bvh, vertex_normals};
@@ -860,7 +861,10 @@ fn op_for(step: &Step, document: &Document) -> Op {
                     })
                 }
                 1 => Op::Delete(ModelInput { model }),
-                2 => Op::Duplicate(ModelInput { model }),
+                2 => Op::Duplicate(DuplicateInput {
+                    model,
+                    beside: Some([1.0, 0.0, -0.5]),
+                }),
                 _ => Op::Merge(MergeInput {
                     models: [model, (model + 1) % n],
                 }),
@@ -1304,7 +1308,10 @@ fn op_for_part(part: &Part, document: &Document) -> Option<Op> {
             .all(|m| m.keyframes.is_empty())
             .then_some(Op::Keyframe(KeyframeInput { time: *time })),
         Part::SecondModelFirst => {
-            (document.models.len() == 1).then_some(Op::Duplicate(ModelInput { model: 0 }))
+            (document.models.len() == 1).then_some(Op::Duplicate(DuplicateInput {
+                model: 0,
+                beside: None,
+            }))
         }
         Part::OverlapFirst(model) => {
             let n = document.models.len();

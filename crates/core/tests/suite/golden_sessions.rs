@@ -47,9 +47,9 @@ use serde_json::{Value, json};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
     CurveHandleInput, CurveKind, DeformHandleInput, DeformInput, DeformMethod, DeleteHandleInput,
-    Document, Editor, HandleEditInput, KeyframeInput, LinkHandlesInput, MergeInput, ModelInput, Op,
-    OptimizeInput, OversketchFit, RegionEditInput, Session, SketchFeatureInput, StrokePairInput,
-    TransformInput,
+    Document, DuplicateInput, Editor, HandleEditInput, KeyframeInput, LinkHandlesInput, MergeInput,
+    ModelInput, Op, OptimizeInput, OversketchFit, RegionEditInput, Session, SketchFeatureInput,
+    StrokePairInput, TransformInput,
 };
 use sketchmesh_core::feature::FeatureKind;
 use sketchmesh_core::mesh::{Mesh, VertexId, primitives};
@@ -976,7 +976,13 @@ fn arrange_and_merge() -> Editor {
     );
     apply(&mut editor, Op::Merge(MergeInput { models: [1, 0] }));
     assert_eq!(editor.document().models.len(), 1, "the two became one");
-    apply(&mut editor, Op::Duplicate(ModelInput { model: 0 }));
+    apply(
+        &mut editor,
+        Op::Duplicate(DuplicateInput {
+            model: 0,
+            beside: None,
+        }),
+    );
     let models = &editor.document().models;
     assert_eq!(models[1].mesh.n_vertices(), models[0].mesh.n_vertices());
     let copied = models[1].mesh.position(VertexId(0));

@@ -11,8 +11,8 @@ use std::f64::consts::TAU;
 use glam::{DMat4, DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    CommandError, Editor, MergeInput, Model, ModelInput, Op, StrokeInput, StrokePairInput,
-    TransformInput,
+    CommandError, DuplicateInput, Editor, MergeInput, Model, ModelInput, Op, StrokeInput,
+    StrokePairInput, TransformInput,
 };
 use sketchmesh_core::fibermesh::cut::CutError;
 use sketchmesh_core::geometry::{Bvh, enclosed_volume};
@@ -288,7 +288,10 @@ fn bad_transforms_are_refused_and_change_nothing() {
 fn duplicate_puts_a_copy_beside_and_delete_removes_one_undoably() {
     let mut editor = created_circle();
     editor
-        .apply(Op::Duplicate(ModelInput { model: 0 }))
+        .apply(Op::Duplicate(DuplicateInput {
+            model: 0,
+            beside: None,
+        }))
         .unwrap();
     let models = &editor.document().models;
     assert_eq!(models.len(), 2);
@@ -304,6 +307,60 @@ fn duplicate_puts_a_copy_beside_and_delete_removes_one_undoably() {
     assert_eq!(editor.document(), &both);
     let replayed = Editor::replay_json(&editor.session_json()).unwrap();
     assert_eq!(replayed.document(), editor.document());
+}
+
+#[test]
+fn duplicates_along_a_direction_land_beside_overlapping_no_model_and_replay_exactly() {
+    let mut editor = created_circle();
+    // A second model just right of the first: the nearest free spot is past it.
+    let (lo, hi) = bounds(&editor.document().models[0]);
+    editor
+        .apply(Op::Duplicate(DuplicateInput {
+            model: 0,
+            beside: None,
+        }))
+        .unwrap();
+    let overlap =
+        |a: (DVec3, DVec3), b: (DVec3, DVec3)| (a.1.min(b.1) - a.0.max(b.0)).min_element();
+    let right = DVec3::new(0.8, 0.0, -0.6);
+    for _ in 0..4 {
+        editor
+            .apply(Op::Duplicate(DuplicateInput {
+                model: 0,
+                beside: Some(right.to_array()),
+            }))
+            .unwrap();
+    }
+    let boxes: Vec<_> = editor.document().models.iter().map(|m| bounds(m)).collect();
+    assert_eq!(boxes.len(), 6);
+    for (i, &a) in boxes.iter().enumerate() {
+        for &b in &boxes[i + 1..] {
+            assert!(overlap(a, b) < 0.0, "{a:?} overlaps {b:?}");
+        }
+    }
+    // Each copy lies along the direction from the original, the first nearest.
+    let along = |k: usize| (boxes[k].0 - lo).dot(right);
+    let offsets: Vec<f64> = (2..6).map(along).collect();
+    assert!(offsets.windows(2).all(|w| w[0] < w[1]), "{offsets:?}");
+    for k in 2..6 {
+        let moved = boxes[k].0 - lo;
+        assert!(
+            moved.cross(right).length() < 1e-9 * (1.0 + moved.length()),
+            "{moved:?}"
+        );
+    }
+    // The first copy is as near as the gap allows: a model-sized step, not more.
+    let size = (hi - lo).max_element();
+    assert!(
+        offsets[0] < 2.5 * size,
+        "{offsets:?} for a model {size} wide"
+    );
+    let replayed = Editor::replay_json(&editor.session_json()).unwrap();
+    assert_eq!(
+        replayed.document(),
+        editor.document(),
+        "it replays bit for bit"
+    );
 }
 
 #[test]

@@ -12,8 +12,8 @@ mod icon;
 use glam::{DMat4, DVec2};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    Document, Gizmo, GizmoHandle, MergeInput, ModelInput, Op, StrokeInput, TransformInput,
-    model_under, overlapping_model,
+    Document, DuplicateInput, Gizmo, GizmoHandle, MergeInput, ModelInput, Op, StrokeInput,
+    TransformInput, model_under, overlapping_model,
 };
 
 use crate::input::router::{Hands, ToolEvent};
@@ -97,6 +97,8 @@ pub struct ArrangeTool {
     /// Where a press that took no handle went down: it selects if it is a tap.
     press: Option<DVec2>,
     drag: Option<Drag>,
+    /// The view as last drawn (the overlay's): Duplicate places the copy toward its right.
+    seen: std::cell::Cell<Camera>,
 }
 
 impl ArrangeTool {
@@ -291,7 +293,10 @@ impl ArrangeTool {
             && let Some(model) = selected
         {
             self.selected = Some(doc.models.len());
-            return ToolOutput::Commit(Op::Duplicate(ModelInput { model }));
+            return ToolOutput::Commit(Op::Duplicate(DuplicateInput {
+                model,
+                beside: Some(self.seen.get().frame().right.to_array()),
+            }));
         }
         let partner = selected.and_then(|model| Some((model, overlapping_model(doc, model)?)));
         let merge = ui.add_enabled(partner.is_some(), egui::Button::new("Merge").min_size(size));
@@ -360,6 +365,7 @@ impl Tool for ArrangeTool {
     /// The handles around the selected model: the ring that turns it, the square that
     /// scales it, a dot at its middle; the one being dragged is drawn brighter.
     fn overlay(&self, ui: &egui::Ui, scene: &Scene<'_>) {
+        self.seen.set(scene.camera);
         let Some((gizmo, dragged)) = self.gizmo(scene.doc, &scene.camera, scene.size()) else {
             return;
         };

@@ -18,8 +18,8 @@ use sketchmesh_core::camera::Camera;
 use sketchmesh_core::curve::bspline::{uniform_knots, with_widest_span_split};
 use sketchmesh_core::curve::{StrokePoint, is_closed_loop};
 use sketchmesh_core::document::{
-    CLOSE_TOLERANCE_PX, CoarseInput, CurveDeformInput, Document, Edit, KeyframeInput, Op,
-    StrokeInput, model_under,
+    CLOSE_TOLERANCE_PX, CoarseInput, CurveDeformInput, Document, KeyframeInput, Op, StrokeInput,
+    model_under,
 };
 use sketchmesh_core::feature::Sketch;
 use sketchmesh_core::mesh::VertexId;
@@ -77,14 +77,12 @@ impl PoseCurve {
                 .all(|w| mesh.find_edge(VertexId(w[0]), VertexId(w[1])).is_some())
     }
 
-    /// The curve's vertices' positions in `doc`, or on the model an edit in progress
-    /// `moves`.
+    /// The curve's vertices' positions in `doc`, or where its model is drawn when it is
+    /// among the `moved` (by an edit in progress, or posed by the animation playing).
     fn points(&self, doc: &Document, moved: Moved) -> Vec<DVec3> {
-        match moved {
-            Some((model, positions)) if model == self.model => {
-                self.path.iter().map(|&v| positions[v as usize]).collect()
-            }
-            _ => {
+        match moved.iter().find(|(model, _)| *model == self.model) {
+            Some((_, positions)) => self.path.iter().map(|&v| positions[v as usize]).collect(),
+            None => {
                 let mesh = &doc.models[self.model].mesh;
                 self.path
                     .iter()
@@ -112,8 +110,9 @@ impl PoseCurve {
 /// How near (CSS px) a pointer must come down to a control point to drag it: a fingertip.
 const GRAB_PX: f64 = 28.0;
 
-/// A model an edit in progress moves, and where its vertices are shown.
-pub type Moved<'a> = Option<(usize, &'a [DVec3])>;
+/// The models drawn elsewhere than the document has them (see
+/// [`crate::tools::Scene::moved_models`]), and where their vertices are shown.
+pub type Moved<'a> = &'a [(usize, &'a [DVec3])];
 
 /// How far **Turn plane** turns the editing plane about the curve's chord.
 const PLANE_TURN_DEG: f64 = 45.0;
@@ -136,6 +135,8 @@ pub struct PoseTool {
     falloff: Falloff,
     /// The time the next key goes at (s).
     time: f64,
+    /// Whether the animation plays: the panel's Play is then Stop.
+    is_playing: bool,
 }
 
 impl PoseTool {
@@ -259,7 +260,7 @@ impl PoseTool {
         let size = view.viewport.size();
         let size = glam::DVec2::new(size.x.into(), size.y.into());
         let at = glam::DVec2::new(at[0], at[1]);
-        (curve.controls(doc, None).iter().enumerate())
+        (curve.controls(doc, &[]).iter().enumerate())
             .filter_map(|(k, &c)| {
                 let s = view.camera.screen_from_world(c, size)?.truncate();
                 Some((k, s.distance(at)))
@@ -308,7 +309,7 @@ impl PoseTool {
         let Some(curve) = self.active.map(|k| &mut self.curves[k]) else {
             return ToolOutput::None;
         };
-        let points = curve.points(doc, None);
+        let points = curve.points(doc, &[]);
         let (first, last) = (points[0], points[points.len() - 1]);
         let Some(axis) = (last - first).try_normalize() else {
             return ToolOutput::None;
@@ -537,13 +538,20 @@ impl PoseTool {
         {
             output = ToolOutput::Commit(Op::DeleteKeyframe(KeyframeInput { time: self.time }));
         }
-        let playable = doc.models.iter().any(|m| m.keyframes().count() >= 2);
-        let play = ui.add_enabled(playable, egui::Button::new("▶ Play").min_size(button_size));
-        if play
-            .on_hover_text("Play the key-framed animation")
-            .clicked()
-        {
-            output = ToolOutput::Play;
+        if self.is_playing {
+            let stop = ui.add(egui::Button::new("Stop").min_size(button_size));
+            if stop.on_hover_text("Stop playing (Esc)").clicked() {
+                output = ToolOutput::Play(false);
+            }
+        } else {
+            let playable = doc.models.iter().any(|m| m.keyframes().count() >= 2);
+            let play = ui.add_enabled(playable, egui::Button::new("▶ Play").min_size(button_size));
+            if play
+                .on_hover_text("Play the key-framed animation")
+                .clicked()
+            {
+                output = ToolOutput::Play(true);
+            }
         }
         ui.separator();
         let curves = self.curves_ui(ui, doc);
@@ -582,15 +590,15 @@ impl Tool for PoseTool {
     /// marked, and the spline's control points while it reshapes by them.
     fn overlay(&self, ui: &egui::Ui, scene: &Scene<'_>) {
         let (camera, size) = (scene.camera, scene.size());
-        let moved = scene.edit.and_then(Edit::moved_model);
-        for (curve, active) in self.curves(scene.shown, moved) {
+        let moved = scene.moved_models();
+        for (curve, active) in self.curves(scene.shown, &moved) {
             let on_screen: Vec<glam::DVec2> = curve
                 .iter()
                 .filter_map(|&p| camera.screen_from_world(p, size).map(|s| s.truncate()))
                 .collect();
             outline_ui(ui, scene.viewport, &on_screen, active, active);
         }
-        let controls: Vec<egui::Pos2> = (self.controls(scene.shown, moved).iter())
+        let controls: Vec<egui::Pos2> = (self.controls(scene.shown, &moved).iter())
             .filter_map(|&p| camera.screen_from_world(p, size))
             .map(|s| scene.at(s.truncate()))
             .collect();
@@ -607,6 +615,10 @@ impl Tool for PoseTool {
 
     fn hint(&self, _doc: &Document) -> Option<&'static str> {
         PoseTool::hint(self)
+    }
+
+    fn playing(&mut self, is_playing: bool) {
+        self.is_playing = is_playing;
     }
 
     fn preview(&self) -> Option<&[StrokePoint]> {
@@ -656,7 +668,20 @@ mod tests {
         let ToolOutput::Face { normal, .. } = output else {
             panic!("no plane to face: {output:?}");
         };
-        assert!(tool.curves(editor.document(), None)[0].0.len() > 5);
+        let rest = tool.curves(editor.document(), &[])[0].0.clone();
+        assert!(rest.len() > 5);
+        // Drawn on a model posed elsewhere (the animation playing), the curve follows it.
+        let lifted: Vec<DVec3> = (editor.document().models[0].mesh.positions().iter())
+            .map(|&p| p + DVec3::Y)
+            .collect();
+        let posed = tool.curves(editor.document(), &[(0, lifted.as_slice())])[0]
+            .0
+            .clone();
+        assert!(
+            rest.iter()
+                .zip(&posed)
+                .all(|(a, b)| (*b - *a - DVec3::Y).length() < 1e-12)
+        );
         // Turning the plane round: the op names the normal the view faces.
         let turned = tool.turn_plane(editor.document());
         let ToolOutput::Face { normal: once, .. } = turned else {
@@ -681,7 +706,7 @@ mod tests {
         assert!(eye_to_target.dot(normal).abs() > 0.99, "not face on");
         // The curve as seen there, its right half swung up by up to 40 px: a bend.
         let size = glam::DVec2::new(800.0, 600.0);
-        let seen: Vec<glam::DVec2> = tool.curves(editor.document(), None)[0]
+        let seen: Vec<glam::DVec2> = tool.curves(editor.document(), &[])[0]
             .0
             .iter()
             .filter_map(|&p| side.camera.screen_from_world(p, size).map(|s| s.truncate()))
@@ -717,7 +742,7 @@ mod tests {
             panic!("no curve deform");
         };
         let before = enclosed_volume(&editor.document().models[0].mesh);
-        let rest = tool.curves(editor.document(), None)[0].0.clone();
+        let rest = tool.curves(editor.document(), &[])[0].0.clone();
         editor.apply(op).unwrap();
         let after = enclosed_volume(&editor.document().models[0].mesh);
         assert!(
@@ -725,7 +750,7 @@ mod tests {
             "volume {before} -> {after}"
         );
         // The curve stays picked, where the bend took it, to be redrawn again.
-        let curves = tool.curves(editor.document(), None);
+        let curves = tool.curves(editor.document(), &[]);
         assert!(curves.len() == 1 && curves[0].1, "{curves:?}");
         assert!(curves[0].0 != rest, "the curve did not follow the model");
         // **+ Curve**, then a stroke along the model's lower part picks a second curve; its
@@ -763,7 +788,7 @@ mod tests {
             ..front
         };
         tool.spline = true;
-        let controls = tool.controls(editor.document(), None);
+        let controls = tool.controls(editor.document(), &[]);
         assert_eq!(controls.len(), COARSE_CONTROLS);
         let size = glam::DVec2::new(800.0, 600.0);
         let Some(last) = side
@@ -799,7 +824,7 @@ mod tests {
         let curve = &mut tool.curves[0];
         curve.knots = with_widest_span_split(&curve.knots);
         assert_eq!(
-            tool.controls(editor.document(), None).len(),
+            tool.controls(editor.document(), &[]).len(),
             COARSE_CONTROLS + 1
         );
     }

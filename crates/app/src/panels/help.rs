@@ -87,8 +87,10 @@ const GESTURES: &[(&str, &str)] = &[
     ),
 ];
 
-/// Shows the help window while `open` is set.
-pub fn help_ui(ctx: &egui::Context, open: &mut bool, backend: &str, pen_seen: bool) {
+/// Shows the help window while `open` is set; whether the user asked to see the
+/// introduction again.
+pub fn help_ui(ctx: &egui::Context, open: &mut bool, backend: &str, pen_seen: bool) -> bool {
+    let mut intro = false;
     egui::Window::new("Help")
         .open(open)
         .collapsible(false)
@@ -104,9 +106,11 @@ pub fn help_ui(ctx: &egui::Context, open: &mut bool, backend: &str, pen_seen: bo
             {
                 ui.ctx().open_url(egui::OpenUrl::new_tab(GUIDE_URL));
             }
+            intro = ui.button("Show the introduction").clicked();
             ui.add_space(8.0);
             egui::ScrollArea::vertical().show(ui, |ui| contents_ui(ui, backend, pen_seen));
         });
+    intro
 }
 
 /// The tables and the state of the pen and graphics.

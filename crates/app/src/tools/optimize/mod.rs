@@ -22,6 +22,7 @@ use sketchmesh_core::optimize::{
 use crate::input::router::ToolEvent;
 use crate::tools::context::{ToolOutput, ViewCtx};
 use crate::tools::draw::{DrawTool, is_tap};
+use crate::tools::hint::{Device, Hint};
 use crate::tools::tool::{Mark, Tool, ToolInfo};
 
 /// The optimize tool's name, icon, key and description.
@@ -234,12 +235,17 @@ impl OptimizeTool {
         self.clear_marks();
     }
 
-    /// What the tool asks for while no model is previewed.
-    pub fn hint(&self) -> Option<&'static str> {
-        self.model.is_none().then_some(
-            "Tap a model, or draw a lasso around or paint over part of one, to preview its \
-             optimization",
-        )
+    /// What the tool asks for: a model to preview, then to keep or drop the preview.
+    pub fn hint(&self) -> &'static str {
+        match self.model {
+            None => {
+                "{Tap} a model, or draw a lasso around or paint over part of one, to preview \
+                 better triangles"
+            }
+            Some(_) => {
+                "Compare, then Apply{enter} to keep it or Cancel; draw more to widen what moves"
+            }
+        }
     }
 
     /// The panel: the settings, and Apply and Cancel while a preview is open.
@@ -472,8 +478,8 @@ impl Tool for OptimizeTool {
         Some(quality_report(&before.mesh, after.mesh.positions()).summary())
     }
 
-    fn hint(&self, _doc: &Document) -> Option<&'static str> {
-        OptimizeTool::hint(self)
+    fn hint(&self, _doc: &Document, device: Device) -> Hint {
+        device.say(OptimizeTool::hint(self))
     }
 
     fn preview(&self) -> Option<&[StrokePoint]> {

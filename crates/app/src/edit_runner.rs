@@ -365,8 +365,8 @@ impl EditRunner {
             self.edit = None;
             self.settle_import(Err(String::from("The import was cancelled.")), cx);
         } else if let Some(edit) = self.edit.take_if(|_| job.is_some()) {
-            cx.status
-                .say(format!("The {} was cancelled.", edit.op().title()), cx.now);
+            let said = format!("The {} was cancelled.", edit.op().title());
+            cx.status.say(crate::status::Tone::Info, said, cx.now);
         }
     }
 
@@ -456,7 +456,7 @@ impl EditRunner {
                     replaying.reply.send(Err(e.to_string()));
                 }
                 cx.status
-                    .say(format!("Could not replay the session: {e}"), cx.now);
+                    .refuse(format!("Could not replay the session: {e}"), cx.now);
                 false
             }
         }

@@ -129,7 +129,7 @@ impl Intro {
         let width = (viewport.width() - 24.0).min(380.0);
         let at = egui::pos2(viewport.center().x - 0.5 * width, top + 10.0);
         let mut skip = false;
-        egui::Area::new(egui::Id::new("intro"))
+        egui::Area::new(egui::Id::unique("introduction"))
             .fixed_pos(at)
             .order(egui::Order::Foreground)
             .show(ctx, |ui| {

@@ -75,14 +75,18 @@ function isHarmless(gpu, text, url) {
  * Opens the app in a new context and waits until `window.sketchmesh` exists and a frame has been
  * drawn. Returns `{ context, page, cdp, errors }`; `errors` collects console errors and uncaught
  * exceptions (harmless ones filtered out) for the whole life of the page. A page that does not
- * start has its context closed.
+ * start has its context closed. The first visit's introduction is marked seen unless `intro`.
  */
-export async function openApp(browser, url, gpu, { width = 1280, height = 720, deviceScaleFactor = 1 } = {}) {
+export async function openApp(
+  browser, url, gpu, { width = 1280, height = 720, deviceScaleFactor = 1, intro = false, isMobile = false } = {},
+) {
   const context = await browser.newContext({
     viewport: { width, height },
     deviceScaleFactor,
     hasTouch: true,
+    isMobile,
   });
+  if (!intro) await context.addInitScript(() => localStorage.setItem('sketchmesh.intro', 'seen'));
   const page = await context.newPage();
   const errors = [];
   page.on('console', (msg) => {

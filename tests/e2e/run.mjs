@@ -3028,6 +3028,128 @@ test('a 40k-vertex shape is created off the frame: Escape cancels it and changes
   }
 });
 
+// ---------------------------------------------------------------------------------------------
+// Guidance: the hint line, the status line's tones and the first visit's introduction.
+
+/** Every tool's key, in toolbar order. */
+const TOOL_KEYS = ['S', 'P', 'E', 'T', 'U', 'O', 'D', 'L', 'J', 'Q', 'M', 'V'];
+
+/** A pen hovering at (x, y): the page sees the pen without a stroke. */
+async function penHover(cdp, x, y) {
+  await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', x, y, buttons: 0, pointerType: 'pen', force: 0 });
+}
+
+/** How many pixels of `image`, in the band of rows `[y0, y1)`, lie within 40 of `rgb`. */
+function pixelsNear(image, rgb, y0, y1) {
+  let n = 0;
+  for (let y = y0; y < y1; y++) {
+    for (let x = 0; x < image.width; x++) {
+      const i = 4 * (y * image.width + x);
+      const d = Math.abs(image.data[i] - rgb[0]) + Math.abs(image.data[i + 1] - rgb[1]) + Math.abs(image.data[i + 2] - rgb[2]);
+      if (d < 40) n++;
+    }
+  }
+  return n;
+}
+
+// Whatever draws, the hint and status lines are the same text and colours: the WebGL2 run covers them.
+test('hints: on an empty document every tool says what to do in the words of the mouse, the finger and the pen, naming Sketch where it cannot work on nothing; an outline drawn in Pull is refused in orange, naming Sketch, and an export is reported in green', { gpu: false }, async () => {
+  const fresh = await openApp(browser, url, gpu);
+  try {
+    const { page, cdp } = fresh;
+    const devices = [
+      ['mouse', 'with the mouse', () => page.mouse.move(300, 300)],
+      ['finger', 'with one finger', () => touchTap(cdp, [{ x: 300, y: 500 }])],
+      ['pen', 'with the pen', () => penHover(cdp, 320, 320)],
+    ];
+    const said = {};
+    for (const [device, words, use] of devices) {
+      for (const key of TOOL_KEYS) {
+        await page.keyboard.press(key);
+        await use();
+        await frames(page, 2);
+        const hint = await api(page, 'hint');
+        said[key] = [...(said[key] ?? []), hint];
+        assert.ok(hint.includes(words), `${key} with the ${device}: "${hint}"`);
+        assert.ok(hint.includes('closed outline'), `${key} says how shapes are made: "${hint}"`);
+        if (key !== 'S') assert.ok(hint.includes('Sketch'), `${key} names the tool that makes shapes: "${hint}"`);
+      }
+    }
+    for (const key of TOOL_KEYS) assert.equal(new Set(said[key]).size, 3, `${key}'s hint differs by device: ${JSON.stringify(said[key])}`);
+    console.log(`    # Pull, by the pen: "${said.P[2]}"`);
+
+    // A closed outline in Pull on nothing makes nothing, and says which tool makes shapes.
+    await page.keyboard.press('P');
+    await penStroke(cdp, onEllipse());
+    const refused = await until(() => api(page, 'status'), (s) => s !== null, 5000);
+    assert.equal(refused?.kind, 'refusal', JSON.stringify(refused));
+    assert.match(refused.text, /Sketch/);
+    assert.equal((await api(page, 'stats')).models, 0, 'Pull made no shape');
+    await frames(page, 2);
+    const height = page.viewportSize().height;
+    const orange = await screenshot(page, out('status-refusal.png'));
+    const [ORANGE, GREEN] = [[255, 160, 60], [110, 220, 140]];
+    const refusalPixels = [pixelsNear(orange, ORANGE, height - 160, height), pixelsNear(orange, GREEN, height - 160, height)];
+
+    // An export is a success: green, with its own marker.
+    await page.keyboard.press('S');
+    const [download] = await Promise.all([page.waitForEvent('download', { timeout: 10_000 }), page.keyboard.press('Control+e')]);
+    await download.cancel().catch(() => {});
+    const done = await until(() => api(page, 'status'), (s) => s?.kind === 'success', 5000);
+    assert.equal(done?.kind, 'success', JSON.stringify(done));
+    await frames(page, 2);
+    const green = await screenshot(page, out('status-success.png'));
+    const successPixels = [pixelsNear(green, ORANGE, height - 160, height), pixelsNear(green, GREEN, height - 160, height)];
+    console.log(`    # orange/green pixels: refusal ${refusalPixels}, success ${successPixels}`);
+    assert.ok(refusalPixels[0] > 200 && refusalPixels[1] < 20, `the refusal is orange: ${refusalPixels}`);
+    assert.ok(successPixels[1] > 200 && successPixels[0] < 20, `the success is green: ${successPixels}`);
+  } finally {
+    await fresh.context.close();
+  }
+});
+
+// The introduction is the page's UI and store, the same on both GPU paths.
+test('introduction: a first visit shows step 1, a shape moves it to 2, an edit to 3; Skip hides it, it stays hidden after a reload, and Help shows it again', { gpu: false }, async () => {
+  const fresh = await openApp(browser, url, gpu, { intro: true });
+  try {
+    const { page, cdp } = fresh;
+    let intro = await until(() => api(page, 'intro'), (i) => i !== null, 3000);
+    assert.equal(intro?.step, 1, `a first visit shows the first step: ${JSON.stringify(intro)}`);
+    await screenshot(page, out('intro-1.png'));
+    await penStroke(cdp, onEllipse());
+    intro = await until(() => api(page, 'intro'), (i) => i?.step === 2, 15_000);
+    assert.equal(intro?.step, 2, 'a shape moves it on');
+    await screenshot(page, out('intro-2.png'));
+    await page.keyboard.press('E');
+    // Erase a curve of the shape: the ellipse's outline curve, at its right end.
+    await penStroke(cdp, line({ x: CENTRE.x + 200, y: CENTRE.y - 40 }, { x: CENTRE.x + 200, y: CENTRE.y + 40 }, 12));
+    await page.keyboard.press('V');
+    await page.mouse.click(CENTRE.x, CENTRE.y);
+    await frames(page, 2);
+    const dragged = line({ x: CENTRE.x, y: CENTRE.y }, { x: CENTRE.x + 60, y: CENTRE.y + 20 }, 10);
+    await penStroke(cdp, dragged);
+    intro = await until(() => api(page, 'intro'), (i) => i?.step === 3, 10_000);
+    assert.equal(intro?.step, 3, `an edit moves it on: ${JSON.stringify(intro)}, ops ${JSON.parse(await api(page, 'session')).ops.map((o) => o.op)}`);
+    assert.ok(Array.isArray(intro.skip), 'Skip is on screen');
+    await page.mouse.click(intro.skip[0], intro.skip[1]);
+    intro = await until(() => api(page, 'intro'), (i) => i === null, 3000);
+    assert.equal(intro, null, 'Skip hides it');
+    await page.reload({ waitUntil: 'load' });
+    await page.waitForFunction(() => typeof window.sketchmesh?.intro === 'function', null, { timeout: 15_000 });
+    await frames(page, 3);
+    assert.equal(await api(page, 'intro'), null, 'it stays hidden after a reload');
+    await page.keyboard.press('F1');
+    await frames(page, 3);
+    await screenshot(page, out('intro-help.png'));
+    // Help's "Show the introduction", at its place in the 1280 px wide page's Help window.
+    await page.mouse.click(95, 90);
+    intro = await until(() => api(page, 'intro'), (i) => i !== null, 3000);
+    assert.equal(intro?.step, 2, `Help shows it again, past the shape that exists: ${JSON.stringify(intro)}`);
+  } finally {
+    await fresh.context.close();
+  }
+});
+
 const failed = await runAll();
 await hiDpi?.close();
 await browser.close();

@@ -33,8 +33,8 @@ use crate::render::SceneRenderer;
 use crate::scene_view::{SceneView, model_at};
 pub use crate::shared::Shared;
 use crate::shortcuts;
-use crate::status::{Status, status_ui};
-use crate::tools::{Mode, ToolEvent, ToolOutput, ToolSet, ViewCtx};
+use crate::status::{Status, Tone, status_ui};
+use crate::tools::{Device, Mode, ToolEvent, ToolOutput, ToolSet, ViewCtx};
 use crate::view_overlay;
 
 /// The Sketchmesh app.
@@ -110,6 +110,11 @@ impl SketchApp {
         }
     }
 
+    /// Shows the first visit's introduction unless it was `seen` (the page's store keeps it).
+    pub fn start_intro(&mut self, seen: bool) {
+        self.panels.intro = panels::intro::Intro::new(seen);
+    }
+
     /// Says whether the screen's main pointer is a finger (see [`panels::toolbar::Layout`]).
     pub fn set_coarse_pointer(&mut self, coarse: bool) {
         self.coarse_pointer = coarse;
@@ -180,12 +185,12 @@ impl SketchApp {
             self.set_mode(mode, now);
         }
         if let Some(notice) = notice {
-            self.set_status(notice, now);
+            self.status.say(Tone::Info, notice, now);
         }
     }
 
-    fn set_status(&mut self, message: String, now: f64) {
-        self.status.say(message, now);
+    fn refuse(&mut self, message: String, now: f64) {
+        self.status.refuse(message, now);
     }
 
     /// The file actions and the edit runner, and what they work with.
@@ -216,7 +221,7 @@ impl SketchApp {
                 if !load {
                     self.backdrop.remove();
                 } else if let Err(message) = self.backdrop.pick() {
-                    self.set_status(message, now);
+                    self.refuse(message, now);
                 }
             }
             Some(ToolOutput::Play(true)) => {
@@ -224,7 +229,7 @@ impl SketchApp {
                     Playback::start(self.shared.borrow().editor.document(), clock::now_ms());
                 match played {
                     Ok(playback) => self.scene.playback = Some(playback),
-                    Err(message) => self.set_status(message, now),
+                    Err(message) => self.refuse(message, now),
                 }
             }
             Some(ToolOutput::Play(false)) => self.scene.stop_playing(),
@@ -463,7 +468,16 @@ impl SketchApp {
         let played = self.scene.played();
         let mut scene = self.runner.scene(&shared, viewport);
         scene.played = &played;
-        view_overlay::draw(ui, &scene, &self.tools, self.runner.waiting());
+        let device = Device::of(self.pointer.router.device(), self.coarse_pointer);
+        let line = view_overlay::line(&scene, &self.tools, device);
+        let below = view_overlay::draw(ui, &scene, &self.tools, &line, self.runner.waiting());
+        let intro = &mut self.panels.intro;
+        intro.follow(&shared.editor, shared.exports);
+        drop(shared);
+        intro.ui(ui.ctx(), viewport, below, device);
+        let mut shared = self.shared.borrow_mut();
+        shared.hint = line.into_owned();
+        shared.intro = intro.step().map(|step| (step.number(), intro.skip_at()));
         drop(shared);
         if let Some(edit) = self.runner.edit() {
             let camera = self.shared.borrow().camera.camera();
@@ -480,7 +494,6 @@ impl SketchApp {
         self.view_rect = viewport;
         panels::readout::update(ui.ctx(), |r| r.view = panels::readout::corners(viewport));
         self.scene.view_aspect = f64::from(viewport.aspect_ratio());
-        let idle = self.tools.preview().is_none() && self.runner.edit().is_none();
         let progress = self.runner.progress(ui.input(|i| i.time));
         self.shared.borrow_mut().progress.clone_from(&progress);
         if self.shared.borrow().thumbnails.is_capturing() {
@@ -491,11 +504,14 @@ impl SketchApp {
                 self.run(now, |r, cx| r.cancel_offloaded(cx));
                 self.run(now, |r, cx| r.cancel_replay(cx));
             }
-        } else if let Some(status) = self.status.message() {
-            status_ui(ui, viewport, status);
-        } else if self.shared.borrow().editor.document().is_empty() && idle {
-            view_overlay::first_hint(ui, viewport);
+        } else if let Some((said, tone)) = self.status.said() {
+            status_ui(ui, viewport, said, tone);
         }
+        let said = self
+            .status
+            .said()
+            .map(|(said, tone)| (said.to_owned(), tone));
+        self.shared.borrow_mut().status = said;
     }
 }
 
@@ -509,7 +525,7 @@ impl eframe::App for SketchApp {
         }
         let now = ctx.input(|i| i.time);
         if let Some(message) = self.backdrop.poll(&ctx) {
-            self.set_status(message, now);
+            self.refuse(message, now);
         }
         let (files, runner, mut cx) = self.parts(now);
         files.run_imports(&ctx, runner, &mut cx);
@@ -557,13 +573,21 @@ impl eframe::App for SketchApp {
         self.autosave
             .run(&ctx, &self.shared, &self.scene, &mut self.status, now);
         let backend = self.shared.borrow().backend.clone();
-        panels::help::help_ui(
+        let show_intro = panels::help::help_ui(
             &ctx,
             &mut self.panels.show_help,
             &backend,
             self.pointer.router.pen_seen(),
             self.coarse_pointer,
         );
+        if show_intro {
+            self.panels.show_help = false;
+            self.panels.intro.reopen();
+        }
+        #[cfg(target_arch = "wasm32")]
+        if self.panels.intro.take_ended() {
+            crate::page_store::keep_intro_seen();
+        }
         let mut shared = self.shared.borrow_mut();
         let revision = shared.revision();
         let Shared { editor, notes, .. } = &mut *shared;

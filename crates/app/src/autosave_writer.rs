@@ -71,7 +71,7 @@ impl AutosaveWriter {
         clock::record(&mut shared.timings.of("autosave").frame_ms, ms);
         drop(shared);
         if let Some(Err(why)) = written {
-            status.say(format!("Could not autosave: {why}"), now);
+            status.refuse(format!("Could not autosave: {why}"), now);
         }
     }
 }

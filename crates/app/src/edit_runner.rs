@@ -145,7 +145,7 @@ impl EditRunner {
                 _ => self.begin(op, false, cx),
             },
             ToolOutput::Cancel => self.cancel_gesture(),
-            ToolOutput::Refused(message) => cx.status.say(message, cx.now),
+            ToolOutput::Refused(message) => cx.status.refuse(message, cx.now),
             other @ (ToolOutput::Face { .. } | ToolOutput::Backdrop(_) | ToolOutput::Play(_)) => {
                 return Some(other);
             }
@@ -162,13 +162,13 @@ impl EditRunner {
     /// the ops waiting for it. A refusal becomes a status message; nothing changes then.
     pub fn begin(&mut self, op: Op, is_gesture: bool, cx: &mut Cx<'_>) {
         if self.is_busy() {
-            cx.status.say(String::from(BUSY), cx.now);
+            cx.status.working(String::from(BUSY), cx.now);
             return;
         }
         let behind_the_worker = self.worker_job.is_some() || !self.waiting.is_empty();
         if behind_the_worker && is_gesture {
             cx.tools.gesture_refused();
-            cx.status.say(String::from(COMPUTING), cx.now);
+            cx.status.working(String::from(COMPUTING), cx.now);
             return;
         }
         if behind_the_worker {
@@ -209,7 +209,7 @@ impl EditRunner {
                 self.edits_begun += 1;
                 self.is_edit_new = true;
             }
-            Err(e) => cx.status.say(e.to_string(), cx.now),
+            Err(e) => cx.status.refuse(e.to_string(), cx.now),
         }
     }
 
@@ -283,7 +283,7 @@ impl EditRunner {
                 if was_gesture {
                     cx.tools.gesture_refused();
                 }
-                cx.status.say(e.to_string(), cx.now);
+                cx.status.refuse(e.to_string(), cx.now);
                 self.settle_import(Err(e.to_string()), cx);
             }
         }
@@ -327,7 +327,7 @@ impl EditRunner {
             self.settle_import(settled, cx);
         }
         match result {
-            Err(e) => cx.status.say(e.to_string(), cx.now),
+            Err(e) => cx.status.refuse(e.to_string(), cx.now),
             Ok(()) => {
                 // The op just logged is the edit's.
                 let shared = cx.shared.borrow();
@@ -336,7 +336,7 @@ impl EditRunner {
                     .and_then(|op| tools.report(op, &before, editor.document()));
                 drop(shared);
                 if let Some(report) = report {
-                    cx.status.say(report, cx.now);
+                    cx.status.done(report, cx.now);
                 }
             }
         }
@@ -365,8 +365,8 @@ impl EditRunner {
             self.edit = None;
             self.settle_import(Err(String::from("The import was cancelled.")), cx);
         } else if let Some(edit) = self.edit.take_if(|_| job.is_some()) {
-            cx.status
-                .say(format!("The {} was cancelled.", edit.op().title()), cx.now);
+            let said = format!("The {} was cancelled.", edit.op().title());
+            cx.status.say(crate::status::Tone::Info, said, cx.now);
         }
     }
 
@@ -376,8 +376,8 @@ impl EditRunner {
             return;
         };
         match &result {
-            Ok(()) => cx.status.say(format!("Imported {}.", import.name), cx.now),
-            Err(why) => cx.status.say(why.clone(), cx.now),
+            Ok(()) => cx.status.done(format!("Imported {}.", import.name), cx.now),
+            Err(why) => cx.status.refuse(why.clone(), cx.now),
         }
         import.reply.send(result);
     }
@@ -406,7 +406,7 @@ impl EditRunner {
                 });
             }
             Err(e) => {
-                cx.status.say(e.to_string(), cx.now);
+                cx.status.refuse(e.to_string(), cx.now);
                 reply.send(Err(e.to_string()));
             }
         }
@@ -456,7 +456,7 @@ impl EditRunner {
                     replaying.reply.send(Err(e.to_string()));
                 }
                 cx.status
-                    .say(format!("Could not replay the session: {e}"), cx.now);
+                    .refuse(format!("Could not replay the session: {e}"), cx.now);
                 false
             }
         }
@@ -471,7 +471,7 @@ impl EditRunner {
             self.offload.cancel(job);
         }
         let why = String::from("The replay was cancelled.");
-        cx.status.say(why.clone(), cx.now);
+        cx.status.refuse(why.clone(), cx.now);
         replaying.reply.send(Err(why));
     }
 

@@ -46,7 +46,7 @@ impl FileActions {
                 files::Incoming::Replay(json, _) => ("the session", json.len()),
             };
             let what = format!("Opening {name} ({:.1} MB)…", bytes as f64 / 1e6);
-            cx.status.say(what, cx.now);
+            cx.status.working(what, cx.now);
             self.announced = Some(incoming);
             ctx.request_repaint();
         }
@@ -69,7 +69,7 @@ impl FileActions {
             Ok(editor) => editor,
             Err(why) => {
                 let sentence = format!("Could not open {name}: {why}. Nothing changed.");
-                return cx.status.say(sentence, cx.now);
+                return cx.status.refuse(sentence, cx.now);
             }
         };
         runner.cancel_gesture();
@@ -83,7 +83,7 @@ impl FileActions {
             if let Err(why) = crate::page_store::keep_and_start(record, title) {
                 let sentence =
                     format!("Did not open {name}: the work shown could not be kept ({why}).");
-                return cx.status.say(sentence, cx.now);
+                return cx.status.refuse(sentence, cx.now);
             }
         }
         cx.shared.borrow_mut().open(editor);
@@ -92,7 +92,7 @@ impl FileActions {
             true => " The previous document is kept under Documents.",
             false => "",
         };
-        cx.status.say(format!("Opened {name}.{kept}"), cx.now);
+        cx.status.done(format!("Opened {name}.{kept}"), cx.now);
     }
 
     /// The page's documents panel: `"show"` it, or `"newDocument"` (which keeps the document
@@ -102,7 +102,7 @@ impl FileActions {
         #[cfg(target_arch = "wasm32")]
         if let Err(why) = crate::page_store::documents(method) {
             cx.status
-                .say(format!("Could not open the documents: {why}"), cx.now);
+                .refuse(format!("Could not open the documents: {why}"), cx.now);
         }
         #[cfg(not(target_arch = "wasm32"))]
         let _ = method;
@@ -112,18 +112,19 @@ impl FileActions {
     pub fn save_session(&self, runner: &mut EditRunner, cx: &mut Cx<'_>) {
         runner.finish_edit(cx);
         let text = cx.shared.borrow().editor.session_json();
-        let message = match files::download(text.as_bytes(), files::Download::Session) {
-            Ok(name) => format!("Saved the session as {name}."),
-            Err(error) => format!("Could not save the session: {error}"),
-        };
-        cx.status.say(message, cx.now);
+        match files::download(text.as_bytes(), files::Download::Session) {
+            Ok(name) => (cx.status).done(format!("Saved the session as {name}."), cx.now),
+            Err(error) => {
+                (cx.status).refuse(format!("Could not save the session: {error}"), cx.now)
+            }
+        }
     }
 
     /// Asks the user for files to import.
     pub fn import_files(&self, ctx: &egui::Context, cx: &mut Cx<'_>) {
         let imports = cx.shared.borrow().imports.clone();
         if let Err(message) = files::pick_files(&imports, ctx) {
-            cx.status.say(message, cx.now);
+            cx.status.refuse(message, cx.now);
         }
     }
 
@@ -131,10 +132,13 @@ impl FileActions {
     pub fn export(&self, runner: &mut EditRunner, cx: &mut Cx<'_>) {
         runner.finish_edit(cx);
         let bytes = sketchmesh_core::io::write_glb(cx.shared.borrow().editor.document());
-        let message = match files::download(&bytes, files::Download::Glb) {
-            Ok(name) => format!("Exported {name} ({:.1} MB).", bytes.len() as f64 / 1e6),
-            Err(error) => format!("Could not export: {error}"),
-        };
-        cx.status.say(message, cx.now);
+        match files::download(&bytes, files::Download::Glb) {
+            Ok(name) => {
+                let said = format!("Exported {name} ({:.1} MB).", bytes.len() as f64 / 1e6);
+                cx.status.done(said, cx.now);
+                cx.shared.borrow_mut().exports += 1;
+            }
+            Err(error) => (cx.status).refuse(format!("Could not export: {error}"), cx.now),
+        }
     }
 }

@@ -32,12 +32,18 @@ pub fn outline_ui(
         .add(egui::Shape::line(points, egui::Stroke::new(4.0, color)));
 }
 
-/// What to do next, at the top of the view, wrapped to its width (a phone's is narrow).
-pub fn hint_ui(ui: &egui::Ui, viewport: egui::Rect, text: &str) {
-    let color = egui::Color32::from_white_alpha(200);
+/// What to do next, at the top of the view, wrapped to its width (a phone's is narrow), on
+/// a dark band so it reads over a light model; where it ends (screen y).
+pub fn hint_ui(ui: &egui::Ui, viewport: egui::Rect, text: &str) -> f32 {
+    let color = egui::Color32::from_white_alpha(220);
     let galley = centered_galley(ui, viewport, text, color);
+    let at = viewport.center_top() + egui::vec2(0.0, 14.0);
+    let rect = galley.rect.translate(at.to_vec2());
+    let band = rect.expand2(egui::vec2(10.0, 5.0));
     ui.painter()
-        .galley(viewport.center_top() + egui::vec2(0.0, 18.0), galley, color);
+        .rect_filled(band, 6.0, egui::Color32::from_black_alpha(120));
+    ui.painter().galley(at, galley, color);
+    band.max.y
 }
 
 /// `text` laid out centred and wrapped to the view's width, to be drawn at the view's

@@ -9,6 +9,38 @@ use wasm_bindgen::prelude::*;
 use crate::autosave::{RECORD_TAIL, record_head};
 use crate::camera::OrbitCamera;
 
+/// The key under which the page's local storage keeps that the introduction was seen.
+const INTRO_KEY: &str = "sketchmesh.intro";
+
+/// The page's local storage, if it has one (a private window may refuse it).
+fn local_storage() -> Option<JsValue> {
+    let window = web_sys::window()?;
+    Reflect::get(&window, &JsValue::from_str("localStorage"))
+        .ok()
+        .filter(|storage| storage.is_object())
+}
+
+/// Calls `method` of the page's local storage with `args`.
+fn call_storage(method: &str, args: &[JsValue]) -> Option<JsValue> {
+    let storage = local_storage()?;
+    let function = Reflect::get(&storage, &JsValue::from_str(method)).ok()?;
+    let function = function.dyn_into::<js_sys::Function>().ok()?;
+    let args: js_sys::Array = args.iter().collect();
+    function.apply(&storage, &args).ok()
+}
+
+/// Whether the introduction was seen (ended or skipped) on an earlier visit. A page without
+/// storage shows it every time, which costs one Skip.
+pub fn intro_seen() -> bool {
+    call_storage("getItem", &[JsValue::from_str(INTRO_KEY)]).is_some_and(|v| !v.is_null())
+}
+
+/// Keeps that the introduction was seen, so later visits open without it.
+pub fn keep_intro_seen() {
+    let args = [JsValue::from_str(INTRO_KEY), JsValue::from_str("seen")];
+    let _ = call_storage("setItem", &args);
+}
+
 /// Keeps the document shown (`record`, or nothing when it has no ops) in the page's store and
 /// makes a new document, named `title`, the one the autosave writes to: a session file opened
 /// becomes a document of its own.

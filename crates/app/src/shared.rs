@@ -32,6 +32,16 @@ pub struct Shared {
     pub notes: panels::notes::Notes,
     /// What the progress line says while work runs off the frame (an import, a replay).
     pub progress: Option<String>,
+    /// What the line at the top of the view says (the tool's hint), for the page API.
+    pub hint: String,
+    /// The status line's sentence and tone, for the page API.
+    pub status: Option<(String, crate::status::Tone)>,
+    /// The introduction's step shown (1 to 3) and where its Skip button is, for the page
+    /// API.
+    pub intro: Option<(u8, Option<egui::Pos2>)>,
+    /// How many exports were downloaded since the page opened (the introduction's last
+    /// step waits for one).
+    pub exports: u32,
     /// Editors that replaced the first one (see [`autosave::Revision`]).
     opened: u64,
     /// The ops' session text as JavaScript strings, for the autosave.
@@ -54,6 +64,10 @@ impl Shared {
             thumbnails: Default::default(),
             notes: Default::default(),
             progress: None,
+            hint: String::new(),
+            status: None,
+            intro: None,
+            exports: 0,
             opened: 0,
             #[cfg(target_arch = "wasm32")]
             op_texts: Default::default(),

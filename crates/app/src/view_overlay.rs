@@ -1,33 +1,41 @@
-//! What the view shows over the scene: the tool in use's hint and overlay, what the edit in
-//! progress shows (a move held back, an over-sketch's outline piece), the tools' marks and the
-//! stroke being drawn, and the strokes that wait for the worker.
+//! What the view shows over the scene: the line saying what to do next, the tool in use's
+//! overlay, what the edit in progress shows (an over-sketch's outline piece), the tools' marks
+//! and the stroke being drawn, and the strokes that wait for the worker.
 
 use sketchmesh_core::document::{Edit, Op};
 
-use crate::overlay::{centered_galley, hint_ui, outline_ui, stroke_ui};
-use crate::tools::{Mark, Scene, ToolSet};
+use crate::overlay::{hint_ui, outline_ui, stroke_ui};
+use crate::tools::{Device, Hint, Mark, Scene, ToolSet};
 
-/// Draws over the view: the tool in use's hint and what it shows, what the edit in
-/// progress shows (a move held back, the outline piece an over-sketch would replace),
-/// the marks and the stroke in progress, and the strokes waiting for the worker.
+/// The line at the top of the view: what the edit in progress says (a move held back, a
+/// feature's amount), else what the tool in use asks next, in `device`'s words.
+pub fn line(scene: &Scene<'_>, tools: &ToolSet, device: Device) -> Hint {
+    if scene.edit.and_then(Edit::limited_move).is_some() {
+        return Hint::Borrowed(
+            "Moved only part of the way: further would fold the part through itself; let go \
+             to keep it, or drag back",
+        );
+    }
+    match scene.edit.and_then(|edit| tools.edit_line(edit)) {
+        Some(said) => Hint::Owned(said),
+        None => tools.hint(scene.doc, device),
+    }
+}
+
+/// Draws over the view: the `line` saying what to do next, what the tool in use shows, what
+/// the edit in progress shows (the outline piece an over-sketch would replace), the marks
+/// and the stroke in progress, and the strokes waiting for the worker. Returns where the
+/// line ends (screen y), for what shows below it.
 pub fn draw<'a>(
     ui: &egui::Ui,
     scene: &Scene<'_>,
     tools: &ToolSet,
+    line: &str,
     waiting: impl Iterator<Item = &'a Op>,
-) {
+) -> f32 {
     let viewport = scene.viewport;
-    if let Some(hint) = tools.hint(scene.doc) {
-        hint_ui(ui, viewport, hint);
-    }
+    let below = hint_ui(ui, viewport, line);
     tools.overlay(ui, scene);
-    if let Some(kept) = scene.edit.and_then(Edit::limited_move) {
-        let said = format!(
-            "Held at {:.0}% of the move: more would fold the part through itself",
-            100.0 * kept
-        );
-        hint_ui(ui, viewport, &said);
-    }
     if let Some(o) = scene.edit.and_then(Edit::outline) {
         outline_ui(ui, viewport, &o.points, o.is_confident, false);
     }
@@ -43,6 +51,7 @@ pub fn draw<'a>(
         let points = op.stroke_points();
         stroke_ui(ui, viewport, &points, egui::Color32::from_rgb(200, 170, 90));
     }
+    below
 }
 
 /// A lasso (a line) or a brush stroke (a translucent band as wide as the brush) of the
@@ -74,12 +83,4 @@ pub fn pen_ring(ui: &egui::Ui, at: egui::Pos2) {
         egui::Stroke::new(3.0, egui::Color32::from_black_alpha(140)),
     );
     painter.circle_stroke(at, 5.0, egui::Stroke::new(1.5, egui::Color32::WHITE));
-}
-
-/// What to do first, at the bottom of an empty view.
-pub fn first_hint(ui: &egui::Ui, viewport: egui::Rect) {
-    let text = "Draw a closed outline to make a shape. Two fingers or right-drag orbit.";
-    let galley = centered_galley(ui, viewport, text, egui::Color32::from_white_alpha(110));
-    let pos = viewport.center_bottom() - egui::vec2(0.0, 40.0 + galley.size().y);
-    ui.painter().galley(pos, galley, egui::Color32::WHITE);
 }

@@ -39,6 +39,7 @@ pub async fn start(canvas_id: String) -> Result<(), JsValue> {
             Box::new(move |cc| {
                 let mut app = SketchApp::new(cc);
                 app.set_coarse_pointer(is_pointer_coarse());
+                app.start_intro(crate::page_store::intro_seen());
                 let ctx = cc.egui_ctx.clone();
                 let pointer =
                     WebPointer::listen(&listen_on, app.pointer.web_samples.clone(), move || {
@@ -83,6 +84,20 @@ fn tell_the_page_on_panic() {
             let _ = notice.call1(&JsValue::NULL, &JsValue::from_str(&sentence));
         }
     }));
+}
+
+/// The status line as the page API gives it: `{text, kind}`.
+#[derive(serde::Serialize)]
+struct StatusJs<'a> {
+    text: &'a str,
+    kind: crate::status::Tone,
+}
+
+/// The introduction as the page API gives it: `{step, skip: [x, y]}`.
+#[derive(serde::Serialize)]
+struct IntroJs {
+    step: u8,
+    skip: Option<[f32; 2]>,
 }
 
 fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(), JsValue> {
@@ -141,6 +156,31 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
     set(
         "layout",
         getter(move || json(&crate::panels::readout::read(&c))),
+    )?;
+    let s = shared.clone();
+    set(
+        "hint",
+        getter(move || Ok(JsValue::from_str(&s.borrow().hint))),
+    )?;
+    let s = shared.clone();
+    set(
+        "status",
+        getter(move || {
+            let shared = s.borrow();
+            let said = (shared.status.as_ref()).map(|(text, kind)| StatusJs { text, kind: *kind });
+            json(&said)
+        }),
+    )?;
+    let s = shared.clone();
+    set(
+        "intro",
+        getter(move || {
+            let intro = s.borrow().intro.map(|(step, skip)| IntroJs {
+                step,
+                skip: skip.map(|at| [at.x, at.y]),
+            });
+            json(&intro)
+        }),
     )?;
     let s = shared.clone();
     set(

@@ -101,12 +101,24 @@ pub struct InputRouter {
     pen_hover: Option<Pos2>,
     /// When [`InputRouter::poll`] last ran.
     last_poll: f64,
+    /// The kind of the last pointer seen.
+    last_kind: Option<PointerKind>,
 }
 
 impl InputRouter {
     /// Whether a pen has been seen, so touch only navigates.
     pub fn pen_seen(&self) -> bool {
         self.pen_seen
+    }
+
+    /// The kind of pointer the user works with, as hints name it: the last one seen, except
+    /// that a finger after a pen only moves the view, so the pen stays the one that draws.
+    /// `None` before any pointer.
+    pub fn device(&self) -> Option<PointerKind> {
+        match self.last_kind {
+            Some(PointerKind::Touch) if self.pen_seen => Some(PointerKind::Pen),
+            kind => kind,
+        }
     }
 
     /// Where the pen hovers over the view, when the browser reports it.
@@ -147,6 +159,7 @@ impl InputRouter {
     /// Routes one sample. `starts_in_viewport` says whether a `Down` lands on the 3D view
     /// rather than on a panel; samples of pointers that went down elsewhere are dropped.
     pub fn route(&mut self, s: &PointerSample, starts_in_viewport: bool, out: &mut Vec<Routed>) {
+        self.last_kind = Some(s.kind);
         if s.kind == PointerKind::Pen {
             if !self.pen_seen {
                 self.pen_seen = true;
@@ -454,6 +467,19 @@ mod tests {
             out,
             vec![Routed::Nav(NavAction::Orbit(egui::vec2(50.0, 20.0)))]
         );
+        // The finger only turned the view: the pen is still what draws, and hints say so.
+        assert_eq!(router.device(), Some(pen));
+    }
+
+    #[test]
+    fn the_device_is_the_last_pointer_seen() {
+        let mut router = InputRouter::default();
+        assert_eq!(router.device(), None);
+        route_all(&mut router, &one_finger_drag(2));
+        assert_eq!(router.device(), Some(PointerKind::Touch));
+        let mouse = PointerKind::Mouse;
+        route_all(&mut router, &[sample(1, mouse, Phase::Move, 5.0, 5.0)]);
+        assert_eq!(router.device(), Some(mouse));
     }
 
     #[test]

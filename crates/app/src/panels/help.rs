@@ -162,8 +162,16 @@ impl Pointer {
 const ICON: f32 = 24.0;
 
 /// Shows the help window while `open` is set: the pointer in use first, a pen once one is
-/// seen (`pen_seen`), else a finger where the screen's main pointer is `coarse`.
-pub fn help_ui(ctx: &egui::Context, open: &mut bool, backend: &str, pen_seen: bool, coarse: bool) {
+/// seen (`pen_seen`), else a finger where the screen's main pointer is `coarse`. Returns
+/// whether the user asked to see the introduction again.
+pub fn help_ui(
+    ctx: &egui::Context,
+    open: &mut bool,
+    backend: &str,
+    pen_seen: bool,
+    coarse: bool,
+) -> bool {
+    let mut intro = false;
     let shown = egui::Window::new("Help")
         .open(open)
         .collapsible(false)
@@ -172,13 +180,17 @@ pub fn help_ui(ctx: &egui::Context, open: &mut bool, backend: &str, pen_seen: bo
         .max_width(ctx.content_rect().width() - 2.0 * SCREEN_MARGIN)
         .max_height(ctx.content_rect().height() * MAX_HEIGHT_SHARE)
         .show(ctx, |ui| {
-            if ui
-                .button("Open the user guide")
-                .on_hover_text("Every tool with a pen, a finger and a mouse, in a new tab")
-                .clicked()
-            {
-                ui.ctx().open_url(egui::OpenUrl::new_tab(GUIDE_URL));
-            }
+            // One row, so the list below keeps the height `HEADER` leaves it.
+            ui.horizontal(|ui| {
+                if ui
+                    .button("User guide")
+                    .on_hover_text("Every tool with a pen, a finger and a mouse, in a new tab")
+                    .clicked()
+                {
+                    ui.ctx().open_url(egui::OpenUrl::new_tab(GUIDE_URL));
+                }
+                intro = ui.button("Show the introduction").clicked();
+            });
             ui.add_space(8.0);
             let order = Pointer::in_order(pen_seen, coarse);
             // As tall as the window may be: egui would keep a scrolled list short.
@@ -196,6 +208,7 @@ pub fn help_ui(ctx: &egui::Context, open: &mut bool, backend: &str, pen_seen: bo
             max_offset: (scrolled.content_size.y - scrolled.inner_rect.height()).max(0.0),
         });
     readout::update(ctx, |r| r.help = scroll);
+    intro
 }
 
 /// The tools in their groups, the gestures of each pointer, the keys, and the state of the

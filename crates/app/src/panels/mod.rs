@@ -4,6 +4,7 @@
 pub mod context_menu;
 pub mod falloff;
 pub mod help;
+pub mod intro;
 pub mod notes;
 pub mod progress;
 pub mod readout;
@@ -19,4 +20,6 @@ pub struct PanelState {
     pub falloff: falloff::FalloffPanel,
     /// Whether the help window is open.
     pub show_help: bool,
+    /// The first visit's introduction.
+    pub intro: intro::Intro,
 }

@@ -10,10 +10,11 @@
 
 mod context;
 pub mod draw;
+pub mod hint;
 pub mod icon;
 pub mod registry;
 #[cfg(test)]
-mod test_support;
+pub(crate) mod test_support;
 pub mod tool;
 
 use egui::Key;
@@ -23,6 +24,7 @@ use sketchmesh_core::document::{Document, Edit, Op};
 
 pub use crate::input::router::{Hands, ToolEvent};
 pub use context::{ToolOutput, ViewCtx};
+pub use hint::{Device, Hint};
 pub use icon::Icon;
 pub use registry::Mode;
 pub use tool::{Gestures, Group, Mark, Scene, Tool, ToolInfo};
@@ -93,6 +95,11 @@ impl ToolSet {
         }
     }
 
+    /// What the edit in progress says in place of the hint, by the tool whose op it is.
+    pub fn edit_line(&self, edit: &Edit) -> Option<String> {
+        (self.tools.iter()).find_map(|tool| tool.edit_line(edit))
+    }
+
     /// What the tools say once an edit of `op` has landed.
     pub fn report(&self, op: &Op, before: &Document, after: &Document) -> Option<String> {
         (self.tools.iter()).find_map(|tool| tool.report(op, before, after))
@@ -136,9 +143,32 @@ impl ToolSet {
         self.active_mut().on_key(key, doc)
     }
 
-    /// What the active tool asks the user to do next, if anything.
-    pub fn hint(&self, doc: &Document) -> Option<&'static str> {
-        self.active().hint(doc)
+    /// What the active tool asks the user to do next, in `device`'s words; while there is
+    /// nothing it can work on, which tool makes shapes.
+    pub fn hint(&self, doc: &Document, device: Device) -> Hint {
+        match self.waits_for_a_shape(doc) {
+            true => self.needs_a_shape(device),
+            false => self.active().hint(doc, device),
+        }
+    }
+
+    /// Whether the tool in use needs a shape and the document has nothing to work on.
+    fn waits_for_a_shape(&self, doc: &Document) -> bool {
+        let nothing = doc.models.is_empty() && doc.point_clouds.is_empty();
+        nothing && !self.active().makes_shapes()
+    }
+
+    /// The tool in use needs a shape: which tool makes one, and how.
+    fn needs_a_shape(&self, device: Device) -> Hint {
+        let maker = (Mode::ALL.into_iter())
+            .find(|&mode| self.tool(mode).makes_shapes())
+            .unwrap_or_default();
+        let key = match device.has_keys() {
+            true => format!(" ({})", maker.key().name()),
+            false => String::new(),
+        };
+        let maker = format!("{}{key}", maker.label());
+        hint::needs_a_shape(self.active().info().label, device, &maker)
     }
 
     /// Drops any gesture in progress in every tool; see [`ToolSet::set_mode`].
@@ -149,9 +179,22 @@ impl ToolSet {
             .unwrap_or(ToolOutput::None)
     }
 
-    /// Feeds one event to the active tool.
+    /// Feeds one event to the active tool. A stroke drawn while the tool in use waits for a
+    /// shape is refused at its end with the hint's words, which name the tool that makes
+    /// shapes. It does not make the shape itself: tldraw, Procreate and Nomad never switch
+    /// tools behind the user's back, and a Pull that sometimes sketches would make the
+    /// toolbar's choice mean nothing; redrawing an outline in Sketch costs a second.
     pub fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, doc: &Document) -> ToolOutput {
-        self.active_mut().on_event(event, view, doc)
+        if !self.waits_for_a_shape(doc) {
+            return self.active_mut().on_event(event, view, doc);
+        }
+        match event {
+            ToolEvent::End(sample) => {
+                let hint = self.needs_a_shape(Device::of(Some(sample.kind), false));
+                ToolOutput::Refused(format!("{hint}."))
+            }
+            _ => ToolOutput::None,
+        }
     }
 
     /// Feeds two fingers to the active tool.
@@ -174,5 +217,93 @@ impl ToolSet {
     /// in.
     pub fn marks(&self, camera: &Camera) -> Vec<Mark> {
         self.active().marks(camera)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use sketchmesh_core::document::Editor;
+
+    use super::*;
+    use crate::tools::test_support::{line, shape, stroke, stroke_events, view};
+
+    /// Every tool says what to do on an empty document, differently for each device; those
+    /// that cannot work on nothing name the tool that makes shapes.
+    #[test]
+    fn every_tool_says_what_to_do_on_an_empty_document_in_each_devices_words() {
+        let empty = Editor::new();
+        let mut tools = ToolSet::default();
+        for mode in Mode::ALL {
+            let _ = tools.set_mode(mode);
+            let said: Vec<Hint> = [Device::Pen, Device::Finger, Device::Mouse]
+                .map(|device| tools.hint(empty.document(), device))
+                .into();
+            for (hint, words) in
+                said.iter()
+                    .zip(["with the pen", "with one finger", "with the mouse"])
+            {
+                assert!(hint.contains(words), "{mode:?}: {hint}");
+                assert!(hint.contains("closed outline"), "{mode:?}: {hint}");
+                assert!(!hint.contains('{'), "{mode:?} left a placeholder: {hint}");
+            }
+            if mode != Mode::Sketch {
+                assert!(said[0].contains("Sketch"), "{mode:?}: {}", said[0]);
+            }
+        }
+    }
+
+    /// With a shape, every tool in its first stage asks for something of its own, with no
+    /// placeholder left; the curve tools name the curves.
+    #[test]
+    fn every_tool_has_a_hint_of_its_own_on_a_shape() {
+        let editor = shape();
+        let mut tools = ToolSet::default();
+        let mut seen = Vec::new();
+        for mode in Mode::ALL {
+            let _ = tools.set_mode(mode);
+            let hint = tools.hint(editor.document(), Device::Mouse).into_owned();
+            assert!(!hint.is_empty() && !hint.contains('{'), "{mode:?}: {hint}");
+            assert!(
+                !hint.contains("none yet"),
+                "{mode:?} sees the shape: {hint}"
+            );
+            assert!(
+                !seen.contains(&hint),
+                "{mode:?} repeats another tool's hint: {hint}"
+            );
+            seen.push(hint);
+        }
+    }
+
+    /// A closed outline drawn in Pull on an empty document makes nothing and is refused
+    /// with a sentence naming the tool that makes shapes.
+    #[test]
+    fn an_outline_in_pull_on_nothing_is_refused_naming_sketch() {
+        let empty = Editor::new();
+        let mut tools = ToolSet::default();
+        let _ = tools.set_mode(Mode::Pull);
+        let mut loop_ = line((300.0, 300.0), (400.0, 300.0), 5);
+        loop_.extend(line((400.0, 300.0), (350.0, 380.0), 5));
+        loop_.extend(line((350.0, 380.0), (300.0, 300.0), 5));
+        let v = view();
+        let outputs: Vec<ToolOutput> = (stroke_events(&loop_).iter())
+            .map(|event| tools.on_event(event, &v, empty.document()))
+            .collect();
+        let Some(ToolOutput::Refused(said)) = outputs.last() else {
+            panic!("the outline is refused: {outputs:?}");
+        };
+        assert!(said.contains("Sketch") && said.ends_with('.'), "{said}");
+        assert!(
+            outputs[..outputs.len() - 1]
+                .iter()
+                .all(|o| *o == ToolOutput::None)
+        );
+        // The shape is not made: the sketch tool would make it.
+        let mut sketch = Mode::Sketch.tool();
+        let made = stroke(sketch.as_mut(), empty.document(), &loop_);
+        assert!(
+            matches!(made.last(), Some(ToolOutput::Commit(_))),
+            "{made:?}"
+        );
     }
 }

@@ -53,6 +53,13 @@ pub fn shape() -> Editor {
 /// [`view`]: what it answered to the pointer going down, to each move, and to the release.
 pub fn stroke(tool: &mut dyn Tool, doc: &Document, points: &[(f32, f32)]) -> Vec<ToolOutput> {
     let v = view();
+    (stroke_events(points).iter())
+        .map(|event| tool.on_event(event, &v, doc))
+        .collect()
+}
+
+/// The events of a pen stroke through `points` (see [`stroke`]).
+pub fn stroke_events(points: &[(f32, f32)]) -> Vec<ToolEvent> {
     let last = points.len() - 1;
     let mut events: Vec<ToolEvent> = (points.iter().enumerate())
         .map(|(k, &(x, y))| match k {
@@ -65,9 +72,7 @@ pub fn stroke(tool: &mut dyn Tool, doc: &Document, points: &[(f32, f32)]) -> Vec
         let (x, y) = points[0];
         events.push(ToolEvent::End(pen(Phase::Up, x, y)));
     }
-    (events.iter())
-        .map(|event| tool.on_event(event, &v, doc))
-        .collect()
+    events
 }
 
 /// `n + 1` points from `from` to `to`, evenly spaced.

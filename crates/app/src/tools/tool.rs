@@ -8,6 +8,7 @@ use sketchmesh_core::curve::StrokePoint;
 use sketchmesh_core::document::{Document, Edit, Op};
 
 use super::context::{ToolOutput, ViewCtx};
+use super::hint::{Device, Hint};
 use super::icon::Icon;
 use crate::input::router::{Hands, ToolEvent};
 
@@ -142,7 +143,8 @@ pub struct Mark {
 
 /// A tool: a state machine (an enum of its stages) that turns pointer events into
 /// [`ToolOutput`]s, with its options panel and what it draws over the view. Everything but
-/// [`Tool::info`], [`Tool::on_event`] and [`Tool::cancel`] has a default that does nothing.
+/// [`Tool::info`], [`Tool::on_event`], [`Tool::cancel`] and [`Tool::hint`] has a default
+/// that does nothing.
 pub trait Tool: std::fmt::Debug {
     /// Its name, icon, key and one-line description.
     fn info(&self) -> &'static ToolInfo;
@@ -173,15 +175,29 @@ pub trait Tool: std::fmt::Debug {
     /// (a feature's amount, a fine shape's outline while the worker computes it).
     fn edit_overlay(&self, _ui: &egui::Ui, _scene: &Scene<'_>) {}
 
+    /// What the edit in progress says, if it is of an op this tool makes (a feature's
+    /// amount): shown in place of the hint, whichever tool is in use.
+    fn edit_line(&self, _edit: &Edit) -> Option<String> {
+        None
+    }
+
     /// What to tell the user once an edit of an op it makes has landed (`before` is the
     /// document it began from).
     fn report(&self, _op: &Op, _before: &Document, _after: &Document) -> Option<String> {
         None
     }
 
-    /// What it asks the user to do next, if anything.
-    fn hint(&self, _doc: &Document) -> Option<&'static str> {
-        None
+    /// What it asks the user to do next, in `device`'s words ([`Device::say`]): one short
+    /// line in every stage, naming the conditions its op will check (a loop near the
+    /// outline, a half-turn of the view) before a refusal has to. Asked only while the
+    /// document has something to work on, unless it [`Tool::makes_shapes`].
+    fn hint(&self, doc: &Document, device: Device) -> Hint;
+
+    /// Whether it works on an empty document, making shapes. The others, while there is
+    /// nothing to work on, say which tool makes shapes instead of their hint, and refuse a
+    /// stroke with that sentence (see `ToolSet::on_event`).
+    fn makes_shapes(&self) -> bool {
+        false
     }
 
     /// The stroke in progress, for live display.

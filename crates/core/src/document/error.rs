@@ -100,7 +100,9 @@ pub enum CommandError {
     #[error("{0}")]
     Remesh(#[from] RemeshError),
     /// The surface could not be re-optimized through its curves.
-    #[error("The surface could not be re-optimized: {0}")]
+    #[error(
+        "The surface could not follow its curves after that change; undo it and try a smaller one."
+    )]
     Surface(SolveError),
     /// An op names a model the document does not have.
     #[error("There is no model {0} in the document.")]

@@ -32,7 +32,9 @@ pub enum FeatureError {
     #[error("The amount of the feature is not a number.")]
     AmountNotFinite,
     /// The region could not be solved.
-    #[error("The surface around the sketch could not be solved: {0}")]
+    #[error(
+        "The surface around the sketch could not take that feature; draw it shorter or on a smoother part."
+    )]
     Deform(#[from] DeformError),
 }
 

@@ -26,7 +26,7 @@ pub enum CreateError {
     #[error("The stroke cannot be placed in the scene from this view; reset the camera.")]
     BadView,
     /// A sparse solve failed.
-    #[error("The surface could not be computed: {0}")]
+    #[error("The surface could not be computed for that outline; draw a simpler, rounder one.")]
     Solve(SolveError),
     /// The stitched mesh is broken (a bug).
     #[error("The surface mesh could not be built: {0}")]

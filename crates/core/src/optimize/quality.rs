@@ -38,16 +38,17 @@ pub struct QualityReport {
 }
 
 impl QualityReport {
-    /// One sentence for the user: the radius ratios before and after, and how far the
+    /// One sentence for the user, in plain words: how even the triangles are before and
+    /// after (the radius ratio as a percentage of an equilateral triangle's), and how far the
     /// surface moved.
     pub fn summary(&self) -> String {
         format!(
-            "Radius ratio: worst {:.2} → {:.2}, mean {:.2} → {:.2}; moved at most {:.2}% of the \
-             size.",
-            self.input_min_radius_ratio,
-            self.min_radius_ratio,
-            self.input_mean_radius_ratio,
-            self.mean_radius_ratio,
+            "The most uneven triangle went from {:.0}% to {:.0}% even, the average from {:.0}% \
+             to {:.0}%; the surface moved at most {:.2}% of the model's size.",
+            100.0 * self.input_min_radius_ratio,
+            100.0 * self.min_radius_ratio,
+            100.0 * self.input_mean_radius_ratio,
+            100.0 * self.mean_radius_ratio,
             100.0 * self.hausdorff_relative
         )
     }

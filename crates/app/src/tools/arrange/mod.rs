@@ -19,6 +19,7 @@ use sketchmesh_core::document::{
 use crate::input::router::{Hands, ToolEvent};
 use crate::tools::context::{ToolOutput, ViewCtx};
 use crate::tools::draw::point;
+use crate::tools::hint::{Device, Hint};
 use crate::tools::tool::{Gestures, Group, Scene, Tool, ToolInfo};
 
 /// The move tool's name, icon, key and description.
@@ -259,13 +260,18 @@ impl ArrangeTool {
     }
 
     /// What the tool asks the user to do next.
-    pub fn hint(&self, doc: &Document) -> Option<&'static str> {
+    pub fn hint(&self, doc: &Document, device: Device) -> Hint {
+        let two_fingers = match device {
+            Device::Mouse => "",
+            Device::Pen | Device::Finger => "; or twist and pinch with two fingers",
+        };
         match self.selected.filter(|&i| i < doc.models.len()) {
-            None => Some("Tap a model to move, turn or scale it"),
-            Some(_) if self.drag.is_none() => Some(
-                "Drag the model to move it, the ring to turn it, the square to scale it; or twist and pinch with two fingers",
-            ),
-            Some(_) => None,
+            None => device.say("{Tap} a model to move, turn or scale it"),
+            Some(_) if self.drag.is_none() => device.say(format!(
+                "Drag the model to move it, the ring to turn it, the square to scale it{two_fingers}. \
+                 To merge, move it into another until they overlap, then Merge"
+            )),
+            Some(_) => device.say("Let go to keep it there"),
         }
     }
 
@@ -385,8 +391,8 @@ impl Tool for ArrangeTool {
         painter.rect_filled(square, 3.0, colour(GizmoHandle::Scale));
     }
 
-    fn hint(&self, doc: &Document) -> Option<&'static str> {
-        ArrangeTool::hint(self, doc)
+    fn hint(&self, doc: &Document, device: Device) -> Hint {
+        ArrangeTool::hint(self, doc, device)
     }
 
     /// Delete and Backspace delete the selected model.

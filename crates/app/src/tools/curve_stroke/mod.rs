@@ -9,6 +9,7 @@ use sketchmesh_core::document::{CurveTypeInput, Document, Op, curve_type_toggle}
 use crate::input::router::ToolEvent;
 use crate::tools::context::{ToolOutput, ViewCtx};
 use crate::tools::draw::DrawTool;
+use crate::tools::hint::{Device, Hint, NO_CURVES, has_curves};
 use crate::tools::tool::{Gestures, Group, Tool, ToolInfo};
 
 /// Which of the three tools a stroke along curves is.
@@ -121,6 +122,26 @@ impl Tool for CurveStrokeTool {
     fn cancel(&mut self) -> ToolOutput {
         self.draw = DrawTool::Idle;
         ToolOutput::None
+    }
+
+    /// What a stroke along curves does with this tool, and when it happens.
+    fn hint(&self, doc: &Document, device: Device) -> Hint {
+        if !has_curves(doc) {
+            return device.say(NO_CURVES);
+        }
+        let drawing = self.draw.preview().is_some();
+        device.say(match (self.kind, drawing) {
+            (Kind::Erase, false) => {
+                "Drag {with} along a control curve (a blue or red line) to remove it; {orbit}"
+            }
+            (Kind::CurveType, false) => {
+                "Drag {with} along a control curve to switch it: blue is smooth, red is sharp"
+            }
+            (Kind::Rub, false) => "Rub back and forth {with} along a control curve to smooth it",
+            (Kind::Erase, true) => "Let go to remove the curves under the stroke",
+            (Kind::CurveType, true) => "Let go to switch the curves under the stroke",
+            (Kind::Rub, true) => "Keep rubbing, then let go: the curve smooths",
+        })
     }
 
     /// The stroke being drawn.

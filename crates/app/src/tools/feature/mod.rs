@@ -21,10 +21,10 @@ use sketchmesh_core::document::{
 use sketchmesh_core::feature::FeatureKind;
 
 use crate::input::router::ToolEvent;
-use crate::overlay::hint_ui;
 use crate::tools::context::{ToolOutput, ViewCtx};
 use crate::tools::draw::{DrawTool, is_tap, point};
-use crate::tools::tool::{Gestures, Group, Mark, Scene, Tool, ToolInfo};
+use crate::tools::hint::{Device, Hint};
+use crate::tools::tool::{Gestures, Group, Mark, Tool, ToolInfo};
 
 /// The feature tool's name, icon, key and description.
 static INFO: ToolInfo = ToolInfo {
@@ -188,19 +188,20 @@ impl FeatureTool {
         region.chain(sketch).collect()
     }
 
-    /// What the tool asks the user to do next.
-    pub fn hint(&self) -> Option<&'static str> {
+    /// What the tool asks the user to do next (while dragging, the amount shows instead:
+    /// see `feature_amount`).
+    pub fn hint(&self) -> &'static str {
         match (&self.stage, &self.region) {
-            (Stage::Sketching, None) => Some(
-                "Sketch on a model where the feature goes (a closed loop first sets the region \
-                 that may move)",
-            ),
-            (Stage::Sketching, Some(_)) => Some("Now sketch the feature inside the region"),
-            (Stage::Sketched(input), _) => Some(match input.kind {
-                FeatureKind::Suggestive => "Drag left or right to turn; release to apply",
-                _ => "Drag up to raise, down to lower; release to apply",
-            }),
-            (Stage::Dragging(..), _) => None,
+            (Stage::Sketching, None) => {
+                "Draw {with} on a model where the feature goes (a closed loop first sets the \
+                 part that may move)"
+            }
+            (Stage::Sketching, Some(_)) => "Now draw the feature inside the loop",
+            (Stage::Sketched(input) | Stage::Dragging(input, _), _) => match input.kind {
+                FeatureKind::Suggestive => "Drag left or right to turn; let go to apply",
+                FeatureKind::Flatten => "Drag to flatten; let go to apply",
+                _ => "Drag up to raise, down to lower; let go to apply",
+            },
         }
     }
 
@@ -270,14 +271,12 @@ impl Tool for FeatureTool {
     }
 
     /// A feature drag's amount as the user reads it, and where folding holds it back.
-    fn edit_overlay(&self, ui: &egui::Ui, scene: &Scene<'_>) {
-        if let Some(amount) = scene.edit.and_then(feature_amount) {
-            hint_ui(ui, scene.viewport, &amount);
-        }
+    fn edit_line(&self, edit: &Edit) -> Option<String> {
+        feature_amount(edit)
     }
 
-    fn hint(&self, _doc: &Document) -> Option<&'static str> {
-        FeatureTool::hint(self)
+    fn hint(&self, _doc: &Document, device: Device) -> Hint {
+        device.say(FeatureTool::hint(self))
     }
 
     fn preview(&self) -> Option<&[StrokePoint]> {
@@ -299,18 +298,25 @@ fn feature_amount(edit: &Edit) -> Option<String> {
         return None;
     };
     let say = |amount: f64| match input.kind {
-        FeatureKind::Suggestive => format!("{amount:.0}°"),
+        FeatureKind::Suggestive => format!("turned {amount:.0}°"),
         FeatureKind::Flatten => String::from("flat"),
-        _ => format!("× {amount:.1}"),
+        _ if amount >= 1.0 => format!("raised {:.0}%", 100.0 * (amount - 1.0)),
+        _ if amount >= 0.0 => format!("softened {:.0}%", 100.0 * (1.0 - amount)),
+        _ => String::from("sunk in"),
     };
     let asked = say(input.amount());
-    Some(match edit.limited_amount() {
+    let said = match edit.limited_amount() {
         Some(held) => format!(
-            "{asked}: held at {}, more would fold the surface over",
+            "Held at {}: more would fold the surface over; let go to apply",
             say(held)
         ),
-        None => asked,
-    })
+        None => format!(
+            "{}{}; let go to apply",
+            asked[..1].to_uppercase(),
+            &asked[1..]
+        ),
+    };
+    Some(said)
 }
 
 #[cfg(test)]

@@ -22,6 +22,7 @@ use sketchmesh_core::skeleton::HandleKind;
 use crate::input::router::ToolEvent;
 use crate::tools::context::{ToolOutput, ViewCtx};
 use crate::tools::draw::{DrawTool, is_tap, point};
+use crate::tools::hint::{Device, Hint};
 use crate::tools::tool::{Gestures, Group, Scene, Tool, ToolInfo};
 
 /// The bend tool's name, icon, key and description.
@@ -268,22 +269,26 @@ impl HandlesTool {
     }
 
     /// What the tool asks the user to do next.
-    pub fn hint(&self, doc: &Document) -> Option<&'static str> {
-        if !matches!(self.stage, Stage::Idle) {
-            return None;
+    pub fn hint(&self, doc: &Document) -> &'static str {
+        match self.stage {
+            Stage::Idle => {}
+            Stage::Dragging(_) => return "Let go to keep the part where it is",
+            Stage::Tapped => return "Lift to finish the tap",
         }
-        Some(match (self.drag_use, doc.handles.is_empty()) {
-            (_, true) => "Draw along a part of a model or point cloud: it becomes a curve handle",
-            (DragUse::Link, _) if self.selected.is_some() => {
-                "Now tap a dot of another handle to link them"
+        match (self.drag_use, doc.handles.is_empty()) {
+            (_, true) => {
+                "Draw {with} along a part of a model or point cloud: it becomes a curve handle"
             }
-            (DragUse::Link, _) => "Tap a dot of one handle, then a dot of another, to link them",
+            (DragUse::Link, _) if self.selected.is_some() => {
+                "Now {tap} a dot of another handle to link them"
+            }
+            (DragUse::Link, _) => "{Tap} a dot of one handle, then a dot of another, to link them",
             (DragUse::Move, _) => {
                 "Drag a handle's dot to bend the part; draw again for another handle"
             }
             (DragUse::Twist, _) => "Drag a handle's dot sideways to twist the part",
             (DragUse::Scale, _) => "Drag a handle's dot up to widen the part, down to narrow it",
-        })
+        }
     }
 
     /// The panel: the kind of a new handle, its control points, rigid limbs, what a drag
@@ -416,8 +421,8 @@ impl Tool for HandlesTool {
         draw::curve_handles_ui(ui, viewport, scene.shown, camera, dragged, self.selected());
     }
 
-    fn hint(&self, doc: &Document) -> Option<&'static str> {
-        HandlesTool::hint(self, doc)
+    fn hint(&self, doc: &Document, device: Device) -> Hint {
+        device.say(HandlesTool::hint(self, doc))
     }
 
     fn preview(&self) -> Option<&[StrokePoint]> {

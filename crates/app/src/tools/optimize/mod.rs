@@ -24,6 +24,7 @@ use sketchmesh_core::optimize::{
 use crate::input::router::ToolEvent;
 use crate::tools::context::{ToolOutput, ViewCtx};
 use crate::tools::draw::{DrawTool, is_tap};
+use crate::tools::hint::{Device, Hint};
 use crate::tools::tool::{Gestures, Group, Mark, Tool, ToolInfo};
 use crate::ui_size::target_size;
 
@@ -244,12 +245,17 @@ impl OptimizeTool {
         self.clear_marks();
     }
 
-    /// What the tool asks for while no model is previewed.
-    pub fn hint(&self) -> Option<&'static str> {
-        self.model.is_none().then_some(
-            "Tap a model, or draw a lasso around or paint over part of one, to preview its \
-             optimization",
-        )
+    /// What the tool asks for: a model to preview, then to keep or drop the preview.
+    pub fn hint(&self) -> &'static str {
+        match self.model {
+            None => {
+                "{Tap} a model, or draw a lasso around or paint over part of one, to preview \
+                 better triangles"
+            }
+            Some(_) => {
+                "Compare, then Apply{enter} to keep it or Cancel; draw more to widen what moves"
+            }
+        }
     }
 
     /// The panel: the kind and the amount, Apply and Cancel, the strokes' use and brush,
@@ -507,8 +513,8 @@ impl Tool for OptimizeTool {
         Some(quality_report(&before.mesh, after.mesh.positions()).summary())
     }
 
-    fn hint(&self, _doc: &Document) -> Option<&'static str> {
-        OptimizeTool::hint(self)
+    fn hint(&self, _doc: &Document, device: Device) -> Hint {
+        device.say(OptimizeTool::hint(self))
     }
 
     fn preview(&self) -> Option<&[StrokePoint]> {
@@ -577,7 +583,10 @@ mod tests {
         let editor = shape();
         let doc = editor.document();
         let mut tool = OptimizeTool::default();
-        assert!(Tool::hint(&tool, doc).is_some(), "it asks for a model");
+        assert!(
+            Tool::hint(&tool, doc, Device::Pen).contains("a model"),
+            "it asks for a model"
+        );
         let tapped = stroke(&mut tool, doc, &[(400.0, 340.0)]).pop().unwrap();
         let input = optimize_op(&tapped);
         assert!(
@@ -587,7 +596,10 @@ mod tests {
         assert_eq!(input.model, 0);
         assert!(input.region.is_none(), "a tap optimizes all of the model");
         assert_eq!(input.settings, OptimizeParams::default());
-        assert!(Tool::hint(&tool, doc).is_none(), "a preview is open");
+        assert!(
+            Tool::hint(&tool, doc, Device::Pen).contains("Apply"),
+            "a preview is open"
+        );
         assert_eq!(tool.on_key(Key::Enter, doc), ToolOutput::Finish);
         assert_eq!(
             tool.on_key(Key::Enter, doc),

@@ -28,6 +28,7 @@ use crate::input::router::ToolEvent;
 use crate::overlay::outline_ui;
 use crate::tools::context::{ToolOutput, ViewCtx};
 use crate::tools::draw::{DrawTool, point};
+use crate::tools::hint::{Device, Hint};
 use crate::tools::tool::{Gestures, Group, Scene, Tool, ToolInfo};
 
 use settings::OversketchSettings;
@@ -249,18 +250,24 @@ impl OversketchTool {
         self.handle.as_ref().filter(|_| !is_stale_pick)
     }
 
-    /// What to do next in manual mode, for the viewport to show.
-    pub fn hint(&self) -> Option<&'static str> {
+    /// What to do next: in manual mode, pick then redraw; else redraw the outline.
+    pub fn hint(&self) -> &'static str {
         if !self.settings.manual {
-            return None;
+            return match self.preview() {
+                None => {
+                    "Draw {with} where a model's outline should be, along it: the outline moves \
+                     to your stroke (green: it is sure which part; orange: draw nearer the outline)"
+                }
+                Some(_) => "Let go to move the outline to your stroke",
+            };
         }
-        Some(match (&self.picked, &self.handle) {
+        match (&self.picked, &self.handle) {
             (None, _) => "Draw along an outline, or across the model, to pick what moves",
             (Some(_), Some(h)) if h.croppable => {
                 "Draw along the outline from a dot to crop it, or draw its new shape"
             }
             (Some(_), _) => "Now draw its new position",
-        })
+        }
     }
 
     /// The picked handle as it resolves on the first model it finds.
@@ -305,8 +312,8 @@ impl Tool for OversketchTool {
         }
     }
 
-    fn hint(&self, _doc: &Document) -> Option<&'static str> {
-        OversketchTool::hint(self)
+    fn hint(&self, _doc: &Document, device: Device) -> Hint {
+        device.say(OversketchTool::hint(self))
     }
 
     fn preview(&self) -> Option<&[sketchmesh_core::curve::StrokePoint]> {
@@ -481,7 +488,7 @@ mod tests {
         let (view, doc, _) = sphere_view();
         let mut tool = OversketchTool::default();
         tool.settings.manual = true;
-        assert!(tool.hint().unwrap().contains("pick"));
+        assert!(tool.hint().contains("pick"));
         let across: Vec<DVec2> = (0..=20)
             .map(|k| DVec2::new(400.0 + 10.0 * k as f64, 500.0))
             .collect();
@@ -491,7 +498,7 @@ mod tests {
         );
         let picked = tool.handle().unwrap();
         assert!(picked.confident && !picked.croppable && picked.points.len() > 10);
-        assert_eq!(tool.hint(), Some("Now draw its new position"));
+        assert_eq!(tool.hint(), "Now draw its new position");
         let higher: Vec<DVec2> = across.iter().map(|p| *p - DVec2::new(0.0, 30.0)).collect();
         let ToolOutput::Commit(Op::Oversketch(input)) =
             stroke_through(&mut tool, &view, &doc, &higher)

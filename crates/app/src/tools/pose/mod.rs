@@ -31,6 +31,7 @@ use crate::input::router::ToolEvent;
 use crate::overlay::outline_ui;
 use crate::tools::context::{ToolOutput, ViewCtx};
 use crate::tools::draw::{DrawTool, is_tap, point};
+use crate::tools::hint::{Device, Hint};
 use crate::tools::tool::{Gestures, Group, Mark, Scene, Tool, ToolInfo};
 
 /// The pose tool's name, icon, key and description.
@@ -367,10 +368,10 @@ impl PoseTool {
     }
 
     /// What the tool asks the user to do next.
-    pub fn hint(&self) -> Option<&'static str> {
-        Some(match (self.active, self.adding, &self.fixed) {
+    pub fn hint(&self) -> &'static str {
+        match (self.active, self.adding, &self.fixed) {
             (None, _, None) if self.curves.is_empty() => {
-                "Draw a control curve along a model (a closed loop off it first holds a part still)"
+                "Draw a control curve {with} along a model (a closed loop off it first holds a part still)"
             }
             (Some(_), false, _) if self.spline => {
                 "Drag the curve's control points; the model bends and keeps its volume"
@@ -382,7 +383,7 @@ impl PoseTool {
                 "Draw another control curve along the model; the others hold their place"
             }
             _ => "Now draw the control curve along the model",
-        })
+        }
     }
 
     /// The picked curves' buttons (which one is redrawn), **+ Curve**, **Clear**, **Spline**,
@@ -613,8 +614,8 @@ impl Tool for PoseTool {
         }
     }
 
-    fn hint(&self, _doc: &Document) -> Option<&'static str> {
-        PoseTool::hint(self)
+    fn hint(&self, _doc: &Document, device: Device) -> Hint {
+        device.say(PoseTool::hint(self))
     }
 
     fn playing(&mut self, is_playing: bool) {

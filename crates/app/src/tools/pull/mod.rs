@@ -10,6 +10,7 @@ use sketchmesh_core::document::{Document, Op, StrokeInput};
 use crate::input::router::ToolEvent;
 use crate::tools::context::{ToolOutput, ViewCtx};
 use crate::tools::draw::point;
+use crate::tools::hint::{Device, Hint, NO_CURVES, has_curves};
 use crate::tools::tool::{Gestures, Group, Tool, ToolInfo};
 
 /// The pull tool's name, icon, key and description.
@@ -72,6 +73,17 @@ impl Tool for PullTool {
 
     fn on_event(&mut self, event: &ToolEvent, view: &ViewCtx, _doc: &Document) -> ToolOutput {
         self.drag(event, view)
+    }
+
+    /// What to do: grab a curve; while dragging, let go to keep the shape.
+    fn hint(&self, doc: &Document, device: Device) -> Hint {
+        match (self.is_dragging, has_curves(doc)) {
+            (true, _) => device.say("The shape follows the curve; let go to keep it"),
+            (false, false) => device.say(NO_CURVES),
+            (false, true) => device.say(
+                "Drag a control curve (a blue or red line) {with}: the shape follows; {orbit}",
+            ),
+        }
     }
 
     /// Forgets the drag in progress (the app cancels its edit).

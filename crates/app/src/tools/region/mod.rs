@@ -39,6 +39,7 @@ pub use profile::ProfileView;
 use crate::input::router::ToolEvent;
 use crate::tools::context::{ToolOutput, ViewCtx};
 use crate::tools::draw::{DrawTool, is_tap, point};
+use crate::tools::hint::{Device, Hint};
 use crate::tools::tool::{Gestures, Group, Mark, Scene, Tool, ToolInfo};
 
 /// The region tool's name, icon, key and description.
@@ -586,16 +587,18 @@ impl RegionTool {
     }
 
     /// What the tool asks the user to do next.
-    pub fn hint(&self) -> Option<&'static str> {
+    pub fn hint(&self) -> &'static str {
         match self.stage {
-            Stage::Reference => Some("Draw a reference curve on a model: the part that moves most"),
-            Stage::Boundary(_) => Some(
-                "Now draw a closed loop around it (outside stays), or redraw part of the curve",
-            ),
-            Stage::Ready(_) if self.lassoing => {
-                Some("Draw a loop over the part of the region whose fall-off to change")
+            Stage::Reference => {
+                "Draw a reference curve {with} on a model: the part that moves most"
             }
-            Stage::Ready(_) => Some(match self.drag {
+            Stage::Boundary(_) => {
+                "Now draw a closed loop around it (outside stays), or redraw part of the curve"
+            }
+            Stage::Ready(_) if self.lassoing => {
+                "Draw a loop over the part of the region whose fall-off to change"
+            }
+            Stage::Ready(_) => match self.drag {
                 DragKind::Region(RegionDrag::Move) => {
                     "Drag: the region follows, fading out toward the boundary"
                 }
@@ -606,20 +609,22 @@ impl RegionTool {
                     "Drag up or down: the region grows or shrinks, fading out"
                 }
                 DragKind::Handles | DragKind::Profile => "Finding the region on the model…",
-            }),
-            Stage::Handles(_, false) => Some(
-                "Drag a handle's axis: near the handle moves, its middle scales, its end turns; tap the curve to add a handle",
-            ),
-            Stage::Handles(_, true) => {
-                Some("Drag more handles, or Apply (Enter) to keep the edit as one step")
+            },
+            Stage::Handles(_, false) => {
+                "Drag a handle's axis: near the handle moves, its middle scales, its end turns; {tap} the curve to add a handle"
             }
-            Stage::Profile(ref session) if session.drawn() => Some(
-                "Draw the cross-section again, or Apply (Enter) to keep it; the slider moves the plane",
-            ),
-            Stage::Profile(_) => Some(
-                "Draw a new cross-section over the one in the panel (from it, back to it); the slider moves the plane",
-            ),
-            Stage::Dragging(..) | Stage::Redrawing(_) | Stage::Lassoing(_) => None,
+            Stage::Handles(_, true) => {
+                "Drag more handles, or Apply{enter} to keep the edit as one step"
+            }
+            Stage::Profile(ref session) if session.drawn() => {
+                "Draw the cross-section again, or Apply{enter} to keep it; the slider moves the plane"
+            }
+            Stage::Profile(_) => {
+                "Draw a new cross-section over the one in the panel (from it, back to it); the slider moves the plane"
+            }
+            Stage::Dragging(..) => "Let go to keep the move as one step",
+            Stage::Redrawing(_) => "Let go: this part of the loop takes the new line",
+            Stage::Lassoing(_) => "Close the loop, then let go",
         }
     }
 
@@ -931,8 +936,8 @@ impl Tool for RegionTool {
         }
     }
 
-    fn hint(&self, _doc: &Document) -> Option<&'static str> {
-        RegionTool::hint(self)
+    fn hint(&self, _doc: &Document, device: Device) -> Hint {
+        device.say(RegionTool::hint(self))
     }
 
     fn preview(&self) -> Option<&[StrokePoint]> {
@@ -1020,7 +1025,7 @@ mod tests {
         let mut tool = RegionTool::default();
         let line = line_across(centre, 20);
         assert_eq!(stroke(&mut tool, doc, &line), ToolOutput::None);
-        assert!(tool.hint().unwrap().contains("loop"));
+        assert!(tool.hint().contains("loop"));
         // An open stroke from near the curve to near it redraws that part (3 px lower, so
         // its transitions, 6 gaps long, leave the curve's ends).
         let redraw: Vec<DVec2> = (0..=10)
@@ -1091,11 +1096,11 @@ mod tests {
         let view = view();
         let size = DVec2::new(view.viewport.width().into(), view.viewport.height().into());
         assert!(tool.handle_axes(&view.camera, size).is_empty());
-        assert!(tool.hint().unwrap().contains("Finding"));
+        assert!(tool.hint().contains("Finding"));
         find_region(&mut tool, &editor, opened);
         let axes = tool.handle_axes(&view.camera, size);
         assert!(axes.len() >= 6, "three handles with their axes: {axes:?}");
-        assert!(tool.hint().unwrap().contains("axis"));
+        assert!(tool.hint().contains("axis"));
         // Seen head-on, the middle handle's normal points at the viewer and is not offered;
         // its binormal (up the screen, across the curve) is pressed in its inner third and
         // dragged along it.
@@ -1140,7 +1145,7 @@ mod tests {
         tool.on_event(&ToolEvent::End(at(Phase::Up, tap)), &view, doc);
         assert_eq!(tool.confirm(), ToolOutput::Finish);
         assert!(tool.handle_axes(&view.camera, size).is_empty());
-        assert!(tool.hint().unwrap().contains("reference"));
+        assert!(tool.hint().contains("reference"));
     }
 
     #[test]
@@ -1284,7 +1289,7 @@ mod tests {
         };
         assert!(refusal.to_string().contains("boundary"), "{refusal}");
         tool.refused();
-        assert!(tool.hint().unwrap().contains("loop"), "{:?}", tool.hint());
+        assert!(tool.hint().contains("loop"), "{:?}", tool.hint());
         let marks = tool.marks(&view().camera);
         assert_eq!(marks.len(), 1, "the reference curve stays");
         // A loop around it now opens the edit with the same reference curve.
@@ -1311,6 +1316,6 @@ mod tests {
             .collect();
         let said = stroke(&mut tool, editor.document(), &far);
         assert!(matches!(said, ToolOutput::Refused(_)), "{said:?}");
-        assert!(tool.hint().unwrap().contains("reference"));
+        assert!(tool.hint().contains("reference"));
     }
 }

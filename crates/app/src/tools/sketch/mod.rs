@@ -15,9 +15,10 @@ use sketchmesh_core::document::{
 };
 
 use crate::input::router::ToolEvent;
-use crate::overlay::{hint_ui, stroke_ui};
+use crate::overlay::stroke_ui;
 use crate::tools::context::{ToolOutput, ViewCtx};
 use crate::tools::draw::{DrawTool, is_tap};
+use crate::tools::hint::{Device, Hint};
 use crate::tools::tool::{Gestures, Group, Scene, Tool, ToolInfo};
 use crate::ui_size::target_size;
 
@@ -194,12 +195,33 @@ impl SketchTool {
     pub fn waiting(&self) -> Option<(&[StrokePoint], &'static str)> {
         let waiting = self.waiting.as_ref()?;
         let what = match is_cross_section(&waiting.op) {
-            true => "Cutting… tap now to add a cross-section curve instead",
+            true => "Cutting… {tap} now to add a cross-section curve instead",
+            // What the next stroke may do, with the conditions `extrude_from` and
+            // `tunnel_from` check, said before they refuse.
             false => {
-                "Tap: a closed curve · out from the loop and back: a limb · a loop on the far side: a tunnel"
+                "{Tap} to keep this closed curve. For a limb, draw from the loop out past the \
+                 outline and back to it (the loop must lie near the outline); for a tunnel, \
+                 {orbit} half round and draw a loop on the far side"
             }
         };
         Some((&waiting.points, what))
+    }
+
+    /// What to do next: the waiting stroke's choices, else what a stroke makes here.
+    pub fn hint(&self, doc: &Document, device: Device) -> Hint {
+        if let Some((_, what)) = self.waiting() {
+            return device.say(what);
+        }
+        if self.draw.preview().is_some() {
+            return device.say("Lift to finish; end an outline where it began to close it");
+        }
+        match doc.models.is_empty() {
+            true => device.say("Draw a closed outline {with} to make a shape; {orbit}"),
+            false => device.say(
+                "Draw {with}: an outline off the shapes makes another, a line on a shape adds a \
+                 curve, a line across one cuts it; {orbit}",
+            ),
+        }
     }
 }
 
@@ -221,16 +243,15 @@ impl Tool for SketchTool {
         Some(ToolOutput::None)
     }
 
-    /// A stroke waiting for its confirming tap: shown dimmer, with what a tap does.
+    /// A stroke waiting for its confirming tap: shown dimmer (the hint says what a tap does).
     fn overlay(&self, ui: &egui::Ui, scene: &Scene<'_>) {
-        if let Some((points, what)) = self.waiting() {
+        if let Some((points, _)) = self.waiting() {
             stroke_ui(
                 ui,
                 scene.viewport,
                 points,
                 egui::Color32::from_rgb(120, 200, 255),
             );
-            hint_ui(ui, scene.viewport, what);
         }
     }
 
@@ -251,6 +272,15 @@ impl Tool for SketchTool {
 
     fn preview(&self) -> Option<&[StrokePoint]> {
         SketchTool::preview(self)
+    }
+
+    fn hint(&self, doc: &Document, device: Device) -> Hint {
+        SketchTool::hint(self, doc, device)
+    }
+
+    /// A closed outline on empty canvas makes a shape.
+    fn makes_shapes(&self) -> bool {
+        true
     }
 
     fn poll(&mut self, now: f64) -> (ToolOutput, Option<f64>) {

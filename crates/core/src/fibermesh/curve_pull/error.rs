@@ -6,7 +6,9 @@ use crate::solve::SolveError;
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum PullError {
     /// The drag target is not a finite point.
-    #[error("The curve cannot be pulled there from this view.")]
+    #[error(
+        "The curve cannot be pulled there from this view; turn the view so the curve faces you, then pull."
+    )]
     BadTarget,
     /// The output buffer does not have one entry per node (a bug).
     #[error("The curve network has {expected} points, but {found} were given.")]
@@ -17,6 +19,6 @@ pub enum PullError {
         found: usize,
     },
     /// A solve failed.
-    #[error("The curve could not be deformed: {0}")]
+    #[error("The shape could not follow that pull; pull a shorter way.")]
     Solve(#[from] SolveError),
 }

@@ -14,10 +14,10 @@ pub enum ExtrudeError {
     #[error("Only a closed shape can be extruded.")]
     NotClosed,
     /// The silhouette starts or ends far from the base loop, or at one place on it.
-    #[error("Start the silhouette near one side of the loop and end it near the other side.")]
+    #[error("Start the line near one side of the loop and end it near the other side.")]
     NotNearBase,
     /// The limb's tip would lie inside the shape.
-    #[error("The limb would grow into the shape; draw its silhouette outside it.")]
+    #[error("The limb would grow into the shape; draw its outline outside it.")]
     Inward,
     /// The limb would pass through the rest of the surface, or the result would not be a
     /// closed manifold mesh.

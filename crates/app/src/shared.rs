@@ -32,6 +32,11 @@ pub struct Shared {
     pub notes: panels::notes::Notes,
     /// What the progress line says while work runs off the frame (an import, a replay).
     pub progress: Option<String>,
+    /// The page's request to play how a session was made (`window.sketchmesh.playMaking`):
+    /// its JSON, a caption per op, and who waits for it to begin.
+    pub making_asked: Option<(String, Vec<String>, crate::files::Reply)>,
+    /// How the playing of a making stands (see `making::Standing`), for the page API.
+    pub making: Option<serde_json::Value>,
     /// Editors that replaced the first one (see [`autosave::Revision`]).
     opened: u64,
     /// The ops' session text as JavaScript strings, for the autosave.
@@ -54,6 +59,8 @@ impl Shared {
             thumbnails: Default::default(),
             notes: Default::default(),
             progress: None,
+            making_asked: None,
+            making: None,
             opened: 0,
             #[cfg(target_arch = "wasm32")]
             op_texts: Default::default(),

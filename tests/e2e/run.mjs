@@ -2344,7 +2344,7 @@ test('examples: Play how it was made draws each stroke as it was drawn, then app
   const kept = await until(() => api(page, 'documents'), (d) => d.length === 2, 5000);
   assert.ok(kept.some((d) => d.id === mine[0].id), 'the user\'s document is still kept');
   // On a phone, the stroke is drawn inside the narrower view.
-  const phone = await openApp(browser, url, gpu, { width: 390, height: 844, deviceScaleFactor: 2 });
+  const phone = await openApp(await hiDpiBrowser(), url, gpu, { width: 390, height: 844, deviceScaleFactor: 2 });
   try {
     await phone.page.evaluate(() => window.sketchmesh.openExample('character', { play: true }));
     await until(() => api(phone.page, 'examplePlayback'), (p) => p?.stage === 'drawing' && p.drawn > 0.6, 10_000);

@@ -357,6 +357,8 @@ impl Making {
                         ui.label(egui::RichText::new(counter).weak());
                         ui.add(egui::Label::new(egui::RichText::new(caption).size(16.0)).wrap());
                         ui.horizontal(|ui| {
+                            let row = 3.0 * BUTTON.x + 2.0 * ui.spacing().item_spacing.x;
+                            ui.add_space(((ui.available_width() - row) / 2.0).max(0.0));
                             let pause = match self.paused {
                                 true => "Resume",
                                 false => "Pause",

@@ -532,10 +532,11 @@ impl eframe::App for SketchApp {
         if let Some(message) = self.backdrop.poll(&ctx) {
             self.set_status(message, now);
         }
+        // The page's document first: a replay or a making it asked for after opening a new
+        // one is for the new one, not dropped with the old one's edits.
+        self.follow_page(now);
         let (files, runner, mut cx) = self.parts(now);
         files.run_imports(&ctx, runner, &mut cx);
-        let now = ctx.input(|i| i.time);
-        self.follow_page(now);
         self.scene.frame_work_ms = 0.0;
         self.status.expire(now);
         if self.scene.is_playing() {

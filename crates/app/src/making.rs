@@ -24,11 +24,11 @@ use crate::overlay;
 use crate::shared::Shared;
 
 /// A drawn sample's share of the time a stroke is drawn in (ms).
-const MS_PER_SAMPLE: f64 = 14.0;
+const MS_PER_SAMPLE: f64 = 20.0;
 /// The shortest time a stroke is drawn in (ms).
-pub const STROKE_MIN_MS: f64 = 700.0;
+pub const STROKE_MIN_MS: f64 = 900.0;
 /// The longest time a stroke is drawn in (ms).
-pub const STROKE_MAX_MS: f64 = 2000.0;
+pub const STROKE_MAX_MS: f64 = 2200.0;
 /// How long the result of a step stays with its caption before the next one (ms).
 const HOLD_MS: f64 = 1000.0;
 /// The most playing time one frame advances (ms): a slow frame slows the playing down
@@ -319,22 +319,19 @@ impl Making {
     /// panel with the caption and the buttons, and carries out a button pressed.
     pub fn ui(&mut self, ui: &egui::Ui, viewport: egui::Rect, camera: &Camera) {
         let strokes = self.strokes();
+        // The strokes stay while the op computes and over its result, until the next step.
         let shown_ms = match self.stage {
-            Stage::Drawing { since } => Some(self.clock_ms - since),
-            // The strokes stay while the op computes.
-            Stage::Applying { .. } => Some(f64::INFINITY),
-            Stage::Holding { .. } => None,
+            Stage::Drawing { since } => self.clock_ms - since,
+            Stage::Applying { .. } | Stage::Holding { .. } => f64::INFINITY,
         };
-        if let Some(ms) = shown_ms {
-            let (index, part) = drawn_so_far(&strokes, ms);
-            for (k, stroke) in strokes.iter().enumerate().take(index + 1) {
-                let samples = match k == index {
-                    true => (part * stroke.stroke.len() as f64).ceil() as usize,
-                    false => stroke.stroke.len(),
-                };
-                let points = on_screen(stroke, samples, camera, viewport);
-                overlay::stroke_ui(ui, viewport, &points, INK);
-            }
+        let (index, part) = drawn_so_far(&strokes, shown_ms);
+        for (k, stroke) in strokes.iter().enumerate().take(index + 1) {
+            let samples = match k == index {
+                true => (part * stroke.stroke.len() as f64).ceil() as usize,
+                false => stroke.stroke.len(),
+            };
+            let points = on_screen(stroke, samples, camera, viewport);
+            overlay::stroke_ui(ui, viewport, &points, INK);
         }
         self.panel_ui(ui.ctx(), viewport);
     }
@@ -549,8 +546,8 @@ mod tests {
             "{steps:?}"
         );
         assert_eq!(m.standing().stage, "drawing");
-        // Half way through the stroke's 700 ms.
-        for t in (50..=350).step_by(50) {
+        // Half way through the stroke's 900 ms.
+        for t in (50..=450).step_by(50) {
             assert!(m.advance(f64::from(t), 0, true).is_empty());
         }
         assert!((m.standing().drawn - 0.5).abs() < 1e-9);
@@ -563,8 +560,8 @@ mod tests {
             "{begun:?}"
         );
         assert_eq!(m.standing().stage, "applying");
-        assert!(m.advance(850.0, 0, false).is_empty(), "it waits for the op");
-        assert!(m.advance(900.0, 1, true).is_empty());
+        assert!(m.advance(950.0, 0, false).is_empty(), "it waits for the op");
+        assert!(m.advance(1000.0, 1, true).is_empty());
         assert_eq!(m.standing().stage, "holding");
         assert_eq!(m.standing().caption, "Sketch: ink");
     }

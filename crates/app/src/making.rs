@@ -551,7 +551,7 @@ mod tests {
             assert!(m.advance(f64::from(t), 0, true).is_empty());
         }
         assert!((m.standing().drawn - 0.5).abs() < 1e-9);
-        let steps = (400..=700)
+        let steps = (500..=900)
             .step_by(50)
             .flat_map(|t| m.advance(f64::from(t), 0, true));
         let begun: Vec<Step> = steps.collect();

@@ -4,6 +4,7 @@
 // text field and read by screen readers.
 
 import * as store from "./store.js";
+import * as examples from "./examples.js";
 
 const THUMBNAIL_WAIT_MS = 3000;
 
@@ -34,13 +35,22 @@ function png({ width, height, pixels }) {
   return new Promise((resolve) => canvas.toBlob(resolve, "image/png"));
 }
 
-// Keeps the document shown and starts an empty one.
-export async function newDocument() {
+// Keeps the document shown and starts an empty one, named `name` once it is written.
+export async function newDocument(name = null) {
   await keepShown();
-  await store.show();
+  await store.show(null, name);
   app().restore(null);
   tell("New document: the previous one is kept under Documents.");
   if (!panel().hidden) await render();
+}
+
+// Opens example `name` as a new document (the one shown is kept): replayed at once, or with
+// `play` its making played step by step. Resolves once it is shown, or playing.
+export async function openExample(name, { play = false } = {}) {
+  const example = await examples.load(name);
+  await newDocument(example.title);
+  if (play) await app().playMaking(example.text, example.captions ?? []);
+  else await app().replay(example.text);
 }
 
 // Shows the kept document `id` (the one shown is kept first). A record that does not restore
@@ -106,7 +116,44 @@ async function render() {
     empty.textContent = "Nothing kept yet: documents appear here once something is drawn.";
     list.append(empty);
   }
+  await renderExamples();
   await showUsage();
+}
+
+// The examples: thumbnail, title, one line on what it shows, Open and Play how it was made.
+async function renderExamples() {
+  const list = document.getElementById("documents-examples");
+  if (list.childElementCount > 0) return;
+  const shown = await examples.list().catch((e) => {
+    tell(`Could not list the examples: ${e.message ?? e}`);
+    return [];
+  });
+  list.replaceChildren(...shown.map((example) => {
+    const item = document.createElement("li");
+    item.dataset.example = example.name;
+    const image = document.createElement("img");
+    image.className = "thumbnail";
+    image.src = `examples/${example.thumbnail}`;
+    image.alt = "";
+    const text = document.createElement("div");
+    text.className = "text";
+    const title = document.createElement("span");
+    title.className = "title";
+    title.textContent = example.title;
+    const line = document.createElement("span");
+    line.className = "line";
+    line.textContent = example.description;
+    text.append(title, line);
+    const opened = (play) => async () => {
+      hide();
+      await openExample(example.name, { play }).catch((e) => tell(`Could not open the example: ${e.message ?? e}`));
+    };
+    const actions = document.createElement("div");
+    actions.className = "actions";
+    actions.append(button("Open", "open", opened(false)), button("Play how it was made", "play", opened(true)));
+    item.append(image, text, actions);
+    return item;
+  }));
 }
 
 // One document: thumbnail, name (editable), date, Open and Delete.

@@ -4,6 +4,7 @@
 import init, { start } from "./sketchmesh_app.js";
 import * as store from "./store.js";
 import * as documents from "./documents.js";
+import * as examples from "./examples.js";
 
 const loading = document.getElementById("loading");
 
@@ -86,6 +87,9 @@ function extendPageApi() {
     newDocument: () => documents.newDocument(),
     documents: () => documents.documents(),
     openDocument: (id) => documents.openDocument(id),
+    examples: () => examples.list().then((all) => all.map(({ name, title, description }) => ({ name, title, description }))),
+    openExample: (name, options) => documents.openExample(name, options),
+    examplePlayback: () => window.sketchmesh.making(),
   });
 }
 

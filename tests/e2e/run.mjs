@@ -2510,7 +2510,7 @@ test('documents: New keeps the shape and starts empty; the panel lists both with
   await frames(page, 3);
   await page.mouse.click(DOCUMENTS_ITEM.x, DOCUMENTS_ITEM.y);
   await page.waitForSelector('#documents:not([hidden]) li.shown img', { timeout: 5000 });
-  const rows = await page.$$eval('#documents li', (items) => items.map((item) => ({
+  const rows = await page.$$eval('#documents-list li', (items) => items.map((item) => ({
     name: item.querySelector('input.name').value,
     shown: item.classList.contains('shown'),
     image: item.querySelector('img') != null,
@@ -2518,7 +2518,7 @@ test('documents: New keeps the shape and starts empty; the panel lists both with
   assert.equal(rows.length, 2);
   assert.ok(rows.every((row) => row.image), `both have thumbnails: ${JSON.stringify(rows)}`);
   // The thumbnails show the shapes: light pixels of the lit surface on the dark view.
-  const light = await page.$$eval('#documents li img', (images) => images.map((image) => {
+  const light = await page.$$eval('#documents-list li img', (images) => images.map((image) => {
     const canvas = document.createElement('canvas');
     canvas.width = image.naturalWidth;
     canvas.height = image.naturalHeight;
@@ -2532,9 +2532,9 @@ test('documents: New keeps the shape and starts empty; the panel lists both with
   assert.ok(light.every((f) => f > 0.005 && f < 0.5), `the thumbnails show a shape: ${light}`);
   await screenshot(page, out('documents-panel.png'));
   // Rename the egg, then open it.
-  await page.fill('#documents li:not(.shown) input.name', 'Egg');
-  await page.press('#documents li:not(.shown) input.name', 'Enter');
-  await page.click('#documents li:not(.shown) button.open');
+  await page.fill('#documents-list li:not(.shown) input.name', 'Egg');
+  await page.press('#documents-list li:not(.shown) input.name', 'Enter');
+  await page.click('#documents-list li:not(.shown) button.open');
   await until(() => api(page, 'stats'), (s) => s.models === 1 && s.vertices === created.vertices, 5000);
   assert.equal(await api(page, 'session'), egg, 'Open brings the egg back, history and all');
   assert.ok(await page.evaluate(() => document.getElementById('documents').hidden), 'the panel closed');
@@ -2547,9 +2547,9 @@ test('documents: New keeps the shape and starts empty; the panel lists both with
   // Delete the ball: the first tap arms the button, the second deletes.
   await page.evaluate(() => window.sketchmeshDocuments.show());
   await page.waitForSelector('#documents:not([hidden]) li:not(.shown) button.delete');
-  await page.click('#documents li:not(.shown) button.delete');
+  await page.click('#documents-list li:not(.shown) button.delete');
   assert.equal((await api(page, 'documents')).length, 2, 'one tap deletes nothing');
-  await page.click('#documents li:not(.shown) button.delete.armed');
+  await page.click('#documents-list li:not(.shown) button.delete.armed');
   kept = await until(() => api(page, 'documents'), (d) => d.length === 1, 3000);
   assert.deepEqual(kept.map((d) => d.name), ['Egg'], 'the ball is gone');
   await page.keyboard.press('Escape');
@@ -2558,6 +2558,131 @@ test('documents: New keeps the shape and starts empty; the panel lists both with
   await page.waitForFunction(() => window.sketchmesh?.stats?.().models === 1, null, { timeout: 15_000, polling: 100 });
   assert.equal(await api(page, 'session'), reopened, 'a reload shows the egg, with its undo and redo');
   assert.deepEqual(fresh.errors, [], 'console errors with documents');
+}));
+
+// WebGL2 only: the panel, the documents and the files.
+test('examples: the Documents panel lists at least three with thumbnails; each opens into a new document, the one its session replays to; an unknown name is refused; the user\'s document stays kept', { gpu: false, limitMs: LONG_CASE_LIMIT_MS }, () => withShape(async ({ fresh }) => {
+  const { page } = fresh;
+  await until(() => lastOpOf(page), (o) => o.op === 'create', 15_000);
+  const mine = await until(() => api(page, 'documents'), (d) => d.length === 1, 3000);
+  assert.equal(mine.length, 1, 'the shape drawn is a kept document');
+  const listed = await api(page, 'examples');
+  assert.ok(listed.length >= 3, `at least three examples: ${JSON.stringify(listed)}`);
+  assert.ok(listed.every((e) => e.name && e.title && e.description), 'each with a name, a title and a line on it');
+  await page.evaluate(() => window.sketchmeshDocuments.show());
+  await page.waitForFunction((n) => [...document.querySelectorAll('#documents-examples li img')].filter((i) => i.complete && i.naturalWidth > 0).length === n, listed.length, { timeout: 5000 });
+  const rows = await page.$$eval('#documents-examples li', (items) => items.map((item) => ({
+    title: item.querySelector('.title').textContent,
+    buttons: [...item.querySelectorAll('button')].map((b) => ({ text: b.textContent, height: b.getBoundingClientRect().height })),
+  })));
+  assert.deepEqual(rows.map((r) => r.title), listed.map((e) => e.title), 'the panel lists them');
+  assert.ok(rows.every((r) => r.buttons.some((b) => b.text === 'Play how it was made') && r.buttons.every((b) => b.height >= 44)), `Open and Play, 44 px tall: ${JSON.stringify(rows)}`);
+  await screenshot(page, out('documents-examples.png'));
+  // Open, from the panel: a new document, the replay of the example's session.
+  await page.click(`#documents-examples li[data-example="${listed[0].name}"] button.open`);
+  const opsOf = async () => JSON.parse(await api(page, 'session')).ops.length;
+  for (const example of listed) {
+    const text = await page.evaluate((name) => fetch('examples/index.json').then((r) => r.json())
+      .then((index) => fetch(`examples/${index.examples.find((e) => e.name === name).session}`)).then((r) => r.text()), example.name);
+    if (example !== listed[0]) await page.evaluate((name) => window.sketchmesh.openExample(name), example.name);
+    const ops = JSON.parse(text).ops.length;
+    assert.equal(await until(opsOf, (n) => n === ops, 20_000), ops, `${example.name}: its session's every op`);
+    await frames(page, 2);
+    const glb = await glbOf(page);
+    await page.evaluate((s) => window.sketchmesh.replay(s), text);
+    assert.deepEqual(await glbOf(page), glb, `${example.name}: the document is the one its session replays to`);
+  }
+  const refused = await page.evaluate(() => window.sketchmesh.openExample('no-such-example').then(() => null, (e) => e.message));
+  assert.match(refused ?? '', /no example named "no-such-example".*character/i, 'an unknown name is refused with the names');
+  const kept = await until(() => api(page, 'documents'), (d) => d.length === 1 + listed.length, 5000);
+  assert.ok(kept.some((d) => d.id === mine[0].id), `the user's document is still kept: ${JSON.stringify(kept)}`);
+  assert.deepEqual(kept.map((d) => d.name).filter((n) => listed.some((e) => e.title === n)).sort(), listed.map((e) => e.title).sort(), 'each example is a document of its own, by its title');
+  assert.deepEqual(fresh.errors, [], 'console errors with examples');
+}));
+
+/** How many pixels of `image` have the replayed strokes' ink colour. */
+function inkPixels(image) {
+  let count = 0;
+  for (let k = 0; k < image.data.length; k += 4) {
+    const [r, g, b] = [image.data[k], image.data[k + 1], image.data[k + 2]];
+    if (Math.abs(r - 242) < 24 && Math.abs(g - 199) < 24 && Math.abs(b - 82) < 30) count++;
+  }
+  return count;
+}
+
+/** Clicks button `k` (0 Pause, 1 Skip step, 2 Skip to end) of the making's panel. */
+async function clickMaking(page, k) {
+  const { buttons } = await api(page, 'examplePlayback');
+  const [x, y, w, h] = buttons[k];
+  assert.ok(w >= 44 && h >= 44, `the button is touch-sized: ${w}x${h}`);
+  await page.mouse.click(x + w / 2, y + h / 2);
+}
+
+// WebGL2 only: the ink drawn over the view and the document.
+test('examples: Play how it was made draws each stroke as it was drawn, then applies its op; Pause holds, Skip step moves on, Skip to end reaches the document the session replays to; the user\'s document stays kept', { gpu: false, limitMs: LONG_CASE_LIMIT_MS }, () => withShape(async ({ fresh }) => {
+  const { page } = fresh;
+  await until(() => lastOpOf(page), (o) => o.op === 'create', 15_000);
+  const mine = await until(() => api(page, 'documents'), (d) => d.length === 1, 3000);
+  await page.evaluate(() => window.sketchmesh.openExample('character', { play: true }));
+  assert.deepEqual(await api(page, 'stats'), { models: 0, vertices: 0, triangles: 0, curves: 0 }, 'a new, empty document plays it');
+  const playback = () => api(page, 'examplePlayback');
+  const drawing = (low, high) => until(playback, (p) => p?.stage === 'drawing' && p.drawn >= low && p.drawn <= high, 10_000);
+  // Paused twice while the outline is drawn (a screenshot takes longer than a frame), and
+  // held paused for a second and a half the first time.
+  const early = await drawing(0.05, 0.4);
+  await clickMaking(page, 0);
+  const paused = await until(playback, (p) => p.paused, 3000);
+  assert.equal(paused.op, 1, `the first step: ${JSON.stringify(paused)}`);
+  assert.match(paused.caption, /Sketch/, 'the caption names the tool');
+  const first = await screenshot(page, out('example-drawing-early.png'));
+  await sleep(1500);
+  const still = await playback();
+  assert.ok(still.paused && still.op === paused.op && still.drawn === paused.drawn && still.stage === 'drawing', `Pause holds: ${JSON.stringify([paused, still])}`);
+  await clickMaking(page, 0);
+  await until(playback, (p) => !p.paused, 3000);
+  await drawing(paused.drawn + 0.35, 1);
+  await clickMaking(page, 0);
+  const later = await until(playback, (p) => p.paused, 3000);
+  const second = await screenshot(page, out('example-drawing.png'));
+  const [inkEarly, inkLater] = [inkPixels(first), inkPixels(second)];
+  console.log(`    examples: ink ${inkEarly} px at ${(100 * paused.drawn).toFixed(0)}% of the outline, ${inkLater} px at ${(100 * later.drawn).toFixed(0)}% (${later.stage})`);
+  assert.ok(early.drawn < later.drawn && inkEarly > 100 && inkLater > inkEarly * 1.4, `the stroke is drawn as it goes (${inkEarly} then ${inkLater} ink pixels)`);
+  await clickMaking(page, 0);
+  // The op applied after its stroke: the body.
+  const body = await until(() => api(page, 'stats'), (s) => s.models === 1, 20_000);
+  assert.equal(body.models, 1, 'the outline became the body');
+  // Skip step: the step's op applies at once, and the next one comes.
+  const before = (await api(page, 'examplePlayback')).op;
+  await clickMaking(page, 1);
+  const next = await until(() => api(page, 'examplePlayback'), (p) => p.op === before + 1, 20_000);
+  assert.equal(next.op, before + 1, 'Skip step moved on');
+  await clickMaking(page, 2);
+  const done = await until(() => api(page, 'examplePlayback'), (p) => !p.playing, 60_000);
+  assert.ok(!done.playing && done.op === done.of && done.failed === null, `played to its end: ${JSON.stringify(done)}`);
+  const played = await glbOf(page);
+  const text = await page.evaluate(() => fetch('examples/character.json').then((r) => r.text()));
+  assert.deepEqual(JSON.parse(await api(page, 'session')).ops, JSON.parse(text).ops, 'the played document\'s session is the example\'s');
+  await page.evaluate((s) => window.sketchmesh.replay(s), text);
+  assert.deepEqual(await glbOf(page), played, 'the played document is the one its session replays to, bit for bit');
+  const kept = await until(() => api(page, 'documents'), (d) => d.length === 2, 5000);
+  assert.ok(kept.some((d) => d.id === mine[0].id), 'the user\'s document is still kept');
+  // On a phone, the stroke is drawn inside the narrower view.
+  const phone = await openApp(await hiDpiBrowser(), url, gpu, { width: 390, height: 844, deviceScaleFactor: 2 });
+  try {
+    await phone.page.evaluate(() => window.sketchmesh.openExample('character', { play: true }));
+    await until(() => api(phone.page, 'examplePlayback'), (p) => p?.stage === 'drawing' && p.drawn > 0.5, 10_000);
+    await clickMaking(phone.page, 0);
+    await until(() => api(phone.page, 'examplePlayback'), (p) => p.paused, 3000);
+    const shot = await screenshot(phone.page, out('example-drawing-phone.png'));
+    await clickMaking(phone.page, 0);
+    assert.ok(inkPixels(shot) > 100, `the stroke shows on a phone (${inkPixels(shot)} ink pixels)`);
+    await until(() => api(phone.page, 'examplePlayback'), (p) => p?.op >= 2 && p.stage === 'drawing' && p.drawn > 0.5, 20_000);
+    await screenshot(phone.page, out('example-drawing-phone-2.png'));
+    assert.deepEqual(phone.errors, [], 'console errors playing on a phone');
+  } finally {
+    await phone.context.close();
+  }
+  assert.deepEqual(fresh.errors, [], 'console errors playing an example');
 }));
 
 // WebGL2 only: the store's failure and the document.

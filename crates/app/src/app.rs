@@ -24,6 +24,7 @@ use crate::file_actions::FileActions;
 use crate::input::router::{Hands, Routed};
 use crate::input::sample_clock;
 use crate::input::taps::TapCommand;
+use crate::making;
 use crate::panels;
 use crate::panels::PanelState;
 use crate::panels::context_menu::{ContextAction, ContextMenu, context_menu_ui};
@@ -60,6 +61,8 @@ pub struct SketchApp {
     has_renderer: bool,
     /// The files the user opens and saves.
     files: FileActions,
+    /// How a document was made, being played (an example's session).
+    making: making::Player,
     /// The document the tools work on (see [`crate::autosave::Revision::opened`]): when the page
     /// replaces it, the edit in progress belongs to the old one and is dropped.
     opened: u64,
@@ -104,6 +107,7 @@ impl SketchApp {
             runner: EditRunner::default(),
             has_renderer,
             files: FileActions::default(),
+            making: making::Player::default(),
             opened: 0,
             view_rect: egui::Rect::NOTHING,
             coarse_pointer: false,
@@ -139,7 +143,9 @@ impl SketchApp {
     /// Undo: drops a gesture in progress (a drag, an open preview) if there is one, else
     /// undoes the last op.
     fn undo(&mut self, now: f64) {
-        if self.runner.edit().is_some_and(Edit::is_gesture) {
+        if self.making.is_playing() {
+            // The example's next op would apply to the wrong document; Esc stops it.
+        } else if self.runner.edit().is_some_and(Edit::is_gesture) {
             self.drop_gesture(now);
         } else if self.runner.is_busy() || self.runner.is_computing() {
             // Undoing an import, a replay or an op still running is not making it.
@@ -177,6 +183,7 @@ impl SketchApp {
         };
         if opened != self.opened {
             self.opened = opened;
+            self.making.drop_for_another(&self.shared);
             self.run(now, |r, cx| r.drop_all(cx));
             let dropped = self.tools.cancel();
             self.take_output(dropped, now);
@@ -270,6 +277,10 @@ impl SketchApp {
             Command::Stop if egui::Popup::is_any_open(ctx) => egui::Popup::close_all(ctx),
             Command::Stop => {
                 self.scene.stop_playing();
+                let stopped = Some(String::from("Stopped playing the example."));
+                if let Some(said) = self.making.end(stopped, &self.shared) {
+                    self.status.say(Tone::Info, said, now);
+                }
                 self.run(now, |r, cx| r.cancel_offloaded(cx));
                 self.run(now, |r, cx| r.cancel_replay(cx));
                 self.drop_gesture(now);
@@ -358,8 +369,7 @@ impl SketchApp {
                         self.scene.double_tap(&self.shared, *at, viewport)
                     }
                     Routed::Tap(TapCommand::LongPress(at)) => self.long_press(*at, viewport, now),
-                    Routed::Tool(event)
-                        if self.pointer.holds_stroke(event, self.runner.is_busy()) => {}
+                    Routed::Tool(event) if self.pointer.holds_stroke(event, self.is_busy()) => {}
                     Routed::Tool(event) => {
                         // The pen's eraser erases whatever the tool, for one stroke.
                         if let ToolEvent::Begin(sample) = event
@@ -431,6 +441,31 @@ impl SketchApp {
         }
     }
 
+    /// Whether a stroke drawn now must reach no tool: an import or a replay runs, or an
+    /// example's making plays (its ops would mix with the user's).
+    fn is_busy(&self) -> bool {
+        self.runner.is_busy() || self.making.is_playing()
+    }
+
+    /// Plays this frame's part of an example's making (see [`making::Player`]).
+    fn run_making(&mut self, ctx: &egui::Context, viewport: egui::Rect, now: f64) {
+        let mut player = std::mem::take(&mut self.making);
+        let over = self.run(now, |r, cx| player.run(ctx, r, cx, viewport));
+        self.making = player;
+        if let Some(said) = over {
+            self.making_over(said, now);
+        }
+    }
+
+    /// Says how the making ended; a document with key frames then plays its animation.
+    fn making_over(&mut self, said: String, now: f64) {
+        self.status.done(said, now);
+        let document = self.shared.borrow().editor.document().clone();
+        if let Ok(playback) = Playback::start(&document, clock::now_ms()) {
+            self.scene.playback = Some(playback);
+        }
+    }
+
     fn viewport_ui(&mut self, ui: &mut egui::Ui) {
         let viewport = ui.max_rect();
         let response = ui.allocate_rect(viewport, egui::Sense::hover());
@@ -452,6 +487,7 @@ impl SketchApp {
         if self.run(now, |r, cx| r.step_replay(&ctx, cx)) {
             self.follow_page(now);
         }
+        self.run_making(&ctx, viewport, now);
         self.scene.frame_work_ms += clock::now_ms() - started;
         let shared = self.shared.borrow();
         let shown = (self.runner.edit()).map_or(shared.editor.document(), Edit::document);
@@ -498,6 +534,8 @@ impl SketchApp {
         self.shared.borrow_mut().progress.clone_from(&progress);
         if self.shared.borrow().thumbnails.is_capturing() {
             // A thumbnail is being taken: the shapes only.
+        } else if self.making.ui(ui, viewport, &self.shared) {
+            // An example's making plays: its caption and buttons stand for the status.
         } else if let Some(what) = progress {
             if panels::progress::progress_ui(ui.ctx(), viewport, &what) {
                 let now = ui.input(|i| i.time);
@@ -527,10 +565,11 @@ impl eframe::App for SketchApp {
         if let Some(message) = self.backdrop.poll(&ctx) {
             self.refuse(message, now);
         }
+        // The page's document first: a replay or a making it asked for after opening a new
+        // one is for the new one, not dropped with the old one's edits.
+        self.follow_page(now);
         let (files, runner, mut cx) = self.parts(now);
         files.run_imports(&ctx, runner, &mut cx);
-        let now = ctx.input(|i| i.time);
-        self.follow_page(now);
         self.scene.frame_work_ms = 0.0;
         self.status.expire(now);
         if self.scene.is_playing() {

@@ -61,6 +61,20 @@ impl OrbitCamera {
         }
     }
 
+    /// The orbit camera that looks as `camera` does (a stroke's camera, to see it as it was
+    /// drawn); an orbit camera's own camera comes back as it was.
+    pub fn looking_as(camera: &Camera) -> OrbitCamera {
+        let offset = camera.eye - camera.target;
+        let distance = offset.length().max(1e-9);
+        OrbitCamera {
+            target: camera.target,
+            distance,
+            yaw: offset.x.atan2(offset.z),
+            pitch: (offset.y / distance).clamp(-1.0, 1.0).asin(),
+            fov_y_deg: camera.fov_y_deg,
+        }
+    }
+
     /// Applies one navigation action; `viewport_height` is in points.
     pub fn apply(&mut self, action: NavAction, viewport_height: f64) {
         match action {
@@ -146,6 +160,16 @@ mod tests {
         assert!(((c.eye - c.target).length() - 6.0).abs() < 1e-12);
         assert!(c.eye.y > 0.0 && c.eye.z > 0.0 && c.eye.x.abs() < 1e-12);
         assert!((c.forward() - (c.target - c.eye).normalize()).length() < 1e-12);
+    }
+
+    #[test]
+    fn an_orbit_cameras_camera_comes_back_as_it_was() {
+        let mut cam = OrbitCamera::default();
+        cam.orbit(DVec2::new(130.0, -40.0));
+        cam.pan(DVec2::new(12.0, 7.0), 600.0);
+        let back = OrbitCamera::looking_as(&cam.camera());
+        assert!((back.camera().eye - cam.camera().eye).length() < 1e-12);
+        assert_eq!(back.camera().target, cam.camera().target);
     }
 
     #[test]

@@ -19,6 +19,7 @@ pub mod fonts;
 #[cfg(target_arch = "wasm32")]
 pub mod image_decode;
 pub mod input;
+pub mod making;
 pub mod offload;
 pub mod overlay;
 #[cfg(target_arch = "wasm32")]

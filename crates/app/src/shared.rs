@@ -42,6 +42,11 @@ pub struct Shared {
     /// How many exports were downloaded since the page opened (the introduction's last
     /// step waits for one).
     pub exports: u32,
+    /// The page's request to play how a session was made (`window.sketchmesh.playMaking`):
+    /// its JSON, a caption per op, and who waits for it to begin.
+    pub making_asked: Option<(String, Vec<String>, crate::files::Reply)>,
+    /// How the playing of a making stands (see `making::Standing`), for the page API.
+    pub making: Option<serde_json::Value>,
     /// Editors that replaced the first one (see [`autosave::Revision`]).
     opened: u64,
     /// The ops' session text as JavaScript strings, for the autosave.
@@ -68,6 +73,8 @@ impl Shared {
             status: None,
             intro: None,
             exports: 0,
+            making_asked: None,
+            making: None,
             opened: 0,
             #[cfg(target_arch = "wasm32")]
             op_texts: Default::default(),

@@ -210,6 +210,39 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
     )?;
     let (s, c) = (shared.clone(), ctx.clone());
     set(
+        "playMaking",
+        Closure::<dyn Fn(String, JsValue) -> js_sys::Promise>::new(
+            move |session: String, captions: JsValue| {
+                let captions = match captions.is_array() {
+                    true => js_sys::Array::from(&captions)
+                        .iter()
+                        .map(|c| c.as_string().unwrap_or_default())
+                        .collect(),
+                    false => Vec::new(),
+                };
+                let asked = (session, captions);
+                let mut asked = Some(asked);
+                let s = s.clone();
+                c.request_repaint();
+                promise_of(&mut |reply| {
+                    if let Some((session, captions)) = asked.take() {
+                        s.borrow_mut().making_asked = Some((session, captions, reply));
+                    }
+                })
+            },
+        )
+        .into_js_value(),
+    )?;
+    let s = shared.clone();
+    set(
+        "making",
+        getter(move || match &s.borrow().making {
+            Some(standing) => json(standing),
+            None => Ok(JsValue::NULL),
+        }),
+    )?;
+    let (s, c) = (shared.clone(), ctx.clone());
+    set(
         "loadGlb",
         Closure::<dyn Fn(Uint8Array, Option<String>) -> js_sys::Promise>::new(
             move |bytes: Uint8Array, name: Option<String>| {

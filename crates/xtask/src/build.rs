@@ -186,12 +186,8 @@ fn write_service_worker(dist: &Path) -> anyhow::Result<()> {
     let worker = dist.join("sw.js");
     let template = fs::read_to_string(&worker).context("reading web/sw.js")?;
     let mut files = Vec::new();
-    for entry in fs::read_dir(dist).context("listing dist/")? {
-        let name = entry?.file_name().to_string_lossy().into_owned();
-        if name != "sw.js" && !name.ends_with(".gz") {
-            files.push(name);
-        }
-    }
+    list_files(dist, "", &mut files)?;
+    files.retain(|name| name != "sw.js" && !name.ends_with(".gz"));
     files.sort();
     // The hash of each file's name and contents' hash.
     let mut listing = String::new();
@@ -208,6 +204,21 @@ fn write_service_worker(dist: &Path) -> anyhow::Result<()> {
         bail!("web/sw.js has no __SKETCHMESH_VERSION__ or __SKETCHMESH_FILES__ to fill in");
     }
     fs::write(&worker, filled).context("writing dist/sw.js")
+}
+
+/// The files under `dir`, as paths relative to it with `/` between folders (the examples
+/// are in a folder of their own), after `prefix`.
+fn list_files(dir: &Path, prefix: &str, files: &mut Vec<String>) -> anyhow::Result<()> {
+    for entry in fs::read_dir(dir).with_context(|| format!("listing {}", dir.display()))? {
+        let entry = entry?;
+        let name = format!("{prefix}{}", entry.file_name().to_string_lossy());
+        if entry.file_type()?.is_dir() {
+            list_files(&entry.path(), &format!("{name}/"), files)?;
+        } else {
+            files.push(name);
+        }
+    }
+    Ok(())
 }
 
 /// 64-bit FNV-1a: a cache key, not a defence against collisions made on purpose.
@@ -334,12 +345,14 @@ mod tests {
             fs::write(dist.join("index.html"), "<html>").unwrap();
             fs::write(dist.join("app_bg.wasm"), wasm).unwrap();
             fs::write(dist.join("app_bg.wasm.gz"), b"gz").unwrap();
+            fs::create_dir(dist.join("examples")).unwrap();
+            fs::write(dist.join("examples").join("a.json"), b"{}").unwrap();
             write_service_worker(&dist).unwrap();
             fs::read_to_string(dist.join("sw.js")).unwrap()
         };
         let first = build(b"\0asm one");
         assert!(
-            first.contains(r#"const FILES = ["./","app_bg.wasm","index.html"];"#),
+            first.contains(r#"const FILES = ["./","app_bg.wasm","examples/a.json","index.html"];"#),
             "no .gz, no sw.js: {first}"
         );
         let version = |text: &str| text.lines().next().unwrap_or_default().to_owned();

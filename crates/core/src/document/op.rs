@@ -233,6 +233,70 @@ impl Op {
     }
 }
 
+impl Op {
+    /// Every stroke the op was drawn with, each in its own view, in the order they were
+    /// drawn: what a replay that shows how a document was made draws before applying the op
+    /// (a pair's two loops, a region's reference curve then its boundary, a pose's curve
+    /// then its new shape). None for the ops made with buttons, numbers or drags of
+    /// handles.
+    pub fn drawn_strokes(&self) -> Vec<StrokeInput> {
+        let drawn = |viewport, camera, stroke: &[[f64; 3]]| {
+            (!stroke.is_empty()).then(|| StrokeInput::in_view(viewport, camera, stroke))
+        };
+        match self {
+            Op::Tunnel(pair) | Op::Extrude(pair) => pair.strokes.to_vec(),
+            Op::RegionEdit(input) => {
+                let (viewport, camera) = (input.viewport, input.camera);
+                [&input.reference, &input.boundary]
+                    .into_iter()
+                    .chain(input.areas.iter().map(|area| &area.lasso))
+                    .filter_map(|stroke| drawn(viewport, camera, stroke))
+                    .collect()
+            }
+            Op::CurveDeform(input) => {
+                let (viewport, camera) = (input.viewport, input.camera);
+                let redrawn = input.stroke_camera.unwrap_or(camera);
+                [
+                    input
+                        .fixed
+                        .as_deref()
+                        .and_then(|s| drawn(viewport, camera, s)),
+                    drawn(viewport, camera, &input.curve),
+                    drawn(viewport, redrawn, &input.stroke),
+                ]
+                .into_iter()
+                .flatten()
+                .collect()
+            }
+            Op::Optimize(input) => (input.region.iter().cloned())
+                .chain(input.painted.iter().map(|brush| brush.stroke.clone()))
+                .chain(input.painted_features.iter().map(|b| b.stroke.clone()))
+                .collect(),
+            other => {
+                let Some(stroke) = other.stroke() else {
+                    return Vec::new();
+                };
+                let view = match other {
+                    Op::Stroke(input) | Op::Pull(input) => Some((input.viewport, input.camera)),
+                    Op::Erase(input) | Op::Rub(input) | Op::Cut(input) => {
+                        Some((input.viewport, input.camera))
+                    }
+                    Op::Create(input) => Some((input.viewport, input.camera)),
+                    Op::Oversketch(input) => Some((input.viewport, input.camera)),
+                    Op::AddCurve(input) => Some((input.viewport, input.camera)),
+                    Op::SetCurveType(input) => Some((input.viewport, input.camera)),
+                    Op::SketchFeature(input) => Some((input.viewport, input.camera)),
+                    Op::CurveHandle(input) => Some((input.viewport, input.camera)),
+                    _ => None,
+                };
+                view.and_then(|(viewport, camera)| drawn(viewport, camera, stroke))
+                    .into_iter()
+                    .collect()
+            }
+        }
+    }
+}
+
 /// The strokes of a `tunnel` op (`{"op":"tunnel","strokes":[first loop, second loop]}`,
 /// each loop a closed stroke on the model) or an `extrude` op
 /// (`{"op":"extrude","strokes":[base loop, silhouette]}`), each with its view

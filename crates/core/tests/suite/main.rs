@@ -8,6 +8,7 @@ mod curve_edit;
 mod deform;
 mod edit;
 mod editor_properties;
+mod examples;
 mod feature;
 mod fibermesh;
 mod gltf_import;

@@ -111,8 +111,8 @@ pub struct Making {
 pub enum Step {
     /// Look through this camera (a stroke's, drawn in a viewport of this size).
     Look(Camera, [f64; 2]),
-    /// Hand this op to the edit runner.
-    Begin(Op),
+    /// Hand this op to the edit runner (boxed: an op is several times a camera's size).
+    Begin(Box<Op>),
     /// It is over: every op landed, or the sentence of the one refused.
     Over(Result<(), String>),
 }
@@ -233,7 +233,7 @@ impl Making {
                 let Some(op) = self.ops.get(self.current) else {
                     return steps.push(Step::Over(Ok(())));
                 };
-                steps.push(Step::Begin(op.clone()));
+                steps.push(Step::Begin(Box::new(op.clone())));
                 self.stage = Stage::Applying {
                     ops_before: Some(ops),
                 };
@@ -519,7 +519,7 @@ fn run(
             Step::Look(camera, drawn_in) => {
                 cx.shared.borrow_mut().camera = looking_as(&camera, drawn_in, viewport.size());
             }
-            Step::Begin(op) => runner.begin(op, false, cx),
+            Step::Begin(op) => runner.begin(*op, false, cx),
             Step::Over(result) => return Some(result),
         }
     }
@@ -556,7 +556,7 @@ mod tests {
             .flat_map(|t| m.advance(f64::from(t), 0, true));
         let begun: Vec<Step> = steps.collect();
         assert!(
-            matches!(begun.as_slice(), [Step::Begin(Op::Stroke(_))]),
+            matches!(begun.as_slice(), [Step::Begin(op)] if matches!(**op, Op::Stroke(_))),
             "{begun:?}"
         );
         assert_eq!(m.standing().stage, "applying");
@@ -582,7 +582,7 @@ mod tests {
         // Landed: no hold, the next op has no stroke and begins at once.
         let steps = m.advance(3200.0, 1, true);
         assert!(
-            matches!(steps[..], [Step::Begin(Op::Keyframe(_))]),
+            matches!(&steps[..], [Step::Begin(op)] if matches!(**op, Op::Keyframe(_))),
             "{steps:?}"
         );
         assert_eq!(m.standing().caption, "Keyframe");

@@ -27,8 +27,7 @@ use criterion::{BenchmarkId, Criterion, criterion_group};
 use glam::DVec2;
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    DuplicateInput, Edit, Editor, MergeInput, ModelInput, Op, StrokeInput, StrokePairInput,
-    TransformInput,
+    DuplicateInput, Edit, Editor, MergeInput, Op, StrokeInput, StrokePairInput, TransformInput,
 };
 
 use crate::common::fibermesh_shape;

@@ -342,8 +342,8 @@ fn duplicates_along_a_direction_land_beside_overlapping_no_model_and_replay_exac
     let along = |k: usize| (boxes[k].0 - lo).dot(right);
     let offsets: Vec<f64> = (2..6).map(along).collect();
     assert!(offsets.windows(2).all(|w| w[0] < w[1]), "{offsets:?}");
-    for k in 2..6 {
-        let moved = boxes[k].0 - lo;
+    for copy in &boxes[2..6] {
+        let moved = copy.0 - lo;
         assert!(
             moved.cross(right).length() < 1e-9 * (1.0 + moved.length()),
             "{moved:?}"

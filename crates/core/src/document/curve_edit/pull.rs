@@ -18,8 +18,8 @@
 //! samples 5 apart, 2,000–18,000 triangles were folded over in the preview, which shows
 //! until the committed pull lands (issue 49: an inside-out fold for 2.5 s). A step whose
 //! surface folds a triangle (against the model at rest) iterates up to
-//! [`UNFOLDING_ITERATIONS`] more times, and if it still folds, the preview shows the last
-//! surface that did not (the solve goes on from the folded one at the next sample).
+//! [`UNFOLDING_ITERATIONS`] more times, and if it still folds, the preview shows the surface
+//! as far towards it as folds nothing (the solve goes on from the folded one at the next sample).
 
 use std::sync::Arc;
 
@@ -57,6 +57,10 @@ const ITERATIONS_PER_FRAME: usize = 1;
 
 /// The most iterations a step adds while its surface folds a triangle over.
 const UNFOLDING_ITERATIONS: usize = 3;
+
+/// How finely a folded step's shown surface is placed between the last unfolded one and the
+/// folded one (halvings: 1/32 of the way).
+const FOLD_BISECTIONS: usize = 5;
 
 /// Applies a `pull` op: returns the index of the pulled model and its new version.
 ///
@@ -104,6 +108,8 @@ pub(in crate::document) struct PullPreview {
     positions: Vec<DVec3>,
     /// The last of `positions` that folded no triangle over: what is shown.
     unfolded: Vec<DVec3>,
+    /// Scratch for [`show_towards_folded`]'s trials, kept between steps.
+    trial: Vec<DVec3>,
     /// The surface of the preview region; `None` until the first step factors it.
     surface: Option<FairSurface>,
     /// How far from the grabbed point the preview region reaches.
@@ -138,6 +144,7 @@ impl PullPreview {
             nodes: vec![DVec3::ZERO; node_vertices.len()],
             positions: model.mesh.positions().to_vec(),
             unfolded: model.mesh.positions().to_vec(),
+            trial: Vec::new(),
             model,
             pull,
             node_vertices,
@@ -198,13 +205,15 @@ impl PullPreview {
         }
         if !folds(&self.positions) {
             self.unfolded.copy_from_slice(&self.positions);
+        } else {
+            show_towards_folded(&mut self.unfolded, &mut self.trial, &self.positions, folds);
         }
         self.followed = stroke.len();
         Ok(Some(false))
     }
 
     /// The index of the model being pulled and the previewed positions of its vertices: the
-    /// last that folded no triangle over.
+    /// last that folded no triangle over (see [`show_towards_folded`]).
     pub(in crate::document) fn moved(&self) -> (usize, &[DVec3]) {
         (self.model_index, &self.unfolded)
     }
@@ -275,4 +284,33 @@ fn plane_point(camera: &Camera, viewport: DVec2, on_plane: DVec3, screen: DVec2)
     let t = (on_plane - origin).dot(normal) / facing;
     let point = origin + t * dir;
     point.is_finite().then_some(point)
+}
+
+/// Moves `shown` (which folds nothing) as far towards the `folded` surface as it can go
+/// without a fold, bisecting the straight path between them, so a fast drag's preview still
+/// follows the pen part of the way instead of standing still. `trial` is scratch.
+fn show_towards_folded(
+    shown: &mut [DVec3],
+    trial: &mut Vec<DVec3>,
+    folded: &[DVec3],
+    folds: impl Fn(&[DVec3]) -> bool,
+) {
+    let (mut unfolded_at, mut folded_at) = (0.0, 1.0);
+    trial.clear();
+    trial.extend_from_slice(shown);
+    for _ in 0..FOLD_BISECTIONS {
+        let t = 0.5 * (unfolded_at + folded_at);
+        for ((p, &from), &to) in trial.iter_mut().zip(&*shown).zip(folded) {
+            *p = from.lerp(to, t);
+        }
+        match folds(trial) {
+            true => folded_at = t,
+            false => unfolded_at = t,
+        }
+    }
+    if unfolded_at > 0.0 {
+        for (p, &to) in shown.iter_mut().zip(folded) {
+            *p = p.lerp(to, unfolded_at);
+        }
+    }
 }

@@ -86,7 +86,17 @@ export async function openApp(
     hasTouch: true,
     isMobile,
   });
-  if (!intro) await context.addInitScript(() => localStorage.setItem('sketchmesh.intro', 'seen'));
+  // On every document the context opens; one without storage (about:blank, a data: URL a
+  // case navigates to) has none to mark.
+  if (!intro) {
+    await context.addInitScript(() => {
+      try {
+        localStorage.setItem('sketchmesh.intro', 'seen');
+      } catch {
+        // No storage here: nothing to introduce either.
+      }
+    });
+  }
   const page = await context.newPage();
   const errors = [];
   page.on('console', (msg) => {
@@ -356,13 +366,17 @@ export function changedFraction(a, b, points, { radius = 3, threshold = 60 } = {
   return changed / points.length;
 }
 
-/** The fraction of pixels in the whole image that differ by more than `threshold`. */
-export function imageChangedFraction(a, b, threshold = 60) {
+/**
+ * The fraction of pixels in the image from row `fromY` down that differ by more than
+ * `threshold` (from a row below the toolbar and the hint line, which say which tool is in use,
+ * to compare only what the view shows).
+ */
+export function imageChangedFraction(a, b, threshold = 60, { fromY = 0 } = {}) {
   let changed = 0;
-  for (let y = 0; y < a.height; y++) {
+  for (let y = fromY; y < a.height; y++) {
     for (let x = 0; x < a.width; x++) if (pixelDiff(a, b, x, y) > threshold) changed++;
   }
-  return changed / (a.width * a.height);
+  return changed / (a.width * (a.height - fromY));
 }
 
 /**

@@ -342,42 +342,34 @@ impl Making {
         let caption = self.caption();
         let counter = format!("Step {} of {}", self.current + 1, self.ops.len());
         let mut rects = [egui::Rect::NOTHING; 3];
-        egui::Area::new(egui::Id::unique("making"))
-            .order(egui::Order::Foreground)
-            .pivot(egui::Align2::CENTER_BOTTOM)
-            .fixed_pos(viewport.center_bottom() - egui::vec2(0.0, 14.0))
-            .constrain(true)
-            .show(ctx, |ui| {
-                egui::Frame::popup(ui.style()).show(ui, |ui| {
-                    ui.set_max_width(width);
-                    ui.vertical_centered(|ui| {
-                        ui.label(egui::RichText::new(counter).weak());
-                        ui.add(egui::Label::new(egui::RichText::new(caption).size(16.0)).wrap());
-                        ui.horizontal(|ui| {
-                            let row = 3.0 * BUTTON.x + 2.0 * ui.spacing().item_spacing.x;
-                            ui.add_space(((ui.available_width() - row) / 2.0).max(0.0));
-                            let pause = match self.paused {
-                                true => "Resume",
-                                false => "Pause",
-                            };
-                            for (k, (label, control)) in [
-                                (pause, Control::Pause),
-                                ("Skip step", Control::Skip),
-                                ("Skip to end", Control::ToEnd),
-                            ]
-                            .into_iter()
-                            .enumerate()
-                            {
-                                let response = ui.add(egui::Button::new(label).min_size(BUTTON));
-                                rects[k] = response.rect;
-                                if response.clicked() {
-                                    pressed = Some(control);
-                                }
-                            }
-                        });
-                    });
+        crate::panels::progress::bottom_card(ctx, "making", viewport, width, |ui| {
+            ui.vertical_centered(|ui| {
+                ui.label(egui::RichText::new(counter).weak());
+                ui.add(egui::Label::new(egui::RichText::new(caption).size(16.0)).wrap());
+                ui.horizontal(|ui| {
+                    let row = 3.0 * BUTTON.x + 2.0 * ui.spacing().item_spacing.x;
+                    ui.add_space(((ui.available_width() - row) / 2.0).max(0.0));
+                    let pause = match self.paused {
+                        true => "Resume",
+                        false => "Pause",
+                    };
+                    for (k, (label, control)) in [
+                        (pause, Control::Pause),
+                        ("Skip step", Control::Skip),
+                        ("Skip to end", Control::ToEnd),
+                    ]
+                    .into_iter()
+                    .enumerate()
+                    {
+                        let response = ui.add(egui::Button::new(label).min_size(BUTTON));
+                        rects[k] = response.rect;
+                        if response.clicked() {
+                            pressed = Some(control);
+                        }
+                    }
                 });
             });
+        });
         self.buttons = Some(rects);
         if let Some(control) = pressed {
             self.control(control);

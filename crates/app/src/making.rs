@@ -342,7 +342,7 @@ impl Making {
         let caption = self.caption();
         let counter = format!("Step {} of {}", self.current + 1, self.ops.len());
         let mut rects = [egui::Rect::NOTHING; 3];
-        crate::panels::progress::bottom_card(ctx, "making", viewport, width, |ui| {
+        crate::overlay::bottom_card(ctx, "making", viewport, width, |ui| {
             ui.vertical_centered(|ui| {
                 ui.label(egui::RichText::new(counter).weak());
                 ui.add(egui::Label::new(egui::RichText::new(caption).size(16.0)).wrap());

@@ -1,5 +1,5 @@
 //! Drawing over the 3D view, shared by the app and the tools: a hint line, a stroke as it
-//! will be stored, a piece of outline, a fall-off level's gray.
+//! will be stored, a piece of outline, a fall-off level's gray, a card at the bottom for work that runs.
 
 use sketchmesh_core::curve::{StrokePoint, process_stroke};
 
@@ -83,4 +83,26 @@ pub fn stroke_ui(ui: &egui::Ui, viewport: egui::Rect, raw: &[StrokePoint], color
 pub fn falloff_gray(level: f64) -> u8 {
     let linear = 0.04 + (1.0 - 0.04) * level.clamp(0.0, 1.0);
     (linear.powf(1.0 / 2.2) * 255.0).round() as u8
+}
+
+/// A card at the bottom of `viewport`, at most `width` wide, over the scene: where what
+/// runs (work in progress, an example's making) shows its state and its buttons.
+pub fn bottom_card(
+    ctx: &egui::Context,
+    id: &str,
+    viewport: egui::Rect,
+    width: f32,
+    body: impl FnOnce(&mut egui::Ui),
+) {
+    egui::Area::new(egui::Id::unique(id))
+        .order(egui::Order::Foreground)
+        .pivot(egui::Align2::CENTER_BOTTOM)
+        .fixed_pos(viewport.center_bottom() - egui::vec2(0.0, 14.0))
+        .constrain(true)
+        .show(ctx, |ui| {
+            egui::Frame::popup(ui.style()).show(ui, |ui| {
+                ui.set_max_width(width);
+                body(ui);
+            });
+        });
 }

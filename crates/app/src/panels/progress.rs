@@ -17,7 +17,7 @@ const CANCEL: egui::Vec2 = egui::vec2(88.0, 44.0);
 pub fn progress_ui(ctx: &egui::Context, viewport: egui::Rect, what: &str) -> bool {
     let mut cancelled = false;
     let width = (viewport.width() - 24.0).max(CANCEL.x + 60.0);
-    bottom_card(ctx, "work in progress", viewport, width, |ui| {
+    crate::overlay::bottom_card(ctx, "work in progress", viewport, width, |ui| {
         ui.horizontal(|ui| {
             ticking_ring(ui);
             let room = ui.available_width() - CANCEL.x - ui.spacing().item_spacing.x;
@@ -30,28 +30,6 @@ pub fn progress_ui(ctx: &egui::Context, viewport: egui::Rect, what: &str) -> boo
         });
     });
     cancelled
-}
-
-/// A card at the bottom of `viewport`, at most `width` wide, over the scene: where what
-/// runs (work in progress, an example's making) shows its state and its buttons.
-pub fn bottom_card(
-    ctx: &egui::Context,
-    id: &str,
-    viewport: egui::Rect,
-    width: f32,
-    body: impl FnOnce(&mut egui::Ui),
-) {
-    egui::Area::new(egui::Id::unique(id))
-        .order(egui::Order::Foreground)
-        .pivot(egui::Align2::CENTER_BOTTOM)
-        .fixed_pos(viewport.center_bottom() - egui::vec2(0.0, 14.0))
-        .constrain(true)
-        .show(ctx, |ui| {
-            egui::Frame::popup(ui.style()).show(ui, |ui| {
-                ui.set_max_width(width);
-                body(ui);
-            });
-        });
 }
 
 /// A ring with a gap that moves an eighth of a turn every [`TICK`] seconds.

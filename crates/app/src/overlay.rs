@@ -1,5 +1,6 @@
 //! Drawing over the 3D view, shared by the app and the tools: a hint line, a stroke as it
-//! will be stored, a piece of outline, a fall-off level's gray, a card at the bottom for work that runs.
+//! will be stored, a piece of outline, a fall-off level's gray, and the card at the bottom
+//! for work that runs.
 
 use sketchmesh_core::curve::{StrokePoint, process_stroke};
 

@@ -11,7 +11,7 @@
 //!    which use nothing of the crate, and [`geometry`] (which builds on `mesh` and `solve`);
 //! 2. [`model`]: what a document holds, as plain data, on the ground floor's `mesh`;
 //! 3. the modeling techniques, on the floors below: [`deform`], [`silhouette`],
-//!    [`fibermesh`], [`optimize`], [`skeleton`], [`feature`] (which solves with `deform`'s
+//!    [`fibermesh`], [`optimize`], [`skeleton`], [`symmetry`], [`feature`] (which solves with `deform`'s
 //!    system), [`oversketch`] (which bends with `deform` along `silhouette`s and embeds a
 //!    sketch as `feature` does), [`region_edit`] (with `feature`'s placement and
 //!    `fibermesh`'s curve embedding), [`volumetric`] (with `deform` and `feature`) and
@@ -36,4 +36,5 @@ pub mod region_edit;
 pub mod silhouette;
 pub mod skeleton;
 pub mod solve;
+pub mod symmetry;
 pub mod volumetric;

@@ -73,6 +73,7 @@ use std::sync::Arc;
 
 use crate::io::Previewed;
 use crate::mesh::VertexId;
+use crate::model::MirrorPlane;
 use crate::region_edit::{Levels, RegionEdit};
 use glam::{DVec2, DVec3};
 
@@ -86,6 +87,7 @@ use super::outcome::{made_by, outcome, sharing_looks, with_imported, with_model}
 use super::oversketch::{OutlinePiece, OutlinePreview};
 use super::region_edit::RegionPreview;
 use super::skeleton::HandleDrag;
+use super::symmetry::mirrored_outcome;
 use super::volumetric::CurvePreview;
 use super::{CommandError, Document, Editor, ImportInput, Model, Op, RegionEditInput};
 use crate::io::Imported;
@@ -135,7 +137,13 @@ pub enum Progress {
 /// Why steps, why one convergence loop, gestures and refusals: see `document/edit.rs`.
 #[derive(Debug)]
 pub struct Edit {
+    /// The op as made, without its symmetry.
     op: Op,
+    /// The plane the op mirrors about, when it was made with symmetry on: its result is
+    /// made symmetric once computed ([`mirrored_outcome`]).
+    mirror: Option<MirrorPlane>,
+    /// Whether the result ([`Work::Done`]) is made symmetric already.
+    is_mirrored: bool,
     /// The document the edit began on; the result is computed from it and the op alone.
     base: Document,
     /// Whether the op's stroke is still being drawn.
@@ -350,6 +358,7 @@ impl Edit {
 
     /// [`Edit::begin`] on `base`, with no editor.
     fn begin_on(base: Document, op: Op, is_gesture: bool) -> Result<Edit, CommandError> {
+        let (op, mirror) = op.into_parts();
         let work = if is_gesture {
             Work::gesture(&base, &op)?
         } else {
@@ -359,6 +368,8 @@ impl Edit {
         let shown = u64::from(matches!(work, Work::Create(_)));
         Ok(Edit {
             op,
+            mirror,
+            is_mirrored: false,
             base,
             is_gesture,
             work,
@@ -376,7 +387,10 @@ impl Edit {
     ///
     /// Errors: the op's refusal; the edit then only repeats it (drop it: nothing changed).
     pub fn step(&mut self) -> Result<Progress, CommandError> {
-        match self.advance() {
+        match self
+            .advance()
+            .and_then(|advanced| self.mirror_result().map(|()| advanced))
+        {
             Ok((progress, did_work)) => {
                 let rebuilt = match &mut self.work {
                     Work::Region(preview) => preview.take_rebuilt(),
@@ -402,6 +416,28 @@ impl Edit {
                 self.work = Work::Failed(error.clone());
                 Err(error)
             }
+        }
+    }
+
+    /// Makes a result ready to commit symmetric, once, when the op was made with symmetry on.
+    ///
+    /// Errors: [`mirrored_outcome`]'s refusal.
+    fn mirror_result(&mut self) -> Result<(), CommandError> {
+        let Some(plane) = self.mirror.filter(|_| !self.is_mirrored) else {
+            return Ok(());
+        };
+        if let Work::Done(outcome) = std::mem::replace(&mut self.work, Work::Whole) {
+            self.work = Work::Done(mirrored_outcome(&self.base, &self.op, plane, outcome)?);
+            self.is_mirrored = true;
+        }
+        Ok(())
+    }
+
+    /// The op as the session logs it: with its plane, when made with symmetry on.
+    fn logged_op(&self) -> Op {
+        match self.mirror {
+            Some(plane) => self.op.clone().mirrored(plane),
+            None => self.op.clone(),
         }
     }
 
@@ -522,7 +558,7 @@ impl Edit {
     pub fn revise(&mut self, op: Op) {
         debug_assert!(self.is_gesture, "revise after the gesture ended");
         if self.is_gesture && op.name() == self.op.name() {
-            self.op = op;
+            self.op = op.into_parts().0;
             self.version += 1;
         }
     }
@@ -564,12 +600,14 @@ impl Edit {
     /// Errors: the op's refusal; the document, the history and the log are unchanged.
     pub fn finish(mut self, editor: &mut Editor) -> Result<(), CommandError> {
         if !same_document(&self.base, editor.document()) {
-            return editor.begin(self.op)?.finish(editor);
+            return editor.begin(self.logged_op())?.finish(editor);
         }
         self.is_gesture = false;
         loop {
+            self.mirror_result()?;
+            let logged = self.logged_op();
             match std::mem::replace(&mut self.work, Work::Whole) {
-                Work::Done(outcome) => return editor.commit(self.op, outcome),
+                Work::Done(outcome) => return editor.commit(logged, outcome),
                 work => self.work = work,
             }
             self.step()?;
@@ -638,6 +676,9 @@ impl Edit {
             Ok(outcome) => Work::Done(outcome),
             Err(error) => Work::Failed(error),
         };
+        if let Err(error) = self.mirror_result() {
+            self.work = Work::Failed(error);
+        }
         self.revision += 1;
         self.generation += 1;
     }

@@ -16,6 +16,7 @@ use crate::oversketch::OversketchError;
 use crate::region_edit::RegionError;
 use crate::skeleton::SkeletonError;
 use crate::solve::SolveError;
+use crate::symmetry::SymmetryError;
 use crate::volumetric::VolumetricError;
 
 /// Why an op was refused. The messages are sentences for the user.
@@ -146,6 +147,15 @@ pub enum CommandError {
     /// A mesh optimization was refused.
     #[error("The mesh could not be optimized: {0}.")]
     Optimize(#[from] OptimizeError),
+    /// An op made with symmetry on changed a model that is neither symmetric about the
+    /// plane nor one of a pair of mirror twins.
+    #[error(
+        "This model is not mirror-symmetric about the symmetry plane, so the edit cannot act on both sides: symmetrize it first (Arrange, Symmetrize) or turn Symmetry off."
+    )]
+    NotSymmetric,
+    /// A model could not be made symmetric.
+    #[error("{0}")]
+    Symmetry(#[from] SymmetryError),
 }
 
 impl From<StrokeError> for CommandError {

@@ -33,6 +33,7 @@ mod replay;
 mod session;
 mod session_error;
 mod skeleton;
+mod symmetry;
 mod volumetric;
 
 pub use crate::model::{
@@ -55,9 +56,9 @@ pub use keyframes::KeyframeInput;
 pub use op::{
     AddCurveInput, AreaInput, BrushInput, CreateInput, CurveHandleInput, CurveTypeInput,
     DeleteHandleInput, DuplicateInput, FileInput, HandleEditInput, HandleInput, ImportInput,
-    LinkHandlesInput, MergeInput, ModelInput, Op, OptimizeInput, OversketchFit, OversketchInput,
-    ProfileInput, RegionEditInput, SketchFeatureInput, StrokeInput, StrokePairInput,
-    TransformInput,
+    LinkHandlesInput, MergeInput, MirroredOp, ModelInput, Op, OptimizeInput, OversketchFit,
+    OversketchInput, ProfileInput, RegionEditInput, SketchFeatureInput, StrokeInput,
+    StrokePairInput, SymmetrizeInput, TransformInput,
 };
 pub use outcome::{import_files, model_op};
 pub use oversketch::OutlinePiece;

@@ -12,6 +12,7 @@ use crate::camera::Camera;
 use crate::curve::StrokePoint;
 use crate::deform::HandleFit;
 use crate::feature::FeatureKind;
+use crate::model::{MirrorPlane, Side};
 use crate::optimize::OptimizeParams;
 use crate::oversketch::{ManualHandle, OversketchRoi, SOFT_FIT_WEIGHT};
 use crate::skeleton::{HandleKind, PointEdit};
@@ -32,6 +33,10 @@ macro_rules! op_list {
         $(#[$meta])*
         pub enum Op {
             $( $(#[$doc])* #[serde(rename = $name)] $variant $(($input))?, )*
+            /// An op made with symmetry on: written as the op with a `"mirror"` field (see
+            /// [`Op::to_json`] and the session reader), not by serde.
+            #[serde(skip)]
+            Mirrored(Box<MirroredOp>),
         }
 
         impl Op {
@@ -43,6 +48,7 @@ macro_rules! op_list {
             pub fn name(&self) -> &'static str {
                 match self {
                     $( Op::$variant { .. } => $name, )*
+                    Op::Mirrored(mirrored) => mirrored.op.name(),
                 }
             }
 
@@ -51,6 +57,7 @@ macro_rules! op_list {
             pub(super) fn is_bare(&self) -> bool {
                 match self {
                     $( Op::$variant { .. } => op_list!(@bare $($input)?), )*
+                    Op::Mirrored(_) => false,
                 }
             }
         }
@@ -136,6 +143,8 @@ pub enum Op {
     DeleteKeyframe(KeyframeInput) = "delete_keyframe",
     /// Put every animated model in its pose at a time.
     PoseAt(KeyframeInput) = "pose_at",
+    /// Make a model mirror-symmetric about a plane, keeping one side.
+    Symmetrize(SymmetrizeInput) = "symmetrize",
     /// Undo the last change.
     Undo = "undo",
     /// Redo the last undone change.
@@ -143,11 +152,64 @@ pub enum Op {
 }
 }
 
+/// An op made with symmetry on, and the plane it mirrors about.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MirroredOp {
+    /// The op as made.
+    pub op: Op,
+    /// The symmetry plane.
+    pub plane: MirrorPlane,
+}
+
+/// A `symmetrize` op: `{"op":"symmetrize","model":0,"plane":[1,0,0,0],"keep":"positive"}`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SymmetrizeInput {
+    /// Index of the model in the document.
+    pub model: usize,
+    /// The plane `[nx, ny, nz, d]`: `n · x = d`, `n` a unit vector.
+    pub plane: MirrorPlane,
+    /// The side kept (`"positive"`: where `n · x > d`); the other becomes its mirror image.
+    pub keep: Side,
+}
+
 impl Op {
+    /// This op made with symmetry on about `plane` (an op already mirrored keeps its own);
+    /// ops that cannot be mirrored (undo, redo, import, symmetrize) stay as they are.
+    pub fn mirrored(self, plane: MirrorPlane) -> Op {
+        match self {
+            Op::Undo | Op::Redo | Op::Import(_) | Op::Symmetrize(_) | Op::Mirrored(_) => self,
+            op => Op::Mirrored(Box::new(MirroredOp { op, plane })),
+        }
+    }
+
+    /// The op as made and the plane it mirrors about, if it was made with symmetry on.
+    pub fn into_parts(self) -> (Op, Option<MirrorPlane>) {
+        match self {
+            Op::Mirrored(mirrored) => (mirrored.op, Some(mirrored.plane)),
+            op => (op, None),
+        }
+    }
+
+    /// The op as made, without its symmetry.
+    pub fn unmirrored(&self) -> &Op {
+        match self {
+            Op::Mirrored(mirrored) => &mirrored.op,
+            op => op,
+        }
+    }
+
     /// The op as one line of session JSON.
     pub fn to_json(&self) -> String {
         if let Op::Import(input) = self {
             return input.to_json();
+        }
+        if let Op::Mirrored(mirrored) = self {
+            let mut json = mirrored.op.to_json();
+            let plane = serde_json::to_string(&mirrored.plane).unwrap_or_default();
+            json.pop();
+            json.push_str(&format!(",\"mirror\":{plane}}}"));
+            return json;
         }
         // Serializing these plain structs cannot fail: every map key is a string and
         // serde_json writes non-finite numbers as null (which a refused op never logs anyway).
@@ -165,7 +227,7 @@ impl Op {
     /// ([`model_op`](super::model_op)).
     pub fn makes_one_model(&self) -> bool {
         matches!(
-            self,
+            self.unmirrored(),
             Op::Create(_)
                 | Op::Oversketch(_)
                 | Op::Pull(_)
@@ -182,12 +244,13 @@ impl Op {
                 | Op::RegionEdit(_)
                 | Op::Deform(_)
                 | Op::Merge(_)
+                | Op::Symmetrize(_)
         )
     }
 
     /// What the op makes or does, as a sentence names it ("Computing the new shape…").
     pub fn title(&self) -> String {
-        match self {
+        match self.unmirrored() {
             Op::Create(_) => String::from("new shape"),
             Op::Oversketch(_) => String::from("over-sketch"),
             other => other.name().replace('_', " "),
@@ -197,7 +260,7 @@ impl Op {
     /// The raw samples of the op's stroke; `None` for the ops without one (import, the ops
     /// on numbers and indices, undo, redo).
     pub fn stroke(&self) -> Option<&[[f64; 3]]> {
-        match self {
+        match self.unmirrored() {
             Op::Stroke(input) | Op::Pull(input) => Some(&input.stroke),
             Op::Create(input) => Some(&input.stroke),
             Op::Erase(input) | Op::Rub(input) | Op::Cut(input) => Some(&input.stroke),
@@ -219,6 +282,7 @@ impl Op {
     /// [`Op::stroke`], to extend while the stroke is drawn.
     pub fn stroke_mut(&mut self) -> Option<&mut Vec<[f64; 3]>> {
         match self {
+            Op::Mirrored(mirrored) => mirrored.op.stroke_mut(),
             Op::Stroke(input) | Op::Pull(input) => Some(&mut input.stroke),
             Op::Create(input) => Some(&mut input.stroke),
             Op::Erase(input) | Op::Rub(input) | Op::Cut(input) => Some(&mut input.stroke),
@@ -243,7 +307,7 @@ impl Op {
         let drawn = |viewport, camera, stroke: &[[f64; 3]]| {
             (!stroke.is_empty()).then(|| StrokeInput::in_view(viewport, camera, stroke))
         };
-        match self {
+        match self.unmirrored() {
             Op::Tunnel(pair) | Op::Extrude(pair) => pair.strokes.to_vec(),
             Op::RegionEdit(input) => {
                 let (viewport, camera) = (input.viewport, input.camera);

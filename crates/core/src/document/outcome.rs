@@ -14,6 +14,7 @@ use super::region_edit::region_edit_op;
 use super::skeleton::{
     curve_handle_op, delete_handle_op, handle_edit_op, link_handles_op, remove_model,
 };
+use super::symmetry::symmetrize_op;
 use super::volumetric::{curve_deform_op, deform_op};
 use super::{CommandError, Document, ImportInput, Model, Op, SketchCurve, StrokeInput, curve_edit};
 use crate::curve::process_stroke;
@@ -74,6 +75,7 @@ pub fn model_op(doc: &Document, op: &Op) -> Result<(usize, Model), CommandError>
         Op::RegionEdit(input) => region_edit_op(doc, input),
         Op::Deform(input) => deform_op(doc, input),
         Op::Merge(input) => curve_edit::merge_op(doc, input),
+        Op::Symmetrize(input) => symmetrize_op(doc, input),
         other => Err(CommandError::NotOneModel(other.name())),
     }
 }
@@ -99,8 +101,10 @@ pub(super) fn sharing_looks(before: &Model, mut model: Model) -> Model {
 /// added when `index` is past the models; a merge's second model goes.
 pub(super) fn made_by(base: &Document, op: &Op, made: (usize, Model)) -> Outcome {
     let mut outcome = with_model(base, made);
-    if let (Op::Merge(input), Outcome::Document(next)) = (op, &mut outcome) {
-        remove_model(next, input.kept_and_gone().1);
+    match (op, &mut outcome) {
+        (Op::Merge(input), Outcome::Document(next)) => remove_model(next, input.kept_and_gone().1),
+        (Op::Symmetrize(input), Outcome::Document(next)) => next.symmetry = Some(input.plane),
+        _ => {}
     }
     outcome
 }

@@ -8,6 +8,7 @@ use serde_json::Value;
 
 use super::session_error::SessionError;
 use super::{Editor, Op, Progress, Replay};
+use crate::model::MirrorPlane;
 
 /// The `"format"` value of a session file.
 pub const SESSION_FORMAT: &str = "sketchmesh-session";
@@ -169,6 +170,26 @@ fn parse_op(value: Value) -> Result<Op, String> {
             "expected an object such as {{\"op\": \"undo\"}}, found {value}"
         ));
     };
+    let mut object = object;
+    let mirror = match object.remove("mirror") {
+        Some(plane) => Some(
+            serde_json::from_value::<MirrorPlane>(plane)
+                .map_err(|error| format!("\"mirror\" must be a plane [nx, ny, nz, d]: {error}"))?,
+        ),
+        None => None,
+    };
+    let op = parse_plain_op(object)?;
+    let Some(plane) = mirror else {
+        return Ok(op);
+    };
+    match op.clone().mirrored(plane) {
+        Op::Mirrored(mirrored) => Ok(Op::Mirrored(mirrored)),
+        _ => Err(format!("a \"{}\" op cannot carry \"mirror\"", op.name())),
+    }
+}
+
+/// Parses one op without its `"mirror"` field.
+fn parse_plain_op(object: serde_json::Map<String, Value>) -> Result<Op, String> {
     let name = match object.get("op") {
         Some(Value::String(name)) => name.clone(),
         Some(other) => return Err(format!("\"op\" must be a string, found {other}")),

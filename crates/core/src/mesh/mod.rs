@@ -28,6 +28,7 @@ pub mod edit;
 mod error;
 pub mod fixtures;
 mod halfedge;
+mod mirror;
 mod paths;
 pub mod primitives;
 pub mod remesh;

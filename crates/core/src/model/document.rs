@@ -5,6 +5,7 @@ use std::sync::Arc;
 use serde::Serialize;
 
 use super::curve_handle::CurveHandle;
+use super::mirror_plane::MirrorPlane;
 use super::point_cloud::PointCloud;
 use super::sketch::SketchCurve;
 use super::surface::Model;
@@ -22,6 +23,9 @@ pub struct Document {
     pub handles: Vec<Arc<CurveHandle>>,
     /// How many handles were ever made: the number of the next one.
     pub handles_made: u32,
+    /// The plane the last op made with symmetry on mirrored about (or a file's): the
+    /// plane its symmetric models and mirror twins pair up across.
+    pub symmetry: Option<MirrorPlane>,
 }
 
 /// Counts shown in the app's status line and printed by the CLI.

@@ -21,5 +21,6 @@ mod previews;
 mod region_edit;
 mod silhouette;
 mod skeleton;
+mod symmetry;
 mod topology;
 mod volumetric;

@@ -294,6 +294,11 @@ impl SketchApp {
             }
             Command::ToggleWireframe => self.scene.options.wireframe ^= true,
             Command::ToggleGrid => self.scene.options.grid ^= true,
+            Command::ToggleSymmetry => {
+                let on = !self.shared.borrow().symmetry.is_on;
+                let said = self.shared.borrow_mut().choose_symmetry(on);
+                self.status.say(Tone::Info, said.to_owned(), now);
+            }
             Command::ToggleHelp => self.panels.show_help ^= true,
         }
     }
@@ -434,7 +439,7 @@ impl SketchApp {
             ContextAction::Duplicate | ContextAction::Delete => {
                 let camera = self.shared.borrow().camera.camera();
                 if let Some(op) = action.op(model, &camera) {
-                    self.run(now, |r, cx| r.begin(op, false, cx));
+                    self.run(now, |r, cx| r.begin_made(op, false, cx));
                 }
             }
             ContextAction::Oversketch => self.set_mode(Mode::Oversketch, now),
@@ -589,6 +594,7 @@ impl eframe::App for SketchApp {
                     ui,
                     layout,
                     &shared.editor,
+                    shared.symmetry.is_on,
                     &mut self.scene.options,
                     &mut self.tools,
                     &mut self.panels.show_help,

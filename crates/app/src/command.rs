@@ -37,6 +37,8 @@ pub enum Command {
     ToggleWireframe,
     /// Show the grid, or stop.
     ToggleGrid,
+    /// Turn the Symmetry switch on or off (see [`crate::shared::SymmetrySwitch`]).
+    ToggleSymmetry,
     /// Show the help, or close it.
     ToggleHelp,
 }

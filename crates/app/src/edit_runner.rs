@@ -109,13 +109,14 @@ impl EditRunner {
         let gesture = self.edit.as_mut().filter(|edit| edit.is_gesture());
         match output {
             ToolOutput::None => {}
-            ToolOutput::Commit(op) => self.begin(op, false, cx),
+            ToolOutput::Commit(op) => self.begin_made(op, false, cx),
+            ToolOutput::CommitAsMade(op) => self.begin(op, false, cx),
             ToolOutput::CommitAll(ops) => {
                 for op in ops {
-                    self.begin(op, false, cx);
+                    self.begin_made(op, false, cx);
                 }
             }
-            ToolOutput::Begin(op) => self.begin(op, true, cx),
+            ToolOutput::Begin(op) => self.begin_made(op, true, cx),
             ToolOutput::Extend(sample) => {
                 if let Some(edit) = gesture {
                     edit.extend(sample);
@@ -130,7 +131,7 @@ impl EditRunner {
             ToolOutput::Revise(op) => match gesture {
                 Some(edit) if edit.op().name() == op.name() => edit.revise(op),
                 // The preview was committed meanwhile (another edit began): open a new one.
-                _ => self.begin(op, true, cx),
+                _ => self.begin_made(op, true, cx),
             },
             ToolOutput::Finish => {
                 if let Some(edit) = gesture {
@@ -142,7 +143,7 @@ impl EditRunner {
                     edit.revise(op);
                     edit.end_gesture();
                 }
-                _ => self.begin(op, false, cx),
+                _ => self.begin_made(op, false, cx),
             },
             ToolOutput::Cancel => self.cancel_gesture(),
             ToolOutput::Refused(message) => cx.status.refuse(message, cx.now),
@@ -176,6 +177,21 @@ impl EditRunner {
             return;
         }
         self.begin_now(op, is_gesture, cx);
+    }
+
+    /// Begins an op the user just made (a tool's, the context menu's) as
+    /// [`EditRunner::begin`] does: with the Symmetry switch on, made with symmetry on about
+    /// the document's plane (the default one, `x = 0`, until an op or a file sets another).
+    /// Ops that cannot mirror (undo, redo, import, symmetrize) stay as they are.
+    pub fn begin_made(&mut self, op: Op, is_gesture: bool, cx: &mut Cx<'_>) {
+        let op = {
+            let shared = cx.shared.borrow();
+            match shared.symmetry.is_on {
+                true => op.mirrored(shared.editor.document().symmetry.unwrap_or_default()),
+                false => op,
+            }
+        };
+        self.begin(op, is_gesture, cx);
     }
 
     /// Begins the next op that waited for the worker, once the edit it waited for is over.
@@ -375,6 +391,11 @@ impl EditRunner {
         let Some(import) = self.import.take() else {
             return;
         };
+        if result.is_ok() {
+            // An import is rarely symmetric: with the switch on, every edit of it would be
+            // refused (see [`crate::shared::SymmetrySwitch`]).
+            cx.shared.borrow_mut().symmetry.is_on = false;
+        }
         match &result {
             Ok(()) => cx.status.done(format!("Imported {}.", import.name), cx.now),
             Err(why) => cx.status.refuse(why.clone(), cx.now),

@@ -41,6 +41,23 @@ pub fn keep_intro_seen() {
     let _ = call_storage("setItem", &args);
 }
 
+/// The key under which the page's local storage keeps what the Symmetry switch was last
+/// left at: `"on"` or `"off"`.
+const SYMMETRY_KEY: &str = "sketchmesh.symmetry";
+
+/// What the Symmetry switch was last left at on an earlier visit, if the page kept it.
+pub fn symmetry_for_new() -> Option<bool> {
+    let kept = call_storage("getItem", &[JsValue::from_str(SYMMETRY_KEY)])?;
+    kept.as_string().map(|kept| kept == "on")
+}
+
+/// Keeps what the user left the Symmetry switch at, for the next new documents and visits.
+pub fn keep_symmetry(on: bool) {
+    let value = if on { "on" } else { "off" };
+    let args = [JsValue::from_str(SYMMETRY_KEY), JsValue::from_str(value)];
+    let _ = call_storage("setItem", &args);
+}
+
 /// Keeps the document shown (`record`, or nothing when it has no ops) in the page's store and
 /// makes a new document, named `title`, the one the autosave writes to: a session file opened
 /// becomes a document of its own.

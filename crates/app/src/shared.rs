@@ -8,6 +8,39 @@ use crate::files::ImportQueue;
 use crate::tools::Mode;
 use crate::{autosave, clock, panels};
 
+/// The Symmetry switch (issue 50): whether the ops the user makes are made with symmetry on
+/// (one stroke makes both arms, one pull moves both sides), and what a new document starts
+/// with. An import turns it off for its document (a scan is rarely symmetric, and every edit
+/// on it would be refused) without changing what the next new document starts with: that
+/// stays as the user last left the switch.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SymmetrySwitch {
+    /// Whether the ops the user makes now mirror about the document's plane.
+    pub is_on: bool,
+    /// What a new document starts with: the user's last choice (kept by the page).
+    pub for_new: bool,
+}
+
+impl Default for SymmetrySwitch {
+    /// On: most things people model (characters, animals, vehicles) are symmetric.
+    fn default() -> Self {
+        SymmetrySwitch {
+            is_on: true,
+            for_new: true,
+        }
+    }
+}
+
+impl SymmetrySwitch {
+    /// The user turned the switch on or off: for this document and the new ones.
+    pub fn choose(&mut self, on: bool) {
+        *self = SymmetrySwitch {
+            is_on: on,
+            for_new: on,
+        };
+    }
+}
+
 /// State shared with the page API (`window.sketchmesh`), which runs outside frames.
 pub struct Shared {
     /// The document and its history.
@@ -47,6 +80,8 @@ pub struct Shared {
     pub making_asked: Option<(String, Vec<String>, crate::files::Reply)>,
     /// How the playing of a making stands (see `making::Standing`), for the page API.
     pub making: Option<serde_json::Value>,
+    /// The Symmetry switch: whether the ops the user makes mirror about the plane.
+    pub symmetry: SymmetrySwitch,
     /// Editors that replaced the first one (see [`autosave::Revision`]).
     opened: u64,
     /// The ops' session text as JavaScript strings, for the autosave.
@@ -75,6 +110,7 @@ impl Shared {
             exports: 0,
             making_asked: None,
             making: None,
+            symmetry: SymmetrySwitch::default(),
             opened: 0,
             #[cfg(target_arch = "wasm32")]
             op_texts: Default::default(),
@@ -90,9 +126,25 @@ impl Shared {
         self.mode = Mode::Sketch;
     }
 
+    /// The user turned the Symmetry switch `on` or off (the toolbar, its key, the page API):
+    /// for this document and, kept by the page, for new ones. Returns what to tell them.
+    pub fn choose_symmetry(&mut self, on: bool) -> &'static str {
+        self.symmetry.choose(on);
+        #[cfg(target_arch = "wasm32")]
+        crate::page_store::keep_symmetry(on);
+        match on {
+            true => {
+                "Symmetry on: what you draw or change on one side is mirrored across the \
+                 plane (X turns it off)."
+            }
+            false => "Symmetry off: edits change only the side you touch (X turns it on).",
+        }
+    }
+
     /// Starts an empty document in the default view.
     pub fn open_empty(&mut self) {
         self.open(Editor::new());
+        self.symmetry.is_on = self.symmetry.for_new;
         self.camera = OrbitCamera::default();
     }
 

@@ -60,6 +60,7 @@ pub fn read(ctx: &egui::Context, tools: &ToolSet) -> Vec<Command> {
     for (key, command) in [
         (Key::W, Command::ToggleWireframe),
         (Key::G, Command::ToggleGrid),
+        (Key::X, Command::ToggleSymmetry),
     ] {
         if pressed(key) {
             commands.push(command);

@@ -48,6 +48,9 @@ pub async fn start(canvas_id: String) -> Result<(), JsValue> {
                     .map_err(|e| format!("Could not listen to pointer events: {e:?}"))?;
                 // The listeners live as long as the page.
                 std::mem::forget(pointer);
+                if let Some(on) = crate::page_store::symmetry_for_new() {
+                    app.shared().borrow_mut().symmetry.choose(on);
+                }
                 install_page_api(app.shared(), cc.egui_ctx.clone())
                     .map_err(|e| format!("Could not install window.sketchmesh: {e:?}"))?;
                 Ok(Box::new(app))
@@ -98,6 +101,16 @@ struct StatusJs<'a> {
 struct IntroJs {
     step: u8,
     skip: Option<[f32; 2]>,
+}
+
+/// The Symmetry switch as the page API gives it: `{on, forNew, plane: [nx, ny, nz, d]}`,
+/// the plane the document's mirrored ops use.
+#[derive(serde::Serialize)]
+#[serde(rename_all = "camelCase")]
+struct SymmetryJs {
+    on: bool,
+    for_new: bool,
+    plane: sketchmesh_core::model::MirrorPlane,
 }
 
 fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(), JsValue> {
@@ -186,6 +199,28 @@ fn install_page_api(shared: Rc<RefCell<Shared>>, ctx: egui::Context) -> Result<(
     set(
         "opCount",
         getter(move || Ok(JsValue::from(s.borrow().editor.ops().len() as u32))),
+    )?;
+    let s = shared.clone();
+    set(
+        "symmetry",
+        getter(move || {
+            let shared = s.borrow();
+            let plane = shared.editor.document().symmetry.unwrap_or_default();
+            json(&SymmetryJs {
+                on: shared.symmetry.is_on,
+                for_new: shared.symmetry.for_new,
+                plane,
+            })
+        }),
+    )?;
+    let (s, c) = (shared.clone(), ctx.clone());
+    set(
+        "setSymmetry",
+        Closure::<dyn Fn(bool)>::new(move |on: bool| {
+            s.borrow_mut().choose_symmetry(on);
+            c.request_repaint();
+        })
+        .into_js_value(),
     )?;
     let s = shared.clone();
     set(

@@ -14,8 +14,16 @@ fn harness() -> Harness<'static, SketchApp> {
         .with_size(vec2(900.0, 600.0))
         // A creation refines over about ten frames before it settles.
         .with_max_steps(40)
+        // The status line's ℹ: the page's browser draws it, egui's bundled font lacks it.
+        .allow_missing_glyphs()
         .wgpu()
-        .build_eframe(|cc| SketchApp::new(cc));
+        .build_eframe(|cc| {
+            // These cases were written for edits that change one side; those with symmetry
+            // turn it on.
+            let app = SketchApp::new(cc);
+            app.shared().borrow_mut().symmetry.choose(false);
+            app
+        });
     // The pointer's own cursor would differ between before and after.
     h.set_render_cursor(false);
     h
@@ -164,6 +172,40 @@ fn replays_bit_for_bit(h: &Harness<'_, SketchApp>) -> bool {
     let replayed = sketchmesh_core::document::Editor::replay_json(&editor.session_json())
         .expect("the session replays");
     replayed.document() == editor.document()
+}
+
+/// The Symmetry switch (X) on, an outline beside the plane (x = 0, the view's middle) makes
+/// the shape and its mirror twin in one op logged with its plane; one undo takes both.
+#[test]
+fn with_symmetry_on_an_outline_beside_the_plane_makes_two_mirror_twins() {
+    let mut h = harness();
+    h.run();
+    h.key_press(egui::Key::X);
+    h.run();
+    assert!(h.state().shared().borrow().symmetry.is_on);
+    draw_loop(&mut h, pos2(640.0, 340.0), vec2(90.0, 70.0));
+    let shared = h.state().shared();
+    let boxes: Vec<_> = (shared.borrow().editor.document().models.iter())
+        .map(|m| m.mesh.bounding_box().expect("a model has vertices"))
+        .collect();
+    assert_eq!(boxes.len(), 2, "the shape and its twin");
+    let ((lo, hi), (twin_lo, twin_hi)) = (boxes[0], boxes[1]);
+    assert!(lo.x > 0.0, "drawn right of the plane: {lo}");
+    let mirrored = glam::DVec3::new(-hi.x, lo.y, lo.z);
+    assert!(
+        (twin_lo - mirrored).length() < 1e-9,
+        "{twin_lo} vs {mirrored}"
+    );
+    assert!((twin_hi - glam::DVec3::new(-lo.x, hi.y, hi.z)).length() < 1e-9);
+    let session = shared.borrow().editor.session_json();
+    assert!(
+        session.contains("\"mirror\":[1.0,0.0,0.0,0.0]"),
+        "{session}"
+    );
+    assert!(replays_bit_for_bit(&h));
+    h.key_press_modifiers(Modifiers::COMMAND, egui::Key::Z);
+    h.run();
+    assert!(shared.borrow().editor.document().models.is_empty());
 }
 
 #[test]

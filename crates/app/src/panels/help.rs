@@ -50,6 +50,7 @@ const SHORTCUTS: &[(&str, &str)] = &[
     ("Esc", "Drop what is in progress (a preview, a drag)"),
     ("W", "Wireframe on/off"),
     ("G", "Grid on/off"),
+    ("X", "Symmetry on/off"),
     ("H, F1", "This help"),
 ];
 

@@ -34,7 +34,12 @@ pub enum Shows {
 
 /// The width of `mode`'s button showing `shows`, at least `target`.
 pub fn width(ui: &egui::Ui, mode: Mode, shows: Shows, target: f32) -> f32 {
-    let name = name_width(ui, mode, shows);
+    width_of(ui, mode.label(), shows, target)
+}
+
+/// The width of a button named `label` showing `shows`, at least `target`.
+pub fn width_of(ui: &egui::Ui, label: &str, shows: Shows, target: f32) -> f32 {
+    let name = name_width(ui, label, shows);
     let wide = match shows {
         Shows::Below => name + 2.0 * PADDING,
         Shows::Icon => ICON + 2.0 * PADDING,
@@ -51,12 +56,9 @@ fn name_font(ui: &egui::Ui, shows: Shows) -> egui::FontId {
     }
 }
 
-fn name_width(ui: &egui::Ui, mode: Mode, shows: Shows) -> f32 {
-    let name = (ui.painter()).layout_no_wrap(
-        mode.label().to_owned(),
-        name_font(ui, shows),
-        egui::Color32::WHITE,
-    );
+fn name_width(ui: &egui::Ui, label: &str, shows: Shows) -> f32 {
+    let name =
+        (ui.painter()).layout_no_wrap(label.to_owned(), name_font(ui, shows), egui::Color32::WHITE);
     name.size().x
 }
 

@@ -85,6 +85,7 @@ pub fn toolbar_ui(
     ui: &mut egui::Ui,
     layout: Layout,
     editor: &Editor,
+    symmetry: bool,
     options: &mut ViewOptions,
     tools: &mut ToolSet,
     show_help: &mut bool,
@@ -116,6 +117,8 @@ pub fn toolbar_ui(
                 file_buttons(ui, layout, editor, &mut action);
                 ui.separator();
                 view_buttons(ui, layout, options, &mut action);
+                // A phone's row has no room for it beside the tools.
+                symmetry_switch(ui, symmetry, Shows::Beside, layout.target, &mut action);
                 help_toggle(ui, layout, show_help);
             });
         } else {
@@ -146,6 +149,10 @@ pub fn toolbar_ui(
             if response.on_hover_text(hint).clicked() {
                 action = Some(a);
             }
+        }
+        if !layout.compact {
+            symmetry_switch(ui, symmetry, shows, height, &mut action);
+            group_gap(ui, height);
         }
         // Compact, the tools that fit beside a More menu (the one in use among them), the
         // rest in it; wide, all of them.
@@ -237,6 +244,47 @@ fn redo_icon(pen: &Pen<'_>) {
     let half_turn = std::f32::consts::PI;
     pen.arc((11.5, 15.0), (7.5, 7.0), half_turn, half_turn + 3.0, false);
     pen.arrow_head((18.8, 11.0), (19.0, 18.5));
+}
+
+/// The Symmetry switch's name.
+const SYMMETRY: &str = "Symmetry";
+
+/// The Symmetry switch, `height` points tall, showing `shows`, lit while `on`: pressed, it
+/// sets `action`.
+fn symmetry_switch(
+    ui: &mut egui::Ui,
+    on: bool,
+    shows: Shows,
+    height: f32,
+    action: &mut Option<Action>,
+) {
+    let width = tool_button::width_of(ui, SYMMETRY, shows, height);
+    let size = egui::vec2(width, height);
+    let response = icon_button(ui, symmetry_icon, SYMMETRY, on, shows, size);
+    let hint = match on {
+        true => {
+            "Symmetry is on: what you draw or change on one side is mirrored across the \
+             plane shown (X)"
+        }
+        false => {
+            "Symmetry is off: turn it on to mirror what you draw or change across the plane (X)"
+        }
+    };
+    if response.on_hover_text(hint).clicked() {
+        *action = Some(Action::ToggleSymmetry);
+    }
+}
+
+/// The Symmetry switch's icon: a shape and its mirror image either side of a dashed plane.
+fn symmetry_icon(pen: &Pen<'_>) {
+    for (from, to) in [(2.0, 6.0), (9.0, 13.0), (16.0, 20.0)] {
+        pen.dim_line(&[(12.0, from), (12.0, to)]);
+    }
+    pen.curve([(9.0, 4.0), (2.0, 5.0), (2.0, 19.0), (9.0, 20.0)], false);
+    pen.curve(
+        [(15.0, 4.0), (22.0, 5.0), (22.0, 19.0), (15.0, 20.0)],
+        false,
+    );
 }
 
 /// The tools whose buttons (showing `shows`, at least `target` wide, a gap between groups)

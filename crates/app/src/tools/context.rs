@@ -20,6 +20,9 @@ pub enum ToolOutput {
     None,
     /// Apply this operation as one undoable step.
     Commit(Op),
+    /// Apply this operation as one undoable step exactly as made, even with the Symmetry
+    /// switch on: a mirror flip, which is no edit to mirror about the plane it flips across.
+    CommitAsMade(Op),
     /// Apply these operations in order, one undoable step each.
     CommitAll(Vec<Op>),
     /// Begin this op as a gesture: its stroke (the pointer-down sample so far) is still

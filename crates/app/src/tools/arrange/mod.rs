@@ -8,6 +8,7 @@
 //! drag makes, are core's ([`Gizmo`]).
 
 mod icon;
+mod mirror;
 
 use glam::{DMat4, DVec2};
 use sketchmesh_core::camera::Camera;
@@ -275,7 +276,8 @@ impl ArrangeTool {
         }
     }
 
-    /// The panel: Delete, Duplicate and Merge for the selection.
+    /// The panel: Delete, Duplicate and Merge for the selection, then Mirror, Mirrored
+    /// duplicate and Symmetrize ([`mirror::symmetry_ui`]).
     pub fn settings_ui(&mut self, ui: &mut egui::Ui, doc: &Document) -> ToolOutput {
         let selected = self.selected.filter(|&i| i < doc.models.len());
         let size = egui::vec2(44.0, 44.0);
@@ -317,7 +319,14 @@ impl ArrangeTool {
                 models: [model, other],
             }));
         }
-        ToolOutput::None
+        ui.separator();
+        match mirror::symmetry_ui(ui, doc, selected, &self.seen.get(), size) {
+            Some(picked) => {
+                self.selected = Some(picked.select);
+                picked.output
+            }
+            None => ToolOutput::None,
+        }
     }
 
     /// Deletes the selected model, if any.

@@ -511,6 +511,10 @@ impl SketchApp {
         scene.played = &played;
         let device = Device::of(self.pointer.router.device(), self.coarse_pointer);
         let line = view_overlay::line(&scene, &self.tools, device);
+        if shared.symmetry.is_on && !shared.thumbnails.is_capturing() {
+            let plane = shared.editor.document().symmetry.unwrap_or_default();
+            view_overlay::symmetry_plane_ui(ui, &scene, &plane, self.scene.bounds());
+        }
         let below = view_overlay::draw(ui, &scene, &self.tools, &line, self.runner.waiting());
         let intro = &mut self.panels.intro;
         intro.follow(&shared.editor, shared.exports);

@@ -123,6 +123,11 @@ impl SceneView {
             .add(egui_wgpu::Callback::new_paint_callback(viewport, callback));
     }
 
+    /// The box around everything drawn, if anything is.
+    pub fn bounds(&self) -> Option<(DVec3, DVec3)> {
+        self.geometry.bounds
+    }
+
     /// Frames everything in the document, or resets the view when it is empty.
     pub fn frame_all(&self, shared: &RefCell<Shared>) {
         let mut shared = shared.borrow_mut();

@@ -122,7 +122,11 @@ impl TryFrom<[f64; 4]> for MirrorPlane {
                 "a plane's normal [{x}, {y}, {z}] must be a unit vector"
             ));
         }
-        MirrorPlane::new(normal, d).ok_or_else(|| String::from("a plane's numbers must be finite"))
+        if !(normal.is_finite() && d.is_finite()) {
+            return Err(String::from("a plane's numbers must be finite"));
+        }
+        // Kept as written, not normalized again: a replay must mirror bit for bit.
+        Ok(MirrorPlane { normal, offset: d })
     }
 }
 
@@ -155,5 +159,8 @@ mod tests {
         assert_eq!(json, "[1.0,0.0,0.0,0.0]");
         assert!(serde_json::from_str::<MirrorPlane>("[2.0,0.0,0.0,0.0]").is_err());
         assert!(serde_json::from_str::<MirrorPlane>("[0.0,1.0,0.0,0.5]").is_ok());
+        let tilted = MirrorPlane::new(DVec3::new(1.0, -0.24389201267072605, 0.0), 0.3).unwrap();
+        let json = serde_json::to_string(&tilted).unwrap();
+        assert_eq!(serde_json::from_str::<MirrorPlane>(&json).unwrap(), tilted);
     }
 }

@@ -15,11 +15,16 @@ use glam::DVec3;
 
 use super::curves::{Place, mirrored_curves};
 use super::{EXACT, SymmetryError, diagonal};
-use crate::mesh::{INVALID, Mesh, TriSoup, VertexId};
+use crate::mesh::{HalfedgeId, INVALID, Mesh, TriSoup, VertexId};
 use crate::model::{ControlCurve, MirrorPlane, Model, Side};
 
 /// A vertex this close to the plane, relative to the mean length of its edges, moves onto it.
 const SNAP: f64 = 0.2;
+
+/// A vertex on the plane whose kept side is two separate wedges (the surface crosses the
+/// plane twice there) moves off it by this much of its edges' mean length: on the plane, the
+/// half and its image would meet at that one point only.
+const LIFT: f64 = 0.25;
 
 /// Marks a piece of a curve that went with the other half.
 const GONE: VertexId = VertexId(INVALID);
@@ -32,9 +37,30 @@ const GONE: VertexId = VertexId(INVALID);
 /// Errors: [`SymmetryError::PlaneMissesModel`] when the plane does not cut the model;
 /// [`SymmetryError::JoinFailed`] when the half and its image do not make one surface.
 pub fn symmetrized(model: &Model, plane: &MirrorPlane, keep: Side) -> Result<Model, SymmetryError> {
+    // Where the surface folds near the plane, a vertex moved onto it can join its half and
+    // the image at a point only (a bowtie): then nothing moves but what lies on the plane.
+    symmetrized_with(model, plane, keep, SNAP)
+        .or_else(|_| symmetrized_with(model, plane, keep, 0.0))
+}
+
+/// [`symmetrized`], moving onto the plane the vertices within `snap` of their edges' mean
+/// length of it.
+fn symmetrized_with(
+    model: &Model,
+    plane: &MirrorPlane,
+    keep: Side,
+    snap: f64,
+) -> Result<Model, SymmetryError> {
     let mesh = &model.mesh;
-    let kept_distance = signed_distances(mesh, plane, keep)?;
-    let mut half = Half::new(mesh, &kept_distance, plane);
+    let (mut kept_distance, mean_length) = signed_distances(mesh, plane, keep, snap)?;
+    let mut positions = mesh.positions().to_vec();
+    for v in pinched(mesh, &kept_distance) {
+        // Lifted off the plane into the kept side: its image is then a vertex of its own.
+        let lift = LIFT * mean_length[v];
+        kept_distance[v] = lift;
+        positions[v] = plane.project(positions[v]) + keep.sign() * lift * plane.normal();
+    }
+    let mut half = Half::new(&positions, &kept_distance, plane);
     for face in mesh.triangles().iter().filter(|t| t[0] != INVALID) {
         half.clip(face);
     }
@@ -60,15 +86,16 @@ pub fn symmetrized(model: &Model, plane: &MirrorPlane, keep: Side) -> Result<Mod
     })
 }
 
-/// Each vertex's distance to the plane, positive on the kept side, zero for those close
-/// enough to move onto it.
+/// Each vertex's distance to the plane, positive on the kept side, zero for those within
+/// `snap` of their edges' mean length of it (or [`EXACT`] of the diagonal), which move onto it.
 ///
 /// Errors: [`SymmetryError::PlaneMissesModel`] when every vertex is on one side.
 fn signed_distances(
     mesh: &Mesh,
     plane: &MirrorPlane,
     keep: Side,
-) -> Result<Vec<f64>, SymmetryError> {
+    snap: f64,
+) -> Result<(Vec<f64>, Vec<f64>), SymmetryError> {
     let tolerance = EXACT * diagonal(mesh);
     let mut distance: Vec<f64> = (mesh.positions().iter())
         .map(|&p| keep.sign() * plane.signed_distance(p))
@@ -89,19 +116,47 @@ fn signed_distances(
             }
         }
     }
-    for (v, s) in distance.iter_mut().enumerate() {
-        let mean = length[v] / f64::from(count[v].max(1));
-        if s.abs() < (SNAP * mean).max(tolerance) {
+    let mean: Vec<f64> = (length.iter().zip(&count))
+        .map(|(&l, &n)| l / f64::from(n.max(1)))
+        .collect();
+    for (s, &mean) in distance.iter_mut().zip(&mean) {
+        if s.abs() < (snap * mean).max(tolerance) {
             *s = 0.0;
         }
     }
-    Ok(distance)
+    Ok((distance, mean))
+}
+
+/// The vertices on the plane whose triangles reaching into the kept side form two or more
+/// separate wedges around them.
+fn pinched(mesh: &Mesh, distance: &[f64]) -> Vec<usize> {
+    let reaches_in = |h: HalfedgeId| {
+        let f = mesh.face(h);
+        mesh.face_vertices(f)
+            .iter()
+            .any(|v| distance[v.index()] > 0.0)
+    };
+    (0..distance.len())
+        .filter(|&v| distance[v] == 0.0 && mesh.is_live_vertex(VertexId(v as u32)))
+        .filter(|&v| {
+            let wedges: Vec<bool> = mesh
+                .outgoing_halfedges(VertexId(v as u32))
+                .map(reaches_in)
+                .collect();
+            let n = wedges.len();
+            let starts = (0..n)
+                .filter(|&k| wedges[k] && !wedges[(k + n - 1) % n])
+                .count();
+            starts >= 2
+        })
+        .collect()
 }
 
 /// The kept half being built: its vertices (old ones kept, and splits of edges across the
 /// plane) and triangles.
 struct Half<'a> {
-    mesh: &'a Mesh,
+    /// The mesh's positions, a pinched vertex lifted off the plane.
+    old_positions: &'a [DVec3],
     distance: &'a [f64],
     plane: &'a MirrorPlane,
     positions: Vec<DVec3>,
@@ -112,15 +167,15 @@ struct Half<'a> {
 }
 
 impl<'a> Half<'a> {
-    fn new(mesh: &'a Mesh, distance: &'a [f64], plane: &'a MirrorPlane) -> Self {
+    fn new(old_positions: &'a [DVec3], distance: &'a [f64], plane: &'a MirrorPlane) -> Self {
         Self {
-            mesh,
+            old_positions,
             distance,
             plane,
             positions: Vec::new(),
             on_plane: Vec::new(),
             triangles: Vec::new(),
-            kept: vec![None; mesh.n_vertices()],
+            kept: vec![None; old_positions.len()],
             splits: HashMap::new(),
         }
     }
@@ -130,7 +185,7 @@ impl<'a> Half<'a> {
         if let Some(id) = self.kept[v as usize] {
             return id;
         }
-        let p = self.mesh.positions()[v as usize];
+        let p = self.old_positions[v as usize];
         let on_plane = self.distance[v as usize] == 0.0;
         let id = self.push(if on_plane { self.plane.project(p) } else { p }, on_plane);
         self.kept[v as usize] = Some(id);
@@ -145,8 +200,8 @@ impl<'a> Half<'a> {
         }
         let (sa, sb) = (self.distance[key.0 as usize], self.distance[key.1 as usize]);
         let (pa, pb) = (
-            self.mesh.positions()[key.0 as usize],
-            self.mesh.positions()[key.1 as usize],
+            self.old_positions[key.0 as usize],
+            self.old_positions[key.1 as usize],
         );
         let crossing = pa.lerp(pb, sa / (sa - sb));
         let id = self.push(self.plane.project(crossing), true);

@@ -65,14 +65,16 @@ use sketchmesh_core::document::{
     DeformInput, DeformMethod, DeleteHandleInput, Document, DuplicateInput, Editor,
     HandleEditInput, KeyframeInput, LinkHandlesInput, MergeInput, Model, ModelInput, Op,
     OptimizeInput, OversketchFit, RegionEditInput, SketchFeatureInput, StrokeInput,
-    StrokePairInput, TransformInput,
+    StrokePairInput, SymmetrizeInput, TransformInput,
 };
 use sketchmesh_core::feature::FeatureKind;
 use sketchmesh_core::geometry::{Bvh, vertex_normals};
 use sketchmesh_core::mesh::primitives;
+use sketchmesh_core::model::{MirrorPlane, Side};
 use sketchmesh_core::optimize::{Mode, OptimizeParams};
 use sketchmesh_core::oversketch::{OutlineKind, OversketchRoi, pick_handle};
 use sketchmesh_core::skeleton::HandleKind;
+use sketchmesh_core::symmetry::{EXACT, are_twins, diagonal, partners};
 use sketchmesh_core::volumetric::Falloff;
 
 /// Ops per case at most (the first is a create or an import).
@@ -308,6 +310,13 @@ enum Step {
     /// A curve tool or an over-sketch far from every model: refused.
     Stray {
         kind: u8,
+    },
+    /// Model `model` made symmetric about the plane through its centre facing `normal`,
+    /// keeping the positive side or not.
+    Symmetrize {
+        model: usize,
+        normal: DVec3,
+        positive: bool,
     },
     Undo,
     Redo,
@@ -580,6 +589,13 @@ fn step() -> impl Strategy<Value = Step> {
         2 => rub,
         3 => oversketch,
         1 => (0u8..7).prop_map(|kind| Step::Stray { kind }),
+        1 => (0usize..4, -0.3..0.3f64, any::<bool>()).prop_map(|(model, tilt, positive)| {
+            Step::Symmetrize {
+                model,
+                normal: DVec3::new(1.0, tilt, 0.0),
+                positive,
+            }
+        }),
         1 => Just(Step::Undo),
         1 => Just(Step::Redo),
         2 => (1usize..4, 1usize..4).prop_map(|(undos, redos)| Step::UndoRedo { undos, redos }),
@@ -1163,6 +1179,25 @@ fn op_for(step: &Step, document: &Document) -> Op {
                 ),
             }
         }
+        Step::Symmetrize {
+            model,
+            normal,
+            positive,
+        } => {
+            let n = document.models.len().max(1);
+            let (lo, hi) = pick_model(document, *model)
+                .and_then(|m| m.mesh.bounding_box())
+                .unwrap_or_default();
+            Op::Symmetrize(SymmetrizeInput {
+                model: model % n,
+                plane: MirrorPlane::through(0.5 * (lo + hi), *normal).unwrap(),
+                keep: if *positive {
+                    Side::Positive
+                } else {
+                    Side::Negative
+                },
+            })
+        }
         Step::Undo | Step::UndoRedo { .. } => Op::Undo,
         Step::Redo => Op::Redo,
     }
@@ -1354,7 +1389,7 @@ impl Tally {
     }
 
     fn count(&mut self, op: &Op, accepted: bool) {
-        let key = match op {
+        let key = match op.unmirrored() {
             Op::AddCurve(input) if input.closed => "add_curve closed".to_owned(),
             Op::AddCurve(input) if input.cross_section => "add_curve cross-section".to_owned(),
             Op::Oversketch(input) => format!(
@@ -1385,6 +1420,30 @@ impl Tally {
             entry.1 += 1;
         }
     }
+}
+
+/// After an op made with symmetry on: every model it made or changed is symmetric about
+/// x = 0 or has a mirror twin, to [`EXACT`] of its diagonal. (A transform moves a symmetric
+/// model as the user asks, off the plane or not: its own test checks it.)
+fn check_symmetric(op: &Op, before: &Document, after: &Document) -> Result<(), TestCaseError> {
+    let plane = MirrorPlane::default();
+    if matches!(op.unmirrored(), Op::Transform(_)) {
+        return Ok(());
+    }
+    for (k, model) in after.models.iter().enumerate() {
+        let unchanged = before.models.iter().any(|m| Arc::ptr_eq(m, model));
+        let twin = (after.models.iter().enumerate())
+            .any(|(j, other)| j != k && are_twins(&model.mesh, &other.mesh, &plane));
+        let paired = twin || partners(&model.mesh, &plane).is_some();
+        prop_assert!(
+            unchanged || paired,
+            "model {} is neither symmetric about x = 0 nor a twin (diagonal {}, tolerance {})",
+            k,
+            diagonal(&model.mesh),
+            EXACT
+        );
+    }
+    Ok(())
 }
 
 fn check_document(document: &Document) -> Result<(), TestCaseError> {
@@ -1439,7 +1498,12 @@ fn observe(editor: &Editor) -> Observable {
     }
 }
 
-fn run_case(steps: &[Step], undo_k: usize, tally: &RefCell<Tally>) -> Result<(), TestCaseError> {
+fn run_case(
+    steps: &[Step],
+    undo_k: usize,
+    symmetric: bool,
+    tally: &RefCell<Tally>,
+) -> Result<(), TestCaseError> {
     let mut editor = Editor::new();
     // The undo history as digests.
     let (mut undo, mut redo): (Vec<Digest>, Vec<Digest>) = (Vec::new(), Vec::new());
@@ -1449,6 +1513,12 @@ fn run_case(steps: &[Step], undo_k: usize, tally: &RefCell<Tally>) -> Result<(),
             let Some(op) = op_for_part(&part, editor.document()) else {
                 continue;
             };
+            // A symmetric case makes every op with symmetry on about x = 0.
+            let op = match symmetric {
+                true => op.mirrored(MirrorPlane::default()),
+                false => op,
+            };
+            let before_doc = editor.document().clone();
             let index = next_index;
             next_index += 1;
             let name = op.name();
@@ -1477,11 +1547,19 @@ fn run_case(steps: &[Step], undo_k: usize, tally: &RefCell<Tally>) -> Result<(),
                     check_document(editor.document()).map_err(|e| {
                         TestCaseError::fail(format!("after op {index} ({name}): {e}"))
                     })?;
+                    if matches!(op, Op::Mirrored(_)) {
+                        check_symmetric(&op, &before_doc, editor.document()).map_err(|e| {
+                            TestCaseError::fail(format!("after op {index} ({name}): {e}"))
+                        })?;
+                    }
                 }
                 Err(error) => {
                     tally.borrow_mut().refused(&op, &error);
                     if std::env::var_os("EDITOR_PROPERTIES_VERBOSE").is_some() {
                         eprintln!("op {index} refused ({error}): {step:?}");
+                        if error.to_string().contains("do not join") {
+                            eprintln!("TMPCASE {steps:?} symmetric {symmetric}");
+                        }
                     }
                     let after = observe(&editor);
                     prop_assert!(
@@ -1571,8 +1649,9 @@ fn random_op_sequences_keep_the_editor_consistent() {
     let start = Instant::now();
     let mut runner = TestRunner::new(config());
     let cases = runner.config().cases;
-    let result = runner.run(&(steps(), any::<usize>()), |(steps, undo_k)| {
-        run_case(&steps, undo_k, &tally)
+    let cases_strategy = (steps(), any::<usize>(), prop::bool::weighted(0.3));
+    let result = runner.run(&cases_strategy, |(steps, undo_k, symmetric)| {
+        run_case(&steps, undo_k, symmetric, &tally)
     });
     let tally = tally.into_inner();
     let (mut accepted, mut refused) = (0, 0);

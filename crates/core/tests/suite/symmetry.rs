@@ -12,7 +12,18 @@ use sketchmesh_core::mesh::VertexId;
 use sketchmesh_core::model::{MirrorPlane, Side};
 use sketchmesh_core::symmetry::{EXACT, are_twins, diagonal, partners};
 
-use crate::common::{circle, outline, samples, segment};
+use crate::common::{
+    add_curve, circle, longest_outline, outline, oversketch, pushed_stroke, samples, segment,
+    set_type,
+};
+use sketchmesh_core::document::{
+    CurveHandleInput, DuplicateInput, HandleEditInput, KeyframeInput, MergeInput, ModelInput,
+    OptimizeInput, OversketchFit, RegionEditInput, SketchFeatureInput, StrokePairInput,
+    TransformInput,
+};
+use sketchmesh_core::feature::FeatureKind;
+use sketchmesh_core::oversketch::OversketchRoi;
+use sketchmesh_core::skeleton::HandleKind;
 
 const VIEWPORT: DVec2 = DVec2::new(800.0, 600.0);
 const CENTRE: DVec2 = DVec2::new(400.0, 300.0);
@@ -181,4 +192,278 @@ fn symmetrize_keeps_the_side_asked_for_and_refuses_a_plane_that_misses() {
         matches!(refused, Err(CommandError::Symmetry(_))),
         "{refused:?}"
     );
+}
+
+/// Points of a model's curve `k` on the right of the plane, on screen.
+fn right_part(model: &Model, k: usize) -> Vec<DVec2> {
+    let points = model.curves[k].points(&model.mesh);
+    points
+        .iter()
+        .filter(|p| p.x > 0.15)
+        .map(|&p| screen(p))
+        .collect()
+}
+
+/// A loop of `radius` px around `centre` and a limb's silhouette out to `reach` px.
+fn extrusion(centre: DVec2, radius: f64, reach: f64) -> [StrokeInput; 2] {
+    let base: Vec<DVec2> = (0..=48)
+        .map(|i| centre + radius * DVec2::from_angle(std::f64::consts::TAU * f64::from(i) / 48.0))
+        .collect();
+    let silhouette: Vec<DVec2> = (0..=60)
+        .map(|i| {
+            let a = std::f64::consts::PI * (f64::from(i) / 60.0 - 0.5);
+            centre + DVec2::new(reach * a.cos(), radius * a.sin())
+        })
+        .collect();
+    [input(&base), input(&silhouette)]
+}
+
+/// Applies `op` with symmetry on to a copy of `editor`; it must be accepted and leave every
+/// model symmetric or a twin, to 1e-9 of its diagonal.
+fn mirrored_ok(editor: &Editor, op: Op, what: &str) -> Editor {
+    let mut editor = editor.clone();
+    editor
+        .apply(mirrored(op))
+        .unwrap_or_else(|e| panic!("{what}: refused: {e}"));
+    let worst = asymmetry(editor.document());
+    assert!(worst <= EXACT, "{what}: asymmetry {worst}");
+    editor
+}
+
+#[test]
+fn every_kind_of_edit_made_with_symmetry_on_keeps_the_pairing() {
+    let base = body_and_limbs();
+    let body = base.document().models[0].clone();
+    let centre = |model: usize| {
+        let (lo, hi) = base.document().models[model].mesh.bounding_box().unwrap();
+        screen(0.5 * (lo + hi))
+    };
+    let (right_blob, body_right) = (centre(1), CENTRE + DVec2::new(80.0, 0.0));
+
+    // Curves: an open one across the body's right half and one on the twin blob; a closed one.
+    let open = segment(
+        body_right - DVec2::new(40.0, 50.0),
+        body_right + DVec2::new(40.0, 50.0),
+    );
+    let with_curve = mirrored_ok(
+        &base,
+        add_curve(VIEWPORT, Camera::default(), &open, false, false),
+        "add_curve",
+    );
+    let on_blob = segment(
+        right_blob - DVec2::new(30.0, 0.0),
+        right_blob + DVec2::new(30.0, 0.0),
+    );
+    mirrored_ok(
+        &base,
+        add_curve(VIEWPORT, Camera::default(), &on_blob, false, false),
+        "add_curve on a twin",
+    );
+    mirrored_ok(
+        &base,
+        add_curve(
+            VIEWPORT,
+            Camera::default(),
+            &circle(body_right, 30.0),
+            true,
+            false,
+        ),
+        "closed add_curve",
+    );
+    let curved = &with_curve.document().models[0];
+    assert_eq!(
+        curved.curves.len(),
+        body.curves.len() + 2,
+        "the curve and its image"
+    );
+    let mean_x = |k: usize| {
+        let points = curved.curves[k].points(&curved.mesh);
+        points.iter().map(|p| p.x).sum::<f64>() / points.len() as f64
+    };
+    let added = (0..curved.curves.len())
+        .max_by(|&a, &b| mean_x(a).total_cmp(&mean_x(b)))
+        .unwrap();
+    let on_curve = right_part(curved, added);
+    mirrored_ok(&with_curve, Op::Erase(input(&on_curve)), "erase");
+    let outline_right = right_part(&body, 0);
+    mirrored_ok(
+        &base,
+        set_type(VIEWPORT, Camera::default(), &outline_right, true),
+        "set_curve_type",
+    );
+    mirrored_ok(&base, Op::Rub(input(&outline_right)), "rub");
+    // Pulling the twin blob's outline moves its twin.
+    let blob = &base.document().models[1];
+    let grab = screen(blob.curves[0].points(&blob.mesh)[0]);
+    mirrored_ok(
+        &base,
+        Op::Pull(input(&segment(grab, grab + DVec2::new(30.0, 10.0)))),
+        "pull on a twin",
+    );
+
+    // Topology: cuts of the twin and of the body's right side, a limb out of the body.
+    let down = |x: f64| Op::Cut(input(&segment(DVec2::new(x, 20.0), DVec2::new(x, 580.0))));
+    let cut = mirrored_ok(&base, down(right_blob.x + 25.0), "cut a twin");
+    assert_eq!(cut.document().models.len(), 3);
+    let cut_body = mirrored_ok(&base, down(CENTRE.x + 110.0), "cut the body");
+    let (lo, hi) = cut_body.document().models[0].mesh.bounding_box().unwrap();
+    assert!(hi.x < body.mesh.bounding_box().unwrap().1.x - 0.2 && (lo.x + hi.x).abs() < 1e-9);
+    let limb = mirrored_ok(
+        &base,
+        Op::Extrude(StrokePairInput {
+            strokes: extrusion(body_right + DVec2::new(40.0, 0.0), 25.0, 150.0),
+        }),
+        "extrude",
+    );
+    let (lo, hi) = limb.document().models[0].mesh.bounding_box().unwrap();
+    assert!(
+        hi.x > body.mesh.bounding_box().unwrap().1.x + 0.3
+            && lo.x < body.mesh.bounding_box().unwrap().0.x - 0.3,
+        "two limbs"
+    );
+
+    // Over-sketch, feature and optimization on the body's right side.
+    let silhouette = longest_outline(&body.mesh, &Camera::default(), VIEWPORT).unwrap();
+    let pushed = pushed_stroke(&silhouette, DVec2::X, 12, 25.0);
+    mirrored_ok(
+        &base,
+        oversketch(
+            VIEWPORT,
+            Camera::default(),
+            &pushed,
+            OversketchFit::Exact,
+            OversketchRoi::NearHandle,
+            None,
+        ),
+        "oversketch",
+    );
+    let ridge = SketchFeatureInput {
+        viewport: VIEWPORT.to_array(),
+        camera: Camera::default(),
+        stroke: samples(segment(
+            body_right - DVec2::new(0.0, 50.0),
+            body_right + DVec2::new(0.0, 50.0),
+        )),
+        kind: FeatureKind::Ridge,
+        amount: Some(2.0),
+        region: None,
+    };
+    mirrored_ok(&base, Op::SketchFeature(ridge), "sketch_feature");
+    mirrored_ok(
+        &base,
+        Op::Optimize(OptimizeInput {
+            model: 0,
+            ..OptimizeInput::default()
+        }),
+        "optimize",
+    );
+
+    // Arranging: a twin moves with its pair, goes with it, and a mirrored duplicate is a twin.
+    let shift = glam::DMat4::from_translation(DVec3::new(0.3, 0.2, 0.0)).to_cols_array();
+    let moved = mirrored_ok(
+        &base,
+        Op::Transform(TransformInput {
+            model: 1,
+            matrix: shift,
+        }),
+        "transform",
+    );
+    let (lo, hi) = moved.document().models[2].mesh.bounding_box().unwrap();
+    let (lo1, hi1) = base.document().models[2].mesh.bounding_box().unwrap();
+    assert!((lo.x - (lo1.x - 0.3)).abs() < 1e-9 && (hi.y - (hi1.y + 0.2)).abs() < 1e-9);
+    let deleted = mirrored_ok(&base, Op::Delete(ModelInput { model: 2 }), "delete");
+    assert_eq!(deleted.document().models.len(), 1);
+    let copied = mirrored_ok(
+        &deleted,
+        Op::Duplicate(DuplicateInput {
+            model: 0,
+            beside: None,
+        }),
+        "duplicate",
+    );
+    assert_eq!(copied.document().models.len(), 2);
+    // A blob moved into the body merges into both sides.
+    let (blob_lo, blob_hi) = base.document().models[1].mesh.bounding_box().unwrap();
+    let (_, body_hi) = body.mesh.bounding_box().unwrap();
+    let target = DVec3::new(body_hi.x - 0.1, 0.0, 0.0);
+    let into = glam::DMat4::from_translation(target - 0.5 * (blob_lo + blob_hi)).to_cols_array();
+    let inside = mirrored_ok(
+        &base,
+        Op::Transform(TransformInput {
+            model: 1,
+            matrix: into,
+        }),
+        "move into the body",
+    );
+    let merged = mirrored_ok(&inside, Op::Merge(MergeInput { models: [0, 1] }), "merge");
+    assert_eq!(merged.document().models.len(), 1);
+
+    // A tunnel through the body's right side, drilled from the front and the back.
+    let behind = Camera {
+        eye: DVec3::new(0.0, 0.0, -5.0),
+        ..Camera::default()
+    };
+    let back = DVec2::new(VIEWPORT.x - body_right.x, body_right.y);
+    let loops = [
+        input(&circle(body_right, 28.0)),
+        StrokeInput {
+            camera: behind,
+            ..input(&circle(back, 28.0))
+        },
+    ];
+    let drilled = mirrored_ok(
+        &base,
+        Op::Tunnel(StrokePairInput { strokes: loops }),
+        "tunnel",
+    );
+    assert_eq!(
+        drilled.document().models[0].mesh.genus(),
+        Some(2),
+        "a tunnel each side"
+    );
+
+    // A region of the body's right side moved (Bujans), and a curve handle bent (Blanco).
+    let region = RegionEditInput {
+        viewport: VIEWPORT.to_array(),
+        camera: Camera::default(),
+        reference: samples(segment(
+            body_right - DVec2::new(0.0, 25.0),
+            body_right + DVec2::new(0.0, 25.0),
+        )),
+        boundary: samples(circle(body_right, 60.0).into_iter().skip(1)),
+        levels: None,
+        areas: Vec::new(),
+        transform: Some(glam::DMat4::from_translation(DVec3::new(0.1, 0.0, 0.2)).to_cols_array()),
+        handles: None,
+        profile: None,
+        remesh: false,
+    };
+    mirrored_ok(&base, Op::RegionEdit(region), "region_edit");
+    let handle = CurveHandleInput {
+        viewport: VIEWPORT.to_array(),
+        camera: Camera::default(),
+        stroke: samples(segment(
+            CENTRE + DVec2::new(20.0, 0.0),
+            CENTRE + DVec2::new(140.0, 0.0),
+        )),
+        kind: HandleKind::Surface,
+        control_points: 4,
+        rigid: false,
+    };
+    let handled = mirrored_ok(&base, Op::CurveHandle(handle), "curve_handle");
+    let number = handled.document().handles[0].id;
+    let bend = HandleEditInput {
+        handle: number,
+        point: 3,
+        translate: Some([0.0, 0.3, 0.0]),
+        twist_deg: None,
+        scale: None,
+        spread: 1,
+    };
+    let bent = mirrored_ok(&handled, Op::HandleEdit(bend), "handle_edit");
+    let (lo, hi) = bent.document().models[0].mesh.bounding_box().unwrap();
+    assert!((lo.x + hi.x).abs() < 1e-9, "bent on both sides");
+
+    // Animation: a key of the symmetric pose.
+    mirrored_ok(&base, Op::Keyframe(KeyframeInput { time: 1.0 }), "keyframe");
 }

@@ -76,9 +76,12 @@ function isHarmless(gpu, text, url) {
  * drawn. Returns `{ context, page, cdp, errors }`; `errors` collects console errors and uncaught
  * exceptions (harmless ones filtered out) for the whole life of the page. A page that does not
  * start has its context closed. The first visit's introduction is marked seen unless `intro`.
+ * The Symmetry switch, on for a new visitor, is left off unless `symmetry`: the cases written
+ * before it change one side only.
  */
 export async function openApp(
-  browser, url, gpu, { width = 1280, height = 720, deviceScaleFactor = 1, intro = false, isMobile = false } = {},
+  browser, url, gpu,
+  { width = 1280, height = 720, deviceScaleFactor = 1, intro = false, isMobile = false, symmetry = false } = {},
 ) {
   const context = await browser.newContext({
     viewport: { width, height },
@@ -94,6 +97,15 @@ export async function openApp(
         localStorage.setItem('sketchmesh.intro', 'seen');
       } catch {
         // No storage here: nothing to introduce either.
+      }
+    });
+  }
+  if (!symmetry) {
+    await context.addInitScript(() => {
+      try {
+        localStorage.setItem('sketchmesh.symmetry', 'off');
+      } catch {
+        // No storage here: no app either.
       }
     });
   }

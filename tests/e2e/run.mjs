@@ -3278,6 +3278,133 @@ test('introduction: a first visit shows step 1, a shape moves it to 2, an edit t
   }
 });
 
+// ---------------------------------------------------------------------------------------------
+// Symmetry (issue 50): on for a new visitor, about the plane x = 0 (the view's middle, x = 640).
+
+/** The toolbar's Symmetry switch, beside Redo, at 1280 px wide. */
+const SYMMETRY_SWITCH = { x: 249, y: 25 };
+
+/**
+ * A fresh page with Symmetry on (a new visitor's default, checked) and the ELLIPSE outline
+ * drawn across the plane: runs `body({ fresh, body })` (`body` the shape's bounds
+ * `[lo, hi]`) and closes the page whatever happens.
+ */
+async function withSymmetricBody(run) {
+  const fresh = await openApp(browser, url, gpu, { symmetry: true });
+  try {
+    const { page } = fresh;
+    const symmetry = await api(page, 'symmetry');
+    assert.deepEqual(symmetry, { on: true, forNew: true, plane: [1, 0, 0, 0] }, 'on for a new visitor, about x = 0');
+    await penStroke(fresh.cdp, onEllipse());
+    const made = await until(() => lastOpOf(page), (o) => o.op === 'create', 15_000);
+    assert.deepEqual(made.mirror, [1, 0, 0, 0], `the outline is made with symmetry on: ${JSON.stringify(made).slice(-80)}`);
+    const [body] = await api(page, 'bounds');
+    assertMirrored(body, body, 'the outline across the plane makes one symmetric shape');
+    await run({ fresh, body });
+    assert.deepEqual(fresh.errors, [], 'console errors');
+  } finally {
+    await fresh.context.close();
+  }
+}
+
+/** Asserts that box `b` (`[lo, hi]`) is box `a` mirrored across x = 0, to 1e-6 of its size. */
+function assertMirrored(a, b, what) {
+  const size = Math.hypot(...a[1].map((v, k) => v - a[0][k]));
+  const mirrored = [[-a[1][0], a[0][1], a[0][2]], [-a[0][0], a[1][1], a[1][2]]];
+  const off = Math.max(...mirrored.flat().map((v, k) => Math.abs(v - b.flat()[k])));
+  assert.ok(off <= 1e-6 * size, `${what}: ${JSON.stringify(b)} is not ${JSON.stringify(mirrored)} (off by ${off})`);
+}
+
+// WebGL2 only: the ops and the document.
+test('symmetry: an outline across the plane makes one symmetric shape, and a limb extruded on its right grows one on its left too', { gpu: false }, () => withSymmetricBody(async ({ fresh, body }) => {
+  const { page, cdp } = fresh;
+  const c = ELLIPSE.c;
+  // The extrude case's gesture: a loop on the right of the shape, a stroke out and back.
+  const base = { x: c.x + 110, y: c.y };
+  const loop = Array.from({ length: 41 }, (_, i) => {
+    const a = (2 * Math.PI * i) / 40;
+    return { x: base.x + 28 * Math.cos(a), y: base.y + 28 * Math.sin(a), force: 0.5 };
+  });
+  await penStroke(cdp, loop);
+  await frames(page, 2);
+  const silhouette = Array.from({ length: 41 }, (_, i) => {
+    const a = Math.PI * (i / 40 - 0.5);
+    return { x: base.x + 220 * Math.cos(a), y: base.y + 28 * Math.sin(a), force: 0.5 };
+  });
+  await penStroke(cdp, silhouette);
+  const op = await until(() => lastOpOf(page), (o) => o.op === 'extrude', 15_000);
+  assert.deepEqual([op.op, op.mirror], ['extrude', [1, 0, 0, 0]], 'the limb is extruded with symmetry on');
+  const [limbs] = await api(page, 'bounds');
+  assertMirrored(limbs, limbs, 'the shape with its limbs stays symmetric');
+  const width = (box) => box[1][0] - box[0][0];
+  assert.ok(width(limbs) > 1.6 * width(body), `a limb on each side: ${width(body)} wide, then ${width(limbs)}`);
+  await frames(page, 3);
+  await screenshot(page, out('symmetry-limbs.png'));
+}));
+
+// WebGL2 only: the ops and the document.
+test('symmetry: a blob drawn beside the plane comes with its mirror twin and one undo takes both; the toolbar switch turns symmetry off, kept for new documents', { gpu: false }, async () => {
+  const fresh = await openApp(browser, url, gpu, { symmetry: true });
+  try {
+    const { page, cdp } = fresh;
+    // A small blob right of the middle, wholly on one side: it and its twin on the left.
+    const blob = Array.from({ length: 41 }, (_, i) => {
+      const a = (2 * Math.PI * i) / 40;
+      return { x: 1130 + 50 * Math.cos(a), y: 640 + 35 * Math.sin(a), force: 0.5 };
+    });
+    await penStroke(cdp, blob);
+    const boxes = await until(() => api(page, 'bounds'), (b) => b.length === 2, 15_000);
+    assert.equal(boxes.length, 2, 'the blob and its twin');
+    assert.ok(boxes[0][0][0] > 0, `the blob is right of the plane: ${JSON.stringify(boxes[0])}`);
+    assertMirrored(boxes[0], boxes[1], 'the twin is the blob mirrored');
+    await frames(page, 3);
+    await screenshot(page, out('symmetry-twins.png'));
+    // One undo takes the blob and its twin.
+    await page.keyboard.press('Control+z');
+    assert.equal((await until(() => api(page, 'bounds'), (b) => b.length === 0, 5000)).length, 0, 'one undo takes both');
+    // The toolbar's switch, beside Redo, turns it off, for new documents too (kept by the
+    // page across visits); the same blob then makes one shape.
+    await page.mouse.click(SYMMETRY_SWITCH.x, SYMMETRY_SWITCH.y);
+    const off = await until(() => api(page, 'symmetry'), (s) => !s.on, 3000);
+    assert.deepEqual([off.on, off.forNew], [false, false], 'the switch turns it off');
+    assert.equal(await page.evaluate(() => localStorage.getItem('sketchmesh.symmetry')), 'off', 'kept for the next visit');
+    await penStroke(cdp, blob);
+    assert.equal((await until(() => api(page, 'bounds'), (b) => b.length === 1, 15_000)).length, 1, 'one blob without symmetry');
+    assert.equal((await lastOpOf(page)).mirror, undefined, 'made with symmetry off');
+    assert.deepEqual(fresh.errors, [], 'console errors');
+  } finally {
+    await fresh.context.close();
+  }
+});
+
+// WebGL2 only: the ops and the document.
+test('symmetry: a pull on the right of a symmetric shape moves both sides; the switch off (X), the next pull moves one', { gpu: false }, () => withSymmetricBody(async ({ fresh, body }) => {
+  const { page, cdp } = fresh;
+  const c = ELLIPSE.c;
+  await page.keyboard.press('p');
+  const drag = [];
+  for (let i = 0; i <= 16; i++) drag.push({ x: c.x + 170 + 5 * i, y: c.y, force: 0.5 });
+  await penStroke(cdp, drag);
+  const pull = await until(() => lastOpOf(page), (o) => o.op === 'pull', 15_000);
+  assert.deepEqual(pull.mirror, [1, 0, 0, 0], 'the pull is made with symmetry on');
+  const [pulled] = await api(page, 'bounds');
+  assertMirrored(pulled, pulled, 'both sides moved alike');
+  assert.ok(pulled[1][0] > body[1][0] * 1.1 && pulled[0][0] < body[0][0] * 1.1, `wider on both sides: ${JSON.stringify(body)} then ${JSON.stringify(pulled)}`);
+  await frames(page, 3);
+  await screenshot(page, out('symmetry-pull.png'));
+  await page.keyboard.press('x');
+  assert.deepEqual(await until(() => api(page, 'symmetry'), (s) => !s.on, 3000), { on: false, forNew: false, plane: [1, 0, 0, 0] }, 'X turns it off');
+  // The left side's outline is where the right one was pulled to, mirrored: pull it further.
+  const left = drag.map((p, i) => ({ ...p, x: c.x - 170 - 80 - 5 * i }));
+  await penStroke(cdp, left);
+  const plain = await until(() => lastOpOf(page), (o) => o.op === 'pull' && o.mirror === undefined, 15_000);
+  assert.equal(plain.mirror, undefined, 'made with symmetry off');
+  const [once] = await api(page, 'bounds');
+  const width = pulled[1][0] - pulled[0][0];
+  assert.ok(Math.abs(once[1][0] - pulled[1][0]) < 0.02 * width, `the right side stays: ${pulled[1][0]} then ${once[1][0]}`);
+  assert.ok(once[0][0] < pulled[0][0] - 0.05 * width, `the left side moved out: ${pulled[0][0]} then ${once[0][0]}`);
+}));
+
 const failed = await runAll();
 await hiDpi?.close();
 await browser.close();

@@ -499,7 +499,9 @@ impl SketchApp {
         self.scene.textures.poll(shown, ui.ctx());
         drop(shared);
         let (edit, begun) = (self.runner.edit(), self.runner.edits_begun());
-        self.scene.update(ui.ctx(), &self.shared, edit, begun);
+        let mirror = self.runner.edit_mirror();
+        self.scene
+            .update(ui.ctx(), &self.shared, edit.map(|e| (e, mirror)), begun);
         if self.has_renderer {
             let camera = self.shared.borrow().camera.camera();
             self.scene.paint(ui, viewport, &camera);

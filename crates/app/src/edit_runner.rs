@@ -8,6 +8,7 @@ use std::cell::RefCell;
 use std::collections::VecDeque;
 
 use sketchmesh_core::document::{Edit, ImportInput, Op, Progress, Replay, Session};
+use sketchmesh_core::model::MirrorPlane;
 
 use crate::clock;
 use crate::files;
@@ -72,6 +73,9 @@ pub struct EditRunner {
     is_edit_new: bool,
     /// Where the time of the edit in progress goes.
     edit_clock: EditClock,
+    /// The plane the edit in progress mirrors about, when it was made with symmetry on: the
+    /// view then shows its preview on both sides.
+    edit_mirror: Option<MirrorPlane>,
 }
 
 impl EditRunner {
@@ -86,6 +90,11 @@ impl EditRunner {
     /// The edit in progress, if any.
     pub fn edit(&self) -> Option<&Edit> {
         self.edit.as_ref()
+    }
+
+    /// The plane the edit in progress mirrors about, if it was made with symmetry on.
+    pub fn edit_mirror(&self) -> Option<MirrorPlane> {
+        self.edit.as_ref().and(self.edit_mirror)
     }
 
     /// How many edits were begun.
@@ -207,6 +216,10 @@ impl EditRunner {
     fn begin_now(&mut self, op: Op, is_gesture: bool, cx: &mut Cx<'_>) {
         self.finish_edit(cx);
         let name = op.name();
+        let mirror = match &op {
+            Op::Mirrored(mirrored) => Some(mirrored.plane),
+            _ => None,
+        };
         let started = clock::now_ms();
         let begun = {
             let editor = &cx.shared.borrow().editor;
@@ -222,6 +235,7 @@ impl EditRunner {
                 let timings = &mut cx.shared.borrow_mut().timings;
                 self.edit_clock = EditClock::begun(name, ms, is_gesture, timings);
                 self.edit = Some(edit);
+                self.edit_mirror = mirror;
                 self.edits_begun += 1;
                 self.is_edit_new = true;
             }

@@ -7,7 +7,10 @@ use std::sync::Arc;
 
 use eframe::egui_wgpu;
 use glam::DVec3;
-use sketchmesh_core::document::{Edit, StrokeInput, model_under};
+use sketchmesh_core::document::{Edit, Op, StrokeInput, model_under};
+use sketchmesh_core::mesh::VertexId;
+use sketchmesh_core::model::{MirrorPlane, Side};
+use sketchmesh_core::symmetry::{Keep, are_twins, mirror_positions, partners};
 
 use crate::autosave;
 use crate::camera::OrbitCamera;
@@ -47,6 +50,8 @@ pub struct SceneView {
     shown_motion: Option<u64>,
     /// Normals of a moved model, reused between frames.
     moved_normals: Vec<glam::DVec3>,
+    /// How the other side of a mirrored edit's moved model follows it in the view.
+    mirrored_motion: MirroredMotion,
     /// The key-framed animation being played, if any.
     pub playback: Option<Playback>,
     /// What this frame's own work (the edit's steps and landing, the scene's rebuild) has
@@ -84,6 +89,7 @@ impl Default for SceneView {
             textures: Textures::default(),
             shown_motion: None,
             moved_normals: Vec::new(),
+            mirrored_motion: MirroredMotion::default(),
             playback: None,
             frame_work_ms: 0.0,
             rebuild_waited: false,
@@ -162,9 +168,10 @@ impl SceneView {
         &mut self,
         ctx: &egui::Context,
         shared: &RefCell<Shared>,
-        edit: Option<&Edit>,
+        edit: Option<(&Edit, Option<MirrorPlane>)>,
         edits_begun: u64,
     ) {
+        let (edit, mirror) = (edit.map(|(edit, _)| edit), edit.and_then(|(_, m)| m));
         let source = (
             shared.borrow().revision(),
             edit.map(Edit::revision)
@@ -251,6 +258,20 @@ impl SceneView {
             && let Some(model) = edit.document().models.get(index)
         {
             let geometry = Arc::make_mut(&mut self.geometry);
+            let followed = mirror.and_then(|plane| {
+                let motion = &mut self.mirrored_motion;
+                motion.follow(edit, edits_begun, index, positions, &plane)
+            });
+            let positions = match followed {
+                Some(Followed::Itself(mirrored)) => mirrored,
+                Some(Followed::Twin(twin, mirrored)) => {
+                    if let Some(model) = edit.document().models.get(twin) {
+                        geometry.move_model(twin, model, mirrored, &mut self.moved_normals);
+                    }
+                    positions
+                }
+                None => positions,
+            };
             geometry.move_model(index, model, positions, &mut self.moved_normals);
             if let Some((shaded, vertices, weights)) = edit.region_falloff()
                 && let Some(levels) = edit.region_levels()
@@ -337,4 +358,93 @@ pub fn model_at(shared: &Shared, at: egui::Pos2, viewport: egui::Rect) -> Option
         stroke: vec![[relative.x.into(), relative.y.into(), 0.5]],
     };
     model_under(shared.editor.document(), &tap)
+}
+
+/// The other side of a mirrored edit's moved model, shown while it moves (a pull's preview
+/// on a symmetric model or a twin pair): the edit commits both sides, so the view previews
+/// both. Which model or vertices follow is found once per edit (an O(n) search), then each
+/// frame mirrors the moved positions onto them.
+#[derive(Default)]
+struct MirroredMotion {
+    /// The edit (by number) and moved model this was found for, and what follows it.
+    found: Option<(u64, usize, Follower)>,
+    /// The mirrored positions, reused between frames.
+    mirrored: Vec<DVec3>,
+}
+
+/// What follows a moved model across the plane.
+enum Follower {
+    /// Its mirror twin, vertex for vertex.
+    Twin(usize),
+    /// Its own other side: each vertex's partner.
+    Partners(Vec<VertexId>),
+    /// Nothing: neither symmetric nor a twin (the edit will be refused), or a symmetric
+    /// model being moved whole (it stays as moved).
+    Nothing,
+}
+
+/// What a moved model's mirrored positions are for.
+enum Followed<'a> {
+    /// The model itself, made symmetric: draw these instead.
+    Itself(&'a [DVec3]),
+    /// Its twin (this model index): draw these there.
+    Twin(usize, &'a [DVec3]),
+}
+
+impl MirroredMotion {
+    /// The mirrored positions for model `index` of `edit` (edit number `edit_number`) moved
+    /// to `positions`, about `plane`.
+    fn follow<'a>(
+        &'a mut self,
+        edit: &Edit,
+        edit_number: u64,
+        index: usize,
+        positions: &[DVec3],
+        plane: &MirrorPlane,
+    ) -> Option<Followed<'a>> {
+        let models = &edit.document().models;
+        let base = models.get(index)?.mesh.positions();
+        let is_current =
+            |(number, model, _): &(u64, usize, Follower)| *number == edit_number && *model == index;
+        if !self.found.as_ref().is_some_and(is_current) {
+            let mesh = &models[index].mesh;
+            let twin =
+                (0..models.len()).find(|&j| j != index && are_twins(mesh, &models[j].mesh, plane));
+            let follower = match (twin, edit.op()) {
+                (Some(twin), _) => Follower::Twin(twin),
+                (None, Op::Transform(_)) => Follower::Nothing,
+                (None, _) => partners(mesh, plane).map_or(Follower::Nothing, Follower::Partners),
+            };
+            self.found = Some((edit_number, index, follower));
+        }
+        let (_, _, follower) = self.found.as_ref()?;
+        self.mirrored.clear();
+        match follower {
+            Follower::Twin(twin) => {
+                self.mirrored
+                    .extend(positions.iter().map(|&p| plane.reflect(p)));
+                Some(Followed::Twin(*twin, &self.mirrored))
+            }
+            Follower::Partners(partners) if partners.len() == positions.len() => {
+                self.mirrored.extend_from_slice(positions);
+                let keep = Keep::Side(moved_side(base, positions, plane));
+                mirror_positions(base, &mut self.mirrored, partners, plane, keep);
+                Some(Followed::Itself(&self.mirrored))
+            }
+            _ => None,
+        }
+    }
+}
+
+/// The side of `plane` whose vertices moved more from `base` to `positions`: the side the
+/// edit acts on, which the preview keeps.
+fn moved_side(base: &[DVec3], positions: &[DVec3], plane: &MirrorPlane) -> Side {
+    let mut moved = [0.0; 2];
+    for (b, p) in base.iter().zip(positions) {
+        moved[usize::from(plane.signed_distance(*b) < 0.0)] += b.distance(*p);
+    }
+    match moved[0] >= moved[1] {
+        true => Side::Positive,
+        false => Side::Negative,
+    }
 }

@@ -208,6 +208,60 @@ fn with_symmetry_on_an_outline_beside_the_plane_makes_two_mirror_twins() {
     assert!(shared.borrow().editor.document().models.is_empty());
 }
 
+/// With Symmetry on, a pull on the right end of a shape drawn across the plane previews on
+/// both sides while the pointer is down (the left end moves out as the right one does), and
+/// commits one pull that keeps the shape symmetric.
+#[test]
+#[ignore = "needs the core's mirrored gesture to keep its preview: Edit::mirror_result \
+            replaces a gesture's work (the pull's preview) with Work::Whole at every step"]
+fn with_symmetry_on_a_pull_previews_on_both_sides() {
+    let mut h = harness();
+    h.run();
+    h.state().shared().borrow_mut().symmetry.choose(true);
+    let center = pos2(450.0, 340.0);
+    draw_ellipse(&mut h, center);
+    h.key_press(egui::Key::P);
+    h.run();
+    let before = h.render().expect("render");
+    let grab = center + vec2(150.0, 0.0);
+    h.event(Event::PointerMoved(grab));
+    press(&h, grab, PointerButton::Primary, true);
+    h.step();
+    for i in 1..=10 {
+        h.event(Event::PointerMoved(grab + vec2(4.0 * i as f32, 0.0)));
+        h.step();
+    }
+    let dragging = h.render().expect("render");
+    save(&dragging, "symmetric-pull-preview");
+    // Just beyond each end of the outline: background before, the shape while dragging.
+    let changed_beyond = |dx: i32| {
+        let mut n = 0;
+        for y in 325..355 {
+            for k in 8..28 {
+                let x = (center.x as i32 + dx * (150 + k)) as u32;
+                let (a, b) = (before.get_pixel(x, y).0, dragging.get_pixel(x, y).0);
+                n += usize::from((0..3).any(|c| a[c].abs_diff(b[c]) > 40));
+            }
+        }
+        n
+    };
+    let (right, left) = (changed_beyond(1), changed_beyond(-1));
+    assert!(right > 150, "the pulled end moved out: {right} pixels");
+    assert!(left > 150, "the other end moved out with it: {left} pixels");
+    press(&h, grab + vec2(40.0, 0.0), PointerButton::Primary, false);
+    h.run();
+    let shared = h.state().shared();
+    let (lo, hi) = (shared.borrow().editor.document().models[0].mesh)
+        .bounding_box()
+        .expect("a model");
+    assert!(
+        (lo.x + hi.x).abs() < 1e-9 * (hi - lo).length(),
+        "symmetric: {lo} {hi}"
+    );
+    let last = shared.borrow().editor.ops().last().map(|op| op.name());
+    assert_eq!(last, Some("pull"));
+}
+
 #[test]
 fn closed_stroke_becomes_a_lit_shape_with_its_curve() {
     let mut h = harness();

@@ -3343,7 +3343,7 @@ test('symmetry: an outline across the plane makes one symmetric shape, and a lim
 }));
 
 // WebGL2 only: the ops and the document.
-test('symmetry: a blob drawn beside the plane comes with its mirror twin and one undo takes both; the toolbar switch turns symmetry off, kept for new documents', { gpu: false }, async () => {
+test('symmetry: a blob drawn beside the plane comes with its mirror twin and one undo takes both; the toolbar switch turns symmetry off, kept for new documents; an import turns it off for its document only', { gpu: false }, async () => {
   const fresh = await openApp(browser, url, gpu, { symmetry: true });
   try {
     const { page, cdp } = fresh;
@@ -3371,6 +3371,13 @@ test('symmetry: a blob drawn beside the plane comes with its mirror twin and one
     await penStroke(cdp, blob);
     assert.equal((await until(() => api(page, 'bounds'), (b) => b.length === 1, 15_000)).length, 1, 'one blob without symmetry');
     assert.equal((await lastOpOf(page)).mirror, undefined, 'made with symmetry off');
+    // On again; an import turns it off for its document only (a scan is rarely symmetric).
+    await page.mouse.click(SYMMETRY_SWITCH.x, SYMMETRY_SWITCH.y);
+    assert.ok((await until(() => api(page, 'symmetry'), (s) => s.on, 3000)).on, 'the switch turns it on');
+    const glb = tetraWithDuplicateGlb();
+    await page.evaluate((bytes) => window.sketchmesh.loadGlb(new Uint8Array(bytes), 'tetra.glb'), Array.from(glb));
+    const imported = await api(page, 'symmetry');
+    assert.deepEqual([imported.on, imported.forNew], [false, true], 'off after the import, still on for new documents');
     assert.deepEqual(fresh.errors, [], 'console errors');
   } finally {
     await fresh.context.close();

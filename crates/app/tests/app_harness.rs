@@ -212,8 +212,6 @@ fn with_symmetry_on_an_outline_beside_the_plane_makes_two_mirror_twins() {
 /// both sides while the pointer is down (the left end moves out as the right one does), and
 /// commits one pull that keeps the shape symmetric.
 #[test]
-#[ignore = "needs the core's mirrored gesture to keep its preview: Edit::mirror_result \
-            replaces a gesture's work (the pull's preview) with Work::Whole at every step"]
 fn with_symmetry_on_a_pull_previews_on_both_sides() {
     let mut h = harness();
     h.run();

@@ -426,6 +426,9 @@ impl Edit {
         let Some(plane) = self.mirror.filter(|_| !self.is_mirrored) else {
             return Ok(());
         };
+        if !matches!(self.work, Work::Done(_)) {
+            return Ok(());
+        }
         if let Work::Done(outcome) = std::mem::replace(&mut self.work, Work::Whole) {
             self.work = Work::Done(mirrored_outcome(&self.base, &self.op, plane, outcome)?);
             self.is_mirrored = true;

@@ -22,8 +22,9 @@ use crate::model::{ControlCurve, MirrorPlane, Model, Side};
 const SNAP: f64 = 0.2;
 
 /// A vertex on the plane whose kept side is two separate wedges (the surface crosses the
-/// plane twice there) moves off it by this much of its edges' mean length: on the plane, the
-/// half and its image would meet at that one point only.
+/// plane twice there) or its whole ring (the surface touches the plane there) moves off it by
+/// this much of its edges' mean length: on the plane, the half and its image would meet at
+/// that one point only.
 const LIFT: f64 = 0.25;
 
 /// Marks a piece of a curve that went with the other half.
@@ -124,11 +125,31 @@ fn signed_distances(
             *s = 0.0;
         }
     }
+    // An edge across the plane is split no nearer its ends than `snap` of its length: the
+    // end it would be split too near moves onto the plane instead.
+    let mut onto_plane = Vec::new();
+    for t in mesh.triangles().iter().filter(|t| t[0] != INVALID) {
+        for k in 0..3 {
+            let (a, b) = (t[k] as usize, t[(k + 1) % 3] as usize);
+            let (sa, sb) = (distance[a], distance[b]);
+            if sa * sb < 0.0 {
+                let at = sa / (sa - sb);
+                if at < snap {
+                    onto_plane.push(a);
+                } else if at > 1.0 - snap {
+                    onto_plane.push(b);
+                }
+            }
+        }
+    }
+    for v in onto_plane {
+        distance[v] = 0.0;
+    }
     Ok((distance, mean))
 }
 
 /// The vertices on the plane whose triangles reaching into the kept side form two or more
-/// separate wedges around them.
+/// separate wedges around them, or all of their ring.
 fn pinched(mesh: &Mesh, distance: &[f64]) -> Vec<usize> {
     let reaches_in = |h: HalfedgeId| {
         let f = mesh.face(h);
@@ -147,7 +168,9 @@ fn pinched(mesh: &Mesh, distance: &[f64]) -> Vec<usize> {
             let starts = (0..n)
                 .filter(|&k| wedges[k] && !wedges[(k + n - 1) % n])
                 .count();
-            starts >= 2
+            // Two wedges, or a whole ring on the kept side (the surface touches the plane
+            // there without crossing it): either way, its image would meet it at a point.
+            starts >= 2 || wedges.iter().all(|&w| w)
         })
         .collect()
 }
@@ -278,10 +301,10 @@ impl<'a> Half<'a> {
         let n = self.positions.len();
         let mut partner: Vec<u32> = (0..n as u32).collect();
         let mut positions = self.positions.clone();
-        for v in 0..n {
-            if !self.on_plane[v] {
-                partner[v] = positions.len() as u32;
-                positions.push(plane.reflect(self.positions[v]));
+        for ((own, &p), &on_plane) in partner.iter_mut().zip(&self.positions).zip(&self.on_plane) {
+            if !on_plane {
+                *own = positions.len() as u32;
+                positions.push(plane.reflect(p));
             }
         }
         let mut triangles = self.triangles.clone();

@@ -49,13 +49,15 @@ use sketchmesh_core::document::{
     CurveHandleInput, CurveKind, DeformHandleInput, DeformInput, DeformMethod, DeleteHandleInput,
     Document, DuplicateInput, Editor, HandleEditInput, KeyframeInput, LinkHandlesInput, MergeInput,
     ModelInput, Op, OptimizeInput, OversketchFit, RegionEditInput, Session, SketchFeatureInput,
-    StrokePairInput, TransformInput,
+    StrokePairInput, SymmetrizeInput, TransformInput,
 };
 use sketchmesh_core::feature::FeatureKind;
 use sketchmesh_core::mesh::{Mesh, VertexId, primitives};
+use sketchmesh_core::model::{MirrorPlane, Side};
 use sketchmesh_core::optimize::{OptimizeParams, quality_report};
 use sketchmesh_core::oversketch::{ManualHandle, OutlineKind, OversketchRoi, pick_handle};
 use sketchmesh_core::skeleton::HandleKind;
+use sketchmesh_core::symmetry::{are_twins, partners};
 
 /// Re-recorded on purpose: `import_created`'s golden, when control curves became chains of
 /// vertices (issue 15). The import now turns the file's curve points into a vertex chain and
@@ -484,6 +486,7 @@ fn generators() -> Vec<(&'static str, Generator)> {
         ("optimize_feature_region", optimize_feature_region),
         ("curve_handles", curve_handles),
         ("deform_and_keyframes", deform_and_keyframes),
+        ("symmetric_modelling", symmetric_modelling),
     ]
 }
 
@@ -1277,4 +1280,107 @@ fn curve_ops_leave_no_poor_triangles() {
             }
         }
     }
+}
+
+/// Symmetric modelling: a body drawn across the plane and a blob beside it made with
+/// symmetry on (symmetric, and mirror twins), a pull, a curve, a limb and a cut each made
+/// once and acting on both sides, a mirrored duplicate, and a shape made symmetric about a
+/// tilted plane off its centre.
+fn symmetric_modelling() -> Editor {
+    let plane = MirrorPlane::default();
+    let mirrored = |op: Op| op.mirrored(plane);
+    let camera = Camera::default();
+    let mut editor = Editor::new();
+    let body = outline(
+        CENTRE,
+        150.0,
+        &[(2, 0.12, 0.4), (3, 0.06, 1.1)],
+        0.8,
+        0.0,
+        90,
+    );
+    apply(&mut editor, mirrored(create(&body, camera)));
+    let blob = circle(CENTRE + DVec2::new(290.0, -170.0), 60.0);
+    apply(&mut editor, mirrored(create(&blob, camera)));
+    let doc = editor.document();
+    assert!(partners(&doc.models[0].mesh, &plane).is_some());
+    assert!(are_twins(&doc.models[1].mesh, &doc.models[2].mesh, &plane));
+
+    let right = |editor: &Editor| {
+        let model = &editor.document().models[0];
+        let points = model.curves[0].points(&model.mesh);
+        let far = points.iter().copied().max_by(|a, b| a.x.total_cmp(&b.x));
+        screen(&camera, VIEWPORT, far.unwrap()).unwrap()
+    };
+    let from = right(&editor);
+    let pull = stroke_input(
+        VIEWPORT,
+        camera,
+        &segment(from, from + DVec2::new(50.0, -20.0)),
+    );
+    apply(&mut editor, mirrored(Op::Pull(pull)));
+    let body_right = CENTRE + DVec2::new(80.0, 0.0);
+    let across = segment(
+        body_right - DVec2::new(30.0, 50.0),
+        body_right + DVec2::new(30.0, 50.0),
+    );
+    apply(
+        &mut editor,
+        mirrored(add_curve(VIEWPORT, camera, &across, false, false)),
+    );
+    let base: Vec<DVec2> = circle(body_right + DVec2::new(40.0, 30.0), 22.0);
+    let silhouette: Vec<DVec2> = (0..=60)
+        .map(|i| {
+            let a = std::f64::consts::PI * (f64::from(i) / 60.0 - 0.5);
+            body_right + DVec2::new(40.0, 30.0) + DVec2::new(140.0 * a.cos(), 22.0 * a.sin())
+        })
+        .collect();
+    let strokes = [
+        stroke_input(VIEWPORT, camera, &base),
+        stroke_input(VIEWPORT, camera, &silhouette),
+    ];
+    apply(
+        &mut editor,
+        mirrored(Op::Extrude(StrokePairInput { strokes })),
+    );
+    let (lo, hi) = editor.document().models[0].mesh.bounding_box().unwrap();
+    assert!((lo.x + hi.x).abs() < 1e-9, "a limb on each side: {lo} {hi}");
+    let blob_x = CENTRE.x + 315.0;
+    let cut = segment(DVec2::new(blob_x, 20.0), DVec2::new(blob_x, 300.0));
+    apply(
+        &mut editor,
+        mirrored(Op::Cut(stroke_input(VIEWPORT, camera, &cut))),
+    );
+    let duplicate = DuplicateInput {
+        model: 1,
+        beside: None,
+    };
+    apply(&mut editor, mirrored(Op::Duplicate(duplicate)));
+    let n = editor.document().models.len();
+    let doc = editor.document();
+    assert!(are_twins(
+        &doc.models[1].mesh,
+        &doc.models[n - 1].mesh,
+        &plane
+    ));
+
+    let lower = outline(
+        CENTRE + DVec2::new(60.0, 200.0),
+        70.0,
+        &[(2, 0.1, 0.3)],
+        0.7,
+        0.2,
+        60,
+    );
+    apply(&mut editor, create(&lower, camera));
+    let (lo, hi) = editor.document().models[n].mesh.bounding_box().unwrap();
+    let tilted = MirrorPlane::through(0.5 * (lo + hi) + DVec3::X * 0.1, DVec3::new(1.0, 0.25, 0.0));
+    let symmetrize = SymmetrizeInput {
+        model: n,
+        plane: tilted.unwrap(),
+        keep: Side::Negative,
+    };
+    apply(&mut editor, Op::Symmetrize(symmetrize));
+    assert!(partners(&editor.document().models[n].mesh, &tilted.unwrap()).is_some());
+    editor
 }

@@ -467,3 +467,79 @@ fn every_kind_of_edit_made_with_symmetry_on_keeps_the_pairing() {
     // Animation: a key of the symmetric pose.
     mirrored_ok(&base, Op::Keyframe(KeyframeInput { time: 1.0 }), "keyframe");
 }
+
+/// The smallest corner angle (degrees) of the triangles with a corner within `band` of the
+/// plane (relative to the diagonal), and of all triangles.
+fn smallest_angles(model: &Model, plane: &MirrorPlane, band: f64) -> (f64, f64) {
+    let tolerance = band * diagonal(&model.mesh);
+    let (mut at_join, mut anywhere) = (180.0f64, 180.0f64);
+    for f in model.mesh.faces() {
+        let p = model.mesh.face_positions(f);
+        let angle = (0..3)
+            .map(|k| {
+                let (a, b) = (p[(k + 1) % 3] - p[k], p[(k + 2) % 3] - p[k]);
+                a.angle_between(b).to_degrees()
+            })
+            .fold(180.0, f64::min);
+        anywhere = anywhere.min(angle);
+        if p.iter()
+            .any(|&q| plane.signed_distance(q).abs() <= tolerance)
+        {
+            at_join = at_join.min(angle);
+        }
+    }
+    (at_join, anywhere)
+}
+
+#[test]
+fn scans_are_symmetrized_about_an_off_centre_plane_with_no_new_sliver() {
+    let Some(bunny) = crate::common::testdata_meshes("stanford_bunny.glb") else {
+        return;
+    };
+    let Some(nefertiti) = crate::common::testdata_meshes("nefertiti.glb") else {
+        return;
+    };
+    for (name, mesh) in [("bunny", &bunny[0]), ("Nefertiti", &nefertiti[0])] {
+        let (lo, hi) = mesh.bounding_box().unwrap();
+        // Off centre and tilted: a fifth of the width right of the middle, turned 10°.
+        let through = 0.5 * (lo + hi) + DVec3::X * 0.2 * (hi.x - lo.x);
+        let plane = MirrorPlane::through(through, DVec3::new(1.0, 0.18, 0.0)).unwrap();
+        let mut editor = Editor::new();
+        editor
+            .apply(crate::common::import_mesh(name, mesh))
+            .unwrap();
+        let before = editor.document().models[0].clone();
+        editor
+            .apply(Op::Symmetrize(SymmetrizeInput {
+                model: 0,
+                plane,
+                keep: Side::Negative,
+            }))
+            .unwrap();
+        let model = &editor.document().models[0];
+        model.mesh.validate().unwrap();
+        let partner = partners(&model.mesh, &plane).expect("every vertex has a partner");
+        assert_symmetric_connectivity(model, &partner);
+        let (at_join, anywhere) = smallest_angles(model, &plane, 1e-9);
+        let (input_near, input_anywhere) = smallest_angles(&before, &plane, 0.01);
+        eprintln!(
+            "{name}: {} → {} vertices; smallest angle at the join {at_join:.1}°, anywhere {anywhere:.2}° (input: {input_near:.2}° near the plane, {input_anywhere:.2}° anywhere)",
+            before.mesh.n_vertices(),
+            model.mesh.n_vertices()
+        );
+        // The join makes no triangle thinner than 5°, or than the input had near the plane.
+        let floor = 5f64.min(0.9 * input_near);
+        assert!(
+            at_join >= floor,
+            "{name}: a sliver at the join ({at_join:.2}°)"
+        );
+        // The kept side did not move: its vertices are the input's.
+        let kept = (before.mesh.positions().iter())
+            .filter(|&&p| plane.signed_distance(p) < -0.01 * diagonal(&before.mesh))
+            .count();
+        let found = (model.mesh.positions().iter())
+            .filter(|&&p| plane.signed_distance(p) < -0.01 * diagonal(&before.mesh))
+            .count();
+        assert_eq!(kept, found, "{name}: the kept side's vertices stay");
+    }
+}

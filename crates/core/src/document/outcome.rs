@@ -149,6 +149,9 @@ pub(super) fn with_imported(
         place_beside(base, &mut imported);
     }
     let mut next = base.clone();
+    if let Some(plane) = imported.symmetry {
+        next.symmetry.get_or_insert(plane);
+    }
     next.models
         .extend(imported.models.into_iter().map(Arc::new));
     next.sketches

@@ -2,6 +2,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::model::MirrorPlane;
+
 /// Version of the `"sketchmesh"` extras object written by this build.
 pub const EXTRAS_VERSION: u32 = 1;
 
@@ -23,6 +25,19 @@ pub(crate) struct SketchmeshExtras {
     pub(crate) curves: Vec<CurveExtras>,
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub(crate) sketches: Vec<SketchExtras>,
+    /// On a model node: the document's symmetry plane and how the model pairs across it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(crate) mirror: Option<MirrorExtras>,
+}
+
+/// How a model pairs up across the document's symmetry plane: `{"plane": [nx, ny, nz, d]}`
+/// for a symmetric model, with `"twin": j` for one whose mirror twin is model node `j`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct MirrorExtras {
+    pub(crate) plane: MirrorPlane,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(crate) twin: Option<usize>,
 }
 
 /// One control curve of a model.

@@ -17,16 +17,22 @@ use serde_json::value::RawValue;
 
 use super::animation_write::{Baked, bake, morph_targets, weights_animation};
 use super::appearance_write::imported_primitives;
-use super::extras::{CurveExtras, EXTRAS_VERSION, NodeExtras, SketchExtras, SketchmeshExtras};
+use super::extras::{
+    CurveExtras, EXTRAS_VERSION, MirrorExtras, NodeExtras, SketchExtras, SketchmeshExtras,
+};
 use super::glb::{Writer, Written, f32_positions_and_normals};
-use crate::model::{Document, Model, PointCloud, SketchCurve};
+use crate::model::{Document, MirrorPlane, Model, PointCloud, SketchCurve};
+use crate::symmetry::{are_twins, partners};
 
 /// Encodes the document as a .glb file; see the module docs for the layout.
 pub fn write_glb(doc: &Document) -> Vec<u8> {
     let mut writer = Writer::default();
     let mut nodes = Vec::new();
     for (index, model) in doc.models.iter().enumerate() {
-        nodes.push(model_node(&mut writer, index, model));
+        let mirror = doc
+            .symmetry
+            .and_then(|plane| mirror_extras(doc, index, plane));
+        nodes.push(model_node(&mut writer, index, model, mirror));
     }
     if !doc.sketches.is_empty() {
         nodes.push(sketch_node(&mut writer, &doc.sketches));
@@ -37,7 +43,20 @@ pub fn write_glb(doc: &Document) -> Vec<u8> {
     writer.finish(nodes)
 }
 
-fn model_node(writer: &mut Writer, index: usize, model: &Model) -> json::Index<json::Node> {
+/// How model `index` pairs up across `plane`: a twin, symmetric, or (`None`) neither.
+fn mirror_extras(doc: &Document, index: usize, plane: MirrorPlane) -> Option<MirrorExtras> {
+    let mesh = &doc.models[index].mesh;
+    let twin =
+        (0..doc.models.len()).find(|&j| j != index && are_twins(mesh, &doc.models[j].mesh, &plane));
+    (twin.is_some() || partners(mesh, &plane).is_some()).then_some(MirrorExtras { plane, twin })
+}
+
+fn model_node(
+    writer: &mut Writer,
+    index: usize,
+    model: &Model,
+    mirror: Option<MirrorExtras>,
+) -> json::Index<json::Node> {
     let mesh = &model.mesh;
     let name = model
         .name
@@ -71,22 +90,24 @@ fn model_node(writer: &mut Writer, index: usize, model: &Model) -> json::Index<j
     });
     // Imported models without curves stay foreign files' models: no Sketchmesh extras,
     // so importing the export again keeps their look.
-    let extras = (appearance.is_none() || !model.curves.is_empty()).then(|| {
-        let curves = model
-            .curves
-            .iter()
-            .map(|curve| CurveExtras {
-                closed: curve.is_closed,
-                sharp: curve.is_sharp(),
-                points: curve.points(mesh).iter().map(|p| p.to_array()).collect(),
+    let extras =
+        (appearance.is_none() || !model.curves.is_empty() || mirror.is_some()).then(|| {
+            let curves = model
+                .curves
+                .iter()
+                .map(|curve| CurveExtras {
+                    closed: curve.is_closed,
+                    sharp: curve.is_sharp(),
+                    points: curve.points(mesh).iter().map(|p| p.to_array()).collect(),
+                })
+                .collect();
+            extras(SketchmeshExtras {
+                version: EXTRAS_VERSION,
+                curves,
+                sketches: Vec::new(),
+                mirror,
             })
-            .collect();
-        extras(SketchmeshExtras {
-            version: EXTRAS_VERSION,
-            curves,
-            sketches: Vec::new(),
-        })
-    });
+        });
     let node = writer.root.push(json::Node {
         mesh: mesh_index,
         name: Some(name.clone()),
@@ -207,6 +228,7 @@ fn sketch_node(
         version: EXTRAS_VERSION,
         curves: Vec::new(),
         sketches,
+        mirror: None,
     });
     writer.root.push(json::Node {
         mesh,

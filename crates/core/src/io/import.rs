@@ -17,6 +17,7 @@ use glam::DVec3;
 use super::curves::{AttachedCurves, attach_curves};
 use super::error::GltfError;
 use super::extras::CLAY_MATERIAL_NAME;
+use super::extras::MirrorExtras;
 use super::input::{ImportFile, ImportLimits};
 use super::parse::parse;
 use super::resources::{Buffers, load_buffers, resolve};
@@ -24,9 +25,10 @@ use super::scene::{NodeGeometry, Surface, read_nodes};
 use super::weld::weld;
 use crate::mesh::{FaceId, Mesh, RepairReport, TriSoup, make_manifold};
 use crate::model::{
-    AlphaMode, Appearance, AsImported, Image, Keyframe, Material, Model, PointCloud, SketchCurve,
-    Texture, positions_hash, positions_hash_of,
+    AlphaMode, Appearance, AsImported, Image, Keyframe, Material, MirrorPlane, Model, PointCloud,
+    SketchCurve, Texture, positions_hash, positions_hash_of,
 };
+use crate::symmetry::{Keep, are_twins_within, mirror_positions, mirrored_model, partners_within};
 
 /// Pen pressure given to imported line primitives (the pressure of a mouse stroke).
 const LINE_PRESSURE: f64 = 0.5;
@@ -42,6 +44,9 @@ pub struct Imported {
     pub point_clouds: Vec<PointCloud>,
     /// Things the user may want to know (repairs made, textures left behind), as sentences.
     pub notes: Vec<String>,
+    /// The symmetry plane of the Sketchmesh document the file was written from, if it had
+    /// one; its symmetric models and mirror twins are made exact again (see [`restore_symmetry`]).
+    pub symmetry: Option<MirrorPlane>,
 }
 
 /// Imports the default scene of `main` (.glb or .gltf); `others` are the files given with it
@@ -58,9 +63,11 @@ pub fn import_gltf(
     let nodes = read_nodes(&parsed.document, &buffers, limits)?;
     let mut materials = MaterialCache::new(&parsed.document, &buffers, others);
     let mut imported = Imported::default();
+    let mut mirrors = Vec::new();
     for node in nodes {
-        add_node(node, &mut materials, &mut imported)?;
+        add_node(node, &mut materials, &mut imported, &mut mirrors)?;
     }
+    restore_symmetry(&mut imported, &mirrors);
     imported.notes.append(&mut materials.notes);
     if imported.models.is_empty()
         && imported.sketches.is_empty()
@@ -75,6 +82,7 @@ fn add_node(
     node: NodeGeometry,
     materials: &mut MaterialCache,
     imported: &mut Imported,
+    mirrors: &mut Vec<Option<MirrorExtras>>,
 ) -> Result<(), GltfError> {
     let NodeGeometry {
         name,
@@ -130,6 +138,7 @@ fn add_node(
             surface.key_times.len()
         ));
     }
+    let mirror = extras.as_ref().and_then(|extras| extras.mirror.clone());
     let attached = extras
         .map(|extras| attach_curves(&mut mesh, &extras.curves))
         .unwrap_or_default();
@@ -172,6 +181,7 @@ fn add_node(
             appearance,
         })
     });
+    mirrors.push(mirror);
     imported.models.push(Model {
         mesh,
         curves: attached.curves,
@@ -181,6 +191,40 @@ fn add_node(
         keyframes,
     });
     Ok(())
+}
+
+/// How far, relative to a model's diagonal, a file's vertex may be from its partner's mirror
+/// image: its positions are 32-bit floats.
+const FILE_PAIRING: f64 = 1e-5;
+
+/// Makes the symmetric models and mirror twins a Sketchmesh file names (`mirrors`, one per
+/// model) exact again: a symmetric model's pairs meet halfway, a twin becomes the mirror
+/// image of the model it pairs with. A model that no longer pairs up (edited elsewhere) is
+/// left as it came; the plane is kept for the document.
+fn restore_symmetry(imported: &mut Imported, mirrors: &[Option<MirrorExtras>]) {
+    for (index, mirror) in mirrors.iter().enumerate() {
+        let Some(MirrorExtras { plane, twin }) = mirror else {
+            continue;
+        };
+        imported.symmetry = Some(*plane);
+        match twin {
+            Some(j) if *j > index && *j < imported.models.len() => {
+                let (model, other) = (&imported.models[index], &imported.models[*j]);
+                if are_twins_within(&model.mesh, &other.mesh, plane, FILE_PAIRING) {
+                    imported.models[*j] = mirrored_model(model, plane);
+                }
+            }
+            Some(_) => {}
+            None => {
+                let model = &mut imported.models[index];
+                if let Some(pairs) = partners_within(&model.mesh, plane, FILE_PAIRING) {
+                    let sides_from = model.mesh.positions().to_vec();
+                    let positions = model.mesh.positions_mut();
+                    mirror_positions(&sides_from, positions, &pairs, plane, Keep::Average);
+                }
+            }
+        }
+    }
 }
 
 /// The node's animated poses as key frames of `mesh`: each mesh vertex takes the position of

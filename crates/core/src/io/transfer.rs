@@ -21,8 +21,8 @@ use glam::DVec3;
 use super::import::Imported;
 use crate::mesh::{Mesh, MeshParts, TriSoup, VertexId};
 use crate::model::{
-    AlphaMode, Appearance, AsImported, Image, Keyframe, Material, Model, PointCloud, SketchCurve,
-    Texture,
+    AlphaMode, Appearance, AsImported, Image, Keyframe, Material, MirrorPlane, Model, PointCloud,
+    SketchCurve, Texture,
 };
 use crate::model::{ControlCurve, CurveKind};
 
@@ -44,6 +44,8 @@ pub fn encode_imported(imported: &Imported) -> Vec<u8> {
         out.option(cloud.colors.as_deref(), Writer::pods);
     });
     out.seq(&imported.notes, |out, note| out.text(note));
+    let plane = imported.symmetry.map(<[f64; 4]>::from);
+    out.option(plane.as_ref().map(|p| &p[..]), Writer::pods);
     out.bytes
 }
 
@@ -93,6 +95,15 @@ pub fn decode_imported_unchecked(
             })
         })?,
         notes: input.seq(Reader::text)?,
+        symmetry: match input.option(Reader::pods::<f64>)? {
+            Some(numbers) => Some(
+                <[f64; 4]>::try_from(numbers)
+                    .ok()
+                    .and_then(|plane| MirrorPlane::try_from(plane).ok())
+                    .ok_or(TransferError("a symmetry plane that is not one"))?,
+            ),
+            None => None,
+        },
     };
     input.end()?;
     Ok(UncheckedImport(imported))

@@ -21,7 +21,10 @@ mod symmetrize;
 pub use curves::{Place, mirrored_curves};
 pub use error::SymmetryError;
 pub use mirror_model::mirrored_model;
-pub use pairing::{Keep, are_twins, changed_side, mirror_positions, partners, side_of_model};
+pub use pairing::{
+    Keep, are_twins, are_twins_within, changed_side, mirror_positions, partners, partners_within,
+    side_of_model,
+};
 pub use symmetrize::symmetrized;
 
 /// How close, relative to a model's bounding-box diagonal, a vertex must be to its partner's

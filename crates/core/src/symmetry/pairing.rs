@@ -20,11 +20,17 @@ pub enum Keep {
 /// bounding-box diagonal (a vertex on the plane is its own). `None` when a vertex has none
 /// or the pairing is not one-to-one: the model is not symmetric about the plane.
 pub fn partners(mesh: &Mesh, plane: &MirrorPlane) -> Option<Vec<VertexId>> {
+    partners_within(mesh, plane, EXACT)
+}
+
+/// [`partners`] to `relative` of the diagonal: a file's 32-bit positions pair up only to
+/// about 1e-7.
+pub fn partners_within(mesh: &Mesh, plane: &MirrorPlane, relative: f64) -> Option<Vec<VertexId>> {
     let positions = mesh.positions();
     if positions.is_empty() {
         return None;
     }
-    let tolerance = EXACT * diagonal(mesh);
+    let tolerance = relative * diagonal(mesh);
     let grid = PointGrid::new(positions, 2.0 * tolerance);
     let partner = (positions.iter())
         .map(|&p| {
@@ -39,7 +45,12 @@ pub fn partners(mesh: &Mesh, plane: &MirrorPlane) -> Option<Vec<VertexId>> {
 /// Whether `b` is `a`'s mirror image about `plane`, vertex for vertex, to [`EXACT`] of `a`'s
 /// diagonal (as [`super::mirrored_model`] makes it).
 pub fn are_twins(a: &Mesh, b: &Mesh, plane: &MirrorPlane) -> bool {
-    let tolerance = EXACT * diagonal(a);
+    are_twins_within(a, b, plane, EXACT)
+}
+
+/// [`are_twins`] to `relative` of `a`'s diagonal.
+pub fn are_twins_within(a: &Mesh, b: &Mesh, plane: &MirrorPlane, relative: f64) -> bool {
+    let tolerance = relative * diagonal(a);
     a.n_vertices() == b.n_vertices()
         && a.n_faces() == b.n_faces()
         && (a.positions().iter().zip(b.positions()))

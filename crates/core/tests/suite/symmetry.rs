@@ -543,3 +543,52 @@ fn scans_are_symmetrized_about_an_off_centre_plane_with_no_new_sliver() {
         assert_eq!(kept, found, "{name}: the kept side's vertices stay");
     }
 }
+
+#[test]
+fn symmetry_survives_a_glb_round_trip() {
+    let made = body_and_limbs();
+    let op = crate::common::import_document("symmetric.glb", made.document());
+    let mut editor = Editor::new();
+    editor.apply(op).unwrap();
+    let doc = editor.document();
+    assert_eq!(doc.symmetry, Some(plane()));
+    assert_eq!(doc.models.len(), 3);
+    // 32-bit positions in the file, exact pairs again once imported.
+    let worst = asymmetry(doc);
+    assert!(worst <= EXACT, "asymmetry after import {worst}");
+    // And it keeps: a pull made with symmetry on acts on both sides.
+    let model = &doc.models[0];
+    let outline = model.curves[0].points(&model.mesh);
+    let grab = *outline.iter().max_by(|a, b| a.x.total_cmp(&b.x)).unwrap();
+    let from = screen(grab);
+    let pull = Op::Pull(input(&segment(from, from + DVec2::new(40.0, 0.0))));
+    let pulled = mirrored_ok(&editor, pull, "pull after import");
+    assert!(asymmetry(pulled.document()) <= EXACT);
+}
+
+#[test]
+fn a_mirrored_pull_previews_while_dragged_and_commits_symmetric() {
+    let mut editor = body_and_limbs();
+    let model = editor.document().models[0].clone();
+    let outline = model.curves[0].points(&model.mesh);
+    let grab = *outline.iter().max_by(|a, b| a.x.total_cmp(&b.x)).unwrap();
+    let from = screen(grab);
+    let mut edit = editor
+        .begin_gesture(mirrored(Op::Pull(input(&[from]))))
+        .unwrap();
+    for k in 1..=15 {
+        let p = from + DVec2::new(4.0 * f64::from(k), 0.0);
+        edit.extend([p.x, p.y, 0.5]);
+        while edit.step().unwrap() == sketchmesh_core::document::Progress::Working {}
+    }
+    let (index, moved) = edit.moved_model().expect("a preview while dragging");
+    assert_eq!(index, 0);
+    let farthest = moved.iter().map(|p| p.x).fold(f64::MIN, f64::max);
+    assert!(
+        farthest > grab.x + 0.2,
+        "the preview follows the drag: {farthest}"
+    );
+    edit.finish(&mut editor).unwrap();
+    assert!(asymmetry(editor.document()) <= EXACT);
+    assert!(matches!(editor.ops().last(), Some(Op::Mirrored(_))));
+}

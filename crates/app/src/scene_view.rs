@@ -9,8 +9,8 @@ use eframe::egui_wgpu;
 use glam::DVec3;
 use sketchmesh_core::document::{Edit, Op, StrokeInput, model_under};
 use sketchmesh_core::mesh::VertexId;
-use sketchmesh_core::model::{MirrorPlane, Side};
-use sketchmesh_core::symmetry::{Keep, are_twins, mirror_positions, partners};
+use sketchmesh_core::model::MirrorPlane;
+use sketchmesh_core::symmetry::{are_twins, mirror_positions, moved_side, partners};
 
 use crate::autosave;
 use crate::camera::OrbitCamera;
@@ -427,24 +427,11 @@ impl MirroredMotion {
             }
             Follower::Partners(partners) if partners.len() == positions.len() => {
                 self.mirrored.extend_from_slice(positions);
-                let keep = Keep::Side(moved_side(base, positions, plane));
+                let keep = moved_side(base, positions, plane);
                 mirror_positions(base, &mut self.mirrored, partners, plane, keep);
                 Some(Followed::Itself(&self.mirrored))
             }
             _ => None,
         }
-    }
-}
-
-/// The side of `plane` whose vertices moved more from `base` to `positions`: the side the
-/// edit acts on, which the preview keeps.
-fn moved_side(base: &[DVec3], positions: &[DVec3], plane: &MirrorPlane) -> Side {
-    let mut moved = [0.0; 2];
-    for (b, p) in base.iter().zip(positions) {
-        moved[usize::from(plane.signed_distance(*b) < 0.0)] += b.distance(*p);
-    }
-    match moved[0] >= moved[1] {
-        true => Side::Positive,
-        false => Side::Negative,
     }
 }

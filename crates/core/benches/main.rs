@@ -28,6 +28,7 @@ mod remesh;
 mod silhouette;
 mod skeleton;
 mod solve;
+mod symmetry;
 mod volumetric;
 
 criterion::criterion_main!(
@@ -44,5 +45,6 @@ criterion::criterion_main!(
     silhouette::benches,
     skeleton::benches,
     solve::benches,
+    symmetry::benches,
     volumetric::benches,
 );

@@ -22,8 +22,8 @@ pub use curves::{Place, mirrored_curves};
 pub use error::SymmetryError;
 pub use mirror_model::mirrored_model;
 pub use pairing::{
-    Keep, are_twins, are_twins_within, changed_side, mirror_positions, partners, partners_within,
-    side_of_model,
+    Keep, are_twins, are_twins_within, changed_side, mirror_positions, moved_side, partners,
+    partners_within, side_of_model,
 };
 pub use symmetrize::symmetrized;
 

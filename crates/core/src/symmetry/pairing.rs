@@ -111,43 +111,63 @@ pub fn mirror_positions(
 /// more (vertices displaced, or for a new topology, vertices made or removed), or
 /// [`Keep::Average`] when both sides changed alike.
 pub fn changed_side(base: &Mesh, next: &Mesh, plane: &MirrorPlane) -> Keep {
-    let mut change = [0.0f64; 2];
-    let mut add = |p: DVec3, amount: f64| {
-        let s = plane.signed_distance(p);
-        if s > 0.0 {
-            change[0] += amount;
-        } else if s < 0.0 {
-            change[1] += amount;
-        }
-    };
     if base.triangles() == next.triangles() {
-        for (&p, &q) in base.positions().iter().zip(next.positions()) {
-            add(p, p.distance(q));
-        }
-    } else {
-        let tolerance = EXACT * diagonal(base);
-        let (before, after) = (base.positions(), next.positions());
-        let (in_before, in_after) = (
-            PointGrid::new(before, 2.0 * tolerance),
-            PointGrid::new(after, 2.0 * tolerance),
-        );
-        for &q in after {
-            if in_before.nearest_within(q, tolerance).is_none() {
-                add(q, 1.0);
-            }
-        }
-        for &p in before {
-            if in_after.nearest_within(p, tolerance).is_none() {
-                add(p, 1.0);
-            }
+        return moved_side(base.positions(), next.positions(), plane);
+    }
+    let tolerance = EXACT * diagonal(base);
+    let (before, after) = (base.positions(), next.positions());
+    let (in_before, in_after) = (
+        PointGrid::new(before, 2.0 * tolerance),
+        PointGrid::new(after, 2.0 * tolerance),
+    );
+    let made = after
+        .iter()
+        .filter(|&&q| in_before.nearest_within(q, tolerance).is_none());
+    let removed = before
+        .iter()
+        .filter(|&&p| in_after.nearest_within(p, tolerance).is_none());
+    let mut change = Change::default();
+    for &p in made.chain(removed) {
+        change.add(plane.signed_distance(p), 1.0);
+    }
+    change.keep()
+}
+
+/// Where the vertices at `base` moved to `moved` (the same vertices): the side whose
+/// vertices moved much more, or [`Keep::Average`] when both moved alike.
+pub fn moved_side(base: &[DVec3], moved: &[DVec3], plane: &MirrorPlane) -> Keep {
+    let mut change = Change::default();
+    for (&p, &q) in base.iter().zip(moved) {
+        change.add(plane.signed_distance(p), p.distance(q));
+    }
+    change.keep()
+}
+
+/// How much changed on each side of a plane.
+#[derive(Default)]
+struct Change {
+    positive: f64,
+    negative: f64,
+}
+
+impl Change {
+    /// Adds `amount` at signed distance `s` (nothing on the plane).
+    fn add(&mut self, s: f64, amount: f64) {
+        if s > 0.0 {
+            self.positive += amount;
+        } else if s < 0.0 {
+            self.negative += amount;
         }
     }
-    let [positive, negative] = change;
-    if positive > 2.0 * negative {
-        Keep::Side(Side::Positive)
-    } else if negative > 2.0 * positive {
-        Keep::Side(Side::Negative)
-    } else {
-        Keep::Average
+
+    /// The side that changed at least twice as much as the other, or both alike.
+    fn keep(&self) -> Keep {
+        if self.positive > 2.0 * self.negative {
+            Keep::Side(Side::Positive)
+        } else if self.negative > 2.0 * self.positive {
+            Keep::Side(Side::Negative)
+        } else {
+            Keep::Average
+        }
     }
 }

@@ -87,7 +87,7 @@ use super::outcome::{made_by, outcome, sharing_looks, with_imported, with_model}
 use super::oversketch::{OutlinePiece, OutlinePreview};
 use super::region_edit::RegionPreview;
 use super::skeleton::HandleDrag;
-use super::symmetry::mirrored_outcome;
+use super::symmetry::{even_outline, mirrored_outcome};
 use super::volumetric::CurvePreview;
 use super::{CommandError, Document, Editor, ImportInput, Model, Op, RegionEditInput};
 use crate::io::Imported;
@@ -144,6 +144,9 @@ pub struct Edit {
     mirror: Option<MirrorPlane>,
     /// Whether the result ([`Work::Done`]) is made symmetric already.
     is_mirrored: bool,
+    /// The op as drawn, when what is computed differs from it (an outline across the plane
+    /// made even, [`even_outline`]): the session logs it, and a replay evens it the same way.
+    drawn: Option<Op>,
     /// The document the edit began on; the result is computed from it and the op alone.
     base: Document,
     /// Whether the op's stroke is still being drawn.
@@ -359,6 +362,10 @@ impl Edit {
     /// [`Edit::begin`] on `base`, with no editor.
     fn begin_on(base: Document, op: Op, is_gesture: bool) -> Result<Edit, CommandError> {
         let (op, mirror) = op.into_parts();
+        let (op, drawn) = match mirror.and_then(|plane| even_outline(&op, &plane)) {
+            Some(even) => (even, Some(op)),
+            None => (op, None),
+        };
         let work = if is_gesture {
             Work::gesture(&base, &op)?
         } else {
@@ -370,6 +377,7 @@ impl Edit {
             op,
             mirror,
             is_mirrored: false,
+            drawn,
             base,
             is_gesture,
             work,
@@ -438,9 +446,10 @@ impl Edit {
 
     /// The op as the session logs it: with its plane, when made with symmetry on.
     fn logged_op(&self) -> Op {
+        let op = self.drawn.as_ref().unwrap_or(&self.op).clone();
         match self.mirror {
-            Some(plane) => self.op.clone().mirrored(plane),
-            None => self.op.clone(),
+            Some(plane) => op.mirrored(plane),
+            None => op,
         }
     }
 

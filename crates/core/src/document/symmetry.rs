@@ -17,12 +17,14 @@ use std::sync::Arc;
 
 use super::next::{Outcome, target};
 use super::skeleton::remove_model;
-use super::{CommandError, Document, Op, SymmetrizeInput};
+use glam::DVec2;
+
+use super::{CommandError, CreateInput, Document, Op, SymmetrizeInput};
 use crate::mesh::VertexId;
 use crate::model::{MirrorPlane, Model, Side};
 use crate::symmetry::{
     Keep, Place, are_twins, changed_side, mirror_positions, mirrored_curves, mirrored_model,
-    partners, side_of_model, symmetrized,
+    partners, side_of_model, symmetric_outline, symmetrized,
 };
 
 /// Applies a `symmetrize` op: the model made symmetric about the plane, keeping one side.
@@ -35,6 +37,21 @@ pub(super) fn symmetrize_op(
 ) -> Result<(usize, Model), CommandError> {
     let model = target(doc, input.model)?;
     Ok((input.model, symmetrized(model, &input.plane, input.keep)?))
+}
+
+/// A creation drawn across the plane in a view that lies in it, its outline made even
+/// ([`symmetric_outline`]): what is computed in its place (the session keeps the op as
+/// drawn). `None` for any other op, or when the outline cannot be evened.
+pub(super) fn even_outline(op: &Op, plane: &MirrorPlane) -> Option<Op> {
+    let Op::Create(input) = op else {
+        return None;
+    };
+    let viewport = DVec2::from(input.viewport);
+    let stroke = symmetric_outline(&input.stroke, &input.camera, viewport, plane)?;
+    Some(Op::Create(CreateInput {
+        stroke,
+        ..input.clone()
+    }))
 }
 
 /// `outcome` of `op` on `base`, made symmetric about `plane` (see the module docs).

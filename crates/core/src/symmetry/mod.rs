@@ -15,12 +15,14 @@ mod curves;
 mod error;
 mod grid;
 mod mirror_model;
+mod outline;
 mod pairing;
 mod symmetrize;
 
 pub use curves::{Place, mirrored_curves};
 pub use error::SymmetryError;
 pub use mirror_model::mirrored_model;
+pub use outline::symmetric_outline;
 pub use pairing::{
     Keep, are_twins, are_twins_within, changed_side, mirror_positions, moved_side, partners,
     partners_within, side_of_model,

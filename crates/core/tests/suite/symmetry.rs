@@ -592,3 +592,46 @@ fn a_mirrored_pull_previews_while_dragged_and_commits_symmetric() {
     assert!(asymmetry(editor.document()) <= EXACT);
     assert!(matches!(editor.ops().last(), Some(Op::Mirrored(_))));
 }
+
+#[test]
+fn an_outline_drawn_off_centre_across_the_plane_comes_out_even_without_a_notch() {
+    let mut editor = Editor::new();
+    // An egg drawn 40 px right of the plane: kept as drawn, one half would meet its image at
+    // an angle, a notch at the top and the bottom.
+    let drawn = outline(
+        CENTRE + DVec2::new(40.0, 0.0),
+        140.0,
+        &[(1, 0.12, 0.0)],
+        1.2,
+        0.3,
+        90,
+    );
+    editor
+        .apply(mirrored(Op::Create(input(&drawn).into())))
+        .unwrap();
+    let model = &editor.document().models[0];
+    assert!(asymmetry(editor.document()) <= EXACT);
+    let points = model.curves[0].points(&model.mesh);
+    let n = points.len();
+    let mut crossings = 0;
+    for i in 0..n {
+        let (before, at, after) = (points[(i + n - 1) % n], points[i], points[(i + 1) % n]);
+        if at.x.abs() > 1e-9 * diagonal(&model.mesh) {
+            continue;
+        }
+        crossings += 1;
+        let kink = (at - before).angle_between(after - at).to_degrees();
+        assert!(
+            kink < 15.0,
+            "the outline turns {kink:.1}° where it crosses the plane"
+        );
+    }
+    assert_eq!(
+        crossings, 2,
+        "the outline crosses the plane at its top and bottom"
+    );
+    // The session keeps the stroke as drawn, and replays to the same shape.
+    assert_eq!(editor.ops()[0].stroke().unwrap().len(), drawn.len());
+    let replayed = Editor::replay_json(&editor.session_json()).unwrap();
+    assert_eq!(replayed.document(), editor.document());
+}

@@ -13,4 +13,9 @@ pub enum SymmetryError {
         "The half kept and its mirror image do not join into one surface along the plane (the model touches the plane without crossing it); move the plane a little."
     )]
     JoinFailed,
+    /// The surface folds over itself where it crosses the plane.
+    #[error(
+        "The surface folds over itself where it crosses the symmetry plane, so it cannot be mirrored there; undo and make a smaller change."
+    )]
+    Folded,
 }

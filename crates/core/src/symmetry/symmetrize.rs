@@ -14,7 +14,7 @@ use std::collections::HashMap;
 use glam::DVec3;
 
 use super::curves::{Place, mirrored_curves};
-use super::{EXACT, SymmetryError, diagonal};
+use super::{EXACT, SymmetryError, diagonal, partners};
 use crate::mesh::{HalfedgeId, INVALID, Mesh, TriSoup, VertexId};
 use crate::model::{ControlCurve, MirrorPlane, Model, Side};
 
@@ -70,6 +70,11 @@ fn symmetrized_with(
         .collect();
     let joined = half.joined_with_image(plane);
     let mesh = Mesh::from_soup(&joined.soup).map_err(|_| SymmetryError::JoinFailed)?;
+    // Where the surface folds over the plane, two of its edges can cross it at one point:
+    // the result would hold that point twice, and no longer pair up.
+    if partners(&mesh, plane).is_none() {
+        return Err(SymmetryError::Folded);
+    }
     let chains: Vec<ControlCurve> = (curve_chains.into_iter())
         .map(|curve| joined.renumbered(curve))
         .collect();
@@ -187,6 +192,9 @@ struct Half<'a> {
     triangles: Vec<[u32; 3]>,
     kept: Vec<Option<u32>>,
     splits: HashMap<(u32, u32), u32>,
+    /// The half's vertex at each point of the plane: two vertices moved onto the same point
+    /// (a symmetric model's partners near the plane, both moved onto it) become one.
+    on_plane_at: HashMap<[u64; 3], u32>,
 }
 
 impl<'a> Half<'a> {
@@ -200,6 +208,7 @@ impl<'a> Half<'a> {
             triangles: Vec::new(),
             kept: vec![None; old_positions.len()],
             splits: HashMap::new(),
+            on_plane_at: HashMap::new(),
         }
     }
 
@@ -233,9 +242,17 @@ impl<'a> Half<'a> {
     }
 
     fn push(&mut self, p: DVec3, on_plane: bool) -> u32 {
+        let key = p.to_array().map(f64::to_bits);
+        if let Some(&id) = on_plane.then(|| self.on_plane_at.get(&key)).flatten() {
+            return id;
+        }
         self.positions.push(p);
         self.on_plane.push(on_plane);
-        (self.positions.len() - 1) as u32
+        let id = (self.positions.len() - 1) as u32;
+        if on_plane {
+            self.on_plane_at.insert(key, id);
+        }
+        id
     }
 
     fn crosses(&self, a: u32, b: u32) -> bool {
@@ -254,6 +271,10 @@ impl<'a> Half<'a> {
             if self.crosses(a, b) {
                 polygon.push(self.split_vertex(a, b));
             }
+        }
+        polygon.dedup();
+        if polygon.len() > 1 && polygon.first() == polygon.last() {
+            polygon.pop();
         }
         if polygon.len() < 3 || polygon.iter().all(|&v| self.on_plane[v as usize]) {
             return;

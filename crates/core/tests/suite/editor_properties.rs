@@ -1557,9 +1557,6 @@ fn run_case(
                     tally.borrow_mut().refused(&op, &error);
                     if std::env::var_os("EDITOR_PROPERTIES_VERBOSE").is_some() {
                         eprintln!("op {index} refused ({error}): {step:?}");
-                        if error.to_string().contains("do not join") {
-                            eprintln!("TMPCASE {steps:?} symmetric {symmetric}");
-                        }
                     }
                     let after = observe(&editor);
                     prop_assert!(

@@ -301,7 +301,8 @@ impl ArrangeTool {
             && let Some(model) = selected
         {
             self.selected = Some(doc.models.len());
-            return ToolOutput::Commit(Op::Duplicate(DuplicateInput {
+            // A copy beside, Symmetry on or off: "Mirrored duplicate" makes the twin.
+            return ToolOutput::CommitAsMade(Op::Duplicate(DuplicateInput {
                 model,
                 beside: Some(self.seen.get().frame().right.to_array()),
             }));

@@ -2063,13 +2063,24 @@ test('merge by touch: a second shape moved into the first with the handles and p
     // Drag the small shape 200 px left by its body, into the big one.
     await touchGesture(fresh.cdp, [line(other, { x: other.x - 200, y: other.y }, 20)], 30);
     await until(() => lastOpOf(fresh.page), (o) => o.op === 'transform', 10_000);
-    // Two fingers on it spread from 60 to 90 px apart: it grows by half, where it is.
+    // Two fingers on it spread from 60 to 90 px apart over a second, as a hand does: it grows
+    // by half, where it is. (Spread in a third of a second, the whole pinch fitted in one or
+    // two of a loaded machine's frames, and was seen as no move at all.)
     const moved = { x: other.x - 200, y: other.y };
-    await touchGesture(fresh.cdp, [
+    const pinch = () => touchGesture(fresh.cdp, [
       line({ x: moved.x - 30, y: moved.y }, { x: moved.x - 45, y: moved.y }, 12),
       line({ x: moved.x + 30, y: moved.y }, { x: moved.x + 45, y: moved.y }, 12),
-    ], 30);
-    const pinched = await until(() => lastOpOf(fresh.page), (o) => o.op === 'transform' && Math.abs(o.matrix[0] - 1.5) < 0.05, 10_000);
+    ], 80);
+    const isPinched = (o) => o.op === 'transform' && Math.abs(o.matrix[0] - 1.5) < 0.05;
+    await pinch();
+    let pinched = await until(() => lastOpOf(fresh.page), isPinched, 10_000);
+    if (!isPinched(pinched ?? {})) {
+      // Known defect (notes of issue 50): on a loaded machine the page sometimes does not
+      // see a pinch; a hand pinches again, and so does the case, saying so.
+      console.log(`    # the first pinch was not seen (a loaded machine; status ${JSON.stringify(await api(fresh.page, 'status'))}, tool ${JSON.stringify(await api(fresh.page, 'tool'))}); pinched again`);
+      await pinch();
+      pinched = await until(() => lastOpOf(fresh.page), isPinched, 10_000);
+    }
     assert.ok(Math.abs(pinched.matrix[0] - 1.5) < 0.05 && Math.abs(pinched.matrix[1]) < 0.05, `the pinch scales it by 1.5 without turning it (${pinched.matrix.slice(0, 3)})`);
     await frames(fresh.page, 3);
     await screenshot(fresh.page, out('merge-moved.png'));

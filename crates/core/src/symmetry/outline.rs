@@ -3,6 +3,7 @@
 use glam::DVec2;
 
 use crate::camera::Camera;
+use crate::curve::polyline::{cumulative_lengths, point_at};
 use crate::model::MirrorPlane;
 
 /// How nearly the view must lie in the plane (the eye on it, the view direction along it),
@@ -49,7 +50,7 @@ pub fn symmetric_outline(
     let mut ring = vec![start];
     ring.extend((1..=n).map(|k| points[(crossing + k) % n]));
     ring.push(start);
-    let lengths = cumulative(&ring);
+    let lengths = cumulative_lengths(&ring);
     let total = *lengths.last()?;
     if total <= 0.0 {
         return None;
@@ -64,28 +65,6 @@ pub fn symmetric_outline(
             })
             .collect(),
     )
-}
-
-/// The arclength at each point of a polyline.
-fn cumulative(points: &[DVec2]) -> Vec<f64> {
-    let mut lengths = Vec::with_capacity(points.len());
-    let mut sum = 0.0;
-    for (i, p) in points.iter().enumerate() {
-        if i > 0 {
-            sum += p.distance(points[i - 1]);
-        }
-        lengths.push(sum);
-    }
-    lengths
-}
-
-/// The point at arclength `s` along a polyline.
-fn point_at(points: &[DVec2], lengths: &[f64], s: f64) -> DVec2 {
-    let i = lengths
-        .partition_point(|&l| l <= s)
-        .clamp(1, points.len() - 1);
-    let span = (lengths[i] - lengths[i - 1]).max(f64::MIN_POSITIVE);
-    points[i - 1].lerp(points[i], ((s - lengths[i - 1]) / span).clamp(0.0, 1.0))
 }
 
 #[cfg(test)]

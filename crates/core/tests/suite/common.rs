@@ -321,6 +321,21 @@ pub fn import_mesh(name: &str, mesh: &Mesh) -> Op {
     import_document(name, &document)
 }
 
+/// A limb's strokes on screen: a base loop of `radius` px around `centre`, and a silhouette
+/// from its top out `reach` px to the right and back to its bottom (a half ellipse).
+pub fn extrusion_points(centre: DVec2, radius: f64, reach: f64) -> (Vec<DVec2>, Vec<DVec2>) {
+    let base: Vec<DVec2> = (0..=48)
+        .map(|i| centre + radius * DVec2::from_angle(TAU * f64::from(i) / 48.0))
+        .collect();
+    let silhouette: Vec<DVec2> = (0..=60)
+        .map(|i| {
+            let a = std::f64::consts::PI * (f64::from(i) / 60.0 - 0.5);
+            centre + DVec2::new(reach * a.cos(), radius * a.sin())
+        })
+        .collect();
+    (base, silhouette)
+}
+
 /// Samples along the segment from `a` to `b`, about every 4 px.
 pub fn segment(a: DVec2, b: DVec2) -> Vec<DVec2> {
     let n = (a.distance(b) / 4.0).ceil().max(1.0) as usize;

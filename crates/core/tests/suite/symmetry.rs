@@ -204,17 +204,9 @@ fn right_part(model: &Model, k: usize) -> Vec<DVec2> {
         .collect()
 }
 
-/// A loop of `radius` px around `centre` and a limb's silhouette out to `reach` px.
+/// A limb's loop and silhouette ([`crate::common::extrusion_points`]) as strokes.
 fn extrusion(centre: DVec2, radius: f64, reach: f64) -> [StrokeInput; 2] {
-    let base: Vec<DVec2> = (0..=48)
-        .map(|i| centre + radius * DVec2::from_angle(std::f64::consts::TAU * f64::from(i) / 48.0))
-        .collect();
-    let silhouette: Vec<DVec2> = (0..=60)
-        .map(|i| {
-            let a = std::f64::consts::PI * (f64::from(i) / 60.0 - 0.5);
-            centre + DVec2::new(reach * a.cos(), radius * a.sin())
-        })
-        .collect();
+    let (base, silhouette) = crate::common::extrusion_points(centre, radius, reach);
     [input(&base), input(&silhouette)]
 }
 

@@ -478,18 +478,9 @@ fn a_second_loop_beside_the_first_on_the_same_side_is_refused_or_drills_inside()
 // Extrusions
 // ---------------------------------------------------------------------------------------
 
-/// A base loop of `radius` px around `centre`, and a silhouette from its top out `reach` px
-/// to the right and back to its bottom (a half ellipse).
+/// [`extrusion_points`]'s base loop as a stroke in `camera`'s view, and its silhouette.
 fn extrusion(camera: Camera, centre: DVec2, radius: f64, reach: f64) -> (StrokeInput, Vec<DVec2>) {
-    let base: Vec<DVec2> = (0..=48)
-        .map(|i| centre + radius * DVec2::from_angle(TAU * f64::from(i) / 48.0))
-        .collect();
-    let silhouette: Vec<DVec2> = (0..=60)
-        .map(|i| {
-            let a = std::f64::consts::PI * (f64::from(i) / 60.0 - 0.5);
-            centre + DVec2::new(reach * a.cos(), radius * a.sin())
-        })
-        .collect();
+    let (base, silhouette) = crate::common::extrusion_points(centre, radius, reach);
     (input(camera, &base), silhouette)
 }
 

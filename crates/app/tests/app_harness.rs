@@ -221,14 +221,7 @@ fn with_symmetry_on_a_pull_previews_on_both_sides() {
     h.key_press(egui::Key::P);
     h.run();
     let before = h.render().expect("render");
-    let grab = center + vec2(150.0, 0.0);
-    h.event(Event::PointerMoved(grab));
-    press(&h, grab, PointerButton::Primary, true);
-    h.step();
-    for i in 1..=10 {
-        h.event(Event::PointerMoved(grab + vec2(4.0 * i as f32, 0.0)));
-        h.step();
-    }
+    let held = drag_right_end(&mut h, center);
     let dragging = h.render().expect("render");
     save(&dragging, "symmetric-pull-preview");
     // Just beyond each end of the outline: background before, the shape while dragging.
@@ -246,7 +239,7 @@ fn with_symmetry_on_a_pull_previews_on_both_sides() {
     let (right, left) = (changed_beyond(1), changed_beyond(-1));
     assert!(right > 150, "the pulled end moved out: {right} pixels");
     assert!(left > 150, "the other end moved out with it: {left} pixels");
-    press(&h, grab + vec2(40.0, 0.0), PointerButton::Primary, false);
+    press(&h, held, PointerButton::Primary, false);
     h.run();
     let shared = h.state().shared();
     let (lo, hi) = (shared.borrow().editor.document().models[0].mesh)
@@ -324,20 +317,13 @@ fn a_shape_created_and_pulled_in_the_app_is_its_session_replayed() {
     // and nothing is committed until it is released.
     h.key_press(egui::Key::P);
     h.run();
-    let grab = center + vec2(150.0, 0.0);
-    h.event(Event::PointerMoved(grab));
-    press(&h, grab, PointerButton::Primary, true);
-    h.step();
-    for i in 1..=10 {
-        h.event(Event::PointerMoved(grab + vec2(4.0 * i as f32, 0.0)));
-        h.step();
-    }
+    let held = drag_right_end(&mut h, center);
     let dragging = h.render().expect("render");
     save(&dragging, "pull-preview");
     assert_eq!(ops(&h), 1, "nothing committed while dragging");
     let moved = changed_pixels(&before, &dragging);
     assert!(moved > 200, "the preview moved only {moved} pixels");
-    press(&h, grab + vec2(40.0, 0.0), PointerButton::Primary, false);
+    press(&h, held, PointerButton::Primary, false);
     h.run();
     let shared = h.state().shared();
     let last = shared.borrow().editor.ops().last().map(|op| op.name());
@@ -966,4 +952,18 @@ fn a_replay_runs_over_frames_and_its_cancel_changes_nothing() {
     }
     assert_eq!(heard.borrow()[2..], [Ok(()), Ok(())]);
     assert_eq!(shared.borrow().editor.ops(), source.ops());
+}
+
+/// Grabs the outline's right end (150 px right of `center`) and drags it 40 px further out,
+/// a frame per 4 px, the pointer still down there (returned).
+fn drag_right_end(h: &mut Harness<'_, SketchApp>, center: Pos2) -> Pos2 {
+    let grab = center + vec2(150.0, 0.0);
+    h.event(Event::PointerMoved(grab));
+    press(h, grab, PointerButton::Primary, true);
+    h.step();
+    for i in 1..=10 {
+        h.event(Event::PointerMoved(grab + vec2(4.0 * i as f32, 0.0)));
+        h.step();
+    }
+    grab + vec2(40.0, 0.0)
 }

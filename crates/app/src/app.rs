@@ -511,11 +511,12 @@ impl SketchApp {
         let played = self.scene.played();
         let mut scene = self.runner.scene(&shared, viewport);
         scene.played = &played;
+        scene.symmetry = (shared.symmetry.is_on && !shared.thumbnails.is_capturing())
+            .then(|| scene.shown.symmetry.unwrap_or_default());
         let device = Device::of(self.pointer.router.device(), self.coarse_pointer);
         let line = view_overlay::line(&scene, &self.tools, device);
-        if shared.symmetry.is_on && !shared.thumbnails.is_capturing() {
-            let plane = shared.editor.document().symmetry.unwrap_or_default();
-            view_overlay::symmetry_plane_ui(ui, &scene, &plane, self.scene.bounds());
+        if let Some(plane) = &scene.symmetry {
+            view_overlay::symmetry_plane_ui(ui, &scene, plane, self.scene.bounds());
         }
         let below = view_overlay::draw(ui, &scene, &self.tools, &line, self.runner.waiting());
         let intro = &mut self.panels.intro;

@@ -550,6 +550,7 @@ impl EditRunner {
             camera: shared.camera.camera(),
             viewport,
             played: &[],
+            symmetry: None,
         }
     }
 

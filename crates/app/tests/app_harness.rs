@@ -253,6 +253,57 @@ fn with_symmetry_on_a_pull_previews_on_both_sides() {
     assert_eq!(last, Some("pull"));
 }
 
+/// With Symmetry on, Arrange's Plane shows the plane's handles on a shape drawn across it:
+/// a drag of its dot moves the plane, one along its ring turns it, each one undoable
+/// `symmetry_plane` op that replays.
+#[test]
+fn the_symmetry_plane_moves_and_turns_with_the_arrange_handles() {
+    let mut h = harness();
+    h.run();
+    h.state().shared().borrow_mut().symmetry.choose(true);
+    let center = pos2(450.0, 340.0);
+    draw_ellipse(&mut h, center);
+    h.key_press(egui::Key::V);
+    h.run();
+    h.get_by_label("Plane").click();
+    h.run();
+    let line = |from: Pos2, to: Pos2| (0..=12).map(move |i| from + (to - from) * (i as f32 / 12.0));
+    // The dot sits where the plane meets the middle of the shape, the middle of the view.
+    trace(&mut h, line(center, center + vec2(60.0, 0.0)).collect());
+    h.run();
+    let shared = h.state().shared();
+    let plane = |h: &Harness<'_, SketchApp>| {
+        let shared = h.state().shared();
+        let plane = shared.borrow().editor.document().symmetry;
+        plane.expect("a plane")
+    };
+    let moved = plane(&h);
+    assert_eq!(moved.normal(), glam::DVec3::X, "moved, not turned");
+    assert!(moved.offset() > 0.1, "moved right: {moved:?}");
+    // Along the ring (70 points about the dot, now 60 points right), from its bottom to
+    // its bottom-left: the plane turns about the dot by the angle swept.
+    let dot = center + vec2(60.0, 0.0);
+    let on_ring = |a: f32| dot + 70.0 * vec2(a.cos(), a.sin());
+    let sweep = (0..=12).map(|i| on_ring(std::f32::consts::FRAC_PI_2 + 0.04 * i as f32));
+    trace(&mut h, sweep.collect());
+    h.run();
+    let turned = plane(&h);
+    // The ring's middle is the dot as projected, a few points off where this case aims.
+    let angle = turned.normal().angle_between(glam::DVec3::X);
+    assert!((angle - 0.48).abs() < 0.1, "turned by {angle}: {turned:?}");
+    let forward = shared.borrow().camera.camera().forward();
+    let across = turned.normal().dot(forward);
+    assert!(across.abs() < 1e-12, "about the view's axis: {across}");
+    let ops: Vec<&str> = (shared.borrow().editor.ops().iter())
+        .map(|op| op.name())
+        .collect();
+    assert_eq!(ops, ["create", "symmetry_plane", "symmetry_plane"]);
+    assert!(replays_bit_for_bit(&h));
+    h.key_press_modifiers(Modifiers::COMMAND, egui::Key::Z);
+    h.run();
+    assert_eq!(plane(&h), moved, "one undo turns it back");
+}
+
 #[test]
 fn closed_stroke_becomes_a_lit_shape_with_its_curve() {
     let mut h = harness();

@@ -47,6 +47,8 @@ pub struct TapDetector {
     down: BTreeMap<i64, Pos2>,
     /// When the sequence's first finger went down.
     started: f64,
+    /// When the first poll after that saw the finger down (the samples' clock).
+    first_polled: Option<f64>,
     /// The most fingers down at once.
     most: usize,
     /// Whether the sequence is still a tap.
@@ -112,9 +114,17 @@ impl TapDetector {
 impl TapDetector {
     /// At `now` (the samples' clock), the place of the one finger held still since
     /// [`LONG_PRESS_SECONDS`], once per touch sequence; the sequence is then no tap.
+    ///
+    /// The hold counts from the later of the finger's time stamp and the first poll that saw
+    /// it: a busy page may deliver a touch long after its stamp, and the lift that follows
+    /// it later still, so a quick tap delivered late must not look held.
     pub fn long_press(&mut self, now: f64) -> Option<Pos2> {
         let held = self.down.len() == 1 && self.most == 1 && self.is_tap;
-        if !held || now - self.started < LONG_PRESS_SECONDS {
+        if !held {
+            return None;
+        }
+        let seen = *self.first_polled.get_or_insert(now);
+        if now - self.started.max(seen) < LONG_PRESS_SECONDS {
             return None;
         }
         self.is_tap = false;
@@ -191,6 +201,20 @@ mod tests {
         ]
         .concat();
         assert_eq!(run(&dragged), [], "{dragged:?}");
+    }
+
+    #[test]
+    fn a_quick_tap_delivered_late_is_no_long_press() {
+        let mut taps = TapDetector::default();
+        // Stamped at 0, seen by the page's polls only from 0.45 on, its lift still to come.
+        taps.follow(&touch(1, Phase::Down, 100.0, 0.0));
+        assert_eq!(taps.long_press(0.45), None);
+        assert_eq!(taps.long_press(0.7), None, "0.25 s after it was seen");
+        assert_eq!(taps.follow(&touch(1, Phase::Up, 100.0, 0.06)), None);
+        // Held for real: a long press half a second after the page saw it.
+        taps.follow(&touch(2, Phase::Down, 100.0, 1.0));
+        assert_eq!(taps.long_press(1.02), None);
+        assert_eq!(taps.long_press(1.53), Some(egui::pos2(100.0, 100.0)));
     }
 
     #[test]

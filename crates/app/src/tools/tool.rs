@@ -108,6 +108,8 @@ pub struct Scene<'a> {
     /// The models the animation being played shows posed, and their vertices' positions in
     /// that pose (empty when nothing plays).
     pub played: &'a [(usize, &'a [glam::DVec3])],
+    /// The symmetry plane as the shown document has it, while the Symmetry switch is on.
+    pub symmetry: Option<sketchmesh_core::model::MirrorPlane>,
 }
 
 impl Scene<'_> {

@@ -8,8 +8,9 @@
 
 use glam::{DMat4, DQuat, DVec2, DVec3};
 
-use super::Model;
+use super::{Document, Model};
 use crate::camera::Camera;
+use crate::model::MirrorPlane;
 
 /// Half a touch target (px): how far from a handle a press still takes it.
 pub const HANDLE_REACH_PX: f64 = 22.0;
@@ -68,6 +69,28 @@ impl Gizmo {
             pivot,
             centre,
             radius: reach.clamp(RING_RADIUS_PX.0, RING_RADIUS_PX.1),
+        })
+    }
+
+    /// The handles of the symmetry plane `plane` in `doc`, seen through `camera`: a ring of
+    /// the smallest size about the plane's point nearest the models' middle (the view's
+    /// target when there are none). Its inside moves the plane, its ring turns it; a plane
+    /// has no scale. `None` when that point is not in front of the camera.
+    pub fn of_plane(
+        plane: &MirrorPlane,
+        doc: &Document,
+        camera: &Camera,
+        viewport: DVec2,
+    ) -> Option<Gizmo> {
+        let boxes = doc.models.iter().filter_map(|m| m.mesh.bounding_box());
+        let middle = boxes
+            .reduce(|(lo, hi), (l, h)| (lo.min(l), hi.max(h)))
+            .map_or(camera.target, |(lo, hi)| 0.5 * (lo + hi));
+        let pivot = plane.project(middle);
+        Some(Gizmo {
+            pivot,
+            centre: camera.screen_from_world(pivot, viewport)?.truncate(),
+            radius: RING_RADIUS_PX.0,
         })
     }
 
@@ -190,6 +213,34 @@ mod tests {
         assert_eq!(g.handle_at(on_ring), Some(GizmoHandle::Turn));
         assert_eq!(g.handle_at(g.scale_handle()), Some(GizmoHandle::Scale));
         assert_eq!(g.handle_at(g.centre + DVec2::X * (g.radius + 40.0)), None);
+    }
+
+    #[test]
+    fn the_plane_handles_sit_on_the_plane_and_move_and_turn_it() {
+        let (model, camera, _) = gizmo();
+        let doc = Document {
+            models: vec![std::sync::Arc::new(model)],
+            ..Document::default()
+        };
+        let plane = MirrorPlane::default();
+        let g = Gizmo::of_plane(&plane, &doc, &camera, VIEWPORT).unwrap();
+        assert!(plane.signed_distance(g.pivot).abs() < 1e-12);
+        let to = g.centre + DVec2::new(50.0, 0.0);
+        let moved = plane
+            .transformed(g.drag(GizmoHandle::Move, &camera, VIEWPORT, g.centre, to))
+            .unwrap();
+        assert!(
+            moved.offset() > 0.1 && moved.normal() == DVec3::X,
+            "{moved:?}"
+        );
+        let ring = |a: f64| g.centre + g.radius * DVec2::from_angle(a);
+        let turn = g.drag(GizmoHandle::Turn, &camera, VIEWPORT, ring(0.0), ring(0.3));
+        let turned = plane.transformed(turn).unwrap();
+        assert!((turned.normal().angle_between(DVec3::X) - 0.3).abs() < 1e-9);
+        assert!(
+            turned.signed_distance(g.pivot).abs() < 1e-12,
+            "turned about its dot"
+        );
     }
 
     #[test]

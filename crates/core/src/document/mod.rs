@@ -57,7 +57,7 @@ pub use op::{
     AddCurveInput, AreaInput, BrushInput, CreateInput, CurveHandleInput, CurveTypeInput,
     DeleteHandleInput, DuplicateInput, FileInput, HandleEditInput, HandleInput, ImportInput,
     LinkHandlesInput, MergeInput, MirroredOp, ModelInput, Op, OptimizeInput, OversketchFit,
-    OversketchInput, ProfileInput, RegionEditInput, SketchFeatureInput, StrokeInput,
+    OversketchInput, PlaneInput, ProfileInput, RegionEditInput, SketchFeatureInput, StrokeInput,
     StrokePairInput, SymmetrizeInput, TransformInput,
 };
 pub use outcome::{import_files, model_op};

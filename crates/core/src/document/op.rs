@@ -145,6 +145,8 @@ pub enum Op {
     PoseAt(KeyframeInput) = "pose_at",
     /// Make a model mirror-symmetric about a plane, keeping one side.
     Symmetrize(SymmetrizeInput) = "symmetrize",
+    /// Move or turn the document's symmetry plane (the Arrange tool's handles on it).
+    SymmetryPlane(PlaneInput) = "symmetry_plane",
     /// Undo the last change.
     Undo = "undo",
     /// Redo the last undone change.
@@ -173,12 +175,26 @@ pub struct SymmetrizeInput {
     pub keep: Side,
 }
 
+/// A `symmetry_plane` op: `{"op":"symmetry_plane","plane":[1,0,0,0.25]}`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PlaneInput {
+    /// The plane `[nx, ny, nz, d]`: `n · x = d`, `n` a unit vector.
+    pub plane: MirrorPlane,
+}
+
 impl Op {
     /// This op made with symmetry on about `plane` (an op already mirrored keeps its own);
-    /// ops that cannot be mirrored (undo, redo, import, symmetrize) stay as they are.
+    /// ops that cannot be mirrored (undo, redo, import, symmetrize, moving the plane) stay
+    /// as they are.
     pub fn mirrored(self, plane: MirrorPlane) -> Op {
         match self {
-            Op::Undo | Op::Redo | Op::Import(_) | Op::Symmetrize(_) | Op::Mirrored(_) => self,
+            Op::Undo
+            | Op::Redo
+            | Op::Import(_)
+            | Op::Symmetrize(_)
+            | Op::SymmetryPlane(_)
+            | Op::Mirrored(_) => self,
             op => Op::Mirrored(Box::new(MirroredOp { op, plane })),
         }
     }

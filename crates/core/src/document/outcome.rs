@@ -44,6 +44,11 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
         Op::Keyframe(input) => Outcome::Document(keyframe_op(base, input)?),
         Op::DeleteKeyframe(input) => Outcome::Document(delete_keyframe_op(base, input)?),
         Op::PoseAt(input) => Outcome::Document(pose_at_op(base, input)?),
+        Op::SymmetryPlane(input) => {
+            let mut next = base.clone();
+            next.symmetry = Some(input.plane);
+            Outcome::Document(next)
+        }
         Op::Undo => Outcome::Undo,
         Op::Redo => Outcome::Redo,
         // The ops that make one model from the models alone (`Op::makes_one_model`).

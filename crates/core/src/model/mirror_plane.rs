@@ -98,6 +98,18 @@ impl MirrorPlane {
         p - self.signed_distance(p) * self.normal
     }
 
+    /// The plane carried by the affine `matrix` (moved, turned: the Arrange tool's handles
+    /// on the plane); `None` when the matrix is singular or not finite.
+    pub fn transformed(&self, matrix: DMat4) -> Option<Self> {
+        let point = matrix.transform_point3(self.normal * self.offset);
+        // Normals go by the inverse transpose, so a sheared or scaled plane stays a plane.
+        let inverse = matrix.inverse();
+        let normal = inverse.transpose().transform_vector3(self.normal);
+        (inverse.is_finite() && point.is_finite())
+            .then(|| Self::through(point, normal))
+            .flatten()
+    }
+
     /// The reflection as a 4×4 matrix (determinant −1), for the `transform` op.
     pub fn matrix(&self) -> DMat4 {
         let n = self.normal;
@@ -151,6 +163,24 @@ mod tests {
         assert!((plane.matrix().transform_point3(p) - q).length() < 1e-14);
         assert!((plane.matrix().determinant() + 1.0).abs() < 1e-14);
         assert!(plane.signed_distance(plane.project(p)).abs() < 1e-14);
+    }
+
+    #[test]
+    fn a_moved_and_turned_plane_carries_its_points() {
+        let plane = MirrorPlane::new(DVec3::new(1.0, 0.3, 0.0), 0.4).unwrap();
+        let matrix = DMat4::from_translation(DVec3::new(0.5, -1.0, 2.0))
+            * DMat4::from_rotation_z(0.7)
+            * DMat4::from_scale(DVec3::splat(1.5));
+        let moved = plane.transformed(matrix).unwrap();
+        for p in [DVec3::new(0.2, 0.7, -3.0), DVec3::new(-1.0, 2.0, 0.5)] {
+            let on = plane.project(p);
+            assert!(moved.signed_distance(matrix.transform_point3(on)).abs() < 1e-12);
+        }
+        let turned = (moved.normal()
+            - DMat4::from_rotation_z(0.7).transform_vector3(plane.normal()))
+        .length();
+        assert!(turned < 1e-12, "the normal turns with the plane");
+        assert!(plane.transformed(DMat4::ZERO).is_none());
     }
 
     #[test]

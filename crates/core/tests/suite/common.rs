@@ -142,6 +142,11 @@ pub fn digest(document: &Document) -> Digest {
     }
     digest_handles(document, &mut full, &mut topo);
     digest_keyframes(document, &mut full, &mut topo);
+    // The plane only where a document has one, so the digests of the others stay as they were.
+    if let Some(plane) = document.symmetry {
+        full.tag("symmetry");
+        <[f64; 4]>::from(plane).iter().for_each(|&x| full.f64(x));
+    }
     Digest {
         full: full.finish(),
         topology: topo.finish(),

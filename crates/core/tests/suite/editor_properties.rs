@@ -64,7 +64,7 @@ use sketchmesh_core::document::{
     CommandError, ControlCurve, CurveDeformInput, CurveHandle, CurveHandleInput, DeformHandleInput,
     DeformInput, DeformMethod, DeleteHandleInput, Document, DuplicateInput, Editor,
     HandleEditInput, KeyframeInput, LinkHandlesInput, MergeInput, Model, ModelInput, Op,
-    OptimizeInput, OversketchFit, RegionEditInput, SketchFeatureInput, StrokeInput,
+    OptimizeInput, OversketchFit, PlaneInput, RegionEditInput, SketchFeatureInput, StrokeInput,
     StrokePairInput, SymmetrizeInput, TransformInput,
 };
 use sketchmesh_core::feature::FeatureKind;
@@ -1283,6 +1283,9 @@ enum Part {
     SecondModelFirst,
     /// The model after the one this picks moved to overlap it by most of its size.
     OverlapFirst(usize),
+    /// The symmetry plane moved to the one this symmetrize step uses, as a user moves it
+    /// with Arrange's handles before symmetrizing about it.
+    PlaneOf(Step),
 }
 
 /// The parts of a step: its op; or the undos and redos of [`Step::UndoRedo`]; or a handle
@@ -1322,6 +1325,7 @@ fn parts(step: &Step) -> Vec<Part> {
             Part::OverlapFirst(*model),
             Part::Step(step.clone()),
         ],
+        Step::Symmetrize { .. } => vec![Part::PlaneOf(step.clone()), Part::Step(step.clone())],
         step => vec![Part::Step(step.clone())],
     }
 }
@@ -1331,6 +1335,10 @@ fn parts(step: &Step) -> Vec<Part> {
 fn op_for_part(part: &Part, document: &Document) -> Option<Op> {
     match part {
         Part::Step(step) => Some(op_for(step, document)),
+        Part::PlaneOf(step) => match op_for(step, document) {
+            Op::Symmetrize(input) => Some(Op::SymmetryPlane(PlaneInput { plane: input.plane })),
+            _ => None,
+        },
         Part::HandlesFirst(count) => (document.handles.len() < *count).then(|| {
             let front = View {
                 yaw: 0.0,

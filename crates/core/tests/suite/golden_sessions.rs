@@ -48,8 +48,8 @@ use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
     CurveHandleInput, CurveKind, DeformHandleInput, DeformInput, DeformMethod, DeleteHandleInput,
     Document, DuplicateInput, Editor, HandleEditInput, KeyframeInput, LinkHandlesInput, MergeInput,
-    ModelInput, Op, OptimizeInput, OversketchFit, RegionEditInput, Session, SketchFeatureInput,
-    StrokePairInput, SymmetrizeInput, TransformInput,
+    ModelInput, Op, OptimizeInput, OversketchFit, PlaneInput, RegionEditInput, Session,
+    SketchFeatureInput, StrokePairInput, SymmetrizeInput, TransformInput,
 };
 use sketchmesh_core::feature::FeatureKind;
 use sketchmesh_core::mesh::{Mesh, VertexId, primitives};
@@ -1380,7 +1380,20 @@ fn symmetric_modelling() -> Editor {
         plane: tilted.unwrap(),
         keep: Side::Negative,
     };
+    // The plane moved and turned (Arrange's handles on it), then the lower body made
+    // symmetric about it and optimized with symmetry on: both sides move alike.
+    let tilted = tilted.unwrap();
+    apply(&mut editor, Op::SymmetryPlane(PlaneInput { plane: tilted }));
+    assert_eq!(editor.document().symmetry, Some(tilted));
     apply(&mut editor, Op::Symmetrize(symmetrize));
-    assert!(partners(&editor.document().models[n].mesh, &tilted.unwrap()).is_some());
+    let optimize = OptimizeInput {
+        model: n,
+        settings: OptimizeParams::default(),
+        region: None,
+        painted: Vec::new(),
+        painted_features: Vec::new(),
+    };
+    apply(&mut editor, Op::Optimize(optimize).mirrored(tilted));
+    assert!(partners(&editor.document().models[n].mesh, &tilted).is_some());
     editor
 }

@@ -4,8 +4,9 @@
 //! op. On a touch screen, two fingers on the selected model (or inside its ring) move, turn
 //! and pinch-scale it at once, as a photo under two fingers ([`Gizmo::two_fingers`]);
 //! elsewhere they navigate. Delete and Duplicate act on the selection, and Merge joins it
-//! with the model it overlaps. The handles' geometry, and the matrix a
-//! drag makes, are core's ([`Gizmo`]).
+//! with the model it overlaps. With Symmetry on, Plane selects the symmetry plane instead:
+//! its dot moves it, its ring turns it, and the release commits one `symmetry_plane` op.
+//! The handles' geometry, and the matrix a drag makes, are core's ([`Gizmo`]).
 
 mod icon;
 mod mirror;
@@ -13,9 +14,10 @@ mod mirror;
 use glam::{DMat4, DVec2};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    Document, DuplicateInput, Gizmo, GizmoHandle, MergeInput, ModelInput, Op, StrokeInput,
-    TransformInput, model_under, overlapping_model,
+    Document, DuplicateInput, Gizmo, GizmoHandle, MergeInput, ModelInput, Op, PlaneInput,
+    StrokeInput, TransformInput, model_under, overlapping_model,
 };
+use sketchmesh_core::model::MirrorPlane;
 
 use crate::input::router::{Hands, ToolEvent};
 use crate::tools::context::{ToolOutput, ViewCtx};
@@ -50,10 +52,17 @@ enum Grip {
     Fingers([DVec2; 2]),
 }
 
-/// A drag of the selected model in progress.
+/// What a drag moves: a model, or the symmetry plane as it was when taken.
+#[derive(Clone, Copy, Debug)]
+enum Target {
+    Model(usize),
+    Plane(MirrorPlane),
+}
+
+/// A drag of the selected model (or the plane) in progress.
 #[derive(Clone, Copy, Debug)]
 struct Drag {
-    model: usize,
+    target: Target,
     grip: Grip,
     gizmo: Gizmo,
     camera: Camera,
@@ -72,6 +81,17 @@ impl Drag {
                 (self.gizmo).two_fingers(&self.camera, self.viewport, from, at)
             }
             _ => self.matrix,
+        }
+    }
+
+    /// The op that puts the target where `matrix` takes it: a `transform` of the model, or
+    /// the plane moved (kept where it was if the matrix is singular, which no drag makes).
+    fn op(&self, matrix: DMat4) -> Op {
+        match self.target {
+            Target::Model(model) => transform(model, matrix),
+            Target::Plane(plane) => Op::SymmetryPlane(PlaneInput {
+                plane: plane.transformed(matrix).unwrap_or(plane),
+            }),
         }
     }
 
@@ -99,8 +119,12 @@ pub struct ArrangeTool {
     /// Where a press that took no handle went down: it selects if it is a tap.
     press: Option<DVec2>,
     drag: Option<Drag>,
+    /// Whether the symmetry plane is selected (Plane): its handles show instead of a model's.
+    plane: bool,
     /// The view as last drawn (the overlay's): Duplicate places the copy toward its right.
     seen: std::cell::Cell<Camera>,
+    /// Whether the view last drawn showed the symmetry plane (Symmetry on): Plane needs it.
+    plane_shown: std::cell::Cell<bool>,
 }
 
 impl ArrangeTool {
@@ -117,7 +141,7 @@ impl ArrangeTool {
                     return ToolOutput::None;
                 };
                 self.drag = Some(drag);
-                ToolOutput::Begin(transform(drag.model, DMat4::IDENTITY))
+                ToolOutput::Begin(drag.op(DMat4::IDENTITY))
             }
             ToolEvent::Move(s) => self.drag_to(To::Pointer(point(s, view).pos)),
             ToolEvent::End(s) => {
@@ -130,12 +154,13 @@ impl ArrangeTool {
                         return ToolOutput::Cancel;
                     }
                     let matrix = drag.matrix_to(To::Pointer(at));
-                    return ToolOutput::FinishWith(transform(drag.model, matrix));
+                    return ToolOutput::FinishWith(drag.op(matrix));
                 }
                 if let Some(down) = self.press.take()
                     && at.distance(down) < TAP_RADIUS_PX
                 {
                     self.selected = model_at(doc, &view.camera, viewport, at);
+                    self.plane = false;
                 }
                 ToolOutput::None
             }
@@ -162,12 +187,12 @@ impl ArrangeTool {
                     return ToolOutput::None;
                 };
                 self.drag = Some(drag);
-                ToolOutput::Begin(transform(drag.model, DMat4::IDENTITY))
+                ToolOutput::Begin(drag.op(DMat4::IDENTITY))
             }
             Hands::Move(at) => self.drag_to(To::Fingers(at.map(local))),
             Hands::Up => match self.drag.take() {
                 Some(drag) if drag.matrix != DMat4::IDENTITY => {
-                    ToolOutput::FinishWith(transform(drag.model, drag.matrix))
+                    ToolOutput::FinishWith(drag.op(drag.matrix))
                 }
                 Some(_) => ToolOutput::Cancel,
                 None => ToolOutput::None,
@@ -181,7 +206,7 @@ impl ArrangeTool {
         match self.drag.as_mut() {
             Some(drag) => {
                 drag.matrix = drag.matrix_to(to);
-                ToolOutput::Revise(transform(drag.model, drag.matrix))
+                ToolOutput::Revise(drag.op(drag.matrix))
             }
             None => ToolOutput::None,
         }
@@ -201,7 +226,7 @@ impl ArrangeTool {
         let over = |p: DVec2| model_at(doc, camera, viewport, p) == Some(model);
         let inside_ring = (0.5 * (at[0] + at[1])).distance(gizmo.centre) <= gizmo.radius;
         (at.iter().any(|&p| over(p)) || inside_ring).then_some(Drag {
-            model,
+            target: Target::Model(model),
             grip: Grip::Fingers(at),
             gizmo,
             camera: *camera,
@@ -211,21 +236,46 @@ impl ArrangeTool {
     }
 
     /// The handle of the selected model under `at`, or the model itself (moving it), as a
-    /// drag about to start.
+    /// drag about to start; with the plane selected, its dot or ring.
     fn grab(&self, doc: &Document, camera: &Camera, viewport: DVec2, at: DVec2) -> Option<Drag> {
+        if let Some((plane, gizmo)) = self.plane_gizmo(doc, camera, viewport) {
+            let handle = gizmo.handle_at(at).filter(|&h| h != GizmoHandle::Scale)?;
+            return Some(Drag {
+                target: Target::Plane(plane),
+                grip: Grip::Handle(handle, at),
+                gizmo,
+                camera: *camera,
+                viewport,
+                matrix: DMat4::IDENTITY,
+            });
+        }
         let model = self.selected.filter(|&i| i < doc.models.len())?;
         let gizmo = Gizmo::of(&doc.models[model], camera, viewport)?;
         let handle = gizmo.handle_at(at).or_else(|| {
             (model_at(doc, camera, viewport, at) == Some(model)).then_some(GizmoHandle::Move)
         })?;
         Some(Drag {
-            model,
+            target: Target::Model(model),
             grip: Grip::Handle(handle, at),
             gizmo,
             camera: *camera,
             viewport,
             matrix: DMat4::IDENTITY,
         })
+    }
+
+    /// The symmetry plane and its handles, when Plane is selected and the plane shown.
+    fn plane_gizmo(
+        &self,
+        doc: &Document,
+        camera: &Camera,
+        viewport: DVec2,
+    ) -> Option<(MirrorPlane, Gizmo)> {
+        if !(self.plane && self.plane_shown.get()) {
+            return None;
+        }
+        let plane = doc.symmetry.unwrap_or_default();
+        Some((plane, Gizmo::of_plane(&plane, doc, camera, viewport)?))
     }
 
     /// Drops a drag in progress.
@@ -256,6 +306,9 @@ impl ArrangeTool {
             };
             return Some((gizmo, drag.handle()));
         }
+        if let Some((_, gizmo)) = self.plane_gizmo(doc, camera, viewport) {
+            return Some((gizmo, None));
+        }
         let model = self.selected.filter(|&i| i < doc.models.len())?;
         Some((Gizmo::of(&doc.models[model], camera, viewport)?, None))
     }
@@ -266,6 +319,15 @@ impl ArrangeTool {
             Device::Mouse => "",
             Device::Pen | Device::Finger => "; or twist and pinch with two fingers",
         };
+        if self.plane && self.plane_shown.get() {
+            return match self.drag {
+                None => device.say(
+                    "Drag the plane's dot to move it, its ring to turn it about the view's axis \
+                     (turn the view to turn it another way)",
+                ),
+                Some(_) => device.say("Let go to keep the plane there"),
+            };
+        }
         match self.selected.filter(|&i| i < doc.models.len()) {
             None => device.say("{Tap} a model to move, turn or scale it"),
             Some(_) if self.drag.is_none() => device.say(format!(
@@ -321,6 +383,18 @@ impl ArrangeTool {
             }));
         }
         ui.separator();
+        let plane = ui.add_enabled(
+            self.plane_shown.get(),
+            egui::Button::selectable(self.plane, "Plane").min_size(size),
+        );
+        if plane
+            .on_hover_text("Move or turn the symmetry plane with its handles")
+            .on_disabled_hover_text("Turn Symmetry on to see the plane")
+            .clicked()
+        {
+            self.plane ^= true;
+            self.selected = self.selected.filter(|_| !self.plane);
+        }
         match mirror::symmetry_ui(ui, doc, selected, &self.seen.get(), size) {
             Some(picked) => {
                 self.selected = Some(picked.select);
@@ -382,8 +456,13 @@ impl Tool for ArrangeTool {
     /// scales it, a dot at its middle; the one being dragged is drawn brighter.
     fn overlay(&self, ui: &egui::Ui, scene: &Scene<'_>) {
         self.seen.set(scene.camera);
+        self.plane_shown.set(scene.symmetry.is_some());
         let Some((gizmo, dragged)) = self.gizmo(scene.doc, &scene.camera, scene.size()) else {
             return;
+        };
+        let scales = match self.drag {
+            Some(drag) => matches!(drag.target, Target::Model(_)),
+            None => !self.plane,
         };
         let colour = |handle| match dragged == Some(handle) {
             true => egui::Color32::from_rgb(255, 214, 120),
@@ -396,9 +475,11 @@ impl Tool for ArrangeTool {
             egui::Stroke::new(5.0, colour(GizmoHandle::Turn)),
         );
         painter.circle_filled(scene.at(gizmo.centre), 7.0, colour(GizmoHandle::Move));
-        let square =
-            egui::Rect::from_center_size(scene.at(gizmo.scale_handle()), egui::vec2(22.0, 22.0));
-        painter.rect_filled(square, 3.0, colour(GizmoHandle::Scale));
+        if scales {
+            let size = egui::vec2(22.0, 22.0);
+            let square = egui::Rect::from_center_size(scene.at(gizmo.scale_handle()), size);
+            painter.rect_filled(square, 3.0, colour(GizmoHandle::Scale));
+        }
     }
 
     fn hint(&self, doc: &Document, device: Device) -> Hint {

@@ -201,7 +201,10 @@ impl SceneView {
                 return;
             }
             let borrowed = shared.borrow();
-            let document = edit.map_or(borrowed.editor.document(), Edit::document);
+            // A shape created with symmetry on beside the plane shows its twin as it inflates.
+            let with_twin = edit.and_then(Edit::mirrored_creation);
+            let document = (with_twin.as_ref())
+                .unwrap_or_else(|| edit.map_or(borrowed.editor.document(), Edit::document));
             let generation = self.geometry.generation + 1;
             let started = clock::now_ms();
             // The arrays of unchanged models are copied, unless textures were decoded since

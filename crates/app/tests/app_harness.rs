@@ -183,8 +183,39 @@ fn with_symmetry_on_an_outline_beside_the_plane_makes_two_mirror_twins() {
     h.key_press(egui::Key::X);
     h.run();
     assert!(h.state().shared().borrow().symmetry.is_on);
-    draw_loop(&mut h, pos2(640.0, 340.0), vec2(90.0, 70.0));
+    let before = h.render().expect("render");
+    trace(&mut h, ellipse(pos2(640.0, 340.0), vec2(90.0, 70.0)));
+    h.step();
+    h.step();
+    // While the shape inflates, before it is committed, its twin inflates too.
     let shared = h.state().shared();
+    assert!(
+        shared.borrow().editor.document().models.is_empty(),
+        "still inflating"
+    );
+    let inflating = h.render().expect("render");
+    save(&inflating, "symmetric-create-preview");
+    let changed_around = |x: u32| {
+        let mut n = 0;
+        for y in 320..360 {
+            for x in x - 20..x + 20 {
+                let (a, b) = (before.get_pixel(x, y).0, inflating.get_pixel(x, y).0);
+                n += usize::from((0..3).any(|c| a[c].abs_diff(b[c]) > 40));
+            }
+        }
+        n
+    };
+    assert!(
+        changed_around(640) > 800,
+        "the shape: {}",
+        changed_around(640)
+    );
+    assert!(
+        changed_around(260) > 800,
+        "its twin: {}",
+        changed_around(260)
+    );
+    h.run();
     let boxes: Vec<_> = (shared.borrow().editor.document().models.iter())
         .map(|m| m.mesh.bounding_box().expect("a model has vertices"))
         .collect();

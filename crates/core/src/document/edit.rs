@@ -87,7 +87,7 @@ use super::outcome::{made_by, outcome, sharing_looks, with_imported, with_model}
 use super::oversketch::{OutlinePiece, OutlinePreview};
 use super::region_edit::RegionPreview;
 use super::skeleton::HandleDrag;
-use super::symmetry::{even_outline, mirrored_outcome};
+use super::symmetry::{even_outline, mirrored_outcome, with_twin_shown};
 use super::volumetric::CurvePreview;
 use super::{CommandError, Document, Editor, ImportInput, Model, Op, RegionEditInput};
 use crate::io::Imported;
@@ -788,6 +788,17 @@ impl Edit {
             Work::Done(Outcome::Document(next) | Outcome::Imported { next, .. }) => next,
             _ => &self.base,
         }
+    }
+
+    /// What to draw while a creation made with symmetry on inflates: its shape and, when it
+    /// lies wholly on one side of the plane, the mirror twin the result will add, so the
+    /// preview shows both sides. `None` for anything else: draw [`Edit::document`].
+    pub fn mirrored_creation(&self) -> Option<Document> {
+        let plane = self.mirror.filter(|_| !self.is_mirrored)?;
+        let Work::Create(job) = &self.work else {
+            return None;
+        };
+        with_twin_shown(job.document(), self.base.models.len(), &plane)
     }
 
     /// A pull's, an optimization's, a feature's or a transform's preview: the index of a model

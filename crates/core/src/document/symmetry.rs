@@ -54,6 +54,21 @@ pub(super) fn even_outline(op: &Op, plane: &MirrorPlane) -> Option<Op> {
     }))
 }
 
+/// `doc` with the mirror image of its model `index` added after its models, when that model
+/// lies wholly on one side of `plane` (as a creation's result adds its twin); `None` when
+/// there is no such model or it crosses the plane.
+pub(super) fn with_twin_shown(
+    doc: &Document,
+    index: usize,
+    plane: &MirrorPlane,
+) -> Option<Document> {
+    let model = doc.models.get(index)?;
+    side_of_model(&model.mesh, plane)?;
+    let mut shown = doc.clone();
+    shown.models.push(Arc::new(mirrored_model(model, plane)));
+    Some(shown)
+}
+
 /// `outcome` of `op` on `base`, made symmetric about `plane` (see the module docs).
 ///
 /// Errors: [`CommandError::NotSymmetric`] when the op changed a model that is neither

@@ -329,6 +329,9 @@ impl ArrangeTool {
             };
         }
         match self.selected.filter(|&i| i < doc.models.len()) {
+            None if self.plane_shown.get() => device.say(
+                "{Tap} a model to move, turn or scale it, or Plane to move the symmetry plane",
+            ),
             None => device.say("{Tap} a model to move, turn or scale it"),
             Some(_) if self.drag.is_none() => device.say(format!(
                 "Drag the model to move it, the ring to turn it, the square to scale it{two_fingers}. \

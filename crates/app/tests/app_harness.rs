@@ -87,6 +87,22 @@ fn changed_pixels(a: &image::RgbaImage, b: &image::RgbaImage) -> usize {
         .count()
 }
 
+/// Pixels in columns `xs` and rows `ys` whose colour differs strongly between two renders.
+fn changed_in(
+    a: &image::RgbaImage,
+    b: &image::RgbaImage,
+    xs: std::ops::Range<u32>,
+    ys: std::ops::Range<u32>,
+) -> usize {
+    let differs = |x, y| {
+        let (p, q) = (a.get_pixel(x, y).0, b.get_pixel(x, y).0);
+        (0..3).any(|c| p[c].abs_diff(q[c]) > 40)
+    };
+    ys.flat_map(|y| xs.clone().map(move |x| (x, y)))
+        .filter(|&(x, y)| differs(x, y))
+        .count()
+}
+
 #[test]
 fn stroke_leaves_ink_and_undo_takes_it_away() {
     let mut h = harness();
@@ -195,16 +211,7 @@ fn with_symmetry_on_an_outline_beside_the_plane_makes_two_mirror_twins() {
     );
     let inflating = h.render().expect("render");
     save(&inflating, "symmetric-create-preview");
-    let changed_around = |x: u32| {
-        let mut n = 0;
-        for y in 320..360 {
-            for x in x - 20..x + 20 {
-                let (a, b) = (before.get_pixel(x, y).0, inflating.get_pixel(x, y).0);
-                n += usize::from((0..3).any(|c| a[c].abs_diff(b[c]) > 40));
-            }
-        }
-        n
-    };
+    let changed_around = |x: u32| changed_in(&before, &inflating, x - 20..x + 20, 320..360);
     assert!(
         changed_around(640) > 800,
         "the shape: {}",
@@ -256,18 +263,14 @@ fn with_symmetry_on_a_pull_previews_on_both_sides() {
     let dragging = h.render().expect("render");
     save(&dragging, "symmetric-pull-preview");
     // Just beyond each end of the outline: background before, the shape while dragging.
-    let changed_beyond = |dx: i32| {
-        let mut n = 0;
-        for y in 325..355 {
-            for k in 8..28 {
-                let x = (center.x as i32 + dx * (150 + k)) as u32;
-                let (a, b) = (before.get_pixel(x, y).0, dragging.get_pixel(x, y).0);
-                n += usize::from((0..3).any(|c| a[c].abs_diff(b[c]) > 40));
-            }
-        }
-        n
-    };
-    let (right, left) = (changed_beyond(1), changed_beyond(-1));
+    let (cx, ends) = (center.x as u32, 150 + 8..150 + 28);
+    let right = changed_in(&before, &dragging, cx + ends.start..cx + ends.end, 325..355);
+    let left = changed_in(
+        &before,
+        &dragging,
+        cx - ends.end + 1..cx - ends.start + 1,
+        325..355,
+    );
     assert!(right > 150, "the pulled end moved out: {right} pixels");
     assert!(left > 150, "the other end moved out with it: {left} pixels");
     press(&h, held, PointerButton::Primary, false);

@@ -251,13 +251,7 @@ fn with_symmetry_on_an_outline_beside_the_plane_makes_two_mirror_twins() {
 /// commits one pull that keeps the shape symmetric.
 #[test]
 fn with_symmetry_on_a_pull_previews_on_both_sides() {
-    let mut h = harness();
-    h.run();
-    h.state().shared().borrow_mut().symmetry.choose(true);
-    let center = pos2(450.0, 340.0);
-    draw_ellipse(&mut h, center);
-    h.key_press(egui::Key::P);
-    h.run();
+    let (mut h, center) = symmetric_shape_with(egui::Key::P);
     let before = h.render().expect("render");
     let held = drag_right_end(&mut h, center);
     let dragging = h.render().expect("render");
@@ -292,13 +286,7 @@ fn with_symmetry_on_a_pull_previews_on_both_sides() {
 /// `symmetry_plane` op that replays.
 #[test]
 fn the_symmetry_plane_moves_and_turns_with_the_arrange_handles() {
-    let mut h = harness();
-    h.run();
-    h.state().shared().borrow_mut().symmetry.choose(true);
-    let center = pos2(450.0, 340.0);
-    draw_ellipse(&mut h, center);
-    h.key_press(egui::Key::V);
-    h.run();
+    let (mut h, center) = symmetric_shape_with(egui::Key::V);
     h.get_by_label("Plane").click();
     h.run();
     let line = |from: Pos2, to: Pos2| (0..=12).map(move |i| from + (to - from) * (i as f32 / 12.0));
@@ -1037,6 +1025,19 @@ fn a_replay_runs_over_frames_and_its_cancel_changes_nothing() {
     }
     assert_eq!(heard.borrow()[2..], [Ok(()), Ok(())]);
     assert_eq!(shared.borrow().editor.ops(), source.ops());
+}
+
+/// The app with Symmetry on, an ellipse drawn across the plane (the view's middle, returned)
+/// and the tool of `key` picked.
+fn symmetric_shape_with(key: egui::Key) -> (Harness<'static, SketchApp>, Pos2) {
+    let mut h = harness();
+    h.run();
+    h.state().shared().borrow_mut().symmetry.choose(true);
+    let center = pos2(450.0, 340.0);
+    draw_ellipse(&mut h, center);
+    h.key_press(key);
+    h.run();
+    (h, center)
 }
 
 /// Grabs the outline's right end (150 px right of `center`) and drags it 40 px further out,

@@ -2061,7 +2061,9 @@ test('merge by touch: a second shape moved into the first with the handles and p
     await frames(fresh.page, 3);
     await screenshot(fresh.page, out('merge-selected.png'));
     // Drag the small shape 200 px left by its body, into the big one.
-    await touchGesture(fresh.cdp, [line(other, { x: other.x - 200, y: other.y }, 20)], 30);
+    // In steps wider than a tap's travel (10 px): a page that delivers each move late must
+    // not take a drag's first step for a finger held still (a long press, the context menu).
+    await touchGesture(fresh.cdp, [line(other, { x: other.x - 200, y: other.y }, 10)], 30);
     await until(() => lastOpOf(fresh.page), (o) => o.op === 'transform', 10_000);
     // Two fingers on it spread from 60 to 90 px apart over a second, as a hand does: it grows
     // by half, where it is. (Spread in a third of a second, the whole pinch fitted in one or
@@ -2161,7 +2163,8 @@ test('move (V) by touch: a tap selects a shape and shows its handles; dragging i
     assert.ok(orange(before) < 20, 'no handles before a model is selected');
     assert.ok(orange(selected) > 150, `a tap selects the shape: its handles show (${orange(selected)} orange samples)`);
     // Drag the shape 200 px right by its body.
-    await touchGesture(fresh.cdp, [line(c, { x: c.x + 200, y: c.y }, 20)], 30);
+    // In steps wider than a tap's travel, as in the merge-by-touch case.
+    await touchGesture(fresh.cdp, [line(c, { x: c.x + 200, y: c.y }, 10)], 30);
     const moved = await until(() => lastOpOf(fresh.page), (o) => o.op === 'transform', 10_000);
     assert.equal(moved.op, 'transform', 'the drag commits a transform');
     assert.ok(Math.abs(moved.matrix[12]) > 0.1, `it moves the shape (${moved.matrix.slice(12, 15)})`);

@@ -73,20 +73,24 @@ impl Gizmo {
     }
 
     /// The handles of the symmetry plane `plane` in `doc`, seen through `camera`: a ring of
-    /// the smallest size about the plane's point nearest the models' middle (the view's
-    /// target when there are none). Its inside moves the plane, its ring turns it; a plane
-    /// has no scale. `None` when that point is not in front of the camera.
+    /// the smallest size about the plane's point nearest `near` (where the last drag left
+    /// the ring), else nearest the models' middle (the view's target when there are none).
+    /// Its inside moves the plane, its ring turns it; a plane has no scale. `None` when that
+    /// point is not in front of the camera.
     pub fn of_plane(
         plane: &MirrorPlane,
+        near: Option<DVec3>,
         doc: &Document,
         camera: &Camera,
         viewport: DVec2,
     ) -> Option<Gizmo> {
-        let boxes = doc.models.iter().filter_map(|m| m.mesh.bounding_box());
-        let middle = boxes
-            .reduce(|(lo, hi), (l, h)| (lo.min(l), hi.max(h)))
-            .map_or(camera.target, |(lo, hi)| 0.5 * (lo + hi));
-        let pivot = plane.project(middle);
+        let middle = || {
+            let boxes = doc.models.iter().filter_map(|m| m.mesh.bounding_box());
+            boxes
+                .reduce(|(lo, hi), (l, h)| (lo.min(l), hi.max(h)))
+                .map_or(camera.target, |(lo, hi)| 0.5 * (lo + hi))
+        };
+        let pivot = plane.project(near.unwrap_or_else(middle));
         Some(Gizmo {
             pivot,
             centre: camera.screen_from_world(pivot, viewport)?.truncate(),
@@ -223,7 +227,7 @@ mod tests {
             ..Document::default()
         };
         let plane = MirrorPlane::default();
-        let g = Gizmo::of_plane(&plane, &doc, &camera, VIEWPORT).unwrap();
+        let g = Gizmo::of_plane(&plane, None, &doc, &camera, VIEWPORT).unwrap();
         assert!(plane.signed_distance(g.pivot).abs() < 1e-12);
         let to = g.centre + DVec2::new(50.0, 0.0);
         let moved = plane
@@ -241,6 +245,9 @@ mod tests {
             turned.signed_distance(g.pivot).abs() < 1e-12,
             "turned about its dot"
         );
+        // Where a drag left the ring, it stays: the turned plane's ring is about the same dot.
+        let kept = Gizmo::of_plane(&turned, Some(g.pivot), &doc, &camera, VIEWPORT).unwrap();
+        assert!((kept.pivot - g.pivot).length() < 1e-12);
     }
 
     #[test]

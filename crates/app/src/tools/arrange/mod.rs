@@ -125,6 +125,8 @@ pub struct ArrangeTool {
     seen: std::cell::Cell<Camera>,
     /// Whether the view last drawn showed the symmetry plane (Symmetry on): Plane needs it.
     plane_shown: std::cell::Cell<bool>,
+    /// Where the last drag of the plane left its ring, so that a turn does not move it.
+    plane_pivot: Option<glam::DVec3>,
 }
 
 impl ArrangeTool {
@@ -154,6 +156,9 @@ impl ArrangeTool {
                         return ToolOutput::Cancel;
                     }
                     let matrix = drag.matrix_to(To::Pointer(at));
+                    if let Target::Plane(_) = drag.target {
+                        self.plane_pivot = Some(matrix.transform_point3(drag.gizmo.pivot));
+                    }
                     return ToolOutput::FinishWith(drag.op(matrix));
                 }
                 if let Some(down) = self.press.take()
@@ -275,7 +280,8 @@ impl ArrangeTool {
             return None;
         }
         let plane = doc.symmetry.unwrap_or_default();
-        Some((plane, Gizmo::of_plane(&plane, doc, camera, viewport)?))
+        let gizmo = Gizmo::of_plane(&plane, self.plane_pivot, doc, camera, viewport)?;
+        Some((plane, gizmo))
     }
 
     /// Drops a drag in progress.
@@ -396,6 +402,7 @@ impl ArrangeTool {
             .clicked()
         {
             self.plane ^= true;
+            self.plane_pivot = None;
             self.selected = self.selected.filter(|_| !self.plane);
         }
         match mirror::symmetry_ui(ui, doc, selected, &self.seen.get(), size) {

@@ -269,6 +269,11 @@ impl ArrangeTool {
         })
     }
 
+    /// Whether Plane is selected and the plane shown (Symmetry on): its handles then act.
+    fn is_plane_picked(&self) -> bool {
+        self.plane && self.plane_shown.get()
+    }
+
     /// The symmetry plane and its handles, when Plane is selected and the plane shown.
     fn plane_gizmo(
         &self,
@@ -276,7 +281,7 @@ impl ArrangeTool {
         camera: &Camera,
         viewport: DVec2,
     ) -> Option<(MirrorPlane, Gizmo)> {
-        if !(self.plane && self.plane_shown.get()) {
+        if !self.is_plane_picked() {
             return None;
         }
         let plane = doc.symmetry.unwrap_or_default();
@@ -325,7 +330,7 @@ impl ArrangeTool {
             Device::Mouse => "",
             Device::Pen | Device::Finger => "; or twist and pinch with two fingers",
         };
-        if self.plane && self.plane_shown.get() {
+        if self.is_plane_picked() {
             return match self.drag {
                 None => device.say(
                     "Drag the plane's dot to move it, its ring to turn it about the view's axis \

@@ -193,6 +193,16 @@ impl Camera {
         }
     }
 
+    /// The world length one CSS pixel spans at `depth` in front of the eye (along
+    /// [`Camera::forward`]): how big a brush of so many pixels is where it touches.
+    pub fn world_per_pixel(&self, depth: f64, viewport: DVec2) -> f64 {
+        let height = match self.ortho_height {
+            Some(height) => height,
+            None => 2.0 * depth * (0.5 * self.fov_y_deg.to_radians()).tan(),
+        };
+        height / viewport.y
+    }
+
     /// Projects a world point to the screen: `(x px, y px, depth)` with x and y in CSS px (y
     /// down, origin top-left) and depth the distance in front of the eye along
     /// [`Camera::forward`], in world units. `None` when the point is not in front of the eye.

@@ -32,6 +32,7 @@ pub mod mesh;
 pub mod model;
 pub mod optimize;
 pub mod oversketch;
+pub mod paint;
 pub mod region_edit;
 pub mod silhouette;
 pub mod skeleton;

@@ -83,6 +83,7 @@ use super::curve_edit::PullPreview;
 use super::feature::FeaturePreview;
 use super::next::Outcome;
 use super::optimize::OptimizePreview;
+use super::paint::{PaintPreview, with_colors_carried};
 use super::outcome::{made_by, outcome, sharing_looks, with_imported, with_model};
 use super::oversketch::{OutlinePiece, OutlinePreview};
 use super::region_edit::RegionPreview;
@@ -189,6 +190,8 @@ enum Work {
     Region(Box<RegionPreview>),
     /// A model moving with a dragged handle, following the op's matrix.
     Transform(Box<TransformPreview>),
+    /// A paint stroke's colours so far.
+    Paint(Box<PaintPreview>),
     /// A model or cloud following a curve handle's pose.
     Handle(Box<HandleDrag>),
     /// A creation, refining step by step.
@@ -235,6 +238,7 @@ impl Work {
                 Work::Transform(Box::new(TransformPreview::start(base, input)?))
             }
             Op::HandleEdit(input) => Work::Handle(Box::new(HandleDrag::start(base, input)?)),
+            Op::Paint(_) => Work::Paint(Box::default()),
             _ => Work::Gesture,
         })
     }
@@ -321,17 +325,20 @@ impl Edit {
         op: &Op,
     ) -> Result<(usize, Model), CommandError> {
         if let Some(mut edit) = kept.filter(|edit| edit.is_continued_by(&models, op)) {
-            match (&mut edit.work, op) {
+            let made = match (&mut edit.work, op) {
                 (Work::Curve(preview), Op::CurveDeform(input)) => {
-                    return preview.result(&edit.base, input);
+                    Some(preview.result(&edit.base, input))
                 }
                 (Work::Optimize(preview), Op::Optimize(input)) => {
-                    return preview.result(&edit.base, input);
+                    Some(preview.result(&edit.base, input))
                 }
                 (Work::Feature(preview), Op::SketchFeature(input)) => {
-                    return preview.result(&edit.base, input);
+                    Some(preview.result(&edit.base, input))
                 }
-                _ => {}
+                _ => None,
+            };
+            if let Some(made) = made {
+                return Ok(with_colors_carried(&edit.base, op, made?));
             }
         }
         let doc = Document {
@@ -471,6 +478,9 @@ impl Edit {
                 (Work::Curve(preview), Op::CurveDeform(input)) => preview.step(base, input)?,
                 (Work::Region(preview), Op::RegionEdit(input)) => preview.step(base, input)?,
                 (Work::Transform(preview), Op::Transform(input)) => preview.step(base, input)?,
+                (Work::Paint(preview), Op::Paint(input)) => {
+                    preview.step(base, input, self.mirror.as_ref())?
+                }
                 (Work::Handle(drag), Op::HandleEdit(input)) => drag.step(base, input)?,
                 _ => None,
             };
@@ -552,6 +562,7 @@ impl Edit {
             | Work::Pull(_)
             | Work::Outline(_)
             | Work::Transform(_)
+            | Work::Paint(_)
             | Work::Failed(_) => {
                 if let Work::Pull(preview) = std::mem::replace(&mut self.work, Work::Whole)
                     && self.held.is_none()
@@ -785,6 +796,7 @@ impl Edit {
             Work::Create(job) => job.document(),
             Work::Region(preview) => preview.document().unwrap_or(&self.base),
             Work::Handle(drag) => drag.document().unwrap_or(&self.base),
+            Work::Paint(preview) => preview.document().unwrap_or(&self.base),
             Work::Done(Outcome::Document(next) | Outcome::Imported { next, .. }) => next,
             _ => &self.base,
         }

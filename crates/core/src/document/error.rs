@@ -34,6 +34,9 @@ pub enum CommandError {
     /// A stroke point's ray misses the drawing plane.
     #[error("That stroke could not be placed in the scene; look at the scene and draw again.")]
     StrokeOffPlane,
+    /// A paint stroke that reached no model.
+    #[error("The brush touched no model; paint over a model.")]
+    NothingPainted,
     /// Undo with an empty undo history.
     #[error("Nothing to undo.")]
     NothingToUndo,

@@ -28,6 +28,7 @@ mod op;
 mod optimize;
 mod outcome;
 mod oversketch;
+mod paint;
 mod region_edit;
 mod replay;
 mod session;
@@ -57,7 +58,7 @@ pub use op::{
     AddCurveInput, AreaInput, BrushInput, CreateInput, CurveHandleInput, CurveTypeInput,
     DeleteHandleInput, DuplicateInput, FileInput, HandleEditInput, HandleInput, ImportInput,
     LinkHandlesInput, MergeInput, MirroredOp, ModelInput, Op, OptimizeInput, OversketchFit,
-    OversketchInput, PlaneInput, ProfileInput, RegionEditInput, SketchFeatureInput, StrokeInput,
+    OversketchInput, PaintInput, FillInput, MaterialInput, PlaneInput, ProfileInput, RegionEditInput, SketchFeatureInput, StrokeInput,
     StrokePairInput, SymmetrizeInput, TransformInput,
 };
 pub use outcome::{import_files, model_op};

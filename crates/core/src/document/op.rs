@@ -12,7 +12,8 @@ use crate::camera::Camera;
 use crate::curve::StrokePoint;
 use crate::deform::HandleFit;
 use crate::feature::FeatureKind;
-use crate::model::{MirrorPlane, Side};
+use crate::model::{Finish, MirrorPlane, Side};
+use crate::paint::Brush;
 use crate::optimize::OptimizeParams;
 use crate::oversketch::{ManualHandle, OversketchRoi, SOFT_FIT_WEIGHT};
 use crate::skeleton::{HandleKind, PointEdit};
@@ -147,6 +148,12 @@ pub enum Op {
     Symmetrize(SymmetrizeInput) = "symmetrize",
     /// Move or turn the document's symmetry plane (the Arrange tool's handles on it).
     SymmetryPlane(PlaneInput) = "symmetry_plane",
+    /// Paint vertex colours with a round brush along a stroke over a model.
+    Paint(PaintInput) = "paint",
+    /// Paint a whole model one colour.
+    Fill(FillInput) = "fill",
+    /// Set a model's material: base colour, roughness, metalness.
+    Material(MaterialInput) = "material",
     /// Undo the last change.
     Undo = "undo",
     /// Redo the last undone change.
@@ -181,6 +188,84 @@ pub struct SymmetrizeInput {
 pub struct PlaneInput {
     /// The plane `[nx, ny, nz, d]`: `n · x = d`, `n` a unit vector.
     pub plane: MirrorPlane,
+}
+
+/// A `paint` op: a brush stroke over a model (the one under the stroke's first sample
+/// that lies over one), `{"op":"paint","viewport":[w,h],"camera":{…},"stroke":[[x,y,p],…],
+/// "color":[r,g,b],"radius":24,"hardness":0.5,"opacity":1}`. Numbers out of range are
+/// clamped.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PaintInput {
+    /// Viewport size `[width, height]` in CSS px.
+    pub viewport: [f64; 2],
+    /// The camera the stroke was drawn with.
+    pub camera: Camera,
+    /// Raw samples `[x, y, pressure]`, as in [`StrokeInput`].
+    pub stroke: Vec<[f64; 3]>,
+    /// Linear RGB, each 0..1.
+    pub color: [f64; 3],
+    /// The brush's radius in CSS px at full pressure (pressure 0.5 and above).
+    pub radius: f64,
+    /// The part of the radius painted at full strength, 0..1.
+    pub hardness: f64,
+    /// How much of the colour the stroke lays down, 0..1.
+    pub opacity: f64,
+}
+
+impl PaintInput {
+    /// The stroke part.
+    pub fn stroke_input(&self) -> StrokeInput {
+        StrokeInput::in_view(self.viewport, self.camera, &self.stroke)
+    }
+
+    /// The brush, its numbers clamped to their ranges.
+    pub fn brush(&self) -> Brush {
+        Brush {
+            color: self.color.map(|c| c as f32),
+            radius: self.radius,
+            hardness: self.hardness,
+            opacity: self.opacity,
+        }
+        .clamped()
+    }
+}
+
+/// A `fill` op: `{"op":"fill","model":0,"color":[r,g,b]}`, linear RGB, clamped to 0..1.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FillInput {
+    /// Index of the model in the document.
+    pub model: usize,
+    /// Linear RGB, each 0..1.
+    pub color: [f64; 3],
+}
+
+/// A `material` op: `{"op":"material","model":0,"base_color":[r,g,b,a],"roughness":0.6,
+/// "metalness":0}`, linear, each clamped to 0..1.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MaterialInput {
+    /// Index of the model in the document.
+    pub model: usize,
+    /// Linear RGBA base colour; painted colours multiply it.
+    pub base_color: [f64; 4],
+    /// 0 (smooth) to 1 (rough).
+    pub roughness: f64,
+    /// 0 (dielectric) to 1 (metal).
+    pub metalness: f64,
+}
+
+impl MaterialInput {
+    /// The finish it sets, clamped to its ranges.
+    pub fn finish(&self) -> Finish {
+        Finish {
+            base_color: self.base_color.map(|c| c as f32),
+            roughness: self.roughness as f32,
+            metalness: self.metalness as f32,
+        }
+        .clamped()
+    }
 }
 
 impl Op {
@@ -286,6 +371,7 @@ impl Op {
             Op::SketchFeature(input) => Some(&input.stroke),
             Op::CurveHandle(input) => Some(&input.stroke),
             Op::CurveDeform(input) => Some(&input.stroke),
+            Op::Paint(input) => Some(&input.stroke),
             _ => None,
         }
     }
@@ -308,6 +394,7 @@ impl Op {
             Op::SketchFeature(input) => Some(&mut input.stroke),
             Op::CurveHandle(input) => Some(&mut input.stroke),
             Op::CurveDeform(input) => Some(&mut input.stroke),
+            Op::Paint(input) => Some(&mut input.stroke),
             _ => None,
         }
     }
@@ -367,6 +454,7 @@ impl Op {
                     Op::SetCurveType(input) => Some((input.viewport, input.camera)),
                     Op::SketchFeature(input) => Some((input.viewport, input.camera)),
                     Op::CurveHandle(input) => Some((input.viewport, input.camera)),
+                    Op::Paint(input) => Some((input.viewport, input.camera)),
                     _ => None,
                 };
                 view.and_then(|(viewport, camera)| drawn(viewport, camera, stroke))

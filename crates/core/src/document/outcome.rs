@@ -9,6 +9,7 @@ use super::feature::feature_op;
 use super::keyframes::{delete_keyframe_op, keyframe_op, pose_at_op};
 use super::next::Outcome;
 use super::optimize::optimize_op;
+use super::paint::{carry_colors, fill_op, material_op, paint_op, with_colors_carried};
 use super::oversketch::oversketch_op;
 use super::region_edit::region_edit_op;
 use super::skeleton::{
@@ -44,6 +45,9 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
         Op::Keyframe(input) => Outcome::Document(keyframe_op(base, input)?),
         Op::DeleteKeyframe(input) => Outcome::Document(delete_keyframe_op(base, input)?),
         Op::PoseAt(input) => Outcome::Document(pose_at_op(base, input)?),
+        Op::Paint(input) => Outcome::Document(paint_op(base, input, None)?),
+        Op::Fill(input) => Outcome::Document(fill_op(base, input, None)?),
+        Op::Material(input) => Outcome::Document(material_op(base, input, None)?),
         Op::SymmetryPlane(input) => {
             let mut next = base.clone();
             next.symmetry = Some(input.plane);
@@ -63,7 +67,7 @@ pub(super) fn outcome(base: &Document, op: &Op) -> Result<Outcome, CommandError>
 ///
 /// Errors: the op's refusal; [`CommandError::NotOneModel`] for any other op.
 pub fn model_op(doc: &Document, op: &Op) -> Result<(usize, Model), CommandError> {
-    match op {
+    let made = match op {
         Op::Create(input) => create_op(doc, input),
         Op::Oversketch(input) => oversketch_op(doc, input),
         Op::Pull(input) => curve_edit::pull_op(doc, input),
@@ -82,7 +86,8 @@ pub fn model_op(doc: &Document, op: &Op) -> Result<(usize, Model), CommandError>
         Op::Merge(input) => curve_edit::merge_op(doc, input),
         Op::Symmetrize(input) => symmetrize_op(doc, input),
         other => Err(CommandError::NotOneModel(other.name())),
-    }
+    }?;
+    Ok(with_colors_carried(doc, op, made))
 }
 
 /// `model`, the next version of `before` computed elsewhere, sharing `before`'s looks, its
@@ -115,7 +120,10 @@ pub(super) fn made_by(base: &Document, op: &Op, made: (usize, Model)) -> Outcome
 }
 
 /// `base` with model `index` replaced, or added when `index` is past its models.
-pub(super) fn with_model(base: &Document, (index, model): (usize, Model)) -> Outcome {
+pub(super) fn with_model(base: &Document, (index, mut model): (usize, Model)) -> Outcome {
+    if let Some(before) = base.models.get(index) {
+        carry_colors(&[before], &mut model);
+    }
     let mut next = base.clone();
     match next.models.get_mut(index) {
         Some(slot) => *slot = Arc::new(model),

@@ -16,6 +16,7 @@
 use std::sync::Arc;
 
 use super::next::{Outcome, target};
+use super::paint::{carry_colors, fill_op, material_op, paint_op};
 use super::skeleton::remove_model;
 use glam::DVec2;
 
@@ -82,8 +83,20 @@ pub(super) fn mirrored_outcome(
     let Outcome::Document(mut next) = outcome else {
         return Ok(outcome);
     };
+    // The colour ops change no position for the general rule to go by: computed again with
+    // the plane, they colour the mirror image too.
+    let recoloured = match op {
+        Op::Paint(input) => Some(paint_op(base, input, Some(&plane))?),
+        Op::Fill(input) => Some(fill_op(base, input, Some(&plane))?),
+        Op::Material(input) => Some(material_op(base, input, Some(&plane))?),
+        _ => None,
+    };
+    if let Some(recoloured) = recoloured {
+        next = recoloured;
+    }
     next.symmetry = Some(plane);
     match op {
+        Op::Paint(_) | Op::Fill(_) | Op::Material(_) => {}
         Op::Delete(input) => {
             if let Some(twin) = twin_of(base, input.model, &plane) {
                 remove_model(&mut next, if twin > input.model { twin - 1 } else { twin });
@@ -118,7 +131,7 @@ pub(super) fn mirrored_outcome(
 }
 
 /// The index of model `index`'s mirror twin in `doc`, if it has one.
-fn twin_of(doc: &Document, index: usize, plane: &MirrorPlane) -> Option<usize> {
+pub(super) fn twin_of(doc: &Document, index: usize, plane: &MirrorPlane) -> Option<usize> {
     let model = doc.models.get(index)?;
     (0..doc.models.len())
         .find(|&j| j != index && are_twins(&model.mesh, &doc.models[j].mesh, plane))
@@ -155,7 +168,9 @@ fn follow(
             Keep::Side(side) => side,
             Keep::Average => Side::Positive,
         };
-        symmetrized(&changed, plane, side)?
+        let mut made = symmetrized(&changed, plane, side)?;
+        carry_colors(&[&changed], &mut made);
+        made
     };
     next.models[i] = Arc::new(made);
     Ok(None)

@@ -3,6 +3,17 @@
 
 use glam::DVec3;
 
+/// Barycentric coordinates of `p` projected onto the triangle's plane.
+pub fn barycentric([a, b, c]: [DVec3; 3], p: DVec3) -> DVec3 {
+    let (ab, ac, ap) = (b - a, c - a, p - a);
+    let (d00, d01, d11) = (ab.dot(ab), ab.dot(ac), ac.dot(ac));
+    let (d20, d21) = (ap.dot(ab), ap.dot(ac));
+    let denominator = d00 * d11 - d01 * d01;
+    let v = (d11 * d20 - d01 * d21) / denominator;
+    let w = (d00 * d21 - d01 * d20) / denominator;
+    DVec3::new(1.0 - v - w, v, w)
+}
+
 /// The point of triangle `[a, b, c]` nearest to `p`, by the Voronoi regions of its corners,
 /// edges and face (Ericson, *Real-Time Collision Detection*, §5.1.5). Degenerate triangles
 /// give a point on one of their edges.

@@ -20,7 +20,7 @@ pub use area::{
     enclosed_volume, face_area, mass_matrix, total_area, vertex_areas, vertex_areas_barycentric,
 };
 pub use bvh::Bvh;
-pub use closest::closest_point_on_triangle;
+pub use closest::{barycentric, closest_point_on_triangle};
 pub(crate) use cotan_weights::OneRingWeights;
 pub use laplacian::{
     cotan_laplacian, cotan_laplacian_coordinates, mean_curvature, mean_curvature_normals,

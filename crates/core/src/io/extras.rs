@@ -11,6 +11,10 @@ pub const EXTRAS_VERSION: u32 = 1;
 /// leaves them without an imported look).
 pub(crate) const CLAY_MATERIAL_NAME: &str = "Sketchmesh clay";
 
+/// The name of a material set here (the `material` op), by which import takes it back as
+/// the model's finish.
+pub(crate) const FINISH_MATERIAL_NAME: &str = "Sketchmesh finish";
+
 /// The value of `extras` on a Sketchmesh node: `{"sketchmesh": {...}}`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub(crate) struct NodeExtras {

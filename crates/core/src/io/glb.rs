@@ -9,9 +9,9 @@ use glam::{DVec3, Vec3};
 use gltf::json;
 use json::validation::{Checked::Valid, USize64};
 
-use super::extras::CLAY_MATERIAL_NAME;
+use super::extras::{CLAY_MATERIAL_NAME, FINISH_MATERIAL_NAME};
 use crate::geometry::vertex_normals_of;
-use crate::model::Image;
+use crate::model::{Finish, Image};
 
 /// A .glb being written: [`Writer::finish`] packs it.
 #[derive(Default)]
@@ -20,8 +20,8 @@ pub(super) struct Writer {
     pub(super) root: json::Root,
     /// The BIN chunk.
     bin: Vec<u8>,
-    /// The clay material, once a primitive used it.
-    material: Option<json::Index<json::Material>>,
+    /// The materials of models made here, by their finish's bits, each written once.
+    materials: HashMap<[u32; 6], json::Index<json::Material>>,
     /// Images already written, by the address of their shared bytes.
     pub(super) images: HashMap<*const Image, json::Index<json::Image>>,
 }
@@ -65,24 +65,38 @@ impl Writer {
         })
     }
 
-    /// The material of models made here (written once, when first used).
-    pub(super) fn material(&mut self) -> json::Index<json::Material> {
-        if let Some(material) = self.material {
+    /// The material of a model made here with `finish` (`None`: clay), written once per
+    /// finish, when first used.
+    pub(super) fn material(&mut self, finish: Option<Finish>) -> json::Index<json::Material> {
+        let shown = finish.unwrap_or_default();
+        let [r, g, b, a] = shown.base_color;
+        let key = [r, g, b, a, shown.roughness, shown.metalness].map(f32::to_bits);
+        if let Some(&material) = self.materials.get(&key) {
             return material;
         }
+        let name = if finish.is_some() {
+            FINISH_MATERIAL_NAME
+        } else {
+            CLAY_MATERIAL_NAME
+        };
         let material = self.root.push(json::Material {
-            name: Some(String::from(CLAY_MATERIAL_NAME)),
+            name: Some(String::from(name)),
             // Open surfaces are common while modeling; show their back faces too.
             double_sided: true,
+            alpha_mode: Valid(if a < 1.0 {
+                json::material::AlphaMode::Blend
+            } else {
+                json::material::AlphaMode::Opaque
+            }),
             pbr_metallic_roughness: json::material::PbrMetallicRoughness {
-                base_color_factor: json::material::PbrBaseColorFactor([0.8, 0.8, 0.8, 1.0]),
-                metallic_factor: json::material::StrengthFactor(0.0),
-                roughness_factor: json::material::StrengthFactor(0.6),
+                base_color_factor: json::material::PbrBaseColorFactor(shown.base_color),
+                metallic_factor: json::material::StrengthFactor(shown.metalness),
+                roughness_factor: json::material::StrengthFactor(shown.roughness),
                 ..Default::default()
             },
             ..Default::default()
         });
-        self.material = Some(material);
+        self.materials.insert(key, material);
         material
     }
 

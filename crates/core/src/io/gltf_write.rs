@@ -62,8 +62,10 @@ fn model_node(
         .name
         .clone()
         .unwrap_or_else(|| format!("model {index}"));
-    // An imported soup is written as it came while the mesh repaired from it still fits.
-    let (written, appearance) = match model.as_imported() {
+    // A model coloured here is written as made here, in its colours and finish; an imported
+    // soup is written as it came while the mesh repaired from it still fits.
+    let is_coloured_here = model.vertex_colors().is_some() || model.finish.is_some();
+    let (written, appearance) = match model.as_imported().filter(|_| !is_coloured_here) {
         Some(input) => (
             Written {
                 positions: Cow::Owned(input.positions_of(mesh)),
@@ -76,14 +78,15 @@ fn model_node(
                 positions: Cow::Borrowed(mesh.positions()),
                 triangles: mesh.triangles(),
             },
-            model.appearance.as_deref().filter(|a| a.fits(mesh)),
+            (model.appearance.as_deref())
+                .filter(|a| a.fits(mesh) && !is_coloured_here),
         ),
     };
     let baked = bake(model).filter(|_| !written.triangles.is_empty());
     let mesh_index = (!written.triangles.is_empty()).then(|| {
         let primitives = match appearance {
             Some(appearance) => imported_primitives(writer, &written, appearance, baked.as_ref()),
-            None => vec![clay_primitive(writer, &written, baked.as_ref())],
+            None => vec![clay_primitive(writer, &written, model, baked.as_ref())],
         };
         let n_targets = baked.as_ref().map_or(0, |b| b.poses.len());
         writer.mesh(name.clone(), primitives, n_targets)
@@ -120,11 +123,13 @@ fn model_node(
     node
 }
 
-/// A model made here: welded vertices, smooth normals, the clay material; its animation's
-/// poses as morph targets of positions and normals.
+/// A model made here: welded vertices, smooth normals, its painted colours as `COLOR_0`,
+/// its finish (or clay) as the material; its animation's poses as morph targets of positions
+/// and normals.
 fn clay_primitive(
     writer: &mut Writer,
     surface: &Written,
+    model: &Model,
     baked: Option<&Baked>,
 ) -> json::mesh::Primitive {
     let (positions, normals) = f32_positions_and_normals(&surface.positions, surface.triangles);
@@ -144,7 +149,14 @@ fn clay_primitive(
         Valid(json::mesh::Semantic::Normals),
         writer.vec3s(&normals, None),
     );
-    let material = writer.material();
+    if let Some(colors) = model.vertex_colors() {
+        let colors: Vec<Vec3> = colors.iter().map(|&c| Vec3::from(c)).collect();
+        attributes.insert(
+            Valid(json::mesh::Semantic::Colors(0)),
+            writer.vec3s(&colors, None),
+        );
+    }
+    let material = writer.material(model.finish);
     let mut primitive = writer.triangle_primitive(
         attributes,
         surface.triangles.as_flattened(),

@@ -16,7 +16,7 @@ use glam::DVec3;
 
 use super::curves::{AttachedCurves, attach_curves};
 use super::error::GltfError;
-use super::extras::CLAY_MATERIAL_NAME;
+use super::extras::{CLAY_MATERIAL_NAME, FINISH_MATERIAL_NAME};
 use super::extras::MirrorExtras;
 use super::input::{ImportFile, ImportLimits};
 use super::parse::parse;
@@ -25,7 +25,7 @@ use super::scene::{NodeGeometry, Surface, read_nodes};
 use super::weld::weld;
 use crate::mesh::{FaceId, Mesh, RepairReport, TriSoup, make_manifold};
 use crate::model::{
-    AlphaMode, Appearance, AsImported, Image, Keyframe, Material, MirrorPlane, Model, PointCloud,
+    AlphaMode, Appearance, AsImported, Finish, Image, Keyframe, Material, MirrorPlane, Model, PointCloud,
     SketchCurve, Texture, positions_hash, positions_hash_of,
 };
 use crate::symmetry::{Keep, are_twins_within, mirror_positions, mirrored_model, partners_within};
@@ -160,6 +160,14 @@ fn add_node(
             materials,
         ))
     });
+    // A model coloured here comes back as its paint and finish, to paint on again.
+    let coloured_here = (mesh_appearance.as_deref())
+        .filter(|_| is_sketchmesh && input.is_none())
+        .and_then(|look| colours_made_here(look, &mesh));
+    let (mesh_appearance, colors, finish) = match coloured_here {
+        Some((colors, finish)) => (None, colors, finish),
+        None => (mesh_appearance, None, None),
+    };
     let as_imported = input.map(|(soup, vertex_source)| {
         let appearance = (!is_clay).then(|| {
             let identity: Vec<(FaceId, bool)> = (0..soup.triangles.len())
@@ -189,6 +197,8 @@ fn add_node(
         appearance: mesh_appearance,
         as_imported,
         keyframes,
+        colors: colors.map(Arc::new),
+        finish,
     });
     Ok(())
 }
@@ -369,6 +379,39 @@ fn curves(n: usize) -> String {
         1 => String::from("1 control curve"),
         n => format!("{n} control curves"),
     }
+}
+
+/// The paint (one colour per vertex) and finish of a model written by a Sketchmesh file,
+/// when its look is one this app makes: one material of its own or clay, no texture, no
+/// UVs. `None` for any other look, which stays an imported look.
+fn colours_made_here(
+    look: &Appearance,
+    mesh: &Mesh,
+) -> Option<(Option<Vec<[f32; 3]>>, Option<Finish>)> {
+    let material = match distinct(&look.face_materials)[..] {
+        [material] => material.and_then(|m| look.materials.get(m as usize)),
+        _ => return None,
+    };
+    let name = material.and_then(|m| m.name.as_deref());
+    let is_own = name.is_none_or(|n| [CLAY_MATERIAL_NAME, FINISH_MATERIAL_NAME].contains(&n));
+    if look.uvs.is_some() || !is_own || material.is_some_and(|m| m.base_color_texture.is_some()) {
+        return None;
+    }
+    let finish = material
+        .filter(|m| m.name.as_deref() == Some(FINISH_MATERIAL_NAME))
+        .map(|m| Finish {
+            base_color: m.base_color,
+            roughness: m.roughness,
+            metalness: m.metallic,
+        });
+    let colors = look.colors.as_ref().map(|corners| {
+        let mut colors = vec![[1.0; 3]; mesh.n_vertices()];
+        for (&v, &[r, g, b, _]) in mesh.triangle_indices().iter().zip(corners) {
+            colors[v as usize] = [r, g, b];
+        }
+        colors
+    });
+    Some((colors, finish))
 }
 
 /// Per-corner attributes and materials of the mesh faces, from the surface they came from.

@@ -21,7 +21,7 @@ use glam::DVec3;
 use super::import::Imported;
 use crate::mesh::{Mesh, MeshParts, TriSoup, VertexId};
 use crate::model::{
-    AlphaMode, Appearance, AsImported, Image, Keyframe, Material, MirrorPlane, Model, PointCloud,
+    AlphaMode, Appearance, AsImported, Finish, Image, Keyframe, Material, MirrorPlane, Model, PointCloud,
     SketchCurve, Texture,
 };
 use crate::model::{ControlCurve, CurveKind};
@@ -328,6 +328,12 @@ impl Writer {
             out.pod(keyframe.time);
             out.pods(&keyframe.positions);
         });
+        self.option(model.colors.as_deref(), |out, colors| out.pods(colors));
+        let finish = model.finish.map(|f| {
+            let [r, g, b, a] = f.base_color;
+            [r, g, b, a, f.roughness, f.metalness]
+        });
+        self.option(finish.as_ref().map(|f| &f[..]), Writer::pods);
     }
 
     fn mesh(&mut self, mesh: &Mesh) {
@@ -542,6 +548,16 @@ impl<'a, S: TransferSource + ?Sized> Reader<'a, S> {
                 positions: Arc::new(input.pods()?),
             })
         })?;
+        let colors = self.option(|input| input.pods::<[f32; 3]>())?;
+        let finish = self.option(|input| {
+            let [r, g, b, a, roughness, metalness] = <[f32; 6]>::try_from(input.pods::<f32>()?)
+                .map_err(|_| TransferError("a finish of the wrong length"))?;
+            Ok(Finish {
+                base_color: [r, g, b, a],
+                roughness,
+                metalness,
+            })
+        })?;
         Ok(Model {
             mesh,
             curves,
@@ -549,6 +565,8 @@ impl<'a, S: TransferSource + ?Sized> Reader<'a, S> {
             appearance: appearance.map(Arc::new),
             as_imported: as_imported.map(Arc::new),
             keyframes,
+            colors: colors.map(Arc::new),
+            finish,
         })
     }
 

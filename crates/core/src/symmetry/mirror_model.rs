@@ -13,6 +13,9 @@ pub fn mirrored_model(model: &Model, plane: &MirrorPlane) -> Model {
         name: model.name.clone(),
         appearance: model.appearance.clone(),
         as_imported: None,
+        // Vertex for vertex, so each vertex keeps its colour.
+        colors: model.colors.clone(),
+        finish: model.finish,
         keyframes: (model.keyframes.iter())
             .map(|key| Keyframe {
                 positions: std::sync::Arc::new(

@@ -17,6 +17,7 @@ mod golden_sessions;
 mod optimize;
 mod oversketch;
 mod oversketch_pipeline;
+mod paint;
 mod previews;
 mod region_edit;
 mod silhouette;

@@ -67,6 +67,10 @@ pub fn merge_op(doc: &Document, input: &MergeInput) -> Result<(usize, Model), Co
         as_imported: first.as_imported.clone(),
         // The merged surface has new vertices: no old pose fits it.
         keyframes: Vec::new(),
+        // Its colours are carried over from both models once it is made
+        // (`paint::carried_colors`, for every op that makes a model).
+        colors: None,
+        finish: first.finish,
     };
     Ok((kept, model))
 }

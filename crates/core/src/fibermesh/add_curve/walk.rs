@@ -14,6 +14,7 @@ use rustc_hash::FxHashSet;
 use super::embedding::Embedding;
 use super::project::SurfacePoint;
 use crate::mesh::{FaceId, Mesh, VertexId};
+use crate::geometry::barycentric;
 
 /// Crossings this close to an edge's end (fraction of the edge) snap onto that vertex,
 /// which avoids slivers and moves the curve off its plane by at most this fraction.
@@ -187,17 +188,6 @@ fn exit_from_point(mesh: &Mesh, face: FaceId, from: DVec3, cut: &Cut) -> Option<
         .filter(|(progress, _)| *progress > 0.0)
         .max_by(|x, y| x.0.total_cmp(&y.0))
         .map(|(_, exit)| exit)
-}
-
-/// Barycentric coordinates of `p` projected onto the triangle's plane.
-fn barycentric([a, b, c]: [DVec3; 3], p: DVec3) -> DVec3 {
-    let (ab, ac, ap) = (b - a, c - a, p - a);
-    let (d00, d01, d11) = (ab.dot(ab), ab.dot(ac), ac.dot(ac));
-    let (d20, d21) = (ap.dot(ab), ap.dot(ac));
-    let denominator = d00 * d11 - d01 * d01;
-    let v = (d11 * d20 - d01 * d21) / denominator;
-    let w = (d00 * d21 - d01 * d20) / denominator;
-    DVec3::new(1.0 - v - w, v, w)
 }
 
 /// The curve as it grows: its vertices and its edges, so that a later split of one of

@@ -14,6 +14,7 @@ mod inside;
 mod nearest;
 mod node;
 mod overlap;
+mod sphere;
 
 use glam::DVec3;
 

@@ -8,7 +8,7 @@ use crate::geometry::closest::closest_point_on_triangle;
 use crate::mesh::{FaceId, Mesh};
 
 /// Squared distance from `p` to the box (0 inside).
-fn box_distance_squared(bounds: &Aabb, p: DVec3) -> f64 {
+pub(super) fn box_distance_squared(bounds: &Aabb, p: DVec3) -> f64 {
     let outside = (bounds.lo - p).max(p - bounds.hi).max(DVec3::ZERO);
     outside.length_squared()
 }

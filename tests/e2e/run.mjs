@@ -692,7 +692,7 @@ test('phone (390x844, DPR 2, touch): the toolbar is two rows at the bottom, the 
 });
 
 /** Every tool's key, in toolbar order (the registry's). */
-const TOOL_KEYS = ['s', 'e', 't', 'u', 'p', 'o', 'd', 'l', 'j', 'q', 'm', 'v'];
+const TOOL_KEYS = ['s', 'e', 't', 'u', 'p', 'o', 'd', 'l', 'j', 'q', 'm', 'c', 'v'];
 
 // WebGL2 only: the layout and the toolbar's pixels, whatever draws the view.
 test('the toolbar keeps its height for every tool on desktop, tablet and phone; each tool draws its own icon; a finger held on a tool shows its tooltip', { gpu: false, limitMs: 120_000 }, async () => {

@@ -23,6 +23,7 @@ use std::sync::Arc;
 use crate::textures::{TextureImage, Textures};
 use sketchmesh_core::geometry::{vertex_normals, vertex_normals_of};
 use sketchmesh_core::mesh::{HalfedgeId, Mesh, VertexId};
+use sketchmesh_core::paint::shown_colors;
 
 /// A mesh vertex as the shaders read it.
 #[repr(C)]
@@ -51,9 +52,13 @@ pub struct MeshDraw {
     pub texture: Option<Arc<TextureImage>>,
 }
 
-/// What an imported model's triangle corners (`3 * face + k`) bring to its drawing.
+/// What a model's vertices (painted) or an imported model's triangle corners
+/// (`3 * face + k`) bring to its drawing.
 #[derive(Clone, Copy, Debug, Default)]
 struct Corners<'a> {
+    /// Linear RGBA per vertex: a model coloured here (paint, material), which is drawn in
+    /// them and not in any imported look.
+    vertex_colors: Option<&'a [[f32; 4]]>,
     /// Linear RGBA colours.
     colors: Option<&'a [[f32; 4]]>,
     /// The file's unit normals, while they still apply.
@@ -276,8 +281,15 @@ impl SceneGeometry {
             let model = shared.as_ref();
             let (vertices, curves) = (scene.vertices.len(), scene.curves.len());
             let (triangles, edges) = (scene.triangles.len(), scene.edges.len());
-            let look =
-                (model.appearance.as_deref()).filter(|a| a.is_drawn() && a.fits(&model.mesh));
+            let coloured_here = model.vertex_colors().is_some() || model.finish.is_some();
+            let vertex_colors: Option<Vec<[f32; 4]>> = coloured_here.then(|| {
+                let alpha = model.finish().base_color[3];
+                (shown_colors(model).into_iter())
+                    .map(|[r, g, b]| [r, g, b, alpha])
+                    .collect()
+            });
+            let look = (model.appearance.as_deref())
+                .filter(|a| !coloured_here && a.is_drawn() && a.fits(&model.mesh));
             let colors = look.and_then(|a| a.corner_colors());
             let normals =
                 (look.filter(|a| a.normals_fit(&model.mesh))).and_then(|a| a.normals.as_deref());
@@ -291,6 +303,7 @@ impl SceneGeometry {
                 with_edges,
                 &welded,
                 Corners {
+                    vertex_colors: vertex_colors.as_deref(),
                     colors: colors.as_deref(),
                     normals,
                     textures: look.zip(faces.as_ref()).and_then(|(a, (slots, list))| {
@@ -468,6 +481,7 @@ impl SceneGeometry {
             let color = corners.colors.and_then(|c| c.first().copied());
             let color = color.unwrap_or(CLAY);
             for v in 0..positions.len() as u32 {
+                let color = corners.vertex_colors.map_or(color, |c| c[v as usize]);
                 self.vertices.push(vertex(v, welded(v), color, [0.0; 2]));
                 self.welded.push(v);
             }

@@ -21,6 +21,8 @@ pub mod handles;
 pub mod optimize;
 #[path = "oversketch/mod.rs"]
 pub mod oversketch;
+#[path = "paint/mod.rs"]
+pub mod paint;
 #[path = "pose/mod.rs"]
 pub mod pose;
 #[path = "pull/mod.rs"]
@@ -77,6 +79,8 @@ register_tools! {
     Pose => pose::PoseTool::default(),
     /// Better triangles or less noise on a model (Laplacian mesh optimization).
     Optimize => optimize::OptimizeTool::default(),
+    /// Paint colours on models, fill them, pick colours, set their material.
+    Paint => paint::PaintTool::default(),
     /// Arrange models: select one and move, turn or scale it; delete or duplicate it. (Named
     /// `move` in sessions and autosaves from before the tool was called Arrange.)
     Move => arrange::ArrangeTool::default(),

@@ -56,18 +56,21 @@ pub enum Group {
     Animate,
     /// Clean up a model's triangles.
     Tidy,
+    /// Colour models.
+    Colour,
     /// Place, copy and delete models.
     Arrange,
 }
 
 impl Group {
     /// Every group, in toolbar order.
-    pub const ALL: [Group; 6] = [
+    pub const ALL: [Group; 7] = [
         Group::Make,
         Group::Curves,
         Group::Reshape,
         Group::Animate,
         Group::Tidy,
+        Group::Colour,
         Group::Arrange,
     ];
 
@@ -79,6 +82,7 @@ impl Group {
             Group::Reshape => "Reshape",
             Group::Animate => "Pose and animate",
             Group::Tidy => "Tidy",
+            Group::Colour => "Colour",
             Group::Arrange => "Arrange",
         }
     }

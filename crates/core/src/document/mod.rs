@@ -56,10 +56,11 @@ pub use intent::{
 pub use keyframes::KeyframeInput;
 pub use op::{
     AddCurveInput, AreaInput, BrushInput, CreateInput, CurveHandleInput, CurveTypeInput,
-    DeleteHandleInput, DuplicateInput, FileInput, HandleEditInput, HandleInput, ImportInput,
-    LinkHandlesInput, MergeInput, MirroredOp, ModelInput, Op, OptimizeInput, OversketchFit,
-    OversketchInput, PaintInput, FillInput, MaterialInput, PlaneInput, ProfileInput, RegionEditInput, SketchFeatureInput, StrokeInput,
-    StrokePairInput, SymmetrizeInput, TransformInput,
+    DeleteHandleInput, DuplicateInput, FileInput, FillInput, HandleEditInput, HandleInput,
+    ImportInput, LinkHandlesInput, MaterialInput, MergeInput, MirroredOp, ModelInput, Op,
+    OptimizeInput, OversketchFit, OversketchInput, PaintInput, PlaneInput, ProfileInput,
+    RegionEditInput, SketchFeatureInput, StrokeInput, StrokePairInput, SymmetrizeInput,
+    TransformInput,
 };
 pub use outcome::{import_files, model_op};
 pub use oversketch::OutlinePiece;

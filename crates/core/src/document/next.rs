@@ -2,6 +2,8 @@
 //! that the ops' own files and the dispatch in `outcome.rs` share.
 
 use super::{CommandError, Document, Model};
+use crate::model::MirrorPlane;
+use crate::symmetry::are_twins;
 
 /// What an op does to the editor, ready to commit.
 #[derive(Debug)]
@@ -38,4 +40,11 @@ pub(super) fn with_positions(doc: &Document, index: usize, positions: &[glam::DV
     let mut next = Model::clone(&doc.models[index]);
     next.mesh.positions_mut().copy_from_slice(positions);
     next
+}
+
+/// The index of model `index`'s mirror twin in `doc`, if it has one.
+pub(super) fn twin_of(doc: &Document, index: usize, plane: &MirrorPlane) -> Option<usize> {
+    let model = doc.models.get(index)?;
+    (0..doc.models.len())
+        .find(|&j| j != index && are_twins(&model.mesh, &doc.models[j].mesh, plane))
 }

@@ -13,9 +13,9 @@ use crate::curve::StrokePoint;
 use crate::deform::HandleFit;
 use crate::feature::FeatureKind;
 use crate::model::{Finish, MirrorPlane, Side};
-use crate::paint::Brush;
 use crate::optimize::OptimizeParams;
 use crate::oversketch::{ManualHandle, OversketchRoi, SOFT_FIT_WEIGHT};
+use crate::paint::Brush;
 use crate::skeleton::{HandleKind, PointEdit};
 
 /// Declares [`Op`] from one list of variants, each with its `"op"` tag

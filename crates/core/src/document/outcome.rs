@@ -9,8 +9,8 @@ use super::feature::feature_op;
 use super::keyframes::{delete_keyframe_op, keyframe_op, pose_at_op};
 use super::next::Outcome;
 use super::optimize::optimize_op;
-use super::paint::{carry_colors, fill_op, material_op, paint_op, with_colors_carried};
 use super::oversketch::oversketch_op;
+use super::paint::{carry_colors, fill_op, material_op, paint_op, with_colors_carried};
 use super::region_edit::region_edit_op;
 use super::skeleton::{
     curve_handle_op, delete_handle_op, handle_edit_op, link_handles_op, remove_model,

@@ -10,14 +10,14 @@
 
 use glam::DVec2;
 
-use super::next::target;
-use super::symmetry::twin_of;
+use super::next::{target, twin_of};
 use super::{CommandError, Document, FillInput, MaterialInput, Model, Op, PaintInput, surface_at};
 use crate::geometry::Bvh;
 use crate::model::MirrorPlane;
 use crate::paint::{
     PaintStroke, carried_colors, dabs_between, mirrored_dab, shown_colors, with_colors,
 };
+use crate::symmetry::partners;
 
 /// Applies a `paint` op, with the mirror image of every dab when `mirror` is given.
 ///
@@ -72,11 +72,11 @@ impl Painting {
                 && let Some((index, _)) = surface_at(doc, &stroke, DVec2::new(sample[0], sample[1]))
             {
                 let mesh = &target(doc, index)?.mesh;
-                self.on = Some((index, Bvh::new(mesh), PaintStroke::new(mesh.n_vertices())));
-                self.twin = mirror.and_then(|plane| twin_of(doc, index, plane)).map(|j| {
+                self.twin = mirrored_by(doc, index, mirror)?.map(|j| {
                     let mesh = &doc.models[j].mesh;
                     (j, Bvh::new(mesh), PaintStroke::new(mesh.n_vertices()))
                 });
+                self.on = Some((index, Bvh::new(mesh), PaintStroke::new(mesh.n_vertices())));
             }
             let from = self.followed.checked_sub(1).map(|k| input.stroke[k]);
             self.followed += 1;
@@ -186,21 +186,50 @@ fn with_twin_too(
     make: impl Fn(&Model) -> Model,
 ) -> Result<Document, CommandError> {
     let model = target(doc, index)?;
+    let twin = mirrored_by(doc, index, mirror)?;
     let mut next = doc.clone();
     next.models[index] = make(model).into();
-    if let Some(j) = mirror.and_then(|plane| twin_of(doc, index, plane)) {
+    if let Some(j) = twin {
         next.models[j] = make(&doc.models[j]).into();
     }
     Ok(next)
 }
 
+/// With symmetry on (`mirror`), model `index`'s twin, if it has one; `None` for a
+/// symmetric model, which carries its mirror image itself.
+///
+/// Errors: [`CommandError::NotSymmetric`] for a model neither symmetric nor twinned, as for
+/// every op made with symmetry on.
+fn mirrored_by(
+    doc: &Document,
+    index: usize,
+    mirror: Option<&MirrorPlane>,
+) -> Result<Option<usize>, CommandError> {
+    let Some(plane) = mirror else {
+        return Ok(None);
+    };
+    match twin_of(doc, index, plane) {
+        Some(j) => Ok(Some(j)),
+        None if partners(&target(doc, index)?.mesh, plane).is_some() => Ok(None),
+        None => Err(CommandError::NotSymmetric),
+    }
+}
+
 /// `made`, the model `op` made at `index` of `doc`, with the colours of the models it was
 /// made from carried onto it ([`carry_colors`]): the one it replaces, or a merge's two.
-pub(super) fn with_colors_carried(doc: &Document, op: &Op, (index, mut made): (usize, Model)) -> (usize, Model) {
+pub(super) fn with_colors_carried(
+    doc: &Document,
+    op: &Op,
+    (index, mut made): (usize, Model),
+) -> (usize, Model) {
     let from: Vec<&Model> = match op {
         Op::Merge(input) => {
             let (kept, gone) = input.kept_and_gone();
-            [kept, gone].iter().filter_map(|&i| doc.models.get(i)).map(|m| &**m).collect()
+            [kept, gone]
+                .iter()
+                .filter_map(|&i| doc.models.get(i))
+                .map(|m| &**m)
+                .collect()
         }
         _ => doc.models.get(index).map(|m| &**m).into_iter().collect(),
     };
@@ -214,7 +243,10 @@ pub(super) fn with_colors_carried(doc: &Document, op: &Op, (index, mut made): (u
 /// model's colours were carried already (they are its own, not a source's copied along with
 /// the rest of it), so the page's main thread does not carry again what its worker did.
 pub(super) fn carry_colors(sources: &[&Model], model: &mut Model) {
-    if sources.iter().all(|source| source.vertex_colors().is_none()) {
+    if sources
+        .iter()
+        .all(|source| source.vertex_colors().is_none())
+    {
         return;
     }
     if let [source] = sources

@@ -15,7 +15,7 @@
 
 use std::sync::Arc;
 
-use super::next::{Outcome, target};
+use super::next::{Outcome, target, twin_of};
 use super::paint::{carry_colors, fill_op, material_op, paint_op};
 use super::skeleton::remove_model;
 use glam::DVec2;
@@ -128,13 +128,6 @@ pub(super) fn mirrored_outcome(
         }
     }
     Ok(Outcome::Document(next))
-}
-
-/// The index of model `index`'s mirror twin in `doc`, if it has one.
-pub(super) fn twin_of(doc: &Document, index: usize, plane: &MirrorPlane) -> Option<usize> {
-    let model = doc.models.get(index)?;
-    (0..doc.models.len())
-        .find(|&j| j != index && are_twins(&model.mesh, &doc.models[j].mesh, plane))
 }
 
 /// Makes model `i` of `next`, changed from `base`'s, symmetric again: its twin follows it,

@@ -78,8 +78,7 @@ fn model_node(
                 positions: Cow::Borrowed(mesh.positions()),
                 triangles: mesh.triangles(),
             },
-            (model.appearance.as_deref())
-                .filter(|a| a.fits(mesh) && !is_coloured_here),
+            (model.appearance.as_deref()).filter(|a| a.fits(mesh) && !is_coloured_here),
         ),
     };
     let baked = bake(model).filter(|_| !written.triangles.is_empty());

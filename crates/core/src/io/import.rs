@@ -16,8 +16,8 @@ use glam::DVec3;
 
 use super::curves::{AttachedCurves, attach_curves};
 use super::error::GltfError;
-use super::extras::{CLAY_MATERIAL_NAME, FINISH_MATERIAL_NAME};
 use super::extras::MirrorExtras;
+use super::extras::{CLAY_MATERIAL_NAME, FINISH_MATERIAL_NAME};
 use super::input::{ImportFile, ImportLimits};
 use super::parse::parse;
 use super::resources::{Buffers, load_buffers, resolve};
@@ -25,8 +25,8 @@ use super::scene::{NodeGeometry, Surface, read_nodes};
 use super::weld::weld;
 use crate::mesh::{FaceId, Mesh, RepairReport, TriSoup, make_manifold};
 use crate::model::{
-    AlphaMode, Appearance, AsImported, Finish, Image, Keyframe, Material, MirrorPlane, Model, PointCloud,
-    SketchCurve, Texture, positions_hash, positions_hash_of,
+    AlphaMode, Appearance, AsImported, Finish, Image, Keyframe, Material, MirrorPlane, Model,
+    PointCloud, SketchCurve, Texture, positions_hash, positions_hash_of,
 };
 use crate::symmetry::{Keep, are_twins_within, mirror_positions, mirrored_model, partners_within};
 
@@ -381,13 +381,13 @@ fn curves(n: usize) -> String {
     }
 }
 
-/// The paint (one colour per vertex) and finish of a model written by a Sketchmesh file,
-/// when its look is one this app makes: one material of its own or clay, no texture, no
-/// UVs. `None` for any other look, which stays an imported look.
-fn colours_made_here(
-    look: &Appearance,
-    mesh: &Mesh,
-) -> Option<(Option<Vec<[f32; 3]>>, Option<Finish>)> {
+/// A model's paint (one colour per vertex) and finish, each if it has one.
+type ColouredHere = (Option<Vec<[f32; 3]>>, Option<Finish>);
+
+/// The paint and finish of a model written by a Sketchmesh file, when its look is one this
+/// app makes: one material of its own or clay, no texture, no UVs. `None` for any other
+/// look, which stays an imported look.
+fn colours_made_here(look: &Appearance, mesh: &Mesh) -> Option<ColouredHere> {
     let material = match distinct(&look.face_materials)[..] {
         [material] => material.and_then(|m| look.materials.get(m as usize)),
         _ => return None,

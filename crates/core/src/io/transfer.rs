@@ -21,8 +21,8 @@ use glam::DVec3;
 use super::import::Imported;
 use crate::mesh::{Mesh, MeshParts, TriSoup, VertexId};
 use crate::model::{
-    AlphaMode, Appearance, AsImported, Finish, Image, Keyframe, Material, MirrorPlane, Model, PointCloud,
-    SketchCurve, Texture,
+    AlphaMode, Appearance, AsImported, Finish, Image, Keyframe, Material, MirrorPlane, Model,
+    PointCloud, SketchCurve, Texture,
 };
 use crate::model::{ControlCurve, CurveKind};
 

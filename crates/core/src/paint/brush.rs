@@ -58,7 +58,7 @@ impl Brush {
     /// The strength a point at `distance` from a dab's centre is painted with.
     fn strength(&self, distance: f64, radius: f64) -> f64 {
         let t = distance / radius;
-        if !(t < 1.0) {
+        if t.is_nan() || t >= 1.0 {
             return 0.0;
         }
         let soft = if t <= self.hardness {
@@ -262,7 +262,15 @@ mod tests {
         let bvh = Bvh::new(&mesh);
         let camera = front_camera();
         let brush = brush(1.0, 1.0);
-        let dabs = dabs_between(&camera, VIEWPORT, None, [400.0, 300.0, 0.5], &brush, &mesh, &bvh);
+        let dabs = dabs_between(
+            &camera,
+            VIEWPORT,
+            None,
+            [400.0, 300.0, 0.5],
+            &brush,
+            &mesh,
+            &bvh,
+        );
         assert_eq!(dabs.len(), 1);
         assert!((dabs[0].center - DVec3::Z).length() < 1e-2);
         let mut stroke = PaintStroke::new(mesh.n_vertices());

@@ -95,15 +95,16 @@ mod tests {
     fn each_side_of_two_sources_keeps_its_own_colour() {
         let left = primitives::icosphere(1.0, 2);
         let mut right = left.clone();
-        right
-            .positions_mut()
-            .iter_mut()
-            .for_each(|p| p.x += 3.0);
+        right.positions_mut().iter_mut().for_each(|p| p.x += 3.0);
         let red = vec![[1.0, 0.0, 0.0]; left.n_vertices()];
         let blue = vec![[0.0, 0.0, 1.0]; right.n_vertices()];
         let sources = [(&left, red.as_slice()), (&right, blue.as_slice())];
         let finer = primitives::icosphere(1.0, 3);
-        assert!(carried_colors(&sources, &finer, [0.0; 3]).iter().all(|&c| c == [1.0, 0.0, 0.0]));
+        assert!(
+            carried_colors(&sources, &finer, [0.0; 3])
+                .iter()
+                .all(|&c| c == [1.0, 0.0, 0.0])
+        );
         assert_eq!(carried_colors(&[], &finer, [0.2; 3])[0], [0.2; 3]);
     }
 }

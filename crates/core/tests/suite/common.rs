@@ -142,6 +142,7 @@ pub fn digest(document: &Document) -> Digest {
     }
     digest_handles(document, &mut full, &mut topo);
     digest_keyframes(document, &mut full, &mut topo);
+    digest_colours(document, &mut full);
     // The plane only where a document has one, so the digests of the others stay as they were.
     if let Some(plane) = document.symmetry {
         full.tag("symmetry");
@@ -150,6 +151,29 @@ pub fn digest(document: &Document) -> Digest {
     Digest {
         full: full.finish(),
         topology: topo.finish(),
+    }
+}
+
+/// Each painted model's colours and each model's material, fed only where a model has them,
+/// so that the digests of documents without colour stay as they were.
+fn digest_colours(document: &Document, full: &mut Fnv) {
+    for (i, model) in document.models.iter().enumerate() {
+        if let Some(colors) = model.vertex_colors() {
+            full.tag("colours");
+            full.len(i);
+            colors
+                .iter()
+                .flatten()
+                .for_each(|c| full.u64(u64::from(c.to_bits())));
+        }
+        if let Some(finish) = model.finish {
+            full.tag("finish");
+            full.len(i);
+            let [r, g, b, a] = finish.base_color;
+            [r, g, b, a, finish.roughness, finish.metalness]
+                .iter()
+                .for_each(|c| full.u64(u64::from(c.to_bits())));
+        }
     }
 }
 

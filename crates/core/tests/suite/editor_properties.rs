@@ -62,10 +62,10 @@ use proptest::test_runner::{Config, FileFailurePersistence, RngSeed, TestRunner}
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
     CommandError, ControlCurve, CurveDeformInput, CurveHandle, CurveHandleInput, DeformHandleInput,
-    DeformInput, DeformMethod, DeleteHandleInput, Document, DuplicateInput, Editor,
-    HandleEditInput, KeyframeInput, LinkHandlesInput, MergeInput, Model, ModelInput, Op,
-    OptimizeInput, OversketchFit, PlaneInput, RegionEditInput, SketchFeatureInput, StrokeInput,
-    StrokePairInput, SymmetrizeInput, TransformInput,
+    DeformInput, DeformMethod, DeleteHandleInput, Document, DuplicateInput, Editor, FillInput,
+    HandleEditInput, KeyframeInput, LinkHandlesInput, MaterialInput, MergeInput, Model, ModelInput,
+    Op, OptimizeInput, OversketchFit, PaintInput, PlaneInput, RegionEditInput, SketchFeatureInput,
+    StrokeInput, StrokePairInput, SymmetrizeInput, TransformInput,
 };
 use sketchmesh_core::feature::FeatureKind;
 use sketchmesh_core::geometry::{Bvh, vertex_normals};
@@ -1269,6 +1269,33 @@ fn key_op(document: &Document, time: f64, kind: u8) -> Op {
     }
 }
 
+/// The colour op [`Part::ColourOf`] puts before `op`.
+fn colour_op(op: &Op) -> Option<Op> {
+    let tint = |k: usize| [0.9, 0.2 + 0.1 * (k % 7) as f64, 0.4];
+    Some(match op.unmirrored() {
+        Op::Pull(input) => Op::Paint(PaintInput {
+            viewport: input.viewport,
+            camera: input.camera,
+            stroke: input.stroke.clone(),
+            color: tint(input.stroke.len()),
+            radius: 12.0,
+            hardness: 0.5,
+            opacity: 0.8,
+        }),
+        Op::Symmetrize(input) => Op::Fill(FillInput {
+            model: input.model,
+            color: tint(input.model),
+        }),
+        Op::Transform(input) => Op::Material(MaterialInput {
+            model: input.model,
+            base_color: [0.8, 0.7, 0.6, 1.0],
+            roughness: 0.3,
+            metalness: 0.5,
+        }),
+        _ => return None,
+    })
+}
+
 /// A part of a step, turned into an op against the document of the moment.
 #[derive(Clone, Debug)]
 enum Part {
@@ -1286,6 +1313,10 @@ enum Part {
     /// The symmetry plane moved to the one this symmetrize step uses, as a user moves it
     /// with Arrange's handles before symmetrizing about it.
     PlaneOf(Step),
+    /// Colour first, so that the ops after meet painted models (without new random draws,
+    /// which would change every other case): a pull's stroke painted before it, a
+    /// symmetrize's model filled, an arranged model given a material.
+    ColourOf(Step),
 }
 
 /// The parts of a step: its op; or the undos and redos of [`Step::UndoRedo`]; or a handle
@@ -1325,7 +1356,14 @@ fn parts(step: &Step) -> Vec<Part> {
             Part::OverlapFirst(*model),
             Part::Step(step.clone()),
         ],
-        Step::Symmetrize { .. } => vec![Part::PlaneOf(step.clone()), Part::Step(step.clone())],
+        Step::Symmetrize { .. } => vec![
+            Part::ColourOf(step.clone()),
+            Part::PlaneOf(step.clone()),
+            Part::Step(step.clone()),
+        ],
+        Step::Pull { .. } | Step::Arrange { .. } => {
+            vec![Part::ColourOf(step.clone()), Part::Step(step.clone())]
+        }
         step => vec![Part::Step(step.clone())],
     }
 }
@@ -1339,6 +1377,7 @@ fn op_for_part(part: &Part, document: &Document) -> Option<Op> {
             Op::Symmetrize(input) => Some(Op::SymmetryPlane(PlaneInput { plane: input.plane })),
             _ => None,
         },
+        Part::ColourOf(step) => colour_op(&op_for(step, document)),
         Part::HandlesFirst(count) => (document.handles.len() < *count).then(|| {
             let front = View {
                 yaw: 0.0,

@@ -47,9 +47,10 @@ use serde_json::{Value, json};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
     CurveHandleInput, CurveKind, DeformHandleInput, DeformInput, DeformMethod, DeleteHandleInput,
-    Document, DuplicateInput, Editor, HandleEditInput, KeyframeInput, LinkHandlesInput, MergeInput,
-    ModelInput, Op, OptimizeInput, OversketchFit, PlaneInput, RegionEditInput, Session,
-    SketchFeatureInput, StrokePairInput, SymmetrizeInput, TransformInput,
+    Document, DuplicateInput, Editor, FillInput, HandleEditInput, KeyframeInput, LinkHandlesInput,
+    MaterialInput, MergeInput, ModelInput, Op, OptimizeInput, OversketchFit, PaintInput,
+    PlaneInput, RegionEditInput, Session, SketchFeatureInput, StrokePairInput, SymmetrizeInput,
+    TransformInput,
 };
 use sketchmesh_core::feature::FeatureKind;
 use sketchmesh_core::mesh::{Mesh, VertexId, primitives};
@@ -487,6 +488,7 @@ fn generators() -> Vec<(&'static str, Generator)> {
         ("curve_handles", curve_handles),
         ("deform_and_keyframes", deform_and_keyframes),
         ("symmetric_modelling", symmetric_modelling),
+        ("painted", painted),
     ]
 }
 
@@ -1395,5 +1397,62 @@ fn symmetric_modelling() -> Editor {
     };
     apply(&mut editor, Op::Optimize(optimize).mirrored(tilted));
     assert!(partners(&editor.document().models[n].mesh, &tilted).is_some());
+    editor
+}
+
+/// Colour: a soft brush stroke with pressure, a second model filled and given a material,
+/// a mirrored stroke on a symmetric model, a cut that carries the paint onto new triangles,
+/// and an undo and redo of the fill.
+fn painted() -> Editor {
+    let plane = MirrorPlane::default();
+    let camera = Camera::default();
+    let mut editor = Editor::new();
+    apply(
+        &mut editor,
+        create(&circle(CENTRE, 120.0), camera).mirrored(plane),
+    );
+    let brush = |points: &[DVec2], color: [f64; 3]| PaintInput {
+        viewport: VIEWPORT.to_array(),
+        camera,
+        stroke: (points.iter().enumerate())
+            .map(|(k, p)| [p.x, p.y, 0.2 + 0.6 * k as f64 / points.len() as f64])
+            .collect(),
+        color,
+        radius: 24.0,
+        hardness: 0.3,
+        opacity: 0.8,
+    };
+    let band = segment(
+        CENTRE + DVec2::new(-80.0, -40.0),
+        CENTRE + DVec2::new(80.0, -30.0),
+    );
+    apply(&mut editor, Op::Paint(brush(&band, [0.9, 0.2, 0.1])));
+    let side = segment(
+        CENTRE + DVec2::new(40.0, 30.0),
+        CENTRE + DVec2::new(70.0, 70.0),
+    );
+    apply(
+        &mut editor,
+        Op::Paint(brush(&side, [0.1, 0.3, 0.9])).mirrored(plane),
+    );
+    let other = CENTRE + DVec2::new(-260.0, 150.0);
+    apply(&mut editor, create(&circle(other, 60.0), camera));
+    let fill = FillInput {
+        model: 1,
+        color: [0.2, 0.7, 0.3],
+    };
+    apply(&mut editor, Op::Fill(fill));
+    apply(&mut editor, Op::Undo);
+    apply(&mut editor, Op::Redo);
+    let material = MaterialInput {
+        model: 1,
+        base_color: [1.0, 0.9, 0.8, 1.0],
+        roughness: 0.3,
+        metalness: 0.7,
+    };
+    apply(&mut editor, Op::Material(material));
+    let cut = segment(DVec2::new(470.0, 120.0), DVec2::new(470.0, 480.0));
+    apply(&mut editor, Op::Cut(stroke_input(VIEWPORT, camera, &cut)));
+    assert!(editor.document().models[0].vertex_colors().is_some());
     editor
 }

@@ -7,8 +7,8 @@
 use glam::{DVec2, DVec3};
 use sketchmesh_core::camera::Camera;
 use sketchmesh_core::document::{
-    CommandError, Editor, FillInput, MaterialInput, MergeInput, Model, Op, PaintInput,
-    StrokeInput, TransformInput,
+    CommandError, Editor, FillInput, MaterialInput, MergeInput, Model, Op, PaintInput, StrokeInput,
+    TransformInput,
 };
 use sketchmesh_core::io::{ImportFile, ImportLimits, import_gltf, write_glb};
 use sketchmesh_core::model::{Finish, MirrorPlane};
@@ -67,7 +67,10 @@ fn ball() -> Editor {
 #[test]
 fn a_stroke_paints_under_the_pen_only_and_undo_takes_it_back() {
     let mut editor = ball();
-    let stroke = segment(CENTRE - DVec2::new(60.0, 0.0), CENTRE + DVec2::new(60.0, 0.0));
+    let stroke = segment(
+        CENTRE - DVec2::new(60.0, 0.0),
+        CENTRE + DVec2::new(60.0, 0.0),
+    );
     editor.apply(Op::Paint(paint(&stroke, 16.0))).unwrap();
     let model = &editor.document().models[0];
     let colors = shown(model);
@@ -77,10 +80,18 @@ fn a_stroke_paints_under_the_pen_only_and_undo_takes_it_back() {
         let off_line = (s.y - CENTRE.y).abs().max((s.x - CENTRE.x).abs() - 60.0);
         let is_front = p.z > 0.0;
         if is_front && off_line < 10.0 {
-            assert!(is_red(colors[v]), "vertex {v} under the pen is {:?}", colors[v]);
+            assert!(
+                is_red(colors[v]),
+                "vertex {v} under the pen is {:?}",
+                colors[v]
+            );
             painted += 1;
         } else if !is_front || off_line > 22.0 {
-            assert_eq!(colors[v], Finish::CLAY.rgb(), "vertex {v} away from the pen");
+            assert_eq!(
+                colors[v],
+                Finish::CLAY.rgb(),
+                "vertex {v} away from the pen"
+            );
             clay += 1;
         }
     }
@@ -121,7 +132,11 @@ fn fill_clamps_its_colour_and_material_its_numbers() {
     assert_eq!(finish.base_color, [0.5, 0.5, 0.5, 1.0]);
     assert_eq!((finish.roughness, finish.metalness), (0.0, 0.0));
     // The base colour multiplies the paint, as glTF's COLOR_0 multiplies the factor.
-    assert!(shown(&editor.document().models[0]).iter().all(|&c| c == [0.5, 0.0, 0.25]));
+    assert!(
+        shown(&editor.document().models[0])
+            .iter()
+            .all(|&c| c == [0.5, 0.0, 0.25])
+    );
 }
 
 #[test]
@@ -134,7 +149,10 @@ fn colours_follow_a_cut_and_each_side_keeps_its_own_through_a_merge() {
         }))
         .unwrap();
     // A red band across the top, then the right third cut off.
-    let band = segment(CENTRE + DVec2::new(-100.0, -60.0), CENTRE + DVec2::new(100.0, -60.0));
+    let band = segment(
+        CENTRE + DVec2::new(-100.0, -60.0),
+        CENTRE + DVec2::new(100.0, -60.0),
+    );
     editor.apply(Op::Paint(paint(&band, 18.0))).unwrap();
     let before = editor.document().models[0].clone();
     let cut = segment(DVec2::new(470.0, 100.0), DVec2::new(470.0, 500.0));
@@ -147,7 +165,9 @@ fn colours_follow_a_cut_and_each_side_keeps_its_own_through_a_merge() {
         .unwrap();
     let model = &editor.document().models[0];
     assert_ne!(model.mesh.triangles(), before.mesh.triangles());
-    let colors = model.vertex_colors().expect("the cut model keeps its paint");
+    let colors = model
+        .vertex_colors()
+        .expect("the cut model keeps its paint");
     let old = shown(&before);
     let old_nearest = |p: DVec3| {
         let v = (0..before.mesh.n_vertices())
@@ -162,7 +182,10 @@ fn colours_follow_a_cut_and_each_side_keeps_its_own_through_a_merge() {
     for (v, &p) in model.mesh.positions().iter().enumerate() {
         let (distance, colour) = old_nearest(p);
         if distance < 1e-9 {
-            assert_eq!(colors[v], colour, "vertex {v} kept its place and its colour");
+            assert_eq!(
+                colors[v], colour,
+                "vertex {v} kept its place and its colour"
+            );
             kept += 1;
         }
     }
@@ -171,14 +194,22 @@ fn colours_follow_a_cut_and_each_side_keeps_its_own_through_a_merge() {
     for (v, &p) in model.mesh.positions().iter().enumerate() {
         if is_red(colors[v]) && p.z > 0.0 {
             let y = screen(p).y - CENTRE.y;
-            assert!((y + 60.0).abs() < 30.0, "a red vertex {y} px below the centre");
+            assert!(
+                (y + 60.0).abs() < 30.0,
+                "a red vertex {y} px below the centre"
+            );
         }
     }
     assert!(colors.iter().any(|&c| is_red(c)) && colors.contains(&[0.0, 0.0, 1.0]));
     // A red ball merged into the blue one: each keeps its colour away from the seam.
-    editor.apply(create(CENTRE + DVec2::new(-150.0, 0.0), 80.0)).unwrap();
     editor
-        .apply(Op::Fill(FillInput { model: 1, color: RED }))
+        .apply(create(CENTRE + DVec2::new(-150.0, 0.0), 80.0))
+        .unwrap();
+    editor
+        .apply(Op::Fill(FillInput {
+            model: 1,
+            color: RED,
+        }))
         .unwrap();
     let (blue_part, red_part) = (
         editor.document().models[0].clone(),
@@ -212,15 +243,16 @@ fn colours_follow_a_cut_and_each_side_keeps_its_own_through_a_merge() {
 fn symmetry_paints_the_other_side_and_the_twin() {
     let plane = MirrorPlane::default();
     let mut editor = Editor::new();
-    editor
-        .apply(create(CENTRE, 120.0).mirrored(plane))
-        .unwrap();
+    editor.apply(create(CENTRE, 120.0).mirrored(plane)).unwrap();
     editor
         .apply(create(CENTRE + DVec2::new(250.0, -150.0), 50.0).mirrored(plane))
         .unwrap();
     assert_eq!(editor.document().models.len(), 3);
     // On the body's right side, and over the small ball on the right.
-    let right = segment(CENTRE + DVec2::new(40.0, -40.0), CENTRE + DVec2::new(70.0, 40.0));
+    let right = segment(
+        CENTRE + DVec2::new(40.0, -40.0),
+        CENTRE + DVec2::new(70.0, 40.0),
+    );
     editor
         .apply(Op::Paint(paint(&right, 14.0)).mirrored(plane))
         .unwrap();
@@ -235,7 +267,11 @@ fn symmetry_paints_the_other_side_and_the_twin() {
     let painted = (0..colors.len()).filter(|&v| is_red(colors[v])).count();
     assert!(painted > 10);
     for v in 0..colors.len() {
-        assert_eq!(colors[v], colors[partner[v].index()], "vertex {v} and its partner");
+        assert_eq!(
+            colors[v],
+            colors[partner[v].index()],
+            "vertex {v} and its partner"
+        );
     }
     let (small, twin) = (shown(&doc.models[1]), shown(&doc.models[2]));
     assert!(small.iter().any(|&c| is_red(c)));
@@ -245,7 +281,10 @@ fn symmetry_paints_the_other_side_and_the_twin() {
 #[test]
 fn paint_and_material_go_out_to_gltf_and_come_back() {
     let mut editor = ball();
-    let stroke = segment(CENTRE - DVec2::new(40.0, 0.0), CENTRE + DVec2::new(40.0, 0.0));
+    let stroke = segment(
+        CENTRE - DVec2::new(40.0, 0.0),
+        CENTRE + DVec2::new(40.0, 0.0),
+    );
     let mut soft = paint(&stroke, 30.0);
     (soft.hardness, soft.opacity, soft.color) = (0.2, 0.7, [0.1, 0.6, 0.3]);
     editor.apply(Op::Paint(soft)).unwrap();
@@ -272,7 +311,10 @@ fn paint_and_material_go_out_to_gltf_and_come_back() {
     let again = &back.models[0];
     assert_eq!(again.finish, model.finish);
     assert!(again.appearance.is_none());
-    let (ours, theirs) = (model.vertex_colors().unwrap(), again.vertex_colors().unwrap());
+    let (ours, theirs) = (
+        model.vertex_colors().unwrap(),
+        again.vertex_colors().unwrap(),
+    );
     assert_eq!(ours.len(), theirs.len());
     // The import welds the file's vertices in its own order: compare by position.
     for (v, &p) in again.mesh.positions().iter().enumerate() {

@@ -13,8 +13,8 @@ use rustc_hash::FxHashSet;
 
 use super::embedding::Embedding;
 use super::project::SurfacePoint;
-use crate::mesh::{FaceId, Mesh, VertexId};
 use crate::geometry::barycentric;
+use crate::mesh::{FaceId, Mesh, VertexId};
 
 /// Crossings this close to an edge's end (fraction of the edge) snap onto that vertex,
 /// which avoids slivers and moves the curve off its plane by at most this fraction.

@@ -28,11 +28,11 @@ use glam::DVec3;
 use rustc_hash::FxHashMap;
 
 use crate::geometry::Bvh;
-use crate::mesh::{Mesh, TriSoup, VertexId};
+use crate::mesh::{TriSoup, VertexId};
 use crate::model::{Document, Model};
 
 pub use crossings::{Crossings, crossings};
-pub use thickness::{MAX_SAMPLES, THIN_AREA_FRACTION, Thickness, thickness};
+pub use thickness::{MAX_SAMPLES, Thickness, thickness};
 
 /// The minimum wall a print check uses unless the user sets another: 1 mm, in metres.
 pub const DEFAULT_MIN_WALL: f64 = 0.001;

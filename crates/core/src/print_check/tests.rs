@@ -6,7 +6,7 @@ use std::sync::Arc;
 use glam::DVec3;
 
 use super::*;
-use crate::mesh::{make_manifold, primitives};
+use crate::mesh::{Mesh, make_manifold, primitives};
 use crate::model::AsImported;
 use crate::unit::Unit;
 

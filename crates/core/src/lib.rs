@@ -12,12 +12,12 @@
 //!    builds on `mesh` and `solve`);
 //! 2. [`model`]: what a document holds, as plain data, on the ground floor's `mesh`;
 //! 3. the modeling techniques, on the floors below: [`deform`], [`silhouette`],
-//!    [`fibermesh`], [`optimize`], [`skeleton`], [`symmetry`], [`print_check`] (what a
-//!    printer would make of a model), [`feature`] (which solves with `deform`'s system),
-//!    [`oversketch`] (which bends with `deform` along `silhouette`s and embeds a sketch as
-//!    `feature` does), [`region_edit`] (with `feature`'s placement and `fibermesh`'s curve
-//!    embedding), [`volumetric`] (with `deform` and `feature`) and [`animation`] (with
-//!    `volumetric`'s similarities);
+//!    [`fibermesh`], [`optimize`], [`skeleton`], [`symmetry`], [`paint`] (vertex colours),
+//!    [`print_check`] (what a printer would make of a model), [`feature`] (which solves
+//!    with `deform`'s system), [`oversketch`] (which bends with `deform` along
+//!    `silhouette`s and embeds a sketch as `feature` does), [`region_edit`] (with
+//!    `feature`'s placement and `fibermesh`'s curve embedding), [`volumetric`] (with
+//!    `deform` and `feature`) and [`animation`] (with `volumetric`'s similarities);
 //! 4. [`io`]: glTF files in and out of the model (an export bakes an `animation`), STL
 //!    and OBJ out;
 //! 5. [`document`]: editing it, with ops, undo history and sessions.

@@ -22,7 +22,7 @@ use super::export::{ExportScope, exported_models};
 use super::export_error::ExportError;
 use crate::geometry::vertex_normals;
 use crate::mesh::Mesh;
-use crate::model::{Document, Model};
+use crate::model::{Document, Finish, Model};
 use crate::unit::Unit;
 
 /// An OBJ file and the MTL file it names.
@@ -34,27 +34,18 @@ pub struct ObjFiles {
     pub mtl: String,
 }
 
-/// How a model looks in the files: linear vertex colours and its surface finish.
+/// How a model looks in the files: its linear vertex colours and its finish.
 struct Look<'a> {
     /// One linear RGB colour per mesh vertex, when the model is painted.
     vertex_colors: Option<&'a [[f32; 3]]>,
-    /// Linear RGBA base colour.
-    base_color: [f32; 4],
-    roughness: f32,
-    metalness: f32,
+    finish: Finish,
 }
 
 impl<'a> Look<'a> {
-    /// The model's look.
-    // TODO(export): read `model.vertex_colors()` and `model.finish()` once paint lands.
     fn of(model: &'a Model) -> Self {
-        let _ = model;
-        // The clay the glTF export gives models made here.
         Self {
-            vertex_colors: None,
-            base_color: [0.8, 0.8, 0.8, 1.0],
-            roughness: 0.6,
-            metalness: 0.0,
+            vertex_colors: model.vertex_colors(),
+            finish: model.finish(),
         }
     }
 }
@@ -106,13 +97,14 @@ fn write_model(
 ) {
     // Writing to a String cannot fail.
     let _ = writeln!(obj, "o {name}\nusemtl {name}");
-    let colors = look
-        .vertex_colors
-        .filter(|colors| colors.len() == mesh.n_vertices());
+    debug_assert!(
+        look.vertex_colors
+            .is_none_or(|colors| colors.len() == mesh.n_vertices())
+    );
     for (v, p) in mesh.positions().iter().enumerate() {
         let p = *p * scale;
         let _ = write!(obj, "v {:.6} {:.6} {:.6}", p.x, p.y, p.z);
-        if let Some(colors) = colors {
+        if let Some(colors) = look.vertex_colors {
             let [r, g, b] = colors[v].map(srgb_from_linear);
             let _ = write!(obj, " {r:.6} {g:.6} {b:.6}");
         }
@@ -129,15 +121,19 @@ fn write_model(
 
 /// One `newmtl` block.
 fn write_material(mtl: &mut String, name: &str, look: &Look) {
-    let [r, g, b, alpha] = look.base_color;
+    let Finish {
+        base_color: [r, g, b, alpha],
+        roughness,
+        metalness,
+    } = look.finish;
     let [r, g, b] = [r, g, b].map(srgb_from_linear);
-    let roughness = f64::from(look.roughness).clamp(0.0, 1.0);
+    let roughness = f64::from(roughness).clamp(0.0, 1.0);
     let shininess = (30.0 * (1.0 - roughness)).powi(2);
     let _ = write!(
         mtl,
         "\nnewmtl {name}\nKd {r:.6} {g:.6} {b:.6}\nd {:.6}\nNs {shininess:.6}\nPr {roughness:.6}\nPm {:.6}\nillum 2\n",
         f64::from(alpha).clamp(0.0, 1.0),
-        f64::from(look.metalness).clamp(0.0, 1.0),
+        f64::from(metalness).clamp(0.0, 1.0),
     );
 }
 
@@ -273,56 +269,65 @@ mod tests {
     }
 
     #[test]
-    fn the_mtl_has_one_material_per_model_in_srgb() {
-        let doc = document(vec![
-            (Some("a"), primitives::cube(1.0)),
-            (Some("a"), primitives::cube(1.0)),
+    fn a_painted_model_has_its_colours_after_the_positions_in_srgb() {
+        let mut doc = document(vec![
+            (None, primitives::cube(1.0)),
+            (None, primitives::cube(1.0)),
         ]);
-        let files = write_obj(&doc, ExportScope::Document, Unit::Metre, "a.mtl").unwrap();
-        assert_eq!(lines(&files.mtl, "newmtl"), vec![vec!["a"], vec!["a_1"]]);
-        assert_eq!(lines(&files.obj, "usemtl"), vec![vec!["a"], vec!["a_1"]]);
-        // Clay: linear 0.8 is sRGB 0.906332.
-        assert_eq!(lines(&files.mtl, "Kd")[0], vec!["0.906332"; 3]);
-        assert_eq!(lines(&files.mtl, "d")[0], vec!["1.000000"]);
-        assert_eq!(lines(&files.mtl, "Pr")[0], vec!["0.600000"]);
-        assert_eq!(lines(&files.mtl, "Pm")[0], vec!["0.000000"]);
-        // (30 (1 - 0.6))², from the f32 roughness.
-        let shininess: f64 = lines(&files.mtl, "Ns")[0][0].parse().unwrap();
-        assert!((shininess - 144.0).abs() < 1e-4, "{shininess}");
-        // Deterministic: the same document gives the same text.
-        assert_eq!(
-            write_obj(&doc, ExportScope::Document, Unit::Metre, "a.mtl").unwrap(),
-            files
-        );
-    }
-
-    #[test]
-    fn vertex_colours_follow_the_position_in_srgb() {
-        let mesh = primitives::cube(1.0);
         let colors: Vec<[f32; 3]> = (0..8).map(|v| [v as f32 / 7.0, 0.0, 1.0]).collect();
-        let look = Look {
-            vertex_colors: Some(&colors),
-            ..Look::of(&Model::default())
-        };
-        let mut obj = String::new();
-        write_model(&mut obj, "cube", &mesh, &look, 10, 1.0);
-        let vertices = lines(&obj, "v");
-        assert_eq!(vertices.len(), 8);
-        for (v, fields) in vertices.iter().enumerate() {
+        Arc::make_mut(&mut doc.models[1]).colors = Some(Arc::new(colors));
+        let files = write_obj(&doc, ExportScope::Document, Unit::Metre, "a.mtl").unwrap();
+        let vertices = lines(&files.obj, "v");
+        assert_eq!(vertices.len(), 16);
+        assert!(
+            vertices[..8].iter().all(|v| v.len() == 3),
+            "the unpainted cube"
+        );
+        for (v, fields) in vertices[8..].iter().enumerate() {
             assert_eq!(fields.len(), 6, "{fields:?}");
             let red: f64 = fields[3].parse().unwrap();
             assert!((red - srgb_from_linear(v as f32 / 7.0)).abs() < 1e-6);
             assert_eq!(&fields[4..], ["0.000000", "1.000000"]);
         }
-        assert_eq!(lines(&obj, "f")[0], vec!["10//10", "12//12", "11//11"]);
-        // Colours that no longer fit the mesh (one per vertex) are left out.
-        let short = Look {
-            vertex_colors: Some(&colors[..7]),
-            ..Look::of(&Model::default())
-        };
-        let mut obj = String::new();
-        write_model(&mut obj, "cube", &mesh, &short, 1, 1.0);
-        assert!(lines(&obj, "v").iter().all(|v| v.len() == 3));
+        // The second cube's faces count on from the first's eight vertices.
+        assert_eq!(lines(&files.obj, "f")[12], vec!["9//9", "11//11", "10//10"]);
+    }
+
+    #[test]
+    fn the_mtl_has_each_models_finish_in_srgb() {
+        let mut doc = document(vec![
+            (Some("a"), primitives::cube(1.0)),
+            (Some("a"), primitives::cube(1.0)),
+        ]);
+        Arc::make_mut(&mut doc.models[1]).finish = Some(Finish {
+            base_color: [0.214_041_14, 1.0, 0.0, 0.5],
+            roughness: 0.25,
+            metalness: 1.0,
+        });
+        let files = write_obj(&doc, ExportScope::Document, Unit::Metre, "a.mtl").unwrap();
+        assert_eq!(lines(&files.mtl, "newmtl"), vec![vec!["a"], vec!["a_1"]]);
+        assert_eq!(lines(&files.obj, "usemtl"), vec![vec!["a"], vec!["a_1"]]);
+        // Clay, the finish of a model that has none set.
+        let clay = Finish::CLAY
+            .rgb()
+            .map(|c| format!("{:.6}", srgb_from_linear(c)));
+        assert_eq!(lines(&files.mtl, "Kd")[0], clay);
+        assert_eq!(lines(&files.mtl, "Pr")[0], vec!["0.600000"]);
+        // Linear 0.214 is sRGB 0.5.
+        assert_eq!(
+            lines(&files.mtl, "Kd")[1],
+            vec!["0.500000", "1.000000", "0.000000"]
+        );
+        assert_eq!(lines(&files.mtl, "d")[1], vec!["0.500000"]);
+        assert_eq!(lines(&files.mtl, "Pr")[1], vec!["0.250000"]);
+        assert_eq!(lines(&files.mtl, "Pm")[1], vec!["1.000000"]);
+        // (30 (1 - 0.25))², as Blender's exporter maps roughness.
+        assert_eq!(lines(&files.mtl, "Ns")[1], vec!["506.250000"]);
+        // Deterministic: the same document gives the same text.
+        assert_eq!(
+            write_obj(&doc, ExportScope::Document, Unit::Metre, "a.mtl").unwrap(),
+            files
+        );
     }
 
     #[test]

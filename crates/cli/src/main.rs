@@ -1,9 +1,12 @@
-//! The `sketchmesh` command: replay sessions headlessly, convert, inspect and optimize glTF
-//! files.
+//! The `sketchmesh` command: replay sessions headlessly, convert glTF files to glTF, STL or
+//! OBJ, check them for printing, inspect and optimize them.
 //!
 //! Arguments are matched by hand on the argument slice (as egui's xtask does); any refusal
-//! prints one sentence on stderr and exits with status 1.
+//! prints one sentence on stderr and exits with status 1 (`check` says 1 for "not printable",
+//! so its refusals exit with 2).
 
+mod check;
+mod export;
 mod optimize;
 
 use std::io::Write as _;
@@ -14,12 +17,25 @@ use anyhow::{Context as _, bail};
 use std::sync::Arc;
 
 use sketchmesh_core::document::{Editor, FileInput, ImportInput, Op, Session};
-use sketchmesh_core::io::{ImportFile, inspect_gltf, referenced_files, write_glb};
+use sketchmesh_core::io::{ImportFile, inspect_gltf, referenced_files};
+
+use export::Output;
 
 const USAGE: &str = "\
 Usage:
-  sketchmesh replay SESSION.json -o OUT.glb   Replay a session and write the document as glTF.
-  sketchmesh convert IN.glb|IN.gltf -o OUT.glb Import a glTF file and export it as Sketchmesh does.
+  sketchmesh replay SESSION.json -o OUT.glb|OUT.stl|OUT.obj [--unit mm|cm|m|in]
+                                              Replay a session and write the document.
+  sketchmesh convert IN.glb|IN.gltf -o OUT.glb|OUT.stl|OUT.obj [--unit mm|cm|m|in]
+                                              Import a glTF file and export it as Sketchmesh
+                                              does: the file type follows OUT's extension
+                                              (an .obj gets its .mtl beside it); STL is in
+                                              mm and OBJ in m unless --unit says otherwise.
+  sketchmesh check IN.glb|IN.gltf|SESSION.json [--min-wall W] [--unit mm|cm|m|in]
+                                              Check every model for 3D printing: closed and
+                                              manifold, self-intersections, the thinnest wall
+                                              against a minimum of W (in --unit, 1 mm by
+                                              default) and the size. Exits with 0 when
+                                              printable, 1 when not, 2 when it cannot check.
   sketchmesh info FILE.glb|FILE.gltf          Print what a glTF file contains, as JSON.
   sketchmesh optimize IN.glb -o OUT.glb [--mode shape|smooth] [--weights const|linear|cdf]
       [--scale S] [--laplacian uniform|cotan|cotan-curvature] [--tangent-plane] [--quality]
@@ -36,7 +52,7 @@ Session files are described in docs/session-format.md.";
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     match try_main(&args) {
-        Ok(()) => ExitCode::SUCCESS,
+        Ok(code) => code,
         Err(error) => {
             eprintln!("sketchmesh: {error:#}");
             ExitCode::FAILURE
@@ -44,23 +60,48 @@ fn main() -> ExitCode {
     }
 }
 
-fn try_main(args: &[String]) -> anyhow::Result<()> {
+fn try_main(args: &[String]) -> anyhow::Result<ExitCode> {
     let args: Vec<&str> = args.iter().map(String::as_str).collect();
     match args.as_slice() {
         [] | ["--help" | "-h" | "help"] => print_out(USAGE),
-        ["replay", session, "-o", out] | ["replay", "-o", out, session] => {
-            replay(Path::new(session), Path::new(out))
+        ["replay", session, "-o", out, options @ ..]
+        | ["replay", "-o", out, session, options @ ..] => {
+            replay(Path::new(session), &output(out, options)?)
         }
-        ["convert", input, "-o", out] | ["convert", "-o", out, input] => {
-            convert(Path::new(input), Path::new(out))
+        ["convert", input, "-o", out, options @ ..]
+        | ["convert", "-o", out, input, options @ ..] => {
+            convert(Path::new(input), &output(out, options)?)
         }
+        ["check", rest @ ..] => return Ok(check::run(rest)),
         ["info", file] => info(Path::new(file)),
         ["optimize", rest @ ..] => optimize::run(rest),
         _ => bail!("I don't understand the arguments {args:?}.\n{USAGE}"),
     }
+    .map(|()| ExitCode::SUCCESS)
 }
 
-fn replay(session_path: &Path, out_path: &Path) -> anyhow::Result<()> {
+/// The output file `out` with the options after it (only `--unit U`), checked before any
+/// work is done.
+fn output(out: &str, options: &[&str]) -> anyhow::Result<Output> {
+    let unit = match options {
+        [] => None,
+        ["--unit", unit] => Some(*unit),
+        _ => {
+            bail!("I don't understand the options {options:?}; the only one is --unit mm|cm|m|in.")
+        }
+    };
+    Output::new(Path::new(out), unit)
+}
+
+fn replay(session_path: &Path, out: &Output) -> anyhow::Result<()> {
+    let editor = replay_session(session_path)?;
+    let what = format!("Replayed {} ops", editor.ops().len());
+    write_document(&editor, out, &what)
+}
+
+/// The editor after replaying the session file at `session_path`, with the files it
+/// imports read from beside it.
+fn replay_session(session_path: &Path) -> anyhow::Result<Editor> {
     let json = std::fs::read_to_string(session_path)
         .with_context(|| format!("Could not read the session file {}", session_path.display()))?;
     let mut session = Session::from_json(&json)
@@ -69,10 +110,7 @@ fn replay(session_path: &Path, out_path: &Path) -> anyhow::Result<()> {
         &mut session,
         session_path.parent().unwrap_or(Path::new(".")),
     )?;
-    let editor = Editor::replay(&session)
-        .with_context(|| format!("Could not replay {}", session_path.display()))?;
-    let what = format!("Replayed {} ops", editor.ops().len());
-    write_document(&editor, out_path, &what)
+    Editor::replay(&session).with_context(|| format!("Could not replay {}", session_path.display()))
 }
 
 /// Fills in the contents of import files the session names without carrying them.
@@ -117,33 +155,32 @@ fn read_gltf(path: &Path) -> anyhow::Result<Vec<FileInput>> {
     Ok(files)
 }
 
-fn convert(in_path: &Path, out_path: &Path) -> anyhow::Result<()> {
-    let files = read_gltf(in_path)?;
+fn convert(in_path: &Path, out: &Output) -> anyhow::Result<()> {
+    let editor = import_gltf_file(in_path)?;
+    let what = format!("Converted {}", in_path.display());
+    write_document(&editor, out, &what)
+}
+
+/// An editor holding what the glTF file at `path` (and the files beside it) imports to.
+fn import_gltf_file(path: &Path) -> anyhow::Result<Editor> {
+    let files = read_gltf(path)?;
     let mut editor = Editor::new();
     editor
         .apply(Op::Import(ImportInput {
             files,
             beside: false,
         }))
-        .with_context(|| format!("Could not import {}", in_path.display()))?;
-    let what = format!("Converted {}", in_path.display());
-    write_document(&editor, out_path, &what)
+        .with_context(|| format!("Could not import {}", path.display()))?;
+    Ok(editor)
 }
 
-/// Writes the document as .glb and prints one line saying what is in it.
-fn write_document(editor: &Editor, out_path: &Path, what: &str) -> anyhow::Result<()> {
-    let bytes = write_glb(editor.document());
-    std::fs::write(out_path, &bytes)
-        .with_context(|| format!("Could not write {}", out_path.display()))?;
+/// Writes the document as `out` says and prints one line saying what is in it.
+fn write_document(editor: &Editor, out: &Output, what: &str) -> anyhow::Result<()> {
+    let written = out.write(editor.document())?;
     let stats = editor.document().stats();
     print_out(&format!(
-        "{what}: {} models, {} vertices, {} triangles, {} curves; wrote {} ({} bytes).",
-        stats.models,
-        stats.vertices,
-        stats.triangles,
-        stats.curves,
-        out_path.display(),
-        bytes.len()
+        "{what}: {} models, {} vertices, {} triangles, {} curves; wrote {written}.",
+        stats.models, stats.vertices, stats.triangles, stats.curves,
     ))
 }
 

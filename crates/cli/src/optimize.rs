@@ -8,12 +8,13 @@ use serde_json::{Value, json};
 use sketchmesh_core::document::{Editor, ImportInput, Op, OptimizeInput};
 use sketchmesh_core::optimize::{OptimizeParams, quality_report};
 
+use crate::export::Output;
 use crate::{print_out, read_gltf, write_document};
 
 /// What the command line asked for.
 struct Request<'a> {
     input: &'a str,
-    output: &'a str,
+    output: Output,
     settings: OptimizeParams,
     report: bool,
 }
@@ -43,7 +44,7 @@ pub fn run(args: &[&str]) -> anyhow::Result<()> {
         reports.push(quality_report(&before, after));
     }
     let what = format!("Optimized {}", request.input);
-    write_document(&editor, Path::new(request.output), &what)?;
+    write_document(&editor, &request.output, &what)?;
     if request.report {
         print_out(&serde_json::to_string_pretty(&reports)?)?;
     }
@@ -87,7 +88,10 @@ fn parse<'a>(args: &[&'a str]) -> anyhow::Result<Request<'a>> {
         .context("One of --mode (shape, smooth), --weights (const, linear, cdf), --laplacian (uniform, cotan, cotan-curvature) or --feature-falloff (linear, cdf, gaussian) has a value I don't know")?;
     Ok(Request {
         input: input.context("Name the glTF file to optimize.")?,
-        output: output.context("Name the output with -o OUT.glb.")?,
+        output: Output::new(
+            Path::new(output.context("Name the output with -o OUT.glb.")?),
+            None,
+        )?,
         settings,
         report,
     })

@@ -332,3 +332,161 @@ fn optimize_refuses_bad_options_with_a_sentence() {
         assert!(stderr.contains(says), "{args:?}: {stderr}");
     }
 }
+
+#[test]
+fn convert_writes_stl_and_obj_by_the_extension_in_the_unit_asked_for() {
+    let dir = temp_dir("export");
+    let input = testdata_mesh("spot.glb");
+    let stl = dir.join("spot.stl");
+    let stdout = succeed("convert", &input, &stl, &[]);
+    assert!(stdout.contains("spot.stl in mm"), "{stdout}");
+    let bytes = std::fs::read(&stl).unwrap();
+    assert!(!bytes.starts_with(b"glTF") && !bytes.starts_with(b"solid"));
+    let count = u32::from_le_bytes(bytes[80..84].try_into().unwrap()) as usize;
+    assert_eq!(count, 5856, "spot's triangles");
+    assert_eq!(bytes.len(), 84 + 50 * count);
+    // The same in inches: every coordinate 25.4 times smaller.
+    let inches = dir.join("spot-in.stl");
+    succeed("convert", &input, &inches, &["--unit", "in"]);
+    let inches = std::fs::read(&inches).unwrap();
+    let coordinate =
+        |bytes: &[u8], at: usize| f32::from_le_bytes(bytes[at..at + 4].try_into().unwrap());
+    for at in [84 + 12, 84 + 50 * 100 + 28] {
+        let (mm, inch) = (coordinate(&bytes, at), coordinate(&inches, at));
+        assert!(
+            (mm / 25.4 - inch).abs() < 1e-4 * mm.abs().max(1.0),
+            "{mm} mm against {inch} in"
+        );
+    }
+
+    let obj = dir.join("spot.obj");
+    let stdout = succeed("convert", &input, &obj, &[]);
+    assert!(stdout.contains("spot.mtl in m"), "{stdout}");
+    let text = std::fs::read_to_string(&obj).unwrap();
+    assert!(text.contains("\nmtllib spot.mtl\n"));
+    assert_eq!(text.lines().filter(|l| l.starts_with("f ")).count(), 5856);
+    assert_eq!(text.lines().filter(|l| l.starts_with("v ")).count(), 2930);
+    let mtl = std::fs::read_to_string(dir.join("spot.mtl")).unwrap();
+    assert_eq!(mtl.lines().filter(|l| l.starts_with("newmtl ")).count(), 1);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn an_output_it_cannot_write_is_refused_and_nothing_is_written() {
+    let dir = temp_dir("export-refusals");
+    let input = testdata_mesh("spot.glb");
+    for (out, extra, says) in [
+        ("spot.ply", vec![], "Sketchmesh cannot write"),
+        ("spot", vec![], "name the output .glb (glTF), .stl or .obj"),
+        ("spot.gltf", vec![], "Sketchmesh cannot write"),
+        ("spot.glb", vec!["--unit", "mm"], "glTF is always in metres"),
+        (
+            "spot.stl",
+            vec!["--unit", "ft"],
+            "\"ft\" is not a unit of length",
+        ),
+        ("spot.stl", vec!["--scale", "2"], "the only one is --unit"),
+    ] {
+        let out = dir.join(out);
+        let mut args: Vec<&std::ffi::OsStr> = vec![
+            "convert".as_ref(),
+            input.as_os_str(),
+            "-o".as_ref(),
+            out.as_os_str(),
+        ];
+        args.extend(extra.iter().map(std::ffi::OsStr::new));
+        let output = sketchmesh(&args);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(1), "{out:?}: {stderr}");
+        assert!(stderr.contains(says), "{out:?}: {stderr}");
+        assert!(!out.exists(), "{out:?} was written");
+    }
+    // A document without triangles: the replayed strokes are sketches only.
+    let session = dir.join("strokes.json");
+    std::fs::write(&session, SESSION).unwrap();
+    let stl = dir.join("strokes.stl");
+    let output = sketchmesh(&[
+        "replay".as_ref(),
+        session.as_os_str(),
+        "-o".as_ref(),
+        stl.as_os_str(),
+    ]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(
+        String::from_utf8_lossy(&output.stderr)
+            .contains("The document has no triangles to write to STL."),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    assert!(!stl.exists());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Runs `sketchmesh check ARGS...`: its exit status and what it printed.
+fn check(args: &[&std::ffi::OsStr]) -> (Option<i32>, String, String) {
+    let mut all: Vec<&std::ffi::OsStr> = vec!["check".as_ref()];
+    all.extend(args);
+    let output = sketchmesh(&all);
+    (
+        output.status.code(),
+        String::from_utf8_lossy(&output.stdout).into_owned(),
+        String::from_utf8_lossy(&output.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn check_says_what_would_print_and_exits_accordingly() {
+    // Spot, about 1.5 m long in its file: closed, and thick everywhere.
+    let spot = testdata_mesh("spot.glb");
+    let (code, stdout, stderr) = check(&[spot.as_os_str()]);
+    assert_eq!(code, Some(0), "{stdout}{stderr}");
+    let lines: Vec<&str> = stdout.lines().collect();
+    assert_eq!(lines[0], "Closed and manifold.");
+    assert_eq!(lines[1], "The surface does not cross itself.");
+    assert!(lines[2].contains("above the 1 mm minimum"), "{stdout}");
+    assert!(
+        lines[3].starts_with("Size ") && lines[3].ends_with(" mm."),
+        "{stdout}"
+    );
+    // In centimetres, against a wall thicker than spot's legs.
+    let (code, stdout, _) = check(&[
+        spot.as_os_str(),
+        "--unit".as_ref(),
+        "cm".as_ref(),
+        "--min-wall".as_ref(),
+        "500".as_ref(),
+    ]);
+    assert_eq!(code, Some(1), "{stdout}");
+    assert!(stdout.contains("under the 500 cm minimum"), "{stdout}");
+    // The bunny scan is open at the base.
+    let bunny = testdata_mesh("stanford_bunny.glb");
+    let (code, stdout, _) = check(&[bunny.as_os_str()]);
+    assert_eq!(code, Some(1));
+    assert!(stdout.starts_with("Not closed: "), "{stdout}");
+    // A session's document.
+    let dir = temp_dir("check");
+    let session = dir.join("create.json");
+    std::fs::write(&session, create_session()).unwrap();
+    let (code, stdout, stderr) = check(&[session.as_os_str()]);
+    assert_eq!(code, Some(0), "{stdout}{stderr}");
+    assert!(stdout.starts_with("Closed and manifold.\n"), "{stdout}");
+    // No check: 2, with a sentence.
+    let missing = dir.join("missing.glb");
+    for (args, says) in [
+        (
+            vec![spot.as_os_str(), "--min-wall".as_ref(), "thin".as_ref()],
+            "--min-wall takes a length",
+        ),
+        (
+            vec![spot.as_os_str(), "--wobble".as_ref()],
+            "I don't know the option --wobble",
+        ),
+        (vec![], "Name the glTF or session file to check."),
+        (vec![missing.as_os_str()], "Could not read"),
+    ] {
+        let (code, stdout, stderr) = check(&args);
+        assert_eq!(code, Some(2), "{args:?}: {stdout}{stderr}");
+        assert!(stderr.contains(says), "{args:?}: {stderr}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}

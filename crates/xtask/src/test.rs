@@ -2,8 +2,8 @@
 //!
 //! fmt, clippy, native tests, the page as it ships (`release` wasm, wasm-opt) with a size budget, the browser
 //! suite (`tests/e2e/run.mjs`) on WebGL2 and then, for the cases that can differ, on WebGPU against an
-//! in-process server, and the Khronos glTF validator on every exported `.glb` (browser exports and a
-//! CLI replay).
+//! in-process server, the Khronos glTF validator on every exported `.glb` (browser exports and a
+//! CLI replay), and three.js's STL and OBJ loaders on the CLI's conversions.
 
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -23,6 +23,11 @@ const REPLAY_FIXTURE: &str = "tests/fixtures/two-strokes-undo-redo.json";
 /// A session with three key frames (0, 1 and 2 s), replayed into `tests/out/animation.glb`
 /// for the validator and the three.js playback check.
 const ANIMATION_FIXTURE: &str = "tests/fixtures/animation-three-keys.json";
+/// The scan the CLI converts to STL and OBJ for three.js's loaders: a clean closed surface.
+const EXPORT_SCAN: &str = "../shared/testdata/meshes/spot.glb";
+/// The session replayed and converted likewise: create, extrude, tunnel, cut, merge (closed,
+/// genus 1).
+const EXPORT_SESSION: &str = "tests/fixtures/topology-session.json";
 /// What three.js must play from it: seconds, and frames (the keys and 12 in-betweens a
 /// second).
 const ANIMATION_PLAYBACK: (u32, u32) = (2, 25);
@@ -229,21 +234,14 @@ fn browser_checks(
             (REPLAY_FIXTURE, &replay_glb),
             (ANIMATION_FIXTURE, &animation_glb),
         ] {
-            let mut command = match cli {
-                Some(binary) => Command::new(binary),
-                None => {
-                    let mut c = cargo();
-                    c.args(["run", "-p", "sketchmesh-cli", "--"]);
-                    c
-                }
-            };
-            command
-                .current_dir(root)
-                .args(["replay", fixture, "-o"])
-                .arg(glb);
+            let mut command = cli_command(root, cli);
+            command.args(["replay", fixture, "-o"]).arg(glb);
             run(&format!("replaying {fixture} with the CLI"), &mut command)?;
         }
         Ok(())
+    })?;
+    steps.step("STL and OBJ exports in three.js", || {
+        check_exports(workspace, &out, cli)
     })?;
     steps.step("three.js playback", || {
         let (duration, frames) = ANIMATION_PLAYBACK;
@@ -273,6 +271,90 @@ fn browser_checks(
     })?;
 
     Ok(())
+}
+
+/// A command running the CLI: the `cli` binary when given, else through `cargo run`.
+fn cli_command(root: &Path, cli: Option<&Path>) -> Command {
+    let mut command = match cli {
+        Some(binary) => Command::new(binary),
+        None => {
+            let mut c = cargo();
+            c.args(["run", "-p", "sketchmesh-cli", "--"]);
+            c
+        }
+    };
+    command.current_dir(root);
+    command
+}
+
+/// The CLI converts a real scan ([`EXPORT_SCAN`]) and a replayed session
+/// ([`EXPORT_SESSION`]) to STL (mm) and OBJ (m) in `out`, and `tests/check-exports.mjs`
+/// reads them with three.js's loaders against the glTF they came from: triangle counts,
+/// bounds in the unit, watertightness. The scan is shared test data beside the repository:
+/// its absence fails loudly unless `SKETCHMESH_NO_TESTDATA=1` says it is expected.
+fn check_exports(workspace: &Workspace, out: &Path, cli: Option<&Path>) -> anyhow::Result<()> {
+    let root = &workspace.root;
+    let mut cases = Vec::new();
+    let scan = root.join(EXPORT_SCAN);
+    if scan.is_file() {
+        cases.push(("spot", scan.clone()));
+    } else if std::env::var_os("SKETCHMESH_NO_TESTDATA").is_some() {
+        println!(
+            "xtask: WARNING: the shared test data is missing ({} does not exist); SKETCHMESH_NO_TESTDATA is set, so only the session's exports are checked",
+            scan.display()
+        );
+    } else {
+        bail!(
+            "the shared test data is missing: {} does not exist (set SKETCHMESH_NO_TESTDATA=1 to skip on purpose)",
+            scan.display()
+        );
+    }
+    let session_glb = out.join("export-session.glb");
+    run(
+        &format!("replaying {EXPORT_SESSION} with the CLI"),
+        cli_command(root, cli)
+            .args(["replay", EXPORT_SESSION, "-o"])
+            .arg(&session_glb),
+    )?;
+    cases.push(("export-session", session_glb));
+    let mut json = Vec::new();
+    for (name, source) in &cases {
+        let mut files = Vec::new();
+        for (extension, unit, per_metre) in [("stl", "mm", 1000.0), ("obj", "m", 1.0)] {
+            let file = out.join(format!("{name}.{extension}"));
+            run(
+                &format!(
+                    "converting {} to .{extension} with the CLI",
+                    source.display()
+                ),
+                cli_command(root, cli)
+                    .arg("convert")
+                    .arg(source)
+                    .arg("-o")
+                    .arg(&file)
+                    .args(["--unit", unit]),
+            )?;
+            files.push(serde_json::json!({
+                "path": relative_to(&file, root),
+                "per_metre": per_metre,
+            }));
+        }
+        json.push(serde_json::json!({
+            "source": relative_to(source, root),
+            "watertight": true,
+            "files": files,
+        }));
+    }
+    let cases_file = out.join("exports.json");
+    fs::write(&cases_file, serde_json::to_string_pretty(&json)?)
+        .with_context(|| format!("writing {}", cases_file.display()))?;
+    run(
+        "reading the STL and OBJ exports with three.js",
+        Command::new("node")
+            .current_dir(root)
+            .arg("tests/check-exports.mjs")
+            .arg(relative_to(&cases_file, root)),
+    )
 }
 
 /// Runs the Khronos glTF validator on `files`; any error or warning (or a missing file) fails.

@@ -19,6 +19,7 @@ mod oversketch;
 mod oversketch_pipeline;
 mod paint;
 mod previews;
+mod print_check;
 mod region_edit;
 mod silhouette;
 mod skeleton;

@@ -647,7 +647,7 @@ fn hand_over(
 fn supply(edit: &mut Edit, answer: Answer) {
     match answer {
         Answer::Imported(imported) => edit.supply_import(imported),
-        Answer::Model(changed) => edit.supply_model(changed),
+        Answer::Model(changed) => edit.supply_model(*changed),
         Answer::Moved(moved) => edit.supply_preview(moved),
     }
 }

@@ -52,7 +52,8 @@ pub enum Answer {
     /// What the import's files hold.
     Imported(Result<Imported, CommandError>),
     /// The changed model's index and its next version.
-    Model(Result<(usize, Model), CommandError>),
+    /// Boxed: a model is large beside the other answers, and an answer is moved each frame.
+    Model(Box<Result<(usize, Model), CommandError>>),
     /// A gesture's preview.
     Moved(Result<Previewed, CommandError>),
 }
@@ -320,9 +321,9 @@ mod page {
             Some(match (kind, bytes) {
                 (Kind::Import, Ok(bytes)) => return self.decoded(id, &bytes),
                 (Kind::Import, Err(refused)) => Answer::Imported(Err(refused)),
-                (Kind::ModelOp, bytes) => Answer::Model(
+                (Kind::ModelOp, bytes) => Answer::Model(Box::new(
                     bytes.and_then(|bytes| decode_changed(&bytes).map_err(unreadable)),
-                ),
+                )),
                 (Kind::Preview, bytes) => {
                     Answer::Moved(bytes.and_then(|bytes| decode_moved(&bytes).map_err(unreadable)))
                 }

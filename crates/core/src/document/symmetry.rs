@@ -24,8 +24,8 @@ use super::{CommandError, CreateInput, Document, Op, SymmetrizeInput};
 use crate::mesh::VertexId;
 use crate::model::{MirrorPlane, Model, Side};
 use crate::symmetry::{
-    Keep, Place, are_twins, changed_side, mirror_positions, mirrored_curves, mirrored_model,
-    partners, side_of_model, symmetric_outline, symmetrized,
+    Keep, Place, changed_side, mirror_positions, mirrored_curves, mirrored_model, partners,
+    side_of_model, symmetric_outline, symmetrized,
 };
 
 /// Applies a `symmetrize` op: the model made symmetric about the plane, keeping one side.

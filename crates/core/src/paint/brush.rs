@@ -226,7 +226,8 @@ impl PaintStroke {
         for &v in &self.touched {
             let w = self.strength[v.index()];
             let old = &mut colors[v.index()];
-            *old = std::array::from_fn(|i| old[i] + (color[i] - old[i]) * w);
+            // Weighted so that full strength lays the colour exactly.
+            *old = std::array::from_fn(|i| old[i] * (1.0 - w) + color[i] * w);
         }
     }
 }

@@ -242,14 +242,19 @@ impl PaintTool {
             return None;
         }
         self.material_pending = false;
-        let [r, g, b, a] = finish.base_color;
-        Some(ToolOutput::Commit(Op::Material(MaterialInput {
-            model: *index,
-            base_color: [r, g, b, a].map(f64::from),
-            roughness: finish.roughness.into(),
-            metalness: finish.metalness.into(),
-        })))
+        Some(material_op(*index, *finish))
     }
+}
+
+/// The op that gives model `index` the material `finish`.
+fn material_op(index: usize, finish: Finish) -> ToolOutput {
+    let [r, g, b, a] = finish.base_color;
+    ToolOutput::Commit(Op::Material(MaterialInput {
+        model: index,
+        base_color: [r, g, b, a].map(f64::from),
+        roughness: finish.roughness.into(),
+        metalness: finish.metalness.into(),
+    }))
 }
 
 /// The view's size, as ops record it.
@@ -309,12 +314,33 @@ impl Tool for PaintTool {
         }
     }
 
-    fn panel(&mut self, ui: &mut egui::Ui, _doc: &Document) -> Option<ToolOutput> {
+    fn panel(&mut self, ui: &mut egui::Ui, doc: &Document) -> Option<ToolOutput> {
+        // The material as the document has it now (a first stroke made its base white),
+        // unless the panel is changing it.
+        if let Some((index, finish)) = &mut self.target
+            && !self.material_pending
+        {
+            match doc.models.get(*index) {
+                Some(model) => *finish = model.finish(),
+                None => self.target = None,
+            }
+        }
         self.kinds_ui(ui);
         self.colour_ui(ui);
         self.brush_ui(ui);
-        ui.separator();
-        Some(self.material_ui(ui).unwrap_or(ToolOutput::None))
+        let button = egui::Button::new("Material…").min_size(target_size(ui));
+        let (_, inner) = egui::containers::menu::MenuButton::from_button(button)
+            .ui(ui, |ui| self.material_ui(ui));
+        // The menu closed with a change not yet committed: commit it now.
+        let closed_with_change = inner.is_none() && self.material_pending;
+        let committed = inner.and_then(|inner| inner.inner).or_else(|| {
+            closed_with_change.then(|| {
+                self.material_pending = false;
+                self.target
+                    .map(|(index, finish)| material_op(index, finish))
+            })?
+        });
+        Some(committed.unwrap_or(ToolOutput::None))
     }
 
     fn hint(&self, _doc: &Document, device: Device) -> Hint {
@@ -324,5 +350,74 @@ impl Tool for PaintTool {
             (Kind::Fill, false) => "Tap a model to paint all of it in the brush's colour",
             (Kind::Pick, false) => "Tap a model to take its colour there",
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::tools::test_support::{line, shape, stroke};
+
+    #[test]
+    fn a_stroke_over_a_model_paints_it_and_one_off_every_model_is_ignored() {
+        let mut editor = shape();
+        let mut tool = PaintTool::default();
+        let outputs = stroke(
+            &mut tool,
+            editor.document(),
+            &line((340.0, 340.0), (460.0, 340.0), 6),
+        );
+        let ToolOutput::Begin(Op::Paint(input)) = &outputs[0] else {
+            panic!("a stroke over the shape begins a paint: {:?}", outputs[0]);
+        };
+        assert_eq!(input.stroke[0], [340.0, 300.0, 0.5]);
+        assert!(matches!(outputs.last(), Some(ToolOutput::End(_))));
+        // The op the gesture makes paints the shape, in the brush's colour.
+        let mut op = input.clone();
+        op.stroke
+            .extend(outputs[1..].iter().filter_map(|o| match o {
+                ToolOutput::Extend(s) | ToolOutput::End(s) => Some(*s),
+                _ => None,
+            }));
+        editor.apply(Op::Paint(op)).unwrap();
+        let colors = shown_colors(&editor.document().models[0]);
+        assert!(colors.contains(&tool.color));
+        // Off every model: nothing, and no sentence.
+        let off = stroke(
+            &mut tool,
+            editor.document(),
+            &line((20.0, 60.0), (90.0, 60.0), 4),
+        );
+        assert!(off.iter().all(|o| *o == ToolOutput::None), "{off:?}");
+    }
+
+    #[test]
+    fn fill_paints_the_model_tapped_and_pick_takes_its_colour() {
+        let mut editor = shape();
+        let mut tool = PaintTool {
+            kind: Kind::Fill,
+            color: [0.1, 0.5, 0.2],
+            ..PaintTool::default()
+        };
+        let outputs = stroke(&mut tool, editor.document(), &[(400.0, 340.0)]);
+        let Some(ToolOutput::Commit(op)) = outputs.last() else {
+            panic!("a tap fills: {outputs:?}");
+        };
+        assert_eq!(
+            *op,
+            Op::Fill(FillInput {
+                model: 0,
+                color: [0.1f32, 0.5, 0.2].map(f64::from),
+            })
+        );
+        editor.apply(op.clone()).unwrap();
+        let mut picker = PaintTool {
+            kind: Kind::Pick,
+            ..PaintTool::default()
+        };
+        stroke(&mut picker, editor.document(), &[(420.0, 320.0)]);
+        assert_eq!(picker.color, [0.1, 0.5, 0.2]);
+        assert_eq!(picker.kind, Kind::Brush, "a pick goes back to the brush");
+        assert!(matches!(picker.target, Some((0, _))));
     }
 }

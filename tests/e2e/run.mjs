@@ -3426,6 +3426,66 @@ test('symmetry: a pull on the right of a symmetric shape moves both sides; the s
   assert.ok(once[0][0] < pulled[0][0] - 0.05 * width, `the left side moved out: ${pulled[0][0]} then ${once[0][0]}`);
 }));
 
+// ---------------------------------------------------------------------------------------------
+// Paint (issue 51).
+
+/** The JSON chunk of a .glb and its BIN chunk. */
+function glbParts(bytes) {
+  const buffer = Buffer.from(bytes);
+  const jsonLength = buffer.readUInt32LE(12);
+  const json = JSON.parse(buffer.subarray(20, 20 + jsonLength).toString('utf8'));
+  return { json, bin: buffer.subarray(20 + jsonLength + 8) };
+}
+
+/** The float VEC3 values of accessor `index` of a .glb's parts. */
+function vec3s({ json, bin }, index) {
+  const accessor = json.accessors[index];
+  const view = json.bufferViews[accessor.bufferView];
+  const start = (view.byteOffset ?? 0) + (accessor.byteOffset ?? 0);
+  return Array.from({ length: accessor.count }, (_, k) => [0, 1, 2].map((c) => bin.readFloatLE(start + 12 * k + 4 * c)));
+}
+
+// WebGL2 only: the op, the file and the pixels of the colour.
+test('paint (C): a pen stroke with pressure paints the shape under it as it goes, the export carries the colours as COLOR_0, one undo takes them back', { gpu: false }, () => withShape(async ({ fresh }) => {
+  const { page, cdp } = fresh;
+  await page.keyboard.press('c');
+  await frames(page, 3);
+  const before = await screenshot(page, out('paint-before.png'));
+  const c = ELLIPSE.c;
+  const stroke = Array.from({ length: 31 }, (_, i) => ({ x: c.x - 100 + (200 * i) / 30, y: c.y, force: 0.3 + (0.5 * i) / 30 }));
+  await penStroke(cdp, stroke, 25);
+  const paint = await until(() => lastOpOf(page), (o) => o.op === 'paint', 15_000);
+  assert.equal(paint.op, 'paint', 'the stroke is one paint op');
+  const forces = paint.stroke.map((s) => s[2]);
+  assert.ok(Math.max(...forces) - Math.min(...forces) > 0.3, `the pen's pressure is kept: ${forces[0]} to ${forces.at(-1)}`);
+  await frames(page, 4);
+  const after = await screenshot(page, out('paint-after.png'));
+  const at = (shot, x, y) => shot.data.slice((y * shot.width + x) * 4, (y * shot.width + x) * 4 + 3);
+  const reddened = stroke.filter((p, i) => i % 3 === 0).filter((p) => {
+    const [r0, g0] = at(before, Math.round(p.x), Math.round(p.y));
+    const [r1, g1] = at(after, Math.round(p.x), Math.round(p.y));
+    return r1 - g1 > r0 - g0 + 60;
+  });
+  assert.ok(reddened.length >= 6, `the stroke shows in the brush's red at ${reddened.length} of 11 points`);
+  const { x: farX, y: farY } = { x: c.x, y: c.y + 90 };
+  assert.ok(maxDiffNear(before, after, farX, farY, 6) < 30, 'away from the stroke the shape keeps its clay');
+  const bytes = await glbOf(page);
+  writeFileSync(out('painted.glb'), Buffer.from(bytes));
+  const parts = glbParts(bytes);
+  const primitive = parts.json.meshes[0].primitives[0];
+  assert.ok(primitive.attributes.COLOR_0 !== undefined, 'the export has vertex colours');
+  const colours = vec3s(parts, primitive.attributes.COLOR_0);
+  const red = colours.filter(([r, g, b]) => r > 0.6 && g < 0.25 && b < 0.25).length;
+  assert.ok(red > 5 && red < colours.length / 2, `${red} of ${colours.length} vertices painted red`);
+  const material = parts.json.materials[primitive.material];
+  assert.deepEqual(material.pbrMetallicRoughness.baseColorFactor, [1, 1, 1, 1], 'a white base colour under the paint');
+  await page.keyboard.press('Control+z');
+  await until(() => lastOpOf(page), (o) => o.op === 'undo', 5000);
+  const undone = glbParts(await glbOf(page));
+  assert.equal(undone.json.meshes[0].primitives[0].attributes.COLOR_0, undefined, 'one undo takes the colours back');
+  assert.deepEqual(fresh.errors, [], 'console errors');
+}));
+
 const failed = await runAll();
 await hiDpi?.close();
 await browser.close();

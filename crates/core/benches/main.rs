@@ -23,6 +23,7 @@ mod fibermesh;
 mod gltf;
 mod optimize;
 mod oversketch;
+mod paint;
 mod region_edit;
 mod remesh;
 mod silhouette;
@@ -40,6 +41,7 @@ criterion::criterion_main!(
     gltf::benches,
     optimize::benches,
     oversketch::benches,
+    paint::benches,
     region_edit::benches,
     remesh::benches,
     silhouette::benches,

@@ -20,6 +20,9 @@ use crate::{Steps, Workspace, cargo, format_size, run};
 const WASM_GZIP_BUDGET: u64 = 3_500_000;
 /// The session the CLI replays into `tests/out/replay.glb` for the validator.
 const REPLAY_FIXTURE: &str = "tests/fixtures/two-strokes-undo-redo.json";
+/// A session with paint, a fill and a material, replayed into `tests/out/painted.glb` for the
+/// validator (the golden session of the core's tests).
+const PAINTED_FIXTURE: &str = "crates/core/tests/fixtures/sessions/painted.json";
 /// A session with three key frames (0, 1 and 2 s), replayed into `tests/out/animation.glb`
 /// for the validator and the three.js playback check.
 const ANIMATION_FIXTURE: &str = "tests/fixtures/animation-three-keys.json";
@@ -233,6 +236,7 @@ fn browser_checks(
         for (fixture, glb) in [
             (REPLAY_FIXTURE, &replay_glb),
             (ANIMATION_FIXTURE, &animation_glb),
+            (PAINTED_FIXTURE, &out.join("painted.glb")),
         ] {
             let mut command = cli_command(root, cli);
             command.args(["replay", fixture, "-o"]).arg(glb);

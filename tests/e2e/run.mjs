@@ -1800,9 +1800,17 @@ test('long press: a finger held still on a model opens its context menu; Duplica
     const before = await camera(fresh.page);
     // The menu's rows are 44 px tall below the press point: Frame, Duplicate, Delete.
     const row = (k) => ({ x: c.x + 80, y: c.y + 8 + 48 * k + 22 });
+    // Held until the menu shows (a busy page delivers touches late), so that the tap on a
+    // row meets the menu rather than racing it.
     const hold = async () => {
+      const unheld = await screenshot(fresh.page, out('long-press-unheld.png'));
       await touchGesture(fresh.cdp, [Array.from({ length: 25 }, () => ({ x: c.x, y: c.y }))]);
-      await frames(fresh.page, 4);
+      await until(
+        async () => maxDiffNear(unheld, await screenshot(fresh.page, out('long-press-held.png')), row(2).x, row(2).y, 4),
+        (diff) => diff > 40,
+        3000,
+      );
+      await frames(fresh.page, 2);
     };
     await hold();
     await screenshot(fresh.page, out('long-press-menu.png'));
